@@ -1,0 +1,7 @@
+//! strata: a terrain-generation server.
+//!
+//! See `ARCHITECTURE.md` for the map. [`terrain`] is the world function (pure, CPU reference);
+//! [`gpu`] owns the compute device and the WGSL twins; [`encode`] turns products into wire formats;
+//! [`server`] is the HTTP service.
+
+pub mod terrain;

@@ -1,0 +1,225 @@
+//! The extended Voronoi biome map of Choroś & Topolski (Algorithms 1 and 2).
+//!
+//! Algorithm 1: the plane is divided into square cells of `cell_size_m`; cell `(i, j)` has a seed
+//! at `(i + v₁, j + v₂)` with `v₁, v₂ ∈ [−1, 1)` hashed from `(seed, i, j)`. A point takes the seed
+//! nearest to it (squared Euclidean distance) among the cells within `RANGE = 2` of its own, and
+//! the Voronoi value is a hash of the seed's floored position, in `[0, 1)`.
+//!
+//! Algorithm 2: with latitude enabled the value is clamped to `[f − d, f + d] ∩ [0, 1]`, where
+//! `f` is the triangle wave of Eq. 2 over the seed's floored `|z|` with period `2S` cells (0 at the
+//! pole, 1 at the equator) and `d` the dispersion; without dispersion `d = 0`, which gives pure
+//! latitude bands. The biome is `⌊value · K⌋` for `K` biomes, so biome 0 lies toward the poles.
+//!
+//! Sampling is on the world-anchored vertex lattice of a LOD. [`biome_grid`] fills a rectangle of
+//! it; it evaluates the corners of world-anchored 8×8 blocks first and fills a block whose four
+//! corners share one seed without testing its inner samples (Voronoi cells are convex). Because the
+//! blocks are anchored to the world, every tile makes the same decision for the same sample, so
+//! the map is a pure function of the global sample index.
+
+use super::hash::{hash2, purpose, signed_unit, stream, unit};
+use super::world::BiomeLayout;
+
+/// Algorithm 1's search range, in cells.
+pub const RANGE: i32 = 2;
+/// Side of the world-anchored blocks of the corner shortcut, in samples (a power of two).
+pub const BLOCK: i64 = 8;
+
+/// Stream seeds of the Voronoi map of one world.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VoronoiSeeds {
+    /// Seed x offsets.
+    pub x: u32,
+    /// Seed z offsets.
+    pub z: u32,
+    /// Cell values.
+    pub value: u32,
+}
+
+impl VoronoiSeeds {
+    /// The Voronoi streams of a world seed.
+    pub fn new(world_seed: u64) -> Self {
+        Self {
+            x: stream(world_seed, purpose::VORONOI, 0),
+            z: stream(world_seed, purpose::VORONOI, 1),
+            value: stream(world_seed, purpose::VORONOI, 2),
+        }
+    }
+}
+
+/// Biome-map constants in the form the kernels use.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BiomeMapPlan {
+    /// `1 / cell_size_m`.
+    pub inv_cell: f32,
+    /// Latitude speed `S`, cells.
+    pub speed: f32,
+    /// Whether latitude applies.
+    pub latitude: bool,
+    /// Dispersion `d` (0 when dispersion is off).
+    pub dispersion: f32,
+    /// Number of biomes `K`.
+    pub count: u32,
+    /// Stream seeds.
+    pub seeds: VoronoiSeeds,
+}
+
+impl BiomeMapPlan {
+    /// The plan of a layout with `count` biomes.
+    pub fn new(layout: &BiomeLayout, count: usize, world_seed: u64) -> Self {
+        Self {
+            inv_cell: (1.0 / layout.cell_size_m as f64) as f32,
+            speed: layout.latitude_speed_cells,
+            latitude: layout.latitude,
+            dispersion: if layout.dispersion { layout.dispersion_d } else { 0.0 },
+            count: count as u32,
+            seeds: VoronoiSeeds::new(world_seed),
+        }
+    }
+
+    /// Algorithm 1: the winning seed's cell index and floored seed position, for a point in metres.
+    pub fn nearest(&self, x_m: f32, z_m: f32) -> Nearest {
+        let x = x_m * self.inv_cell;
+        let z = z_m * self.inv_cell;
+        let cx = x.floor() as i32;
+        let cz = z.floor() as i32;
+        let mut best = f32::INFINITY;
+        let mut win = Nearest { cell: (0, 0), pos: (0.0, 0.0) };
+        for j in cz - RANGE..=cz + RANGE {
+            for i in cx - RANGE..=cx + RANGE {
+                let sx = i as f32 + signed_unit(hash2(i, j, self.seeds.x));
+                let sz = j as f32 + signed_unit(hash2(i, j, self.seeds.z));
+                let dx = sx - x;
+                let dz = sz - z;
+                let d = dx * dx + dz * dz;
+                if d < best {
+                    best = d;
+                    win = Nearest { cell: (i, j), pos: (sx, sz) };
+                }
+            }
+        }
+        win
+    }
+
+    /// Algorithms 1 and 2: the biome of a winning seed.
+    pub fn biome_of(&self, n: &Nearest) -> u8 {
+        let fx = n.pos.0.floor();
+        let fz = n.pos.1.floor();
+        let mut value = unit(hash2(fx as i32, fz as i32, self.seeds.value));
+        if self.latitude {
+            let period = self.speed * 2.0;
+            let lat = fz.abs() % period;
+            let grad = if lat <= self.speed { lat / self.speed } else { 2.0 - lat / self.speed };
+            value = value.clamp(grad - self.dispersion, grad + self.dispersion).clamp(0.0, 1.0);
+        }
+        ((value * self.count as f32) as u32).min(self.count - 1) as u8
+    }
+
+    /// The biome at a point in metres.
+    pub fn biome_at(&self, x_m: f32, z_m: f32) -> u8 {
+        self.biome_of(&self.nearest(x_m, z_m))
+    }
+}
+
+/// The seed a point belongs to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Nearest {
+    /// Lattice cell of the seed.
+    pub cell: (i32, i32),
+    /// Seed position, cells.
+    pub pos: (f32, f32),
+}
+
+/// Fills `out` (row-major, `w × h`, row = z) with the biomes of the samples `(gx0 + i, gz0 + j)` of
+/// the lattice with spacing `spacing_m`.
+pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: usize, h: usize, out: &mut [u8]) {
+    assert_eq!(out.len(), w * h, "biome_grid: output size");
+    let pos = |g: i64| g as f32 * spacing_m;
+    let bx0 = gx0.div_euclid(BLOCK);
+    let bz0 = gz0.div_euclid(BLOCK);
+    let bx1 = (gx0 + w as i64 - 1).div_euclid(BLOCK);
+    let bz1 = (gz0 + h as i64 - 1).div_euclid(BLOCK);
+    let cw = (bx1 - bx0 + 2) as usize;
+    let ch = (bz1 - bz0 + 2) as usize;
+    let mut corners = Vec::with_capacity(cw * ch);
+    for cz in 0..ch {
+        for cx in 0..cw {
+            let gx = (bx0 + cx as i64) * BLOCK;
+            let gz = (bz0 + cz as i64) * BLOCK;
+            corners.push(plan.nearest(pos(gx), pos(gz)));
+        }
+    }
+    for bz in bz0..=bz1 {
+        for bx in bx0..=bx1 {
+            let ci = ((bz - bz0) as usize) * cw + (bx - bx0) as usize;
+            let c = [corners[ci], corners[ci + 1], corners[ci + cw], corners[ci + cw + 1]];
+            let uniform = c.iter().all(|n| n.cell == c[0].cell);
+            let fill = plan.biome_of(&c[0]);
+            let xa = (bx * BLOCK).max(gx0);
+            let xb = ((bx + 1) * BLOCK).min(gx0 + w as i64);
+            let za = (bz * BLOCK).max(gz0);
+            let zb = ((bz + 1) * BLOCK).min(gz0 + h as i64);
+            for gz in za..zb {
+                let row = (gz - gz0) as usize * w;
+                for gx in xa..xb {
+                    out[row + (gx - gx0) as usize] =
+                        if uniform { fill } else { plan.biome_at(pos(gx), pos(gz)) };
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::world::WorldParams;
+
+    fn plan() -> BiomeMapPlan {
+        let w = WorldParams::default();
+        BiomeMapPlan::new(&w.layout, w.biomes.len(), 42)
+    }
+
+    #[test]
+    fn grid_equals_pointwise_where_blocks_are_uniform_and_is_window_independent() {
+        let p = plan();
+        let mut a = vec![0u8; 40 * 40];
+        biome_grid(&p, 16.0, -20, -20, 40, 40, &mut a);
+        let mut b = vec![0u8; 20 * 20];
+        biome_grid(&p, 16.0, -7, -3, 20, 20, &mut b);
+        for j in 0..20 {
+            for i in 0..20 {
+                assert_eq!(b[j * 20 + i], a[(j + 17) * 40 + i + 13]);
+            }
+        }
+        let differing = a
+            .iter()
+            .enumerate()
+            .filter(|(k, v)| {
+                let (i, j) = ((k % 40) as i64 - 20, (k / 40) as i64 - 20);
+                **v != p.biome_at(i as f32 * 16.0, j as f32 * 16.0)
+            })
+            .count();
+        assert!(differing <= 4, "{differing} samples differ from pointwise evaluation");
+    }
+
+    #[test]
+    fn without_dispersion_biomes_are_latitude_bands() {
+        let w = WorldParams::default();
+        let mut layout = w.layout.clone();
+        layout.dispersion = false;
+        let p = BiomeMapPlan::new(&layout, 4, 9);
+        // Near the pole (value 0) every sample is biome 0; near the equator, biome 3.
+        for i in -20..20 {
+            let x = i as f32 * 300.0;
+            let n = p.nearest(x, 0.3 * 512.0);
+            if n.pos.1.floor().abs() < 1.0 {
+                assert_eq!(p.biome_of(&n), 0);
+            }
+        }
+        let mut seen = [0usize; 4];
+        for i in 0..400 {
+            seen[p.biome_at(i as f32 * 97.0, 8.0 * 512.0 + (i % 7) as f32) as usize] += 1;
+        }
+        assert!(seen[3] > seen[0] * 5, "equator should be desert: {seen:?}");
+    }
+}

@@ -1,0 +1,151 @@
+//! Per-vertex biome weights: a separable Gaussian blur of the one-hot biome map (Choroś & Topolski
+//! §5), normalised so the weights sum to one.
+//!
+//! The map is computed with a margin of `r` samples on every side, so each output sample sees its
+//! full kernel; because the lattice is world-anchored and each output is a fixed-order sum over its
+//! own window, neighbouring tiles get identical weights on shared vertices.
+//!
+//! Definition (the WGSL twin `shaders/tile.wgsl` computes the same):
+//! - horizontal pass: if all `2r+1` samples of the window hold biome `b`, the result is exactly
+//!   one-hot `b`; otherwise `h_c = Σ_t k_t · [id_t = c]`, summed in `t` order;
+//! - vertical pass over the horizontal results: if all are one-hot for the same `b`, the result is
+//!   one-hot `b`; otherwise `v_c = Σ_t k_t · h_{t,c}` in `t` order;
+//! - `w_c = v_c / Σ_c v_c`.
+//!
+//! The one-hot shortcut is what keeps interior vertices cheap and exactly one-hot.
+
+/// Tag of a horizontal result that is not one-hot.
+const DENSE: u8 = u8::MAX;
+
+/// Normalised Gaussian kernel of radius `r` samples and standard deviation `sigma` samples.
+pub fn kernel(r: usize, sigma: f32) -> Vec<f32> {
+    if r == 0 {
+        return vec![1.0];
+    }
+    let s = sigma as f64;
+    let raw: Vec<f64> = (0..=2 * r)
+        .map(|t| {
+            let d = t as f64 - r as f64;
+            (-(d * d) / (2.0 * s * s)).exp()
+        })
+        .collect();
+    let sum: f64 = raw.iter().sum();
+    raw.iter().map(|v| (v / sum) as f32).collect()
+}
+
+/// Blur radius and kernel for a LOD's vertex spacing.
+pub fn kernel_for(radius_m: f32, spacing_m: f32) -> Vec<f32> {
+    let r = (radius_m / spacing_m).round() as usize;
+    kernel(r, (radius_m / 3.0 / spacing_m).max(1e-3))
+}
+
+/// Blurs `ids` (`w × h`, row-major, values below `k`) into `out` (`(w − 2r) × (h − 2r) × k`,
+/// vertex-major: `out[v * k + c]`), where `kern.len() = 2r + 1`.
+pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out: &mut [f32]) {
+    let taps = kern.len();
+    let r = taps / 2;
+    assert!(w > 2 * r && h > 2 * r, "blur_weights: grid smaller than the kernel");
+    let ow = w - 2 * r;
+    let oh = h - 2 * r;
+    assert_eq!(ids.len(), w * h, "blur_weights: input size");
+    assert_eq!(out.len(), ow * oh * k, "blur_weights: output size");
+
+    // Horizontal pass over every row: tags and dense values.
+    let mut tags = vec![0u8; h * ow];
+    let mut dense = vec![0.0f32; h * ow * k];
+    let mut run = vec![0usize; w];
+    for row in 0..h {
+        let line = &ids[row * w..(row + 1) * w];
+        run[w - 1] = 1;
+        for i in (0..w - 1).rev() {
+            run[i] = if line[i] == line[i + 1] { run[i + 1] + 1 } else { 1 };
+        }
+        for col in 0..ow {
+            let o = row * ow + col;
+            if run[col] >= taps {
+                tags[o] = line[col];
+            } else {
+                tags[o] = DENSE;
+                let acc = &mut dense[o * k..(o + 1) * k];
+                for t in 0..taps {
+                    acc[line[col + t] as usize] += kern[t];
+                }
+            }
+        }
+    }
+
+    // Vertical pass.
+    let mut down = vec![0usize; h];
+    let mut acc = vec![0.0f32; k];
+    for col in 0..ow {
+        let tag = |row: usize| tags[row * ow + col];
+        down[h - 1] = 1;
+        for row in (0..h - 1).rev() {
+            let same = tag(row) != DENSE && tag(row) == tag(row + 1);
+            down[row] = if same { down[row + 1] + 1 } else { 1 };
+        }
+        for orow in 0..oh {
+            let v = orow * ow + col;
+            let dst = &mut out[v * k..(v + 1) * k];
+            let t0 = tag(orow);
+            if t0 != DENSE && down[orow] >= taps {
+                dst.fill(0.0);
+                dst[t0 as usize] = 1.0;
+                continue;
+            }
+            acc.fill(0.0);
+            for (t, kt) in kern.iter().enumerate() {
+                let src = (orow + t) * ow + col;
+                match tags[src] {
+                    DENSE => {
+                        for c in 0..k {
+                            acc[c] += kt * dense[src * k + c];
+                        }
+                    }
+                    b => acc[b as usize] += kt,
+                }
+            }
+            let sum: f32 = acc.iter().sum();
+            for c in 0..k {
+                dst[c] = acc[c] / sum;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kernel_is_normalised_and_symmetric() {
+        let k = kernel(17, 17.0 / 3.0);
+        assert_eq!(k.len(), 35);
+        let s: f32 = k.iter().sum();
+        assert!((s - 1.0).abs() < 1e-5);
+        for t in 0..17 {
+            assert_eq!(k[t], k[34 - t]);
+        }
+    }
+
+    #[test]
+    fn weights_sum_to_one_and_blend_across_a_border() {
+        let (w, h, r) = (30usize, 20usize, 3usize);
+        let ids: Vec<u8> = (0..w * h).map(|i| if i % w < 15 { 0 } else { 2 }).collect();
+        let kern = kernel(r, 1.5);
+        let (ow, oh) = (w - 2 * r, h - 2 * r);
+        let mut out = vec![0.0; ow * oh * 3];
+        blur_weights(&ids, w, h, &kern, 3, &mut out);
+        for v in 0..ow * oh {
+            let s: f32 = out[v * 3..v * 3 + 3].iter().sum();
+            assert!((s - 1.0).abs() < 1e-6);
+            assert_eq!(out[v * 3 + 1], 0.0);
+        }
+        // Far from the border: exactly one-hot. At the border: a blend.
+        assert_eq!(out[0], 1.0);
+        let at = |col: usize| out[(5 * ow + col) * 3 + 2];
+        assert_eq!(at(ow - 1), 1.0);
+        assert!(at(15 - r) > 0.3 && at(15 - r) < 0.7, "{}", at(15 - r));
+        assert!(at(15 - r - 1) < at(15 - r));
+    }
+}

@@ -1,0 +1,89 @@
+//! The auxiliary function `S(x)` of Schneider et al. §2.1: a lattice of N(0,1) values,
+//! interpolated between lattice points.
+//!
+//! The paper stores a random Gaussian lattice in a texture and interpolates it bilinearly. Here the
+//! lattice value at integer point `(i, j)` is a pure hash of `(i, j, stream seed)`, made
+//! approximately Gaussian as the sum of the hash's four bytes (Irwin–Hall with four terms, mean 510,
+//! standard deviation 147.8), so no table and no global RNG exist and the lattice is infinite.
+//! Interpolation uses the quintic fade `6t⁵ − 15t⁴ + 10t³`, which makes `S` C² (the paper asks for a
+//! C¹ function; bilinear interpolation alone is only C⁰ and shows creases in the normals).
+//!
+//! Everything is `f32` with no fused multiply-add, in the same operation order as
+//! `shaders/common.wgsl`, so the CPU reference is bit-reproducible on every x86-64 and ARM node.
+
+use super::hash::{mix32, PRIME_X, PRIME_Z};
+
+/// Mean of the sum of four uniform bytes.
+const BYTE_SUM_MEAN: i32 = 510;
+/// `1 / sqrt(4 · (256² − 1) / 12)`: scales the byte sum to unit variance.
+pub const INV_BYTE_SUM_STD: f32 = 1.0 / 147.801_89;
+
+/// Approximately N(0,1) value of a lattice hash.
+#[inline(always)]
+pub fn gaussian(h: u32) -> f32 {
+    let sum = (h & 0xff) + ((h >> 8) & 0xff) + ((h >> 16) & 0xff) + (h >> 24);
+    (sum as i32 - BYTE_SUM_MEAN) as f32 * INV_BYTE_SUM_STD
+}
+
+/// Quintic fade curve; C² at the lattice points.
+#[inline(always)]
+pub fn fade(t: f32) -> f32 {
+    t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+}
+
+/// The auxiliary function at a point in lattice units, for one stream seed.
+#[inline(always)]
+pub fn lattice(x: f32, z: f32, seed: u32) -> f32 {
+    let fx = x.floor();
+    let fz = z.floor();
+    let tx = x - fx;
+    let tz = z - fz;
+    let hx0 = (fx as i32 as u32).wrapping_mul(PRIME_X);
+    let hz0 = (fz as i32 as u32).wrapping_mul(PRIME_Z) ^ seed;
+    let hx1 = hx0.wrapping_add(PRIME_X);
+    let hz1 = ((fz as i32).wrapping_add(1) as u32).wrapping_mul(PRIME_Z) ^ seed;
+    let v00 = gaussian(mix32(hx0 ^ hz0));
+    let v10 = gaussian(mix32(hx1 ^ hz0));
+    let v01 = gaussian(mix32(hx0 ^ hz1));
+    let v11 = gaussian(mix32(hx1 ^ hz1));
+    let u = fade(tx);
+    let v = fade(tz);
+    let a = v00 + (v10 - v00) * u;
+    let b = v01 + (v11 - v01) * u;
+    a + (b - a) * v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lattice_values_are_standard_normal() {
+        let n = 20_000;
+        let (mut sum, mut sq) = (0.0f64, 0.0f64);
+        for i in 0..n {
+            let v = lattice((i % 200) as f32, (i / 200) as f32, 99) as f64;
+            sum += v;
+            sq += v * v;
+        }
+        let mean = sum / n as f64;
+        let var = sq / n as f64 - mean * mean;
+        assert!(mean.abs() < 0.03, "mean {mean}");
+        assert!((var - 1.0).abs() < 0.05, "variance {var}");
+    }
+
+    #[test]
+    fn lattice_is_continuous_across_cell_borders() {
+        for k in -5..5 {
+            let x = k as f32;
+            let left = lattice(x - 1e-3, 0.37, 5);
+            let right = lattice(x + 1e-3, 0.37, 5);
+            assert!((left - right).abs() < 1e-2, "jump at {x}: {left} vs {right}");
+        }
+    }
+
+    #[test]
+    fn seeds_give_different_lattices() {
+        assert_ne!(lattice(0.5, 0.5, 1), lattice(0.5, 0.5, 2));
+    }
+}

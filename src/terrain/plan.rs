@@ -1,0 +1,90 @@
+//! A world's precomputed constants: octave tables, biome-map constants and blur kernels per LOD.
+//!
+//! Building a plan does all the transcendental arithmetic (`powf`, `exp`, `ln`) once, in `f64`,
+//! and rounds to `f32`; the kernels (CPU and WGSL) only read the tables, so both paths start from
+//! identical constants.
+
+use super::biome::BiomeMapPlan;
+use super::blur::kernel_for;
+use super::fractal::{FractalPlan, MAX_OCTAVES};
+use super::hash::{purpose, stream};
+use super::world::{ParamError, WorldParams};
+
+/// Finest LOD.
+pub const MIN_LOD: u32 = 0;
+/// Coarsest LOD served: a tile at LOD 12 spans 262 144 vertex spacings.
+pub const MAX_LOD: u32 = 12;
+/// Vertices per tile side.
+pub const TILE_VERTS: usize = 65;
+/// Quads per tile side.
+pub const TILE_QUADS: i64 = 64;
+/// Vertices per tile.
+pub const TILE_VERTEX_COUNT: usize = TILE_VERTS * TILE_VERTS;
+/// The supported world is the square `|X|, |Z| ≤ WORLD_LIMIT_M` metres (times `cell_m`): beyond
+/// it `f32` positions lose the precision the finest octaves need.
+pub const WORLD_LIMIT_CELLS: f64 = 1_048_576.0;
+
+/// Constants of one LOD.
+#[derive(Clone, Debug)]
+pub struct LodPlan {
+    /// Vertex spacing, metres.
+    pub spacing_m: f32,
+    /// Biome blur kernel, `2r + 1` taps.
+    pub kernel: Vec<f32>,
+    /// Height generator of each biome.
+    pub fractals: Vec<FractalPlan>,
+}
+
+/// Everything needed to synthesise any tile of a world.
+#[derive(Clone, Debug)]
+pub struct WorldPlan {
+    /// World seed.
+    pub seed: u64,
+    /// World settings.
+    pub params: WorldParams,
+    /// Biome map constants.
+    pub biome_map: BiomeMapPlan,
+    /// Per-LOD constants, index = LOD.
+    pub lods: Vec<LodPlan>,
+}
+
+impl WorldPlan {
+    /// Validates the settings and builds the plan.
+    pub fn new(seed: u64, params: WorldParams) -> Result<Self, ParamError> {
+        params.validate()?;
+        let biome_map = BiomeMapPlan::new(&params.layout, params.biomes.len(), seed);
+        let lods = (MIN_LOD..=MAX_LOD)
+            .map(|lod| {
+                let spacing = params.cell_m as f64 * (1u64 << lod) as f64;
+                let fractals = params
+                    .biomes
+                    .iter()
+                    .enumerate()
+                    .map(|(b, biome)| {
+                        let seeds: Vec<u32> = (0..MAX_OCTAVES as u32)
+                            .map(|k| stream(seed, purpose::OCTAVE, b as u32 * 64 + k))
+                            .collect();
+                        FractalPlan::new(&biome.generator, &params.warp, spacing, &seeds)
+                    })
+                    .collect();
+                LodPlan {
+                    spacing_m: spacing as f32,
+                    kernel: kernel_for(params.layout.blur_radius_m, spacing as f32),
+                    fractals,
+                }
+            })
+            .collect();
+        Ok(Self { seed, params, biome_map, lods })
+    }
+
+    /// Number of biomes.
+    pub fn biome_count(&self) -> usize {
+        self.params.biomes.len()
+    }
+
+    /// Largest tile coordinate magnitude at a LOD that stays inside the supported world.
+    pub fn max_tile_coord(&self, lod: u32) -> i64 {
+        let tile_cells = TILE_QUADS as f64 * (1u64 << lod) as f64;
+        (WORLD_LIMIT_CELLS / tile_cells) as i64 - 1
+    }
+}

@@ -1,0 +1,86 @@
+//! Proto-texturing (Schneider et al. §4.2): a surface material per vertex from a height/slope
+//! weighting function, plus water depth below the sea level.
+//!
+//! Each candidate material gets a weight in [0, 1] from smooth steps of height and slope:
+//! - `seabed` = under water;
+//! - `rock` = slope above `rock_slope_deg` (blended over `rock_blend_deg`), on land;
+//! - `snow` = above the biome-weighted snow line, where not rock;
+//! - `sand` (beach) = less than `beach_height_m` above the sea, where not rock;
+//! - each biome's ground material gets `w_b · (1 − rock) · (1 − snow) · (1 − beach)`.
+//!
+//! The vertex's material is the heaviest one (lowest id on ties). Steep rock thus suppresses
+//! grass as in the paper's Fig. 8.
+
+use super::world::{material, WorldParams, MATERIALS};
+
+/// What the weighting function looks at.
+#[derive(Clone, Copy, Debug)]
+pub struct Surface<'a> {
+    /// Ground height, metres.
+    pub height_m: f32,
+    /// Y component of the unit normal (`cos` of the slope angle).
+    pub normal_y: f32,
+    /// Biome weights.
+    pub weights: &'a [f32],
+}
+
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Material weights, indexed like [`MATERIALS`].
+pub fn material_weights(params: &WorldParams, s: &Surface) -> [f32; MATERIALS.len()] {
+    let tex = &params.texturing;
+    let mut out = [0.0f32; MATERIALS.len()];
+    let above = s.height_m - params.sea_level_m;
+    let blend = tex.height_blend_m.max(1e-3);
+    let wet = 1.0 - smoothstep(-blend * 0.5, 0.0, above);
+    out[material::SEABED as usize] = wet;
+    let slope_deg = s.normal_y.clamp(-1.0, 1.0).acos().to_degrees();
+    let rock = smoothstep(tex.rock_slope_deg - tex.rock_blend_deg * 0.5, tex.rock_slope_deg + tex.rock_blend_deg * 0.5, slope_deg) * (1.0 - wet);
+    out[material::ROCK as usize] = rock;
+    let snow_line: f32 = params.biomes.iter().zip(s.weights).map(|(b, w)| w * b.snow_line_m.clamp(-1e6, 1e6)).sum();
+    let snow = smoothstep(snow_line - blend, snow_line + blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
+    out[material::SNOW as usize] += snow;
+    let beach = (1.0 - smoothstep(tex.beach_height_m, tex.beach_height_m + blend, above)) * (1.0 - wet) * (1.0 - rock);
+    out[material::SAND as usize] += beach;
+    let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    for (b, w) in params.biomes.iter().zip(s.weights) {
+        out[WorldParams::material_id(&b.ground) as usize] += w * rest;
+    }
+    out
+}
+
+/// The dominant material id of a vertex.
+pub fn proto_texture(params: &WorldParams, s: &Surface) -> u8 {
+    let w = material_weights(params, s);
+    let mut best = 0;
+    for (m, &v) in w.iter().enumerate() {
+        if v > w[best] {
+            best = m;
+        }
+    }
+    best as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn steep_slopes_are_rock_and_water_is_seabed() {
+        let p = WorldParams::default();
+        let grass = [0.0, 0.0, 1.0, 0.0];
+        let flat = Surface { height_m: 30.0, normal_y: 1.0, weights: &grass };
+        assert_eq!(proto_texture(&p, &flat), material::GRASS);
+        let steep = Surface { normal_y: 60f32.to_radians().cos(), ..flat };
+        assert_eq!(proto_texture(&p, &steep), material::ROCK);
+        let under = Surface { height_m: -5.0, ..flat };
+        assert_eq!(proto_texture(&p, &under), material::SEABED);
+        let beach = Surface { height_m: 0.5, ..flat };
+        assert_eq!(proto_texture(&p, &beach), material::SAND);
+        let high = Surface { height_m: 400.0, ..flat };
+        assert_eq!(proto_texture(&p, &high), material::SNOW);
+    }
+}

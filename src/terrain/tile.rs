@@ -1,0 +1,239 @@
+//! Height tiles: the 65×65-vertex product of the procedural world.
+//!
+//! Vertex `(i, j)` of tile `(lod, x, z)` has global lattice index `(x·64 + i, z·64 + j)` and sits
+//! at world `(gx·δ, gz·δ)` with `δ = cell_m · 2^lod`; `i` runs east along +X, `j` south along +Z,
+//! and the vertex index is `j·65 + i`. Every per-vertex value is a pure function of `(seed,
+//! settings, lod, gx, gz)`:
+//!
+//! 1. biome map on the lattice with a margin of `r` (blur radius) + 1 samples ([`super::biome`]);
+//! 2. biome weights by separable Gaussian blur ([`super::blur`]);
+//! 3. height `h = Σ_b w_b · H_b(x)` over the biomes with nonzero weight ([`super::fractal`]);
+//! 4. normals by central differences over the one-vertex margin, so edge normals match too;
+//! 5. proto-texturing material and water depth ([`super::texture`]).
+//!
+//! Hence same-LOD neighbours share their edge vertices bit for bit. Across LODs a tile carries
+//! skirts, and [`snap_edges`] replaces an edge by the coarser neighbour's edge (even vertices take
+//! the coarser lattice's heights, odd ones the midpoint) so the mesh is watertight.
+
+use super::blur::blur_weights;
+use super::biome::biome_grid;
+use super::fractal::fbm_batch;
+use super::plan::{WorldPlan, TILE_QUADS, TILE_VERTEX_COUNT, TILE_VERTS};
+use super::texture::{proto_texture, Surface};
+
+/// Address of a height tile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct TileKey {
+    /// Level of detail: vertex spacing is `cell_m · 2^lod`.
+    pub lod: u32,
+    /// Tile column (east is +x).
+    pub x: i64,
+    /// Tile row (south is +z).
+    pub z: i64,
+}
+
+/// Heights and biome weights of a rectangle of one LOD's lattice.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Field {
+    /// Columns.
+    pub w: usize,
+    /// Rows.
+    pub h: usize,
+    /// Heights, metres, row-major.
+    pub heights: Vec<f32>,
+    /// Biome weights, `weights[v * k + b]`.
+    pub weights: Vec<f32>,
+}
+
+/// Synthesises heights and weights of the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`.
+pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Field {
+    let lp = &plan.lods[lod as usize];
+    let k = plan.biome_count();
+    let r = lp.kernel.len() / 2;
+    let (bw, bh) = (w + 2 * r, h + 2 * r);
+    let mut ids = vec![0u8; bw * bh];
+    biome_grid(&plan.biome_map, lp.spacing_m, gx0 - r as i64, gz0 - r as i64, bw, bh, &mut ids);
+    let mut weights = vec![0.0f32; w * h * k];
+    blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
+
+    let mut heights = vec![0.0f32; w * h];
+    let mut idx = Vec::with_capacity(w * h);
+    let mut xs = Vec::with_capacity(w * h);
+    let mut zs = Vec::with_capacity(w * h);
+    let mut gs = Vec::new();
+    for (b, fractal) in lp.fractals.iter().enumerate() {
+        idx.clear();
+        xs.clear();
+        zs.clear();
+        for j in 0..h {
+            for i in 0..w {
+                let v = j * w + i;
+                if weights[v * k + b] > 0.0 {
+                    idx.push(v);
+                    xs.push((gx0 + i as i64) as f32 * lp.spacing_m);
+                    zs.push((gz0 + j as i64) as f32 * lp.spacing_m);
+                }
+            }
+        }
+        gs.resize(idx.len(), 0.0);
+        fbm_batch(fractal, &xs, &zs, &mut gs);
+        for (n, &v) in idx.iter().enumerate() {
+            heights[v] += weights[v * k + b] * gs[n];
+        }
+    }
+    Field { w, h, heights, weights }
+}
+
+/// A 65×65-vertex height tile.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tile {
+    /// Address.
+    pub key: TileKey,
+    /// Vertex spacing, metres.
+    pub spacing_m: f32,
+    /// Number of biomes `k`.
+    pub biome_count: usize,
+    /// Heights, metres, index `j·65 + i`.
+    pub heights: Vec<f32>,
+    /// Unit normals (x, y, z), y up.
+    pub normals: Vec<[f32; 3]>,
+    /// Biome weights, `weights[v·k + b]`, each vertex summing to 1.
+    pub weights: Vec<f32>,
+    /// Proto-texturing material id per vertex (index into `MATERIALS`).
+    pub materials: Vec<u8>,
+    /// Depth of water above the ground, metres (0 on land).
+    pub water_depth: Vec<f32>,
+    /// Depth of the skirts hanging from the four edges, metres.
+    pub skirt_depth_m: f32,
+}
+
+impl Tile {
+    /// World X of the tile's west edge, metres.
+    pub fn origin_x_m(&self) -> f64 {
+        (self.key.x * TILE_QUADS) as f64 * self.spacing_m as f64
+    }
+
+    /// World Z of the tile's north edge, metres.
+    pub fn origin_z_m(&self) -> f64 {
+        (self.key.z * TILE_QUADS) as f64 * self.spacing_m as f64
+    }
+}
+
+/// Synthesises one tile on the CPU (the reference implementation).
+pub fn synthesize(plan: &WorldPlan, key: TileKey) -> Tile {
+    let n = TILE_VERTS + 2;
+    let f = field(plan, key.lod, key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1, n, n);
+    finish(plan, key, &f)
+}
+
+/// Turns a 67×67 field (the tile plus a one-vertex margin) into a tile: normals, materials,
+/// water and skirts. The GPU path produces the field and calls this too.
+pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
+    let n = TILE_VERTS + 2;
+    assert!(f.w == n && f.h == n, "finish: field must be 67×67");
+    let k = plan.biome_count();
+    let spacing = plan.lods[key.lod as usize].spacing_m;
+    let mut heights = Vec::with_capacity(TILE_VERTEX_COUNT);
+    let mut normals = Vec::with_capacity(TILE_VERTEX_COUNT);
+    let mut weights = Vec::with_capacity(TILE_VERTEX_COUNT * k);
+    let mut materials = Vec::with_capacity(TILE_VERTEX_COUNT);
+    let mut water_depth = Vec::with_capacity(TILE_VERTEX_COUNT);
+    let inv2d = 1.0 / (2.0 * spacing);
+    for j in 1..=TILE_VERTS {
+        for i in 1..=TILE_VERTS {
+            let v = j * n + i;
+            let h = f.heights[v];
+            let dx = (f.heights[v + 1] - f.heights[v - 1]) * inv2d;
+            let dz = (f.heights[v + n] - f.heights[v - n]) * inv2d;
+            let len = (dx * dx + 1.0 + dz * dz).sqrt();
+            let normal = [-dx / len, 1.0 / len, -dz / len];
+            let w = &f.weights[v * k..(v + 1) * k];
+            let surface = Surface { height_m: h, normal_y: normal[1], weights: w };
+            materials.push(proto_texture(&plan.params, &surface));
+            water_depth.push((plan.params.sea_level_m - h).max(0.0));
+            heights.push(h);
+            normals.push(normal);
+            weights.extend_from_slice(w);
+        }
+    }
+    let skirt_depth_m = skirt_depth(&heights, spacing);
+    Tile { key, spacing_m: spacing, biome_count: k, heights, normals, weights, materials, water_depth, skirt_depth_m }
+}
+
+/// Skirt depth: deep enough to hide the largest crack against a neighbour one LOD coarser, which
+/// is bounded by the height change between adjacent edge vertices plus the dropped octaves.
+fn skirt_depth(heights: &[f32], spacing: f32) -> f32 {
+    let v = |i: usize, j: usize| heights[j * TILE_VERTS + i];
+    let mut step = 0.0f32;
+    for t in 0..TILE_VERTS - 1 {
+        for (a, b) in [
+            (v(t, 0), v(t + 1, 0)),
+            (v(t, TILE_VERTS - 1), v(t + 1, TILE_VERTS - 1)),
+            (v(0, t), v(0, t + 1)),
+            (v(TILE_VERTS - 1, t), v(TILE_VERTS - 1, t + 1)),
+        ] {
+            step = step.max((a - b).abs());
+        }
+    }
+    2.0 * step + 4.0 * spacing
+}
+
+/// Tile edges, in `?seams=n,e,s,w` order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Edge {
+    /// `j = 0` (−Z).
+    North,
+    /// `i = 64` (+X).
+    East,
+    /// `j = 64` (+Z).
+    South,
+    /// `i = 0` (−X).
+    West,
+}
+
+impl Edge {
+    /// All edges in `n, e, s, w` order.
+    pub const ALL: [Edge; 4] = [Edge::North, Edge::East, Edge::South, Edge::West];
+
+    /// Vertex index of position `t` (0..65) along the edge.
+    pub fn vertex(self, t: usize) -> usize {
+        let last = TILE_VERTS - 1;
+        match self {
+            Edge::North => t,
+            Edge::South => last * TILE_VERTS + t,
+            Edge::West => t * TILE_VERTS,
+            Edge::East => t * TILE_VERTS + last,
+        }
+    }
+}
+
+/// Snaps the edges whose flag is set to the lattice of the next coarser LOD: even vertices take
+/// the coarser LOD's heights at the same world positions (bit for bit what that neighbour serves),
+/// odd vertices the midpoint of their even neighbours, so the shared edge is watertight.
+pub fn snap_edges(plan: &WorldPlan, tile: &mut Tile, coarser: [bool; 4]) {
+    let key = tile.key;
+    if key.lod as usize + 1 >= plan.lods.len() {
+        return;
+    }
+    for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
+        // Global lattice index of the edge's first vertex at this LOD; both are even because a
+        // tile spans 64 quads.
+        let (gx0, gz0, along_x) = match edge {
+            Edge::North => (key.x * TILE_QUADS, key.z * TILE_QUADS, true),
+            Edge::South => (key.x * TILE_QUADS, (key.z + 1) * TILE_QUADS, true),
+            Edge::West => (key.x * TILE_QUADS, key.z * TILE_QUADS, false),
+            Edge::East => ((key.x + 1) * TILE_QUADS, key.z * TILE_QUADS, false),
+        };
+        let half = TILE_VERTS / 2 + 1;
+        let (w, h) = if along_x { (half, 1) } else { (1, half) };
+        let coarse = field(plan, key.lod + 1, gx0 / 2, gz0 / 2, w, h);
+        for t in 0..TILE_VERTS {
+            let v = edge.vertex(t);
+            tile.heights[v] = if t % 2 == 0 {
+                coarse.heights[t / 2]
+            } else {
+                (coarse.heights[t / 2] + coarse.heights[t / 2 + 1]) * 0.5
+            };
+        }
+    }
+}

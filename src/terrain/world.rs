@@ -1,0 +1,231 @@
+//! World settings: everything the procedural world function depends on besides the seed.
+//!
+//! Units are in the field names' docs: metres, degrees, or plain numbers. `WorldParams::default()`
+//! is the default scene's world: four biomes ordered from pole to equator, the paper's warping
+//! constants and a 35-sample biome blur at LOD 0.
+
+use super::fractal::{FractalParams, WarpParams};
+use serde::{Deserialize, Serialize};
+
+/// Surface materials of proto-texturing, in id order (the id is the index).
+pub const MATERIALS: [&str; 6] = ["seabed", "sand", "grass", "dirt", "rock", "snow"];
+
+/// Material ids, indices into [`MATERIALS`].
+pub mod material {
+    /// Ground below sea level.
+    pub const SEABED: u8 = 0;
+    /// Beaches and deserts.
+    pub const SAND: u8 = 1;
+    /// Grassland.
+    pub const GRASS: u8 = 2;
+    /// Bare soil of the tundra.
+    pub const DIRT: u8 = 3;
+    /// Steep slopes.
+    pub const ROCK: u8 = 4;
+    /// Above the snow line and in the arctic.
+    pub const SNOW: u8 = 5;
+}
+
+/// One kind of object scattered over a biome.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScatterKind {
+    /// Name given to clients (`"pine"`, `"boulder"`, `"deer"`).
+    pub kind: String,
+    /// Probability that a scatter candidate in this biome becomes this kind, in [0, 1]. A biome's
+    /// densities sum to at most 1.
+    pub density: f32,
+    /// Steepest slope the object stands on, degrees.
+    pub max_slope_deg: f32,
+}
+
+/// One biome: a Voronoi area type with its own height generator and ground.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Biome {
+    /// Unique name.
+    pub name: String,
+    /// Height generator of this biome.
+    pub generator: FractalParams,
+    /// Material of flat ground below the snow line, one of [`MATERIALS`].
+    pub ground: String,
+    /// Height above which the ground is snow, metres.
+    pub snow_line_m: f32,
+    /// What grows and lives here.
+    pub scatter: Vec<ScatterKind>,
+}
+
+/// The extended Voronoi biome layout of Choroś & Topolski §5.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BiomeLayout {
+    /// Voronoi cell size ("biome size"), metres.
+    pub cell_size_m: f32,
+    /// Whether the biome follows latitude (Eq. 2 / Algorithm 2).
+    pub latitude: bool,
+    /// Latitude speed `S`: Voronoi cells from pole (value 0) to equator (value 1).
+    pub latitude_speed_cells: f32,
+    /// Whether dispersion is applied; without it (and with latitude) biomes form pure bands.
+    pub dispersion: bool,
+    /// Dispersion `d`: the Voronoi value is clamped to `[f − d, f + d]`, in [0, 1].
+    pub dispersion_d: f32,
+    /// Gaussian blur radius, metres; the kernel spans `2·round(radius/spacing) + 1` samples and
+    /// `σ = radius / 3`.
+    pub blur_radius_m: f32,
+}
+
+/// Proto-texturing thresholds (Schneider §4.2).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Texturing {
+    /// Slope at which rock takes over, degrees.
+    pub rock_slope_deg: f32,
+    /// Width of the rock transition, degrees.
+    pub rock_blend_deg: f32,
+    /// Beaches reach this high above sea level, metres.
+    pub beach_height_m: f32,
+    /// Width of the snow-line and beach transitions, metres.
+    pub height_blend_m: f32,
+}
+
+/// Scatter placement (Choroś §5).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScatterParams {
+    /// Spacing of the world-anchored candidate lattice at LOD 0, metres; a tile at LOD `l` keeps
+    /// the candidates whose level is at least `l` (a quarter of them per level).
+    pub spacing_m: f32,
+}
+
+/// Everything the procedural world function depends on besides the seed.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldParams {
+    /// LOD-0 vertex spacing, metres.
+    pub cell_m: f32,
+    /// Water level, metres.
+    pub sea_level_m: f32,
+    /// §2.2 domain-warping constants.
+    pub warp: WarpParams,
+    /// Biome placement.
+    pub layout: BiomeLayout,
+    /// Biomes from pole (Voronoi value 0) to equator (value 1); at most [`MAX_BIOMES`].
+    pub biomes: Vec<Biome>,
+    /// Proto-texturing.
+    pub texturing: Texturing,
+    /// Scatter.
+    pub scatter: ScatterParams,
+}
+
+/// Most biomes a world may have.
+pub const MAX_BIOMES: usize = 8;
+
+fn gen(base_m: f32, amplitude_m: f32, scale_m: f32, hurst: f32) -> FractalParams {
+    FractalParams {
+        base_m,
+        amplitude_m,
+        scale_m,
+        lacunarity: 2.0,
+        hurst,
+        first_octave: 0,
+        octaves: 8,
+        warp: true,
+    }
+}
+
+fn kinds(list: &[(&str, f32, f32)]) -> Vec<ScatterKind> {
+    list.iter()
+        .map(|&(kind, density, max_slope_deg)| ScatterKind { kind: kind.into(), density, max_slope_deg })
+        .collect()
+}
+
+impl Default for WorldParams {
+    fn default() -> Self {
+        let biome = |name: &str, generator, ground: &str, snow_line_m, scatter| Biome {
+            name: name.into(),
+            generator,
+            ground: ground.into(),
+            snow_line_m,
+            scatter,
+        };
+        Self {
+            cell_m: 1.0,
+            sea_level_m: 0.0,
+            warp: WarpParams::default(),
+            layout: BiomeLayout {
+                cell_size_m: 512.0,
+                latitude: true,
+                latitude_speed_cells: 8.0,
+                dispersion: true,
+                dispersion_d: 0.2,
+                blur_radius_m: 17.0,
+            },
+            biomes: vec![
+                biome("arctic", gen(30.0, 120.0, 900.0, 0.6), "snow", -1e9, kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)])),
+                biome("tundra", gen(15.0, 60.0, 700.0, 0.7), "dirt", 60.0, kinds(&[("lichen_rock", 0.03, 35.0), ("shrub", 0.08, 30.0), ("reindeer", 0.003, 20.0)])),
+                biome("grassland", gen(20.0, 90.0, 1200.0, 0.8), "grass", 150.0, kinds(&[("oak", 0.05, 25.0), ("bush", 0.10, 30.0), ("deer", 0.004, 20.0)])),
+                biome("desert", gen(8.0, 30.0, 400.0, 0.5), "sand", 1e9, kinds(&[("cactus", 0.02, 20.0), ("dry_rock", 0.01, 40.0), ("camel", 0.002, 15.0)])),
+            ],
+            texturing: Texturing { rock_slope_deg: 38.0, rock_blend_deg: 8.0, beach_height_m: 2.0, height_blend_m: 6.0 },
+            scatter: ScatterParams { spacing_m: 4.0 },
+        }
+    }
+}
+
+/// A world setting that is out of range; `field` is a JSON pointer-like path.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{field}: {message}")]
+pub struct ParamError {
+    /// Path of the offending field, e.g. `biomes[2].generator.hurst`.
+    pub field: String,
+    /// What is wrong with it.
+    pub message: String,
+}
+
+fn check(ok: bool, field: impl Into<String>, message: &str) -> Result<(), ParamError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ParamError { field: field.into(), message: message.into() })
+    }
+}
+
+impl WorldParams {
+    /// Checks every limit; the server calls this before accepting a scene.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check(self.cell_m.is_finite() && (0.01..=1000.0).contains(&self.cell_m), "cell_m", "must be in [0.01, 1000]")?;
+        check(self.sea_level_m.is_finite(), "sea_level_m", "must be finite")?;
+        let l = &self.layout;
+        check(l.cell_size_m.is_finite() && l.cell_size_m >= 16.0 * self.cell_m, "layout.cell_size_m", "must be at least 16 vertex spacings")?;
+        check(l.latitude_speed_cells.is_finite() && l.latitude_speed_cells >= 1.0, "layout.latitude_speed_cells", "must be at least 1")?;
+        check((0.0..=1.0).contains(&l.dispersion_d), "layout.dispersion_d", "must be in [0, 1]")?;
+        check(l.blur_radius_m.is_finite() && (0.0..=64.0 * self.cell_m).contains(&l.blur_radius_m), "layout.blur_radius_m", "must be in [0, 64 vertex spacings]")?;
+        check(!self.biomes.is_empty() && self.biomes.len() <= MAX_BIOMES, "biomes", "must have 1 to 8 biomes")?;
+        for (i, b) in self.biomes.iter().enumerate() {
+            let f = |name: &str| format!("biomes[{i}].{name}");
+            check(!b.name.is_empty() && self.biomes.iter().filter(|o| o.name == b.name).count() == 1, f("name"), "must be non-empty and unique")?;
+            check(MATERIALS.contains(&b.ground.as_str()), f("ground"), "must name a material")?;
+            let g = &b.generator;
+            check(g.base_m.is_finite() && g.base_m.abs() <= 10_000.0, f("generator.base_m"), "must be in [-10000, 10000]")?;
+            check(g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0, f("generator.amplitude_m"), "must be in (0, 5000]")?;
+            check(g.scale_m.is_finite() && g.scale_m >= 4.0 * self.cell_m && g.scale_m <= 1.0e6, f("generator.scale_m"), "must be in [4 vertex spacings, 1e6]")?;
+            check(g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity), f("generator.lacunarity"), "must be in [1.1, 4]")?;
+            check(g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0, f("generator.hurst"), "must be in (0.05, 1]")?;
+            check(g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES, f("generator.octaves"), "must be in [1, 16]")?;
+            check(g.first_octave <= 8, f("generator.first_octave"), "must be in [0, 8]")?;
+            let mut total = 0.0;
+            for (k, s) in b.scatter.iter().enumerate() {
+                check((0.0..=1.0).contains(&s.density), format!("biomes[{i}].scatter[{k}].density"), "must be in [0, 1]")?;
+                total += s.density;
+            }
+            check(total <= 1.0 + 1e-6, f("scatter"), "densities must sum to at most 1")?;
+        }
+        check(self.scatter.spacing_m.is_finite() && self.scatter.spacing_m >= self.cell_m, "scatter.spacing_m", "must be at least cell_m")?;
+        Ok(())
+    }
+
+    /// Index of a material name in [`MATERIALS`].
+    pub fn material_id(name: &str) -> u8 {
+        MATERIALS.iter().position(|m| *m == name).unwrap_or(0) as u8
+    }
+}
