@@ -5,3 +5,9 @@
 //! [`server`] is the HTTP service.
 
 pub mod terrain;
+pub mod compute;
+pub mod gpu;
+pub mod bench;
+pub mod cli;
+pub mod encode;
+pub mod server;

@@ -207,33 +207,41 @@ impl Edge {
     }
 }
 
-/// Snaps the edges whose flag is set to the lattice of the next coarser LOD: even vertices take
-/// the coarser LOD's heights at the same world positions (bit for bit what that neighbour serves),
-/// odd vertices the midpoint of their even neighbours, so the shared edge is watertight.
+/// The rectangle of the next coarser LOD's lattice that an edge snaps to:
+/// `(lod, gx0, gz0, w, h)`, 33 samples along the edge.
+pub fn snap_strip(key: TileKey, edge: Edge) -> (u32, i64, i64, usize, usize) {
+    // Global lattice index of the edge's first vertex at this LOD; both are even because a tile
+    // spans 64 quads, so they lie on the coarser lattice.
+    let (gx0, gz0, along_x) = match edge {
+        Edge::North => (key.x * TILE_QUADS, key.z * TILE_QUADS, true),
+        Edge::South => (key.x * TILE_QUADS, (key.z + 1) * TILE_QUADS, true),
+        Edge::West => (key.x * TILE_QUADS, key.z * TILE_QUADS, false),
+        Edge::East => ((key.x + 1) * TILE_QUADS, key.z * TILE_QUADS, false),
+    };
+    let half = TILE_VERTS / 2 + 1;
+    let (w, h) = if along_x { (half, 1) } else { (1, half) };
+    (key.lod + 1, gx0 / 2, gz0 / 2, w, h)
+}
+
+/// Replaces an edge by the coarser lattice's heights `coarse` (33 values from [`snap_strip`]):
+/// even vertices take them bit for bit, odd vertices the midpoint of their even neighbours, so the
+/// shared edge is watertight against the coarser neighbour.
+pub fn apply_snap(tile: &mut Tile, edge: Edge, coarse: &[f32]) {
+    assert_eq!(coarse.len(), TILE_VERTS / 2 + 1, "apply_snap: strip length");
+    for t in 0..TILE_VERTS {
+        let v = edge.vertex(t);
+        tile.heights[v] = if t % 2 == 0 { coarse[t / 2] } else { (coarse[t / 2] + coarse[t / 2 + 1]) * 0.5 };
+    }
+}
+
+/// Snaps the edges whose flag is set (`n, e, s, w` order) on the CPU.
 pub fn snap_edges(plan: &WorldPlan, tile: &mut Tile, coarser: [bool; 4]) {
-    let key = tile.key;
-    if key.lod as usize + 1 >= plan.lods.len() {
+    if tile.key.lod as usize + 1 >= plan.lods.len() {
         return;
     }
     for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
-        // Global lattice index of the edge's first vertex at this LOD; both are even because a
-        // tile spans 64 quads.
-        let (gx0, gz0, along_x) = match edge {
-            Edge::North => (key.x * TILE_QUADS, key.z * TILE_QUADS, true),
-            Edge::South => (key.x * TILE_QUADS, (key.z + 1) * TILE_QUADS, true),
-            Edge::West => (key.x * TILE_QUADS, key.z * TILE_QUADS, false),
-            Edge::East => ((key.x + 1) * TILE_QUADS, key.z * TILE_QUADS, false),
-        };
-        let half = TILE_VERTS / 2 + 1;
-        let (w, h) = if along_x { (half, 1) } else { (1, half) };
-        let coarse = field(plan, key.lod + 1, gx0 / 2, gz0 / 2, w, h);
-        for t in 0..TILE_VERTS {
-            let v = edge.vertex(t);
-            tile.heights[v] = if t % 2 == 0 {
-                coarse.heights[t / 2]
-            } else {
-                (coarse.heights[t / 2] + coarse.heights[t / 2 + 1]) * 0.5
-            };
-        }
+        let (lod, gx0, gz0, w, h) = snap_strip(tile.key, *edge);
+        let coarse = field(plan, lod, gx0, gz0, w, h);
+        apply_snap(tile, *edge, &coarse.heights);
     }
 }

@@ -1,0 +1,81 @@
+//! Command-line interface.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::net::SocketAddr;
+use std::path::PathBuf;
+
+/// strata: a terrain-generation server.
+#[derive(Debug, Parser)]
+#[command(name = "strata", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Run the server.
+    Serve(ServeArgs),
+    /// Measure performance against the targets of the issues.
+    Bench(BenchArgs),
+}
+
+/// Which compute backend to use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum BackendChoice {
+    /// A hardware GPU if there is one, else the CPU path.
+    Auto,
+    /// The CPU reference path only.
+    Cpu,
+    /// A wgpu device, software adapters (lavapipe, llvmpipe) included; fails without one.
+    Gpu,
+}
+
+/// `strata serve` options.
+#[derive(Debug, clap::Args)]
+pub struct ServeArgs {
+    /// Address to listen on.
+    #[arg(long, default_value = "127.0.0.1:8080")]
+    pub addr: SocketAddr,
+    /// Data directory (scene store, caches).
+    #[arg(long, default_value = "data")]
+    pub data: PathBuf,
+    /// Compute backend.
+    #[arg(long, value_enum, default_value_t = BackendChoice::Auto)]
+    pub backend: BackendChoice,
+    /// Directory of the browser viewer served at `/`.
+    #[arg(long, default_value = "web")]
+    pub web: PathBuf,
+}
+
+/// `strata bench` options.
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Benchmark name: `tiles`.
+    pub name: String,
+    /// Print one JSON object per line instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Tiles to synthesise per core.
+    #[arg(long, default_value_t = 200)]
+    pub tiles: usize,
+}
+
+/// Runs a parsed command line.
+pub fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Command::Serve(args) => {
+            tracing_subscriber::fmt()
+                .with_env_filter(
+                    tracing_subscriber::EnvFilter::try_from_default_env()
+                        .unwrap_or_else(|_| "strata=info,tower_http=info".into()),
+                )
+                .init();
+            let rt = tokio::runtime::Builder::new_multi_thread().enable_all().build()?;
+            rt.block_on(crate::server::serve(args))
+        }
+        Command::Bench(args) => crate::bench::run(&args),
+    }
+}

@@ -1,0 +1,104 @@
+//! The compute front door: stages ask here for fields and tiles, and get them from the GPU device
+//! task when one is configured and healthy, or from the CPU reference otherwise.
+//!
+//! CPU work runs on tokio's blocking pool so request handlers never stall the reactor. A GPU job
+//! that fails (device lost, validation error, timeout) is recomputed on the CPU and the device is
+//! marked lost, so requests never fail because of the device.
+
+use crate::terrain::plan::MAX_LOD;
+use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
+use crate::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
+use serde::Serialize;
+use std::sync::Arc;
+
+/// What `GET /v1/info` reports about the compute backend.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct BackendInfo {
+    /// `"cpu"` or `"gpu"`.
+    pub backend: String,
+    /// Adapter, when a GPU device is in use.
+    pub adapter: Option<AdapterInfo>,
+    /// Whether the GPU device was lost and work fell back to the CPU.
+    pub device_lost: bool,
+}
+
+/// The wgpu adapter in use.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct AdapterInfo {
+    /// Adapter name, e.g. `"llvmpipe (LLVM 15.0.6, 256 bits)"`.
+    pub name: String,
+    /// Graphics API, e.g. `"Vulkan"`.
+    pub backend: String,
+    /// `"DiscreteGpu"`, `"IntegratedGpu"`, `"VirtualGpu"`, `"Cpu"` or `"Other"`.
+    pub device_type: String,
+}
+
+/// Handle to the compute backends; cheap to clone.
+#[derive(Clone, Debug, Default)]
+pub struct Compute {
+    gpu: Option<crate::gpu::GpuHandle>,
+}
+
+impl Compute {
+    /// CPU only.
+    pub fn cpu() -> Self {
+        Self { gpu: None }
+    }
+
+    /// With a GPU device task.
+    pub fn with_gpu(gpu: crate::gpu::GpuHandle) -> Self {
+        Self { gpu: Some(gpu) }
+    }
+
+    /// Backend report.
+    pub fn info(&self) -> BackendInfo {
+        match &self.gpu {
+            None => BackendInfo { backend: "cpu".into(), adapter: None, device_lost: false },
+            Some(g) => BackendInfo {
+                backend: if g.is_lost() { "cpu".into() } else { "gpu".into() },
+                adapter: Some(g.adapter_info()),
+                device_lost: g.is_lost(),
+            },
+        }
+    }
+
+    /// Heights and weights of a lattice rectangle.
+    pub async fn field(&self, plan: Arc<WorldPlan>, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Field {
+        if let Some(g) = &self.gpu {
+            if !g.is_lost() {
+                match g.field(plan.clone(), lod, gx0, gz0, w, h).await {
+                    Ok(f) => return f,
+                    Err(e) => tracing::warn!("GPU job failed, falling back to the CPU: {e}"),
+                }
+            }
+        }
+        let p = plan.clone();
+        tokio::task::spawn_blocking(move || crate::terrain::tile::field(&p, lod, gx0, gz0, w, h))
+            .await
+            .unwrap_or_else(|_| crate::terrain::tile::field(&plan, lod, gx0, gz0, w, h))
+    }
+
+    /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
+    pub async fn tile(&self, plan: Arc<WorldPlan>, key: TileKey, coarser: [bool; 4]) -> Tile {
+        let n = TILE_VERTS + 2;
+        let f = self.field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n).await;
+        let mut strips = Vec::new();
+        if key.lod < MAX_LOD {
+            for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
+                let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
+                strips.push((*edge, self.field(plan.clone(), lod, gx0, gz0, w, h).await));
+            }
+        }
+        let job = move || {
+            let mut t = finish(&plan, key, &f);
+            for (edge, strip) in &strips {
+                apply_snap(&mut t, *edge, &strip.heights);
+            }
+            t
+        };
+        match tokio::task::spawn_blocking(job).await {
+            Ok(t) => t,
+            Err(e) => std::panic::resume_unwind(e.into_panic()),
+        }
+    }
+}
