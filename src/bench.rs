@@ -1,8 +1,146 @@
 //! `strata bench`: performance figures against the issues' targets.
+//!
+//! `strata bench tiles` (issue 2) synthesises LOD-0 tiles of the default world (four biomes, a
+//! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
+//! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process. With `--json` each
+//! figure is one JSON object per line, units in the key names.
 
 use crate::cli::BenchArgs;
+use crate::terrain::fractal::fbm_batch;
+use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+use serde_json::json;
+use std::hint::black_box;
+use std::time::Instant;
+
+/// Target of issue 2: milliseconds per LOD-0 tile per core.
+pub const TARGET_MS_PER_TILE: f64 = 0.2;
+/// Target of issue 2: our fBm throughput over fastnoise-lite's.
+pub const TARGET_FBM_RATIO: f64 = 3.0;
 
 /// Runs a benchmark by name.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
-    anyhow::bail!("unknown benchmark {:?}", args.name)
+    match args.name.as_str() {
+        "tiles" => tiles(args),
+        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles"),
+    }
+}
+
+fn emit(args: &BenchArgs, value: serde_json::Value, line: String) {
+    if args.json {
+        println!("{value}");
+    } else {
+        println!("{line}");
+    }
+}
+
+/// The tiles of the benchmark: a strip of LOD-0 tiles that crosses several biome cells, so border
+/// tiles (blur and several generators) appear in their natural proportion.
+fn bench_keys(n: usize) -> Vec<TileKey> {
+    let side = (n as f64).sqrt().ceil() as i64;
+    (0..n as i64).map(|i| TileKey { lod: 0, x: (i % side) * 3 - 40, z: (i / side) * 3 + 20 }).collect()
+}
+
+fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
+    let plan = WorldPlan::new(7, WorldParams::default())?;
+    let kernel_taps = plan.lods[0].kernel.len();
+    let octaves = plan.lods[0].fractals.iter().map(|f| f.octaves.len()).max().unwrap_or(0);
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    emit(
+        args,
+        json!({"bench":"tiles","biomes":plan.biome_count(),"kernel_taps":kernel_taps,"octaves":octaves,"cores":cores}),
+        format!("tiles: {} biomes, {kernel_taps}-tap blur kernel, {octaves} warped octaves, {cores} cores", plan.biome_count()),
+    );
+
+    // One core.
+    let keys = bench_keys(args.tiles);
+    for k in keys.iter().take(8) {
+        black_box(synthesize(&plan, *k));
+    }
+    let mut border = 0usize;
+    let mut border_s = 0.0f64;
+    let start = Instant::now();
+    for k in &keys {
+        let t0 = Instant::now();
+        let t = black_box(synthesize(&plan, *k));
+        if t.weights.iter().any(|w| *w > 0.0 && *w < 1.0) {
+            border += 1;
+            border_s += t0.elapsed().as_secs_f64();
+        }
+    }
+    let one = start.elapsed().as_secs_f64();
+    let ms_per_tile = one * 1e3 / keys.len() as f64;
+    let interior_ms = (one - border_s) * 1e3 / (keys.len() - border).max(1) as f64;
+    let border_ms = border_s * 1e3 / border.max(1) as f64;
+    emit(
+        args,
+        json!({"bench":"tiles","figure":"one_core","tiles":keys.len(),"ms_per_tile":ms_per_tile,
+               "target_ms_per_tile":TARGET_MS_PER_TILE,"meets_target":ms_per_tile <= TARGET_MS_PER_TILE,
+               "border_tiles":border,"ms_per_border_tile":border_ms,"ms_per_interior_tile":interior_ms}),
+        format!(
+            "  one core:  {ms_per_tile:.3} ms per LOD-0 tile (target ≤ {TARGET_MS_PER_TILE}) — {border} of {} tiles blend biomes: {border_ms:.3} ms each, others {interior_ms:.3} ms",
+            keys.len()
+        ),
+    );
+
+    // All cores.
+    let all_keys = bench_keys(args.tiles * cores);
+    let start = Instant::now();
+    std::thread::scope(|s| {
+        for c in 0..cores {
+            let plan = &plan;
+            let keys = &all_keys;
+            s.spawn(move || {
+                for k in keys.iter().skip(c).step_by(cores) {
+                    black_box(synthesize(plan, *k));
+                }
+            });
+        }
+    });
+    let all = start.elapsed().as_secs_f64();
+    let tiles_per_s = all_keys.len() as f64 / all;
+    emit(
+        args,
+        json!({"bench":"tiles","figure":"all_cores","cores":cores,"tiles":all_keys.len(),"tiles_per_s":tiles_per_s,
+               "ms_per_tile_per_core":all * 1e3 * cores as f64 / all_keys.len() as f64}),
+        format!("  {cores} cores: {tiles_per_s:.0} tiles/s ({:.3} ms per tile per core)", all * 1e3 * cores as f64 / all_keys.len() as f64),
+    );
+
+    // fBm part against fastnoise-lite, one core, same sample positions and 8 octaves.
+    let n = 1 << 20;
+    let xs: Vec<f32> = (0..n).map(|i| (i % 1024) as f32 * 0.75 + 13.0).collect();
+    let zs: Vec<f32> = (0..n).map(|i| (i / 1024) as f32 * 0.75 - 7.0).collect();
+    let mut out = vec![0.0f32; n];
+    let fractal = &plan.lods[0].fractals[2];
+    fbm_batch(fractal, &xs[..4096], &zs[..4096], &mut out[..4096]);
+    let start = Instant::now();
+    fbm_batch(fractal, &xs, &zs, &mut out);
+    let ours = n as f64 / start.elapsed().as_secs_f64();
+    black_box(&out);
+
+    let mut fnl = fastnoise_lite::FastNoiseLite::with_seed(7);
+    fnl.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
+    fnl.set_fractal_type(Some(fastnoise_lite::FractalType::FBm));
+    fnl.set_fractal_octaves(Some(8));
+    fnl.set_frequency(Some(1.0 / 1200.0));
+    let start = Instant::now();
+    let mut acc = 0.0f32;
+    for i in 0..n {
+        acc += fnl.get_noise_2d(xs[i], zs[i]);
+    }
+    let theirs = n as f64 / start.elapsed().as_secs_f64();
+    black_box(acc);
+    let ratio = ours / theirs;
+    emit(
+        args,
+        json!({"bench":"tiles","figure":"fbm","octaves":fractal.octaves.len(),"warped":fractal.warp.is_some(),
+               "samples_per_s":ours,"fastnoise_lite_samples_per_s":theirs,"ratio":ratio,
+               "target_ratio":TARGET_FBM_RATIO,"meets_target":ratio >= TARGET_FBM_RATIO}),
+        format!(
+            "  fBm, one core: {:.1} M samples/s ({} warped octaves) vs fastnoise-lite {:.1} M samples/s (8-octave Perlin fBm): ratio {ratio:.2} (target ≥ {TARGET_FBM_RATIO})",
+            ours / 1e6,
+            fractal.octaves.len(),
+            theirs / 1e6
+        ),
+    );
+    Ok(())
 }

@@ -86,8 +86,7 @@ impl BiomeMapPlan {
         let mut win = Nearest { cell: (0, 0), pos: (0.0, 0.0) };
         for j in cz - RANGE..=cz + RANGE {
             for i in cx - RANGE..=cx + RANGE {
-                let sx = i as f32 + signed_unit(hash2(i, j, self.seeds.x));
-                let sz = j as f32 + signed_unit(hash2(i, j, self.seeds.z));
+                let (sx, sz) = self.seed_pos(i, j);
                 let dx = sx - x;
                 let dz = sz - z;
                 let d = dx * dx + dz * dz;
@@ -98,6 +97,12 @@ impl BiomeMapPlan {
             }
         }
         win
+    }
+
+    /// Seed position of lattice cell `(i, j)`, cells.
+    #[inline(always)]
+    pub fn seed_pos(&self, i: i32, j: i32) -> (f32, f32) {
+        (i as f32 + signed_unit(hash2(i, j, self.seeds.x)), j as f32 + signed_unit(hash2(i, j, self.seeds.z)))
     }
 
     /// Algorithms 1 and 2: the biome of a winning seed.
@@ -129,6 +134,62 @@ pub struct Nearest {
     pub pos: (f32, f32),
 }
 
+/// Seed positions of a rectangle of cells, so a grid does not re-hash them for every sample.
+struct SeedCache {
+    i0: i32,
+    j0: i32,
+    w: usize,
+    pos: Vec<(f32, f32)>,
+}
+
+/// Largest seed cache built; coarse LODs, whose samples are far apart, hash directly.
+const MAX_CACHED_SEEDS: usize = 4096;
+
+impl SeedCache {
+    fn new(plan: &BiomeMapPlan, x0_m: f32, z0_m: f32, x1_m: f32, z1_m: f32) -> Option<Self> {
+        let i0 = (x0_m * plan.inv_cell).floor() as i32 - RANGE;
+        let j0 = (z0_m * plan.inv_cell).floor() as i32 - RANGE;
+        let i1 = (x1_m * plan.inv_cell).floor() as i32 + RANGE;
+        let j1 = (z1_m * plan.inv_cell).floor() as i32 + RANGE;
+        let w = (i1 - i0 + 1) as usize;
+        let h = (j1 - j0 + 1) as usize;
+        if w * h > MAX_CACHED_SEEDS {
+            return None;
+        }
+        let mut pos = Vec::with_capacity(w * h);
+        for j in j0..=j1 {
+            for i in i0..=i1 {
+                pos.push(plan.seed_pos(i, j));
+            }
+        }
+        Some(Self { i0, j0, w, pos })
+    }
+
+    /// Same result as [`BiomeMapPlan::nearest`], with seeds from the cache.
+    fn nearest(&self, plan: &BiomeMapPlan, x_m: f32, z_m: f32) -> Nearest {
+        let x = x_m * plan.inv_cell;
+        let z = z_m * plan.inv_cell;
+        let cx = x.floor() as i32;
+        let cz = z.floor() as i32;
+        let mut best = f32::INFINITY;
+        let mut win = Nearest { cell: (0, 0), pos: (0.0, 0.0) };
+        for j in cz - RANGE..=cz + RANGE {
+            let row = (j - self.j0) as usize * self.w;
+            for i in cx - RANGE..=cx + RANGE {
+                let (sx, sz) = self.pos[row + (i - self.i0) as usize];
+                let dx = sx - x;
+                let dz = sz - z;
+                let d = dx * dx + dz * dz;
+                if d < best {
+                    best = d;
+                    win = Nearest { cell: (i, j), pos: (sx, sz) };
+                }
+            }
+        }
+        win
+    }
+}
+
 /// Fills `out` (row-major, `w × h`, row = z) with the biomes of the samples `(gx0 + i, gz0 + j)` of
 /// the lattice with spacing `spacing_m`.
 pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: usize, h: usize, out: &mut [u8]) {
@@ -140,12 +201,17 @@ pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: us
     let bz1 = (gz0 + h as i64 - 1).div_euclid(BLOCK);
     let cw = (bx1 - bx0 + 2) as usize;
     let ch = (bz1 - bz0 + 2) as usize;
+    let cache = SeedCache::new(plan, pos(bx0 * BLOCK), pos(bz0 * BLOCK), pos((bx1 + 1) * BLOCK), pos((bz1 + 1) * BLOCK));
+    let nearest = |x: f32, z: f32| match &cache {
+        Some(c) => c.nearest(plan, x, z),
+        None => plan.nearest(x, z),
+    };
     let mut corners = Vec::with_capacity(cw * ch);
     for cz in 0..ch {
         for cx in 0..cw {
             let gx = (bx0 + cx as i64) * BLOCK;
             let gz = (bz0 + cz as i64) * BLOCK;
-            corners.push(plan.nearest(pos(gx), pos(gz)));
+            corners.push(nearest(pos(gx), pos(gz)));
         }
     }
     for bz in bz0..=bz1 {
@@ -162,7 +228,7 @@ pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: us
                 let row = (gz - gz0) as usize * w;
                 for gx in xa..xb {
                     out[row + (gx - gx0) as usize] =
-                        if uniform { fill } else { plan.biome_at(pos(gx), pos(gz)) };
+                        if uniform { fill } else { plan.biome_of(&nearest(pos(gx), pos(gz))) };
                 }
             }
         }
@@ -200,6 +266,25 @@ mod tests {
             })
             .count();
         assert!(differing <= 4, "{differing} samples differ from pointwise evaluation");
+    }
+
+    #[test]
+    fn cached_seeds_give_the_same_map_as_direct_hashing() {
+        let p = plan();
+        for (spacing, gx0, gz0) in [(1.0f32, -300i64, 1000i64), (64.0, -50, 20), (4096.0, -30, -30)] {
+            let mut a = vec![0u8; 67 * 67];
+            biome_grid(&p, spacing, gx0, gz0, 67, 67, &mut a);
+            for (k, v) in a.iter().enumerate() {
+                let (gx, gz) = (gx0 + (k % 67) as i64, gz0 + (k / 67) as i64);
+                let (x, z) = (gx as f32 * spacing, gz as f32 * spacing);
+                let bx = gx.div_euclid(BLOCK) * BLOCK;
+                let bz = gz.div_euclid(BLOCK) * BLOCK;
+                let corner = |dx: i64, dz: i64| p.nearest((bx + dx) as f32 * spacing, (bz + dz) as f32 * spacing);
+                let c = [corner(0, 0), corner(BLOCK, 0), corner(0, BLOCK), corner(BLOCK, BLOCK)];
+                let want = if c.iter().all(|n| n.cell == c[0].cell) { p.biome_of(&c[0]) } else { p.biome_at(x, z) };
+                assert_eq!(*v, want, "sample {gx},{gz} at spacing {spacing}");
+            }
+        }
     }
 
     #[test]

@@ -49,6 +49,14 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
     let oh = h - 2 * r;
     assert_eq!(ids.len(), w * h, "blur_weights: input size");
     assert_eq!(out.len(), ow * oh * k, "blur_weights: output size");
+    // Shortcut with the same result: when the whole grid is one biome every window is uniform.
+    if ids.iter().all(|b| *b == ids[0]) {
+        out.fill(0.0);
+        for v in 0..ow * oh {
+            out[v * k + ids[0] as usize] = 1.0;
+        }
+        return;
+    }
 
     // Horizontal pass over every row: tags and dense values.
     let mut tags = vec![0u8; h * ow];

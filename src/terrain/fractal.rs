@@ -19,11 +19,11 @@
 //! transitions continuous.
 //!
 //! The batch evaluator works on eight lanes at a time with plain arrays, written so LLVM
-//! vectorises it; [`fbm_batch`] picks an AVX2 build of the same code at run time. No fused
-//! multiply-add is used, so both builds give the same bits.
+//! vectorises it; [`fbm_batch`] picks an AVX-512 or AVX2 build of the same code at run time. No
+//! fused multiply-add is used (Rust never contracts `a * b + c`), so all builds give the same bits.
 
-use super::noise::{fade, gaussian};
-use super::hash::{mix32, PRIME_X, PRIME_Z};
+use super::noise::{fade, lattice_hash};
+use super::hash::{PRIME_X, PRIME_Z};
 
 /// Most octaves a generator may have.
 pub const MAX_OCTAVES: usize = 16;
@@ -176,7 +176,7 @@ impl FractalPlan {
 }
 
 /// Lanes processed together by the batch evaluator.
-pub const LANES: usize = 8;
+pub const LANES: usize = 16;
 
 /// Evaluates the generator at `xs[i], zs[i]` (metres) into `out[i]` (metres).
 ///
@@ -186,12 +186,23 @@ pub fn fbm_batch(plan: &FractalPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
     assert!(xs.len() == zs.len() && xs.len() == out.len(), "fbm_batch: slice lengths differ");
     #[cfg(target_arch = "x86_64")]
     {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the CPU supports AVX-512F, checked just above.
+            unsafe { fbm_batch_avx512(plan, xs, zs, out) };
+            return;
+        }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2, checked just above.
             unsafe { fbm_batch_avx2(plan, xs, zs, out) };
             return;
         }
     }
+    fbm_batch_generic(plan, xs, zs, out);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+unsafe fn fbm_batch_avx512(plan: &FractalPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
     fbm_batch_generic(plan, xs, zs, out);
 }
 
@@ -232,29 +243,22 @@ fn fbm_lanes(plan: &FractalPlan, xs: &[f32; LANES], zs: &[f32; LANES], out: &mut
     let mut tx = [t0[0]; LANES];
     let mut tz = [t0[1]; LANES];
     let mut acc = [0.0f32; LANES];
+    let mut qx = [0.0f32; LANES];
+    let mut qz = [0.0f32; LANES];
+    let mut s = [0.0f32; LANES];
     for oct in &plan.octaves {
-        let mut s = [0.0f32; LANES];
         for l in 0..LANES {
-            let qx = (rx[l] * px[l] - rz[l] * pz[l] + tx[l]) * oct.freq;
-            let qz = (rz[l] * px[l] + rx[l] * pz[l] + tz[l]) * oct.freq;
-            s[l] = lattice_inline(qx, qz, oct.seed);
+            qx[l] = (rx[l] * px[l] - rz[l] * pz[l] + tx[l]) * oct.freq;
+            qz[l] = (rz[l] * px[l] + rx[l] * pz[l] + tz[l]) * oct.freq;
         }
+        lattice_lanes(&qx, &qz, oct.seed, &mut s);
         for l in 0..LANES {
             acc[l] += oct.amp * s[l];
         }
         if let Some(w) = &plan.warp {
-            for l in 0..LANES {
-                let rough = w.rough0 * acc[l];
-                let vx = w.c1[0] * rough + w.c2[0] + rx[l];
-                let vz = w.c1[1] * rough + w.c2[1] + rz[l];
-                let len2 = vx * vx + vz * vz;
-                let ok = len2 > 1e-20;
-                let len = len2.sqrt();
-                rx[l] = if ok { vx / len } else { rx[l] };
-                rz[l] = if ok { vz / len } else { rz[l] };
-                tx[l] = w.t[0];
-                tz[l] = w.t[1];
-            }
+            warp_lanes(w, &acc, &mut rx, &mut rz);
+            tx = [w.t[0]; LANES];
+            tz = [w.t[1]; LANES];
         }
     }
     for l in 0..LANES {
@@ -262,28 +266,73 @@ fn fbm_lanes(plan: &FractalPlan, xs: &[f32; LANES], zs: &[f32; LANES], out: &mut
     }
 }
 
-/// Same function as [`super::noise::lattice`], inlined into the lane loop.
+/// The rotation update of §2.2 for eight lanes: `r ← normalise(c1 · R0 · H + c2 + r)`, kept
+/// unchanged where the sum has (near) zero length.
 #[inline(always)]
+fn warp_lanes(w: &WarpConsts, acc: &[f32; LANES], rx: &mut [f32; LANES], rz: &mut [f32; LANES]) {
+    for l in 0..LANES {
+        let rough = w.rough0 * acc[l];
+        let vx = w.c1[0] * rough + w.c2[0] + rx[l];
+        let vz = w.c1[1] * rough + w.c2[1] + rz[l];
+        let len2 = vx * vx + vz * vz;
+        let ok = len2 > 1e-20;
+        let len = if ok { len2.sqrt() } else { 1.0 };
+        rx[l] = if ok { vx / len } else { rx[l] };
+        rz[l] = if ok { vz / len } else { rz[l] };
+    }
+}
+
+/// Lattice coordinate of a floored value as an integer. Values are clamped to ±2³⁰ first (NaN maps
+/// to −2³⁰), which keeps the conversion defined and lets it vectorise; inside the supported world
+/// the clamp never changes a value.
+#[inline(always)]
+fn lattice_index(f: f32) -> u32 {
+    let c = f.max(-1_073_741_824.0).min(1_073_741_824.0);
+    // SAFETY: `c` is finite and within i32 range after the clamp.
+    unsafe { c.to_int_unchecked::<i32>() as u32 }
+}
+
+/// Sum of the four bytes of a hash, computed two bytes at a time (same value as the byte sum).
+#[inline(always)]
+fn gaussian_fast(h: u32) -> f32 {
+    let pairs = (h & 0x00ff_00ff) + ((h >> 8) & 0x00ff_00ff);
+    let sum = (pairs & 0xffff) + (pairs >> 16);
+    (sum as i32 - 510) as f32 * super::noise::INV_BYTE_SUM_STD
+}
+
+/// [`super::noise::lattice`] for eight lanes.
+#[inline(always)]
+fn lattice_lanes(xs: &[f32; LANES], zs: &[f32; LANES], seed: u32, out: &mut [f32; LANES]) {
+    for l in 0..LANES {
+        let fx = xs[l].floor();
+        let fz = zs[l].floor();
+        let tx = xs[l] - fx;
+        let tz = zs[l] - fz;
+        let ix = lattice_index(fx);
+        let iz = lattice_index(fz);
+        let hx0 = ix.wrapping_mul(PRIME_X);
+        let hx1 = hx0.wrapping_add(PRIME_X);
+        let hz = iz.wrapping_mul(PRIME_Z);
+        let hz0 = hz ^ seed;
+        let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
+        let v00 = gaussian_fast(lattice_hash(hx0 ^ hz0));
+        let v10 = gaussian_fast(lattice_hash(hx1 ^ hz0));
+        let v01 = gaussian_fast(lattice_hash(hx0 ^ hz1));
+        let v11 = gaussian_fast(lattice_hash(hx1 ^ hz1));
+        let u = fade(tx);
+        let v = fade(tz);
+        let a = v00 + (v10 - v00) * u;
+        let b = v01 + (v11 - v01) * u;
+        out[l] = a + (b - a) * v;
+    }
+}
+
+/// Same function as [`super::noise::lattice`] for one point (used by tests).
+#[cfg(test)]
 fn lattice_inline(x: f32, z: f32, seed: u32) -> f32 {
-    let fx = x.floor();
-    let fz = z.floor();
-    let tx = x - fx;
-    let tz = z - fz;
-    let ix = fx as i32 as u32;
-    let iz = fz as i32 as u32;
-    let hx0 = ix.wrapping_mul(PRIME_X);
-    let hx1 = hx0.wrapping_add(PRIME_X);
-    let hz0 = iz.wrapping_mul(PRIME_Z) ^ seed;
-    let hz1 = iz.wrapping_add(1).wrapping_mul(PRIME_Z) ^ seed;
-    let v00 = gaussian(mix32(hx0 ^ hz0));
-    let v10 = gaussian(mix32(hx1 ^ hz0));
-    let v01 = gaussian(mix32(hx0 ^ hz1));
-    let v11 = gaussian(mix32(hx1 ^ hz1));
-    let u = fade(tx);
-    let v = fade(tz);
-    let a = v00 + (v10 - v00) * u;
-    let b = v01 + (v11 - v01) * u;
-    a + (b - a) * v
+    let mut out = [0.0; LANES];
+    lattice_lanes(&[x; LANES], &[z; LANES], seed, &mut out);
+    out[0]
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ use super::biome::BiomeMapPlan;
 use super::blur::kernel_for;
 use super::fractal::{FractalPlan, MAX_OCTAVES};
 use super::hash::{purpose, stream};
+use super::texture::TexturePlan;
 use super::world::{ParamError, WorldParams};
 
 /// Finest LOD.
@@ -46,6 +47,8 @@ pub struct WorldPlan {
     pub biome_map: BiomeMapPlan,
     /// Per-LOD constants, index = LOD.
     pub lods: Vec<LodPlan>,
+    /// Proto-texturing constants.
+    pub texture: TexturePlan,
 }
 
 impl WorldPlan {
@@ -74,7 +77,8 @@ impl WorldPlan {
                 }
             })
             .collect();
-        Ok(Self { seed, params, biome_map, lods })
+        let texture = TexturePlan::new(&params);
+        Ok(Self { seed, params, biome_map, lods, texture })
     }
 
     /// Number of biomes.

@@ -3,7 +3,8 @@
 //!
 //! Each candidate material gets a weight in [0, 1] from smooth steps of height and slope:
 //! - `seabed` = under water;
-//! - `rock` = slope above `rock_slope_deg` (blended over `rock_blend_deg`), on land;
+//! - `rock` = slope above `rock_slope_deg` (blended over `rock_blend_deg`, the blend running on
+//!   the cosine of the slope), on land;
 //! - `snow` = above the biome-weighted snow line, where not rock;
 //! - `sand` (beach) = less than `beach_height_m` above the sea, where not rock;
 //! - each biome's ground material gets `w_b · (1 − rock) · (1 − snow) · (1 − beach)`.
@@ -29,32 +30,63 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
+/// Per-world constants of the weighting function, resolved once.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexturePlan {
+    sea_level_m: f32,
+    height_blend_m: f32,
+    beach_height_m: f32,
+    /// `cos` of the slope where rock starts and where it is complete (the slope smoothstep runs
+    /// in `cos` space, i.e. on the normal's y component, which avoids an `acos` per vertex).
+    rock_cos: (f32, f32),
+    ground: Vec<u8>,
+    snow_line_m: Vec<f32>,
+}
+
+impl TexturePlan {
+    /// Resolves the settings.
+    pub fn new(params: &WorldParams) -> Self {
+        let t = &params.texturing;
+        let lo = (t.rock_slope_deg - t.rock_blend_deg * 0.5).to_radians().cos();
+        let hi = (t.rock_slope_deg + t.rock_blend_deg * 0.5).to_radians().cos();
+        Self {
+            sea_level_m: params.sea_level_m,
+            height_blend_m: t.height_blend_m.max(1e-3),
+            beach_height_m: t.beach_height_m,
+            rock_cos: (lo, if hi == lo { lo - 1e-6 } else { hi }),
+            ground: params.biomes.iter().map(|b| WorldParams::material_id(&b.ground)).collect(),
+            snow_line_m: params.biomes.iter().map(|b| b.snow_line_m.clamp(-1e6, 1e6)).collect(),
+        }
+    }
+}
+
 /// Material weights, indexed like [`MATERIALS`].
-pub fn material_weights(params: &WorldParams, s: &Surface) -> [f32; MATERIALS.len()] {
-    let tex = &params.texturing;
+pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len()] {
     let mut out = [0.0f32; MATERIALS.len()];
-    let above = s.height_m - params.sea_level_m;
-    let blend = tex.height_blend_m.max(1e-3);
+    let above = s.height_m - plan.sea_level_m;
+    let blend = plan.height_blend_m;
     let wet = 1.0 - smoothstep(-blend * 0.5, 0.0, above);
     out[material::SEABED as usize] = wet;
-    let slope_deg = s.normal_y.clamp(-1.0, 1.0).acos().to_degrees();
-    let rock = smoothstep(tex.rock_slope_deg - tex.rock_blend_deg * 0.5, tex.rock_slope_deg + tex.rock_blend_deg * 0.5, slope_deg) * (1.0 - wet);
+    let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, s.normal_y) * (1.0 - wet);
     out[material::ROCK as usize] = rock;
-    let snow_line: f32 = params.biomes.iter().zip(s.weights).map(|(b, w)| w * b.snow_line_m.clamp(-1e6, 1e6)).sum();
+    let mut snow_line = 0.0f32;
+    for (line, w) in plan.snow_line_m.iter().zip(s.weights) {
+        snow_line += w * line;
+    }
     let snow = smoothstep(snow_line - blend, snow_line + blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
     out[material::SNOW as usize] += snow;
-    let beach = (1.0 - smoothstep(tex.beach_height_m, tex.beach_height_m + blend, above)) * (1.0 - wet) * (1.0 - rock);
+    let beach = (1.0 - smoothstep(plan.beach_height_m, plan.beach_height_m + blend, above)) * (1.0 - wet) * (1.0 - rock);
     out[material::SAND as usize] += beach;
     let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
-    for (b, w) in params.biomes.iter().zip(s.weights) {
-        out[WorldParams::material_id(&b.ground) as usize] += w * rest;
+    for (g, w) in plan.ground.iter().zip(s.weights) {
+        out[*g as usize] += w * rest;
     }
     out
 }
 
 /// The dominant material id of a vertex.
-pub fn proto_texture(params: &WorldParams, s: &Surface) -> u8 {
-    let w = material_weights(params, s);
+pub fn proto_texture(plan: &TexturePlan, s: &Surface) -> u8 {
+    let w = material_weights(plan, s);
     let mut best = 0;
     for (m, &v) in w.iter().enumerate() {
         if v > w[best] {
@@ -70,7 +102,7 @@ mod tests {
 
     #[test]
     fn steep_slopes_are_rock_and_water_is_seabed() {
-        let p = WorldParams::default();
+        let p = TexturePlan::new(&WorldParams::default());
         let grass = [0.0, 0.0, 1.0, 0.0];
         let flat = Surface { height_m: 30.0, normal_y: 1.0, weights: &grass };
         assert_eq!(proto_texture(&p, &flat), material::GRASS);

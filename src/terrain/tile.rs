@@ -149,7 +149,7 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
             let normal = [-dx / len, 1.0 / len, -dz / len];
             let w = &f.weights[v * k..(v + 1) * k];
             let surface = Surface { height_m: h, normal_y: normal[1], weights: w };
-            materials.push(proto_texture(&plan.params, &surface));
+            materials.push(proto_texture(&plan.texture, &surface));
             water_depth.push((plan.params.sea_level_m - h).max(0.0));
             heights.push(h);
             normals.push(normal);
