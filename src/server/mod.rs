@@ -1,8 +1,210 @@
-//! The HTTP service.
+//! The HTTP service: product URLs keyed by seed and tile address, the viewer, and the API
+//! contract of `api/openapi.yaml`.
+//!
+//! [`serve`] is a thin wrapper that opens the compute backend, binds the socket and runs
+//! [`app`]; [`app`] builds the whole router from an [`AppState`] so tests drive it with
+//! `tower::ServiceExt::oneshot` and no socket.
+//!
+//! Routes (see [`routes`]):
+//!
+//! | route | product |
+//! |---|---|
+//! | `GET /healthz` | `{"status":"ok"}` |
+//! | `GET /v1/info` | version, backend, limits, formats, world |
+//! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w]` | height tile |
+//! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
+//! | `GET /*` | the viewer directory (`--web`) |
+//!
+//! Product responses are pure functions of the URL: they carry a content-hash `ETag`, answer
+//! `If-None-Match` with 304 and are `Cache-Control: public, max-age=31536000, immutable`. Errors
+//! have one JSON shape ([`AppError`]). Limits: [`Limits`].
+
+pub mod error;
+pub mod params;
+mod plans;
+pub mod routes;
+
+pub use error::AppError;
 
 use crate::cli::ServeArgs;
+use crate::compute::Compute;
+use crate::terrain::WorldPlan;
+use plans::PlanCache;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Duration;
+use tokio::sync::Semaphore;
 
-/// Runs the server until Ctrl-C.
-pub async fn serve(_args: ServeArgs) -> anyhow::Result<()> {
-    anyhow::bail!("not yet")
+/// Tile syntheses (plus their encoding) that may run at once; the rest queue.
+pub const MAX_CONCURRENT_SYNTHESES: usize = 16;
+/// A request whose synthesis has not finished (queueing included) within this time gets 503
+/// `synthesis_timeout`; the synthesis itself finishes in the background, holding its slot.
+pub const SYNTHESIS_TIMEOUT: Duration = Duration::from_secs(30);
+/// Largest request body accepted; no route reads a body, so this only guards the future.
+pub const MAX_BODY_BYTES: usize = 64 * 1024;
+/// World plans kept, one per seed, least recently used evicted first.
+pub const PLAN_CACHE_SEEDS: usize = 32;
+
+/// Request limits of an [`AppState`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Syntheses running at once ([`MAX_CONCURRENT_SYNTHESES`]).
+    pub max_concurrent_syntheses: usize,
+    /// Time limit of one synthesis, queueing included ([`SYNTHESIS_TIMEOUT`]).
+    pub synthesis_timeout: Duration,
+    /// World plans cached ([`PLAN_CACHE_SEEDS`]).
+    pub plan_cache_seeds: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            max_concurrent_syntheses: MAX_CONCURRENT_SYNTHESES,
+            synthesis_timeout: SYNTHESIS_TIMEOUT,
+            plan_cache_seeds: PLAN_CACHE_SEEDS,
+        }
+    }
+}
+
+/// Shared state of the handlers; cheap to clone.
+#[derive(Clone, Debug)]
+pub struct AppState {
+    /// The compute backends.
+    pub compute: Compute,
+    /// Directory served at `/`, if any.
+    pub web: Option<PathBuf>,
+    limits: Limits,
+    plans: Arc<PlanCache>,
+    slots: Arc<Semaphore>,
+}
+
+impl AppState {
+    /// State with default [`Limits`] and no viewer directory.
+    pub fn new(compute: Compute) -> Self {
+        Self::with_limits(compute, Limits::default())
+    }
+
+    /// State with the given limits and no viewer directory.
+    pub fn with_limits(compute: Compute, limits: Limits) -> Self {
+        Self {
+            compute,
+            web: None,
+            limits,
+            plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
+            slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
+        }
+    }
+
+    /// Serves `dir` at `/`.
+    pub fn with_web(mut self, dir: impl Into<PathBuf>) -> Self {
+        self.web = Some(dir.into());
+        self
+    }
+
+    /// The limits in force.
+    pub fn limits(&self) -> Limits {
+        self.limits
+    }
+
+    /// The plan of a seed's default world, from the cache or built on the blocking pool.
+    pub async fn plan(&self, seed: u64) -> Result<Arc<WorldPlan>, AppError> {
+        self.plans.get_or_build(seed).await
+    }
+
+    /// Runs `job` in one synthesis slot under the time limit. The job runs as its own task, so
+    /// on timeout the client is answered at once while the job completes and frees its slot.
+    pub async fn limited<T, F>(&self, job: F) -> Result<T, AppError>
+    where
+        T: Send + 'static,
+        F: std::future::Future<Output = Result<T, AppError>> + Send + 'static,
+    {
+        let slots = self.slots.clone();
+        let run = async move {
+            let permit = slots
+                .acquire_owned()
+                .await
+                .map_err(|_| AppError::internal("synthesis slots closed"))?;
+            let task = tokio::spawn(async move {
+                let _permit = permit;
+                job.await
+            });
+            match task.await {
+                Ok(r) => r,
+                Err(e) => {
+                    tracing::error!("synthesis task failed: {e}");
+                    Err(AppError::internal("tile synthesis failed"))
+                }
+            }
+        };
+        match tokio::time::timeout(self.limits.synthesis_timeout, run).await {
+            Ok(r) => r,
+            Err(_) => Err(AppError::new(
+                axum::http::StatusCode::SERVICE_UNAVAILABLE,
+                error::code::SYNTHESIS_TIMEOUT,
+                format!(
+                    "tile synthesis did not finish within {} ms; retry later",
+                    self.limits.synthesis_timeout.as_millis()
+                ),
+            )),
+        }
+    }
+}
+
+/// The router of the whole service.
+pub fn app(state: AppState) -> axum::Router {
+    routes::router(state)
+}
+
+/// Opens the compute backend the command line asks for.
+async fn open_compute(choice: crate::cli::BackendChoice) -> anyhow::Result<Compute> {
+    // GPU: the device task is not wired yet (src/gpu/mod.rs has no `open`); switch this line to
+    // `crate::gpu::open(choice).await?.map(Compute::with_gpu).unwrap_or_else(Compute::cpu)` when it lands.
+    let _ = choice;
+    Ok(Compute::cpu())
+}
+
+/// Runs the server until Ctrl-C or SIGTERM.
+pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
+    let compute = open_compute(args.backend).await?;
+    tracing::info!(backend = ?compute.info(), "compute backend");
+    let mut state = AppState::new(compute);
+    if args.web.is_dir() {
+        state = state.with_web(args.web.clone());
+    } else {
+        tracing::warn!(
+            "viewer directory {} does not exist; / serves nothing",
+            args.web.display()
+        );
+    }
+    let listener = tokio::net::TcpListener::bind(args.addr).await?;
+    tracing::info!("listening on http://{}", listener.local_addr()?);
+    axum::serve(listener, app(state))
+        .with_graceful_shutdown(shutdown_signal())
+        .await?;
+    Ok(())
+}
+
+async fn shutdown_signal() {
+    let ctrl_c = async {
+        if let Err(e) = tokio::signal::ctrl_c().await {
+            tracing::warn!("cannot listen for Ctrl-C: {e}");
+            std::future::pending::<()>().await;
+        }
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! {
+        _ = ctrl_c => {},
+        _ = term => {},
+    }
+    tracing::info!("shutting down");
 }

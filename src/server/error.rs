@@ -1,0 +1,143 @@
+//! The one error type of the HTTP service and its JSON shape.
+//!
+//! Every error response has the body `{"error": {"code", "message", "field"}}` where `code` is a
+//! stable machine-readable string (listed in [`code`]), `message` is for humans and may change,
+//! and `field` names the offending request parameter or is `null`.
+
+use axum::http::{header, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use serde::Serialize;
+
+/// The stable error codes.
+pub mod code {
+    /// `seed` is not a decimal `u64`.
+    pub const BAD_SEED: &str = "bad_seed";
+    /// `lod` is not an integer.
+    pub const BAD_LOD: &str = "bad_lod";
+    /// `lod` is an integer outside `0..=12`.
+    pub const LOD_OUT_OF_RANGE: &str = "lod_out_of_range";
+    /// `x` or `z` is not an integer.
+    pub const BAD_COORDINATE: &str = "bad_coordinate";
+    /// `x` or `z` is an integer outside the supported world.
+    pub const COORDINATE_OUT_OF_RANGE: &str = "coordinate_out_of_range";
+    /// The extension names no format (or is missing).
+    pub const UNKNOWN_FORMAT: &str = "unknown_format";
+    /// `seams` is not four comma-separated `0`/`1` flags.
+    pub const BAD_SEAMS: &str = "bad_seams";
+    /// The path is not valid (e.g. percent-encoding that is not UTF-8).
+    pub const BAD_PATH: &str = "bad_path";
+    /// No route or file matches the path.
+    pub const NOT_FOUND: &str = "not_found";
+    /// The route exists but not for this method.
+    pub const METHOD_NOT_ALLOWED: &str = "method_not_allowed";
+    /// The request body is larger than the limit.
+    pub const PAYLOAD_TOO_LARGE: &str = "payload_too_large";
+    /// Tile synthesis did not finish (queueing included) within the time limit; retry later.
+    pub const SYNTHESIS_TIMEOUT: &str = "synthesis_timeout";
+    /// A bug or an unexpected failure on the server.
+    pub const INTERNAL: &str = "internal";
+}
+
+/// An error answered to the client.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{code}: {message}")]
+pub struct AppError {
+    /// HTTP status (4xx or 5xx).
+    pub status: StatusCode,
+    /// Stable code from [`code`].
+    pub code: &'static str,
+    /// Human-readable explanation.
+    pub message: String,
+    /// The offending request parameter, if one is to blame.
+    pub field: Option<&'static str>,
+}
+
+#[derive(Serialize)]
+struct Body<'a> {
+    error: Inner<'a>,
+}
+
+#[derive(Serialize)]
+struct Inner<'a> {
+    code: &'a str,
+    message: &'a str,
+    field: Option<&'a str>,
+}
+
+impl AppError {
+    /// A 400 Bad Request blaming `field`.
+    pub fn bad_request(
+        code: &'static str,
+        field: &'static str,
+        message: impl Into<String>,
+    ) -> Self {
+        Self {
+            status: StatusCode::BAD_REQUEST,
+            code,
+            message: message.into(),
+            field: Some(field),
+        }
+    }
+
+    /// 404 `not_found`.
+    pub fn not_found(path: &str) -> Self {
+        Self {
+            status: StatusCode::NOT_FOUND,
+            code: code::NOT_FOUND,
+            message: format!("no route or file for {}", truncate(path, 200)),
+            field: None,
+        }
+    }
+
+    /// 500 `internal`.
+    pub fn internal(message: impl Into<String>) -> Self {
+        Self {
+            status: StatusCode::INTERNAL_SERVER_ERROR,
+            code: code::INTERNAL,
+            message: message.into(),
+            field: None,
+        }
+    }
+
+    /// Any status and code without a field.
+    pub fn new(status: StatusCode, code: &'static str, message: impl Into<String>) -> Self {
+        Self {
+            status,
+            code,
+            message: message.into(),
+            field: None,
+        }
+    }
+}
+
+/// At most `max` characters of `s` (for echoing client input in messages).
+pub fn truncate(s: &str, max: usize) -> String {
+    match s.char_indices().nth(max) {
+        Some((i, _)) => format!("{}…", &s[..i]),
+        None => s.to_string(),
+    }
+}
+
+impl IntoResponse for AppError {
+    fn into_response(self) -> Response {
+        let body = Body {
+            error: Inner {
+                code: self.code,
+                message: &self.message,
+                field: self.field,
+            },
+        };
+        let bytes = serde_json::to_vec(&body).unwrap_or_default();
+        let mut res = (self.status, bytes).into_response();
+        let h = res.headers_mut();
+        h.insert(
+            header::CONTENT_TYPE,
+            HeaderValue::from_static("application/json"),
+        );
+        h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+        if self.status == StatusCode::SERVICE_UNAVAILABLE {
+            h.insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
+        }
+        res
+    }
+}

@@ -1,0 +1,386 @@
+//! Route table, handlers, conditional requests and the middleware stack.
+
+use super::error::{code, AppError};
+use super::params::{check_bounds, parse_product, parse_seams};
+use super::{AppState, MAX_BODY_BYTES};
+use crate::encode::{self, Format};
+use crate::terrain::plan::{TILE_QUADS, WORLD_LIMIT_CELLS};
+use crate::terrain::world::MATERIALS;
+use crate::terrain::{Tile, WorldPlan, MAX_LOD, MIN_LOD, TILE_VERTEX_COUNT, TILE_VERTS};
+use axum::extract::rejection::PathRejection;
+use axum::extract::{DefaultBodyLimit, Path, RawQuery, Request, State};
+use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode, Uri};
+use axum::middleware::{self, Next};
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+use axum::{Json, Router};
+use serde_json::json;
+use tower_http::compression::predicate::{Predicate, SizeAbove};
+use tower_http::compression::CompressionLayer;
+use tower_http::services::ServeDir;
+use tower_http::trace::TraceLayer;
+
+/// `Cache-Control` of product URLs: their content is a pure function of the URL.
+pub const IMMUTABLE: &str = "public, max-age=31536000, immutable";
+/// Header with the height of PNG value 0, metres.
+pub const HEIGHT_OFFSET_HEADER: &str = "x-strata-height-offset-m";
+/// Header with the metres per PNG value unit.
+pub const HEIGHT_SCALE_HEADER: &str = "x-strata-height-scale-m";
+/// Hex digits of the blake3 content hash kept in the `ETag` (128 bits).
+pub const ETAG_HEX_DIGITS: usize = 32;
+/// JSON responses at least this long are gzip-compressed when the client accepts gzip.
+pub const COMPRESS_MIN_BYTES: u16 = 256;
+
+/// Builds the router (see the module docs of [`super`] for the route table).
+pub fn router(state: AppState) -> Router {
+    let routes = Router::new()
+        .route("/healthz", get(healthz))
+        .route("/v1/info", get(info))
+        .route("/v1/seeds/{seed}/tiles/{lod}/{x}/{z_ext}", get(tile))
+        .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
+        .method_not_allowed_fallback(method_not_allowed);
+    let routes = match &state.web {
+        Some(dir) => {
+            let not_found = axum::handler::HandlerWithoutStateExt::into_service(not_found);
+            routes.fallback_service(ServeDir::new(dir).not_found_service(not_found))
+        }
+        None => routes.fallback(not_found),
+    };
+    let json_only =
+        |status: StatusCode, _: axum::http::Version, h: &HeaderMap, _: &axum::http::Extensions| {
+            status == StatusCode::OK
+                && h.get(header::CONTENT_TYPE)
+                    .and_then(|v| v.to_str().ok())
+                    .is_some_and(|v| v.starts_with("application/json"))
+        };
+    routes
+        .with_state(state)
+        .layer(middleware::from_fn(limit_body))
+        .layer(DefaultBodyLimit::max(MAX_BODY_BYTES))
+        .layer(
+            CompressionLayer::new()
+                .gzip(true)
+                .compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(json_only)),
+        )
+        .layer(middleware::map_response(etag_per_encoding))
+        .layer(TraceLayer::new_for_http())
+}
+
+async fn healthz() -> Response {
+    let mut res = Json(json!({ "status": "ok" })).into_response();
+    res.headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+    res
+}
+
+async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
+    let plan = st.plan(0).await?;
+    let limits = st.limits();
+    let cell_m = plan.params.cell_m as f64;
+    let doc = json!({
+        "name": "strata",
+        "version": env!("CARGO_PKG_VERSION"),
+        "api": "v1",
+        "backend": st.compute.info(),
+        "limits": {
+            "min_lod": MIN_LOD,
+            "max_lod": MAX_LOD,
+            "tile_size": TILE_VERTS,
+            "tile_quads": TILE_QUADS,
+            "vertex_count": TILE_VERTEX_COUNT,
+            "world_limit_cells": WORLD_LIMIT_CELLS,
+            "world_limit_m": WORLD_LIMIT_CELLS * cell_m,
+            "max_tile_coord": (MIN_LOD..=MAX_LOD).map(|l| plan.max_tile_coord(l)).collect::<Vec<_>>(),
+            "max_concurrent_syntheses": limits.max_concurrent_syntheses,
+            "synthesis_timeout_ms": limits.synthesis_timeout.as_millis() as u64,
+            "max_body_bytes": MAX_BODY_BYTES,
+            "plan_cache_seeds": limits.plan_cache_seeds,
+        },
+        "formats": Format::ALL.iter().map(|f| json!({
+            "extension": f.extension(),
+            "content_type": f.content_type(),
+            "products": if *f == Format::Json { vec!["tiles", "scatter"] } else { vec!["tiles"] },
+        })).collect::<Vec<_>>(),
+        "world": {
+            "params": "default",
+            "cell_m": plan.params.cell_m,
+            "sea_level_m": plan.params.sea_level_m,
+            "biomes": plan.params.biomes.iter().map(|b| b.name.as_str()).collect::<Vec<_>>(),
+            "materials": MATERIALS,
+        },
+    });
+    let mut res = Json(doc).into_response();
+    res.headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
+    Ok(res)
+}
+
+type Segments = Result<Path<(String, String, String, String)>, PathRejection>;
+
+fn segments(path: Segments) -> Result<(String, String, String, String), AppError> {
+    match path {
+        Ok(Path(s)) => Ok(s),
+        Err(e) => Err(AppError::new(
+            StatusCode::BAD_REQUEST,
+            code::BAD_PATH,
+            format!("invalid path: {e}"),
+        )),
+    }
+}
+
+/// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}[?seams=n,e,s,w]`.
+async fn tile(
+    State(st): State<AppState>,
+    path: Segments,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (seed, lod, x, z_ext) = segments(path)?;
+    let req = parse_product(&seed, &lod, &x, &z_ext)?;
+    let plan = st.plan(req.seed).await?;
+    check_bounds(&plan, req.key)?;
+    let seams = parse_seams(query.as_deref())?;
+    let compute = st.compute.clone();
+    let product = st
+        .limited(async move {
+            let tile = compute.tile(plan.clone(), req.key, seams).await;
+            blocking(move || encode_tile(&plan, &tile, req.format)).await?
+        })
+        .await?;
+    Ok(product.respond(&headers))
+}
+
+/// `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json`.
+async fn scatter(
+    State(st): State<AppState>,
+    path: Segments,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (seed, lod, x, z_ext) = segments(path)?;
+    let req = parse_product(&seed, &lod, &x, &z_ext)?;
+    if req.format != Format::Json {
+        return Err(AppError::bad_request(
+            code::UNKNOWN_FORMAT,
+            "format",
+            "scatter is only available as .json",
+        ));
+    }
+    let plan = st.plan(req.seed).await?;
+    check_bounds(&plan, req.key)?;
+    let compute = st.compute.clone();
+    let product = st
+        .limited(async move {
+            let tile = compute.tile(plan.clone(), req.key, [false; 4]).await;
+            let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
+            Ok(Product {
+                body,
+                content_type: Format::Json.content_type(),
+                extra: Vec::new(),
+            })
+        })
+        .await?;
+    Ok(product.respond(&headers))
+}
+
+async fn blocking<T: Send + 'static>(
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, AppError> {
+    tokio::task::spawn_blocking(f).await.map_err(|e| {
+        tracing::error!("encoding failed: {e}");
+        AppError::internal("encoding failed")
+    })
+}
+
+async fn not_found(uri: Uri) -> AppError {
+    AppError::not_found(uri.path())
+}
+
+async fn method_not_allowed() -> AppError {
+    AppError::new(
+        StatusCode::METHOD_NOT_ALLOWED,
+        code::METHOD_NOT_ALLOWED,
+        "only GET and HEAD are supported here",
+    )
+}
+
+/// Refuses declared bodies larger than [`MAX_BODY_BYTES`] before any handler runs.
+async fn limit_body(req: Request, next: Next) -> Response {
+    let declared = req
+        .headers()
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.parse::<u64>().ok());
+    if declared.is_some_and(|n| n > MAX_BODY_BYTES as u64) {
+        return AppError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            code::PAYLOAD_TOO_LARGE,
+            format!("request bodies are limited to {MAX_BODY_BYTES} bytes"),
+        )
+        .into_response();
+    }
+    next.run(req).await
+}
+
+/// A compressed representation gets its own entity tag, `"<hash>-gzip"`, as different bytes must.
+async fn etag_per_encoding(mut res: Response) -> Response {
+    let gzip = res
+        .headers()
+        .get(header::CONTENT_ENCODING)
+        .is_some_and(|v| v.as_bytes() == b"gzip");
+    if gzip {
+        let tag = res
+            .headers()
+            .get(header::ETAG)
+            .and_then(|v| v.to_str().ok())
+            .and_then(|t| t.strip_prefix('"')?.strip_suffix('"').map(str::to_owned));
+        if let Some(tag) = tag {
+            if let Ok(v) = HeaderValue::from_str(&format!("\"{tag}-gzip\"")) {
+                res.headers_mut().insert(header::ETAG, v);
+            }
+        }
+    }
+    res
+}
+
+/// An encoded product ready to be answered.
+#[derive(Debug)]
+pub struct Product {
+    /// The bytes.
+    pub body: Vec<u8>,
+    /// `Content-Type`.
+    pub content_type: &'static str,
+    /// Extra headers (`X-Strata-*`).
+    pub extra: Vec<(HeaderName, String)>,
+}
+
+/// Encodes a tile in a format.
+pub fn encode_tile(plan: &WorldPlan, tile: &Tile, format: Format) -> Result<Product, AppError> {
+    let mut extra = Vec::new();
+    let body = match format {
+        Format::Json => encode::json::encode(plan, tile),
+        Format::Bin => encode::bin::encode(plan, tile),
+        Format::Glb => encode::glb::encode(plan, tile),
+        Format::Png => {
+            let png = encode::heightmap::encode(plan, tile)
+                .map_err(|e| AppError::internal(format!("PNG encoding failed: {e}")))?;
+            extra.push((
+                HeaderName::from_static(HEIGHT_OFFSET_HEADER),
+                png.mapping.offset_m.to_string(),
+            ));
+            extra.push((
+                HeaderName::from_static(HEIGHT_SCALE_HEADER),
+                png.mapping.scale_m.to_string(),
+            ));
+            png.bytes
+        }
+    };
+    Ok(Product {
+        body,
+        content_type: format.content_type(),
+        extra,
+    })
+}
+
+/// The entity tag of some bytes: the first [`ETAG_HEX_DIGITS`] hex digits of their blake3 hash.
+pub fn content_hash(body: &[u8]) -> String {
+    let hex = blake3::hash(body).to_hex();
+    hex[..ETAG_HEX_DIGITS].to_string()
+}
+
+/// The tag of `If-None-Match` that matches `hash` (any encoding variant, weak or strong, or `*`),
+/// normalised to the form this server sends.
+fn matching_tag(req: &HeaderMap, hash: &str) -> Option<String> {
+    for value in req.get_all(header::IF_NONE_MATCH) {
+        let Ok(value) = value.to_str() else { continue };
+        for tag in value.split(',').map(str::trim) {
+            if tag == "*" {
+                return Some(format!("\"{hash}\""));
+            }
+            let opaque = tag.strip_prefix("W/").unwrap_or(tag);
+            let Some(inner) = opaque.strip_prefix('"').and_then(|t| t.strip_suffix('"')) else {
+                continue;
+            };
+            if inner == hash {
+                return Some(format!("\"{hash}\""));
+            }
+            if inner.strip_suffix("-gzip") == Some(hash) {
+                return Some(format!("\"{hash}-gzip\""));
+            }
+        }
+    }
+    None
+}
+
+impl Product {
+    /// 200 with the body, or 304 if `If-None-Match` names it; caching headers on both.
+    pub fn respond(self, req: &HeaderMap) -> Response {
+        let hash = content_hash(&self.body);
+        let (mut res, etag) = match matching_tag(req, &hash) {
+            Some(tag) => (StatusCode::NOT_MODIFIED.into_response(), tag),
+            None => {
+                let mut res = (StatusCode::OK, self.body).into_response();
+                res.headers_mut().insert(
+                    header::CONTENT_TYPE,
+                    HeaderValue::from_static(self.content_type),
+                );
+                (res, format!("\"{hash}\""))
+            }
+        };
+        let h = res.headers_mut();
+        if let Ok(v) = HeaderValue::from_str(&etag) {
+            h.insert(header::ETAG, v);
+        }
+        h.insert(header::CACHE_CONTROL, HeaderValue::from_static(IMMUTABLE));
+        h.insert(
+            header::ACCESS_CONTROL_ALLOW_ORIGIN,
+            HeaderValue::from_static("*"),
+        );
+        h.insert(
+            header::ACCESS_CONTROL_EXPOSE_HEADERS,
+            HeaderValue::from_static("ETag, X-Strata-Height-Offset-M, X-Strata-Height-Scale-M"),
+        );
+        h.insert(
+            header::X_CONTENT_TYPE_OPTIONS,
+            HeaderValue::from_static("nosniff"),
+        );
+        for (name, value) in self.extra {
+            if let Ok(v) = HeaderValue::from_str(&value) {
+                h.insert(name, v);
+            }
+        }
+        res
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn if_none_match_forms() {
+        let h = |v: &str| {
+            let mut m = HeaderMap::new();
+            m.insert(
+                header::IF_NONE_MATCH,
+                HeaderValue::from_str(v).expect("header"),
+            );
+            m
+        };
+        assert_eq!(
+            matching_tag(&h("\"abc\""), "abc").as_deref(),
+            Some("\"abc\"")
+        );
+        assert_eq!(
+            matching_tag(&h("W/\"abc\""), "abc").as_deref(),
+            Some("\"abc\"")
+        );
+        assert_eq!(
+            matching_tag(&h("\"x\", \"abc-gzip\""), "abc").as_deref(),
+            Some("\"abc-gzip\"")
+        );
+        assert_eq!(matching_tag(&h("*"), "abc").as_deref(), Some("\"abc\""));
+        assert_eq!(matching_tag(&h("\"abd\""), "abc"), None);
+        assert_eq!(matching_tag(&h("abc"), "abc"), None);
+        assert_eq!(matching_tag(&HeaderMap::new(), "abc"), None);
+    }
+}
