@@ -71,7 +71,8 @@ async fn glb_tiles_pass_the_khronos_validator() {
     std::fs::create_dir_all(&dir).expect("temp dir");
     let plan = Arc::new(WorldPlan::new(20_240_611, WorldParams::default()).expect("default world"));
     let compute = Compute::cpu();
-    let cases: [(u32, i64, i64, [bool; 4]); 7] = [
+    let edge = plan.max_tile_coord(0);
+    let cases: [(u32, i64, i64, [bool; 4]); 8] = [
         (0, 0, 0, [false; 4]),
         (0, -1, -2, [true; 4]),
         (0, 5, -7, [true, false, true, false]),
@@ -79,6 +80,7 @@ async fn glb_tiles_pass_the_khronos_validator() {
         (3, 2, -3, [false, true, false, true]),
         (3, -40, -40, [true; 4]),
         (12, -3, 3, [true; 4]),
+        (0, edge, -edge, [true; 4]),
     ];
     let mut files = Vec::new();
     for (lod, x, z, seams) in cases {

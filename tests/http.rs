@@ -814,3 +814,35 @@ async fn serves_the_viewer_directory() {
     let _ = header::ETAG;
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[tokio::test]
+async fn world_edge_tiles_at_every_lod() {
+    let app = service();
+    let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
+    for lod in 0..=12u32 {
+        let m = plan.max_tile_coord(lod);
+        for (x, z) in [(m, -m), (-m, m)] {
+            let uri = format!("/v1/seeds/5/tiles/{lod}/{x}/{z}.json");
+            let r = get(&app, &uri).await;
+            assert_eq!(r.status, StatusCode::OK, "{uri}");
+            let v = r.json();
+            assert!(f32s(&v["heights"]).iter().all(|h| h.is_finite()), "{uri}");
+            assert!(
+                v["skirt_depth_m"].as_f64().is_some_and(f64::is_finite),
+                "{uri}"
+            );
+        }
+    }
+}
+
+#[tokio::test]
+async fn head_has_headers_and_no_body() {
+    let r = send(&service(), Method::HEAD, "/v1/seeds/1/tiles/0/0/0.bin", &[]).await;
+    assert_eq!(r.status, StatusCode::OK);
+    assert!(r.header("etag").is_some());
+    assert_eq!(
+        r.header("cache-control"),
+        Some("public, max-age=31536000, immutable")
+    );
+    assert!(r.body.is_empty());
+}
