@@ -82,9 +82,36 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
         }
     }
 
-    // Vertical pass.
+    // Vertical pass: expand the horizontal results to dense rows, sum whole rows per tap (the
+    // same per-channel order as a per-vertex loop, but vectorisable), then apply the one-hot rule.
+    let row_len = ow * k;
+    let mut rows = vec![0.0f32; h * row_len];
+    for (o, tag) in tags.iter().enumerate() {
+        match *tag {
+            DENSE => rows[o * k..(o + 1) * k].copy_from_slice(&dense[o * k..(o + 1) * k]),
+            b => rows[o * k + b as usize] = 1.0,
+        }
+    }
+    let mut sums = vec![0.0f32; ow];
+    for orow in 0..oh {
+        let dst = &mut out[orow * row_len..(orow + 1) * row_len];
+        dst.fill(0.0);
+        for (t, kt) in kern.iter().enumerate() {
+            let src = &rows[(orow + t) * row_len..(orow + t + 1) * row_len];
+            for (d, s) in dst.iter_mut().zip(src) {
+                *d += kt * s;
+            }
+        }
+        for (col, sum) in sums.iter_mut().enumerate() {
+            *sum = dst[col * k..(col + 1) * k].iter().sum();
+        }
+        for (col, sum) in sums.iter().enumerate() {
+            for c in 0..k {
+                dst[col * k + c] /= sum;
+            }
+        }
+    }
     let mut down = vec![0usize; h];
-    let mut acc = vec![0.0f32; k];
     for col in 0..ow {
         let tag = |row: usize| tags[row * ow + col];
         down[h - 1] = 1;
@@ -93,29 +120,12 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
             down[row] = if same { down[row + 1] + 1 } else { 1 };
         }
         for orow in 0..oh {
-            let v = orow * ow + col;
-            let dst = &mut out[v * k..(v + 1) * k];
             let t0 = tag(orow);
             if t0 != DENSE && down[orow] >= taps {
+                let v = orow * ow + col;
+                let dst = &mut out[v * k..(v + 1) * k];
                 dst.fill(0.0);
                 dst[t0 as usize] = 1.0;
-                continue;
-            }
-            acc.fill(0.0);
-            for (t, kt) in kern.iter().enumerate() {
-                let src = (orow + t) * ow + col;
-                match tags[src] {
-                    DENSE => {
-                        for c in 0..k {
-                            acc[c] += kt * dense[src * k + c];
-                        }
-                    }
-                    b => acc[b as usize] += kt,
-                }
-            }
-            let sum: f32 = acc.iter().sum();
-            for c in 0..k {
-                dst[c] = acc[c] / sum;
             }
         }
     }

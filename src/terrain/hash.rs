@@ -50,7 +50,7 @@ pub fn signed_unit(h: u32) -> f32 {
 
 /// Stream purposes. Each random stream of the world function has its own.
 pub mod purpose {
-    /// One octave of one biome's height generator (`index = biome * 64 + octave`).
+    /// Octave `k` of the height generators (`index = k`, shared by all biomes).
     pub const OCTAVE: u32 = 1;
     /// Voronoi seed positions and cell values of the biome map.
     pub const VORONOI: u32 = 2;

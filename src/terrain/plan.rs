@@ -62,10 +62,12 @@ impl WorldPlan {
                 let fractals = params
                     .biomes
                     .iter()
-                    .enumerate()
-                    .map(|(b, biome)| {
+                    .map(|biome| {
+                        // Octave `k` of every biome reads the same lattice: where biomes share a
+                        // scale their low octaves coincide, so mountains continue across biome
+                        // borders and the blur only hides differences of amplitude and roughness.
                         let seeds: Vec<u32> = (0..MAX_OCTAVES as u32)
-                            .map(|k| stream(seed, purpose::OCTAVE, b as u32 * 64 + k))
+                            .map(|k| stream(seed, purpose::OCTAVE, k + biome.generator.first_octave))
                             .collect();
                         FractalPlan::new(&biome.generator, &params.warp, spacing, &seeds)
                     })

@@ -3,8 +3,9 @@
 //! Candidates sit on a world-anchored lattice of `spacing_m` (at LOD 0): candidate `(a, b)` is at
 //! `((a + u)·s, (b + v)·s)` with `u, v ∈ [0, 1)` hashed from `(seed, a, b)`. Each candidate has a
 //! level `ℓ = min(trailing zeros of a hash / 2, 12)`, so a quarter of the candidates of one level
-//! reach the next; a tile at LOD `l` keeps those with `ℓ ≥ l`, so coarse tiles carry a sparse
-//! subset of the fine tiles' objects and every object keeps its position and kind across LODs.
+//! reach the next; a tile at LOD `l` keeps those with `ℓ ≥ l`, so the candidate positions of a
+//! coarse tile are a subset of its fine tiles' (the biome, kind and height come from the tile's own
+//! vertices, so they can differ across LODs near biome borders).
 //! A candidate takes biome `b` with probability `w_b` (the vertex weights, bilinearly
 //! interpolated), then becomes kind `k` of that biome with probability `density_k`, and is kept
 //! only if the ground is dry and not steeper than the kind allows.

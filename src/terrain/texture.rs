@@ -30,6 +30,13 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
+/// Smoothstep with a precomputed `1 / (e1 − e0)`.
+#[inline(always)]
+fn smoothstep_inv(e0: f32, inv_width: f32, x: f32) -> f32 {
+    let t = ((x - e0) * inv_width).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
 /// Per-world constants of the weighting function, resolved once.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TexturePlan {
@@ -65,7 +72,8 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     let mut out = [0.0f32; MATERIALS.len()];
     let above = s.height_m - plan.sea_level_m;
     let blend = plan.height_blend_m;
-    let wet = 1.0 - smoothstep(-blend * 0.5, 0.0, above);
+    let inv_blend = 1.0 / blend;
+    let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
     out[material::SEABED as usize] = wet;
     let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, s.normal_y) * (1.0 - wet);
     out[material::ROCK as usize] = rock;
@@ -73,15 +81,62 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     for (line, w) in plan.snow_line_m.iter().zip(s.weights) {
         snow_line += w * line;
     }
-    let snow = smoothstep(snow_line - blend, snow_line + blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
+    let snow = smoothstep_inv(snow_line - blend, 0.5 * inv_blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
     out[material::SNOW as usize] += snow;
-    let beach = (1.0 - smoothstep(plan.beach_height_m, plan.beach_height_m + blend, above)) * (1.0 - wet) * (1.0 - rock);
+    let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
     out[material::SAND as usize] += beach;
     let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
     for (g, w) in plan.ground.iter().zip(s.weights) {
         out[*g as usize] += w * rest;
     }
     out
+}
+
+/// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`, written as a
+/// branch-free loop over vertices so it vectorises. `weights` is vertex-major with `k` biomes.
+pub fn proto_texture_batch(plan: &TexturePlan, heights: &[f32], normal_y: &[f32], weights: &[f32], out: &mut [u8]) {
+    let k = plan.ground.len();
+    assert!(heights.len() == normal_y.len() && heights.len() == out.len() && weights.len() == heights.len() * k);
+    let mut mat = vec![[0.0f32; MATERIALS.len()]; heights.len()];
+    let blend = plan.height_blend_m;
+    let inv_blend = 1.0 / blend;
+    let mut snow_line = vec![0.0f32; heights.len()];
+    for (b, line) in plan.snow_line_m.iter().enumerate() {
+        for (v, s) in snow_line.iter_mut().enumerate() {
+            *s += weights[v * k + b] * line;
+        }
+    }
+    let mut rest = vec![0.0f32; heights.len()];
+    for v in 0..heights.len() {
+        let h = heights[v];
+        let above = h - plan.sea_level_m;
+        let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+        let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, normal_y[v]) * (1.0 - wet);
+        let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
+        let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+        let m = &mut mat[v];
+        m[material::SEABED as usize] = wet;
+        m[material::ROCK as usize] = rock;
+        m[material::SNOW as usize] = snow;
+        m[material::SAND as usize] = beach;
+        rest[v] = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    }
+    for (b, g) in plan.ground.iter().enumerate() {
+        for v in 0..heights.len() {
+            mat[v][*g as usize] += weights[v * k + b] * rest[v];
+        }
+    }
+    for (m, o) in mat.iter().zip(out.iter_mut()) {
+        let mut best = 0u8;
+        let mut top = m[0];
+        for (id, &w) in m.iter().enumerate().skip(1) {
+            if w > top {
+                top = w;
+                best = id as u8;
+            }
+        }
+        *o = best;
+    }
 }
 
 /// The dominant material id of a vertex.
@@ -114,5 +169,20 @@ mod tests {
         assert_eq!(proto_texture(&p, &beach), material::SAND);
         let high = Surface { height_m: 400.0, ..flat };
         assert_eq!(proto_texture(&p, &high), material::SNOW);
+    }
+
+    #[test]
+    fn batch_equals_per_vertex() {
+        let p = TexturePlan::new(&WorldParams::default());
+        let n = 300;
+        let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.7 - 40.0).collect();
+        let ny: Vec<f32> = (0..n).map(|i| 0.4 + (i % 13) as f32 * 0.05).collect();
+        let weights: Vec<f32> = (0..n * 4).map(|i| if i % 4 == (i / 40) % 4 { 0.7 } else { 0.1 }).collect();
+        let mut out = vec![0u8; n];
+        proto_texture_batch(&p, &heights, &ny, &weights, &mut out);
+        for v in 0..n {
+            let s = Surface { height_m: heights[v], normal_y: ny[v], weights: &weights[v * 4..v * 4 + 4] };
+            assert_eq!(out[v], proto_texture(&p, &s), "vertex {v}");
+        }
     }
 }

@@ -19,7 +19,7 @@ use super::blur::blur_weights;
 use super::biome::biome_grid;
 use super::fractal::fbm_batch;
 use super::plan::{WorldPlan, TILE_QUADS, TILE_VERTEX_COUNT, TILE_VERTS};
-use super::texture::{proto_texture, Surface};
+use super::texture::proto_texture_batch;
 
 /// Address of a height tile.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -133,29 +133,27 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
     assert!(f.w == n && f.h == n, "finish: field must be 67×67");
     let k = plan.biome_count();
     let spacing = plan.lods[key.lod as usize].spacing_m;
-    let mut heights = Vec::with_capacity(TILE_VERTEX_COUNT);
-    let mut normals = Vec::with_capacity(TILE_VERTEX_COUNT);
-    let mut weights = Vec::with_capacity(TILE_VERTEX_COUNT * k);
-    let mut materials = Vec::with_capacity(TILE_VERTEX_COUNT);
-    let mut water_depth = Vec::with_capacity(TILE_VERTEX_COUNT);
+    let mut heights = vec![0.0f32; TILE_VERTEX_COUNT];
+    let mut normals = vec![[0.0f32; 3]; TILE_VERTEX_COUNT];
+    let mut weights = vec![0.0f32; TILE_VERTEX_COUNT * k];
     let inv2d = 1.0 / (2.0 * spacing);
-    for j in 1..=TILE_VERTS {
-        for i in 1..=TILE_VERTS {
-            let v = j * n + i;
-            let h = f.heights[v];
-            let dx = (f.heights[v + 1] - f.heights[v - 1]) * inv2d;
-            let dz = (f.heights[v + n] - f.heights[v - n]) * inv2d;
-            let len = (dx * dx + 1.0 + dz * dz).sqrt();
-            let normal = [-dx / len, 1.0 / len, -dz / len];
-            let w = &f.weights[v * k..(v + 1) * k];
-            let surface = Surface { height_m: h, normal_y: normal[1], weights: w };
-            materials.push(proto_texture(&plan.texture, &surface));
-            water_depth.push((plan.params.sea_level_m - h).max(0.0));
-            heights.push(h);
-            normals.push(normal);
-            weights.extend_from_slice(w);
+    for j in 0..TILE_VERTS {
+        let row = (j + 1) * n + 1;
+        let dst = j * TILE_VERTS;
+        heights[dst..dst + TILE_VERTS].copy_from_slice(&f.heights[row..row + TILE_VERTS]);
+        weights[dst * k..(dst + TILE_VERTS) * k].copy_from_slice(&f.weights[row * k..(row + TILE_VERTS) * k]);
+        let (up, mid, down) = (&f.heights[row - n..], &f.heights[row - 1..], &f.heights[row + n..]);
+        for i in 0..TILE_VERTS {
+            let dx = (mid[i + 2] - mid[i]) * inv2d;
+            let dz = (down[i] - up[i]) * inv2d;
+            let inv = 1.0 / (dx * dx + 1.0 + dz * dz).sqrt();
+            normals[dst + i] = [-dx * inv, inv, -dz * inv];
         }
     }
+    let normal_y: Vec<f32> = normals.iter().map(|n| n[1]).collect();
+    let mut materials = vec![0u8; TILE_VERTEX_COUNT];
+    proto_texture_batch(&plan.texture, &heights, &normal_y, &weights, &mut materials);
+    let water_depth = heights.iter().map(|h| (plan.params.sea_level_m - h).max(0.0)).collect();
     let skirt_depth_m = skirt_depth(&heights, spacing);
     Tile { key, spacing_m: spacing, biome_count: k, heights, normals, weights, materials, water_depth, skirt_depth_m }
 }

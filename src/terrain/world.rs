@@ -158,13 +158,13 @@ impl Default for WorldParams {
                 latitude_speed_cells: 8.0,
                 dispersion: true,
                 dispersion_d: 0.2,
-                blur_radius_m: 17.0,
+                blur_radius_m: 32.0,
             },
             biomes: vec![
-                biome("arctic", gen(30.0, 120.0, 900.0, 0.6), "snow", -1e9, kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)])),
-                biome("tundra", gen(15.0, 60.0, 700.0, 0.7), "dirt", 60.0, kinds(&[("lichen_rock", 0.03, 35.0), ("shrub", 0.08, 30.0), ("reindeer", 0.003, 20.0)])),
-                biome("grassland", gen(20.0, 90.0, 1200.0, 0.8), "grass", 150.0, kinds(&[("oak", 0.05, 25.0), ("bush", 0.10, 30.0), ("deer", 0.004, 20.0)])),
-                biome("desert", gen(8.0, 30.0, 400.0, 0.5), "sand", 1e9, kinds(&[("cactus", 0.02, 20.0), ("dry_rock", 0.01, 40.0), ("camel", 0.002, 15.0)])),
+                biome("arctic", gen(60.0, 240.0, 8000.0, 0.85), "snow", -1e9, kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)])),
+                biome("tundra", gen(30.0, 160.0, 8000.0, 0.9), "dirt", 90.0, kinds(&[("lichen_rock", 0.03, 35.0), ("shrub", 0.08, 30.0), ("reindeer", 0.003, 20.0)])),
+                biome("grassland", gen(40.0, 170.0, 8000.0, 0.9), "grass", 160.0, kinds(&[("oak", 0.05, 25.0), ("bush", 0.10, 30.0), ("deer", 0.004, 20.0)])),
+                biome("desert", gen(25.0, 80.0, 8000.0, 0.75), "sand", 1e9, kinds(&[("cactus", 0.02, 20.0), ("dry_rock", 0.01, 40.0), ("camel", 0.002, 15.0)])),
             ],
             texturing: Texturing { rock_slope_deg: 38.0, rock_blend_deg: 8.0, beach_height_m: 2.0, height_blend_m: 6.0 },
             scatter: ScatterParams { spacing_m: 4.0 },
@@ -195,6 +195,11 @@ impl WorldParams {
     pub fn validate(&self) -> Result<(), ParamError> {
         check(self.cell_m.is_finite() && (0.01..=1000.0).contains(&self.cell_m), "cell_m", "must be in [0.01, 1000]")?;
         check(self.sea_level_m.is_finite(), "sea_level_m", "must be finite")?;
+        let w = &self.warp;
+        let finite = [w.c1, w.c2, w.c3, w.r0, w.t0].iter().flatten().all(|v| v.is_finite() && v.abs() <= 100.0);
+        check(finite, "warp", "c1, c2, c3, r0 and t0 must be finite and within ±100")?;
+        check((w.r0[0] * w.r0[0] + w.r0[1] * w.r0[1] - 1.0).abs() < 1e-3, "warp.r0", "must be a unit vector")?;
+        check(w.lever.is_finite() && (0.0..=100.0).contains(&w.lever), "warp.lever", "must be in [0, 100]")?;
         let l = &self.layout;
         check(l.cell_size_m.is_finite() && l.cell_size_m >= 16.0 * self.cell_m, "layout.cell_size_m", "must be at least 16 vertex spacings")?;
         check(l.latitude_speed_cells.is_finite() && l.latitude_speed_cells >= 1.0, "layout.latitude_speed_cells", "must be at least 1")?;
