@@ -1,0 +1,171 @@
+//! Host-side images of the WGSL structs of `shaders/common.wgsl` and `shaders/tile.wgsl`.
+//!
+//! Each struct is `#[repr(C)]`, [`bytemuck::Pod`] and matches its WGSL struct field for field
+//! (offsets are checked against the offsets naga computes, by `tests/shaders_naga.rs`). Only 4-byte
+//! scalars, `vec2<f32>` (`[f32; 2]`, 8-byte aligned in WGSL, placed at multiples of 8 here) and
+//! arrays of 16-byte structs are used, so the C layout and the WGSL layout coincide without hidden
+//! padding. Every value is copied from [`crate::terrain::WorldPlan`] (which did the transcendental
+//! arithmetic in `f64`), never recomputed.
+
+use crate::terrain::biome::BiomeMapPlan;
+use crate::terrain::fractal::{FractalPlan, MAX_OCTAVES};
+use bytemuck::{Pod, Zeroable};
+
+/// WGSL `Octave`: one octave of Eq. 1 (`terrain::fractal::Octave`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuOctave {
+    /// `r^k`.
+    pub freq: f32,
+    /// `r^{-kH}` (times the fractional weight of the last octave).
+    pub amp: f32,
+    /// Stream seed of the octave's lattice.
+    pub seed: u32,
+    /// Padding to 16 bytes.
+    pub _pad: u32,
+}
+
+/// WGSL `Fractal`: one biome's generator at one LOD (`terrain::fractal::FractalPlan`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct GpuFractal {
+    /// Metres to domain units.
+    pub inv_scale: f32,
+    /// Height where the fractal is zero, metres.
+    pub base_m: f32,
+    /// Metres per unit of the sum.
+    pub amplitude_m: f32,
+    /// Number of valid entries of `octaves`.
+    pub octave_count: u32,
+    /// 1 if §2.2 warping is applied.
+    pub warp: u32,
+    /// `R0`.
+    pub rough0: f32,
+    /// Lever of the rotation, domain units (`WarpConsts::lever`).
+    pub lever: f32,
+    /// 1 to rotate about the world origin (the paper's literal formula).
+    pub about_origin: u32,
+    /// `c1`.
+    pub c1: [f32; 2],
+    /// `c2`.
+    pub c2: [f32; 2],
+    /// Translation of every octave after the first.
+    pub t: [f32; 2],
+    /// Initial rotation.
+    pub r0: [f32; 2],
+    /// Initial translation.
+    pub t0: [f32; 2],
+    /// Padding (`octaves` starts at 80).
+    pub _pad2: [f32; 2],
+    /// Octave table.
+    pub octaves: [GpuOctave; MAX_OCTAVES],
+}
+
+impl From<&FractalPlan> for GpuFractal {
+    fn from(f: &FractalPlan) -> Self {
+        let mut g = GpuFractal::zeroed();
+        g.inv_scale = f.inv_scale;
+        g.base_m = f.base_m;
+        g.amplitude_m = f.amplitude_m;
+        let n = f.octaves.len().min(MAX_OCTAVES);
+        g.octave_count = n as u32;
+        for (dst, src) in g.octaves.iter_mut().zip(&f.octaves[..n]) {
+            *dst = GpuOctave {
+                freq: src.freq,
+                amp: src.amp,
+                seed: src.seed,
+                _pad: 0,
+            };
+        }
+        if let Some(w) = &f.warp {
+            g.warp = 1;
+            g.rough0 = w.rough0;
+            g.c1 = w.c1;
+            g.c2 = w.c2;
+            g.t = w.t;
+            g.r0 = w.r0;
+            g.t0 = w.t0;
+            g.lever = w.lever;
+            g.about_origin = w.about_origin as u32;
+        }
+        g
+    }
+}
+
+/// WGSL `BiomeMap` (`terrain::biome::BiomeMapPlan`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuBiomeMap {
+    /// `1 / cell_size_m`.
+    pub inv_cell: f32,
+    /// Latitude speed `S`, cells.
+    pub speed: f32,
+    /// Dispersion `d` (0 without dispersion).
+    pub dispersion: f32,
+    /// 1 if latitude applies.
+    pub latitude: u32,
+    /// Number of biomes `K`.
+    pub count: u32,
+    /// Voronoi stream of seed x offsets.
+    pub seed_x: u32,
+    /// Voronoi stream of seed z offsets.
+    pub seed_z: u32,
+    /// Voronoi stream of cell values.
+    pub seed_value: u32,
+}
+
+impl From<&BiomeMapPlan> for GpuBiomeMap {
+    fn from(m: &BiomeMapPlan) -> Self {
+        Self {
+            inv_cell: m.inv_cell,
+            speed: m.speed,
+            dispersion: m.dispersion,
+            latitude: m.latitude as u32,
+            count: m.count,
+            seed_x: m.seeds.x,
+            seed_z: m.seeds.z,
+            seed_value: m.seeds.value,
+        }
+    }
+}
+
+/// WGSL `Params` of `tile.wgsl` (a uniform buffer): the rectangle, the derived grids and the
+/// biome map. `map` sits at offset 64, a multiple of 16 as the uniform address space requires.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuParams {
+    /// Output rectangle origin, lattice index.
+    pub gx0: i32,
+    /// Output rectangle origin, lattice index.
+    pub gz0: i32,
+    /// Output columns.
+    pub w: u32,
+    /// Output rows.
+    pub h: u32,
+    /// Biome grid origin (`gx0 − r`).
+    pub bgx0: i32,
+    /// Biome grid origin (`gz0 − r`).
+    pub bgz0: i32,
+    /// Biome grid columns (`w + 2r`).
+    pub bw: u32,
+    /// Biome grid rows (`h + 2r`).
+    pub bh: u32,
+    /// First block column (`bgx0.div_euclid(8)`).
+    pub bx0: i32,
+    /// First block row.
+    pub bz0: i32,
+    /// Block-corner grid columns (blocks + 1).
+    pub cw: u32,
+    /// Block-corner grid rows.
+    pub ch: u32,
+    /// Blur taps `2r + 1`.
+    pub taps: u32,
+    /// Number of biomes.
+    pub k: u32,
+    /// Vertex spacing, metres.
+    pub spacing: f32,
+    /// Always 0: the runtime zero of the rounding barrier `rn` in `common.wgsl`.
+    pub rounding_key: u32,
+    /// Biome map constants.
+    pub map: GpuBiomeMap,
+}
