@@ -155,12 +155,14 @@ pub fn app(state: AppState) -> axum::Router {
     routes::router(state)
 }
 
-/// Opens the compute backend the command line asks for.
+/// Opens the compute backend the command line asks for: a GPU device task when
+/// [`crate::gpu::open`] yields one (`auto` with a hardware adapter, `gpu` with any adapter), else
+/// the CPU path. With `--backend gpu` and no usable adapter this fails, so the server does not start.
 async fn open_compute(choice: crate::cli::BackendChoice) -> anyhow::Result<Compute> {
-    // GPU: the device task is not wired yet (src/gpu/mod.rs has no `open`); switch this line to
-    // `crate::gpu::open(choice).await?.map(Compute::with_gpu).unwrap_or_else(Compute::cpu)` when it lands.
-    let _ = choice;
-    Ok(Compute::cpu())
+    Ok(match crate::gpu::open(choice).await? {
+        Some(gpu) => Compute::with_gpu(gpu),
+        None => Compute::cpu(),
+    })
 }
 
 /// Runs the server until Ctrl-C or SIGTERM.
