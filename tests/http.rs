@@ -100,7 +100,12 @@ async fn info_reports_backend_limits_and_formats() {
         .filter_map(|f| f["extension"].as_str())
         .collect();
     assert_eq!(exts, ["json", "bin", "png", "glb"]);
-    assert_eq!(v["world"]["biomes"].as_array().map(Vec::len), Some(4));
+    let names: Vec<String> = WorldParams::default()
+        .biomes
+        .into_iter()
+        .map(|b| b.name)
+        .collect();
+    assert_eq!(v["world"]["biomes"], serde_json::json!(names));
 }
 
 #[tokio::test]
@@ -697,7 +702,7 @@ async fn scatter_points_lie_inside_the_tile() {
         let v = r.json();
         assert_eq!(v["key"], serde_json::json!({ "lod": lod, "x": x, "z": z }));
         assert_eq!(v["seed"], "11");
-        let span = 64.0 * (1u64 << lod) as f64;
+        let span = 64.0 * (1u64 << lod) as f64 * WorldParams::default().cell_m as f64;
         let (x0, z0) = (x as f64 * span, z as f64 * span);
         let tile = get(&app, &format!("/v1/seeds/11/tiles/{lod}/{x}/{z}.json"))
             .await
