@@ -40,8 +40,15 @@ fn bench_keys(n: usize) -> Vec<TileKey> {
     (0..n as i64).map(|i| TileKey { lod: 0, x: (i % side) * 3 - 40, z: (i / side) * 3 + 20 }).collect()
 }
 
+/// The world of issue 2's benchmark: the default biomes with a 35-sample blur kernel at LOD 0.
+pub fn bench_world() -> WorldParams {
+    let mut params = WorldParams::default();
+    params.layout.blur_radius_m = 17.0 * params.cell_m;
+    params
+}
+
 fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
-    let plan = WorldPlan::new(7, WorldParams::default())?;
+    let plan = WorldPlan::new(7, bench_world())?;
     let kernel_taps = plan.lods[0].kernel.len();
     let octaves = plan.lods[0].fractals.iter().map(|f| f.octaves.len()).max().unwrap_or(0);
     let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);

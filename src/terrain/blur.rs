@@ -26,7 +26,7 @@ pub fn kernel(r: usize, sigma: f32) -> Vec<f32> {
     let raw: Vec<f64> = (0..=2 * r)
         .map(|t| {
             let d = t as f64 - r as f64;
-            (-(d * d) / (2.0 * s * s)).exp()
+            libm::exp(-(d * d) / (2.0 * s * s))
         })
         .collect();
     let sum: f64 = raw.iter().sum();
@@ -62,11 +62,34 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
     let mut tags = vec![0u8; h * ow];
     let mut dense = vec![0.0f32; h * ow * k];
     let mut run = vec![0usize; w];
+    // One-hot rows, channel-major, for the rows that are not a single biome.
+    let mut onehot = vec![0.0f32; k * w];
+    let mut conv = vec![0.0f32; k * ow];
     for row in 0..h {
         let line = &ids[row * w..(row + 1) * w];
         run[w - 1] = 1;
         for i in (0..w - 1).rev() {
             run[i] = if line[i] == line[i + 1] { run[i + 1] + 1 } else { 1 };
+        }
+        if run[0] == w {
+            tags[row * ow..(row + 1) * ow].fill(line[0]);
+            continue;
+        }
+        // Σ_t k_t · [id = c] as a convolution of each channel's 0/1 row: adding `k_t · 0 = +0`
+        // leaves a sum unchanged, so this equals summing the matching taps in `t` order.
+        onehot.fill(0.0);
+        for (i, b) in line.iter().enumerate() {
+            onehot[*b as usize * w + i] = 1.0;
+        }
+        conv.fill(0.0);
+        for c in 0..k {
+            let src = &onehot[c * w..(c + 1) * w];
+            let dst = &mut conv[c * ow..(c + 1) * ow];
+            for (t, kt) in kern.iter().enumerate() {
+                for (d, s) in dst.iter_mut().zip(&src[t..t + ow]) {
+                    *d += kt * s;
+                }
+            }
         }
         for col in 0..ow {
             let o = row * ow + col;
@@ -74,9 +97,8 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
                 tags[o] = line[col];
             } else {
                 tags[o] = DENSE;
-                let acc = &mut dense[o * k..(o + 1) * k];
-                for t in 0..taps {
-                    acc[line[col + t] as usize] += kern[t];
+                for c in 0..k {
+                    dense[o * k + c] = conv[c * ow + col];
                 }
             }
         }

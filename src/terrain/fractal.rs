@@ -5,7 +5,7 @@
 //! H(x) = Σ_{k=k0}^{k1} r^{-kH} · S(r^k · x'_k)          (Eq. 1)
 //! x'_k = x + ([r_k ⊥r_k] − I) · L + t_k                  (rotation by unit vector r_k about x − L)
 //! R_k  = R0 · H_k,  R0 = 1 / (r · H)                    (height-dependent roughness)
-//! r_{k+1} = normalise(c1 · R_k + c2 + r_k)
+//! r_{k+1} = normalise(c1 · R_k + c2 + r_k)                 (normalised with `inv_sqrt`)
 //! t_{k+1} = c3 · H_k / R_k                              (= c3 · r · H, see below)
 //! λ = ln(A / δ) / (H · ln r)                            (octaves whose amplitude exceeds the spacing)
 //! ```
@@ -145,7 +145,7 @@ impl Default for WarpParams {
 
 /// `λ` of §4.1: how many octaves (fractional) a vertex spacing of `spacing_m` resolves.
 pub fn lod_octaves(p: &FractalParams, spacing_m: f64) -> f64 {
-    let lambda = (p.amplitude_m as f64 / spacing_m).ln() / (p.hurst as f64 * (p.lacunarity as f64).ln());
+    let lambda = libm::log(p.amplitude_m as f64 / spacing_m) / (p.hurst as f64 * libm::log(p.lacunarity as f64));
     lambda.clamp(1.0, p.octaves as f64)
 }
 
@@ -166,8 +166,8 @@ impl FractalPlan {
             }
             let k = (p.first_octave as usize + i) as f64;
             octaves.push(Octave {
-                freq: r.powf(k) as f32,
-                amp: (r.powf(-k * h) * weight) as f32,
+                freq: libm::pow(r, k) as f32,
+                amp: (libm::pow(r, -k * h) * weight) as f32,
                 seed: seeds[i],
             });
         }
@@ -205,8 +205,11 @@ impl FractalPlan {
     }
 }
 
-/// Lanes processed together by the batch evaluator.
-pub const LANES: usize = 16;
+/// Lanes processed together by the batch evaluator. With warping, each octave's rotation depends
+/// on the previous octave's height, so one lane's octaves form a serial dependency chain; 128
+/// independent lanes per pass give the out-of-order core enough work to hide that latency
+/// (measured: 25 M samples/s with 16 lanes, 62 M with 128, 52 M with 512).
+pub const LANES: usize = 128;
 
 /// Evaluates the generator at `xs[i], zs[i]` (metres) into `out[i]` (metres).
 ///
@@ -280,7 +283,8 @@ fn fbm_lanes(plan: &FractalPlan, xs: &[f32; LANES], zs: &[f32; LANES], out: &mut
         Some(w) => (w.lever, w.about_origin),
         None => (0.0, false),
     };
-    for oct in &plan.octaves {
+    let last = plan.octaves.len().saturating_sub(1);
+    for (k, oct) in plan.octaves.iter().enumerate() {
         if about_origin {
             for l in 0..LANES {
                 qx[l] = (rx[l] * px[l] - rz[l] * pz[l] + tx[l]) * oct.freq;
@@ -296,7 +300,7 @@ fn fbm_lanes(plan: &FractalPlan, xs: &[f32; LANES], zs: &[f32; LANES], out: &mut
         for l in 0..LANES {
             acc[l] += oct.amp * s[l];
         }
-        if let Some(w) = &plan.warp {
+        if let (Some(w), true) = (&plan.warp, k < last) {
             warp_lanes(w, &acc, &mut rx, &mut rz);
             tx = [w.t[0]; LANES];
             tz = [w.t[1]; LANES];
@@ -317,10 +321,23 @@ fn warp_lanes(w: &WarpConsts, acc: &[f32; LANES], rx: &mut [f32; LANES], rz: &mu
         let vz = w.c1[1] * rough + w.c2[1] + rz[l];
         let len2 = vx * vx + vz * vz;
         let ok = len2 > 1e-20;
-        let inv = 1.0 / if ok { len2.sqrt() } else { 1.0 };
+        let inv = inv_sqrt(if ok { len2 } else { 1.0 });
         rx[l] = if ok { vx * inv } else { rx[l] };
         rz[l] = if ok { vz * inv } else { rz[l] };
     }
+}
+
+/// `1 / √x` for normal positive `x`, to a relative error below 5·10⁻⁶: Lomont's integer first
+/// guess and two Newton steps. Only integer ops and correctly rounded `f32` multiplies and
+/// subtractions, so every CPU (and the WGSL twin) computes the same bits — unlike the hardware
+/// `rsqrt` approximations, which differ between vendors — and it vectorises far better than
+/// `sqrt` followed by a division.
+#[inline(always)]
+pub fn inv_sqrt(x: f32) -> f32 {
+    let half = 0.5 * x;
+    let mut y = f32::from_bits(0x5f37_5a86u32.wrapping_sub(x.to_bits() >> 1));
+    y = y * (1.5 - half * y * y);
+    y * (1.5 - half * y * y)
 }
 
 /// Lattice coordinate of a floored value as an integer. Values are clamped to ±2³⁰ first (NaN maps
@@ -403,6 +420,15 @@ mod tests {
         for i in -50..50 {
             let (x, z) = (i as f32 * 0.37, i as f32 * -1.13);
             assert_eq!(lattice(x, z, 3).to_bits(), lattice_inline(x, z, 3).to_bits());
+        }
+    }
+
+    #[test]
+    fn inv_sqrt_is_accurate() {
+        for i in 0..10_000 {
+            let x = 1e-6f32 * (1.0 + i as f32 * 37.1);
+            let rel = (inv_sqrt(x) as f64 * (x as f64).sqrt() - 1.0).abs();
+            assert!(rel < 5e-6, "x = {x}: relative error {rel}");
         }
     }
 

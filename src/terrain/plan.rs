@@ -1,7 +1,8 @@
 //! A world's precomputed constants: octave tables, biome-map constants and blur kernels per LOD.
 //!
-//! Building a plan does all the transcendental arithmetic (`powf`, `exp`, `ln`) once, in `f64`,
-//! and rounds to `f32`; the kernels (CPU and WGSL) only read the tables, so both paths start from
+//! Building a plan does all the transcendental arithmetic (`pow`, `exp`, `log`) once, in `f64`,
+//! with the pure-Rust `libm` crate (not the platform's libm, whose last bits differ between
+//! versions, which would break same-bytes-on-every-node), and rounds to `f32`; the kernels (CPU and WGSL) only read the tables, so both paths start from
 //! identical constants.
 
 use super::biome::BiomeMapPlan;

@@ -89,10 +89,9 @@ pub fn scatter(plan: &WorldPlan, tile: &Tile) -> Vec<ScatterPoint> {
                 u -= w;
             }
             let mut v = unit(mix32(pick));
-            let slope_deg = ny.clamp(-1.0, 1.0).acos().to_degrees();
             for kind in &params.biomes[biome].scatter {
                 if v < kind.density {
-                    if y > params.sea_level_m && slope_deg <= kind.max_slope_deg {
+                    if y > params.sea_level_m && ny >= libm::cosf(kind.max_slope_deg.to_radians()) {
                         out.push(ScatterPoint {
                             x,
                             y,

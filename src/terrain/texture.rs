@@ -54,8 +54,8 @@ impl TexturePlan {
     /// Resolves the settings.
     pub fn new(params: &WorldParams) -> Self {
         let t = &params.texturing;
-        let lo = (t.rock_slope_deg - t.rock_blend_deg * 0.5).to_radians().cos();
-        let hi = (t.rock_slope_deg + t.rock_blend_deg * 0.5).to_radians().cos();
+        let lo = libm::cosf((t.rock_slope_deg - t.rock_blend_deg * 0.5).to_radians());
+        let hi = libm::cosf((t.rock_slope_deg + t.rock_blend_deg * 0.5).to_radians());
         Self {
             sea_level_m: params.sea_level_m,
             height_blend_m: t.height_blend_m.max(1e-3),
@@ -96,46 +96,61 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
 /// branch-free loop over vertices so it vectorises. `weights` is vertex-major with `k` biomes.
 pub fn proto_texture_batch(plan: &TexturePlan, heights: &[f32], normal_y: &[f32], weights: &[f32], out: &mut [u8]) {
     let k = plan.ground.len();
-    assert!(heights.len() == normal_y.len() && heights.len() == out.len() && weights.len() == heights.len() * k);
-    let mut mat = vec![[0.0f32; MATERIALS.len()]; heights.len()];
+    let n = heights.len();
+    assert!(normal_y.len() == n && out.len() == n && weights.len() == n * k, "proto_texture_batch: sizes");
     let blend = plan.height_blend_m;
     let inv_blend = 1.0 / blend;
-    let mut snow_line = vec![0.0f32; heights.len()];
-    for (b, line) in plan.snow_line_m.iter().enumerate() {
-        for (v, s) in snow_line.iter_mut().enumerate() {
-            *s += weights[v * k + b] * line;
+    // Structure of arrays, one row per material, so every loop below vectorises.
+    let mut mat = vec![0.0f32; MATERIALS.len() * n];
+    // Biome-major copy of the weights, so the per-biome loops read contiguous memory.
+    let mut wt = vec![0.0f32; k * n];
+    for (v, wv) in weights.chunks_exact(k).enumerate() {
+        for (b, w) in wv.iter().enumerate() {
+            wt[b * n + v] = *w;
         }
     }
-    let mut rest = vec![0.0f32; heights.len()];
-    for v in 0..heights.len() {
-        let h = heights[v];
-        let above = h - plan.sea_level_m;
-        let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
-        let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, normal_y[v]) * (1.0 - wet);
-        let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
-        let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
-        let m = &mut mat[v];
-        m[material::SEABED as usize] = wet;
-        m[material::ROCK as usize] = rock;
-        m[material::SNOW as usize] = snow;
-        m[material::SAND as usize] = beach;
-        rest[v] = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    let mut snow_line = vec![0.0f32; n];
+    for (b, line) in plan.snow_line_m.iter().enumerate() {
+        for (s, w) in snow_line.iter_mut().zip(&wt[b * n..(b + 1) * n]) {
+            *s += w * line;
+        }
+    }
+    let mut rest = vec![0.0f32; n];
+    {
+        let (seabed, tail) = mat.split_at_mut(n);
+        let (sand, tail) = tail.split_at_mut(n);
+        let (_grass, tail) = tail.split_at_mut(n);
+        let (_dirt, tail) = tail.split_at_mut(n);
+        let (rock_row, snow_row) = tail.split_at_mut(n);
+        for v in 0..n {
+            let h = heights[v];
+            let above = h - plan.sea_level_m;
+            let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+            let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, normal_y[v]) * (1.0 - wet);
+            let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
+            let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+            seabed[v] = wet;
+            rock_row[v] = rock;
+            snow_row[v] = snow;
+            sand[v] = beach;
+            rest[v] = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+        }
     }
     for (b, g) in plan.ground.iter().enumerate() {
-        for v in 0..heights.len() {
-            mat[v][*g as usize] += weights[v * k + b] * rest[v];
+        let row = &mut mat[*g as usize * n..(*g as usize + 1) * n];
+        for ((m, w), r) in row.iter_mut().zip(&wt[b * n..(b + 1) * n]).zip(&rest) {
+            *m += w * r;
         }
     }
-    for (m, o) in mat.iter().zip(out.iter_mut()) {
-        let mut best = 0u8;
-        let mut top = m[0];
-        for (id, &w) in m.iter().enumerate().skip(1) {
-            if w > top {
-                top = w;
-                best = id as u8;
-            }
+    let mut top = mat[..n].to_vec();
+    out.fill(0);
+    for m in 1..MATERIALS.len() {
+        let row = &mat[m * n..(m + 1) * n];
+        for v in 0..n {
+            let better = row[v] > top[v];
+            top[v] = if better { row[v] } else { top[v] };
+            out[v] = if better { m as u8 } else { out[v] };
         }
-        *o = best;
     }
 }
 

@@ -57,26 +57,37 @@ pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize)
     blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
 
     let mut heights = vec![0.0f32; w * h];
-    let mut idx = Vec::with_capacity(w * h);
     let mut xs = Vec::with_capacity(w * h);
     let mut zs = Vec::with_capacity(w * h);
+    for j in 0..h {
+        let z = (gz0 + j as i64) as f32 * lp.spacing_m;
+        for i in 0..w {
+            xs.push((gx0 + i as i64) as f32 * lp.spacing_m);
+            zs.push(z);
+        }
+    }
+    // One biome everywhere (most tiles): every weight is exactly 1, so `0 + 1·H = H`.
+    if let Some(b) = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0)) {
+        fbm_batch(&lp.fractals[b], &xs, &zs, &mut heights);
+        return Field { w, h, heights, weights };
+    }
+    let mut idx = Vec::with_capacity(w * h);
+    let mut bx = Vec::with_capacity(w * h);
+    let mut bz = Vec::with_capacity(w * h);
     let mut gs = Vec::new();
     for (b, fractal) in lp.fractals.iter().enumerate() {
         idx.clear();
-        xs.clear();
-        zs.clear();
-        for j in 0..h {
-            for i in 0..w {
-                let v = j * w + i;
-                if weights[v * k + b] > 0.0 {
-                    idx.push(v);
-                    xs.push((gx0 + i as i64) as f32 * lp.spacing_m);
-                    zs.push((gz0 + j as i64) as f32 * lp.spacing_m);
-                }
+        bx.clear();
+        bz.clear();
+        for v in 0..w * h {
+            if weights[v * k + b] > 0.0 {
+                idx.push(v);
+                bx.push(xs[v]);
+                bz.push(zs[v]);
             }
         }
         gs.resize(idx.len(), 0.0);
-        fbm_batch(fractal, &xs, &zs, &mut gs);
+        fbm_batch(fractal, &bx, &bz, &mut gs);
         for (n, &v) in idx.iter().enumerate() {
             heights[v] += weights[v * k + b] * gs[n];
         }
