@@ -37,7 +37,13 @@ fn emit(args: &BenchArgs, value: serde_json::Value, line: String) {
 /// tiles (blur and several generators) appear in their natural proportion.
 fn bench_keys(n: usize) -> Vec<TileKey> {
     let side = (n as f64).sqrt().ceil() as i64;
-    (0..n as i64).map(|i| TileKey { lod: 0, x: (i % side) * 3 - 40, z: (i / side) * 3 + 20 }).collect()
+    (0..n as i64)
+        .map(|i| TileKey {
+            lod: 0,
+            x: (i % side) * 3 - 40,
+            z: (i / side) * 3 + 20,
+        })
+        .collect()
 }
 
 /// The world of issue 2's benchmark: the default biomes with a 35-sample blur kernel at LOD 0.
@@ -50,8 +56,15 @@ pub fn bench_world() -> WorldParams {
 fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
     let plan = WorldPlan::new(7, bench_world())?;
     let kernel_taps = plan.lods[0].kernel.len();
-    let octaves = plan.lods[0].fractals.iter().map(|f| f.octaves.len()).max().unwrap_or(0);
-    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    let octaves = plan.lods[0]
+        .fractals
+        .iter()
+        .map(|f| f.octaves.len())
+        .max()
+        .unwrap_or(0);
+    let cores = std::thread::available_parallelism()
+        .map(|n| n.get())
+        .unwrap_or(1);
     emit(
         args,
         json!({"bench":"tiles","biomes":plan.biome_count(),"kernel_taps":kernel_taps,"octaves":octaves,"cores":cores}),
@@ -109,7 +122,10 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
         args,
         json!({"bench":"tiles","figure":"all_cores","cores":cores,"tiles":all_keys.len(),"tiles_per_s":tiles_per_s,
                "ms_per_tile_per_core":all * 1e3 * cores as f64 / all_keys.len() as f64}),
-        format!("  {cores} cores: {tiles_per_s:.0} tiles/s ({:.3} ms per tile per core)", all * 1e3 * cores as f64 / all_keys.len() as f64),
+        format!(
+            "  {cores} cores: {tiles_per_s:.0} tiles/s ({:.3} ms per tile per core)",
+            all * 1e3 * cores as f64 / all_keys.len() as f64
+        ),
     );
 
     // fBm part against fastnoise-lite, one core, same sample positions and 8 octaves.

@@ -73,7 +73,9 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
                         .unwrap_or_else(|_| "strata=info,tower_http=info".into()),
                 )
                 .init();
-            let rt = tokio::runtime::Builder::new_multi_thread().enable_all().build()?;
+            let rt = tokio::runtime::Builder::new_multi_thread()
+                .enable_all()
+                .build()?;
             rt.block_on(crate::server::serve(args))
         }
         Command::Bench(args) => crate::bench::run(&args),

@@ -53,9 +53,17 @@ impl Compute {
     /// Backend report.
     pub fn info(&self) -> BackendInfo {
         match &self.gpu {
-            None => BackendInfo { backend: "cpu".into(), adapter: None, device_lost: false },
+            None => BackendInfo {
+                backend: "cpu".into(),
+                adapter: None,
+                device_lost: false,
+            },
             Some(g) => BackendInfo {
-                backend: if g.is_lost() { "cpu".into() } else { "gpu".into() },
+                backend: if g.is_lost() {
+                    "cpu".into()
+                } else {
+                    "gpu".into()
+                },
                 adapter: Some(g.adapter_info()),
                 device_lost: g.is_lost(),
             },
@@ -63,7 +71,15 @@ impl Compute {
     }
 
     /// Heights and weights of a lattice rectangle.
-    pub async fn field(&self, plan: Arc<WorldPlan>, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Field {
+    pub async fn field(
+        &self,
+        plan: Arc<WorldPlan>,
+        lod: u32,
+        gx0: i64,
+        gz0: i64,
+        w: usize,
+        h: usize,
+    ) -> Field {
         if let Some(g) = &self.gpu {
             if !g.is_lost() {
                 match g.field(plan.clone(), lod, gx0, gz0, w, h).await {
@@ -72,16 +88,22 @@ impl Compute {
                 }
             }
         }
-        let p = plan.clone();
-        tokio::task::spawn_blocking(move || crate::terrain::tile::field(&p, lod, gx0, gz0, w, h))
-            .await
-            .unwrap_or_else(|_| crate::terrain::tile::field(&plan, lod, gx0, gz0, w, h))
+        match tokio::task::spawn_blocking(move || {
+            crate::terrain::tile::field(&plan, lod, gx0, gz0, w, h)
+        })
+        .await
+        {
+            Ok(f) => f,
+            Err(e) => std::panic::resume_unwind(e.into_panic()),
+        }
     }
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
     pub async fn tile(&self, plan: Arc<WorldPlan>, key: TileKey, coarser: [bool; 4]) -> Tile {
         let n = TILE_VERTS + 2;
-        let f = self.field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n).await;
+        let f = self
+            .field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n)
+            .await;
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {

@@ -4,10 +4,10 @@
 //! [`gpu`] owns the compute device and the WGSL twins; [`encode`] turns products into wire formats;
 //! [`server`] is the HTTP service.
 
-pub mod terrain;
-pub mod compute;
-pub mod gpu;
 pub mod bench;
 pub mod cli;
+pub mod compute;
 pub mod encode;
+pub mod gpu;
 pub mod server;
+pub mod terrain;

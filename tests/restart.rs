@@ -21,7 +21,14 @@ impl Drop for Server {
 
 fn start(worker_threads: usize, data: &std::path::Path) -> Server {
     let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
-        .args(["serve", "--addr", "127.0.0.1:0", "--backend", "cpu", "--data"])
+        .args([
+            "serve",
+            "--addr",
+            "127.0.0.1:0",
+            "--backend",
+            "cpu",
+            "--data",
+        ])
         .arg(data)
         .env("TOKIO_WORKER_THREADS", worker_threads.to_string())
         .env("NO_COLOR", "1")
@@ -38,7 +45,11 @@ fn start(worker_threads: usize, data: &std::path::Path) -> Server {
             .expect("server exited before listening")
             .expect("read server output");
         if let Some(rest) = line.split("listening on http://").nth(1) {
-            break rest.split(|c: char| c.is_whitespace() || c == '\u{1b}').next().unwrap_or_default().to_string();
+            break rest
+                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
+                .next()
+                .unwrap_or_default()
+                .to_string();
         }
     };
     // Keep draining the log so the server never blocks on a full pipe.
@@ -49,14 +60,31 @@ fn start(worker_threads: usize, data: &std::path::Path) -> Server {
 /// A minimal HTTP/1.1 GET: status code and body.
 fn get(addr: &str, path: &str) -> (u16, Vec<u8>) {
     let mut s = TcpStream::connect(addr).expect("connect");
-    s.set_read_timeout(Some(Duration::from_secs(60))).expect("timeout");
-    write!(s, "GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n").expect("send");
+    s.set_read_timeout(Some(Duration::from_secs(60)))
+        .expect("timeout");
+    write!(
+        s,
+        "GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n"
+    )
+    .expect("send");
     let mut raw = Vec::new();
     s.read_to_end(&mut raw).expect("read");
-    let split = raw.windows(4).position(|w| w == b"\r\n\r\n").expect("header end");
+    let split = raw
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .expect("header end");
     let head = String::from_utf8_lossy(&raw[..split]).to_string();
-    let status: u16 = head.split_whitespace().nth(1).and_then(|c| c.parse().ok()).expect("status");
-    assert!(!head.to_ascii_lowercase().contains("transfer-encoding: chunked"), "unexpected chunked body");
+    let status: u16 = head
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .expect("status");
+    assert!(
+        !head
+            .to_ascii_lowercase()
+            .contains("transfer-encoding: chunked"),
+        "unexpected chunked body"
+    );
     (status, raw[split + 4..].to_vec())
 }
 
@@ -70,7 +98,8 @@ fn bytes_are_identical_across_restarts_and_thread_counts() {
         "/v1/seeds/7/tiles/1/2/2.bin?seams=1,1,0,0",
         "/v1/seeds/99/scatter/0/1/1.json",
     ];
-    let data = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("restart-{}", std::process::id()));
+    let data = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("restart-{}", std::process::id()));
     let mut runs = Vec::new();
     for threads in [1, 3] {
         let server = start(threads, &data);
@@ -88,6 +117,9 @@ fn bytes_are_identical_across_restarts_and_thread_counts() {
         runs.push(bodies);
     }
     for (i, p) in paths.iter().enumerate() {
-        assert_eq!(runs[0][i], runs[1][i], "{p} differs after a restart with another thread count");
+        assert_eq!(
+            runs[0][i], runs[1][i],
+            "{p} differs after a restart with another thread count"
+        );
     }
 }

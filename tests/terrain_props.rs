@@ -17,7 +17,10 @@ fn edge_values(t: &Tile, e: Edge) -> Vec<(u32, [u32; 3], Vec<u32>, u8)> {
             (
                 t.heights[v].to_bits(),
                 t.normals[v].map(f32::to_bits),
-                t.weights[v * k..(v + 1) * k].iter().map(|w| w.to_bits()).collect(),
+                t.weights[v * k..(v + 1) * k]
+                    .iter()
+                    .map(|w| w.to_bits())
+                    .collect(),
                 t.materials[v],
             )
         })
@@ -32,8 +35,16 @@ fn same_lod_neighbours_share_edges_bit_for_bit() {
             let a = synthesize(&p, TileKey { lod, x, z });
             let east = synthesize(&p, TileKey { lod, x: x + 1, z });
             let south = synthesize(&p, TileKey { lod, x, z: z + 1 });
-            assert_eq!(edge_values(&a, Edge::East), edge_values(&east, Edge::West), "lod {lod} ({x},{z}) east");
-            assert_eq!(edge_values(&a, Edge::South), edge_values(&south, Edge::North), "lod {lod} ({x},{z}) south");
+            assert_eq!(
+                edge_values(&a, Edge::East),
+                edge_values(&east, Edge::West),
+                "lod {lod} ({x},{z}) east"
+            );
+            assert_eq!(
+                edge_values(&a, Edge::South),
+                edge_values(&south, Edge::North),
+                "lod {lod} ({x},{z}) south"
+            );
         }
     }
 }
@@ -43,12 +54,33 @@ fn edges_match_where_biomes_blend() {
     // Find a tile whose vertices blend biomes, then check all four of its neighbours.
     let p = plan(77);
     let blended = (0..400)
-        .map(|i| TileKey { lod: 0, x: i % 20 - 10, z: i / 20 - 10 })
-        .find(|k| synthesize(&p, *k).weights.iter().any(|w| *w > 0.05 && *w < 0.95))
+        .map(|i| TileKey {
+            lod: 0,
+            x: i % 20 - 10,
+            z: i / 20 - 10,
+        })
+        .find(|k| {
+            synthesize(&p, *k)
+                .weights
+                .iter()
+                .any(|w| *w > 0.05 && *w < 0.95)
+        })
         .expect("a tile on a biome border within 20×20 tiles");
     let t = synthesize(&p, blended);
-    let e = synthesize(&p, TileKey { x: blended.x + 1, ..blended });
-    let n = synthesize(&p, TileKey { z: blended.z - 1, ..blended });
+    let e = synthesize(
+        &p,
+        TileKey {
+            x: blended.x + 1,
+            ..blended
+        },
+    );
+    let n = synthesize(
+        &p,
+        TileKey {
+            z: blended.z - 1,
+            ..blended
+        },
+    );
     assert_eq!(edge_values(&t, Edge::East), edge_values(&e, Edge::West));
     assert_eq!(edge_values(&t, Edge::North), edge_values(&n, Edge::South));
 }
@@ -70,12 +102,27 @@ fn seams_snap_to_the_coarser_neighbour_watertight() {
                     if s % 2 == 0 {
                         assert!(gx % 2 == 0 && gz % 2 == 0);
                         let (cx, cz) = ((gx / 2).div_euclid(64), (gz / 2).div_euclid(64));
-                        let c = synthesize(&p, TileKey { lod: lod + 1, x: cx, z: cz });
+                        let c = synthesize(
+                            &p,
+                            TileKey {
+                                lod: lod + 1,
+                                x: cx,
+                                z: cz,
+                            },
+                        );
                         let cv = ((gz / 2 - cz * 64) * 65 + (gx / 2 - cx * 64)) as usize;
-                        assert_eq!(t.heights[v].to_bits(), c.heights[cv].to_bits(), "lod {lod} {edge:?} vertex {s}");
+                        assert_eq!(
+                            t.heights[v].to_bits(),
+                            c.heights[cv].to_bits(),
+                            "lod {lod} {edge:?} vertex {s}"
+                        );
                     } else {
                         let (a, b) = (t.heights[edge.vertex(s - 1)], t.heights[edge.vertex(s + 1)]);
-                        assert_eq!(t.heights[v], (a + b) * 0.5, "odd vertex on the coarse segment");
+                        assert_eq!(
+                            t.heights[v],
+                            (a + b) * 0.5,
+                            "odd vertex on the coarse segment"
+                        );
                     }
                 }
             }
@@ -86,11 +133,24 @@ fn seams_snap_to_the_coarser_neighbour_watertight() {
 #[test]
 fn tiles_are_identical_across_thread_counts() {
     let p = plan(5);
-    let keys: Vec<TileKey> = (0..12).map(|i| TileKey { lod: (i % 3) as u32, x: i - 6, z: 3 - i }).collect();
+    let keys: Vec<TileKey> = (0..12)
+        .map(|i| TileKey {
+            lod: (i % 3) as u32,
+            x: i - 6,
+            z: 3 - i,
+        })
+        .collect();
     let serial: Vec<Tile> = keys.iter().map(|k| synthesize(&p, *k)).collect();
     let parallel: Vec<Tile> = std::thread::scope(|s| {
-        let handles: Vec<_> = keys.iter().rev().map(|k| s.spawn(|| synthesize(&p, *k))).collect();
-        let mut v: Vec<Tile> = handles.into_iter().map(|h| h.join().expect("thread")).collect();
+        let handles: Vec<_> = keys
+            .iter()
+            .rev()
+            .map(|k| s.spawn(|| synthesize(&p, *k)))
+            .collect();
+        let mut v: Vec<Tile> = handles
+            .into_iter()
+            .map(|h| h.join().expect("thread"))
+            .collect();
         v.reverse();
         v
     });
@@ -104,7 +164,14 @@ fn tiles_are_identical_across_thread_counts() {
 fn weights_are_in_unit_range_and_sum_to_one() {
     let p = plan(31);
     for i in 0..40 {
-        let t = synthesize(&p, TileKey { lod: (i % 5) as u32, x: i * 3 - 60, z: 40 - i * 2 });
+        let t = synthesize(
+            &p,
+            TileKey {
+                lod: (i % 5) as u32,
+                x: i * 3 - 60,
+                z: 40 - i * 2,
+            },
+        );
         for v in 0..t.heights.len() {
             let w = &t.weights[v * 4..v * 4 + 4];
             assert!(w.iter().all(|x| (0.0..=1.0).contains(x)), "{w:?}");
@@ -140,17 +207,35 @@ fn latitude_puts_arctic_toward_the_pole_and_desert_toward_the_equator() {
     };
     let (pole_arctic, pole_desert) = band(0.5 * cell);
     let (eq_arctic, eq_desert) = band(speed * cell);
-    assert!(pole_arctic > 0.5 && pole_desert == 0.0, "pole: arctic {pole_arctic}, desert {pole_desert}");
-    assert!(eq_desert > 0.5 && eq_arctic == 0.0, "equator: arctic {eq_arctic}, desert {eq_desert}");
+    assert!(
+        pole_arctic > 0.5 && pole_desert == 0.0,
+        "pole: arctic {pole_arctic}, desert {pole_desert}"
+    );
+    assert!(
+        eq_desert > 0.5 && eq_arctic == 0.0,
+        "equator: arctic {eq_arctic}, desert {eq_desert}"
+    );
 }
 
 #[test]
 fn coarser_lods_sum_fewer_octaves() {
     let p = plan(3);
+    let g = &WorldParams::default().biomes[2].generator;
+    // Effective octave count: each octave's amplitude over its full `r^{-kH}` (1 for a whole
+    // octave, the fraction for the blended last one).
     let counts: Vec<f32> = (0..=6)
-        .map(|lod| p.lods[lod].fractals[2].octaves.iter().map(|o| o.amp / o.amp.max(1e-30)).count() as f32)
+        .map(|lod| {
+            p.lods[lod].fractals[2]
+                .octaves
+                .iter()
+                .enumerate()
+                .map(|(k, o)| o.amp / g.lacunarity.powf(-(k as f32) * g.hurst))
+                .sum()
+        })
         .collect();
-    assert!(counts.windows(2).all(|w| w[1] <= w[0]), "{counts:?}");
+    assert!(counts.windows(2).all(|w| w[1] < w[0]), "{counts:?}");
+    // The fractional octave makes the count continuous: one LOD step removes 1/H octaves.
+    assert!((counts[3] - counts[4] - 1.0 / g.hurst).abs() < 1e-3, "{counts:?}");
     assert!(counts[6] < counts[0]);
 }
 
@@ -158,25 +243,42 @@ fn coarser_lods_sum_fewer_octaves() {
 fn scatter_is_deterministic_inside_the_tile_and_coarse_positions_are_a_subset() {
     let p = plan(11);
     // Mid-latitude (z ≈ 2 km), away from the sparse arctic.
-    let key = TileKey { lod: 1, x: -3, z: 16 };
+    let key = TileKey {
+        lod: 1,
+        x: -3,
+        z: 16,
+    };
     let coarse = scatter(&p, &synthesize(&p, key));
     assert_eq!(coarse, scatter(&p, &synthesize(&p, key)));
     assert!(!coarse.is_empty(), "a 128 m tile carries objects");
     let mut fine = Vec::new();
     for (dx, dz) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-        let k = TileKey { lod: 0, x: key.x * 2 + dx, z: key.z * 2 + dz };
+        let k = TileKey {
+            lod: 0,
+            x: key.x * 2 + dx,
+            z: key.z * 2 + dz,
+        };
         fine.extend(scatter(&p, &synthesize(&p, k)));
     }
     let span = 128.0;
     let mut kept = 0;
     for pt in &coarse {
-        assert!(pt.x >= -3.0 * span && pt.x < -2.0 * span && pt.z >= 16.0 * span && pt.z < 17.0 * span);
+        assert!(
+            pt.x >= -3.0 * span && pt.x < -2.0 * span && pt.z >= 16.0 * span && pt.z < 17.0 * span
+        );
         assert!(pt.level >= 1);
-        if fine.iter().any(|f| f.x == pt.x && f.z == pt.z && f.kind == pt.kind) {
+        if fine
+            .iter()
+            .any(|f| f.x == pt.x && f.z == pt.z && f.kind == pt.kind)
+        {
             kept += 1;
         }
     }
     // Positions never change across LODs; the kind or the slope test can, where the coarser
     // tile's weights or normals differ (biome borders, steep ground), so most objects persist.
-    assert!(kept * 10 >= coarse.len() * 8, "{kept} of {} coarse objects persist at LOD 0", coarse.len());
+    assert!(
+        kept * 10 >= coarse.len() * 8,
+        "{kept} of {} coarse objects persist at LOD 0",
+        coarse.len()
+    );
 }

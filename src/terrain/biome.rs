@@ -70,7 +70,11 @@ impl BiomeMapPlan {
             inv_cell: (1.0 / layout.cell_size_m as f64) as f32,
             speed: layout.latitude_speed_cells,
             latitude: layout.latitude,
-            dispersion: if layout.dispersion { layout.dispersion_d } else { 0.0 },
+            dispersion: if layout.dispersion {
+                layout.dispersion_d
+            } else {
+                0.0
+            },
             count: count as u32,
             seeds: VoronoiSeeds::new(world_seed),
         }
@@ -83,7 +87,10 @@ impl BiomeMapPlan {
         let cx = x.floor() as i32;
         let cz = z.floor() as i32;
         let mut best = f32::INFINITY;
-        let mut win = Nearest { cell: (0, 0), pos: (0.0, 0.0) };
+        let mut win = Nearest {
+            cell: (0, 0),
+            pos: (0.0, 0.0),
+        };
         for j in cz - RANGE..=cz + RANGE {
             for i in cx - RANGE..=cx + RANGE {
                 let (sx, sz) = self.seed_pos(i, j);
@@ -92,7 +99,10 @@ impl BiomeMapPlan {
                 let d = dx * dx + dz * dz;
                 if d < best {
                     best = d;
-                    win = Nearest { cell: (i, j), pos: (sx, sz) };
+                    win = Nearest {
+                        cell: (i, j),
+                        pos: (sx, sz),
+                    };
                 }
             }
         }
@@ -102,7 +112,10 @@ impl BiomeMapPlan {
     /// Seed position of lattice cell `(i, j)`, cells.
     #[inline(always)]
     pub fn seed_pos(&self, i: i32, j: i32) -> (f32, f32) {
-        (i as f32 + signed_unit(hash2(i, j, self.seeds.x)), j as f32 + signed_unit(hash2(i, j, self.seeds.z)))
+        (
+            i as f32 + signed_unit(hash2(i, j, self.seeds.x)),
+            j as f32 + signed_unit(hash2(i, j, self.seeds.z)),
+        )
     }
 
     /// Algorithms 1 and 2: the biome of a winning seed.
@@ -113,8 +126,14 @@ impl BiomeMapPlan {
         if self.latitude {
             let period = self.speed * 2.0;
             let lat = fz.abs() % period;
-            let grad = if lat <= self.speed { lat / self.speed } else { 2.0 - lat / self.speed };
-            value = value.clamp(grad - self.dispersion, grad + self.dispersion).clamp(0.0, 1.0);
+            let grad = if lat <= self.speed {
+                lat / self.speed
+            } else {
+                2.0 - lat / self.speed
+            };
+            value = value
+                .clamp(grad - self.dispersion, grad + self.dispersion)
+                .clamp(0.0, 1.0);
         }
         ((value * self.count as f32) as u32).min(self.count - 1) as u8
     }
@@ -172,7 +191,10 @@ impl SeedCache {
         let cx = x.floor() as i32;
         let cz = z.floor() as i32;
         let mut best = f32::INFINITY;
-        let mut win = Nearest { cell: (0, 0), pos: (0.0, 0.0) };
+        let mut win = Nearest {
+            cell: (0, 0),
+            pos: (0.0, 0.0),
+        };
         for j in cz - RANGE..=cz + RANGE {
             let row = (j - self.j0) as usize * self.w;
             for i in cx - RANGE..=cx + RANGE {
@@ -182,7 +204,10 @@ impl SeedCache {
                 let d = dx * dx + dz * dz;
                 if d < best {
                     best = d;
-                    win = Nearest { cell: (i, j), pos: (sx, sz) };
+                    win = Nearest {
+                        cell: (i, j),
+                        pos: (sx, sz),
+                    };
                 }
             }
         }
@@ -223,13 +248,19 @@ impl SeedCache {
         }
         let mut best = [f32::INFINITY; MAX];
         let mut win = [0u8; MAX];
-        let mut candidates = [Nearest { cell: (0, 0), pos: (0.0, 0.0) }; 25];
+        let mut candidates = [Nearest {
+            cell: (0, 0),
+            pos: (0.0, 0.0),
+        }; 25];
         let mut c = 0;
         for j in cz - RANGE..=cz + RANGE {
             let row = (j - self.j0) as usize * self.w;
             for i in cx - RANGE..=cx + RANGE {
                 let (sx, sz) = self.pos[row + (i - self.i0) as usize];
-                candidates[c] = Nearest { cell: (i, j), pos: (sx, sz) };
+                candidates[c] = Nearest {
+                    cell: (i, j),
+                    pos: (sx, sz),
+                };
                 for l in 0..MAX {
                     let dx = sx - xs[l];
                     let dz = sz - zs[l];
@@ -256,7 +287,15 @@ impl SeedCache {
 
 /// Fills `out` (row-major, `w × h`, row = z) with the biomes of the samples `(gx0 + i, gz0 + j)` of
 /// the lattice with spacing `spacing_m`.
-pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: usize, h: usize, out: &mut [u8]) {
+pub fn biome_grid(
+    plan: &BiomeMapPlan,
+    spacing_m: f32,
+    gx0: i64,
+    gz0: i64,
+    w: usize,
+    h: usize,
+    out: &mut [u8],
+) {
     assert_eq!(out.len(), w * h, "biome_grid: output size");
     let pos = |g: i64| g as f32 * spacing_m;
     let bx0 = gx0.div_euclid(BLOCK);
@@ -265,7 +304,13 @@ pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: us
     let bz1 = (gz0 + h as i64 - 1).div_euclid(BLOCK);
     let cw = (bx1 - bx0 + 2) as usize;
     let ch = (bz1 - bz0 + 2) as usize;
-    let cache = SeedCache::new(plan, pos(bx0 * BLOCK), pos(bz0 * BLOCK), pos((bx1 + 1) * BLOCK), pos((bz1 + 1) * BLOCK));
+    let cache = SeedCache::new(
+        plan,
+        pos(bx0 * BLOCK),
+        pos(bz0 * BLOCK),
+        pos((bx1 + 1) * BLOCK),
+        pos((bz1 + 1) * BLOCK),
+    );
     let nearest = |x: f32, z: f32| match &cache {
         Some(c) => c.nearest(plan, x, z),
         None => plan.nearest(x, z),
@@ -281,7 +326,12 @@ pub fn biome_grid(plan: &BiomeMapPlan, spacing_m: f32, gx0: i64, gz0: i64, w: us
     for bz in bz0..=bz1 {
         for bx in bx0..=bx1 {
             let ci = ((bz - bz0) as usize) * cw + (bx - bx0) as usize;
-            let c = [corners[ci], corners[ci + 1], corners[ci + cw], corners[ci + cw + 1]];
+            let c = [
+                corners[ci],
+                corners[ci + 1],
+                corners[ci + cw],
+                corners[ci + cw + 1],
+            ];
             let uniform = c.iter().all(|n| n.cell == c[0].cell);
             let fill = plan.biome_of(&c[0]);
             let xa = (bx * BLOCK).max(gx0);
@@ -341,13 +391,22 @@ mod tests {
                 **v != p.biome_at(i as f32 * 16.0, j as f32 * 16.0)
             })
             .count();
-        assert!(differing <= 4, "{differing} samples differ from pointwise evaluation");
+        assert!(
+            differing <= 4,
+            "{differing} samples differ from pointwise evaluation"
+        );
     }
 
     #[test]
     fn cached_seeds_give_the_same_map_as_direct_hashing() {
         let p = plan();
-        for (spacing, gx0, gz0) in [(1.0f32, -300i64, 1000i64), (8.0, -40, -40), (8.0, 300, 500), (64.0, -50, 20), (4096.0, -30, -30)] {
+        for (spacing, gx0, gz0) in [
+            (1.0f32, -300i64, 1000i64),
+            (8.0, -40, -40),
+            (8.0, 300, 500),
+            (64.0, -50, 20),
+            (4096.0, -30, -30),
+        ] {
             let mut a = vec![0u8; 67 * 67];
             biome_grid(&p, spacing, gx0, gz0, 67, 67, &mut a);
             for (k, v) in a.iter().enumerate() {
@@ -355,9 +414,20 @@ mod tests {
                 let (x, z) = (gx as f32 * spacing, gz as f32 * spacing);
                 let bx = gx.div_euclid(BLOCK) * BLOCK;
                 let bz = gz.div_euclid(BLOCK) * BLOCK;
-                let corner = |dx: i64, dz: i64| p.nearest((bx + dx) as f32 * spacing, (bz + dz) as f32 * spacing);
-                let c = [corner(0, 0), corner(BLOCK, 0), corner(0, BLOCK), corner(BLOCK, BLOCK)];
-                let want = if c.iter().all(|n| n.cell == c[0].cell) { p.biome_of(&c[0]) } else { p.biome_at(x, z) };
+                let corner = |dx: i64, dz: i64| {
+                    p.nearest((bx + dx) as f32 * spacing, (bz + dz) as f32 * spacing)
+                };
+                let c = [
+                    corner(0, 0),
+                    corner(BLOCK, 0),
+                    corner(0, BLOCK),
+                    corner(BLOCK, BLOCK),
+                ];
+                let want = if c.iter().all(|n| n.cell == c[0].cell) {
+                    p.biome_of(&c[0])
+                } else {
+                    p.biome_at(x, z)
+                };
                 assert_eq!(*v, want, "sample {gx},{gz} at spacing {spacing}");
             }
         }

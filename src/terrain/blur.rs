@@ -44,7 +44,10 @@ pub fn kernel_for(radius_m: f32, spacing_m: f32) -> Vec<f32> {
 pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out: &mut [f32]) {
     let taps = kern.len();
     let r = taps / 2;
-    assert!(w > 2 * r && h > 2 * r, "blur_weights: grid smaller than the kernel");
+    assert!(
+        w > 2 * r && h > 2 * r,
+        "blur_weights: grid smaller than the kernel"
+    );
     let ow = w - 2 * r;
     let oh = h - 2 * r;
     assert_eq!(ids.len(), w * h, "blur_weights: input size");
@@ -69,7 +72,11 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
         let line = &ids[row * w..(row + 1) * w];
         run[w - 1] = 1;
         for i in (0..w - 1).rev() {
-            run[i] = if line[i] == line[i + 1] { run[i + 1] + 1 } else { 1 };
+            run[i] = if line[i] == line[i + 1] {
+                run[i + 1] + 1
+            } else {
+                1
+            };
         }
         if run[0] == w {
             tags[row * ow..(row + 1) * ow].fill(line[0]);
@@ -141,9 +148,9 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
             let same = tag(row) != DENSE && tag(row) == tag(row + 1);
             down[row] = if same { down[row + 1] + 1 } else { 1 };
         }
-        for orow in 0..oh {
+        for (orow, run) in down.iter().enumerate().take(oh) {
             let t0 = tag(orow);
-            if t0 != DENSE && down[orow] >= taps {
+            if t0 != DENSE && *run >= taps {
                 let v = orow * ow + col;
                 let dst = &mut out[v * k..(v + 1) * k];
                 dst.fill(0.0);

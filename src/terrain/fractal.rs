@@ -32,8 +32,8 @@
 //! vectorises it; [`fbm_batch`] picks an AVX-512 or AVX2 build of the same code at run time. No
 //! fused multiply-add is used (Rust never contracts `a * b + c`), so all builds give the same bits.
 
-use super::noise::{fade, lattice_hash};
 use super::hash::{PRIME_X, PRIME_Z};
+use super::noise::{fade, lattice_hash};
 
 /// Most octaves a generator may have.
 pub const MAX_OCTAVES: usize = 16;
@@ -145,7 +145,8 @@ impl Default for WarpParams {
 
 /// `λ` of §4.1: how many octaves (fractional) a vertex spacing of `spacing_m` resolves.
 pub fn lod_octaves(p: &FractalParams, spacing_m: f64) -> f64 {
-    let lambda = libm::log(p.amplitude_m as f64 / spacing_m) / (p.hurst as f64 * libm::log(p.lacunarity as f64));
+    let lambda = libm::log(p.amplitude_m as f64 / spacing_m)
+        / (p.hurst as f64 * libm::log(p.lacunarity as f64));
     lambda.clamp(1.0, p.octaves as f64)
 }
 
@@ -159,7 +160,7 @@ impl FractalPlan {
         let r = p.lacunarity as f64;
         let h = p.hurst as f64;
         let mut octaves = Vec::with_capacity(full + 1);
-        for i in 0..=full.min(MAX_OCTAVES - 1) {
+        for (i, &seed) in seeds.iter().enumerate().take(full.min(MAX_OCTAVES - 1) + 1) {
             let weight = if i < full { 1.0 } else { frac };
             if weight <= 0.0 || i >= p.octaves as usize {
                 break;
@@ -168,7 +169,7 @@ impl FractalPlan {
             octaves.push(Octave {
                 freq: libm::pow(r, k) as f32,
                 amp: (libm::pow(r, -k * h) * weight) as f32,
-                seed: seeds[i],
+                seed,
             });
         }
         let warp = p.warp.then(|| {
@@ -176,7 +177,10 @@ impl FractalPlan {
             WarpConsts {
                 c1: warp.c1,
                 c2: warp.c2,
-                t: [(warp.c3[0] as f64 / rough0) as f32, (warp.c3[1] as f64 / rough0) as f32],
+                t: [
+                    (warp.c3[0] as f64 / rough0) as f32,
+                    (warp.c3[1] as f64 / rough0) as f32,
+                ],
                 r0: warp.r0,
                 t0: warp.t0,
                 rough0: rough0 as f32,
@@ -216,7 +220,10 @@ pub const LANES: usize = 128;
 /// # Panics
 /// If the three slices differ in length.
 pub fn fbm_batch(plan: &FractalPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
-    assert!(xs.len() == zs.len() && xs.len() == out.len(), "fbm_batch: slice lengths differ");
+    assert!(
+        xs.len() == zs.len() && xs.len() == out.len(),
+        "fbm_batch: slice lengths differ"
+    );
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx512f") {
@@ -344,6 +351,7 @@ pub fn inv_sqrt(x: f32) -> f32 {
 /// to −2³⁰), which keeps the conversion defined and lets it vectorise; inside the supported world
 /// the clamp never changes a value.
 #[inline(always)]
+#[allow(clippy::manual_clamp)] // `clamp` keeps NaN; `max` then `min` maps it to a number.
 fn lattice_index(f: f32) -> u32 {
     let c = f.max(-1_073_741_824.0).min(1_073_741_824.0);
     // SAFETY: `c` is finite and within i32 range after the clamp.
@@ -419,7 +427,10 @@ mod tests {
     fn inline_lattice_matches_reference() {
         for i in -50..50 {
             let (x, z) = (i as f32 * 0.37, i as f32 * -1.13);
-            assert_eq!(lattice(x, z, 3).to_bits(), lattice_inline(x, z, 3).to_bits());
+            assert_eq!(
+                lattice(x, z, 3).to_bits(),
+                lattice_inline(x, z, 3).to_bits()
+            );
         }
     }
 
@@ -445,7 +456,11 @@ mod tests {
             h += o.amp * lattice(x / 500.0 * o.freq, z / 500.0 * o.freq, o.seed);
         }
         let got = plan.height(x, z);
-        assert!((got - (10.0 + 100.0 * h)).abs() < 1e-3, "{got} vs {}", 10.0 + 100.0 * h);
+        assert!(
+            (got - (10.0 + 100.0 * h)).abs() < 1e-3,
+            "{got} vs {}",
+            10.0 + 100.0 * h
+        );
     }
 
     #[test]
@@ -498,16 +513,32 @@ mod tests {
 
     #[test]
     fn warped_terrain_is_as_rough_far_away_as_near_the_origin() {
-        let p = FractalParams { scale_m: 5000.0, hurst: 0.9, ..params() };
+        let p = FractalParams {
+            scale_m: 5000.0,
+            hurst: 0.9,
+            ..params()
+        };
         let local = FractalPlan::new(&p, &WarpParams::default(), 1.0, &seeds());
         let near = median_slope(&local, 0.0);
         let far = median_slope(&local, 100_000.0);
-        assert!((far / near - 1.0).abs() < 0.35, "median slope {near}° near vs {far}° far");
+        assert!(
+            (far / near - 1.0).abs() < 0.35,
+            "median slope {near}° near vs {far}° far"
+        );
         // The literal formula rotates about the origin: far away it is much rougher.
-        let warp = WarpParams { about_origin: true, ..WarpParams::default() };
+        let warp = WarpParams {
+            about_origin: true,
+            ..WarpParams::default()
+        };
         let literal = FractalPlan::new(&p, &warp, 1.0, &seeds());
-        let (lnear, lfar) = (median_slope(&literal, 0.0), median_slope(&literal, 100_000.0));
-        assert!(lfar > 1.5 * lnear, "literal formula: {lnear}° near vs {lfar}° far");
+        let (lnear, lfar) = (
+            median_slope(&literal, 0.0),
+            median_slope(&literal, 100_000.0),
+        );
+        assert!(
+            lfar > 1.5 * lnear,
+            "literal formula: {lnear}° near vs {lfar}° far"
+        );
     }
 
     #[test]
@@ -517,7 +548,9 @@ mod tests {
         p.warp = false;
         let plain = FractalPlan::new(&p, &WarpParams::default(), 1.0, &seeds());
         let diff: f32 = (0..100)
-            .map(|i| (warped.height(i as f32 * 13.0, 7.0) - plain.height(i as f32 * 13.0, 7.0)).abs())
+            .map(|i| {
+                (warped.height(i as f32 * 13.0, 7.0) - plain.height(i as f32 * 13.0, 7.0)).abs()
+            })
             .sum();
         assert!(diff > 1.0);
     }

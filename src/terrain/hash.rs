@@ -84,6 +84,9 @@ mod tests {
         assert_ne!(a, stream(2, purpose::OCTAVE, 0));
         assert_ne!(a, stream(1, purpose::VORONOI, 0));
         assert_ne!(a, stream(1, purpose::OCTAVE, 1));
-        assert_ne!(stream(1 << 32, purpose::OCTAVE, 0), stream(0, purpose::OCTAVE, 0));
+        assert_ne!(
+            stream(1 << 32, purpose::OCTAVE, 0),
+            stream(0, purpose::OCTAVE, 0)
+        );
     }
 }

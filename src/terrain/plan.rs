@@ -22,8 +22,8 @@ pub const TILE_VERTS: usize = 65;
 pub const TILE_QUADS: i64 = 64;
 /// Vertices per tile.
 pub const TILE_VERTEX_COUNT: usize = TILE_VERTS * TILE_VERTS;
-/// The supported world is the square `|X|, |Z| ≤ WORLD_LIMIT_M` metres (times `cell_m`): beyond
-/// it `f32` positions lose the precision the finest octaves need.
+/// The supported world is the square `|X|, |Z| ≤ WORLD_LIMIT_CELLS · cell_m` metres: beyond it
+/// `f32` positions lose the precision the finest octaves need.
 pub const WORLD_LIMIT_CELLS: f64 = 1_048_576.0;
 
 /// Constants of one LOD.
@@ -68,7 +68,9 @@ impl WorldPlan {
                         // scale their low octaves coincide, so mountains continue across biome
                         // borders and the blur only hides differences of amplitude and roughness.
                         let seeds: Vec<u32> = (0..MAX_OCTAVES as u32)
-                            .map(|k| stream(seed, purpose::OCTAVE, k + biome.generator.first_octave))
+                            .map(|k| {
+                                stream(seed, purpose::OCTAVE, k + biome.generator.first_octave)
+                            })
                             .collect();
                         FractalPlan::new(&biome.generator, &params.warp, spacing, &seeds)
                     })
@@ -81,7 +83,13 @@ impl WorldPlan {
             })
             .collect();
         let texture = TexturePlan::new(&params);
-        Ok(Self { seed, params, biome_map, lods, texture })
+        Ok(Self {
+            seed,
+            params,
+            biome_map,
+            lods,
+            texture,
+        })
     }
 
     /// Number of biomes.

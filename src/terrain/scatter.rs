@@ -63,10 +63,18 @@ pub fn scatter(plan: &WorldPlan, tile: &Tile) -> Vec<ScatterPoint> {
             }
             let fi = (x - x0) / tile.spacing_m as f64;
             let fj = (z - z0) / tile.spacing_m as f64;
-            let (i, j) = ((fi as usize).min(TILE_VERTS - 2), (fj as usize).min(TILE_VERTS - 2));
+            let (i, j) = (
+                (fi as usize).min(TILE_VERTS - 2),
+                (fj as usize).min(TILE_VERTS - 2),
+            );
             let (ti, tj) = ((fi - i as f64) as f32, (fj - j as f64) as f32);
             let corners = [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)];
-            let cw = [(1.0 - ti) * (1.0 - tj), ti * (1.0 - tj), (1.0 - ti) * tj, ti * tj];
+            let cw = [
+                (1.0 - ti) * (1.0 - tj),
+                ti * (1.0 - tj),
+                (1.0 - ti) * tj,
+                ti * tj,
+            ];
             let mut y = 0.0f32;
             let mut ny = 0.0f32;
             let mut weights = [0.0f32; super::world::MAX_BIOMES];

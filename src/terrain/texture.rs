@@ -61,8 +61,16 @@ impl TexturePlan {
             height_blend_m: t.height_blend_m.max(1e-3),
             beach_height_m: t.beach_height_m,
             rock_cos: (lo, if hi == lo { lo - 1e-6 } else { hi }),
-            ground: params.biomes.iter().map(|b| WorldParams::material_id(&b.ground)).collect(),
-            snow_line_m: params.biomes.iter().map(|b| b.snow_line_m.clamp(-1e6, 1e6)).collect(),
+            ground: params
+                .biomes
+                .iter()
+                .map(|b| WorldParams::material_id(&b.ground))
+                .collect(),
+            snow_line_m: params
+                .biomes
+                .iter()
+                .map(|b| b.snow_line_m.clamp(-1e6, 1e6))
+                .collect(),
         }
     }
 }
@@ -81,9 +89,11 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     for (line, w) in plan.snow_line_m.iter().zip(s.weights) {
         snow_line += w * line;
     }
-    let snow = smoothstep_inv(snow_line - blend, 0.5 * inv_blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
+    let snow =
+        smoothstep_inv(snow_line - blend, 0.5 * inv_blend, s.height_m) * (1.0 - rock) * (1.0 - wet);
     out[material::SNOW as usize] += snow;
-    let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+    let beach =
+        (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
     out[material::SAND as usize] += beach;
     let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
     for (g, w) in plan.ground.iter().zip(s.weights) {
@@ -94,10 +104,19 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
 
 /// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`, written as a
 /// branch-free loop over vertices so it vectorises. `weights` is vertex-major with `k` biomes.
-pub fn proto_texture_batch(plan: &TexturePlan, heights: &[f32], normal_y: &[f32], weights: &[f32], out: &mut [u8]) {
+pub fn proto_texture_batch(
+    plan: &TexturePlan,
+    heights: &[f32],
+    normal_y: &[f32],
+    weights: &[f32],
+    out: &mut [u8],
+) {
     let k = plan.ground.len();
     let n = heights.len();
-    assert!(normal_y.len() == n && out.len() == n && weights.len() == n * k, "proto_texture_batch: sizes");
+    assert!(
+        normal_y.len() == n && out.len() == n && weights.len() == n * k,
+        "proto_texture_batch: sizes"
+    );
     let blend = plan.height_blend_m;
     let inv_blend = 1.0 / blend;
     // Structure of arrays, one row per material, so every loop below vectorises.
@@ -127,8 +146,12 @@ pub fn proto_texture_batch(plan: &TexturePlan, heights: &[f32], normal_y: &[f32]
             let above = h - plan.sea_level_m;
             let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
             let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, normal_y[v]) * (1.0 - wet);
-            let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
-            let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+            let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h)
+                * (1.0 - rock)
+                * (1.0 - wet);
+            let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above))
+                * (1.0 - wet)
+                * (1.0 - rock);
             seabed[v] = wet;
             rock_row[v] = rock;
             snow_row[v] = snow;
@@ -174,15 +197,31 @@ mod tests {
     fn steep_slopes_are_rock_and_water_is_seabed() {
         let p = TexturePlan::new(&WorldParams::default());
         let grass = [0.0, 0.0, 1.0, 0.0];
-        let flat = Surface { height_m: 30.0, normal_y: 1.0, weights: &grass };
+        let flat = Surface {
+            height_m: 30.0,
+            normal_y: 1.0,
+            weights: &grass,
+        };
         assert_eq!(proto_texture(&p, &flat), material::GRASS);
-        let steep = Surface { normal_y: 60f32.to_radians().cos(), ..flat };
+        let steep = Surface {
+            normal_y: 60f32.to_radians().cos(),
+            ..flat
+        };
         assert_eq!(proto_texture(&p, &steep), material::ROCK);
-        let under = Surface { height_m: -5.0, ..flat };
+        let under = Surface {
+            height_m: -5.0,
+            ..flat
+        };
         assert_eq!(proto_texture(&p, &under), material::SEABED);
-        let beach = Surface { height_m: 0.5, ..flat };
+        let beach = Surface {
+            height_m: 0.5,
+            ..flat
+        };
         assert_eq!(proto_texture(&p, &beach), material::SAND);
-        let high = Surface { height_m: 400.0, ..flat };
+        let high = Surface {
+            height_m: 400.0,
+            ..flat
+        };
         assert_eq!(proto_texture(&p, &high), material::SNOW);
     }
 
@@ -192,11 +231,17 @@ mod tests {
         let n = 300;
         let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.7 - 40.0).collect();
         let ny: Vec<f32> = (0..n).map(|i| 0.4 + (i % 13) as f32 * 0.05).collect();
-        let weights: Vec<f32> = (0..n * 4).map(|i| if i % 4 == (i / 40) % 4 { 0.7 } else { 0.1 }).collect();
+        let weights: Vec<f32> = (0..n * 4)
+            .map(|i| if i % 4 == (i / 40) % 4 { 0.7 } else { 0.1 })
+            .collect();
         let mut out = vec![0u8; n];
         proto_texture_batch(&p, &heights, &ny, &weights, &mut out);
         for v in 0..n {
-            let s = Surface { height_m: heights[v], normal_y: ny[v], weights: &weights[v * 4..v * 4 + 4] };
+            let s = Surface {
+                height_m: heights[v],
+                normal_y: ny[v],
+                weights: &weights[v * 4..v * 4 + 4],
+            };
             assert_eq!(out[v], proto_texture(&p, &s), "vertex {v}");
         }
     }

@@ -15,8 +15,8 @@
 //! skirts, and [`snap_edges`] replaces an edge by the coarser neighbour's edge (even vertices take
 //! the coarser lattice's heights, odd ones the midpoint) so the mesh is watertight.
 
-use super::blur::blur_weights;
 use super::biome::biome_grid;
+use super::blur::blur_weights;
 use super::fractal::fbm_batch;
 use super::plan::{WorldPlan, TILE_QUADS, TILE_VERTEX_COUNT, TILE_VERTS};
 use super::texture::proto_texture_batch;
@@ -52,7 +52,15 @@ pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize)
     let r = lp.kernel.len() / 2;
     let (bw, bh) = (w + 2 * r, h + 2 * r);
     let mut ids = vec![0u8; bw * bh];
-    biome_grid(&plan.biome_map, lp.spacing_m, gx0 - r as i64, gz0 - r as i64, bw, bh, &mut ids);
+    biome_grid(
+        &plan.biome_map,
+        lp.spacing_m,
+        gx0 - r as i64,
+        gz0 - r as i64,
+        bw,
+        bh,
+        &mut ids,
+    );
     let mut weights = vec![0.0f32; w * h * k];
     blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
 
@@ -69,7 +77,12 @@ pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize)
     // One biome everywhere (most tiles): every weight is exactly 1, so `0 + 1·H = H`.
     if let Some(b) = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0)) {
         fbm_batch(&lp.fractals[b], &xs, &zs, &mut heights);
-        return Field { w, h, heights, weights };
+        return Field {
+            w,
+            h,
+            heights,
+            weights,
+        };
     }
     let mut idx = Vec::with_capacity(w * h);
     let mut bx = Vec::with_capacity(w * h);
@@ -92,7 +105,12 @@ pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize)
             heights[v] += weights[v * k + b] * gs[n];
         }
     }
-    Field { w, h, heights, weights }
+    Field {
+        w,
+        h,
+        heights,
+        weights,
+    }
 }
 
 /// A 65×65-vertex height tile.
@@ -133,7 +151,14 @@ impl Tile {
 /// Synthesises one tile on the CPU (the reference implementation).
 pub fn synthesize(plan: &WorldPlan, key: TileKey) -> Tile {
     let n = TILE_VERTS + 2;
-    let f = field(plan, key.lod, key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1, n, n);
+    let f = field(
+        plan,
+        key.lod,
+        key.x * TILE_QUADS - 1,
+        key.z * TILE_QUADS - 1,
+        n,
+        n,
+    );
     finish(plan, key, &f)
 }
 
@@ -152,8 +177,13 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         let row = (j + 1) * n + 1;
         let dst = j * TILE_VERTS;
         heights[dst..dst + TILE_VERTS].copy_from_slice(&f.heights[row..row + TILE_VERTS]);
-        weights[dst * k..(dst + TILE_VERTS) * k].copy_from_slice(&f.weights[row * k..(row + TILE_VERTS) * k]);
-        let (up, mid, down) = (&f.heights[row - n..], &f.heights[row - 1..], &f.heights[row + n..]);
+        weights[dst * k..(dst + TILE_VERTS) * k]
+            .copy_from_slice(&f.weights[row * k..(row + TILE_VERTS) * k]);
+        let (up, mid, down) = (
+            &f.heights[row - n..],
+            &f.heights[row - 1..],
+            &f.heights[row + n..],
+        );
         for i in 0..TILE_VERTS {
             let dx = (mid[i + 2] - mid[i]) * inv2d;
             let dz = (down[i] - up[i]) * inv2d;
@@ -164,9 +194,22 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
     let normal_y: Vec<f32> = normals.iter().map(|n| n[1]).collect();
     let mut materials = vec![0u8; TILE_VERTEX_COUNT];
     proto_texture_batch(&plan.texture, &heights, &normal_y, &weights, &mut materials);
-    let water_depth = heights.iter().map(|h| (plan.params.sea_level_m - h).max(0.0)).collect();
+    let water_depth = heights
+        .iter()
+        .map(|h| (plan.params.sea_level_m - h).max(0.0))
+        .collect();
     let skirt_depth_m = skirt_depth(&heights, spacing);
-    Tile { key, spacing_m: spacing, biome_count: k, heights, normals, weights, materials, water_depth, skirt_depth_m }
+    Tile {
+        key,
+        spacing_m: spacing,
+        biome_count: k,
+        heights,
+        normals,
+        weights,
+        materials,
+        water_depth,
+        skirt_depth_m,
+    }
 }
 
 /// Skirt depth: deep enough to hide the largest crack against a neighbour one LOD coarser, which
@@ -239,7 +282,11 @@ pub fn apply_snap(tile: &mut Tile, edge: Edge, coarse: &[f32]) {
     assert_eq!(coarse.len(), TILE_VERTS / 2 + 1, "apply_snap: strip length");
     for t in 0..TILE_VERTS {
         let v = edge.vertex(t);
-        tile.heights[v] = if t % 2 == 0 { coarse[t / 2] } else { (coarse[t / 2] + coarse[t / 2 + 1]) * 0.5 };
+        tile.heights[v] = if t % 2 == 0 {
+            coarse[t / 2]
+        } else {
+            (coarse[t / 2] + coarse[t / 2 + 1]) * 0.5
+        };
     }
 }
 

@@ -135,7 +135,11 @@ fn gen(base_m: f32, amplitude_m: f32, scale_m: f32, hurst: f32) -> FractalParams
 
 fn kinds(list: &[(&str, f32, f32)]) -> Vec<ScatterKind> {
     list.iter()
-        .map(|&(kind, density, max_slope_deg)| ScatterKind { kind: kind.into(), density, max_slope_deg })
+        .map(|&(kind, density, max_slope_deg)| ScatterKind {
+            kind: kind.into(),
+            density,
+            max_slope_deg,
+        })
         .collect()
 }
 
@@ -161,12 +165,53 @@ impl Default for WorldParams {
                 blur_radius_m: 32.0,
             },
             biomes: vec![
-                biome("arctic", gen(60.0, 240.0, 8000.0, 0.85), "snow", -1e9, kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)])),
-                biome("tundra", gen(30.0, 160.0, 8000.0, 0.9), "dirt", 90.0, kinds(&[("lichen_rock", 0.03, 35.0), ("shrub", 0.08, 30.0), ("reindeer", 0.003, 20.0)])),
-                biome("grassland", gen(40.0, 170.0, 8000.0, 0.9), "grass", 160.0, kinds(&[("oak", 0.05, 25.0), ("bush", 0.10, 30.0), ("deer", 0.004, 20.0)])),
-                biome("desert", gen(25.0, 80.0, 8000.0, 0.75), "sand", 1e9, kinds(&[("cactus", 0.02, 20.0), ("dry_rock", 0.01, 40.0), ("camel", 0.002, 15.0)])),
+                biome(
+                    "arctic",
+                    gen(60.0, 240.0, 8000.0, 0.85),
+                    "snow",
+                    -1e9,
+                    kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)]),
+                ),
+                biome(
+                    "tundra",
+                    gen(30.0, 160.0, 8000.0, 0.9),
+                    "dirt",
+                    90.0,
+                    kinds(&[
+                        ("lichen_rock", 0.03, 35.0),
+                        ("shrub", 0.08, 30.0),
+                        ("reindeer", 0.003, 20.0),
+                    ]),
+                ),
+                biome(
+                    "grassland",
+                    gen(40.0, 170.0, 8000.0, 0.9),
+                    "grass",
+                    160.0,
+                    kinds(&[
+                        ("oak", 0.05, 25.0),
+                        ("bush", 0.10, 30.0),
+                        ("deer", 0.004, 20.0),
+                    ]),
+                ),
+                biome(
+                    "desert",
+                    gen(25.0, 80.0, 8000.0, 0.75),
+                    "sand",
+                    1e9,
+                    kinds(&[
+                        ("cactus", 0.02, 20.0),
+                        ("dry_rock", 0.01, 40.0),
+                        ("camel", 0.002, 15.0),
+                    ]),
+                ),
             ],
-            texturing: Texturing { rock_slope_deg: 38.0, rock_blend_deg: 8.0, beach_height_m: 2.0, height_blend_m: 6.0 },
+            texturing: Texturing {
+                rock_slope_deg: 38.0,
+                rock_blend_deg: 8.0,
+                beach_height_m: 2.0,
+                height_blend_m: 6.0,
+            },
             scatter: ScatterParams { spacing_m: 4.0 },
         }
     }
@@ -186,46 +231,140 @@ fn check(ok: bool, field: impl Into<String>, message: &str) -> Result<(), ParamE
     if ok {
         Ok(())
     } else {
-        Err(ParamError { field: field.into(), message: message.into() })
+        Err(ParamError {
+            field: field.into(),
+            message: message.into(),
+        })
     }
 }
 
 impl WorldParams {
     /// Checks every limit; the server calls this before accepting a scene.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check(self.cell_m.is_finite() && (0.01..=1000.0).contains(&self.cell_m), "cell_m", "must be in [0.01, 1000]")?;
-        check(self.sea_level_m.is_finite(), "sea_level_m", "must be finite")?;
+        check(
+            self.cell_m.is_finite() && (0.01..=1000.0).contains(&self.cell_m),
+            "cell_m",
+            "must be in [0.01, 1000]",
+        )?;
+        check(
+            self.sea_level_m.is_finite(),
+            "sea_level_m",
+            "must be finite",
+        )?;
         let w = &self.warp;
-        let finite = [w.c1, w.c2, w.c3, w.r0, w.t0].iter().flatten().all(|v| v.is_finite() && v.abs() <= 100.0);
-        check(finite, "warp", "c1, c2, c3, r0 and t0 must be finite and within ±100")?;
-        check((w.r0[0] * w.r0[0] + w.r0[1] * w.r0[1] - 1.0).abs() < 1e-3, "warp.r0", "must be a unit vector")?;
-        check(w.lever.is_finite() && (0.0..=100.0).contains(&w.lever), "warp.lever", "must be in [0, 100]")?;
+        let finite = [w.c1, w.c2, w.c3, w.r0, w.t0]
+            .iter()
+            .flatten()
+            .all(|v| v.is_finite() && v.abs() <= 100.0);
+        check(
+            finite,
+            "warp",
+            "c1, c2, c3, r0 and t0 must be finite and within ±100",
+        )?;
+        check(
+            (w.r0[0] * w.r0[0] + w.r0[1] * w.r0[1] - 1.0).abs() < 1e-3,
+            "warp.r0",
+            "must be a unit vector",
+        )?;
+        check(
+            w.lever.is_finite() && (0.0..=100.0).contains(&w.lever),
+            "warp.lever",
+            "must be in [0, 100]",
+        )?;
         let l = &self.layout;
-        check(l.cell_size_m.is_finite() && l.cell_size_m >= 16.0 * self.cell_m, "layout.cell_size_m", "must be at least 16 vertex spacings")?;
-        check(l.latitude_speed_cells.is_finite() && l.latitude_speed_cells >= 1.0, "layout.latitude_speed_cells", "must be at least 1")?;
-        check((0.0..=1.0).contains(&l.dispersion_d), "layout.dispersion_d", "must be in [0, 1]")?;
-        check(l.blur_radius_m.is_finite() && (0.0..=64.0 * self.cell_m).contains(&l.blur_radius_m), "layout.blur_radius_m", "must be in [0, 64 vertex spacings]")?;
-        check(!self.biomes.is_empty() && self.biomes.len() <= MAX_BIOMES, "biomes", "must have 1 to 8 biomes")?;
+        check(
+            l.cell_size_m.is_finite() && l.cell_size_m >= 16.0 * self.cell_m,
+            "layout.cell_size_m",
+            "must be at least 16 vertex spacings",
+        )?;
+        check(
+            l.latitude_speed_cells.is_finite() && l.latitude_speed_cells >= 1.0,
+            "layout.latitude_speed_cells",
+            "must be at least 1",
+        )?;
+        check(
+            (0.0..=1.0).contains(&l.dispersion_d),
+            "layout.dispersion_d",
+            "must be in [0, 1]",
+        )?;
+        check(
+            l.blur_radius_m.is_finite() && (0.0..=64.0 * self.cell_m).contains(&l.blur_radius_m),
+            "layout.blur_radius_m",
+            "must be in [0, 64 vertex spacings]",
+        )?;
+        check(
+            !self.biomes.is_empty() && self.biomes.len() <= MAX_BIOMES,
+            "biomes",
+            "must have 1 to 8 biomes",
+        )?;
         for (i, b) in self.biomes.iter().enumerate() {
             let f = |name: &str| format!("biomes[{i}].{name}");
-            check(!b.name.is_empty() && self.biomes.iter().filter(|o| o.name == b.name).count() == 1, f("name"), "must be non-empty and unique")?;
-            check(MATERIALS.contains(&b.ground.as_str()), f("ground"), "must name a material")?;
+            check(
+                !b.name.is_empty() && self.biomes.iter().filter(|o| o.name == b.name).count() == 1,
+                f("name"),
+                "must be non-empty and unique",
+            )?;
+            check(
+                MATERIALS.contains(&b.ground.as_str()),
+                f("ground"),
+                "must name a material",
+            )?;
             let g = &b.generator;
-            check(g.base_m.is_finite() && g.base_m.abs() <= 10_000.0, f("generator.base_m"), "must be in [-10000, 10000]")?;
-            check(g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0, f("generator.amplitude_m"), "must be in (0, 5000]")?;
-            check(g.scale_m.is_finite() && g.scale_m >= 4.0 * self.cell_m && g.scale_m <= 1.0e6, f("generator.scale_m"), "must be in [4 vertex spacings, 1e6]")?;
-            check(g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity), f("generator.lacunarity"), "must be in [1.1, 4]")?;
-            check(g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0, f("generator.hurst"), "must be in (0.05, 1]")?;
-            check(g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES, f("generator.octaves"), "must be in [1, 16]")?;
-            check(g.first_octave <= 8, f("generator.first_octave"), "must be in [0, 8]")?;
+            check(
+                g.base_m.is_finite() && g.base_m.abs() <= 10_000.0,
+                f("generator.base_m"),
+                "must be in [-10000, 10000]",
+            )?;
+            check(
+                g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0,
+                f("generator.amplitude_m"),
+                "must be in (0, 5000]",
+            )?;
+            check(
+                g.scale_m.is_finite() && g.scale_m >= 4.0 * self.cell_m && g.scale_m <= 1.0e6,
+                f("generator.scale_m"),
+                "must be in [4 vertex spacings, 1e6]",
+            )?;
+            check(
+                g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity),
+                f("generator.lacunarity"),
+                "must be in [1.1, 4]",
+            )?;
+            check(
+                g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0,
+                f("generator.hurst"),
+                "must be in (0.05, 1]",
+            )?;
+            check(
+                g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES,
+                f("generator.octaves"),
+                "must be in [1, 16]",
+            )?;
+            check(
+                g.first_octave <= 8,
+                f("generator.first_octave"),
+                "must be in [0, 8]",
+            )?;
             let mut total = 0.0;
             for (k, s) in b.scatter.iter().enumerate() {
-                check((0.0..=1.0).contains(&s.density), format!("biomes[{i}].scatter[{k}].density"), "must be in [0, 1]")?;
+                check(
+                    (0.0..=1.0).contains(&s.density),
+                    format!("biomes[{i}].scatter[{k}].density"),
+                    "must be in [0, 1]",
+                )?;
                 total += s.density;
             }
-            check(total <= 1.0 + 1e-6, f("scatter"), "densities must sum to at most 1")?;
+            check(
+                total <= 1.0 + 1e-6,
+                f("scatter"),
+                "densities must sum to at most 1",
+            )?;
         }
-        check(self.scatter.spacing_m.is_finite() && self.scatter.spacing_m >= self.cell_m, "scatter.spacing_m", "must be at least cell_m")?;
+        check(
+            self.scatter.spacing_m.is_finite() && self.scatter.spacing_m >= self.cell_m,
+            "scatter.spacing_m",
+            "must be at least cell_m",
+        )?;
         Ok(())
     }
 
