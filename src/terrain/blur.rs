@@ -121,25 +121,8 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
             b => rows[o * k + b as usize] = 1.0,
         }
     }
-    let mut sums = vec![0.0f32; ow];
-    for orow in 0..oh {
-        let dst = &mut out[orow * row_len..(orow + 1) * row_len];
-        dst.fill(0.0);
-        for (t, kt) in kern.iter().enumerate() {
-            let src = &rows[(orow + t) * row_len..(orow + t + 1) * row_len];
-            for (d, s) in dst.iter_mut().zip(src) {
-                *d += kt * s;
-            }
-        }
-        for (col, sum) in sums.iter_mut().enumerate() {
-            *sum = dst[col * k..(col + 1) * k].iter().sum();
-        }
-        for (col, sum) in sums.iter().enumerate() {
-            for c in 0..k {
-                dst[col * k + c] /= sum;
-            }
-        }
-    }
+    // Which outputs the one-hot rule covers: a run of 2r+1 equal one-hot tags below them.
+    let mut vtag = vec![DENSE; oh * ow];
     let mut down = vec![0usize; h];
     for col in 0..ow {
         let tag = |row: usize| tags[row * ow + col];
@@ -149,12 +132,40 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
             down[row] = if same { down[row + 1] + 1 } else { 1 };
         }
         for (orow, run) in down.iter().enumerate().take(oh) {
-            let t0 = tag(orow);
-            if t0 != DENSE && *run >= taps {
-                let v = orow * ow + col;
-                let dst = &mut out[v * k..(v + 1) * k];
-                dst.fill(0.0);
-                dst[t0 as usize] = 1.0;
+            if tag(orow) != DENSE && *run >= taps {
+                vtag[orow * ow + col] = tag(orow);
+            }
+        }
+    }
+    for orow in 0..oh {
+        let flags = &vtag[orow * ow..(orow + 1) * ow];
+        let dst = &mut out[orow * row_len..(orow + 1) * row_len];
+        dst.fill(0.0);
+        // Dense sums only over the span of columns that need them, whole rows per tap.
+        if let (Some(c0), Some(c1)) = (
+            flags.iter().position(|t| *t == DENSE),
+            flags.iter().rposition(|t| *t == DENSE),
+        ) {
+            let span = c0 * k..(c1 + 1) * k;
+            let acc = &mut dst[span.clone()];
+            for (t, kt) in kern.iter().enumerate() {
+                let src = &rows[(orow + t) * row_len..(orow + t + 1) * row_len][span.clone()];
+                for (d, s) in acc.iter_mut().zip(src) {
+                    *d += kt * s;
+                }
+            }
+            for cell in acc.chunks_exact_mut(k) {
+                let sum: f32 = cell.iter().sum();
+                for v in cell.iter_mut() {
+                    *v /= sum;
+                }
+            }
+        }
+        for (col, t) in flags.iter().enumerate() {
+            if *t != DENSE {
+                let cell = &mut dst[col * k..(col + 1) * k];
+                cell.fill(0.0);
+                cell[*t as usize] = 1.0;
             }
         }
     }
@@ -163,6 +174,78 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The module's definition, literally, one output at a time.
+    fn reference(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize) -> Vec<f32> {
+        let taps = kern.len();
+        let r = taps / 2;
+        let (ow, oh) = (w - 2 * r, h - 2 * r);
+        let horiz = |row: usize, col: usize| -> (Option<u8>, Vec<f32>) {
+            let win = &ids[row * w + col..row * w + col + taps];
+            if win.iter().all(|b| *b == win[0]) {
+                return (Some(win[0]), vec![]);
+            }
+            let mut acc = vec![0.0f32; k];
+            for t in 0..taps {
+                acc[win[t] as usize] += kern[t];
+            }
+            (None, acc)
+        };
+        let mut out = vec![0.0f32; ow * oh * k];
+        for orow in 0..oh {
+            for col in 0..ow {
+                let hs: Vec<_> = (0..taps).map(|t| horiz(orow + t, col)).collect();
+                let dst = &mut out[(orow * ow + col) * k..(orow * ow + col + 1) * k];
+                if let Some(b) = hs[0].0 {
+                    if hs.iter().all(|x| x.0 == Some(b)) {
+                        dst[b as usize] = 1.0;
+                        continue;
+                    }
+                }
+                let mut acc = vec![0.0f32; k];
+                for (t, (tag, dense)) in hs.iter().enumerate() {
+                    for c in 0..k {
+                        let hv = match tag {
+                            Some(b) => (*b as usize == c) as u8 as f32,
+                            None => dense[c],
+                        };
+                        acc[c] += kern[t] * hv;
+                    }
+                }
+                let sum: f32 = acc.iter().sum();
+                for c in 0..k {
+                    dst[c] = acc[c] / sum;
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn optimised_blur_equals_the_definition_bit_for_bit() {
+        let (w, h, r, k) = (41usize, 37usize, 5usize, 4usize);
+        let kern = kernel(r, r as f32 / 3.0);
+        for seed in 0..6u32 {
+            // Blobs of biomes with a few isolated samples.
+            let ids: Vec<u8> = (0..w * h)
+                .map(|i| {
+                    let (x, y) = ((i % w) as u32, (i / w) as u32);
+                    let hsh = crate::terrain::hash::hash2(x as i32 / 9, y as i32 / 7, seed);
+                    if crate::terrain::hash::hash2(x as i32, y as i32, seed + 99) % 50 == 0 {
+                        (hsh % 4) as u8 ^ 1
+                    } else {
+                        (hsh % 4) as u8
+                    }
+                })
+                .collect();
+            let mut out = vec![0.0f32; (w - 2 * r) * (h - 2 * r) * k];
+            blur_weights(&ids, w, h, &kern, k, &mut out);
+            let want = reference(&ids, w, h, &kern, k);
+            for (a, b) in out.iter().zip(&want) {
+                assert_eq!(a.to_bits(), b.to_bits());
+            }
+        }
+    }
 
     #[test]
     fn kernel_is_normalised_and_symmetric() {

@@ -121,15 +121,25 @@ pub fn proto_texture_batch(
     let inv_blend = 1.0 / blend;
     // Structure of arrays, one row per material, so every loop below vectorises.
     let mut mat = vec![0.0f32; MATERIALS.len() * n];
-    // Biome-major copy of the weights, so the per-biome loops read contiguous memory.
+    // Biome-major weights, so the per-biome loops read contiguous memory; a tile inside one biome
+    // (weights exactly one-hot everywhere) gets them without the transpose.
+    let single = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0));
     let mut wt = vec![0.0f32; k * n];
-    for (v, wv) in weights.chunks_exact(k).enumerate() {
-        for (b, w) in wv.iter().enumerate() {
-            wt[b * n + v] = *w;
+    match single {
+        Some(b) => wt[b * n..(b + 1) * n].fill(1.0),
+        None => {
+            for (v, wv) in weights.chunks_exact(k).enumerate() {
+                for (b, w) in wv.iter().enumerate() {
+                    wt[b * n + v] = *w;
+                }
+            }
         }
     }
     let mut snow_line = vec![0.0f32; n];
     for (b, line) in plan.snow_line_m.iter().enumerate() {
+        if single.is_some_and(|s| s != b) {
+            continue;
+        }
         for (s, w) in snow_line.iter_mut().zip(&wt[b * n..(b + 1) * n]) {
             *s += w * line;
         }
@@ -160,6 +170,9 @@ pub fn proto_texture_batch(
         }
     }
     for (b, g) in plan.ground.iter().enumerate() {
+        if single.is_some_and(|s| s != b) {
+            continue;
+        }
         let row = &mut mat[*g as usize * n..(*g as usize + 1) * n];
         for ((m, w), r) in row.iter_mut().zip(&wt[b * n..(b + 1) * n]).zip(&rest) {
             *m += w * r;
