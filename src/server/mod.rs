@@ -167,6 +167,8 @@ async fn open_compute(choice: crate::cli::BackendChoice) -> anyhow::Result<Compu
 
 /// Runs the server until Ctrl-C or SIGTERM.
 pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
+    std::fs::create_dir_all(&args.data)
+        .map_err(|e| anyhow::anyhow!("cannot create the data directory {}: {e}", args.data.display()))?;
     let compute = open_compute(args.backend).await?;
     tracing::info!(backend = ?compute.info(), "compute backend");
     let mut state = AppState::new(compute);
