@@ -20,6 +20,40 @@ pub enum Command {
     Serve(ServeArgs),
     /// Measure performance against the targets of the issues.
     Bench(BenchArgs),
+    /// Export a region to a tar archive locally, optionally one shard of N.
+    Export(ExportArgs),
+}
+
+/// `strata export` options.
+#[derive(Debug, clap::Args)]
+pub struct ExportArgs {
+    /// World seed.
+    #[arg(long)]
+    pub seed: u64,
+    /// World settings as JSON (a `WorldParams` document); the default world without it.
+    #[arg(long)]
+    pub world: Option<PathBuf>,
+    /// Level of detail.
+    #[arg(long, default_value_t = 0)]
+    pub lod: u32,
+    /// Tile rectangle `x0,z0,x1,z1` (x1 and z1 exclusive).
+    #[arg(long, value_delimiter = ',', num_args = 4)]
+    pub region: Vec<i64>,
+    /// Products: `tiles`, `scatter`.
+    #[arg(long, value_delimiter = ',', default_value = "tiles")]
+    pub products: Vec<String>,
+    /// Tile formats: `json`, `bin`, `png`, `glb`.
+    #[arg(long, value_delimiter = ',', default_value = "bin")]
+    pub formats: Vec<String>,
+    /// Shard `i/N` (1-based); the default is the whole export.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Output archive.
+    #[arg(long, short)]
+    pub out: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
 }
 
 /// Which compute backend to use.
@@ -48,6 +82,10 @@ pub struct ServeArgs {
     /// Directory of the browser viewer served at `/`.
     #[arg(long, default_value = "web")]
     pub web: PathBuf,
+    /// Server admin token: may create worlds and acts as admin of every world. Read from
+    /// `STRATA_ADMIN_TOKEN` when not given. Without one, anyone may create worlds.
+    #[arg(long)]
+    pub admin_token: Option<crate::server::access::Secret>,
 }
 
 /// `strata bench` options.
@@ -79,5 +117,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
             rt.block_on(crate::server::serve(args))
         }
         Command::Bench(args) => crate::bench::run(&args),
+        Command::Export(args) => crate::export::cli::run(&args),
     }
 }

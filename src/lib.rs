@@ -2,12 +2,16 @@
 //!
 //! See `ARCHITECTURE.md` for the map. [`terrain`] is the world function (pure, CPU reference);
 //! [`gpu`] owns the compute device and the WGSL twins; [`encode`] turns products into wire formats;
-//! [`server`] is the HTTP service.
+//! [`server`] is the HTTP service; [`scene`] is the scene document and [`store`] keeps worlds,
+//! their versions and tokens durably.
 
 pub mod bench;
 pub mod cli;
 pub mod compute;
 pub mod encode;
+pub mod export;
 pub mod gpu;
+pub mod scene;
 pub mod server;
+pub mod store;
 pub mod terrain;

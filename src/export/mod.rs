@@ -1,0 +1,361 @@
+//! Batch exports: a rectangle of tiles at one LOD, as chosen products and formats, in one
+//! deterministic tar archive, optionally one shard of N.
+//!
+//! Members are written in canonical order — rows `z` ascending, then columns `x`, then products
+//! (`tiles` before `scatter`), then formats in the order asked — as `tiles/{lod}/{x}/{z}.{ext}` and
+//! `scatter/{lod}/{x}/{z}.json`, followed by `manifest.json` (the spec, the shard, and a blake3 hash
+//! per member). Shard `i` of `N` takes the contiguous tiles `[i·T/N, (i+1)·T/N)` of the `T` tiles
+//! in canonical order, so the members of shards `0..N` in order are exactly the members of the
+//! unsharded export, byte for byte. Every member is the same bytes the HTTP API serves for the
+//! same key.
+
+pub mod cli;
+pub mod tar;
+
+use crate::encode::{self, Format};
+use crate::terrain::{synthesize, Tile, TileKey, WorldPlan, MAX_LOD};
+use serde::{Deserialize, Serialize};
+use std::io::Write;
+
+/// Most tiles one export may cover.
+pub const MAX_EXPORT_TILES: u64 = 65_536;
+
+/// A product of an export.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Product {
+    /// Height tiles in the chosen formats.
+    Tiles,
+    /// Scatter points (JSON).
+    Scatter,
+}
+
+/// What to export.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExportSpec {
+    /// Level of detail of every tile.
+    pub lod: u32,
+    /// First tile column (inclusive).
+    pub x0: i64,
+    /// First tile row (inclusive).
+    pub z0: i64,
+    /// Last tile column (exclusive).
+    pub x1: i64,
+    /// Last tile row (exclusive).
+    pub z1: i64,
+    /// Products, in member order.
+    pub products: Vec<Product>,
+    /// Tile formats by extension (`json`, `bin`, `png`, `glb`), in member order.
+    pub formats: Vec<String>,
+}
+
+/// One shard of an export: `index` in `0..count`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Shard {
+    /// Zero-based shard index.
+    pub index: u32,
+    /// Number of shards.
+    pub count: u32,
+}
+
+impl Shard {
+    /// The whole export.
+    pub const WHOLE: Shard = Shard { index: 0, count: 1 };
+
+    /// Parses `i/N` with `i` counted from 1 (as the CLI takes it).
+    pub fn parse(s: &str) -> Result<Self, String> {
+        let (i, n) = s.split_once('/').ok_or("shard must look like i/N")?;
+        let i: u32 = i
+            .trim()
+            .parse()
+            .map_err(|_| "shard index must be a number")?;
+        let n: u32 = n
+            .trim()
+            .parse()
+            .map_err(|_| "shard count must be a number")?;
+        if n == 0 || i == 0 || i > n {
+            return Err(format!("shard {i}/{n}: need 1 ≤ i ≤ N"));
+        }
+        Ok(Shard {
+            index: i - 1,
+            count: n,
+        })
+    }
+}
+
+/// A spec that cannot be exported; `field` names the offending field.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{field}: {message}")]
+pub struct SpecError {
+    /// Offending field.
+    pub field: &'static str,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl ExportSpec {
+    /// Checks the spec against the world's limits.
+    pub fn validate(&self, plan: &WorldPlan) -> Result<(), SpecError> {
+        let err = |field, message: String| Err(SpecError { field, message });
+        if self.lod > MAX_LOD {
+            return err("lod", format!("must be in 0..={MAX_LOD}"));
+        }
+        let lim = plan.max_tile_coord(self.lod);
+        for (field, v) in [
+            ("x0", self.x0),
+            ("z0", self.z0),
+            ("x1", self.x1 - 1),
+            ("z1", self.z1 - 1),
+        ] {
+            if v.abs() > lim {
+                return err(
+                    field,
+                    format!("tile coordinates at LOD {} must be within ±{lim}", self.lod),
+                );
+            }
+        }
+        if self.x1 <= self.x0 {
+            return err("x1", "must be greater than x0".into());
+        }
+        if self.z1 <= self.z0 {
+            return err("z1", "must be greater than z0".into());
+        }
+        if self.tile_count() > MAX_EXPORT_TILES {
+            return err(
+                "x1",
+                format!("an export covers at most {MAX_EXPORT_TILES} tiles"),
+            );
+        }
+        if self.products.is_empty() {
+            return err("products", "name at least one of tiles, scatter".into());
+        }
+        if self.products.contains(&Product::Tiles) && self.formats.is_empty() {
+            return err(
+                "formats",
+                "tiles need at least one of json, bin, png, glb".into(),
+            );
+        }
+        for f in &self.formats {
+            if Format::from_extension(f).is_none() {
+                return err(
+                    "formats",
+                    format!("unknown format {f:?}; known: json, bin, png, glb"),
+                );
+            }
+        }
+        Ok(())
+    }
+
+    /// Number of tiles.
+    pub fn tile_count(&self) -> u64 {
+        ((self.x1 - self.x0).max(0) as u64) * ((self.z1 - self.z0).max(0) as u64)
+    }
+
+    /// The tiles of a shard, in canonical order.
+    pub fn keys(&self, shard: Shard) -> Vec<TileKey> {
+        let total = self.tile_count();
+        let a = total * shard.index as u64 / shard.count as u64;
+        let b = total * (shard.index as u64 + 1) / shard.count as u64;
+        let w = (self.x1 - self.x0) as u64;
+        (a..b)
+            .map(|i| TileKey {
+                lod: self.lod,
+                x: self.x0 + (i % w) as i64,
+                z: self.z0 + (i / w) as i64,
+            })
+            .collect()
+    }
+}
+
+/// The archive members of one tile, in canonical order.
+pub fn members(plan: &WorldPlan, spec: &ExportSpec, tile: &Tile) -> Vec<(String, Vec<u8>)> {
+    let k = tile.key;
+    let mut out = Vec::new();
+    for product in &spec.products {
+        match product {
+            Product::Tiles => {
+                for f in spec
+                    .formats
+                    .iter()
+                    .filter_map(|f| Format::from_extension(f))
+                {
+                    let bytes = match f {
+                        Format::Json => encode::json::encode(plan, tile),
+                        Format::Bin => encode::bin::encode(plan, tile),
+                        Format::Glb => encode::glb::encode(plan, tile),
+                        Format::Png => encode::heightmap::encode(plan, tile)
+                            .map(|p| p.bytes)
+                            .unwrap_or_default(),
+                    };
+                    out.push((
+                        format!("tiles/{}/{}/{}.{}", k.lod, k.x, k.z, f.extension()),
+                        bytes,
+                    ));
+                }
+            }
+            Product::Scatter => out.push((
+                format!("scatter/{}/{}/{}.json", k.lod, k.x, k.z),
+                encode::scatter::encode(plan, tile),
+            )),
+        }
+    }
+    out
+}
+
+/// Manifest entry of one member.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ManifestEntry {
+    /// Member name.
+    pub name: String,
+    /// Size, bytes.
+    pub bytes: u64,
+    /// blake3 of the member, hex.
+    pub blake3: String,
+}
+
+/// `manifest.json`.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Manifest {
+    /// Always `"strata.export.v1"`.
+    pub format: String,
+    /// World seed (decimal string: it may not fit a JavaScript number).
+    pub seed: String,
+    /// What was exported.
+    pub spec: ExportSpec,
+    /// Which shard this archive is.
+    pub shard: Shard,
+    /// Members before the manifest, in order.
+    pub members: Vec<ManifestEntry>,
+}
+
+/// Writes the archive of one shard, synthesising tiles on `threads` CPU threads; `progress` is
+/// called with `(tiles done, tiles in the shard)` after each tile is written.
+///
+/// # Errors
+/// An invalid spec or a failing writer.
+pub fn write_archive(
+    plan: &WorldPlan,
+    spec: &ExportSpec,
+    shard: Shard,
+    threads: usize,
+    out: &mut impl Write,
+    mut progress: impl FnMut(usize, usize),
+) -> anyhow::Result<Manifest> {
+    spec.validate(plan)?;
+    let keys = spec.keys(shard);
+    let threads = threads.max(1);
+    let mut manifest = Manifest {
+        format: "strata.export.v1".into(),
+        seed: plan.seed.to_string(),
+        spec: spec.clone(),
+        shard,
+        members: Vec::new(),
+    };
+    let mut done = 0;
+    for batch in keys.chunks(threads * 4) {
+        let tiles: Vec<Vec<(String, Vec<u8>)>> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..threads)
+                .map(|t| {
+                    s.spawn(move || {
+                        batch
+                            .iter()
+                            .skip(t)
+                            .step_by(threads)
+                            .map(|k| members(plan, spec, &synthesize(plan, *k)))
+                            .collect::<Vec<_>>()
+                    })
+                })
+                .collect();
+            let per_thread: Vec<Vec<_>> = handles
+                .into_iter()
+                .map(|h| h.join().expect("export worker panicked"))
+                .collect();
+            (0..batch.len())
+                .map(|i| per_thread[i % threads][i / threads].clone())
+                .collect()
+        });
+        for tile_members in tiles {
+            for (name, bytes) in tile_members {
+                tar::write_member(out, &name, &bytes)?;
+                manifest.members.push(ManifestEntry {
+                    bytes: bytes.len() as u64,
+                    blake3: blake3::hash(&bytes).to_hex().to_string(),
+                    name,
+                });
+            }
+            done += 1;
+            progress(done, keys.len());
+        }
+    }
+    let json = serde_json::to_vec_pretty(&manifest)?;
+    tar::write_member(out, "manifest.json", &json)?;
+    tar::finish(out)?;
+    Ok(manifest)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::WorldParams;
+
+    fn spec() -> ExportSpec {
+        ExportSpec {
+            lod: 1,
+            x0: -2,
+            z0: -1,
+            x1: 2,
+            z1: 2,
+            products: vec![Product::Tiles, Product::Scatter],
+            formats: vec!["bin".into(), "png".into()],
+        }
+    }
+
+    #[test]
+    fn shards_concatenate_to_the_whole_export() {
+        let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
+        let mut whole = Vec::new();
+        write_archive(&plan, &spec(), Shard::WHOLE, 2, &mut whole, |_, _| {}).expect("export");
+        let whole = tar::read_members(&whole).expect("read");
+        assert_eq!(whole.len(), 12 * 3 + 1);
+        let mut joined = Vec::new();
+        for i in 0..3 {
+            let mut part = Vec::new();
+            write_archive(
+                &plan,
+                &spec(),
+                Shard { index: i, count: 3 },
+                1 + i as usize,
+                &mut part,
+                |_, _| {},
+            )
+            .expect("export");
+            let mut members = tar::read_members(&part).expect("read");
+            assert_eq!(members.pop().map(|m| m.0), Some("manifest.json".into()));
+            joined.extend(members);
+        }
+        assert_eq!(joined, whole[..whole.len() - 1].to_vec());
+    }
+
+    #[test]
+    fn bad_specs_name_the_field() {
+        let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
+        let field = |f: &dyn Fn(&mut ExportSpec)| {
+            let mut s = spec();
+            f(&mut s);
+            s.validate(&plan).err().map(|e| e.field)
+        };
+        assert_eq!(field(&|_| {}), None);
+        assert_eq!(field(&|s| s.lod = 13), Some("lod"));
+        assert_eq!(field(&|s| s.x1 = s.x0), Some("x1"));
+        assert_eq!(field(&|s| s.formats = vec!["tiff".into()]), Some("formats"));
+        assert_eq!(field(&|s| s.products.clear()), Some("products"));
+        assert_eq!(field(&|s| s.x1 = 100_000), Some("x1"));
+        assert_eq!(Shard::parse("2/3"), Ok(Shard { index: 1, count: 3 }));
+        assert!(
+            Shard::parse("0/3").is_err()
+                && Shard::parse("4/3").is_err()
+                && Shard::parse("x").is_err()
+        );
+    }
+}
