@@ -13,7 +13,8 @@
 //   is rounded to f32 first, as on the CPU;
 // - `/` and `sqrt` need only be accurate to 2.5 ULP. `div_rn` and `sqrt_rn` correct the hardware
 //   result to the correctly rounded one (what Rust computes) with exact residuals (Dekker's exact
-//   product; `fma` need not be fused in WGSL, and is not on lavapipe).
+//   product; `fma` need not be fused in WGSL, and is not on lavapipe). The warp normalisation
+//   uses no hardware operation of that kind: it mirrors the CPU's `inv_sqrt`.
 //
 // On a device with IEEE-754 `+`, `-`, `*` (which WGSL requires) the twin is then bit-exact. That
 // matters more than it seems: the §2.2 warp feeds the accumulated height back into the sample
@@ -151,7 +152,7 @@ fn signed_unit(h: u32) -> f32 {
 const BYTE_SUM_MEAN: i32 = 510;
 // `terrain::noise::INV_BYTE_SUM_STD`, written as the exact decimal value of the Rust f32 constant
 // so the conversion is exact (checked by a unit test in `src/gpu`).
-const INV_BYTE_SUM_STD: f32 = 0.0067658131010830402374267578125;
+const INV_BYTE_SUM_STD: f32 = 0.006765875034034252166748046875;
 
 // `terrain::noise::gaussian`: byte sum of a hash, scaled to unit variance.
 fn gaussian(h: u32) -> f32 {
@@ -197,6 +198,15 @@ fn lattice(x: f32, z: f32, seed: u32) -> f32 {
     let a = v00 + rn((v10 - v00) * u);
     let b = v01 + rn((v11 - v01) * u);
     return a + rn((b - a) * v);
+}
+
+// `terrain::fractal::inv_sqrt`: 1 / sqrt(x) for normal positive x from Lomont's integer first
+// guess and two Newton steps, in integer ops and rounded multiplies and subtractions only.
+fn inv_sqrt(x: f32) -> f32 {
+    let half = 0.5 * x;
+    var y = bitcast<f32>(0x5f375a86u - (bitcast<u32>(x) >> 1u));
+    y = y * (1.5 - rn(rn(half * y) * y));
+    return y * (1.5 - rn(rn(half * y) * y));
 }
 
 // `terrain::fractal::Octave` (padded to 16 bytes).
@@ -274,7 +284,7 @@ fn fbm(f: Fractal, x_m: f32, z_m: f32) -> f32 {
             // `fractal::warp_lanes`: times the reciprocal length, unchanged where the vector has
             // (near) zero length.
             if (len2 > 1e-20) {
-                let inv = div_rn(1.0, sqrt_rn(len2));
+                let inv = inv_sqrt(len2);
                 rx = rn(vx * inv);
                 rz = rn(vz * inv);
             }

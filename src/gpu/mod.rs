@@ -25,9 +25,12 @@
 //!   `a + (b − a) · t` as a lerp; the CPU code does neither (Rust never contracts). Every product
 //!   that feeds an addition therefore passes a rounding barrier, `rn` in `common.wgsl`: an xor
 //!   with a runtime zero, which no compiler can see through;
-//! - WGSL's `/` and `sqrt` need only be accurate to 2.5 ULP; `div_rn` and `sqrt_rn` correct them
-//!   to the correctly rounded result with exact residuals from Dekker's product (WGSL's `fma`
-//!   need not be fused, and on lavapipe it is not).
+//! - WGSL's `/` and `sqrt` need only be accurate to 2.5 ULP; `div_rn` (blur normalisation,
+//!   latitude gradient) corrects the quotient to the correctly rounded one with exact residuals
+//!   from Dekker's product (WGSL's `fma` need not be fused, and on lavapipe it is not). The warp
+//!   normalisation needs no hardware square root: it mirrors the CPU's `inv_sqrt` (integer first
+//!   guess, Newton steps in rounded multiplies). `sqrt_rn` is there, tested, for kernels that need
+//!   a square root.
 //!
 //! So on any device with IEEE-754 `+`, `-`, `*` (which WGSL requires) the GPU field equals the
 //! CPU field bit for bit; `tests/gpu_twin.rs` observes exactly that on lavapipe, on tiles at LODs
