@@ -7,6 +7,7 @@
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
+use std::borrow::Cow;
 
 /// The stable error codes.
 pub mod code {
@@ -36,6 +37,28 @@ pub mod code {
     pub const SYNTHESIS_TIMEOUT: &str = "synthesis_timeout";
     /// A bug or an unexpected failure on the server.
     pub const INTERNAL: &str = "internal";
+    /// No world has this id (or the id is malformed).
+    pub const WORLD_NOT_FOUND: &str = "world_not_found";
+    /// The world has no such version.
+    pub const VERSION_NOT_FOUND: &str = "version_not_found";
+    /// `v` or `If-Match` is not a version number.
+    pub const BAD_VERSION: &str = "bad_version";
+    /// `If-Match` names a version that is not the latest.
+    pub const VERSION_CONFLICT: &str = "version_conflict";
+    /// The request needs a bearer token and has none, or one the server does not know.
+    pub const UNAUTHENTICATED: &str = "unauthenticated";
+    /// The token does not grant this operation.
+    pub const FORBIDDEN: &str = "forbidden";
+    /// The body is not the JSON the route expects; `field` is a JSON pointer into it.
+    pub const BAD_BODY: &str = "bad_body";
+    /// The body's `Content-Type` is not the one the route accepts.
+    pub const UNSUPPORTED_MEDIA_TYPE: &str = "unsupported_media_type";
+    /// A JSON Patch operation cannot be applied; `field` is `/<operation index>`.
+    pub const PATCH_FAILED: &str = "patch_failed";
+    /// The scene (given, or made by an edit) is invalid; `field` is a JSON pointer into it.
+    pub const INVALID_SCENE: &str = "invalid_scene";
+    /// The scene would be larger than the limit.
+    pub const SCENE_TOO_LARGE: &str = "scene_too_large";
 }
 
 /// An error answered to the client.
@@ -48,8 +71,8 @@ pub struct AppError {
     pub code: &'static str,
     /// Human-readable explanation.
     pub message: String,
-    /// The offending request parameter, if one is to blame.
-    pub field: Option<&'static str>,
+    /// The offending request parameter or JSON pointer, if one is to blame.
+    pub field: Option<Cow<'static, str>>,
 }
 
 #[derive(Serialize)]
@@ -68,15 +91,21 @@ impl AppError {
     /// A 400 Bad Request blaming `field`.
     pub fn bad_request(
         code: &'static str,
-        field: &'static str,
+        field: impl Into<Cow<'static, str>>,
         message: impl Into<String>,
     ) -> Self {
         Self {
             status: StatusCode::BAD_REQUEST,
             code,
             message: message.into(),
-            field: Some(field),
+            field: Some(field.into()),
         }
+    }
+
+    /// The same error blaming `field`.
+    pub fn with_field(mut self, field: impl Into<Cow<'static, str>>) -> Self {
+        self.field = Some(field.into());
+        self
     }
 
     /// 404 `not_found`.
@@ -124,7 +153,7 @@ impl IntoResponse for AppError {
             error: Inner {
                 code: self.code,
                 message: &self.message,
-                field: self.field,
+                field: self.field.as_deref(),
             },
         };
         let bytes = serde_json::to_vec(&body).unwrap_or_default();
@@ -135,6 +164,12 @@ impl IntoResponse for AppError {
             HeaderValue::from_static("application/json"),
         );
         h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+        if self.status == StatusCode::UNAUTHORIZED {
+            h.insert(
+                header::WWW_AUTHENTICATE,
+                HeaderValue::from_static("Bearer realm=\"strata\""),
+            );
+        }
         if self.status == StatusCode::SERVICE_UNAVAILABLE {
             h.insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
         }

@@ -13,16 +13,21 @@
 //! | `GET /v1/info` | version, backend, limits, formats, world |
 //! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w]` | height tile |
 //! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
+//! | `/v1/worlds…` | worlds, scenes, edits, tokens and their products (see [`worlds`]) |
+//! | `GET /metrics` | Prometheus text format (see [`metrics`]) |
 //! | `GET /*` | the viewer directory (`--web`) |
 //!
 //! Product responses are pure functions of the URL: they carry a content-hash `ETag`, answer
 //! `If-None-Match` with 304 and are `Cache-Control: public, max-age=31536000, immutable`. Errors
 //! have one JSON shape ([`AppError`]). Limits: [`Limits`].
 
+pub mod access;
 pub mod error;
+pub mod metrics;
 pub mod params;
 mod plans;
 pub mod routes;
+pub mod worlds;
 
 pub use error::AppError;
 
@@ -40,8 +45,8 @@ pub const MAX_CONCURRENT_SYNTHESES: usize = 16;
 /// A request whose synthesis has not finished (queueing included) within this time gets 503
 /// `synthesis_timeout`; the synthesis itself finishes in the background, holding its slot.
 pub const SYNTHESIS_TIMEOUT: Duration = Duration::from_secs(30);
-/// Largest request body accepted; no route reads a body, so this only guards the future.
-pub const MAX_BODY_BYTES: usize = 64 * 1024;
+/// Largest request body accepted (a world's scene is at most [`crate::store::MAX_SCENE_BYTES`]).
+pub const MAX_BODY_BYTES: usize = 2 << 20;
 /// World plans kept, one per seed, least recently used evicted first.
 pub const PLAN_CACHE_SEEDS: usize = 32;
 
@@ -73,6 +78,10 @@ pub struct AppState {
     pub compute: Compute,
     /// Directory served at `/`, if any.
     pub web: Option<PathBuf>,
+    /// Worlds: the scene store, access, the edit broadcast.
+    pub worlds: Arc<worlds::Worlds>,
+    /// Counters of `GET /metrics`.
+    pub metrics: Arc<metrics::Metrics>,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -84,11 +93,17 @@ impl AppState {
         Self::with_limits(compute, Limits::default())
     }
 
-    /// State with the given limits and no viewer directory.
+    /// State with the given limits and no viewer directory. Worlds live in an in-memory store
+    /// (nothing survives the process; see [`AppState::with_worlds`]) and anyone may create them.
     pub fn with_limits(compute: Compute, limits: Limits) -> Self {
+        let store = crate::store::SqliteStore::open_in_memory()
+            .map(|s| Arc::new(s) as Arc<dyn crate::store::SceneStore>)
+            .unwrap_or_else(|e| panic!("cannot open an in-memory SQLite database: {e}"));
         Self {
             compute,
             web: None,
+            worlds: Arc::new(worlds::Worlds::new(store, None)),
+            metrics: Arc::default(),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
@@ -99,6 +114,22 @@ impl AppState {
     pub fn with_web(mut self, dir: impl Into<PathBuf>) -> Self {
         self.web = Some(dir.into());
         self
+    }
+
+    /// Keeps worlds in `store`; `admin_token` is the server admin token (world creation is open
+    /// to anyone without one).
+    pub fn with_worlds(
+        mut self,
+        store: Arc<dyn crate::store::SceneStore>,
+        admin_token: Option<&str>,
+    ) -> Self {
+        self.worlds = Arc::new(worlds::Worlds::new(store, admin_token));
+        self
+    }
+
+    /// A receiver of every accepted edit, after its commit.
+    pub fn subscribe_edits(&self) -> tokio::sync::broadcast::Receiver<worlds::EditEvent> {
+        self.worlds.subscribe()
     }
 
     /// The limits in force.
@@ -167,11 +198,33 @@ async fn open_compute(choice: crate::cli::BackendChoice) -> anyhow::Result<Compu
 
 /// Runs the server until Ctrl-C or SIGTERM.
 pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
-    std::fs::create_dir_all(&args.data)
-        .map_err(|e| anyhow::anyhow!("cannot create the data directory {}: {e}", args.data.display()))?;
+    std::fs::create_dir_all(&args.data).map_err(|e| {
+        anyhow::anyhow!(
+            "cannot create the data directory {}: {e}",
+            args.data.display()
+        )
+    })?;
     let compute = open_compute(args.backend).await?;
     tracing::info!(backend = ?compute.info(), "compute backend");
-    let mut state = AppState::new(compute);
+    let store = crate::store::SqliteStore::open_in_dir(&args.data).map_err(|e| {
+        anyhow::anyhow!(
+            "cannot open the scene store in {}: {e}",
+            args.data.display()
+        )
+    })?;
+    tracing::info!(path = %args.data.join("strata.db").display(), "scene store");
+    let admin = args.admin_token.clone().or_else(|| {
+        std::env::var("STRATA_ADMIN_TOKEN")
+            .ok()
+            .and_then(|t| t.parse().ok())
+    });
+    if admin.is_none() {
+        tracing::warn!(
+            "no admin token (--admin-token or STRATA_ADMIN_TOKEN): anyone may create worlds"
+        );
+    }
+    let mut state = AppState::new(compute)
+        .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose));
     if args.web.is_dir() {
         state = state.with_web(args.web.clone());
     } else {

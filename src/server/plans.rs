@@ -11,6 +11,8 @@ pub(crate) struct PlanCache {
     /// `(seed, plan, last use)`.
     entries: Mutex<Vec<(u64, Arc<WorldPlan>, u64)>>,
     clock: std::sync::atomic::AtomicU64,
+    hits: std::sync::atomic::AtomicU64,
+    misses: std::sync::atomic::AtomicU64,
 }
 
 impl PlanCache {
@@ -19,7 +21,15 @@ impl PlanCache {
             capacity: capacity.max(1),
             entries: Mutex::new(Vec::new()),
             clock: Default::default(),
+            hits: Default::default(),
+            misses: Default::default(),
         }
+    }
+
+    /// `(hits, misses)` so far.
+    pub(crate) fn stats(&self) -> (u64, u64) {
+        use std::sync::atomic::Ordering::Relaxed;
+        (self.hits.load(Relaxed), self.misses.load(Relaxed))
     }
 
     fn tick(&self) -> u64 {
@@ -59,9 +69,12 @@ impl PlanCache {
 
     /// The plan of `seed`'s default world.
     pub(crate) async fn get_or_build(&self, seed: u64) -> Result<Arc<WorldPlan>, AppError> {
+        use std::sync::atomic::Ordering::Relaxed;
         if let Some(p) = self.lookup(seed) {
+            self.hits.fetch_add(1, Relaxed);
             return Ok(p);
         }
+        self.misses.fetch_add(1, Relaxed);
         let built =
             tokio::task::spawn_blocking(move || WorldPlan::new(seed, WorldParams::default()))
                 .await

@@ -38,6 +38,8 @@ pub fn router(state: AppState) -> Router {
         .route("/v1/info", get(info))
         .route("/v1/seeds/{seed}/tiles/{lod}/{x}/{z_ext}", get(tile))
         .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
+        .route("/metrics", get(super::metrics::render))
+        .merge(super::worlds::routes())
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {
         Some(dir) => {
@@ -53,8 +55,13 @@ pub fn router(state: AppState) -> Router {
                     .and_then(|v| v.to_str().ok())
                     .is_some_and(|v| v.starts_with("application/json"))
         };
+    let metrics = state.metrics.clone();
     routes
         .with_state(state)
+        .layer(middleware::from_fn_with_state(
+            metrics,
+            super::metrics::track,
+        ))
         .layer(middleware::from_fn(limit_body))
         .layer(DefaultBodyLimit::max(MAX_BODY_BYTES))
         .layer(
@@ -199,7 +206,7 @@ async fn method_not_allowed() -> AppError {
     AppError::new(
         StatusCode::METHOD_NOT_ALLOWED,
         code::METHOD_NOT_ALLOWED,
-        "only GET and HEAD are supported here",
+        "this method is not supported here; the Allow header lists those that are",
     )
 }
 

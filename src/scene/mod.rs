@@ -1,0 +1,305 @@
+//! The scene document: everything a world is besides its seed (`api/scene.schema.json`).
+//!
+//! A scene is a JSON object with the world settings (`world`, a [`WorldParams`]) and arrays of
+//! elements (`regions`, `volumes`, `strata`, `materials`, `decals`). Every element has a string
+//! `id`, unique within its array, and a world-space bounding box `bbox` in metres; its other
+//! fields belong to the issues that give the element kind its meaning and are kept as they are.
+//!
+//! Pure code: no tokio, no axum, no I/O. The store keeps scenes as JSON values (edits are JSON
+//! Patches applied to them); [`Scene::from_value`] is the one gate every stored version passes,
+//! and [`dirty_region`] says what an edit changed, for incremental recompute and streaming
+//! invalidation.
+
+mod dirty;
+
+pub use dirty::{dirty_region, Dirty, Rect};
+
+use crate::terrain::world::ParamError;
+use crate::terrain::WorldParams;
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+
+/// The element arrays of a scene, in document order.
+pub const ELEMENT_KINDS: [&str; 5] = ["regions", "volumes", "strata", "materials", "decals"];
+/// Longest element id, bytes.
+pub const MAX_ID_LEN: usize = 128;
+/// Largest coordinate magnitude of a bounding box, metres.
+pub const MAX_COORD_M: f64 = 1.0e9;
+
+/// An axis-aligned world-space rectangle on the ground plane, metres: `x` east, `z` south.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BBox {
+    /// `[x, z]` of the west-north corner.
+    pub min: [f64; 2],
+    /// `[x, z]` of the east-south corner.
+    pub max: [f64; 2],
+}
+
+impl BBox {
+    /// As a [`Rect`].
+    pub fn rect(&self) -> Rect {
+        Rect {
+            min: self.min,
+            max: self.max,
+        }
+    }
+}
+
+/// One scene element. Only `id` and `bbox` are interpreted here.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Element {
+    /// Unique within its array; `[A-Za-z0-9._:-]`, 1 to [`MAX_ID_LEN`] bytes.
+    pub id: String,
+    /// Where the element has an effect.
+    pub bbox: BBox,
+    /// Every other field, kept verbatim.
+    #[serde(flatten)]
+    pub rest: serde_json::Map<String, Value>,
+}
+
+/// A scene document.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// World settings; [`WorldParams::default()`] when absent.
+    #[serde(default)]
+    pub world: WorldParams,
+    /// Authored (gradient-domain) regions.
+    #[serde(default)]
+    pub regions: Vec<Element>,
+    /// Volume regions (feature curves, meshes).
+    #[serde(default)]
+    pub volumes: Vec<Element>,
+    /// Subsurface layers, veins and caves.
+    #[serde(default)]
+    pub strata: Vec<Element>,
+    /// Materials.
+    #[serde(default)]
+    pub materials: Vec<Element>,
+    /// Decals.
+    #[serde(default)]
+    pub decals: Vec<Element>,
+}
+
+/// Why a scene document is refused: the JSON pointer (RFC 6901) of the offending value and
+/// what is wrong with it.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{pointer}: {message}")]
+pub struct SceneError {
+    /// E.g. `/world/biomes/2/generator/hurst`; `""` is the whole document.
+    pub pointer: String,
+    /// Human-readable reason.
+    pub message: String,
+}
+
+impl SceneError {
+    fn new(pointer: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            pointer: pointer.into(),
+            message: message.into(),
+        }
+    }
+}
+
+/// Escapes one reference token of a JSON pointer (`~` → `~0`, `/` → `~1`).
+pub fn escape_token(token: &str) -> String {
+    token.replace('~', "~0").replace('/', "~1")
+}
+
+/// Converts a [`ParamError`] field (`biomes[2].generator.hurst`) into a JSON pointer below
+/// `prefix` (`/world/biomes/2/generator/hurst`).
+pub fn param_pointer(prefix: &str, field: &str) -> String {
+    let mut out = String::from(prefix);
+    for part in field.split('.').filter(|p| !p.is_empty()) {
+        let mut rest = part;
+        // `name[1][2]` → `name`, `1`, `2`.
+        let name_end = rest.find('[').unwrap_or(rest.len());
+        out.push('/');
+        out.push_str(&escape_token(&rest[..name_end]));
+        rest = &rest[name_end..];
+        while let Some(inner) = rest.strip_prefix('[') {
+            let close = inner.find(']').unwrap_or(inner.len());
+            out.push('/');
+            out.push_str(&escape_token(&inner[..close]));
+            rest = inner.get(close + 1..).unwrap_or("");
+        }
+    }
+    out
+}
+
+fn path_pointer(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut out = String::new();
+    for seg in path.iter() {
+        match seg {
+            Segment::Seq { index } => {
+                out.push('/');
+                out.push_str(&index.to_string());
+            }
+            Segment::Map { key } => {
+                out.push('/');
+                out.push_str(&escape_token(key));
+            }
+            Segment::Enum { variant } => {
+                out.push('/');
+                out.push_str(&escape_token(variant));
+            }
+            Segment::Unknown => {}
+        }
+    }
+    out
+}
+
+fn valid_id(id: &str) -> bool {
+    !id.is_empty()
+        && id.len() <= MAX_ID_LEN
+        && id
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || matches!(b, b'.' | b'_' | b':' | b'-'))
+}
+
+impl Scene {
+    /// Parses and validates a scene document; the error names the offending value.
+    pub fn from_value(value: &Value) -> Result<Self, SceneError> {
+        if !value.is_object() {
+            return Err(SceneError::new("", "a scene must be a JSON object"));
+        }
+        let scene: Scene = serde_path_to_error::deserialize(value)
+            .map_err(|e| SceneError::new(path_pointer(e.path()), e.inner().to_string()))?;
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// The document form of the scene (every field present).
+    pub fn to_value(&self) -> Value {
+        serde_json::to_value(self).unwrap_or(Value::Null)
+    }
+
+    /// The element arrays with their names, in [`ELEMENT_KINDS`] order.
+    pub fn kinds(&self) -> [(&'static str, &[Element]); 5] {
+        [
+            ("regions", &self.regions),
+            ("volumes", &self.volumes),
+            ("strata", &self.strata),
+            ("materials", &self.materials),
+            ("decals", &self.decals),
+        ]
+    }
+
+    /// Checks the world settings and every element.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        self.world.validate().map_err(|e: ParamError| {
+            SceneError::new(param_pointer("/world", &e.field), e.message)
+        })?;
+        for (kind, elements) in self.kinds() {
+            let mut seen = std::collections::HashSet::new();
+            for (i, e) in elements.iter().enumerate() {
+                let at = |f: &str| format!("/{kind}/{i}{f}");
+                if !valid_id(&e.id) {
+                    return Err(SceneError::new(
+                        at("/id"),
+                        format!("must be 1 to {MAX_ID_LEN} characters of A-Z a-z 0-9 . _ : -"),
+                    ));
+                }
+                if !seen.insert(e.id.as_str()) {
+                    return Err(SceneError::new(
+                        at("/id"),
+                        format!("duplicate id {:?} in {kind}", e.id),
+                    ));
+                }
+                for axis in 0..2 {
+                    for (name, v) in [("min", e.bbox.min[axis]), ("max", e.bbox.max[axis])] {
+                        if !v.is_finite() || v.abs() > MAX_COORD_M {
+                            return Err(SceneError::new(
+                                at(&format!("/bbox/{name}/{axis}")),
+                                format!("must be finite and within ±{MAX_COORD_M} m"),
+                            ));
+                        }
+                    }
+                    if e.bbox.min[axis] > e.bbox.max[axis] {
+                        return Err(SceneError::new(
+                            at(&format!("/bbox/max/{axis}")),
+                            "must not be less than min",
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn default_round_trips() {
+        let v = Scene::default().to_value();
+        assert_eq!(Scene::from_value(&v).expect("valid"), Scene::default());
+        assert_eq!(
+            Scene::from_value(&json!({})).expect("empty is default"),
+            Scene::default()
+        );
+    }
+
+    #[test]
+    fn param_pointers() {
+        assert_eq!(
+            param_pointer("/world", "biomes[2].generator.hurst"),
+            "/world/biomes/2/generator/hurst"
+        );
+        assert_eq!(
+            param_pointer("/world", "biomes[0].scatter[3].density"),
+            "/world/biomes/0/scatter/3/density"
+        );
+        assert_eq!(param_pointer("/world", "cell_m"), "/world/cell_m");
+        assert_eq!(param_pointer("", "a/b~c"), "/a~1b~0c");
+    }
+
+    #[test]
+    fn errors_are_pointers() {
+        let mut v = Scene::default().to_value();
+        v["world"]["biomes"][2]["generator"]["hurst"] = json!(5.0);
+        let e = Scene::from_value(&v).expect_err("hurst");
+        assert_eq!(e.pointer, "/world/biomes/2/generator/hurst");
+
+        let mut v = Scene::default().to_value();
+        v["world"]["biomes"][1]["generator"]["octaves"] = json!("many");
+        let e = Scene::from_value(&v).expect_err("type");
+        assert_eq!(e.pointer, "/world/biomes/1/generator/octaves");
+
+        let v = json!({"regions": [{"id": "a", "bbox": {"min": [0, 0], "max": [1, 1]}},
+                                   {"id": "a", "bbox": {"min": [0, 0], "max": [1, 1]}}]});
+        assert_eq!(
+            Scene::from_value(&v).expect_err("dup").pointer,
+            "/regions/1/id"
+        );
+
+        let v = json!({"decals": [{"id": "d", "bbox": {"min": [0, 5], "max": [1, 1]}}]});
+        assert_eq!(
+            Scene::from_value(&v).expect_err("bbox").pointer,
+            "/decals/0/bbox/max/1"
+        );
+        let v = json!({"decals": [{"id": "", "bbox": {"min": [0, 0], "max": [1, 1]}}]});
+        assert_eq!(
+            Scene::from_value(&v).expect_err("id").pointer,
+            "/decals/0/id"
+        );
+        assert_eq!(
+            Scene::from_value(&json!([])).expect_err("array").pointer,
+            ""
+        );
+    }
+
+    #[test]
+    fn elements_keep_their_other_fields() {
+        let v = json!({"regions": [{"id": "r1", "bbox": {"min": [0.0, 0.5], "max": [10.0, 10.0]},
+                                    "ops": [{"tool": "raise", "h": 3}]}]});
+        let s = Scene::from_value(&v).expect("valid");
+        assert_eq!(s.regions[0].rest["ops"][0]["h"], json!(3));
+        assert_eq!(s.to_value()["regions"], v["regions"]);
+    }
+}

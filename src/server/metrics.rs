@@ -1,0 +1,224 @@
+//! `GET /metrics`: a few counters and histograms in the Prometheus text format (version 0.0.4).
+//!
+//! Hand-rolled (a mutex-guarded map per family) to keep dependencies small:
+//!
+//! | metric | labels |
+//! |---|---|
+//! | `strata_http_requests_total` (counter) | `method`, `route` (the route pattern), `status` |
+//! | `strata_http_request_duration_seconds` (histogram, to the response head) | `route` |
+//! | `strata_edits_total` (counter) | `result`: `applied`, `conflict`, `refused` |
+//! | `strata_plan_cache_hits_total`, `strata_plan_cache_misses_total` (counters) | `cache`: `seeds`, `worlds` |
+//! | `strata_worlds_created_total` (counter) | |
+//! | `strata_edit_subscribers` (gauge) | |
+
+use super::AppState;
+use axum::extract::{MatchedPath, Request, State};
+use axum::http::{header, HeaderValue};
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+/// Upper bounds of the latency histogram buckets, seconds.
+pub const LATENCY_BUCKETS: [f64; 12] = [
+    0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 5.0,
+];
+
+#[derive(Debug, Default, Clone)]
+struct Histogram {
+    buckets: [u64; LATENCY_BUCKETS.len()],
+    count: u64,
+    sum: f64,
+}
+
+/// The counters of one [`AppState`].
+#[derive(Debug, Default)]
+pub struct Metrics {
+    requests: Mutex<BTreeMap<(String, String, u16), u64>>,
+    latency: Mutex<BTreeMap<String, Histogram>>,
+    /// Edits applied.
+    pub edits_applied: AtomicU64,
+    /// Edits refused with 409.
+    pub edits_conflict: AtomicU64,
+    /// Edits refused for any other reason (bad patch, invalid scene, …).
+    pub edits_refused: AtomicU64,
+    /// Worlds created.
+    pub worlds_created: AtomicU64,
+}
+
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+fn escape(v: &str) -> String {
+    v.replace('\\', "\\\\")
+        .replace('"', "\\\"")
+        .replace('\n', "\\n")
+}
+
+impl Metrics {
+    /// Counts one answered request.
+    pub fn observe(&self, method: &str, route: &str, status: u16, seconds: f64) {
+        *lock(&self.requests)
+            .entry((method.to_string(), route.to_string(), status))
+            .or_default() += 1;
+        let mut lat = lock(&self.latency);
+        let h = lat.entry(route.to_string()).or_default();
+        for (b, le) in h.buckets.iter_mut().zip(LATENCY_BUCKETS) {
+            if seconds <= le {
+                *b += 1;
+            }
+        }
+        h.count += 1;
+        h.sum += seconds;
+    }
+
+    /// The text exposition of these metrics plus `extra` lines (already formatted).
+    pub fn render(&self, extra: &str) -> String {
+        let mut out = String::new();
+        out.push_str("# HELP strata_http_requests_total HTTP requests answered.\n");
+        out.push_str("# TYPE strata_http_requests_total counter\n");
+        for ((method, route, status), n) in lock(&self.requests).iter() {
+            let _ = writeln!(
+                out,
+                "strata_http_requests_total{{method=\"{}\",route=\"{}\",status=\"{status}\"}} {n}",
+                escape(method),
+                escape(route)
+            );
+        }
+        out.push_str(
+            "# HELP strata_http_request_duration_seconds Time to the response head, by route.\n",
+        );
+        out.push_str("# TYPE strata_http_request_duration_seconds histogram\n");
+        for (route, h) in lock(&self.latency).iter() {
+            let route = escape(route);
+            for (b, le) in h.buckets.iter().zip(LATENCY_BUCKETS) {
+                let _ = writeln!(
+                    out,
+                    "strata_http_request_duration_seconds_bucket{{route=\"{route}\",le=\"{le}\"}} {b}"
+                );
+            }
+            let _ = writeln!(
+                out,
+                "strata_http_request_duration_seconds_bucket{{route=\"{route}\",le=\"+Inf\"}} {}",
+                h.count
+            );
+            let _ = writeln!(
+                out,
+                "strata_http_request_duration_seconds_sum{{route=\"{route}\"}} {}",
+                h.sum
+            );
+            let _ = writeln!(
+                out,
+                "strata_http_request_duration_seconds_count{{route=\"{route}\"}} {}",
+                h.count
+            );
+        }
+        out.push_str("# HELP strata_edits_total Scene edits by result.\n");
+        out.push_str("# TYPE strata_edits_total counter\n");
+        for (result, c) in [
+            ("applied", &self.edits_applied),
+            ("conflict", &self.edits_conflict),
+            ("refused", &self.edits_refused),
+        ] {
+            let _ = writeln!(
+                out,
+                "strata_edits_total{{result=\"{result}\"}} {}",
+                c.load(Ordering::Relaxed)
+            );
+        }
+        out.push_str("# HELP strata_worlds_created_total Worlds created.\n");
+        out.push_str("# TYPE strata_worlds_created_total counter\n");
+        let _ = writeln!(
+            out,
+            "strata_worlds_created_total {}",
+            self.worlds_created.load(Ordering::Relaxed)
+        );
+        out.push_str(extra);
+        out
+    }
+}
+
+/// Middleware counting every request under its route pattern (`unmatched` for the fallback).
+pub async fn track(State(m): State<Arc<Metrics>>, req: Request, next: Next) -> Response {
+    let start = Instant::now();
+    let method = req.method().as_str().to_string();
+    let route = req
+        .extensions()
+        .get::<MatchedPath>()
+        .map(|p| p.as_str().to_string())
+        .unwrap_or_else(|| "unmatched".to_string());
+    let res = next.run(req).await;
+    m.observe(
+        &method,
+        &route,
+        res.status().as_u16(),
+        start.elapsed().as_secs_f64(),
+    );
+    res
+}
+
+/// `GET /metrics`.
+pub async fn render(State(st): State<AppState>) -> Response {
+    let (seed_hits, seed_misses) = st.plans.stats();
+    let (world_hits, world_misses) = st.worlds.plan_stats();
+    let mut extra = String::new();
+    extra.push_str("# HELP strata_plan_cache_hits_total World plans found in the cache.\n");
+    extra.push_str("# TYPE strata_plan_cache_hits_total counter\n");
+    let _ = writeln!(
+        extra,
+        "strata_plan_cache_hits_total{{cache=\"seeds\"}} {seed_hits}"
+    );
+    let _ = writeln!(
+        extra,
+        "strata_plan_cache_hits_total{{cache=\"worlds\"}} {world_hits}"
+    );
+    extra.push_str("# HELP strata_plan_cache_misses_total World plans built.\n");
+    extra.push_str("# TYPE strata_plan_cache_misses_total counter\n");
+    let _ = writeln!(
+        extra,
+        "strata_plan_cache_misses_total{{cache=\"seeds\"}} {seed_misses}"
+    );
+    let _ = writeln!(
+        extra,
+        "strata_plan_cache_misses_total{{cache=\"worlds\"}} {world_misses}"
+    );
+    extra.push_str("# HELP strata_edit_subscribers Receivers of the in-process edit broadcast.\n");
+    extra.push_str("# TYPE strata_edit_subscribers gauge\n");
+    let _ = writeln!(extra, "strata_edit_subscribers {}", st.worlds.subscribers());
+    let mut res = st.metrics.render(&extra).into_response();
+    let h = res.headers_mut();
+    h.insert(
+        header::CONTENT_TYPE,
+        HeaderValue::from_static("text/plain; version=0.0.4; charset=utf-8"),
+    );
+    h.insert(header::CACHE_CONTROL, HeaderValue::from_static("no-store"));
+    res
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exposition() {
+        let m = Metrics::default();
+        m.observe("GET", "/v1/x/{id}", 200, 0.003);
+        m.observe("GET", "/v1/x/{id}", 200, 2.0);
+        m.edits_applied.fetch_add(2, Ordering::Relaxed);
+        let t = m.render("");
+        assert!(t.contains(
+            "strata_http_requests_total{method=\"GET\",route=\"/v1/x/{id}\",status=\"200\"} 2"
+        ));
+        assert!(t.contains(
+            "strata_http_request_duration_seconds_bucket{route=\"/v1/x/{id}\",le=\"0.005\"} 1"
+        ));
+        assert!(t.contains(
+            "strata_http_request_duration_seconds_bucket{route=\"/v1/x/{id}\",le=\"+Inf\"} 2"
+        ));
+        assert!(t.contains("strata_edits_total{result=\"applied\"} 2"));
+    }
+}

@@ -1,0 +1,907 @@
+//! Worlds: `(seed, scene@version)` created, edited and read over HTTP, and their products.
+//!
+//! | route | who | answer |
+//! |---|---|---|
+//! | `POST /v1/worlds` `{seed, scene?, public?}` | server admin (anyone without one) | 201 `{id, version, seed, public, tokens: {admin}}` |
+//! | `GET /v1/worlds` | anyone (server admin: all, others: public ones) | `{worlds: [...]}` |
+//! | `GET /v1/worlds/{id}` | read | `{id, seed, version, public, scene}`, `ETag: "<version>"` |
+//! | `GET /v1/worlds/{id}/versions/{v}` | read | `{id, version, scene}` (immutable) |
+//! | `GET /v1/worlds/{id}/edits?after=N&limit=M` | read | `{edits: [{version, patch, at}]}` |
+//! | `POST /v1/worlds/{id}/edits` (`application/json-patch+json`, `If-Match: <v>`) | edit | `{version, dirty}` after the commit |
+//! | `POST /v1/worlds/{id}/tokens` `{role}` | admin | 201 `{token, role}` |
+//! | `POST /v1/worlds/{id}/access` `{public}` | admin | `{id, public}` |
+//! | `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=…]` | read | height tile |
+//! | `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]` | read | scatter points |
+//!
+//! A product URL with `v` is immutable (`Cache-Control: public, max-age=31536000, immutable`,
+//! `private` for private worlds); without `v` it is the latest version, cached for
+//! [`LATEST_MAX_AGE_S`] seconds and revalidated by its content-hash `ETag`. Every product
+//! answer names its version in `X-Strata-Version`. A world created from a bare seed has the
+//! default scene, so its products equal those of `/v1/seeds/{seed}/…`.
+//!
+//! Accepted edits are announced on an in-process broadcast ([`EditEvent`], see
+//! [`AppState::subscribe_edits`]) after they are committed.
+
+use super::access::{caller, Caller};
+use super::error::{code, AppError};
+use super::params::{
+    check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
+};
+use super::routes::{encode_tile, Product, IMMUTABLE};
+use super::AppState;
+use crate::encode::{self, Format};
+use crate::scene::{Dirty, Scene};
+use crate::store::{
+    self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
+    StoreError, TokenHash, WorldMeta,
+};
+use crate::terrain::{TileKey, WorldPlan};
+use axum::body::Bytes;
+use axum::extract::{Path, RawQuery, State};
+use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+use tokio::sync::broadcast;
+
+/// Seconds a product URL without `v` (the latest version) may be cached.
+pub const LATEST_MAX_AGE_S: u32 = 5;
+/// Edit events buffered per subscriber before the slowest one lags.
+pub const EDIT_CHANNEL_CAPACITY: usize = 1024;
+/// World plans kept, one per `(world, version)`; versions with equal world settings share one.
+pub const WORLD_PLAN_CACHE: usize = 256;
+/// Header naming the version a product or scene answer is of.
+pub const VERSION_HEADER: &str = "x-strata-version";
+/// The media type of edits.
+pub const JSON_PATCH: &str = "application/json-patch+json";
+
+/// An accepted edit, as broadcast to the streaming side.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EditEvent {
+    /// World id.
+    pub world: String,
+    /// The version the edit made.
+    pub version: u64,
+    /// What it changed.
+    pub dirty: Dirty,
+}
+
+/// The world-related state of an [`AppState`].
+#[derive(Debug)]
+pub struct Worlds {
+    /// The scene store.
+    pub store: Arc<dyn SceneStore>,
+    admin: Option<TokenHash>,
+    edits: broadcast::Sender<EditEvent>,
+    plans: VersionPlans,
+}
+
+impl Worlds {
+    /// Worlds kept in `store`; `admin` is the server admin token, if any.
+    pub fn new(store: Arc<dyn SceneStore>, admin: Option<&str>) -> Self {
+        let (edits, _) = broadcast::channel(EDIT_CHANNEL_CAPACITY);
+        Self {
+            store,
+            admin: admin.map(hash_token),
+            edits,
+            plans: VersionPlans::new(WORLD_PLAN_CACHE),
+        }
+    }
+
+    /// A new receiver of [`EditEvent`]s.
+    pub fn subscribe(&self) -> broadcast::Receiver<EditEvent> {
+        self.edits.subscribe()
+    }
+
+    /// Current receivers of the edit broadcast.
+    pub fn subscribers(&self) -> usize {
+        self.edits.receiver_count()
+    }
+
+    /// `(hits, misses)` of the world plan cache.
+    pub fn plan_stats(&self) -> (u64, u64) {
+        (
+            self.plans.hits.load(Ordering::Relaxed),
+            self.plans.misses.load(Ordering::Relaxed),
+        )
+    }
+
+    /// Whether a server admin token is configured.
+    pub fn admin_configured(&self) -> bool {
+        self.admin.is_some()
+    }
+
+    /// The plan of world `meta` at `version` (which must exist).
+    pub async fn plan(&self, meta: &WorldMeta, version: u64) -> Result<Arc<WorldPlan>, AppError> {
+        self.plans.get(&*self.store, meta, version).await
+    }
+}
+
+struct PlanEntry {
+    world: String,
+    version: u64,
+    seed: u64,
+    params_hash: [u8; 32],
+    plan: Arc<WorldPlan>,
+    used: u64,
+}
+
+/// Plans by `(world, version)`, least recently used evicted first; entries with the same seed
+/// and world settings share one plan.
+struct VersionPlans {
+    capacity: usize,
+    entries: Mutex<Vec<PlanEntry>>,
+    clock: AtomicU64,
+    hits: AtomicU64,
+    misses: AtomicU64,
+}
+
+impl std::fmt::Debug for VersionPlans {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("VersionPlans")
+            .field("capacity", &self.capacity)
+            .finish_non_exhaustive()
+    }
+}
+
+impl VersionPlans {
+    fn new(capacity: usize) -> Self {
+        Self {
+            capacity: capacity.max(1),
+            entries: Mutex::new(Vec::new()),
+            clock: AtomicU64::new(0),
+            hits: AtomicU64::new(0),
+            misses: AtomicU64::new(0),
+        }
+    }
+
+    fn entries(&self) -> std::sync::MutexGuard<'_, Vec<PlanEntry>> {
+        self.entries.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    async fn get(
+        &self,
+        store: &dyn SceneStore,
+        meta: &WorldMeta,
+        version: u64,
+    ) -> Result<Arc<WorldPlan>, AppError> {
+        let now = self.clock.fetch_add(1, Ordering::Relaxed);
+        if let Some(e) = self
+            .entries()
+            .iter_mut()
+            .find(|e| e.world == meta.id && e.version == version)
+        {
+            e.used = now;
+            self.hits.fetch_add(1, Ordering::Relaxed);
+            return Ok(e.plan.clone());
+        }
+        self.misses.fetch_add(1, Ordering::Relaxed);
+        let doc = store
+            .scene_at(&meta.id, version)
+            .await
+            .map_err(store_error)?;
+        let scene = Scene::from_value(&doc).map_err(|e| {
+            tracing::error!(world = %meta.id, version, "stored scene is invalid: {e}");
+            AppError::internal("the stored scene is invalid")
+        })?;
+        let params_hash =
+            *blake3::hash(&serde_json::to_vec(&scene.world).unwrap_or_default()).as_bytes();
+        let shared = self
+            .entries()
+            .iter()
+            .find(|e| e.seed == meta.seed && e.params_hash == params_hash)
+            .map(|e| e.plan.clone());
+        let plan = match shared {
+            Some(p) => p,
+            None => {
+                let seed = meta.seed;
+                let built = tokio::task::spawn_blocking(move || WorldPlan::new(seed, scene.world))
+                    .await
+                    .map_err(|e| {
+                        AppError::internal(format!("building the world plan failed: {e}"))
+                    })?
+                    .map_err(|e| AppError::internal(format!("invalid world settings: {e}")))?;
+                Arc::new(built)
+            }
+        };
+        let mut entries = self.entries();
+        if let Some(e) = entries
+            .iter_mut()
+            .find(|e| e.world == meta.id && e.version == version)
+        {
+            e.used = now;
+            return Ok(e.plan.clone());
+        }
+        if entries.len() >= self.capacity {
+            if let Some(oldest) = entries
+                .iter()
+                .enumerate()
+                .min_by_key(|(_, e)| e.used)
+                .map(|(i, _)| i)
+            {
+                entries.swap_remove(oldest);
+            }
+        }
+        entries.push(PlanEntry {
+            world: meta.id.clone(),
+            version,
+            seed: meta.seed,
+            params_hash,
+            plan: plan.clone(),
+            used: now,
+        });
+        Ok(plan)
+    }
+}
+
+/// The routes of this module (merged into the service's router).
+pub(super) fn routes() -> Router<AppState> {
+    Router::new()
+        .route("/v1/worlds", post(create).get(list))
+        .route("/v1/worlds/{id}", get(show))
+        .route("/v1/worlds/{id}/versions/{v}", get(version))
+        .route("/v1/worlds/{id}/edits", post(edit).get(edit_log))
+        .route("/v1/worlds/{id}/tokens", post(mint_token))
+        .route("/v1/worlds/{id}/access", post(set_access))
+        .route("/v1/worlds/{id}/tiles/{lod}/{x}/{z_ext}", get(tile))
+        .route("/v1/worlds/{id}/scatter/{lod}/{x}/{z_ext}", get(scatter))
+}
+
+/// Maps a store failure to its HTTP answer.
+fn store_error(e: StoreError) -> AppError {
+    match e {
+        StoreError::WorldNotFound(id) => world_not_found(&id),
+        StoreError::VersionNotFound { version, latest } => AppError::new(
+            StatusCode::NOT_FOUND,
+            code::VERSION_NOT_FOUND,
+            format!("version {version} does not exist; the latest is {latest}"),
+        )
+        .with_field("v"),
+        StoreError::Conflict { expected, latest } => AppError::new(
+            StatusCode::CONFLICT,
+            code::VERSION_CONFLICT,
+            format!("If-Match names version {expected} but the latest is {latest}"),
+        )
+        .with_field("If-Match"),
+        StoreError::Patch { operation, message } => AppError::new(
+            StatusCode::UNPROCESSABLE_ENTITY,
+            code::PATCH_FAILED,
+            format!("patch operation {operation} cannot be applied: {message}"),
+        )
+        .with_field(format!("/{operation}")),
+        StoreError::Invalid(e) => AppError::bad_request(
+            code::INVALID_SCENE,
+            e.pointer.clone(),
+            format!("the scene would be invalid: {}", e.message),
+        ),
+        StoreError::TooLarge { bytes, limit } => AppError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            code::SCENE_TOO_LARGE,
+            format!("the scene would be {bytes} bytes; the limit is {limit}"),
+        ),
+        StoreError::Duplicate(_) | StoreError::Backend(_) => {
+            tracing::error!("scene store: {e}");
+            AppError::internal("the scene store failed")
+        }
+    }
+}
+
+fn world_not_found(id: &str) -> AppError {
+    AppError::new(
+        StatusCode::NOT_FOUND,
+        code::WORLD_NOT_FOUND,
+        format!("no world {:?}", super::error::truncate(id, 64)),
+    )
+    .with_field("id")
+}
+
+/// The world `id` and the caller, after checking that the caller has `need` on it.
+async fn authorize(
+    st: &AppState,
+    headers: &HeaderMap,
+    id: &str,
+    need: Role,
+) -> Result<(WorldMeta, Caller), AppError> {
+    if !valid_world_id(id) {
+        return Err(world_not_found(id));
+    }
+    let w = &st.worlds;
+    let who = caller(headers, w.admin.as_ref(), &*w.store).await?;
+    let meta = w.store.meta(id).await.map_err(store_error)?;
+    who.require(&meta, need)?;
+    Ok((meta, who))
+}
+
+/// Refuses a body whose `Content-Type` is present and not `want` (parameters ignored); with
+/// `required`, a missing `Content-Type` is refused too.
+fn check_content_type(headers: &HeaderMap, want: &str, required: bool) -> Result<(), AppError> {
+    let got = headers
+        .get(header::CONTENT_TYPE)
+        .map(|v| v.to_str().unwrap_or("?"));
+    let ok = match got {
+        None => !required,
+        Some(v) => v
+            .split(';')
+            .next()
+            .is_some_and(|t| t.trim().eq_ignore_ascii_case(want)),
+    };
+    if ok {
+        return Ok(());
+    }
+    Err(AppError::new(
+        StatusCode::UNSUPPORTED_MEDIA_TYPE,
+        code::UNSUPPORTED_MEDIA_TYPE,
+        format!(
+            "the body must be {want}, got {}",
+            got.map(|g| super::error::truncate(g, 60))
+                .unwrap_or_else(|| "no Content-Type".into())
+        ),
+    )
+    .with_field("Content-Type"))
+}
+
+fn pointer_of(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    path.iter()
+        .filter_map(|s| match s {
+            Segment::Seq { index } => Some(format!("/{index}")),
+            Segment::Map { key } => Some(format!("/{}", crate::scene::escape_token(key))),
+            Segment::Enum { variant } => Some(format!("/{}", crate::scene::escape_token(variant))),
+            Segment::Unknown => None,
+        })
+        .collect()
+}
+
+/// Parses a JSON body; a syntax error blames `body`, a shape error the JSON pointer of the
+/// offending value.
+fn parse_body<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, AppError> {
+    let value: Value = serde_json::from_slice(body).map_err(|e| {
+        AppError::bad_request(code::BAD_BODY, "body", format!("the body is not JSON: {e}"))
+    })?;
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let pointer = pointer_of(e.path());
+        AppError::bad_request(
+            code::BAD_BODY,
+            if pointer.is_empty() {
+                "body".to_string()
+            } else {
+                pointer
+            },
+            format!("{}", e.inner()),
+        )
+    })
+}
+
+fn json_response(status: StatusCode, body: Value, cache: &'static str) -> Response {
+    let mut res = (status, Json(body)).into_response();
+    res.headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static(cache));
+    res
+}
+
+/// A seed as a JSON number or a decimal string (for clients without 64-bit integers).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum SeedIn {
+    Number(u64),
+    Text(String),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CreateBody {
+    seed: SeedIn,
+    #[serde(default)]
+    scene: Option<Value>,
+    #[serde(default)]
+    public: bool,
+}
+
+/// `POST /v1/worlds`.
+async fn create(
+    State(st): State<AppState>,
+    headers: HeaderMap,
+    body: Bytes,
+) -> Result<Response, AppError> {
+    let w = &st.worlds;
+    let who = caller(&headers, w.admin.as_ref(), &*w.store).await?;
+    who.require_creator(w.admin_configured())?;
+    check_content_type(&headers, "application/json", false)?;
+    let req: CreateBody = parse_body(&body)?;
+    let seed = match req.seed {
+        SeedIn::Number(n) => n,
+        SeedIn::Text(s) => super::params::parse_seed(&s).map_err(|e| e.with_field("/seed"))?,
+    };
+    let scene = match &req.scene {
+        None => Scene::default().to_value(),
+        Some(doc) => Scene::from_value(doc)
+            .map_err(|e| {
+                AppError::bad_request(
+                    code::INVALID_SCENE,
+                    format!("/scene{}", e.pointer),
+                    format!("invalid scene: {}", e.message),
+                )
+            })?
+            .to_value(),
+    };
+    let token = new_token().map_err(store_error)?;
+    let id = new_world_id().map_err(store_error)?;
+    let meta = w
+        .store
+        .create_world(NewWorld {
+            id,
+            seed,
+            scene,
+            public: req.public,
+            admin_token: hash_token(&token),
+        })
+        .await
+        .map_err(store_error)?;
+    st.metrics.worlds_created.fetch_add(1, Ordering::Relaxed);
+    tracing::info!(world = %meta.id, seed, public = meta.public, "world created");
+    let mut res = json_response(
+        StatusCode::CREATED,
+        json!({
+            "id": meta.id,
+            "version": meta.version,
+            "seed": meta.seed,
+            "public": meta.public,
+            "tokens": { "admin": token },
+        }),
+        "no-store",
+    );
+    if let Ok(v) = HeaderValue::from_str(&format!("/v1/worlds/{}", meta.id)) {
+        res.headers_mut().insert(header::LOCATION, v);
+    }
+    Ok(res)
+}
+
+fn summary(m: &WorldMeta) -> Value {
+    json!({ "id": m.id, "seed": m.seed, "version": m.version, "public": m.public })
+}
+
+/// `GET /v1/worlds`.
+async fn list(State(st): State<AppState>, headers: HeaderMap) -> Result<Response, AppError> {
+    let w = &st.worlds;
+    let who = caller(&headers, w.admin.as_ref(), &*w.store).await?;
+    let all = w.store.list_worlds().await.map_err(store_error)?;
+    let worlds: Vec<Value> = all
+        .iter()
+        .filter(|m| m.public || who.role_on(&m.id).is_some())
+        .map(summary)
+        .collect();
+    Ok(json_response(
+        StatusCode::OK,
+        json!({ "worlds": worlds }),
+        "private, no-cache",
+    ))
+}
+
+fn version_etag(version: u64) -> String {
+    format!("\"{version}\"")
+}
+
+fn set_version_headers(res: &mut Response, version: u64, etag: bool) {
+    let h = res.headers_mut();
+    h.insert(
+        HeaderName::from_static(VERSION_HEADER),
+        HeaderValue::from(version),
+    );
+    if etag {
+        if let Ok(v) = HeaderValue::from_str(&version_etag(version)) {
+            h.insert(header::ETAG, v);
+        }
+    }
+}
+
+/// `GET /v1/worlds/{id}`.
+async fn show(
+    State(st): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    authorize(&st, &headers, &id, Role::Read).await?;
+    let head = st.worlds.store.head(&id).await.map_err(store_error)?;
+    let m = &head.meta;
+    let cache = if m.public {
+        "no-cache"
+    } else {
+        "private, no-cache"
+    };
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": m.id, "seed": m.seed, "version": m.version, "public": m.public,
+                "scene": head.scene }),
+        cache,
+    );
+    set_version_headers(&mut res, m.version, true);
+    Ok(res)
+}
+
+/// A version number: 1 to 19 ASCII digits, at least 1.
+fn parse_version(s: &str, field: &'static str) -> Result<u64, AppError> {
+    let bad = || {
+        AppError::bad_request(
+            code::BAD_VERSION,
+            field,
+            format!(
+                "{field} must be a version number (a positive integer), got {:?}",
+                super::error::truncate(s, 40)
+            ),
+        )
+    };
+    if s.is_empty() || s.len() > 19 || !s.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(bad());
+    }
+    match s.parse::<u64>() {
+        Ok(v) if v >= 1 => Ok(v),
+        _ => Err(bad()),
+    }
+}
+
+/// `GET /v1/worlds/{id}/versions/{v}`.
+async fn version(
+    State(st): State<AppState>,
+    Path((id, v)): Path<(String, String)>,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
+    let v = parse_version(&v, "v")?;
+    let scene = st
+        .worlds
+        .store
+        .scene_at(&id, v)
+        .await
+        .map_err(store_error)?;
+    let cache = if meta.public {
+        IMMUTABLE
+    } else {
+        "private, max-age=31536000, immutable"
+    };
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": meta.id, "version": v, "scene": scene }),
+        cache,
+    );
+    set_version_headers(&mut res, v, true);
+    Ok(res)
+}
+
+/// The value of a query parameter (first occurrence, no percent-decoding: the parameters read
+/// here are plain integers).
+fn query_param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
+    query?
+        .split('&')
+        .filter_map(|p| p.split_once('=').or(Some((p, ""))))
+        .find(|(k, _)| *k == name)
+        .map(|(_, v)| v)
+}
+
+/// `GET /v1/worlds/{id}/edits?after=N&limit=M`.
+async fn edit_log(
+    State(st): State<AppState>,
+    Path(id): Path<String>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    authorize(&st, &headers, &id, Role::Read).await?;
+    let after = match query_param(query.as_deref(), "after") {
+        None | Some("0") => 0,
+        Some(s) => parse_version(s, "after")?,
+    };
+    let limit = match query_param(query.as_deref(), "limit") {
+        None => store::MAX_LOG_ENTRIES,
+        Some(s) => parse_version(s, "limit")? as usize,
+    };
+    let edits = st
+        .worlds
+        .store
+        .edit_log(&id, after, limit)
+        .await
+        .map_err(store_error)?;
+    Ok(json_response(
+        StatusCode::OK,
+        json!({ "id": id, "edits": edits }),
+        "private, no-cache",
+    ))
+}
+
+/// `If-Match`: absent or `*` is no condition; else one version, plain or quoted (`5`, `"5"`,
+/// `W/"5"`).
+fn parse_if_match(headers: &HeaderMap) -> Result<Option<u64>, AppError> {
+    let Some(v) = headers.get(header::IF_MATCH) else {
+        return Ok(None);
+    };
+    let bad = || {
+        AppError::bad_request(
+            code::BAD_VERSION,
+            "If-Match",
+            "If-Match must be one version number, plain or quoted",
+        )
+    };
+    let s = v.to_str().map_err(|_| bad())?.trim();
+    if s == "*" {
+        return Ok(None);
+    }
+    let s = s.strip_prefix("W/").unwrap_or(s);
+    let s = s
+        .strip_prefix('"')
+        .and_then(|t| t.strip_suffix('"'))
+        .unwrap_or(s);
+    parse_version(s, "If-Match").map(Some).map_err(|_| bad())
+}
+
+/// `POST /v1/worlds/{id}/edits`: answers after the new version is committed.
+async fn edit(
+    State(st): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    body: Bytes,
+) -> Result<Response, AppError> {
+    authorize(&st, &headers, &id, Role::Edit).await?;
+    let refused = |e: AppError| {
+        st.metrics.edits_refused.fetch_add(1, Ordering::Relaxed);
+        e
+    };
+    check_content_type(&headers, JSON_PATCH, true).map_err(refused)?;
+    let expected = parse_if_match(&headers).map_err(refused)?;
+    let patch: json_patch::Patch = parse_body(&body).map_err(refused)?;
+    let applied = match st.worlds.store.apply_edit(&id, patch, expected).await {
+        Ok(a) => a,
+        Err(e) => {
+            let counter = if matches!(e, StoreError::Conflict { .. }) {
+                &st.metrics.edits_conflict
+            } else {
+                &st.metrics.edits_refused
+            };
+            counter.fetch_add(1, Ordering::Relaxed);
+            return Err(store_error(e));
+        }
+    };
+    st.metrics.edits_applied.fetch_add(1, Ordering::Relaxed);
+    tracing::info!(world = %id, version = applied.version, "edit committed");
+    // No receivers is not an error: nobody is streaming this process's worlds.
+    let _ = st.worlds.edits.send(EditEvent {
+        world: id.clone(),
+        version: applied.version,
+        dirty: applied.dirty.clone(),
+    });
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
+        "no-store",
+    );
+    set_version_headers(&mut res, applied.version, true);
+    Ok(res)
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TokenBody {
+    role: Role,
+}
+
+/// `POST /v1/worlds/{id}/tokens`.
+async fn mint_token(
+    State(st): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    body: Bytes,
+) -> Result<Response, AppError> {
+    authorize(&st, &headers, &id, Role::Admin).await?;
+    check_content_type(&headers, "application/json", false)?;
+    let req: TokenBody = parse_body(&body)?;
+    let token = new_token().map_err(store_error)?;
+    st.worlds
+        .store
+        .add_token(&id, hash_token(&token), req.role)
+        .await
+        .map_err(store_error)?;
+    tracing::info!(world = %id, role = req.role.as_str(), "token minted");
+    Ok(json_response(
+        StatusCode::CREATED,
+        json!({ "token": token, "role": req.role }),
+        "no-store",
+    ))
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AccessBody {
+    public: bool,
+}
+
+/// `POST /v1/worlds/{id}/access`.
+async fn set_access(
+    State(st): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    body: Bytes,
+) -> Result<Response, AppError> {
+    authorize(&st, &headers, &id, Role::Admin).await?;
+    check_content_type(&headers, "application/json", false)?;
+    let req: AccessBody = parse_body(&body)?;
+    let meta = st
+        .worlds
+        .store
+        .set_public(&id, req.public)
+        .await
+        .map_err(store_error)?;
+    tracing::info!(world = %id, public = meta.public, "access changed");
+    Ok(json_response(
+        StatusCode::OK,
+        json!({ "id": meta.id, "public": meta.public }),
+        "no-store",
+    ))
+}
+
+/// A parsed world product URL, access checked.
+struct WorldProduct {
+    meta: WorldMeta,
+    version: u64,
+    pinned: bool,
+    key: TileKey,
+    format: Format,
+    plan: Arc<WorldPlan>,
+}
+
+async fn world_product(
+    st: &AppState,
+    headers: &HeaderMap,
+    (id, lod, x, z_ext): (String, String, String, String),
+    query: Option<&str>,
+) -> Result<WorldProduct, AppError> {
+    let (meta, _) = authorize(st, headers, &id, Role::Read).await?;
+    let lod = parse_lod(&lod)?;
+    let x = parse_coord(&x, "x")?;
+    let (z, ext) = split_extension(&z_ext);
+    let z = parse_coord(z, "z")?;
+    let format = parse_format(ext)?;
+    let (version, pinned) = match query_param(query, "v") {
+        None => (meta.version, false),
+        Some(v) => (parse_version(v, "v")?, true),
+    };
+    if version > meta.version {
+        return Err(store_error(StoreError::VersionNotFound {
+            version,
+            latest: meta.version,
+        }));
+    }
+    let key = TileKey { lod, x, z };
+    let plan = st.worlds.plan(&meta, version).await?;
+    check_bounds(&plan, key)?;
+    Ok(WorldProduct {
+        meta,
+        version,
+        pinned,
+        key,
+        format,
+        plan,
+    })
+}
+
+/// Caching headers of a world product answer.
+fn finish_product(p: &WorldProduct, mut res: Response) -> Response {
+    let cache = match (p.pinned, p.meta.public) {
+        (true, true) => IMMUTABLE.to_string(),
+        (true, false) => "private, max-age=31536000, immutable".to_string(),
+        (false, true) => format!("public, max-age={LATEST_MAX_AGE_S}"),
+        (false, false) => format!("private, max-age={LATEST_MAX_AGE_S}"),
+    };
+    if let Ok(v) = HeaderValue::from_str(&cache) {
+        res.headers_mut().insert(header::CACHE_CONTROL, v);
+    }
+    if !p.meta.public {
+        res.headers_mut()
+            .insert(header::VARY, HeaderValue::from_static("Authorization"));
+    }
+    set_version_headers(&mut res, p.version, false);
+    res
+}
+
+async fn blocking<T: Send + 'static>(
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, AppError> {
+    tokio::task::spawn_blocking(f).await.map_err(|e| {
+        tracing::error!("encoding failed: {e}");
+        AppError::internal("encoding failed")
+    })
+}
+
+type Segments =
+    Result<Path<(String, String, String, String)>, axum::extract::rejection::PathRejection>;
+
+fn segments(path: Segments) -> Result<(String, String, String, String), AppError> {
+    path.map(|Path(s)| s).map_err(|e| {
+        AppError::new(
+            StatusCode::BAD_REQUEST,
+            code::BAD_PATH,
+            format!("invalid path: {e}"),
+        )
+    })
+}
+
+/// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=n,e,s,w]`.
+async fn tile(
+    State(st): State<AppState>,
+    path: Segments,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
+    let seams = parse_seams(query.as_deref())?;
+    let (compute, plan, key, format) = (st.compute.clone(), p.plan.clone(), p.key, p.format);
+    let product = st
+        .limited(async move {
+            let tile = compute.tile(plan.clone(), key, seams).await;
+            blocking(move || encode_tile(&plan, &tile, format)).await?
+        })
+        .await?;
+    Ok(finish_product(&p, product.respond(&headers)))
+}
+
+/// `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]`.
+async fn scatter(
+    State(st): State<AppState>,
+    path: Segments,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
+    if p.format != Format::Json {
+        return Err(AppError::bad_request(
+            code::UNKNOWN_FORMAT,
+            "format",
+            "scatter is only available as .json",
+        ));
+    }
+    let (compute, plan, key) = (st.compute.clone(), p.plan.clone(), p.key);
+    let product = st
+        .limited(async move {
+            let tile = compute.tile(plan.clone(), key, [false; 4]).await;
+            let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
+            Ok(Product {
+                body,
+                content_type: Format::Json.content_type(),
+                extra: Vec::new(),
+            })
+        })
+        .await?;
+    Ok(finish_product(&p, product.respond(&headers)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn if_match_forms() {
+        let h = |v: &str| {
+            let mut m = HeaderMap::new();
+            m.insert(header::IF_MATCH, HeaderValue::from_str(v).expect("value"));
+            m
+        };
+        assert_eq!(parse_if_match(&HeaderMap::new()).expect("none"), None);
+        assert_eq!(parse_if_match(&h("*")).expect("any"), None);
+        assert_eq!(parse_if_match(&h("7")).expect("plain"), Some(7));
+        assert_eq!(parse_if_match(&h("\"7\"")).expect("quoted"), Some(7));
+        assert_eq!(parse_if_match(&h("W/\"7\"")).expect("weak"), Some(7));
+        for bad in ["0", "-1", "x", "\"7", "7, 8", "99999999999999999999"] {
+            let e = parse_if_match(&h(bad)).expect_err(bad);
+            assert_eq!(e.field.as_deref(), Some("If-Match"), "{bad}");
+        }
+    }
+
+    #[test]
+    fn query_params() {
+        assert_eq!(query_param(Some("v=3&seams=1,0,0,0"), "v"), Some("3"));
+        assert_eq!(query_param(Some("seams=1,0,0,0&v=4"), "v"), Some("4"));
+        assert_eq!(query_param(Some("vv=3"), "v"), None);
+        assert_eq!(query_param(Some("v"), "v"), Some(""));
+        assert_eq!(query_param(None, "v"), None);
+    }
+}

@@ -1,0 +1,709 @@
+//! The embedded scene store: one SQLite file, `<data>/strata.db`.
+//!
+//! - **Durability.** WAL journal with `synchronous=FULL`: a commit fsyncs the WAL before it
+//!   returns, so an acknowledged edit survives a crash of the process or the machine.
+//! - **One writer.** All writes go through one connection behind a mutex, each in a
+//!   `BEGIN IMMEDIATE` transaction, on tokio's blocking pool; edits to a world are therefore
+//!   serialised and the expected-version check and the write are atomic. Reads use a small pool
+//!   of other connections (WAL lets them run beside the writer); an in-memory store (tests) uses
+//!   the writer for everything.
+//!
+//! Schema (`PRAGMA user_version = 1`); a PostgreSQL store uses the same tables with `BIGINT`,
+//! `BOOLEAN`, `JSONB` and `BYTEA`, `SELECT … FOR UPDATE` on the world row in place of the single
+//! writer, and `NOTIFY` after each edit commit:
+//!
+//! ```sql
+//! worlds    (id TEXT PK, seed INTEGER  -- the u64 seed's bits as i64
+//!            , public INTEGER, version INTEGER  -- latest
+//!            , scene TEXT  -- latest scene
+//!            , created_at INTEGER, updated_at INTEGER)
+//! edits     (world_id, version  -- the version the patch made, >= 2
+//!            , patch TEXT, scene_hash BLOB  -- blake3 of the resulting scene's JSON text
+//!            , created_at; PK (world_id, version))
+//! snapshots (world_id, version, scene TEXT; PK (world_id, version))  -- v1 and every 32nd
+//! tokens    (hash BLOB PK  -- blake3(token)
+//!            , world_id, role TEXT, created_at)
+//! ```
+
+use super::{
+    canonical_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError, TokenGrant,
+    TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES, SNAPSHOT_EVERY,
+};
+use crate::scene::{dirty_region, Scene};
+use async_trait::async_trait;
+use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+/// Connections kept for reads.
+const READERS: usize = 4;
+
+const SCHEMA: &str = "
+CREATE TABLE IF NOT EXISTS worlds (
+    id TEXT PRIMARY KEY,
+    seed INTEGER NOT NULL,
+    public INTEGER NOT NULL,
+    version INTEGER NOT NULL,
+    scene TEXT NOT NULL,
+    created_at INTEGER NOT NULL,
+    updated_at INTEGER NOT NULL
+) STRICT;
+CREATE TABLE IF NOT EXISTS edits (
+    world_id TEXT NOT NULL REFERENCES worlds(id),
+    version INTEGER NOT NULL,
+    patch TEXT NOT NULL,
+    scene_hash BLOB NOT NULL,
+    created_at INTEGER NOT NULL,
+    PRIMARY KEY (world_id, version)
+) STRICT, WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS snapshots (
+    world_id TEXT NOT NULL REFERENCES worlds(id),
+    version INTEGER NOT NULL,
+    scene TEXT NOT NULL,
+    PRIMARY KEY (world_id, version)
+) STRICT, WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS tokens (
+    hash BLOB PRIMARY KEY,
+    world_id TEXT NOT NULL REFERENCES worlds(id),
+    role TEXT NOT NULL CHECK (role IN ('read', 'edit', 'admin')),
+    created_at INTEGER NOT NULL
+) STRICT, WITHOUT ROWID;
+PRAGMA user_version = 1;
+";
+
+/// The SQLite [`SceneStore`]; cheap to clone.
+#[derive(Clone)]
+pub struct SqliteStore {
+    inner: Arc<Inner>,
+}
+
+struct Inner {
+    path: Option<PathBuf>,
+    writer: Mutex<Connection>,
+    readers: Mutex<Vec<Connection>>,
+}
+
+impl std::fmt::Debug for SqliteStore {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SqliteStore")
+            .field("path", &self.inner.path)
+            .finish_non_exhaustive()
+    }
+}
+
+fn backend(e: impl std::fmt::Display) -> StoreError {
+    StoreError::Backend(e.to_string())
+}
+
+fn now() -> i64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_secs() as i64)
+        .unwrap_or(0)
+}
+
+fn scene_hash(text: &str) -> Vec<u8> {
+    blake3::hash(text.as_bytes()).as_bytes().to_vec()
+}
+
+fn configure(conn: &Connection) -> rusqlite::Result<()> {
+    conn.busy_timeout(std::time::Duration::from_secs(10))?;
+    conn.pragma_update(None, "foreign_keys", "ON")?;
+    Ok(())
+}
+
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+impl SqliteStore {
+    /// Opens (creating if needed) the database file at `path`.
+    pub fn open(path: impl AsRef<Path>) -> Result<Self, StoreError> {
+        let path = path.as_ref().to_path_buf();
+        let conn = Connection::open(&path).map_err(backend)?;
+        configure(&conn).map_err(backend)?;
+        let mode: String = conn
+            .query_row("PRAGMA journal_mode = WAL", [], |r| r.get(0))
+            .map_err(backend)?;
+        if !mode.eq_ignore_ascii_case("wal") {
+            return Err(StoreError::Backend(format!(
+                "cannot put {} in WAL mode (got {mode})",
+                path.display()
+            )));
+        }
+        Self::init(conn, Some(path))
+    }
+
+    /// A store in memory, for tests: nothing survives the process.
+    pub fn open_in_memory() -> Result<Self, StoreError> {
+        let conn = Connection::open_in_memory().map_err(backend)?;
+        configure(&conn).map_err(backend)?;
+        Self::init(conn, None)
+    }
+
+    /// `<data>/strata.db`.
+    pub fn open_in_dir(data: impl AsRef<Path>) -> Result<Self, StoreError> {
+        Self::open(data.as_ref().join("strata.db"))
+    }
+
+    fn init(conn: Connection, path: Option<PathBuf>) -> Result<Self, StoreError> {
+        conn.pragma_update(None, "synchronous", "FULL")
+            .map_err(backend)?;
+        let version: i64 = conn
+            .query_row("PRAGMA user_version", [], |r| r.get(0))
+            .map_err(backend)?;
+        if version > 1 {
+            return Err(StoreError::Backend(format!(
+                "the database has schema version {version}; this build knows 1"
+            )));
+        }
+        conn.execute_batch(SCHEMA).map_err(backend)?;
+        Ok(Self {
+            inner: Arc::new(Inner {
+                path,
+                writer: Mutex::new(conn),
+                readers: Mutex::new(Vec::new()),
+            }),
+        })
+    }
+
+    /// The database file, if not in memory.
+    pub fn path(&self) -> Option<&Path> {
+        self.inner.path.as_deref()
+    }
+
+    /// Runs `f` in a write transaction on the blocking pool; commits if it returns `Ok`.
+    async fn write<T, F>(&self, f: F) -> Result<T, StoreError>
+    where
+        T: Send + 'static,
+        F: FnOnce(&rusqlite::Transaction<'_>) -> Result<T, StoreError> + Send + 'static,
+    {
+        let inner = self.inner.clone();
+        tokio::task::spawn_blocking(move || {
+            let mut conn = lock(&inner.writer);
+            let tx = conn
+                .transaction_with_behavior(TransactionBehavior::Immediate)
+                .map_err(backend)?;
+            let out = f(&tx)?;
+            tx.commit().map_err(backend)?;
+            Ok(out)
+        })
+        .await
+        .map_err(backend)?
+    }
+
+    /// Runs `f` with a read connection on the blocking pool.
+    async fn read<T, F>(&self, f: F) -> Result<T, StoreError>
+    where
+        T: Send + 'static,
+        F: FnOnce(&Connection) -> Result<T, StoreError> + Send + 'static,
+    {
+        let inner = self.inner.clone();
+        tokio::task::spawn_blocking(move || {
+            let Some(path) = &inner.path else {
+                return f(&lock(&inner.writer));
+            };
+            let pooled = lock(&inner.readers).pop();
+            let conn = match pooled {
+                Some(c) => c,
+                None => {
+                    let c = Connection::open(path).map_err(backend)?;
+                    configure(&c).map_err(backend)?;
+                    c.pragma_update(None, "query_only", "ON").map_err(backend)?;
+                    c
+                }
+            };
+            // A read-only transaction so multi-statement reads see one snapshot.
+            conn.execute_batch("BEGIN").map_err(backend)?;
+            let out = f(&conn);
+            let end = conn.execute_batch("COMMIT");
+            if end.is_ok() {
+                let mut pool = lock(&inner.readers);
+                if pool.len() < READERS {
+                    pool.push(conn);
+                }
+            }
+            out
+        })
+        .await
+        .map_err(backend)?
+    }
+}
+
+fn meta_row(r: &rusqlite::Row<'_>) -> rusqlite::Result<WorldMeta> {
+    Ok(WorldMeta {
+        id: r.get(0)?,
+        seed: r.get::<_, i64>(1)? as u64,
+        public: r.get::<_, i64>(2)? != 0,
+        version: r.get::<_, i64>(3)? as u64,
+        created_at: r.get(4)?,
+        updated_at: r.get(5)?,
+    })
+}
+
+const META_COLUMNS: &str = "id, seed, public, version, created_at, updated_at";
+
+fn load_meta(conn: &Connection, id: &str) -> Result<WorldMeta, StoreError> {
+    conn.query_row(
+        &format!("SELECT {META_COLUMNS} FROM worlds WHERE id = ?1"),
+        params![id],
+        meta_row,
+    )
+    .optional()
+    .map_err(backend)?
+    .ok_or_else(|| StoreError::WorldNotFound(id.to_string()))
+}
+
+fn parse_json(text: &str, what: &str) -> Result<Value, StoreError> {
+    serde_json::from_str(text).map_err(|e| StoreError::Backend(format!("stored {what}: {e}")))
+}
+
+fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, StoreError> {
+    let meta = load_meta(conn, id)?;
+    if version == 0 || version > meta.version {
+        return Err(StoreError::VersionNotFound {
+            version,
+            latest: meta.version,
+        });
+    }
+    if version == meta.version {
+        let text: String = conn
+            .query_row("SELECT scene FROM worlds WHERE id = ?1", params![id], |r| {
+                r.get(0)
+            })
+            .map_err(backend)?;
+        return parse_json(&text, "scene");
+    }
+    let (base, text): (i64, String) = conn
+        .query_row(
+            "SELECT version, scene FROM snapshots WHERE world_id = ?1 AND version <= ?2
+             ORDER BY version DESC LIMIT 1",
+            params![id, version as i64],
+            |r| Ok((r.get(0)?, r.get(1)?)),
+        )
+        .optional()
+        .map_err(backend)?
+        .ok_or_else(|| StoreError::Backend(format!("world {id} has no snapshot")))?;
+    let mut doc = parse_json(&text, "snapshot")?;
+    let mut stmt = conn
+        .prepare(
+            "SELECT version, patch, scene_hash FROM edits
+             WHERE world_id = ?1 AND version > ?2 AND version <= ?3 ORDER BY version",
+        )
+        .map_err(backend)?;
+    let rows = stmt
+        .query_map(params![id, base, version as i64], |r| {
+            Ok((
+                r.get::<_, i64>(0)?,
+                r.get::<_, String>(1)?,
+                r.get::<_, Vec<u8>>(2)?,
+            ))
+        })
+        .map_err(backend)?;
+    let mut expect = base + 1;
+    let mut last_hash = None;
+    for row in rows {
+        let (v, patch, hash) = row.map_err(backend)?;
+        if v != expect {
+            return Err(StoreError::Backend(format!(
+                "world {id}: edit {expect} is missing from the log"
+            )));
+        }
+        let patch: json_patch::Patch = serde_json::from_str(&patch)
+            .map_err(|e| StoreError::Backend(format!("stored patch {v}: {e}")))?;
+        json_patch::patch(&mut doc, &patch.0)
+            .map_err(|e| StoreError::Backend(format!("replaying edit {v}: {e}")))?;
+        expect += 1;
+        last_hash = Some(hash);
+    }
+    if expect != version as i64 + 1 {
+        return Err(StoreError::Backend(format!(
+            "world {id}: edit {expect} is missing from the log"
+        )));
+    }
+    if let Some(hash) = last_hash {
+        let text = serde_json::to_string(&doc).map_err(backend)?;
+        if scene_hash(&text) != hash {
+            return Err(StoreError::Backend(format!(
+                "world {id}: replaying the log to version {version} does not give the scene it \
+                 recorded"
+            )));
+        }
+    }
+    Ok(doc)
+}
+
+#[async_trait]
+impl SceneStore for SqliteStore {
+    async fn create_world(&self, world: NewWorld) -> Result<WorldMeta, StoreError> {
+        let scene = canonical_scene(&world.scene)?;
+        let text = serde_json::to_string(&scene).map_err(backend)?;
+        if text.len() > MAX_SCENE_BYTES {
+            return Err(StoreError::TooLarge {
+                bytes: text.len(),
+                limit: MAX_SCENE_BYTES,
+            });
+        }
+        self.write(move |tx| {
+            let t = now();
+            let inserted = tx
+                .execute(
+                    "INSERT INTO worlds (id, seed, public, version, scene, created_at, updated_at)
+                     VALUES (?1, ?2, ?3, 1, ?4, ?5, ?5) ON CONFLICT (id) DO NOTHING",
+                    params![world.id, world.seed as i64, world.public as i64, text, t],
+                )
+                .map_err(backend)?;
+            if inserted == 0 {
+                return Err(StoreError::Duplicate(world.id));
+            }
+            tx.execute(
+                "INSERT INTO snapshots (world_id, version, scene) VALUES (?1, 1, ?2)",
+                params![world.id, text],
+            )
+            .map_err(backend)?;
+            tx.execute(
+                "INSERT INTO tokens (hash, world_id, role, created_at) VALUES (?1, ?2, 'admin', ?3)",
+                params![world.admin_token.as_slice(), world.id, t],
+            )
+            .map_err(backend)?;
+            load_meta(tx, &world.id)
+        })
+        .await
+    }
+
+    async fn meta(&self, id: &str) -> Result<WorldMeta, StoreError> {
+        let id = id.to_string();
+        self.read(move |c| load_meta(c, &id)).await
+    }
+
+    async fn head(&self, id: &str) -> Result<WorldHead, StoreError> {
+        let id = id.to_string();
+        self.read(move |c| {
+            let meta = load_meta(c, &id)?;
+            let text: String = c
+                .query_row("SELECT scene FROM worlds WHERE id = ?1", params![id], |r| {
+                    r.get(0)
+                })
+                .map_err(backend)?;
+            Ok(WorldHead {
+                meta,
+                scene: parse_json(&text, "scene")?,
+            })
+        })
+        .await
+    }
+
+    async fn scene_at(&self, id: &str, version: u64) -> Result<Value, StoreError> {
+        let id = id.to_string();
+        self.read(move |c| load_scene_at(c, &id, version)).await
+    }
+
+    async fn apply_edit(
+        &self,
+        id: &str,
+        patch: json_patch::Patch,
+        expected: Option<u64>,
+    ) -> Result<EditApplied, StoreError> {
+        let id = id.to_string();
+        self.write(move |tx| {
+            let (version, text): (i64, String) = tx
+                .query_row(
+                    "SELECT version, scene FROM worlds WHERE id = ?1",
+                    params![id],
+                    |r| Ok((r.get(0)?, r.get(1)?)),
+                )
+                .optional()
+                .map_err(backend)?
+                .ok_or_else(|| StoreError::WorldNotFound(id.clone()))?;
+            let version = version as u64;
+            if let Some(expected) = expected {
+                if expected != version {
+                    return Err(StoreError::Conflict {
+                        expected,
+                        latest: version,
+                    });
+                }
+            }
+            let mut doc = parse_json(&text, "scene")?;
+            let old = Scene::from_value(&doc).map_err(|e| {
+                StoreError::Backend(format!("stored scene of {id} v{version} is invalid: {e}"))
+            })?;
+            json_patch::patch(&mut doc, &patch.0).map_err(|e| StoreError::Patch {
+                operation: e.operation,
+                message: format!("{} at {:?}", e.kind, e.path.as_str()),
+            })?;
+            let new = Scene::from_value(&doc).map_err(StoreError::Invalid)?;
+            let text = serde_json::to_string(&doc).map_err(backend)?;
+            if text.len() > MAX_SCENE_BYTES {
+                return Err(StoreError::TooLarge {
+                    bytes: text.len(),
+                    limit: MAX_SCENE_BYTES,
+                });
+            }
+            let next = version + 1;
+            let t = now();
+            let patch_text = serde_json::to_string(&patch).map_err(backend)?;
+            tx.execute(
+                "INSERT INTO edits (world_id, version, patch, scene_hash, created_at)
+                 VALUES (?1, ?2, ?3, ?4, ?5)",
+                params![id, next as i64, patch_text, scene_hash(&text), t],
+            )
+            .map_err(backend)?;
+            if next.is_multiple_of(SNAPSHOT_EVERY) {
+                tx.execute(
+                    "INSERT INTO snapshots (world_id, version, scene) VALUES (?1, ?2, ?3)",
+                    params![id, next as i64, text],
+                )
+                .map_err(backend)?;
+            }
+            tx.execute(
+                "UPDATE worlds SET version = ?2, scene = ?3, updated_at = ?4 WHERE id = ?1",
+                params![id, next as i64, text, t],
+            )
+            .map_err(backend)?;
+            Ok(EditApplied {
+                version: next,
+                dirty: dirty_region(&old, &new),
+            })
+        })
+        .await
+    }
+
+    async fn edit_log(
+        &self,
+        id: &str,
+        after: u64,
+        limit: usize,
+    ) -> Result<Vec<EditRecord>, StoreError> {
+        let id = id.to_string();
+        let limit = limit.min(MAX_LOG_ENTRIES) as i64;
+        self.read(move |c| {
+            load_meta(c, &id)?;
+            let mut stmt = c
+                .prepare(
+                    "SELECT version, patch, created_at FROM edits
+                     WHERE world_id = ?1 AND version > ?2 ORDER BY version LIMIT ?3",
+                )
+                .map_err(backend)?;
+            let rows = stmt
+                .query_map(params![id, after.min(i64::MAX as u64) as i64, limit], |r| {
+                    Ok((
+                        r.get::<_, i64>(0)?,
+                        r.get::<_, String>(1)?,
+                        r.get::<_, i64>(2)?,
+                    ))
+                })
+                .map_err(backend)?;
+            let mut out = Vec::new();
+            for row in rows {
+                let (version, patch, at) = row.map_err(backend)?;
+                out.push(EditRecord {
+                    version: version as u64,
+                    patch: parse_json(&patch, "patch")?,
+                    at,
+                });
+            }
+            Ok(out)
+        })
+        .await
+    }
+
+    async fn set_public(&self, id: &str, public: bool) -> Result<WorldMeta, StoreError> {
+        let id = id.to_string();
+        self.write(move |tx| {
+            let n = tx
+                .execute(
+                    "UPDATE worlds SET public = ?2 WHERE id = ?1",
+                    params![id, public as i64],
+                )
+                .map_err(backend)?;
+            if n == 0 {
+                return Err(StoreError::WorldNotFound(id));
+            }
+            load_meta(tx, &id)
+        })
+        .await
+    }
+
+    async fn add_token(&self, id: &str, token: TokenHash, role: Role) -> Result<(), StoreError> {
+        let id = id.to_string();
+        self.write(move |tx| {
+            load_meta(tx, &id)?;
+            tx.execute(
+                "INSERT INTO tokens (hash, world_id, role, created_at) VALUES (?1, ?2, ?3, ?4)",
+                params![token.as_slice(), id, role.as_str(), now()],
+            )
+            .map_err(backend)?;
+            Ok(())
+        })
+        .await
+    }
+
+    async fn token(&self, token: TokenHash) -> Result<Option<TokenGrant>, StoreError> {
+        self.read(move |c| {
+            let row: Option<(String, String)> = c
+                .query_row(
+                    "SELECT world_id, role FROM tokens WHERE hash = ?1",
+                    params![token.as_slice()],
+                    |r| Ok((r.get(0)?, r.get(1)?)),
+                )
+                .optional()
+                .map_err(backend)?;
+            row.map(|(world, role)| {
+                let role = Role::parse(&role)
+                    .ok_or_else(|| StoreError::Backend(format!("stored role {role:?}")))?;
+                Ok(TokenGrant { world, role })
+            })
+            .transpose()
+        })
+        .await
+    }
+
+    async fn list_worlds(&self) -> Result<Vec<WorldMeta>, StoreError> {
+        self.read(|c| {
+            let mut stmt = c
+                .prepare(&format!(
+                    "SELECT {META_COLUMNS} FROM worlds ORDER BY created_at, id"
+                ))
+                .map_err(backend)?;
+            let rows = stmt.query_map([], meta_row).map_err(backend)?;
+            rows.map(|r| r.map_err(backend)).collect()
+        })
+        .await
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::store::hash_token;
+    use serde_json::json;
+
+    fn patch(v: Value) -> json_patch::Patch {
+        serde_json::from_value(v).expect("patch")
+    }
+
+    async fn world(store: &SqliteStore) -> String {
+        let id = crate::store::new_world_id().expect("id");
+        store
+            .create_world(NewWorld {
+                id: id.clone(),
+                seed: u64::MAX,
+                scene: json!({}),
+                public: false,
+                admin_token: hash_token("t"),
+            })
+            .await
+            .expect("create");
+        id
+    }
+
+    fn add_region(i: u64) -> json_patch::Patch {
+        patch(json!([{"op": "add", "path": "/regions/-", "value":
+            {"id": format!("r{i}"), "bbox": {"min": [i, 0], "max": [i + 1, 1]}}}]))
+    }
+
+    #[tokio::test]
+    async fn versions_replay_across_snapshots_and_reopen() {
+        let dir = tempfile::tempdir().expect("tmp");
+        let store = SqliteStore::open_in_dir(dir.path()).expect("open");
+        let id = world(&store).await;
+        let n = 2 * SNAPSHOT_EVERY + 5;
+        for i in 2..=n {
+            let a = store.apply_edit(&id, add_region(i), Some(i - 1)).await;
+            assert_eq!(a.expect("edit").version, i);
+        }
+        let meta = store.meta(&id).await.expect("meta");
+        assert_eq!((meta.version, meta.seed), (n, u64::MAX));
+        drop(store);
+        let store = SqliteStore::open_in_dir(dir.path()).expect("reopen");
+        for v in 1..=n {
+            let s = store.scene_at(&id, v).await.expect("version");
+            let regions = s["regions"].as_array().expect("array");
+            assert_eq!(regions.len() as u64, v - 1, "version {v}");
+        }
+        assert!(matches!(
+            store.scene_at(&id, n + 1).await,
+            Err(StoreError::VersionNotFound { latest, .. }) if latest == n
+        ));
+        let log = store.edit_log(&id, n - 3, 10).await.expect("log");
+        assert_eq!(
+            log.iter().map(|e| e.version).collect::<Vec<_>>(),
+            [n - 2, n - 1, n]
+        );
+    }
+
+    #[tokio::test]
+    async fn refused_edits_change_nothing() {
+        let store = SqliteStore::open_in_memory().expect("open");
+        let id = world(&store).await;
+        assert_eq!(
+            store.apply_edit(&id, add_region(1), Some(7)).await,
+            Err(StoreError::Conflict {
+                expected: 7,
+                latest: 1
+            })
+        );
+        let bad = patch(json!([{"op": "add", "path": "/regions/-", "value":
+            {"id": "ok", "bbox": {"min": [0, 0], "max": [1, 1]}}},
+            {"op": "remove", "path": "/nope"}]));
+        assert!(matches!(
+            store.apply_edit(&id, bad, None).await,
+            Err(StoreError::Patch { operation: 1, .. })
+        ));
+        let invalid = patch(json!([{"op": "replace",
+            "path": "/world/biomes/2/generator/hurst", "value": 5}]));
+        match store.apply_edit(&id, invalid, None).await {
+            Err(StoreError::Invalid(e)) => assert_eq!(e.pointer, "/world/biomes/2/generator/hurst"),
+            other => panic!("{other:?}"),
+        }
+        let head = store.head(&id).await.expect("head");
+        assert_eq!(head.meta.version, 1);
+        assert_eq!(head.scene["regions"], json!([]));
+        let a = store
+            .apply_edit(&id, add_region(3), None)
+            .await
+            .expect("ok");
+        assert_eq!(a.version, 2);
+        assert_eq!(
+            a.dirty,
+            crate::scene::Dirty::Rects(vec![crate::scene::Rect {
+                min: [3.0, 0.0],
+                max: [4.0, 1.0]
+            }])
+        );
+    }
+
+    #[tokio::test]
+    async fn tokens_and_access() {
+        let store = SqliteStore::open_in_memory().expect("open");
+        let id = world(&store).await;
+        assert_eq!(
+            store.token(hash_token("t")).await.expect("token"),
+            Some(TokenGrant {
+                world: id.clone(),
+                role: Role::Admin
+            })
+        );
+        store
+            .add_token(&id, hash_token("r"), Role::Read)
+            .await
+            .expect("add");
+        assert_eq!(
+            store
+                .token(hash_token("r"))
+                .await
+                .expect("token")
+                .map(|g| g.role),
+            Some(Role::Read)
+        );
+        assert_eq!(store.token(hash_token("x")).await.expect("token"), None);
+        assert!(store.set_public(&id, true).await.expect("public").public);
+        assert_eq!(store.list_worlds().await.expect("list").len(), 1);
+        assert!(matches!(
+            store.meta("nope").await,
+            Err(StoreError::WorldNotFound(_))
+        ));
+    }
+}
