@@ -13,5 +13,6 @@ pub mod export;
 pub mod gpu;
 pub mod scene;
 pub mod server;
+pub mod stream;
 pub mod store;
 pub mod terrain;
