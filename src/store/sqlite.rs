@@ -599,9 +599,12 @@ mod tests {
         id
     }
 
+    /// Boxes with decimal fractions, so a scene that drifted by a float parse/print cycle would
+    /// fail the replay's hash check.
     fn add_region(i: u64) -> json_patch::Patch {
+        let x = i as f64 * 0.1 + 0.03;
         patch(json!([{"op": "add", "path": "/regions/-", "value":
-            {"id": format!("r{i}"), "bbox": {"min": [i, 0], "max": [i + 1, 1]}}}]))
+            {"id": format!("r{i}"), "bbox": {"min": [x, 0.7], "max": [x + 1.0, 1.3]}}}]))
     }
 
     #[tokio::test]
@@ -669,8 +672,8 @@ mod tests {
         assert_eq!(
             a.dirty,
             crate::scene::Dirty::Rects(vec![crate::scene::Rect {
-                min: [3.0, 0.0],
-                max: [4.0, 1.0]
+                min: [3.0 * 0.1 + 0.03, 0.7],
+                max: [3.0 * 0.1 + 0.03 + 1.0, 1.3]
             }])
         );
     }
