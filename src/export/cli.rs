@@ -60,11 +60,7 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         if done == total || t - last >= 0.2 {
             last = t;
             let width = 30;
-            let filled = if total == 0 {
-                width
-            } else {
-                done * width / total
-            };
+            let filled = (done * width).checked_div(total).unwrap_or(width);
             let bar = format!("[{}{}]", "#".repeat(filled), " ".repeat(width - filled));
             let line = format!("{bar} {done}/{total} tiles  {t:.1} s");
             if tty {

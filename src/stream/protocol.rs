@@ -1,0 +1,215 @@
+//! Messages and frames of `api/stream_protocol_v1.md`.
+//!
+//! Client → server: JSON text messages ([`ClientMessage`]). Server → client: JSON text messages
+//! ([`ServerMessage`]) for control, and binary tile frames ([`TileFrame`]) with a 44-byte
+//! little-endian header followed by the tile in the requested format.
+
+use crate::encode::Format;
+use crate::terrain::TileKey;
+use serde::{Deserialize, Serialize};
+
+/// Frame magic.
+pub const FRAME_MAGIC: &[u8; 4] = b"STRF";
+/// Frame layout version.
+pub const FRAME_VERSION: u16 = 1;
+/// Header bytes before the payload.
+pub const FRAME_HEADER_BYTES: usize = 44;
+/// Frame kind of a tile.
+pub const KIND_TILE: u8 = 1;
+
+/// A message from the client.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ClientMessage {
+    /// Where the client is and what it wants.
+    View {
+        /// Camera X, metres.
+        x: f64,
+        /// Camera Z, metres.
+        z: f64,
+        /// Rings per LOD, finest first (Choroś & Topolski's `L = {A, B, C, …}`).
+        rings: Vec<u32>,
+        /// Tile format (`bin` by default).
+        #[serde(default)]
+        format: Option<String>,
+    },
+    /// An RFC 6902 JSON Patch for the world (world streams only; needs an edit token).
+    Edit {
+        /// Client's id for the acknowledgement.
+        id: String,
+        /// The patch.
+        patch: serde_json::Value,
+        /// Expected current version (optimistic concurrency).
+        #[serde(default)]
+        if_match: Option<u64>,
+    },
+}
+
+/// A control message from the server.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum ServerMessage {
+    /// First message: what the stream is.
+    Hello {
+        /// Protocol name and version, `strata.stream.v1`.
+        protocol: &'static str,
+        /// Current world version (1 for a bare seed).
+        version: u64,
+        /// Frame queue bound: at most this many frames are buffered for the client.
+        queue_frames: usize,
+    },
+    /// The view was accepted; `tiles` will arrive nearest first.
+    View {
+        /// Tiles in the view.
+        tiles: usize,
+        /// Tiles that will be sent (those the client does not hold at the current version).
+        sending: usize,
+    },
+    /// Every tile of the current view has been sent.
+    Idle {
+        /// World version the view is complete at.
+        version: u64,
+    },
+    /// An edit changed these held tiles; fresh frames follow.
+    Invalidate {
+        /// New world version.
+        version: u64,
+        /// `[lod, x, z]` of each invalidated tile the client holds.
+        tiles: Vec<[i64; 3]>,
+    },
+    /// An edit sent on this socket was accepted.
+    Ack {
+        /// The client's id.
+        id: String,
+        /// The new version.
+        version: u64,
+    },
+    /// A request was refused; same shape as the HTTP error body plus the message id if any.
+    Error {
+        /// Stable code, as in HTTP errors.
+        code: String,
+        /// Human-readable message.
+        message: String,
+        /// Offending field, if any.
+        field: Option<String>,
+        /// Id of the edit it answers, if any.
+        id: Option<String>,
+    },
+}
+
+/// Numeric format codes of the frame header.
+pub fn format_code(f: Format) -> u8 {
+    match f {
+        Format::Json => 1,
+        Format::Bin => 2,
+        Format::Png => 3,
+        Format::Glb => 4,
+    }
+}
+
+/// A tile frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TileFrame {
+    /// Address.
+    pub key: TileKey,
+    /// Payload format.
+    pub format: Format,
+    /// World version the tile is of.
+    pub version: u64,
+    /// Seam flags `n, e, s, w` the edges were snapped with.
+    pub seams: [bool; 4],
+    /// The tile in `format`.
+    pub payload: Vec<u8>,
+}
+
+impl TileFrame {
+    /// The frame's bytes: header (little-endian) then payload.
+    pub fn encode(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + self.payload.len());
+        out.extend_from_slice(FRAME_MAGIC);
+        out.extend_from_slice(&FRAME_VERSION.to_le_bytes());
+        out.push(KIND_TILE);
+        out.push(format_code(self.format));
+        out.extend_from_slice(&self.key.lod.to_le_bytes());
+        out.extend_from_slice(&self.key.x.to_le_bytes());
+        out.extend_from_slice(&self.key.z.to_le_bytes());
+        out.extend_from_slice(&self.version.to_le_bytes());
+        let bits = self
+            .seams
+            .iter()
+            .enumerate()
+            .fold(0u8, |b, (i, s)| b | ((*s as u8) << i));
+        out.push(bits);
+        out.extend_from_slice(&[0, 0, 0]);
+        out.extend_from_slice(&(self.payload.len() as u32).to_le_bytes());
+        out.extend_from_slice(&self.payload);
+        out
+    }
+
+    /// Parses a frame (the client side, for tests and tools).
+    pub fn decode(bytes: &[u8]) -> Option<Self> {
+        if bytes.len() < FRAME_HEADER_BYTES || &bytes[..4] != FRAME_MAGIC || bytes[6] != KIND_TILE {
+            return None;
+        }
+        let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().unwrap_or_default());
+        let i64_at = |o: usize| i64::from_le_bytes(bytes[o..o + 8].try_into().unwrap_or_default());
+        let format = match bytes[7] {
+            1 => Format::Json,
+            2 => Format::Bin,
+            3 => Format::Png,
+            4 => Format::Glb,
+            _ => return None,
+        };
+        let len = u32_at(40) as usize;
+        if bytes.len() != FRAME_HEADER_BYTES + len {
+            return None;
+        }
+        Some(TileFrame {
+            key: TileKey {
+                lod: u32_at(8),
+                x: i64_at(12),
+                z: i64_at(20),
+            },
+            format,
+            version: i64_at(28) as u64,
+            seams: [0, 1, 2, 3].map(|i| bytes[36] & (1 << i) != 0),
+            payload: bytes[FRAME_HEADER_BYTES..].to_vec(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frames_round_trip() {
+        let f = TileFrame {
+            key: TileKey {
+                lod: 3,
+                x: -7,
+                z: 1 << 40,
+            },
+            format: Format::Glb,
+            version: 9,
+            seams: [true, false, false, true],
+            payload: vec![1, 2, 3],
+        };
+        let bytes = f.encode();
+        assert_eq!(bytes.len(), FRAME_HEADER_BYTES + 3);
+        assert_eq!(TileFrame::decode(&bytes), Some(f));
+        assert_eq!(TileFrame::decode(&bytes[..20]), None);
+    }
+
+    #[test]
+    fn client_messages_parse_and_reject_unknown_fields() {
+        let v: ClientMessage =
+            serde_json::from_str(r#"{"type":"view","x":1.5,"z":-3,"rings":[2,1]}"#).expect("view");
+        assert!(matches!(v, ClientMessage::View { format: None, .. }));
+        assert!(serde_json::from_str::<ClientMessage>(
+            r#"{"type":"view","x":1,"z":1,"rings":[],"zoom":2}"#
+        )
+        .is_err());
+        assert!(serde_json::from_str::<ClientMessage>(r#"{"type":"teleport"}"#).is_err());
+    }
+}

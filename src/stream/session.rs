@@ -1,0 +1,347 @@
+//! One WebSocket client: its view, the tiles it holds, a bounded frame queue.
+//!
+//! Three things happen concurrently, in one `select!` loop plus a writer task:
+//! - client messages: a new view replaces the pending work (tiles no longer in view are never
+//!   produced), an edit is applied and acknowledged;
+//! - edit events: held tiles whose footprint meets the dirty region are invalidated (one text
+//!   message) and queued again, ahead of the rest, in view order;
+//! - production: while work is pending and the queue has room, the next tile is synthesised and
+//!   queued. A full queue stops production (backpressure); a client that does not take a frame
+//!   within [`SEND_TIMEOUT`] is disconnected. Memory per client is bounded by [`QUEUE_FRAMES`]
+//!   frames plus the view's bookkeeping ([`super::view::MAX_VIEW_TILES`] entries).
+
+use super::protocol::{ClientMessage, ServerMessage, TileFrame};
+use super::view::{select, ViewTile, MAX_VIEW_TILES};
+use crate::encode::Format;
+use crate::scene::{Dirty, Rect};
+use crate::server::{routes::encode_tile, AppError, AppState};
+use crate::terrain::{TileKey, WorldPlan};
+use axum::extract::ws::{CloseFrame, Message, WebSocket};
+use futures::{SinkExt, StreamExt};
+use std::collections::{HashMap, HashSet, VecDeque};
+use std::sync::Arc;
+use std::time::Duration;
+use tokio::sync::{broadcast, mpsc};
+
+/// Frames buffered per client.
+pub const QUEUE_FRAMES: usize = 16;
+/// A client that does not accept a frame for this long is disconnected.
+pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
+/// Largest client message, bytes.
+pub const MAX_MESSAGE_BYTES: usize = 256 * 1024;
+
+/// Process-wide stream counters (for `/metrics` and tests).
+#[derive(Debug, Default)]
+pub struct Stats {
+    /// Connected stream clients.
+    pub sessions: std::sync::atomic::AtomicI64,
+    /// Tile frames produced since start.
+    pub frames: std::sync::atomic::AtomicU64,
+    /// Clients disconnected for not keeping up.
+    pub dropped_slow: std::sync::atomic::AtomicU64,
+}
+
+/// The counters.
+pub static STATS: Stats = Stats {
+    sessions: std::sync::atomic::AtomicI64::new(0),
+    frames: std::sync::atomic::AtomicU64::new(0),
+    dropped_slow: std::sync::atomic::AtomicU64::new(0),
+};
+
+/// Decrements the session gauge when a session ends, however it ends.
+struct SessionGuard;
+
+impl Drop for SessionGuard {
+    fn drop(&mut self) {
+        STATS
+            .sessions
+            .fetch_sub(1, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+/// What a stream shows: a bare seed or a stored world.
+#[async_trait::async_trait]
+pub trait StreamSource: Send + Sync {
+    /// The current version and its plan.
+    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), AppError>;
+    /// The plan of a version.
+    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, AppError>;
+    /// The world id whose edit events concern this stream, if any.
+    fn world(&self) -> Option<&str>;
+    /// Applies an edit sent on the socket; returns the new version.
+    async fn edit(&self, patch: serde_json::Value, if_match: Option<u64>) -> Result<u64, AppError>;
+}
+
+fn error_message(e: &AppError, id: Option<String>) -> ServerMessage {
+    ServerMessage::Error {
+        code: e.code.to_string(),
+        message: e.message.clone(),
+        field: e.field.as_ref().map(|f| f.to_string()),
+        id,
+    }
+}
+
+fn refused(code: &'static str, field: &'static str, message: impl Into<String>) -> AppError {
+    AppError::bad_request(code, field, message)
+}
+
+fn text(msg: &ServerMessage) -> Message {
+    Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
+}
+
+/// World-space rectangle of a tile, metres.
+fn footprint(key: TileKey, cell_m: f64) -> Rect {
+    let size = 64.0 * cell_m * (1u64 << key.lod) as f64;
+    Rect {
+        min: [key.x as f64 * size, key.z as f64 * size],
+        max: [(key.x + 1) as f64 * size, (key.z + 1) as f64 * size],
+    }
+}
+
+/// Runs a session until the client leaves or is dropped.
+pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSource>) {
+    STATS
+        .sessions
+        .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let _guard = SessionGuard;
+    let (mut sink, mut incoming) = socket.split();
+    let (tx, mut rx) = mpsc::channel::<Message>(QUEUE_FRAMES);
+    let writer = tokio::spawn(async move {
+        while let Some(msg) = rx.recv().await {
+            match tokio::time::timeout(SEND_TIMEOUT, sink.send(msg)).await {
+                Ok(Ok(())) => {}
+                Ok(Err(_)) => return,
+                Err(_) => {
+                    tracing::info!("stream client too slow; disconnecting");
+                    STATS
+                        .dropped_slow
+                        .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let close = CloseFrame {
+                        code: 1008,
+                        reason: "client too slow".into(),
+                    };
+                    let _ = tokio::time::timeout(
+                        Duration::from_secs(1),
+                        sink.send(Message::Close(Some(close))),
+                    )
+                    .await;
+                    return;
+                }
+            }
+        }
+        let _ = sink.close().await;
+    });
+    let mut edits = source.world().map(|_| state.subscribe_edits());
+    let (mut version, mut plan) = match source.current().await {
+        Ok(v) => v,
+        Err(e) => {
+            let _ = tx.send(text(&error_message(&e, None))).await;
+            drop(tx);
+            let _ = writer.await;
+            return;
+        }
+    };
+    let cell_m = plan.params.cell_m as f64;
+    let hello = ServerMessage::Hello {
+        protocol: "strata.stream.v1",
+        version,
+        queue_frames: QUEUE_FRAMES,
+    };
+    if tx.send(text(&hello)).await.is_err() {
+        return;
+    }
+    let mut format = Format::Bin;
+    let mut view: Vec<ViewTile> = Vec::new();
+    let mut held: HashMap<TileKey, u64> = HashMap::new();
+    let mut pending: VecDeque<ViewTile> = VecDeque::new();
+    let mut idle_sent = true;
+    loop {
+        if writer.is_finished() {
+            break;
+        }
+        let edit_event = async {
+            match edits.as_mut() {
+                Some(rx) => rx.recv().await,
+                None => std::future::pending().await,
+            }
+        };
+        tokio::select! {
+            msg = incoming.next() => {
+                let Some(Ok(msg)) = msg else { break };
+                let text_msg = match msg {
+                    Message::Text(t) => t,
+                    Message::Close(_) => break,
+                    Message::Binary(_) => {
+                        let e = refused("bad_message", "type", "send JSON text messages");
+                        let _ = tx.send(text(&error_message(&e, None))).await;
+                        continue;
+                    }
+                    _ => continue,
+                };
+                if text_msg.len() > MAX_MESSAGE_BYTES {
+                    let e = refused("message_too_large", "type", format!("messages are limited to {MAX_MESSAGE_BYTES} bytes"));
+                    let _ = tx.send(text(&error_message(&e, None))).await;
+                    continue;
+                }
+                match serde_json::from_str::<ClientMessage>(&text_msg) {
+                    Err(e) => {
+                        let e = refused("bad_message", "type", format!("not a strata.stream.v1 message: {e}"));
+                        let _ = tx.send(text(&error_message(&e, None))).await;
+                    }
+                    Ok(ClientMessage::View { x, z, rings, format: f }) => {
+                        let reply = match view_of(x, z, &rings, f.as_deref(), cell_m) {
+                            Err(e) => error_message(&e, None),
+                            Ok((tiles, fmt)) => {
+                                if fmt != format {
+                                    held.clear();
+                                    format = fmt;
+                                }
+                                let keys: HashSet<TileKey> = tiles.iter().map(|t| t.key).collect();
+                                held.retain(|k, _| keys.contains(k));
+                                pending = tiles.iter().filter(|t| held.get(&t.key) != Some(&version)).copied().collect();
+                                view = tiles;
+                                idle_sent = false;
+                                ServerMessage::View { tiles: view.len(), sending: pending.len() }
+                            }
+                        };
+                        if tx.send(text(&reply)).await.is_err() {
+                            break;
+                        }
+                    }
+                    Ok(ClientMessage::Edit { id, patch, if_match }) => {
+                        let reply = match source.edit(patch, if_match).await {
+                            Ok(v) => ServerMessage::Ack { id, version: v },
+                            Err(e) => error_message(&e, Some(id)),
+                        };
+                        if tx.send(text(&reply)).await.is_err() {
+                            break;
+                        }
+                    }
+                }
+            }
+            ev = edit_event => {
+                let (new_version, dirty) = match ev {
+                    Ok(ev) if Some(ev.world.as_str()) == source.world() => (ev.version, ev.dirty),
+                    Ok(_) => continue,
+                    Err(broadcast::error::RecvError::Lagged(_)) => match source.current().await {
+                        Ok((v, _)) => (v, Dirty::Everything),
+                        Err(_) => continue,
+                    },
+                    Err(broadcast::error::RecvError::Closed) => { edits = None; continue; }
+                };
+                if new_version <= version {
+                    continue;
+                }
+                match source.plan_at(new_version).await {
+                    Ok(p) => { plan = p; version = new_version; }
+                    Err(_) => continue,
+                }
+                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&footprint(t.key, cell_m))).copied().collect();
+                // Tiles not held stay pending; held tiles the edit does not touch are current.
+                for v in held.values_mut() {
+                    *v = version;
+                }
+                if !stale.is_empty() {
+                    let tiles = stale.iter().map(|t| [t.key.lod as i64, t.key.x, t.key.z]).collect();
+                    if tx.send(text(&ServerMessage::Invalidate { version, tiles })).await.is_err() {
+                        break;
+                    }
+                    let again: HashSet<TileKey> = stale.iter().map(|t| t.key).collect();
+                    pending.retain(|t| !again.contains(&t.key));
+                    for t in stale.iter().rev() {
+                        held.remove(&t.key);
+                        pending.push_front(*t);
+                    }
+                    idle_sent = false;
+                }
+            }
+            permit = tx.reserve(), if !pending.is_empty() => {
+                let Ok(permit) = permit else { break };
+                let Some(t) = pending.pop_front() else { continue };
+                let (p, s) = (plan.clone(), state.clone());
+                let job = async move {
+                    let tile = s.compute.tile(p.clone(), t.key, t.seams).await;
+                    encode_tile(&p, &tile, format).map(|prod| prod.body)
+                };
+                match state.limited(job).await {
+                    Ok(payload) => {
+                        permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
+                        held.insert(t.key, version);
+                        STATS.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    }
+                    Err(e) => permit.send(text(&error_message(&e, None))),
+                }
+            }
+            _ = tokio::time::sleep(Duration::from_millis(250)), if pending.is_empty() && !idle_sent => {}
+        }
+        if pending.is_empty() && !idle_sent {
+            idle_sent = true;
+            if tx
+                .send(text(&ServerMessage::Idle { version }))
+                .await
+                .is_err()
+            {
+                break;
+            }
+        }
+    }
+    drop(tx);
+    let _ = writer.await;
+}
+
+/// Validates a view message.
+fn view_of(
+    x: f64,
+    z: f64,
+    rings: &[u32],
+    format: Option<&str>,
+    cell_m: f64,
+) -> Result<(Vec<ViewTile>, Format), AppError> {
+    let limit = crate::terrain::plan::WORLD_LIMIT_CELLS * cell_m;
+    for (name, v) in [("x", x), ("z", z)] {
+        if !v.is_finite() || v.abs() > limit {
+            return Err(refused(
+                "coordinate_out_of_range",
+                name,
+                format!("{name} must be within ±{limit} m"),
+            ));
+        }
+    }
+    if rings.is_empty()
+        || rings.len() > super::view::MAX_LEVELS
+        || rings.iter().any(|r| *r > super::view::MAX_RINGS_PER_LEVEL)
+    {
+        return Err(refused(
+            "bad_rings",
+            "rings",
+            format!(
+                "rings: 1 to {} levels of 0 to {} rings",
+                super::view::MAX_LEVELS,
+                super::view::MAX_RINGS_PER_LEVEL
+            ),
+        ));
+    }
+    let format = match format {
+        None => Format::Bin,
+        Some(f) => Format::from_extension(f)
+            .ok_or_else(|| refused("unknown_format", "format", format!("unknown format {f:?}")))?,
+    };
+    let tiles: Vec<ViewTile> = select(x, z, rings, cell_m)
+        .into_iter()
+        .filter(|t| {
+            let lim = crate::terrain::plan::WORLD_LIMIT_CELLS / (64.0 * (1u64 << t.key.lod) as f64);
+            (t.key.x.abs() as f64) < lim && (t.key.z.abs() as f64) < lim
+        })
+        .collect();
+    if tiles.len() > MAX_VIEW_TILES {
+        return Err(refused(
+            "bad_rings",
+            "rings",
+            format!(
+                "the view has {} tiles; at most {MAX_VIEW_TILES}",
+                tiles.len()
+            ),
+        ));
+    }
+    Ok((tiles, format))
+}
