@@ -13,6 +13,6 @@ pub mod export;
 pub mod gpu;
 pub mod scene;
 pub mod server;
-pub mod stream;
 pub mod store;
+pub mod stream;
 pub mod terrain;

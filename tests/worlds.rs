@@ -1163,3 +1163,29 @@ fn scene_schema_describes_what_the_server_accepts() {
         assert!(check(&doc).is_err(), "the schema refuses {pointer}");
     }
 }
+
+#[test]
+fn scene_module_is_pure() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/scene");
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).expect("src/scene") {
+        let path = entry.expect("entry").path();
+        let text = std::fs::read_to_string(&path).expect("readable");
+        for banned in [
+            "tokio::",
+            "axum::",
+            "wgpu::",
+            "rusqlite",
+            "crate::server",
+            "crate::store",
+        ] {
+            assert!(
+                !text.contains(banned),
+                "{} mentions {banned}",
+                path.display()
+            );
+        }
+        n += 1;
+    }
+    assert!(n >= 2);
+}
