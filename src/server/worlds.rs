@@ -300,7 +300,7 @@ fn world_not_found(id: &str) -> AppError {
 }
 
 /// The world `id` and the caller, after checking that the caller has `need` on it.
-async fn authorize(
+pub(crate) async fn authorize(
     st: &AppState,
     headers: &HeaderMap,
     id: &str,
@@ -650,7 +650,25 @@ async fn edit(
     check_content_type(&headers, JSON_PATCH, true).map_err(refused)?;
     let expected = parse_if_match(&headers).map_err(refused)?;
     let patch: json_patch::Patch = parse_body(&body).map_err(refused)?;
-    let applied = match st.worlds.store.apply_edit(&id, patch, expected).await {
+    let applied = commit_edit(&st, &id, patch, expected).await?;
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
+        "no-store",
+    );
+    set_version_headers(&mut res, applied.version, true);
+    Ok(res)
+}
+
+/// Applies an edit the caller may make (checked by the caller), durably, then broadcasts it; the
+/// HTTP edit route and stream edits share it.
+pub(crate) async fn commit_edit(
+    st: &AppState,
+    id: &str,
+    patch: json_patch::Patch,
+    expected: Option<u64>,
+) -> Result<crate::store::EditApplied, AppError> {
+    let applied = match st.worlds.store.apply_edit(id, patch, expected).await {
         Ok(a) => a,
         Err(e) => {
             let counter = if matches!(e, StoreError::Conflict { .. }) {
@@ -666,17 +684,11 @@ async fn edit(
     tracing::info!(world = %id, version = applied.version, "edit committed");
     // No receivers is not an error: nobody is streaming this process's worlds.
     let _ = st.worlds.edits.send(EditEvent {
-        world: id.clone(),
+        world: id.to_string(),
         version: applied.version,
         dirty: applied.dirty.clone(),
     });
-    let mut res = json_response(
-        StatusCode::OK,
-        json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
-        "no-store",
-    );
-    set_version_headers(&mut res, applied.version, true);
-    Ok(res)
+    Ok(applied)
 }
 
 #[derive(Deserialize)]
