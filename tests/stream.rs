@@ -251,3 +251,193 @@ async fn bad_messages_get_errors_naming_the_field() {
         (Some("read_only"), Some("e1"))
     );
 }
+
+/// Creates a world over HTTP; returns `(id, admin token)`.
+async fn create_world(base: &str, public: bool) -> (String, String) {
+    let http = base.replacen("ws://", "", 1);
+    let body = serde_json::json!({"seed": 5, "public": public}).to_string();
+    let (status, text) = raw_http(
+        &http,
+        "POST",
+        "/v1/worlds",
+        &[("Content-Type", "application/json")],
+        &body,
+    )
+    .await;
+    assert_eq!(status, 201, "{text}");
+    let v: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    (
+        v["id"].as_str().expect("id").to_string(),
+        v["tokens"]["admin"]
+            .as_str()
+            .expect("admin token")
+            .to_string(),
+    )
+}
+
+/// A minimal HTTP/1.1 request over TCP: status and body text.
+async fn raw_http(
+    addr: &str,
+    method: &str,
+    path: &str,
+    headers: &[(&str, &str)],
+    body: &str,
+) -> (u16, String) {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut s = tokio::net::TcpStream::connect(addr).await.expect("connect");
+    let mut req = format!(
+        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n",
+        body.len()
+    );
+    for (k, v) in headers {
+        req.push_str(&format!("{k}: {v}\r\n"));
+    }
+    req.push_str("\r\n");
+    req.push_str(body);
+    s.write_all(req.as_bytes()).await.expect("send");
+    let mut raw = Vec::new();
+    s.read_to_end(&mut raw).await.expect("read");
+    let text = String::from_utf8_lossy(&raw).to_string();
+    let status = text
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .expect("status");
+    let body = text
+        .split_once("\r\n\r\n")
+        .map(|(_, b)| b.to_string())
+        .unwrap_or_default();
+    (status, body)
+}
+
+/// Reads until `idle`, returning the frames and control messages seen.
+async fn until_idle(ws: &mut Ws) -> (Vec<TileFrame>, Vec<serde_json::Value>) {
+    let (mut frames, mut msgs) = (Vec::new(), Vec::new());
+    loop {
+        match next(ws).await {
+            Message::Binary(b) => frames.push(TileFrame::decode(&b).expect("frame")),
+            Message::Text(t) => {
+                let m: serde_json::Value = serde_json::from_str(&t).expect("JSON");
+                let idle = m["type"] == "idle";
+                msgs.push(m);
+                if idle {
+                    return (frames, msgs);
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn edits_invalidate_the_tiles_they_touch_and_fresh_tiles_follow() {
+    let _serial = SERIAL.lock().await;
+    let base = serve().await;
+    let (id, token) = create_world(&base, false).await;
+    // A private world refuses a stream without a token.
+    let refused = tokio_tungstenite::connect_async(format!("{base}/v1/worlds/{id}/stream")).await;
+    assert!(refused.is_err(), "a private world needs a read token");
+    let (mut ws, _) =
+        tokio_tungstenite::connect_async(format!("{base}/v1/worlds/{id}/stream?token={token}"))
+            .await
+            .expect("connect");
+    let hello = next_json(&mut ws).await;
+    assert_eq!(hello["version"], 1);
+    let rings = [1u32, 1];
+    ws.send(Message::Text(
+        serde_json::json!({"type":"view","x":32,"z":32,"rings":rings})
+            .to_string()
+            .into(),
+    ))
+    .await
+    .expect("send");
+    let (frames, _) = until_idle(&mut ws).await;
+    let view = select(32.0, 32.0, &rings, 1.0);
+    assert_eq!(frames.len(), view.len());
+
+    // An edit on the socket: a region inside LOD-0 tile (0, 0).
+    let patch = serde_json::json!([{"op":"add","path":"/regions/-","value":{"id":"r1","bbox":{"min":[10.0,10.0],"max":[20.0,20.0]}}}]);
+    ws.send(Message::Text(
+        serde_json::json!({"type":"edit","id":"e1","patch":patch,"if_match":1})
+            .to_string()
+            .into(),
+    ))
+    .await
+    .expect("send");
+    let (fresh, msgs) = until_idle(&mut ws).await;
+    let ack = msgs.iter().find(|m| m["type"] == "ack").expect("ack");
+    assert_eq!(
+        (ack["id"].as_str(), ack["version"].as_u64()),
+        (Some("e1"), Some(2))
+    );
+    let inv = msgs
+        .iter()
+        .find(|m| m["type"] == "invalidate")
+        .expect("invalidate");
+    assert_eq!(inv["version"], 2);
+    let touched: Vec<TileKey> = inv["tiles"]
+        .as_array()
+        .expect("tiles")
+        .iter()
+        .map(|t| TileKey {
+            lod: t[0].as_u64().expect("lod") as u32,
+            x: t[1].as_i64().expect("x"),
+            z: t[2].as_i64().expect("z"),
+        })
+        .collect();
+    assert_eq!(
+        touched,
+        vec![TileKey { lod: 0, x: 0, z: 0 }],
+        "only the tile under the region"
+    );
+    assert_eq!(
+        fresh.iter().map(|f| (f.key, f.version)).collect::<Vec<_>>(),
+        vec![(TileKey { lod: 0, x: 0, z: 0 }, 2)]
+    );
+
+    // An edit by another editor over HTTP reaches this socket too; a conflicting one is refused.
+    let http = base.replacen("ws://", "", 1);
+    let auth = format!("Bearer {token}");
+    let patch = r#"[{"op":"add","path":"/regions/-","value":{"id":"r2","bbox":{"min":[-100.0,-100.0],"max":[-90.0,-90.0]}}}]"#;
+    let (status, text) = raw_http(
+        &http,
+        "POST",
+        &format!("/v1/worlds/{id}/edits"),
+        &[
+            ("Content-Type", "application/json-patch+json"),
+            ("Authorization", &auth),
+            ("If-Match", "2"),
+        ],
+        patch,
+    )
+    .await;
+    assert_eq!(status, 200, "{text}");
+    let (fresh, msgs) = until_idle(&mut ws).await;
+    let inv = msgs
+        .iter()
+        .find(|m| m["type"] == "invalidate")
+        .expect("invalidate");
+    assert_eq!(inv["version"], 3);
+    assert!(
+        inv["tiles"]
+            .as_array()
+            .is_some_and(|t| t.iter().all(|k| k[1].as_i64() < Some(0))),
+        "{inv}"
+    );
+    assert!(fresh
+        .iter()
+        .all(|f| f.version == 3 && f.key.x < 0 && f.key.z < 0));
+    ws.send(Message::Text(
+        serde_json::json!({"type":"edit","id":"e2","patch":[],"if_match":1})
+            .to_string()
+            .into(),
+    ))
+    .await
+    .expect("send");
+    let m = next_json(&mut ws).await;
+    assert_eq!(
+        (m["code"].as_str(), m["id"].as_str()),
+        (Some("version_conflict"), Some("e2")),
+        "{m}"
+    );
+}

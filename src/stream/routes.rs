@@ -9,7 +9,105 @@ use std::sync::Arc;
 
 /// Routes of this module, to merge into the app's router.
 pub fn router() -> axum::Router<AppState> {
-    axum::Router::new().route("/v1/seeds/{seed}/stream", axum::routing::get(seed_stream))
+    axum::Router::new()
+        .route("/v1/seeds/{seed}/stream", axum::routing::get(seed_stream))
+        .route("/v1/worlds/{id}/stream", axum::routing::get(world_stream))
+}
+
+/// A stored world: the latest version, its edit events, edits by callers with the edit role.
+struct WorldSource {
+    state: AppState,
+    id: String,
+    caller: crate::server::access::Caller,
+}
+
+impl WorldSource {
+    async fn meta(&self) -> Result<crate::store::WorldMeta, AppError> {
+        self.state.worlds.store.meta(&self.id).await.map_err(|e| {
+            tracing::warn!(world = %self.id, "stream: world lookup failed: {e}");
+            AppError::new(
+                axum::http::StatusCode::NOT_FOUND,
+                crate::server::error::code::WORLD_NOT_FOUND,
+                "world not found",
+            )
+            .with_field("id")
+        })
+    }
+}
+
+#[async_trait::async_trait]
+impl StreamSource for WorldSource {
+    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), AppError> {
+        let meta = self.meta().await?;
+        let plan = self.state.worlds.plan(&meta, meta.version).await?;
+        Ok((meta.version, plan))
+    }
+
+    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, AppError> {
+        let meta = self.meta().await?;
+        self.state.worlds.plan(&meta, version).await
+    }
+
+    fn world(&self) -> Option<&str> {
+        Some(&self.id)
+    }
+
+    async fn edit(&self, patch: serde_json::Value, if_match: Option<u64>) -> Result<u64, AppError> {
+        let meta = self.meta().await?;
+        self.caller.require(&meta, crate::store::Role::Edit)?;
+        let patch: json_patch::Patch = serde_json::from_value(patch).map_err(|e| {
+            AppError::bad_request(
+                crate::server::error::code::BAD_BODY,
+                "patch",
+                format!("not a JSON Patch: {e}"),
+            )
+        })?;
+        Ok(
+            crate::server::worlds::commit_edit(&self.state, &self.id, patch, if_match)
+                .await?
+                .version,
+        )
+    }
+}
+
+/// `?token=` for browsers, which cannot set headers on a WebSocket.
+#[derive(serde::Deserialize)]
+struct TokenQuery {
+    token: Option<String>,
+}
+
+async fn world_stream(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    axum::extract::Query(q): axum::extract::Query<TokenQuery>,
+    headers: axum::http::HeaderMap,
+    ws: WebSocketUpgrade,
+) -> Result<Response, AppError> {
+    let mut headers = headers;
+    if let Some(token) = q
+        .token
+        .filter(|_| !headers.contains_key(axum::http::header::AUTHORIZATION))
+    {
+        let value =
+            axum::http::HeaderValue::from_str(&format!("Bearer {token}")).map_err(|_| {
+                AppError::bad_request(
+                    crate::server::error::code::BAD_BODY,
+                    "token",
+                    "token has characters a header cannot carry",
+                )
+            })?;
+        headers.insert(axum::http::header::AUTHORIZATION, value);
+    }
+    let (_, caller) =
+        crate::server::worlds::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
+    let source: Arc<dyn StreamSource> = Arc::new(WorldSource {
+        state: state.clone(),
+        id,
+        caller,
+    });
+    Ok(ws
+        .max_message_size(super::session::MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| run(socket, state, source)))
 }
 
 /// A bare seed: version 1 forever, no edits.
