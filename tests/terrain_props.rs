@@ -235,7 +235,10 @@ fn coarser_lods_sum_fewer_octaves() {
         .collect();
     assert!(counts.windows(2).all(|w| w[1] < w[0]), "{counts:?}");
     // The fractional octave makes the count continuous: one LOD step removes 1/H octaves.
-    assert!((counts[3] - counts[4] - 1.0 / g.hurst).abs() < 1e-3, "{counts:?}");
+    assert!(
+        (counts[3] - counts[4] - 1.0 / g.hurst).abs() < 1e-3,
+        "{counts:?}"
+    );
     assert!(counts[6] < counts[0]);
 }
 

@@ -231,7 +231,8 @@ mod tests {
                 .map(|i| {
                     let (x, y) = ((i % w) as u32, (i / w) as u32);
                     let hsh = crate::terrain::hash::hash2(x as i32 / 9, y as i32 / 7, seed);
-                    if crate::terrain::hash::hash2(x as i32, y as i32, seed + 99).is_multiple_of(50) {
+                    if crate::terrain::hash::hash2(x as i32, y as i32, seed + 99).is_multiple_of(50)
+                    {
                         (hsh % 4) as u8 ^ 1
                     } else {
                         (hsh % 4) as u8
