@@ -4,6 +4,10 @@
 //! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
 //! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process. With `--json` each
 //! figure is one JSON object per line, units in the key names.
+//!
+//! `strata bench serve` (issue 3) is in [`serve`].
+
+pub mod serve;
 
 use crate::cli::BenchArgs;
 use crate::terrain::fractal::fbm_batch;
@@ -21,11 +25,12 @@ pub const TARGET_FBM_RATIO: f64 = 3.0;
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match args.name.as_str() {
         "tiles" => tiles(args),
-        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles"),
+        "serve" => serve::run(args),
+        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles, serve"),
     }
 }
 
-fn emit(args: &BenchArgs, value: serde_json::Value, line: String) {
+pub(crate) fn emit(args: &BenchArgs, value: serde_json::Value, line: String) {
     if args.json {
         println!("{value}");
     } else {

@@ -1,0 +1,338 @@
+//! `strata bench serve`: the service under load (issue 3, Done-when 8).
+//!
+//! 1. Cached-tile requests per second and p50/p99 latency at 64 concurrent connections, measured
+//!    with `wrk` against this server, and the same load against Debian's nginx serving the same
+//!    tile bytes from files, in the same run; the ratio's target is ≥ 0.5.
+//! 2. The time from an edit's acknowledgement (the HTTP 200) to its invalidation reaching each of
+//!    100 subscribed WebSocket clients; the target is p99 ≤ 50 ms.
+//!
+//! The server runs in this process on loopback with the CPU backend and an in-memory store; `wrk`
+//! and `nginx` are separate processes (`apt-get install wrk nginx-light`).
+
+use super::emit;
+use crate::cli::BenchArgs;
+use crate::compute::Compute;
+use crate::server::{app, AppState};
+use anyhow::{bail, Context};
+use futures::{SinkExt, StreamExt};
+use serde_json::json;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+use tokio_tungstenite::tungstenite::Message;
+
+/// Target: our requests per second over nginx's.
+pub const TARGET_RATIO: f64 = 0.5;
+/// Target: p99 edit-to-invalidation latency, milliseconds.
+pub const TARGET_INVALIDATION_P99_MS: f64 = 50.0;
+/// Concurrent connections of the throughput test.
+pub const CONNECTIONS: usize = 64;
+/// Subscribed clients of the invalidation test.
+pub const SUBSCRIBERS: usize = 100;
+/// The tile requested by the throughput test.
+const TILE_PATH: &str = "/v1/seeds/42/tiles/0/3/-2.bin";
+
+/// What `wrk` reported.
+#[derive(Debug, Clone, Copy)]
+struct WrkFigures {
+    requests_per_s: f64,
+    p50_ms: f64,
+    p99_ms: f64,
+}
+
+fn need(tool: &str) -> anyhow::Result<()> {
+    match Command::new(tool)
+        .arg("-v")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+    {
+        Ok(_) => Ok(()),
+        Err(_) => bail!("`{tool}` is not installed; on Debian: apt-get install wrk nginx-light"),
+    }
+}
+
+fn parse_ms(s: &str) -> Option<f64> {
+    let s = s.trim();
+    let (num, unit) = s.split_at(s.find(|c: char| c.is_ascii_alphabetic())?);
+    let v: f64 = num.parse().ok()?;
+    Some(match unit {
+        "us" => v / 1000.0,
+        "ms" => v,
+        "s" => v * 1000.0,
+        "m" => v * 60_000.0,
+        _ => return None,
+    })
+}
+
+fn wrk(url: &str, seconds: u32) -> anyhow::Result<WrkFigures> {
+    let out = Command::new("wrk")
+        .args([
+            "-t2",
+            &format!("-c{CONNECTIONS}"),
+            &format!("-d{seconds}s"),
+            "--latency",
+            url,
+        ])
+        .output()
+        .context("running wrk")?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    if !out.status.success() {
+        bail!("wrk failed: {text}{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let mut f = WrkFigures {
+        requests_per_s: 0.0,
+        p50_ms: f64::NAN,
+        p99_ms: f64::NAN,
+    };
+    for line in text.lines() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.as_slice() {
+            ["Requests/sec:", v, ..] => f.requests_per_s = v.parse().unwrap_or(0.0),
+            ["50%", v, ..] => f.p50_ms = parse_ms(v).unwrap_or(f64::NAN),
+            ["99%", v, ..] => f.p99_ms = parse_ms(v).unwrap_or(f64::NAN),
+            _ => {}
+        }
+    }
+    if text.contains("Non-2xx") {
+        bail!("wrk saw error responses:\n{text}");
+    }
+    Ok(f)
+}
+
+/// Runs `strata bench serve`.
+pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    need("wrk")?;
+    need("nginx")?;
+    let rt = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()?;
+    let state = AppState::new(Compute::cpu());
+    let listener = rt.block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))?;
+    let addr = listener.local_addr()?;
+    rt.spawn(async move {
+        let _ = axum::serve(listener, app(state)).await;
+    });
+    let seconds = 10;
+
+    // The same bytes from nginx.
+    let dir = std::env::temp_dir().join(format!("strata-bench-nginx-{}", std::process::id()));
+    let root = dir.join("root");
+    let tile_file = root.join(TILE_PATH.trim_start_matches('/'));
+    std::fs::create_dir_all(tile_file.parent().context("tile dir")?)?;
+    let body = rt.block_on(async {
+        let (status, body) = http_get(&addr.to_string(), TILE_PATH).await?;
+        anyhow::ensure!(status == 200, "warm-up request answered {status}");
+        anyhow::Ok(body)
+    })?;
+    std::fs::write(&tile_file, &body)?;
+    let nginx_port = {
+        let l = std::net::TcpListener::bind("127.0.0.1:0")?;
+        l.local_addr()?.port()
+    };
+    std::fs::create_dir_all(dir.join("logs"))?;
+    let conf = dir.join("nginx.conf");
+    std::fs::write(
+        &conf,
+        format!(
+            "worker_processes auto;\ndaemon off;\npid {pid};\nerror_log {err} warn;\nevents {{ worker_connections 1024; }}\nhttp {{\n  access_log off;\n  sendfile on;\n  keepalive_requests 100000;\n  server {{\n    listen 127.0.0.1:{nginx_port};\n    root {root};\n    location / {{ etag on; add_header Cache-Control \"public, max-age=31536000, immutable\"; }}\n  }}\n}}\n",
+            pid = dir.join("nginx.pid").display(),
+            err = dir.join("logs/error.log").display(),
+            root = root.display(),
+        ),
+    )?;
+    let mut nginx = Command::new("nginx")
+        .args([
+            "-p",
+            &dir.display().to_string(),
+            "-c",
+            &conf.display().to_string(),
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .context("starting nginx")?;
+    std::thread::sleep(Duration::from_millis(500));
+
+    let ours = wrk(&format!("http://{addr}{TILE_PATH}"), seconds);
+    let theirs = wrk(
+        &format!("http://127.0.0.1:{nginx_port}{TILE_PATH}"),
+        seconds,
+    );
+    let _ = nginx.kill();
+    let _ = nginx.wait();
+    let _ = std::fs::remove_dir_all(&dir);
+    let (ours, theirs) = (ours?, theirs?);
+    let ratio = ours.requests_per_s / theirs.requests_per_s;
+    emit(
+        args,
+        json!({"bench":"serve","figure":"cached_tile","connections":CONNECTIONS,"tile_bytes":body.len(),
+               "requests_per_s":ours.requests_per_s,"p50_ms":ours.p50_ms,"p99_ms":ours.p99_ms,
+               "nginx_requests_per_s":theirs.requests_per_s,"nginx_p50_ms":theirs.p50_ms,"nginx_p99_ms":theirs.p99_ms,
+               "ratio":ratio,"target_ratio":TARGET_RATIO,"meets_target":ratio >= TARGET_RATIO}),
+        format!(
+            "serve: cached {}-byte tile, {CONNECTIONS} connections, {seconds} s each\n  strata: {:.0} req/s, p50 {:.2} ms, p99 {:.2} ms\n  nginx:  {:.0} req/s, p50 {:.2} ms, p99 {:.2} ms\n  ratio {ratio:.2} (target ≥ {TARGET_RATIO})",
+            body.len(),
+            ours.requests_per_s,
+            ours.p50_ms,
+            ours.p99_ms,
+            theirs.requests_per_s,
+            theirs.p50_ms,
+            theirs.p99_ms
+        ),
+    );
+
+    let lat = rt.block_on(invalidation_latency(addr.to_string(), 20))?;
+    let pct = |p: f64| lat[((lat.len() as f64 - 1.0) * p).round() as usize];
+    let (p50, p99, max) = (pct(0.5), pct(0.99), lat[lat.len() - 1]);
+    emit(
+        args,
+        json!({"bench":"serve","figure":"edit_to_invalidation","subscribers":SUBSCRIBERS,"samples":lat.len(),
+               "p50_ms":p50,"p99_ms":p99,"max_ms":max,"target_p99_ms":TARGET_INVALIDATION_P99_MS,
+               "meets_target":p99 <= TARGET_INVALIDATION_P99_MS}),
+        format!(
+            "  edit → invalidation at {SUBSCRIBERS} clients: p50 {p50:.2} ms, p99 {p99:.2} ms, max {max:.2} ms over {} deliveries (target p99 ≤ {TARGET_INVALIDATION_P99_MS} ms)",
+            lat.len()
+        ),
+    );
+    Ok(())
+}
+
+async fn http_get(addr: &str, path: &str) -> anyhow::Result<(u16, Vec<u8>)> {
+    http(addr, "GET", path, &[], "").await
+}
+
+async fn http(
+    addr: &str,
+    method: &str,
+    path: &str,
+    headers: &[(&str, &str)],
+    body: &str,
+) -> anyhow::Result<(u16, Vec<u8>)> {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut s = tokio::net::TcpStream::connect(addr).await?;
+    let mut req = format!(
+        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n",
+        body.len()
+    );
+    for (k, v) in headers {
+        req.push_str(&format!("{k}: {v}\r\n"));
+    }
+    req.push_str("\r\n");
+    req.push_str(body);
+    s.write_all(req.as_bytes()).await?;
+    let mut raw = Vec::new();
+    s.read_to_end(&mut raw).await?;
+    let split = raw
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .context("no header end")?;
+    let head = String::from_utf8_lossy(&raw[..split]);
+    let status = head
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .context("no status")?;
+    Ok((status, raw[split + 4..].to_vec()))
+}
+
+/// Latencies (ms, sorted) from each edit's acknowledgement to each subscriber's `invalidate`.
+async fn invalidation_latency(addr: String, edits: usize) -> anyhow::Result<Vec<f64>> {
+    let (status, body) = http(
+        &addr,
+        "POST",
+        "/v1/worlds",
+        &[("Content-Type", "application/json")],
+        r#"{"seed":42,"public":true}"#,
+    )
+    .await?;
+    anyhow::ensure!(status == 201, "creating the world answered {status}");
+    let created: serde_json::Value = serde_json::from_slice(&body)?;
+    let id = created["id"].as_str().context("world id")?.to_string();
+    let token = created["tokens"]["admin"]
+        .as_str()
+        .context("admin token")?
+        .to_string();
+    // Subscribers: each holds the one LOD-0 tile under the edits.
+    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(u64, Instant)>();
+    let mut ready = Vec::new();
+    for _ in 0..SUBSCRIBERS {
+        let (mut ws, _) =
+            tokio_tungstenite::connect_async(format!("ws://{addr}/v1/worlds/{id}/stream")).await?;
+        ws.send(Message::Text(
+            json!({"type":"view","x":32,"z":32,"rings":[0]})
+                .to_string()
+                .into(),
+        ))
+        .await?;
+        let tx = tx.clone();
+        let (ready_tx, ready_rx) = tokio::sync::oneshot::channel::<()>();
+        ready.push(ready_rx);
+        tokio::spawn(async move {
+            let mut ready_tx = Some(ready_tx);
+            while let Some(Ok(msg)) = ws.next().await {
+                if let Message::Text(t) = msg {
+                    let Ok(m) = serde_json::from_str::<serde_json::Value>(&t) else {
+                        continue;
+                    };
+                    match m["type"].as_str() {
+                        Some("idle") => {
+                            if let Some(r) = ready_tx.take() {
+                                let _ = r.send(());
+                            }
+                        }
+                        Some("invalidate") => {
+                            let _ = tx.send((m["version"].as_u64().unwrap_or(0), Instant::now()));
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        });
+    }
+    for r in ready {
+        tokio::time::timeout(Duration::from_secs(60), r)
+            .await
+            .context("a subscriber never became idle")??;
+    }
+    let auth = format!("Bearer {token}");
+    let mut out = Vec::with_capacity(edits * SUBSCRIBERS);
+    for e in 0..edits {
+        let patch = json!([{"op":"add","path":"/regions/-","value":{"id":format!("bench{e}"),"bbox":{"min":[10.0,10.0],"max":[20.0,20.0]}}}]).to_string();
+        let path = format!("/v1/worlds/{id}/edits");
+        let (status, body) = http(
+            &addr,
+            "POST",
+            &path,
+            &[
+                ("Content-Type", "application/json-patch+json"),
+                ("Authorization", &auth),
+            ],
+            &patch,
+        )
+        .await?;
+        let acked = Instant::now();
+        anyhow::ensure!(
+            status == 200,
+            "edit answered {status}: {}",
+            String::from_utf8_lossy(&body)
+        );
+        let version = serde_json::from_slice::<serde_json::Value>(&body)?["version"]
+            .as_u64()
+            .context("version")?;
+        let mut got = 0;
+        while got < SUBSCRIBERS {
+            let (v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
+                .await
+                .context("invalidation timed out")?
+                .context("subscribers gone")?;
+            if v == version {
+                out.push(at.saturating_duration_since(acked).as_secs_f64() * 1e3);
+                got += 1;
+            }
+        }
+        // Let the fresh tiles go out before the next edit.
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    out.sort_by(f64::total_cmp);
+    Ok(out)
+}
