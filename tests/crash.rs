@@ -115,6 +115,40 @@ fn acknowledged_edits_survive_sigkill() {
         created["tokens"]["admin"].as_str().expect("token")
     );
 
+    // Version 2 changes the world settings, so its tiles differ from version 1's; both versioned
+    // URLs must give the same bytes after the restart.
+    let (status, body) = request(
+        &server.addr,
+        "POST",
+        &format!("/v1/worlds/{id}/edits"),
+        &[
+            ("Authorization", &token),
+            ("Content-Type", "application/json-patch+json"),
+            ("If-Match", "1"),
+        ],
+        br#"[{"op":"replace","path":"/world/warp/lever","value":0.5}]"#,
+    )
+    .expect("settings edit");
+    assert_eq!(status, 200, "{}", String::from_utf8_lossy(&body));
+    let tile_urls = [
+        format!("/v1/worlds/{id}/tiles/0/1/-1.bin?v=1"),
+        format!("/v1/worlds/{id}/tiles/0/1/-1.bin?v=2"),
+        format!("/v1/worlds/{id}/tiles/3/-2/0.json?v=2"),
+    ];
+    let tiles_before: Vec<Vec<u8>> = tile_urls
+        .iter()
+        .map(|u| {
+            let (status, body) =
+                request(&server.addr, "GET", u, &[("Authorization", &token)], b"").expect("tile");
+            assert_eq!(status, 200, "{u}");
+            body
+        })
+        .collect();
+    assert!(
+        tiles_before[0] != tiles_before[1],
+        "the settings edit changes the tile"
+    );
+
     // The editor: one region per edit, each conditional on the last acknowledged version.
     let acked: Arc<Mutex<Vec<(u64, String)>>> = Arc::default();
     let stop = Arc::new(AtomicBool::new(false));
@@ -122,7 +156,7 @@ fn acknowledged_edits_survive_sigkill() {
         let (addr, id, token) = (server.addr.clone(), id.clone(), token.clone());
         let (acked, stop) = (acked.clone(), stop.clone());
         std::thread::spawn(move || {
-            let mut version = 1u64;
+            let mut version = 2u64;
             let started = Instant::now();
             for i in 0..100_000u64 {
                 if stop.load(Ordering::Relaxed) || started.elapsed() > Duration::from_secs(120) {
@@ -146,7 +180,7 @@ fn acknowledged_edits_survive_sigkill() {
                 match reply {
                     Ok((200, body)) => {
                         version = json(&body)["version"].as_u64().expect("version");
-                        assert_eq!(version, i + 2, "one version per edit");
+                        assert_eq!(version, i + 3, "one version per edit");
                         acked.lock().expect("lock").push((version, region));
                     }
                     Ok((status, body)) => panic!(
@@ -198,7 +232,7 @@ fn acknowledged_edits_survive_sigkill() {
         .collect();
     for (version, region) in &acked {
         assert_eq!(
-            regions.get(*version as usize - 2),
+            regions.get(*version as usize - 3),
             Some(&region.as_str()),
             "acknowledged edit of version {version} is missing from the latest scene"
         );
@@ -213,8 +247,14 @@ fn acknowledged_edits_survive_sigkill() {
         assert_eq!(status, 200, "version {version}");
         let scene = &json(&body)["scene"];
         let n = scene["regions"].as_array().expect("regions").len();
-        assert_eq!(n as u64, version - 1, "version {version}");
+        assert_eq!(n as u64, version - 2, "version {version}");
         assert_eq!(scene["regions"][n - 1]["id"], region.as_str());
+    }
+    for (u, before) in tile_urls.iter().zip(&tiles_before) {
+        let (status, body) =
+            request(&server.addr, "GET", u, &[("Authorization", &token)], b"").expect("tile");
+        assert_eq!(status, 200, "{u}");
+        assert_eq!(&body, before, "{u} changed across the restart");
     }
     // The world is still editable where it left off.
     let (status, body) = request(
