@@ -86,6 +86,10 @@ pub struct ServeArgs {
     /// `STRATA_ADMIN_TOKEN` when not given. Without one, anyone may create worlds.
     #[arg(long)]
     pub admin_token: Option<crate::server::access::Secret>,
+    /// Directory of the disk tier of the stage cache (finished tiles by input hash); memory
+    /// only without it.
+    #[arg(long)]
+    pub cache_dir: Option<PathBuf>,
 }
 
 /// `strata bench` options.

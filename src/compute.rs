@@ -4,7 +4,11 @@
 //! CPU work runs on tokio's blocking pool so request handlers never stall the reactor. A GPU job
 //! that fails (device lost, validation error, timeout) is recomputed on the CPU and the device is
 //! marked lost, so requests never fail because of the device.
+//!
+//! [`Compute::tile_cached`] puts the [`crate::cache::StageCache`] in front: a tile whose input
+//! hash is cached runs no stage; otherwise each stage run is counted there.
 
+use crate::cache::{InputHash, Stage, StageCache};
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
 use crate::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
@@ -100,15 +104,48 @@ impl Compute {
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
     pub async fn tile(&self, plan: Arc<WorldPlan>, key: TileKey, coarser: [bool; 4]) -> Tile {
+        self.run_stages(plan, key, coarser, None).await
+    }
+
+    /// The tile whose input hash is `inputs` ([`crate::scene::SceneInputs::tile`] of the same
+    /// plan, key and seams): from `cache` when it holds it (memory, then disk), else computed as
+    /// [`Compute::tile`] does, with each stage run counted in `cache`, and kept there.
+    pub async fn tile_cached(
+        &self,
+        cache: &StageCache,
+        inputs: InputHash,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+    ) -> Arc<Tile> {
+        cache
+            .get_or_compute(inputs, || self.run_stages(plan, key, seams, Some(cache)))
+            .await
+    }
+
+    async fn run_stages(
+        &self,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        coarser: [bool; 4],
+        counts: Option<&StageCache>,
+    ) -> Tile {
+        let count = |stage| {
+            if let Some(c) = counts {
+                c.record_run(stage);
+            }
+        };
         let n = TILE_VERTS + 2;
         let f = self
             .field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n)
             .await;
+        count(Stage::Field);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 strips.push((*edge, self.field(plan.clone(), lod, gx0, gz0, w, h).await));
+                count(Stage::Snap);
             }
         }
         let job = move || {
@@ -118,9 +155,11 @@ impl Compute {
             }
             t
         };
-        match tokio::task::spawn_blocking(job).await {
+        let t = match tokio::task::spawn_blocking(job).await {
             Ok(t) => t,
             Err(e) => std::panic::resume_unwind(e.into_panic()),
-        }
+        };
+        count(Stage::Finish);
+        t
     }
 }

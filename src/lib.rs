@@ -3,9 +3,11 @@
 //! See `ARCHITECTURE.md` for the map. [`terrain`] is the world function (pure, CPU reference);
 //! [`gpu`] owns the compute device and the WGSL twins; [`encode`] turns products into wire formats;
 //! [`server`] is the HTTP service; [`scene`] is the scene document and [`store`] keeps worlds,
-//! their versions and tokens durably.
+//! their versions and tokens durably; [`cache`] keeps finished tiles under the hash of their
+//! inputs.
 
 pub mod bench;
+pub mod cache;
 pub mod cli;
 pub mod compute;
 pub mod encode;

@@ -8,11 +8,17 @@
 //! Pure code: no tokio, no axum, no I/O. The store keeps scenes as JSON values (edits are JSON
 //! Patches applied to them); [`Scene::from_value`] is the one gate every stored version passes,
 //! and [`dirty_region`] says what an edit changed, for incremental recompute and streaming
-//! invalidation.
+//! invalidation. [`SceneInputs`] / [`tile_inputs`] give a tile's input hash, the key of the stage
+//! cache: the seed, settings, key, seams and the elements within reach of the tile.
 
 mod dirty;
+mod inputs;
 
 pub use dirty::{dirty_region, Dirty, Rect};
+pub use inputs::{
+    canonical_json, margin_m, tile_footprint, tile_inputs, tile_reach, SceneInputs, INPUTS_DOMAIN,
+    TILE_CODE_VERSION,
+};
 
 use crate::terrain::world::ParamError;
 use crate::terrain::WorldParams;

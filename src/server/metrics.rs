@@ -10,6 +10,11 @@
 //! | `strata_plan_cache_hits_total`, `strata_plan_cache_misses_total` (counters) | `cache`: `seeds`, `worlds` |
 //! | `strata_worlds_created_total` (counter) | |
 //! | `strata_edit_subscribers` (gauge) | |
+//! | `strata_stage_cache_hits_total` (counter) | `tier`: `memory`, `disk`, `inflight` (joined a computation under way) |
+//! | `strata_stage_cache_misses_total` (counter): tiles computed | |
+//! | `strata_stage_runs_total` (counter) | `stage`: `field`, `snap`, `finish` |
+//! | `strata_stage_cache_evictions_total`, `strata_stage_cache_disk_writes_total`, `strata_stage_cache_disk_errors_total` (counters) | |
+//! | `strata_stage_cache_bytes`, `strata_stage_cache_budget_bytes`, `strata_stage_cache_entries` (gauges) | |
 
 use super::AppState;
 use axum::extract::{MatchedPath, Request, State};
@@ -161,6 +166,77 @@ pub async fn track(State(m): State<Arc<Metrics>>, req: Request, next: Next) -> R
     res
 }
 
+/// The stage cache's lines.
+fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
+    out.push_str("# HELP strata_stage_cache_hits_total Tiles found in the stage cache, by tier.\n");
+    out.push_str("# TYPE strata_stage_cache_hits_total counter\n");
+    for (tier, n) in [
+        ("memory", s.hits),
+        ("disk", s.disk_hits),
+        ("inflight", s.joined),
+    ] {
+        let _ = writeln!(out, "strata_stage_cache_hits_total{{tier=\"{tier}\"}} {n}");
+    }
+    out.push_str("# HELP strata_stage_runs_total Stage runs of tile synthesis, by stage.\n");
+    out.push_str("# TYPE strata_stage_runs_total counter\n");
+    for stage in crate::cache::Stage::ALL {
+        let _ = writeln!(
+            out,
+            "strata_stage_runs_total{{stage=\"{}\"}} {}",
+            stage.name(),
+            s.runs_of(stage)
+        );
+    }
+    for (name, kind, help, v) in [
+        (
+            "strata_stage_cache_misses_total",
+            "counter",
+            "Tiles not found in the stage cache and computed.",
+            s.misses,
+        ),
+        (
+            "strata_stage_cache_evictions_total",
+            "counter",
+            "Tiles evicted from memory to stay within the budget.",
+            s.evictions,
+        ),
+        (
+            "strata_stage_cache_disk_writes_total",
+            "counter",
+            "Tiles written to the disk tier.",
+            s.disk_writes,
+        ),
+        (
+            "strata_stage_cache_disk_errors_total",
+            "counter",
+            "Unreadable, corrupt or unwritable disk tier files.",
+            s.disk_errors,
+        ),
+        (
+            "strata_stage_cache_bytes",
+            "gauge",
+            "Bytes of the tiles in memory.",
+            s.bytes,
+        ),
+        (
+            "strata_stage_cache_budget_bytes",
+            "gauge",
+            "Byte budget of the memory tier.",
+            s.budget_bytes,
+        ),
+        (
+            "strata_stage_cache_entries",
+            "gauge",
+            "Tiles in memory.",
+            s.entries,
+        ),
+    ] {
+        let _ = writeln!(out, "# HELP {name} {help}");
+        let _ = writeln!(out, "# TYPE {name} {kind}");
+        let _ = writeln!(out, "{name} {v}");
+    }
+}
+
 /// `GET /metrics`.
 pub async fn render(State(st): State<AppState>) -> Response {
     let (seed_hits, seed_misses) = st.plans.stats();
@@ -189,6 +265,7 @@ pub async fn render(State(st): State<AppState>) -> Response {
     extra.push_str("# HELP strata_edit_subscribers Receivers of the in-process edit broadcast.\n");
     extra.push_str("# TYPE strata_edit_subscribers gauge\n");
     let _ = writeln!(extra, "strata_edit_subscribers {}", st.worlds.subscribers());
+    stage_cache(&mut extra, &st.cache.stats());
     let mut res = st.metrics.render(&extra).into_response();
     let h = res.headers_mut();
     h.insert(

@@ -20,6 +20,10 @@
 //! Product responses are pure functions of the URL: they carry a content-hash `ETag`, answer
 //! `If-None-Match` with 304 and are `Cache-Control: public, max-age=31536000, immutable`. Errors
 //! have one JSON shape ([`AppError`]). Limits: [`Limits`].
+//!
+//! Tiles go through the stage cache ([`crate::cache`], [`AppState::cached_tile`]) keyed by their
+//! input hash ([`crate::scene::SceneInputs`]), so repeated requests and edits elsewhere in a world
+//! run no stage.
 
 pub mod access;
 pub mod error;
@@ -32,8 +36,10 @@ pub mod worlds;
 pub use error::AppError;
 
 use crate::cli::ServeArgs;
+use crate::cache::StageCache;
 use crate::compute::Compute;
-use crate::terrain::WorldPlan;
+use crate::scene::SceneInputs;
+use crate::terrain::{Tile, TileKey, WorldParams, WorldPlan};
 use plans::PlanCache;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -82,6 +88,8 @@ pub struct AppState {
     pub worlds: Arc<worlds::Worlds>,
     /// Counters of `GET /metrics`.
     pub metrics: Arc<metrics::Metrics>,
+    /// Finished tiles by input hash (see [`AppState::with_cache`]).
+    pub cache: Arc<StageCache>,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -104,10 +112,18 @@ impl AppState {
             web: None,
             worlds: Arc::new(worlds::Worlds::new(store, None)),
             metrics: Arc::default(),
+            cache: Arc::new(StageCache::default()),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
         }
+    }
+
+    /// Keeps finished tiles in `cache` instead of a memory-only cache of
+    /// [`crate::cache::DEFAULT_BUDGET_BYTES`].
+    pub fn with_cache(mut self, cache: StageCache) -> Self {
+        self.cache = Arc::new(cache);
+        self
     }
 
     /// Serves `dir` at `/`.
@@ -130,6 +146,37 @@ impl AppState {
     /// A receiver of every accepted edit, after its commit.
     pub fn subscribe_edits(&self) -> tokio::sync::broadcast::Receiver<worlds::EditEvent> {
         self.worlds.subscribe()
+    }
+
+    /// A finished tile through the stage cache: of stored world `id` at `version` when `world`
+    /// is `Some((id, version))` (`plan` must be that version's plan), else of the bare seed
+    /// `plan.seed` (whose plan has no scene elements).
+    pub async fn cached_tile(
+        &self,
+        world: Option<(&str, u64)>,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+    ) -> Result<Arc<Tile>, AppError> {
+        let inputs = match world {
+            Some((id, version)) => self.worlds.inputs(id, version).await?,
+            None => bare_inputs(&plan.params),
+        };
+        Ok(self.tile_with_inputs(&inputs, plan, key, seams).await)
+    }
+
+    /// A finished tile through the stage cache, given its version's [`SceneInputs`].
+    pub async fn tile_with_inputs(
+        &self,
+        inputs: &SceneInputs,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+    ) -> Arc<Tile> {
+        let hash = inputs.tile(plan.seed, key, seams);
+        self.compute
+            .tile_cached(&self.cache, hash, plan, key, seams)
+            .await
     }
 
     /// The limits in force.
@@ -181,6 +228,18 @@ impl AppState {
     }
 }
 
+/// The [`SceneInputs`] of a world with settings `params` and no elements; those of the default
+/// settings (every bare seed's) are built once.
+fn bare_inputs(params: &WorldParams) -> Arc<SceneInputs> {
+    static DEFAULT: std::sync::OnceLock<Arc<SceneInputs>> = std::sync::OnceLock::new();
+    let default = DEFAULT.get_or_init(|| Arc::new(SceneInputs::bare(&WorldParams::default())));
+    if default.world() == params {
+        default.clone()
+    } else {
+        Arc::new(SceneInputs::bare(params))
+    }
+}
+
 /// The router of the whole service.
 pub fn app(state: AppState) -> axum::Router {
     routes::router(state)
@@ -225,6 +284,13 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     }
     let mut state = AppState::new(compute)
         .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose));
+    if let Some(dir) = &args.cache_dir {
+        let cache = StageCache::default().with_disk(dir).map_err(|e| {
+            anyhow::anyhow!("cannot open the cache directory {}: {e}", dir.display())
+        })?;
+        tracing::info!(dir = %dir.display(), "stage cache on disk");
+        state = state.with_cache(cache);
+    }
     if args.web.is_dir() {
         state = state.with_web(args.web.clone());
     } else {

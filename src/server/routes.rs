@@ -148,10 +148,12 @@ async fn tile(
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
     let seams = parse_seams(query.as_deref())?;
-    let compute = st.compute.clone();
+    let state = st.clone();
     let product = st
         .limited(async move {
-            let tile = compute.tile(plan.clone(), req.key, seams).await;
+            let tile = state
+                .cached_tile(None, plan.clone(), req.key, seams)
+                .await?;
             blocking(move || encode_tile(&plan, &tile, req.format)).await?
         })
         .await?;
@@ -175,10 +177,12 @@ async fn scatter(
     }
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
-    let compute = st.compute.clone();
+    let state = st.clone();
     let product = st
         .limited(async move {
-            let tile = compute.tile(plan.clone(), req.key, [false; 4]).await;
+            let tile = state
+                .cached_tile(None, plan.clone(), req.key, [false; 4])
+                .await?;
             let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
             Ok(Product {
                 body,

@@ -30,7 +30,7 @@ use super::params::{
 use super::routes::{encode_tile, Product, IMMUTABLE};
 use super::AppState;
 use crate::encode::{self, Format};
-use crate::scene::{Dirty, Scene};
+use crate::scene::{Dirty, Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
     StoreError, TokenHash, WorldMeta,
@@ -117,7 +117,25 @@ impl Worlds {
 
     /// The plan of world `meta` at `version` (which must exist).
     pub async fn plan(&self, meta: &WorldMeta, version: u64) -> Result<Arc<WorldPlan>, AppError> {
+        Ok(self.plans.get(&*self.store, meta, version).await?.0)
+    }
+
+    /// The plan of world `meta` at `version` and what its tiles' input hashes are made of.
+    pub async fn plan_and_inputs(
+        &self,
+        meta: &WorldMeta,
+        version: u64,
+    ) -> Result<(Arc<WorldPlan>, Arc<SceneInputs>), AppError> {
         self.plans.get(&*self.store, meta, version).await
+    }
+
+    /// What the input hashes of world `id`'s tiles at `version` are made of.
+    pub async fn inputs(&self, id: &str, version: u64) -> Result<Arc<SceneInputs>, AppError> {
+        if let Some((_, inputs)) = self.plans.lookup(id, version) {
+            return Ok(inputs);
+        }
+        let meta = self.store.meta(id).await.map_err(store_error)?;
+        Ok(self.plans.get(&*self.store, &meta, version).await?.1)
     }
 }
 
@@ -127,6 +145,7 @@ struct PlanEntry {
     seed: u64,
     params_hash: [u8; 32],
     plan: Arc<WorldPlan>,
+    inputs: Arc<SceneInputs>,
     used: u64,
 }
 
@@ -163,22 +182,28 @@ impl VersionPlans {
         self.entries.lock().unwrap_or_else(|p| p.into_inner())
     }
 
+    /// The cached plan and inputs of `(world, version)`, counted as a hit when found.
+    fn lookup(&self, world: &str, version: u64) -> Option<(Arc<WorldPlan>, Arc<SceneInputs>)> {
+        let now = self.clock.fetch_add(1, Ordering::Relaxed);
+        let mut entries = self.entries();
+        let e = entries
+            .iter_mut()
+            .find(|e| e.world == world && e.version == version)?;
+        e.used = now;
+        self.hits.fetch_add(1, Ordering::Relaxed);
+        Some((e.plan.clone(), e.inputs.clone()))
+    }
+
     async fn get(
         &self,
         store: &dyn SceneStore,
         meta: &WorldMeta,
         version: u64,
-    ) -> Result<Arc<WorldPlan>, AppError> {
-        let now = self.clock.fetch_add(1, Ordering::Relaxed);
-        if let Some(e) = self
-            .entries()
-            .iter_mut()
-            .find(|e| e.world == meta.id && e.version == version)
-        {
-            e.used = now;
-            self.hits.fetch_add(1, Ordering::Relaxed);
-            return Ok(e.plan.clone());
+    ) -> Result<(Arc<WorldPlan>, Arc<SceneInputs>), AppError> {
+        if let Some(found) = self.lookup(&meta.id, version) {
+            return Ok(found);
         }
+        let now = self.clock.fetch_add(1, Ordering::Relaxed);
         self.misses.fetch_add(1, Ordering::Relaxed);
         let doc = store
             .scene_at(&meta.id, version)
@@ -188,6 +213,7 @@ impl VersionPlans {
             tracing::error!(world = %meta.id, version, "stored scene is invalid: {e}");
             AppError::internal("the stored scene is invalid")
         })?;
+        let inputs = Arc::new(SceneInputs::new(&scene));
         let params_hash =
             *blake3::hash(&serde_json::to_vec(&scene.world).unwrap_or_default()).as_bytes();
         let shared = self
@@ -214,7 +240,7 @@ impl VersionPlans {
             .find(|e| e.world == meta.id && e.version == version)
         {
             e.used = now;
-            return Ok(e.plan.clone());
+            return Ok((e.plan.clone(), e.inputs.clone()));
         }
         if entries.len() >= self.capacity {
             if let Some(oldest) = entries
@@ -232,9 +258,10 @@ impl VersionPlans {
             seed: meta.seed,
             params_hash,
             plan: plan.clone(),
+            inputs: inputs.clone(),
             used: now,
         });
-        Ok(plan)
+        Ok((plan, inputs))
     }
 }
 
@@ -759,6 +786,7 @@ struct WorldProduct {
     key: TileKey,
     format: Format,
     plan: Arc<WorldPlan>,
+    inputs: Arc<SceneInputs>,
 }
 
 async fn world_product(
@@ -784,7 +812,7 @@ async fn world_product(
         }));
     }
     let key = TileKey { lod, x, z };
-    let plan = st.worlds.plan(&meta, version).await?;
+    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     check_bounds(&plan, key)?;
     Ok(WorldProduct {
         meta,
@@ -793,6 +821,7 @@ async fn world_product(
         key,
         format,
         plan,
+        inputs,
     })
 }
 
@@ -846,10 +875,13 @@ async fn tile(
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
     let seams = parse_seams(query.as_deref())?;
-    let (compute, plan, key, format) = (st.compute.clone(), p.plan.clone(), p.key, p.format);
+    let (state, plan, inputs) = (st.clone(), p.plan.clone(), p.inputs.clone());
+    let (key, format) = (p.key, p.format);
     let product = st
         .limited(async move {
-            let tile = compute.tile(plan.clone(), key, seams).await;
+            let tile = state
+                .tile_with_inputs(&inputs, plan.clone(), key, seams)
+                .await;
             blocking(move || encode_tile(&plan, &tile, format)).await?
         })
         .await?;
@@ -871,10 +903,12 @@ async fn scatter(
             "scatter is only available as .json",
         ));
     }
-    let (compute, plan, key) = (st.compute.clone(), p.plan.clone(), p.key);
+    let (state, plan, inputs, key) = (st.clone(), p.plan.clone(), p.inputs.clone(), p.key);
     let product = st
         .limited(async move {
-            let tile = compute.tile(plan.clone(), key, [false; 4]).await;
+            let tile = state
+                .tile_with_inputs(&inputs, plan.clone(), key, [false; 4])
+                .await;
             let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
             Ok(Product {
                 body,

@@ -259,8 +259,10 @@ pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSourc
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
                 let (p, s) = (plan.clone(), state.clone());
+                let world = source.world().map(|id| (id.to_owned(), version));
                 let job = async move {
-                    let tile = s.compute.tile(p.clone(), t.key, t.seams).await;
+                    let world = world.as_ref().map(|(id, v)| (id.as_str(), *v));
+                    let tile = s.cached_tile(world, p.clone(), t.key, t.seams).await?;
                     encode_tile(&p, &tile, format).map(|prod| prod.body)
                 };
                 match state.limited(job).await {

@@ -82,6 +82,17 @@ impl BiomeMapPlan {
 
     /// Algorithm 1: the winning seed's cell index and floored seed position, for a point in metres.
     pub fn nearest(&self, x_m: f32, z_m: f32) -> Nearest {
+        self.nearest_with(x_m, z_m, |i, j| self.seed_pos(i, j))
+    }
+
+    /// Algorithm 1 with the seed positions from `seed_at(i, j)` (hashed or cached: the same values).
+    #[inline(always)]
+    fn nearest_with(
+        &self,
+        x_m: f32,
+        z_m: f32,
+        seed_at: impl Fn(i32, i32) -> (f32, f32),
+    ) -> Nearest {
         let x = x_m * self.inv_cell;
         let z = z_m * self.inv_cell;
         let cx = x.floor() as i32;
@@ -93,7 +104,7 @@ impl BiomeMapPlan {
         };
         for j in cz - RANGE..=cz + RANGE {
             for i in cx - RANGE..=cx + RANGE {
-                let (sx, sz) = self.seed_pos(i, j);
+                let (sx, sz) = seed_at(i, j);
                 let dx = sx - x;
                 let dz = sz - z;
                 let d = dx * dx + dz * dz;
@@ -186,32 +197,9 @@ impl SeedCache {
 
     /// Same result as [`BiomeMapPlan::nearest`], with seeds from the cache.
     fn nearest(&self, plan: &BiomeMapPlan, x_m: f32, z_m: f32) -> Nearest {
-        let x = x_m * plan.inv_cell;
-        let z = z_m * plan.inv_cell;
-        let cx = x.floor() as i32;
-        let cz = z.floor() as i32;
-        let mut best = f32::INFINITY;
-        let mut win = Nearest {
-            cell: (0, 0),
-            pos: (0.0, 0.0),
-        };
-        for j in cz - RANGE..=cz + RANGE {
-            let row = (j - self.j0) as usize * self.w;
-            for i in cx - RANGE..=cx + RANGE {
-                let (sx, sz) = self.pos[row + (i - self.i0) as usize];
-                let dx = sx - x;
-                let dz = sz - z;
-                let d = dx * dx + dz * dz;
-                if d < best {
-                    best = d;
-                    win = Nearest {
-                        cell: (i, j),
-                        pos: (sx, sz),
-                    };
-                }
-            }
-        }
-        win
+        plan.nearest_with(x_m, z_m, |i, j| {
+            self.pos[(j - self.j0) as usize * self.w + (i - self.i0) as usize]
+        })
     }
 
     /// Evaluates the samples of one block whose samples all lie in the same lattice cell, lanes

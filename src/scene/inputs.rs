@@ -1,0 +1,392 @@
+//! The input hash of a tile: what the stage cache ([`crate::cache`]) keys a tile by.
+//!
+//! A tile's input hash is blake3 over a canonical encoding of everything the tile depends on, in
+//! this order (integers little-endian):
+//!
+//! 1. the domain tag [`INPUTS_DOMAIN`] and [`TILE_CODE_VERSION`] (`u32`);
+//! 2. the seed (`u64`);
+//! 3. the world settings: blake3 of the canonical JSON of the [`WorldParams`];
+//! 4. the key: `lod` (`u32`), `x`, `z` (`i64`);
+//! 5. the seam flags `n, e, s, w` (one byte each, 0 or 1);
+//! 6. the number of scene elements that [reach](tile_reach) the tile (`u64`), then for each of
+//!    them, in [`super::ELEMENT_KINDS`] order and document order within an array: the index of
+//!    its array (`u8`) and blake3 of the element's canonical JSON.
+//!
+//! Canonical JSON: no whitespace, object keys sorted by their UTF-8 bytes, strings escaped as
+//! serde_json escapes them, numbers as serde_json prints them (shortest round-trip form).
+//! Hashing the hash of a document instead of the document itself costs no collision resistance
+//! and keeps a version's [`SceneInputs`] small.
+//!
+//! **The margin.** An element is part of a tile's inputs when its `bbox` meets the tile's
+//! footprint grown on every side by [`margin_m`] = the biome blur radius + 2 vertex spacings of
+//! the tile's LOD. That bounds how far from its footprint a tile reads the world: the 67×67 field
+//! reaches one vertex spacing beyond the footprint plus the blur kernel's half-width
+//! (`round(radius / spacing)` spacings, at most radius + spacing / 2); the seam strips lie on the
+//! tile's edges at the next coarser LOD and reach the kernel's half-width there (at most
+//! radius + spacing). An element whose `bbox` stays outside this margin cannot change the tile,
+//! provided element kinds only have effect inside their `bbox` (the scene's contract). A stage
+//! that reads farther must grow the margin and bump [`TILE_CODE_VERSION`].
+//!
+//! So an edit whose dirty region ([`super::dirty_region`]) meets a tile's grown footprint changes
+//! the tile's hash, and an edit elsewhere leaves it — and its cached result — untouched. A change
+//! of the world settings changes every hash.
+
+use super::{Element, Rect, Scene};
+use crate::terrain::{TileKey, WorldParams};
+use serde_json::Value;
+
+/// Domain tag at the start of every tile input encoding.
+pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
+
+/// Version of the code that turns inputs into tiles. Bump it whenever a change to the world
+/// function (`src/terrain`, its WGSL twin, the seam snapping) changes any tile's bits, so every
+/// cached result — in memory and on disk — is orphaned rather than served stale.
+pub const TILE_CODE_VERSION: u32 = 1;
+
+/// The vertex spacing of a LOD, metres.
+fn spacing_m(world: &WorldParams, lod: u32) -> f64 {
+    world.cell_m as f64 * (1u64 << lod.min(62)) as f64
+}
+
+/// How far beyond its footprint a tile at `lod` reads the world, metres: the biome blur radius
+/// plus two vertex spacings of that LOD.
+pub fn margin_m(world: &WorldParams, lod: u32) -> f64 {
+    world.layout.blur_radius_m as f64 + 2.0 * spacing_m(world, lod)
+}
+
+/// The closed world-space square a tile covers: `[x·64·δ, (x+1)·64·δ] × [z·64·δ, (z+1)·64·δ]`
+/// with `δ = cell_m · 2^lod`.
+pub fn tile_footprint(world: &WorldParams, key: TileKey) -> Rect {
+    let size = 64.0 * spacing_m(world, key.lod);
+    Rect {
+        min: [key.x as f64 * size, key.z as f64 * size],
+        max: [(key.x + 1) as f64 * size, (key.z + 1) as f64 * size],
+    }
+}
+
+/// The tile's footprint grown by [`margin_m`] on every side: the elements whose `bbox` meets it
+/// are inputs of the tile.
+pub fn tile_reach(world: &WorldParams, key: TileKey) -> Rect {
+    let f = tile_footprint(world, key);
+    let m = margin_m(world, key.lod);
+    Rect {
+        min: [f.min[0] - m, f.min[1] - m],
+        max: [f.max[0] + m, f.max[1] + m],
+    }
+}
+
+/// Writes `v` as canonical JSON (see the module docs).
+pub fn canonical_json(v: &Value, out: &mut Vec<u8>) {
+    match v {
+        Value::Null | Value::Bool(_) | Value::Number(_) | Value::String(_) => {
+            // serde_json writes scalars without whitespace; a scalar cannot fail to serialise.
+            out.extend_from_slice(serde_json::to_string(v).unwrap_or_default().as_bytes());
+        }
+        Value::Array(items) => {
+            out.push(b'[');
+            for (i, item) in items.iter().enumerate() {
+                if i > 0 {
+                    out.push(b',');
+                }
+                canonical_json(item, out);
+            }
+            out.push(b']');
+        }
+        Value::Object(map) => {
+            let mut keys: Vec<&String> = map.keys().collect();
+            keys.sort_unstable_by(|a, b| a.as_bytes().cmp(b.as_bytes()));
+            out.push(b'{');
+            for (i, k) in keys.into_iter().enumerate() {
+                if i > 0 {
+                    out.push(b',');
+                }
+                canonical_json(&Value::String(k.clone()), out);
+                out.push(b':');
+                canonical_json(&map[k], out);
+            }
+            out.push(b'}');
+        }
+    }
+}
+
+/// blake3 of the canonical JSON of a serialisable value.
+fn digest<T: serde::Serialize>(value: &T) -> [u8; 32] {
+    let mut bytes = Vec::new();
+    canonical_json(
+        &serde_json::to_value(value).unwrap_or(Value::Null),
+        &mut bytes,
+    );
+    *blake3::hash(&bytes).as_bytes()
+}
+
+/// One element as a tile input: its array, its box, the digest of its canonical JSON.
+#[derive(Clone, Debug, PartialEq)]
+struct ElementInput {
+    kind: u8,
+    rect: Rect,
+    digest: [u8; 32],
+}
+
+/// What the input hashes of one scene version's tiles are made of, precomputed once per version:
+/// the digest of the world settings and, per element, its box and digest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneInputs {
+    world: WorldParams,
+    world_digest: [u8; 32],
+    elements: Vec<ElementInput>,
+}
+
+impl SceneInputs {
+    /// The inputs of a scene.
+    pub fn new(scene: &Scene) -> Self {
+        let elements = scene
+            .kinds()
+            .into_iter()
+            .enumerate()
+            .flat_map(|(kind, (_, elements))| {
+                elements.iter().map(move |e: &Element| ElementInput {
+                    kind: kind as u8,
+                    rect: e.bbox.rect(),
+                    digest: digest(e),
+                })
+            })
+            .collect();
+        Self {
+            world: scene.world.clone(),
+            world_digest: digest(&scene.world),
+            elements,
+        }
+    }
+
+    /// The inputs of a world with these settings and no elements (a bare seed's world).
+    pub fn bare(world: &WorldParams) -> Self {
+        Self {
+            world: world.clone(),
+            world_digest: digest(world),
+            elements: Vec::new(),
+        }
+    }
+
+    /// The world settings.
+    pub fn world(&self) -> &WorldParams {
+        &self.world
+    }
+
+    /// Number of elements of the scene.
+    pub fn element_count(&self) -> usize {
+        self.elements.len()
+    }
+
+    /// The input hash of tile `key` with seam flags `seams` (`n, e, s, w`) of the world `seed`.
+    pub fn tile(&self, seed: u64, key: TileKey, seams: [bool; 4]) -> [u8; 32] {
+        self.tile_with_version(TILE_CODE_VERSION, seed, key, seams)
+    }
+
+    fn tile_with_version(
+        &self,
+        code_version: u32,
+        seed: u64,
+        key: TileKey,
+        seams: [bool; 4],
+    ) -> [u8; 32] {
+        let reach = tile_reach(&self.world, key);
+        let touching: Vec<&ElementInput> = self
+            .elements
+            .iter()
+            .filter(|e| e.rect.intersects(&reach))
+            .collect();
+        let mut h = blake3::Hasher::new();
+        h.update(INPUTS_DOMAIN);
+        h.update(&code_version.to_le_bytes());
+        h.update(&seed.to_le_bytes());
+        h.update(&self.world_digest);
+        h.update(&key.lod.to_le_bytes());
+        h.update(&key.x.to_le_bytes());
+        h.update(&key.z.to_le_bytes());
+        h.update(&seams.map(u8::from));
+        h.update(&(touching.len() as u64).to_le_bytes());
+        for e in touching {
+            h.update(&[e.kind]);
+            h.update(&e.digest);
+        }
+        *h.finalize().as_bytes()
+    }
+}
+
+/// The input hash of tile `key` (seam flags `seams`) of the world `(seed, scene)`; see the module
+/// docs for what goes in. For many tiles of one version, build [`SceneInputs`] once.
+pub fn tile_inputs(scene: &Scene, seed: u64, key: TileKey, seams: [bool; 4]) -> [u8; 32] {
+    SceneInputs::new(scene).tile(seed, key, seams)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    const KEY: TileKey = TileKey { lod: 0, x: 1, z: 1 };
+
+    fn with_regions(regions: Value) -> Scene {
+        Scene::from_value(&json!({ "regions": regions })).expect("valid scene")
+    }
+
+    fn region(id: &str, min: [f64; 2], max: [f64; 2], h: i64) -> Value {
+        json!({"id": id, "bbox": {"min": min, "max": max}, "ops": [{"tool": "raise", "h": h}]})
+    }
+
+    #[test]
+    fn canonical_json_sorts_keys_and_has_no_whitespace() {
+        let mut a = Vec::new();
+        canonical_json(
+            &json!({"b": [1, 2.5, {"z": null, "a": "x\"y"}], "a": true}),
+            &mut a,
+        );
+        assert_eq!(
+            String::from_utf8(a).expect("utf8"),
+            r#"{"a":true,"b":[1,2.5,{"a":"x\"y","z":null}]}"#
+        );
+    }
+
+    #[test]
+    fn reach_is_footprint_plus_blur_radius_and_two_spacings() {
+        let w = WorldParams::default();
+        let f = tile_footprint(&w, KEY);
+        let size = 64.0 * w.cell_m as f64;
+        assert_eq!(f.min, [size, size]);
+        assert_eq!(f.max, [2.0 * size, 2.0 * size]);
+        let m = w.layout.blur_radius_m as f64 + 2.0 * w.cell_m as f64;
+        assert_eq!(margin_m(&w, 0), m);
+        let r = tile_reach(&w, KEY);
+        assert_eq!(r.min, [size - m, size - m]);
+        assert_eq!(r.max, [2.0 * size + m, 2.0 * size + m]);
+        // Coarser LODs: twice the spacing, the same blur radius.
+        assert_eq!(
+            margin_m(&w, 3),
+            w.layout.blur_radius_m as f64 + 16.0 * w.cell_m as f64
+        );
+    }
+
+    #[test]
+    fn the_hash_changes_with_every_input() {
+        let base_scene = with_regions(json!([region("r", [90.0, 90.0], [100.0, 100.0], 1)]));
+        let base = SceneInputs::new(&base_scene);
+        let h0 = base.tile(7, KEY, [false; 4]);
+        assert_eq!(h0, tile_inputs(&base_scene, 7, KEY, [false; 4]), "pure");
+        let mut seen = vec![h0];
+        let mut differs = |what: &str, h: [u8; 32]| {
+            assert!(!seen.contains(&h), "{what} does not change the hash");
+            seen.push(h);
+        };
+        differs("seed", base.tile(8, KEY, [false; 4]));
+        differs(
+            "code version",
+            base.tile_with_version(TILE_CODE_VERSION + 1, 7, KEY, [false; 4]),
+        );
+        differs("lod", base.tile(7, TileKey { lod: 1, ..KEY }, [false; 4]));
+        differs("x", base.tile(7, TileKey { x: 2, ..KEY }, [false; 4]));
+        differs("z", base.tile(7, TileKey { z: 2, ..KEY }, [false; 4]));
+        for i in 0..4 {
+            let mut seams = [false; 4];
+            seams[i] = true;
+            differs(&format!("seam {i}"), base.tile(7, KEY, seams));
+        }
+        // Every kind of world setting.
+        type Edit = fn(&mut WorldParams);
+        let edits: [(&str, Edit); 5] = [
+            ("sea level", |w| w.sea_level_m += 1.0),
+            ("blur radius", |w| w.layout.blur_radius_m += 1.0),
+            ("hurst", |w| w.biomes[0].generator.hurst *= 0.9),
+            ("biome name", |w| w.biomes[1].name.push('x')),
+            ("texturing", |w| w.texturing.rock_slope_deg += 1.0),
+        ];
+        for (what, edit) in edits {
+            let mut s = base_scene.clone();
+            edit(&mut s.world);
+            differs(what, SceneInputs::new(&s).tile(7, KEY, [false; 4]));
+        }
+        // An element in reach: changed field, moved box, another array, added, removed.
+        let variants = [
+            (
+                "element field",
+                json!({"regions": [region("r", [90.0, 90.0], [100.0, 100.0], 2)]}),
+            ),
+            (
+                "element box",
+                json!({"regions": [region("r", [90.0, 90.0], [101.0, 100.0], 1)]}),
+            ),
+            (
+                "element id",
+                json!({"regions": [region("q", [90.0, 90.0], [100.0, 100.0], 1)]}),
+            ),
+            (
+                "element array",
+                json!({"decals": [region("r", [90.0, 90.0], [100.0, 100.0], 1)]}),
+            ),
+            (
+                "element added",
+                json!({"regions": [region("r", [90.0, 90.0], [100.0, 100.0], 1),
+                                                 region("s", [120.0, 60.0], [130.0, 62.0], 1)]}),
+            ),
+            ("element removed", json!({})),
+        ];
+        for (what, doc) in variants {
+            let s = Scene::from_value(&doc).expect("valid");
+            differs(what, SceneInputs::new(&s).tile(7, KEY, [false; 4]));
+        }
+        // Order among elements in reach.
+        let ab = with_regions(json!([
+            region("a", [90.0, 90.0], [91.0, 91.0], 1),
+            region("b", [95.0, 95.0], [96.0, 96.0], 1)
+        ]));
+        let ba = with_regions(json!([
+            region("b", [95.0, 95.0], [96.0, 96.0], 1),
+            region("a", [90.0, 90.0], [91.0, 91.0], 1)
+        ]));
+        assert_ne!(
+            SceneInputs::new(&ab).tile(7, KEY, [false; 4]),
+            SceneInputs::new(&ba).tile(7, KEY, [false; 4]),
+            "order"
+        );
+    }
+
+    #[test]
+    fn elements_outside_the_margin_do_not_change_the_hash() {
+        let w = WorldParams::default();
+        let reach = tile_reach(&w, KEY);
+        let base_scene = with_regions(json!([region("r", [90.0, 90.0], [100.0, 100.0], 1)]));
+        let h0 = SceneInputs::new(&base_scene).tile(7, KEY, [false; 4]);
+        // Just outside the grown footprint on each side, and far away.
+        let eps = 1e-6;
+        let outside = [
+            ([reach.max[0] + eps, 90.0], [reach.max[0] + 5.0, 100.0]),
+            ([reach.min[0] - 5.0, 90.0], [reach.min[0] - eps, 100.0]),
+            ([90.0, reach.max[1] + eps], [100.0, reach.max[1] + 5.0]),
+            ([90.0, reach.min[1] - 5.0], [100.0, reach.min[1] - eps]),
+            ([1.0e6, 1.0e6], [1.0e6 + 1.0, 1.0e6 + 1.0]),
+        ];
+        for (i, (min, max)) in outside.into_iter().enumerate() {
+            for variant in 0..2 {
+                let s = with_regions(json!([
+                    region(&format!("far{i}"), min, max, variant),
+                    region("r", [90.0, 90.0], [100.0, 100.0], 1)
+                ]));
+                assert_eq!(
+                    SceneInputs::new(&s).tile(7, KEY, [false; 4]),
+                    h0,
+                    "element {i} outside the margin changed the hash"
+                );
+            }
+        }
+        // Touching the grown footprint's edge counts (closed rectangles).
+        let s = with_regions(json!([
+            region("edge", [reach.max[0], 90.0], [reach.max[0] + 5.0, 100.0], 0),
+            region("r", [90.0, 90.0], [100.0, 100.0], 1)
+        ]));
+        assert_ne!(SceneInputs::new(&s).tile(7, KEY, [false; 4]), h0);
+        // A bare seed's world equals the default scene's.
+        assert_eq!(
+            SceneInputs::bare(&w).tile(7, KEY, [true, false, false, true]),
+            SceneInputs::new(&Scene::default()).tile(7, KEY, [true, false, false, true])
+        );
+    }
+}
