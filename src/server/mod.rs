@@ -35,8 +35,8 @@ pub mod worlds;
 
 pub use error::AppError;
 
-use crate::cli::ServeArgs;
 use crate::cache::StageCache;
+use crate::cli::ServeArgs;
 use crate::compute::Compute;
 use crate::scene::SceneInputs;
 use crate::terrain::{Tile, TileKey, WorldParams, WorldPlan};
