@@ -59,6 +59,16 @@ pub mod code {
     pub const INVALID_SCENE: &str = "invalid_scene";
     /// The scene would be larger than the limit.
     pub const SCENE_TOO_LARGE: &str = "scene_too_large";
+    /// An export request names an impossible export; `field` is a JSON pointer into the body.
+    pub const INVALID_EXPORT: &str = "invalid_export";
+    /// The export job queue is full; retry later.
+    pub const TOO_MANY_JOBS: &str = "too_many_jobs";
+    /// No export job has this id (or it was forgotten).
+    pub const JOB_NOT_FOUND: &str = "job_not_found";
+    /// The export job has not finished yet: its archive is not ready.
+    pub const JOB_NOT_DONE: &str = "job_not_done";
+    /// The export job failed: there is no archive.
+    pub const JOB_FAILED: &str = "job_failed";
 }
 
 /// An error answered to the client.

@@ -14,6 +14,7 @@
 //! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w]` | height tile |
 //! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
 //! | `/v1/worlds…` | worlds, scenes, edits, tokens and their products (see [`worlds`]) |
+//! | `POST /v1/worlds/{id}/exports`, `/v1/jobs/{job}[/events\|/archive]` | export jobs (see [`exports`]) |
 //! | `GET /metrics` | Prometheus text format (see [`metrics`]) |
 //! | `GET /*` | the viewer directory (`--web`) |
 //!
@@ -27,6 +28,8 @@
 
 pub mod access;
 pub mod error;
+pub mod exports;
+pub mod jobs;
 pub mod metrics;
 pub mod params;
 mod plans;
@@ -90,6 +93,8 @@ pub struct AppState {
     pub metrics: Arc<metrics::Metrics>,
     /// Finished tiles by input hash (see [`AppState::with_cache`]).
     pub cache: Arc<StageCache>,
+    /// Export jobs (see [`AppState::with_jobs_dir`]).
+    pub jobs: Arc<jobs::Jobs>,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -113,10 +118,28 @@ impl AppState {
             worlds: Arc::new(worlds::Worlds::new(store, None)),
             metrics: Arc::default(),
             cache: Arc::new(StageCache::default()),
+            jobs: Arc::new(jobs::Jobs::new(
+                default_jobs_dir(),
+                jobs::JobLimits::default(),
+            )),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
         }
+    }
+
+    /// Writes export archives to `dir` (created on first use) instead of a directory under
+    /// [`std::env::temp_dir`]. Replaces the job queue, so call it before serving.
+    pub fn with_jobs_dir(mut self, dir: impl Into<PathBuf>) -> Self {
+        self.jobs = Arc::new(jobs::Jobs::new(dir, self.jobs.limits()));
+        self
+    }
+
+    /// Runs export jobs under `limits` (default [`jobs::JobLimits::default`]). Replaces the job
+    /// queue, so call it before serving.
+    pub fn with_job_limits(mut self, limits: jobs::JobLimits) -> Self {
+        self.jobs = Arc::new(jobs::Jobs::new(self.jobs.dir().to_path_buf(), limits));
+        self
     }
 
     /// Keeps finished tiles in `cache` instead of a memory-only cache of
@@ -228,6 +251,12 @@ impl AppState {
     }
 }
 
+/// Where export archives go without [`AppState::with_jobs_dir`]: a directory of this process
+/// under the system temporary directory.
+fn default_jobs_dir() -> PathBuf {
+    std::env::temp_dir().join(format!("strata-exports-{}", std::process::id()))
+}
+
 /// The [`SceneInputs`] of a world with settings `params` and no elements; those of the default
 /// settings (every bare seed's) are built once.
 fn bare_inputs(params: &WorldParams) -> Arc<SceneInputs> {
@@ -283,7 +312,13 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         );
     }
     let mut state = AppState::new(compute)
-        .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose));
+        .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose))
+        .with_jobs_dir(args.data.join("exports"));
+    match state.jobs.sweep() {
+        Ok(0) => {}
+        Ok(n) => tracing::info!("deleted {n} export archives of a previous run"),
+        Err(e) => tracing::warn!("cannot sweep {}: {e}", state.jobs.dir().display()),
+    }
     if let Some(dir) = &args.cache_dir {
         let cache = StageCache::default().with_disk(dir).map_err(|e| {
             anyhow::anyhow!("cannot open the cache directory {}: {e}", dir.display())

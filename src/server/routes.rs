@@ -40,6 +40,7 @@ pub fn router(state: AppState) -> Router {
         .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
         .route("/metrics", get(super::metrics::render))
         .merge(super::worlds::routes())
+        .merge(super::exports::routes())
         .merge(crate::stream::routes::router())
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {

@@ -279,7 +279,7 @@ pub(super) fn routes() -> Router<AppState> {
 }
 
 /// Maps a store failure to its HTTP answer.
-fn store_error(e: StoreError) -> AppError {
+pub(super) fn store_error(e: StoreError) -> AppError {
     match e {
         StoreError::WorldNotFound(id) => world_not_found(&id),
         StoreError::VersionNotFound { version, latest } => AppError::new(
@@ -345,7 +345,11 @@ pub(crate) async fn authorize(
 
 /// Refuses a body whose `Content-Type` is present and not `want` (parameters ignored); with
 /// `required`, a missing `Content-Type` is refused too.
-fn check_content_type(headers: &HeaderMap, want: &str, required: bool) -> Result<(), AppError> {
+pub(super) fn check_content_type(
+    headers: &HeaderMap,
+    want: &str,
+    required: bool,
+) -> Result<(), AppError> {
     let got = headers
         .get(header::CONTENT_TYPE)
         .map(|v| v.to_str().unwrap_or("?"));
@@ -385,7 +389,7 @@ fn pointer_of(path: &serde_path_to_error::Path) -> String {
 
 /// Parses a JSON body; a syntax error blames `body`, a shape error the JSON pointer of the
 /// offending value.
-fn parse_body<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, AppError> {
+pub(super) fn parse_body<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, AppError> {
     let value: Value = serde_json::from_slice(body).map_err(|e| {
         AppError::bad_request(code::BAD_BODY, "body", format!("the body is not JSON: {e}"))
     })?;
@@ -403,7 +407,7 @@ fn parse_body<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, AppError
     })
 }
 
-fn json_response(status: StatusCode, body: Value, cache: &'static str) -> Response {
+pub(super) fn json_response(status: StatusCode, body: Value, cache: &'static str) -> Response {
     let mut res = (status, Json(body)).into_response();
     res.headers_mut()
         .insert(header::CACHE_CONTROL, HeaderValue::from_static(cache));

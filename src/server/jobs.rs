@@ -1,0 +1,629 @@
+//! Export jobs: a small bounded queue of background [`crate::export`] runs, their progress and
+//! their archives on disk.
+//!
+//! A job is admitted as `queued`, waits for one of [`JobLimits::max_running`] run slots (first
+//! come, first served), runs as `running` on the blocking pool (`export::write_archive` into
+//! `<dir>/<job>.tar.part`, renamed to `<dir>/<job>.tar` once complete) and ends `done` or
+//! `failed`. Progress is published on a [`watch`] channel at most every [`PROGRESS_INTERVAL`]
+//! (plus the final count), so any number of followers see the latest state without buffering.
+//!
+//! Limits ([`JobLimits`]): at most [`MAX_RUNNING_JOBS`] jobs run at once; at most
+//! [`MAX_QUEUED_JOBS`] wait, and a job beyond that is refused ([`SubmitError::TooMany`]); the
+//! newest [`MAX_FINISHED_JOBS`] finished jobs are kept, and admitting a job forgets the oldest
+//! finished ones beyond that and deletes their archives. Jobs live in memory: they do not
+//! survive a restart ([`Jobs::sweep`] deletes the archives a previous process left).
+//!
+//! Dropping [`Jobs`] (the server shutting down, a test ending) cancels every job: queued ones
+//! fail at once, running ones at their next archive write.
+
+use crate::export::{self, ExportSpec, Shard};
+use crate::terrain::WorldPlan;
+use serde::Serialize;
+use std::collections::HashMap;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::{Duration, Instant};
+use tokio::sync::{watch, Semaphore};
+
+/// Export jobs running at once (each on `cores / MAX_RUNNING_JOBS` threads, at least one).
+pub const MAX_RUNNING_JOBS: usize = 2;
+/// Export jobs waiting for a run slot; one more is refused (HTTP 429 `too_many_jobs`).
+pub const MAX_QUEUED_JOBS: usize = 16;
+/// Finished jobs (and their archives) kept; older ones are forgotten as new jobs are admitted.
+pub const MAX_FINISHED_JOBS: usize = 64;
+/// Least time between two published progress updates of a job (the final one is always sent).
+pub const PROGRESS_INTERVAL: Duration = Duration::from_millis(100);
+
+/// Limits of a [`Jobs`] queue.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct JobLimits {
+    /// Jobs running at once ([`MAX_RUNNING_JOBS`]).
+    pub max_running: usize,
+    /// Jobs waiting to run ([`MAX_QUEUED_JOBS`]).
+    pub max_queued: usize,
+    /// Finished jobs kept ([`MAX_FINISHED_JOBS`]).
+    pub max_finished: usize,
+}
+
+impl Default for JobLimits {
+    fn default() -> Self {
+        Self {
+            max_running: MAX_RUNNING_JOBS,
+            max_queued: MAX_QUEUED_JOBS,
+            max_finished: MAX_FINISHED_JOBS,
+        }
+    }
+}
+
+/// Where a job is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Status {
+    /// Waiting for a run slot.
+    Queued,
+    /// Writing its archive.
+    Running,
+    /// The archive is complete.
+    Done,
+    /// It stopped; see [`Progress::error`].
+    Failed,
+}
+
+impl Status {
+    /// `queued`, `running`, `done` or `failed`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Queued => "queued",
+            Status::Running => "running",
+            Status::Done => "done",
+            Status::Failed => "failed",
+        }
+    }
+
+    /// Whether the job has ended.
+    pub fn is_finished(self) -> bool {
+        matches!(self, Status::Done | Status::Failed)
+    }
+}
+
+/// The published state of a job.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Progress {
+    /// Where it is.
+    pub status: Status,
+    /// Tiles written.
+    pub done: usize,
+    /// Tiles of the job (its shard).
+    pub total: usize,
+    /// Why it failed.
+    pub error: Option<String>,
+}
+
+/// One export job.
+#[derive(Debug)]
+pub struct Job {
+    /// Random id (32 hex digits).
+    pub id: String,
+    /// The world exported.
+    pub world: String,
+    /// The world version exported.
+    pub version: u64,
+    /// What is exported.
+    pub spec: ExportSpec,
+    /// Which shard.
+    pub shard: Shard,
+    seq: u64,
+    path: PathBuf,
+    state: watch::Sender<Progress>,
+    cancel: AtomicBool,
+}
+
+impl Job {
+    /// The current state.
+    pub fn progress(&self) -> Progress {
+        self.state.borrow().clone()
+    }
+
+    /// A receiver of state changes, the current state marked unseen.
+    pub fn subscribe(&self) -> watch::Receiver<Progress> {
+        let mut rx = self.state.subscribe();
+        rx.mark_changed();
+        rx
+    }
+
+    /// The finished archive, once the job is done.
+    pub fn archive(&self) -> Option<&Path> {
+        (self.state.borrow().status == Status::Done).then_some(self.path.as_path())
+    }
+
+    /// Asks the job to stop: a queued job fails before it runs, a running one at its next write.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+
+    fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+
+    fn fail(&self, error: impl Into<String>) {
+        let error = error.into();
+        tracing::warn!(job = %self.id, world = %self.world, "export failed: {error}");
+        self.state.send_modify(|p| {
+            p.status = Status::Failed;
+            p.error = Some(error);
+        });
+    }
+}
+
+/// Why a job was not admitted.
+#[derive(Debug, thiserror::Error)]
+pub enum SubmitError {
+    /// The queue is full.
+    #[error("{queued} export jobs are already waiting (the limit is {limit}); retry later")]
+    TooMany {
+        /// Jobs waiting.
+        queued: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// No job id could be drawn.
+    #[error("the OS random source failed: {0}")]
+    Random(String),
+}
+
+/// The export jobs of a server.
+pub struct Jobs {
+    dir: PathBuf,
+    limits: JobLimits,
+    threads: usize,
+    slots: Arc<Semaphore>,
+    jobs: Mutex<HashMap<String, Arc<Job>>>,
+    seq: AtomicU64,
+}
+
+impl std::fmt::Debug for Jobs {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Jobs")
+            .field("dir", &self.dir)
+            .field("limits", &self.limits)
+            .field("threads", &self.threads)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Whether `id` has the shape of a job id.
+pub fn valid_job_id(id: &str) -> bool {
+    id.len() == 32 && id.bytes().all(|b| matches!(b, b'0'..=b'9' | b'a'..=b'f'))
+}
+
+fn new_job_id() -> Result<String, SubmitError> {
+    let mut bytes = [0u8; 16];
+    getrandom::fill(&mut bytes).map_err(|e| SubmitError::Random(e.to_string()))?;
+    Ok(bytes.iter().map(|b| format!("{b:02x}")).collect())
+}
+
+impl Jobs {
+    /// Jobs writing their archives to `dir` (created on first use).
+    pub fn new(dir: impl Into<PathBuf>, limits: JobLimits) -> Self {
+        let limits = JobLimits {
+            max_running: limits.max_running.max(1),
+            ..limits
+        };
+        let cores = std::thread::available_parallelism()
+            .map(|n| n.get())
+            .unwrap_or(1);
+        Self {
+            dir: dir.into(),
+            limits,
+            threads: (cores / limits.max_running).max(1),
+            slots: Arc::new(Semaphore::new(limits.max_running)),
+            jobs: Mutex::new(HashMap::new()),
+            seq: AtomicU64::new(0),
+        }
+    }
+
+    /// The archive directory.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    /// The limits in force.
+    pub fn limits(&self) -> JobLimits {
+        self.limits
+    }
+
+    fn jobs(&self) -> MutexGuard<'_, HashMap<String, Arc<Job>>> {
+        self.jobs.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The job `id`, if it is known.
+    pub fn get(&self, id: &str) -> Option<Arc<Job>> {
+        self.jobs().get(id).cloned()
+    }
+
+    /// `(queued, running, finished)` job counts.
+    pub fn counts(&self) -> (usize, usize, usize) {
+        let mut c = (0, 0, 0);
+        for j in self.jobs().values() {
+            match j.state.borrow().status {
+                Status::Queued => c.0 += 1,
+                Status::Running => c.1 += 1,
+                Status::Done | Status::Failed => c.2 += 1,
+            }
+        }
+        c
+    }
+
+    /// Deletes the archives (`<32 hex>.tar` and `.tar.part`) in the directory that no job of
+    /// this process owns: those a previous process left behind. Blocking file I/O.
+    pub fn sweep(&self) -> io::Result<usize> {
+        let entries = match std::fs::read_dir(&self.dir) {
+            Ok(e) => e,
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(0),
+            Err(e) => return Err(e),
+        };
+        let mut removed = 0;
+        for entry in entries {
+            let entry = entry?;
+            let name = entry.file_name();
+            let Some(name) = name.to_str() else { continue };
+            let stem = name
+                .strip_suffix(".tar.part")
+                .or_else(|| name.strip_suffix(".tar"));
+            if stem.is_some_and(|s| valid_job_id(s) && self.get(s).is_none()) {
+                std::fs::remove_file(entry.path())?;
+                removed += 1;
+            }
+        }
+        Ok(removed)
+    }
+
+    /// Admits an export of `spec` (already validated against `plan`) of world `world` at
+    /// `version` and starts it in the background. Needs a tokio runtime.
+    pub fn submit(
+        &self,
+        world: &str,
+        version: u64,
+        plan: Arc<WorldPlan>,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Result<Arc<Job>, SubmitError> {
+        let total = spec.keys(shard).len();
+        let evicted = {
+            let mut jobs = self.jobs();
+            let queued = jobs
+                .values()
+                .filter(|j| j.state.borrow().status == Status::Queued)
+                .count();
+            if queued >= self.limits.max_queued {
+                return Err(SubmitError::TooMany {
+                    queued,
+                    limit: self.limits.max_queued,
+                });
+            }
+            let id = loop {
+                let id = new_job_id()?;
+                if !jobs.contains_key(&id) {
+                    break id;
+                }
+            };
+            let job = Arc::new(Job {
+                path: self.dir.join(format!("{id}.tar")),
+                id: id.clone(),
+                world: world.to_string(),
+                version,
+                spec,
+                shard,
+                seq: self.seq.fetch_add(1, Ordering::Relaxed),
+                state: watch::Sender::new(Progress {
+                    status: Status::Queued,
+                    done: 0,
+                    total,
+                    error: None,
+                }),
+                cancel: AtomicBool::new(false),
+            });
+            let evicted = evict(&mut jobs, self.limits.max_finished);
+            jobs.insert(id, job.clone());
+            (job, evicted)
+        };
+        let (job, evicted) = evicted;
+        if !evicted.is_empty() {
+            tokio::task::spawn_blocking(move || {
+                for path in evicted {
+                    if let Err(e) = std::fs::remove_file(&path) {
+                        if e.kind() != io::ErrorKind::NotFound {
+                            tracing::warn!("cannot delete {}: {e}", path.display());
+                        }
+                    }
+                }
+            });
+        }
+        tracing::info!(
+            job = %job.id, world, version, tiles = total,
+            shard = format!("{}/{}", shard.index + 1, shard.count), "export job queued"
+        );
+        tokio::spawn(run(
+            job.clone(),
+            plan,
+            self.slots.clone(),
+            self.dir.clone(),
+            self.threads,
+        ));
+        Ok(job)
+    }
+}
+
+/// Forgets the oldest finished jobs so that at most `keep - 1` remain; their archive paths.
+fn evict(jobs: &mut HashMap<String, Arc<Job>>, keep: usize) -> Vec<PathBuf> {
+    let mut finished: Vec<(u64, String)> = jobs
+        .values()
+        .filter(|j| j.state.borrow().status.is_finished())
+        .map(|j| (j.seq, j.id.clone()))
+        .collect();
+    if finished.len() < keep.max(1) {
+        return Vec::new();
+    }
+    finished.sort_unstable();
+    let excess = finished.len() + 1 - keep.max(1);
+    finished[..excess]
+        .iter()
+        .filter_map(|(_, id)| jobs.remove(id))
+        .map(|j| j.path.clone())
+        .collect()
+}
+
+impl Drop for Jobs {
+    fn drop(&mut self) {
+        self.slots.close();
+        for job in self.jobs().values() {
+            job.cancel();
+        }
+    }
+}
+
+/// Waits for a run slot, then writes the archive on the blocking pool.
+async fn run(
+    job: Arc<Job>,
+    plan: Arc<WorldPlan>,
+    slots: Arc<Semaphore>,
+    dir: PathBuf,
+    threads: usize,
+) {
+    let Ok(_permit) = slots.acquire_owned().await else {
+        job.fail("the server is shutting down");
+        return;
+    };
+    if job.cancelled() {
+        job.fail("cancelled");
+        return;
+    }
+    job.state.send_modify(|p| p.status = Status::Running);
+    let started = Instant::now();
+    let j = job.clone();
+    let result = tokio::task::spawn_blocking(move || write(&j, &plan, &dir, threads)).await;
+    match result {
+        Ok(Ok(bytes)) => {
+            tracing::info!(
+                job = %job.id, bytes, ms = started.elapsed().as_millis() as u64,
+                "export job done"
+            );
+            job.state.send_modify(|p| {
+                p.status = Status::Done;
+                p.done = p.total;
+            });
+        }
+        Ok(Err(e)) => job.fail(format!("{e:#}")),
+        Err(e) => job.fail(format!("the export panicked: {e}")),
+    }
+}
+
+/// A writer that fails once its job is cancelled, which stops `write_archive`.
+struct Cancellable<'a, W> {
+    inner: W,
+    job: &'a Job,
+}
+
+impl<W: Write> Write for Cancellable<'_, W> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if self.job.cancelled() {
+            return Err(io::Error::other("cancelled"));
+        }
+        self.inner.write(buf)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.inner.flush()
+    }
+}
+
+/// Writes the job's archive; its size in bytes.
+fn write(job: &Job, plan: &WorldPlan, dir: &Path, threads: usize) -> anyhow::Result<u64> {
+    use anyhow::Context;
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let part = job.path.with_extension("tar.part");
+    let attempt = || -> anyhow::Result<u64> {
+        let file =
+            std::fs::File::create(&part).with_context(|| format!("creating {}", part.display()))?;
+        let mut out = BufWriter::new(Cancellable { inner: file, job });
+        let mut last: Option<Instant> = None;
+        export::write_archive(
+            plan,
+            &job.spec,
+            job.shard,
+            threads,
+            &mut out,
+            |done, total| {
+                let now = Instant::now();
+                if done == total || last.is_none_or(|t| now - t >= PROGRESS_INTERVAL) {
+                    last = Some(now);
+                    job.state.send_modify(|p| {
+                        p.done = done;
+                        p.total = total;
+                    });
+                }
+            },
+        )?;
+        let file = out
+            .into_inner()
+            .map_err(|e| e.into_error())
+            .context("writing the archive")?
+            .inner;
+        file.sync_all().context("syncing the archive")?;
+        let bytes = file.metadata()?.len();
+        std::fs::rename(&part, &job.path)
+            .with_context(|| format!("renaming {}", part.display()))?;
+        Ok(bytes)
+    };
+    let result = attempt();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&part);
+    }
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::export::Product;
+    use crate::terrain::WorldParams;
+
+    fn spec(x1: i64) -> ExportSpec {
+        ExportSpec {
+            lod: 3,
+            x0: 0,
+            z0: 0,
+            x1,
+            z1: 1,
+            products: vec![Product::Tiles],
+            formats: vec!["bin".into()],
+        }
+    }
+
+    async fn finished(job: &Job) -> Progress {
+        let mut rx = job.subscribe();
+        let p = rx
+            .wait_for(|p| p.status.is_finished())
+            .await
+            .expect("sender alive");
+        p.clone()
+    }
+
+    async fn started(job: &Job) {
+        job.subscribe()
+            .wait_for(|p| p.status != Status::Queued)
+            .await
+            .expect("sender alive");
+    }
+
+    #[tokio::test]
+    async fn jobs_queue_run_finish_and_are_evicted() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let plan = Arc::new(WorldPlan::new(3, WorldParams::default()).expect("plan"));
+        let limits = JobLimits {
+            max_running: 1,
+            max_queued: 1,
+            max_finished: 2,
+        };
+        let jobs = Jobs::new(dir.path().join("exports"), limits);
+        // A long job holds the only run slot, the next one waits, a third is refused.
+        let long = jobs
+            .submit("w", 1, plan.clone(), spec(400), Shard::WHOLE)
+            .expect("long");
+        started(&long).await;
+        let waiting = jobs
+            .submit("w", 1, plan.clone(), spec(2), Shard::WHOLE)
+            .expect("queued");
+        assert_eq!(waiting.progress().status, Status::Queued);
+        assert_eq!(waiting.progress().total, 2);
+        assert!(waiting.archive().is_none());
+        assert!(matches!(
+            jobs.submit("w", 1, plan.clone(), spec(1), Shard::WHOLE),
+            Err(SubmitError::TooMany {
+                queued: 1,
+                limit: 1
+            })
+        ));
+        long.cancel();
+        let p = finished(&long).await;
+        assert_eq!(p.status, Status::Failed);
+        assert!(
+            p.error.as_deref().is_some_and(|e| e.contains("cancelled")),
+            "{p:?}"
+        );
+        assert!(!long.path.with_extension("tar.part").exists());
+        let p = finished(&waiting).await;
+        assert_eq!((p.status, p.done, p.total), (Status::Done, 2, 2), "{p:?}");
+        let path = waiting.archive().expect("archive").to_path_buf();
+        let members =
+            export::tar::read_members(&std::fs::read(&path).expect("read")).expect("members");
+        assert_eq!(members.len(), 3);
+        assert_eq!(jobs.counts(), (0, 0, 2));
+        // Admitting a job keeps at most `max_finished` finished ones: the oldest (`long`) goes,
+        // and with the next admission `waiting` and its archive go too.
+        let third = jobs
+            .submit("w", 1, plan.clone(), spec(1), Shard::WHOLE)
+            .expect("third");
+        assert!(jobs.get(&long.id).is_none() && jobs.get(&waiting.id).is_some());
+        finished(&third).await;
+        let fourth = jobs
+            .submit("w", 1, plan.clone(), spec(1), Shard::WHOLE)
+            .expect("fourth");
+        assert!(jobs.get(&waiting.id).is_none());
+        finished(&fourth).await;
+        for _ in 0..100 {
+            if !path.exists() {
+                break;
+            }
+            tokio::time::sleep(Duration::from_millis(10)).await;
+        }
+        assert!(!path.exists(), "the evicted archive is deleted");
+        // A stray archive of a previous process is swept; the jobs' own are kept.
+        let stray = jobs.dir().join(format!("{}.tar", "ab".repeat(16)));
+        std::fs::write(&stray, b"x").expect("write");
+        assert_eq!(jobs.sweep().expect("sweep"), 1);
+        assert!(!stray.exists() && fourth.archive().expect("done").exists());
+    }
+
+    #[tokio::test]
+    async fn dropping_the_queue_cancels_its_jobs() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let plan = Arc::new(WorldPlan::new(3, WorldParams::default()).expect("plan"));
+        let limits = JobLimits {
+            max_running: 1,
+            ..JobLimits::default()
+        };
+        let jobs = Jobs::new(dir.path(), limits);
+        let running = jobs
+            .submit("w", 1, plan.clone(), spec(400), Shard::WHOLE)
+            .expect("running");
+        started(&running).await;
+        let queued = jobs
+            .submit("w", 1, plan, spec(400), Shard::WHOLE)
+            .expect("queued");
+        drop(jobs);
+        for job in [&running, &queued] {
+            let p = tokio::time::timeout(Duration::from_secs(60), finished(job))
+                .await
+                .expect("the job stops");
+            assert_eq!(p.status, Status::Failed, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn job_ids() {
+        let id = new_job_id().expect("id");
+        assert!(valid_job_id(&id), "{id}");
+        assert_ne!(id, new_job_id().expect("id"));
+        for bad in [
+            "",
+            "AB".repeat(16).as_str(),
+            "../etc/passwd",
+            &"a".repeat(33),
+        ] {
+            assert!(!valid_job_id(bad), "{bad}");
+        }
+    }
+}
