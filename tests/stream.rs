@@ -385,14 +385,22 @@ async fn edits_invalidate_the_tiles_they_touch_and_fresh_tiles_follow() {
             z: t[2].as_i64().expect("z"),
         })
         .collect();
-    assert_eq!(
-        touched,
-        vec![TileKey { lod: 0, x: 0, z: 0 }],
-        "only the tile under the region"
-    );
+    // The tiles whose inputs the region is in reach of (footprint plus margin), in view order.
+    let region = strata::scene::Rect {
+        min: [10.0, 10.0],
+        max: [20.0, 20.0],
+    };
+    let world = strata::terrain::WorldParams::default();
+    let expected: Vec<TileKey> = view
+        .iter()
+        .map(|t| t.key)
+        .filter(|k| strata::scene::tile_reach(&world, *k).intersects(&region))
+        .collect();
+    assert!(expected.contains(&TileKey { lod: 0, x: 0, z: 0 }) && expected.len() < view.len());
+    assert_eq!(touched, expected, "only the tiles in reach of the region");
     assert_eq!(
         fresh.iter().map(|f| (f.key, f.version)).collect::<Vec<_>>(),
-        vec![(TileKey { lod: 0, x: 0, z: 0 }, 2)]
+        expected.iter().map(|k| (*k, 2)).collect::<Vec<_>>()
     );
 
     // An edit by another editor over HTTP reaches this socket too; a conflicting one is refused.

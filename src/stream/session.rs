@@ -3,7 +3,8 @@
 //! Three things happen concurrently, in one `select!` loop plus a writer task:
 //! - client messages: a new view replaces the pending work (tiles no longer in view are never
 //!   produced), an edit is applied and acknowledged;
-//! - edit events: held tiles whose footprint meets the dirty region are invalidated (one text
+//! - edit events: held tiles whose reach (footprint plus the margin their inputs are read from,
+//!   `scene::tile_reach`) meets the dirty region are invalidated (one text
 //!   message) and queued again, ahead of the rest, in view order;
 //! - production: while work is pending and the queue has room, the next tile is synthesised and
 //!   queued. A full queue stops production (backpressure); a client that does not take a frame
@@ -13,7 +14,7 @@
 use super::protocol::{ClientMessage, ServerMessage, TileFrame};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use crate::encode::Format;
-use crate::scene::{Dirty, Rect};
+use crate::scene::Dirty;
 use crate::server::{routes::encode_tile, AppError, AppState};
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
@@ -87,15 +88,6 @@ fn refused(code: &'static str, field: &'static str, message: impl Into<String>) 
 
 fn text(msg: &ServerMessage) -> Message {
     Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
-}
-
-/// World-space rectangle of a tile, metres.
-fn footprint(key: TileKey, cell_m: f64) -> Rect {
-    let size = 64.0 * cell_m * (1u64 << key.lod) as f64;
-    Rect {
-        min: [key.x as f64 * size, key.z as f64 * size],
-        max: [(key.x + 1) as f64 * size, (key.z + 1) as f64 * size],
-    }
 }
 
 /// Runs a session until the client leaves or is dropped.
@@ -236,7 +228,7 @@ pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSourc
                     Ok(p) => { plan = p; version = new_version; }
                     Err(_) => continue,
                 }
-                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&footprint(t.key, cell_m))).copied().collect();
+                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&crate::scene::tile_reach(&plan.params, t.key))).copied().collect();
                 // Tiles not held stay pending; held tiles the edit does not touch are current.
                 for v in held.values_mut() {
                     *v = version;
