@@ -237,6 +237,74 @@ fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
     }
 }
 
+/// Encoded-body cache, stream clients and their frames, export job queue.
+fn service_gauges(out: &mut String, st: &AppState) {
+    use crate::stream::session::STATS;
+    let (entries, bytes) = st.bodies.size();
+    let lines: [(&str, &str, &str, String); 9] = [
+        (
+            "strata_body_cache_hits_total",
+            "counter",
+            "Product requests answered from the encoded-body cache.",
+            st.bodies.hits.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_body_cache_misses_total",
+            "counter",
+            "Product requests that encoded a body.",
+            st.bodies.misses.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_body_cache_entries",
+            "gauge",
+            "Encoded bodies held.",
+            entries.to_string(),
+        ),
+        (
+            "strata_body_cache_bytes",
+            "gauge",
+            "Bytes of encoded bodies held.",
+            bytes.to_string(),
+        ),
+        (
+            "strata_stream_clients",
+            "gauge",
+            "Connected WebSocket stream clients.",
+            STATS.sessions.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_stream_frames_total",
+            "counter",
+            "Tile frames produced for stream clients.",
+            STATS.frames.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_stream_dropped_slow_total",
+            "counter",
+            "Stream clients closed for not keeping up.",
+            STATS.dropped_slow.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_export_jobs_queued",
+            "gauge",
+            "Export jobs waiting to run.",
+            st.jobs.counts().0.to_string(),
+        ),
+        (
+            "strata_export_jobs_running",
+            "gauge",
+            "Export jobs running.",
+            st.jobs.counts().1.to_string(),
+        ),
+    ];
+    for (name, kind, help, value) in lines {
+        let _ = writeln!(
+            out,
+            "# HELP {name} {help}\n# TYPE {name} {kind}\n{name} {value}"
+        );
+    }
+}
+
 /// `GET /metrics`.
 pub async fn render(State(st): State<AppState>) -> Response {
     let (seed_hits, seed_misses) = st.plans.stats();
@@ -266,6 +334,7 @@ pub async fn render(State(st): State<AppState>) -> Response {
     extra.push_str("# TYPE strata_edit_subscribers gauge\n");
     let _ = writeln!(extra, "strata_edit_subscribers {}", st.worlds.subscribers());
     stage_cache(&mut extra, &st.cache.stats());
+    service_gauges(&mut extra, &st);
     let mut res = st.metrics.render(&extra).into_response();
     let h = res.headers_mut();
     h.insert(

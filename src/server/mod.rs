@@ -27,6 +27,7 @@
 //! run no stage.
 
 pub mod access;
+pub mod bodies;
 pub mod error;
 pub mod exports;
 pub mod jobs;
@@ -93,6 +94,8 @@ pub struct AppState {
     pub metrics: Arc<metrics::Metrics>,
     /// Finished tiles by input hash (see [`AppState::with_cache`]).
     pub cache: Arc<StageCache>,
+    /// Encoded products by input hash and format (see [`bodies`]).
+    pub bodies: Arc<bodies::BodyCache>,
     /// Export jobs (see [`AppState::with_jobs_dir`]).
     pub jobs: Arc<jobs::Jobs>,
     limits: Limits,
@@ -118,6 +121,7 @@ impl AppState {
             worlds: Arc::new(worlds::Worlds::new(store, None)),
             metrics: Arc::default(),
             cache: Arc::new(StageCache::default()),
+            bodies: Arc::default(),
             jobs: Arc::new(jobs::Jobs::new(
                 default_jobs_dir(),
                 jobs::JobLimits::default(),
@@ -181,11 +185,53 @@ impl AppState {
         key: TileKey,
         seams: [bool; 4],
     ) -> Result<Arc<Tile>, AppError> {
-        let inputs = match world {
+        let inputs = self.inputs_for(world, &plan).await?;
+        Ok(self.tile_with_inputs(&inputs, plan, key, seams).await)
+    }
+
+    /// The [`SceneInputs`] of a world version, or of a bare seed's plan.
+    pub async fn inputs_for(
+        &self,
+        world: Option<(&str, u64)>,
+        plan: &WorldPlan,
+    ) -> Result<Arc<SceneInputs>, AppError> {
+        Ok(match world {
             Some((id, version)) => self.worlds.inputs(id, version).await?,
             None => bare_inputs(&plan.params),
-        };
-        Ok(self.tile_with_inputs(&inputs, plan, key, seams).await)
+        })
+    }
+
+    /// A tile encoded in `format`, from the body cache or through the stage cache and an encoder
+    /// in one synthesis slot.
+    pub async fn tile_product(
+        &self,
+        inputs: &Arc<SceneInputs>,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+        format: crate::encode::Format,
+    ) -> Result<Arc<routes::CachedProduct>, AppError> {
+        let body_key = (inputs.tile(plan.seed, key, seams), format.extension());
+        if let Some(p) = self.bodies.get(&body_key) {
+            return Ok(p);
+        }
+        let (state, inputs) = (self.clone(), inputs.clone());
+        let product = self
+            .limited(async move {
+                let tile = state
+                    .tile_with_inputs(&inputs, plan.clone(), key, seams)
+                    .await;
+                tokio::task::spawn_blocking(move || {
+                    routes::encode_tile(&plan, &tile, format).map(|p| {
+                        Arc::new(routes::CachedProduct::new(p.body, p.content_type, p.extra))
+                    })
+                })
+                .await
+                .map_err(|e| AppError::internal(format!("encoding failed: {e}")))?
+            })
+            .await?;
+        self.bodies.insert(body_key, product.clone());
+        Ok(product)
     }
 
     /// A finished tile through the stage cache, given its version's [`SceneInputs`].
@@ -259,7 +305,7 @@ fn default_jobs_dir() -> PathBuf {
 
 /// The [`SceneInputs`] of a world with settings `params` and no elements; those of the default
 /// settings (every bare seed's) are built once.
-fn bare_inputs(params: &WorldParams) -> Arc<SceneInputs> {
+pub(crate) fn bare_inputs(params: &WorldParams) -> Arc<SceneInputs> {
     static DEFAULT: std::sync::OnceLock<Arc<SceneInputs>> = std::sync::OnceLock::new();
     let default = DEFAULT.get_or_init(|| Arc::new(SceneInputs::bare(&WorldParams::default())));
     if default.world() == params {

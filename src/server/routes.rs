@@ -149,14 +149,9 @@ async fn tile(
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
     let seams = parse_seams(query.as_deref())?;
-    let state = st.clone();
+    let inputs = super::bare_inputs(&plan.params);
     let product = st
-        .limited(async move {
-            let tile = state
-                .cached_tile(None, plan.clone(), req.key, seams)
-                .await?;
-            blocking(move || encode_tile(&plan, &tile, req.format)).await?
-        })
+        .tile_product(&inputs, plan, req.key, seams, req.format)
         .await?;
     Ok(product.respond(&headers))
 }
@@ -327,16 +322,50 @@ fn matching_tag(req: &HeaderMap, hash: &str) -> Option<String> {
 impl Product {
     /// 200 with the body, or 304 if `If-None-Match` names it; caching headers on both.
     pub fn respond(self, req: &HeaderMap) -> Response {
-        let hash = content_hash(&self.body);
-        let (mut res, etag) = match matching_tag(req, &hash) {
+        CachedProduct::new(self.body, self.content_type, self.extra).respond(req)
+    }
+}
+
+/// A product with its content hash computed once, shared by every answer that serves it.
+#[derive(Debug, Clone)]
+pub struct CachedProduct {
+    /// The bytes (reference counted: answering clones no bytes).
+    pub body: axum::body::Bytes,
+    /// Content hash, the ETag's value.
+    pub hash: String,
+    /// `Content-Type`.
+    pub content_type: &'static str,
+    /// Extra headers (`X-Strata-*`).
+    pub extra: Vec<(HeaderName, String)>,
+}
+
+impl CachedProduct {
+    /// Hashes `body` once.
+    pub fn new(
+        body: Vec<u8>,
+        content_type: &'static str,
+        extra: Vec<(HeaderName, String)>,
+    ) -> Self {
+        Self {
+            hash: content_hash(&body),
+            body: body.into(),
+            content_type,
+            extra,
+        }
+    }
+
+    /// The answer: 200 with the body, or 304 when `If-None-Match` names it; with the ETag and
+    /// cache headers.
+    pub fn respond(&self, req: &HeaderMap) -> Response {
+        let (mut res, etag) = match matching_tag(req, &self.hash) {
             Some(tag) => (StatusCode::NOT_MODIFIED.into_response(), tag),
             None => {
-                let mut res = (StatusCode::OK, self.body).into_response();
+                let mut res = (StatusCode::OK, self.body.clone()).into_response();
                 res.headers_mut().insert(
                     header::CONTENT_TYPE,
                     HeaderValue::from_static(self.content_type),
                 );
-                (res, format!("\"{hash}\""))
+                (res, format!("\"{}\"", self.hash))
             }
         };
         let h = res.headers_mut();
@@ -356,9 +385,9 @@ impl Product {
             header::X_CONTENT_TYPE_OPTIONS,
             HeaderValue::from_static("nosniff"),
         );
-        for (name, value) in self.extra {
-            if let Ok(v) = HeaderValue::from_str(&value) {
-                h.insert(name, v);
+        for (name, value) in &self.extra {
+            if let Ok(v) = HeaderValue::from_str(value) {
+                h.insert(name.clone(), v);
             }
         }
         res

@@ -27,7 +27,7 @@ use super::error::{code, AppError};
 use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
 };
-use super::routes::{encode_tile, Product, IMMUTABLE};
+use super::routes::{Product, IMMUTABLE};
 use super::AppState;
 use crate::encode::{self, Format};
 use crate::scene::{Dirty, Scene, SceneInputs};
@@ -879,15 +879,8 @@ async fn tile(
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
     let seams = parse_seams(query.as_deref())?;
-    let (state, plan, inputs) = (st.clone(), p.plan.clone(), p.inputs.clone());
-    let (key, format) = (p.key, p.format);
     let product = st
-        .limited(async move {
-            let tile = state
-                .tile_with_inputs(&inputs, plan.clone(), key, seams)
-                .await;
-            blocking(move || encode_tile(&plan, &tile, format)).await?
-        })
+        .tile_product(&p.inputs, p.plan.clone(), p.key, seams, p.format)
         .await?;
     Ok(finish_product(&p, product.respond(&headers)))
 }

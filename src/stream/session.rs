@@ -15,7 +15,7 @@ use super::protocol::{ClientMessage, ServerMessage, TileFrame};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use crate::encode::Format;
 use crate::scene::Dirty;
-use crate::server::{routes::encode_tile, AppError, AppState};
+use crate::server::{AppError, AppState};
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
 use futures::{SinkExt, StreamExt};
@@ -254,10 +254,12 @@ pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSourc
                 let world = source.world().map(|id| (id.to_owned(), version));
                 let job = async move {
                     let world = world.as_ref().map(|(id, v)| (id.as_str(), *v));
-                    let tile = s.cached_tile(world, p.clone(), t.key, t.seams).await?;
-                    encode_tile(&p, &tile, format).map(|prod| prod.body)
+                    let inputs = s.inputs_for(world, &p).await?;
+                    // Through the body cache: clients streaming the same area share encodings.
+                    let product = s.tile_product(&inputs, p, t.key, t.seams, format).await?;
+                    Ok::<_, AppError>(product.body.to_vec())
                 };
-                match state.limited(job).await {
+                match job.await {
                     Ok(payload) => {
                         permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
                         held.insert(t.key, version);
