@@ -96,6 +96,8 @@ pub struct CacheStats {
     pub misses: u64,
     /// Runs of each stage, indexed like [`Stage::ALL`] (`field`, `snap`, `finish`).
     pub runs: [u64; 3],
+    /// Time spent in each stage (wall clock, including queueing on the blocking pool), µs.
+    pub micros: [u64; 3],
     /// Tiles evicted from memory to stay within the budget.
     pub evictions: u64,
     /// Tiles in memory.
@@ -114,6 +116,11 @@ impl CacheStats {
     /// Runs of one stage.
     pub fn runs_of(&self, stage: Stage) -> u64 {
         self.runs[stage.index()]
+    }
+
+    /// Seconds spent in one stage.
+    pub fn seconds_of(&self, stage: Stage) -> f64 {
+        self.micros[stage.index()] as f64 * 1e-6
     }
 }
 
@@ -196,6 +203,7 @@ struct Counters {
     joined: AtomicU64,
     misses: AtomicU64,
     runs: [AtomicU64; 3],
+    micros: [AtomicU64; 3],
     evictions: AtomicU64,
 }
 
@@ -303,8 +311,9 @@ impl StageCache {
     }
 
     /// Counts one run of `stage`.
-    pub fn record_run(&self, stage: Stage) {
+    pub fn record_run(&self, stage: Stage, took: std::time::Duration) {
         self.counters.runs[stage.index()].fetch_add(1, Ordering::Relaxed);
+        self.counters.micros[stage.index()].fetch_add(took.as_micros() as u64, Ordering::Relaxed);
     }
 
     /// The counters and sizes now.
@@ -330,6 +339,7 @@ impl StageCache {
             joined: c.joined.load(Ordering::Relaxed),
             misses: c.misses.load(Ordering::Relaxed),
             runs: std::array::from_fn(|i| c.runs[i].load(Ordering::Relaxed)),
+            micros: std::array::from_fn(|i| c.micros[i].load(Ordering::Relaxed)),
             evictions: c.evictions.load(Ordering::Relaxed),
             entries,
             bytes,

@@ -130,22 +130,24 @@ impl Compute {
         coarser: [bool; 4],
         counts: Option<&StageCache>,
     ) -> Tile {
-        let count = |stage| {
+        let count = |stage, since: std::time::Instant| {
             if let Some(c) = counts {
-                c.record_run(stage);
+                c.record_run(stage, since.elapsed());
             }
         };
         let n = TILE_VERTS + 2;
+        let started = std::time::Instant::now();
         let f = self
             .field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n)
             .await;
-        count(Stage::Field);
+        count(Stage::Field, started);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
+                let started = std::time::Instant::now();
                 strips.push((*edge, self.field(plan.clone(), lod, gx0, gz0, w, h).await));
-                count(Stage::Snap);
+                count(Stage::Snap, started);
             }
         }
         let job = move || {
@@ -155,11 +157,12 @@ impl Compute {
             }
             t
         };
+        let started = std::time::Instant::now();
         let t = match tokio::task::spawn_blocking(job).await {
             Ok(t) => t,
             Err(e) => std::panic::resume_unwind(e.into_panic()),
         };
-        count(Stage::Finish);
+        count(Stage::Finish, started);
         t
     }
 }

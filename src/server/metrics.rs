@@ -13,6 +13,7 @@
 //! | `strata_stage_cache_hits_total` (counter) | `tier`: `memory`, `disk`, `inflight` (joined a computation under way) |
 //! | `strata_stage_cache_misses_total` (counter): tiles computed | |
 //! | `strata_stage_runs_total` (counter) | `stage`: `field`, `snap`, `finish` |
+//! | `strata_stage_seconds_total` (counter) | `stage` |
 //! | `strata_stage_cache_evictions_total`, `strata_stage_cache_disk_writes_total`, `strata_stage_cache_disk_errors_total` (counters) | |
 //! | `strata_stage_cache_bytes`, `strata_stage_cache_budget_bytes`, `strata_stage_cache_entries` (gauges) | |
 
@@ -185,6 +186,16 @@ fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
             "strata_stage_runs_total{{stage=\"{}\"}} {}",
             stage.name(),
             s.runs_of(stage)
+        );
+    }
+    out.push_str("# HELP strata_stage_seconds_total Time spent in each stage of tile synthesis.\n");
+    out.push_str("# TYPE strata_stage_seconds_total counter\n");
+    for stage in crate::cache::Stage::ALL {
+        let _ = writeln!(
+            out,
+            "strata_stage_seconds_total{{stage=\"{}\"}} {:.6}",
+            stage.name(),
+            s.seconds_of(stage)
         );
     }
     for (name, kind, help, v) in [
