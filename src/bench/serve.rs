@@ -158,6 +158,22 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         &format!("http://127.0.0.1:{nginx_port}{TILE_PATH}"),
         seconds,
     );
+    // `-s stop` makes the master stop its workers; a killed master would orphan them.
+    let _ = Command::new("nginx")
+        .args([
+            "-p",
+            &dir.display().to_string(),
+            "-c",
+            &conf.display().to_string(),
+            "-s",
+            "stop",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status();
+    if tokio::runtime::Handle::try_current().is_err() {
+        std::thread::sleep(Duration::from_millis(200));
+    }
     let _ = nginx.kill();
     let _ = nginx.wait();
     let _ = std::fs::remove_dir_all(&dir);

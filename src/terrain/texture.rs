@@ -119,11 +119,16 @@ pub fn proto_texture_batch(
     );
     let blend = plan.height_blend_m;
     let inv_blend = 1.0 / blend;
+    // A tile inside one biome (weights exactly one-hot everywhere): the same weights, without the
+    // per-material rows.
+    let single = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0));
+    if let Some(b) = single {
+        single_biome(plan, b, heights, normal_y, out);
+        return;
+    }
     // Structure of arrays, one row per material, so every loop below vectorises.
     let mut mat = vec![0.0f32; MATERIALS.len() * n];
-    // Biome-major weights, so the per-biome loops read contiguous memory; a tile inside one biome
-    // (weights exactly one-hot everywhere) gets them without the transpose.
-    let single = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0));
+    // Biome-major weights, so the per-biome loops read contiguous memory.
     let mut wt = vec![0.0f32; k * n];
     match single {
         Some(b) => wt[b * n..(b + 1) * n].fill(1.0),
@@ -190,6 +195,41 @@ pub fn proto_texture_batch(
     }
 }
 
+/// [`proto_texture_batch`] where every vertex is entirely biome `b`: each material's weight is
+/// the same expression as in the general path (`0 + 1·rest` is `rest`), so the same argmax.
+fn single_biome(plan: &TexturePlan, b: usize, heights: &[f32], normal_y: &[f32], out: &mut [u8]) {
+    let blend = plan.height_blend_m;
+    let inv_blend = 1.0 / blend;
+    let line = 0.0 + plan.snow_line_m[b];
+    let ground = plan.ground[b] as usize;
+    for ((h, ny), o) in heights.iter().zip(normal_y).zip(out.iter_mut()) {
+        let h = *h;
+        let above = h - plan.sea_level_m;
+        let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+        let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, *ny) * (1.0 - wet);
+        let snow = smoothstep_inv(line - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
+        let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above))
+            * (1.0 - wet)
+            * (1.0 - rock);
+        let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+        let mut m = [0.0f32; MATERIALS.len()];
+        m[material::SEABED as usize] = wet;
+        m[material::ROCK as usize] = rock;
+        m[material::SNOW as usize] = snow;
+        m[material::SAND as usize] = beach;
+        m[ground] += rest;
+        let mut best = 0u8;
+        let mut top = m[0];
+        for (id, &w) in m.iter().enumerate().skip(1) {
+            if w > top {
+                top = w;
+                best = id as u8;
+            }
+        }
+        *o = best;
+    }
+}
+
 /// The dominant material id of a vertex.
 pub fn proto_texture(plan: &TexturePlan, s: &Surface) -> u8 {
     let w = material_weights(plan, s);
@@ -236,6 +276,30 @@ mod tests {
             ..flat
         };
         assert_eq!(proto_texture(&p, &high), material::SNOW);
+    }
+
+    #[test]
+    fn single_biome_path_equals_the_general_one() {
+        let params = WorldParams::default();
+        let p = TexturePlan::new(&params);
+        let n = 400;
+        let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.3 - 60.0).collect();
+        let ny: Vec<f32> = (0..n).map(|i| 0.3 + (i % 17) as f32 * 0.04).collect();
+        for b in 0..params.biomes.len() {
+            let weights: Vec<f32> = (0..n * 4)
+                .map(|i| if i % 4 == b { 1.0 } else { 0.0 })
+                .collect();
+            let mut fast = vec![0u8; n];
+            proto_texture_batch(&p, &heights, &ny, &weights, &mut fast);
+            for v in 0..n {
+                let s = Surface {
+                    height_m: heights[v],
+                    normal_y: ny[v],
+                    weights: &weights[v * 4..v * 4 + 4],
+                };
+                assert_eq!(fast[v], proto_texture(&p, &s), "biome {b} vertex {v}");
+            }
+        }
     }
 
     #[test]
