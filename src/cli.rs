@@ -109,6 +109,11 @@ pub struct BenchArgs {
 pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Command::Serve(args) => {
+            // Mesa's drivers complain on every adapter probe without it. Set before any thread
+            // exists, so nothing reads the environment concurrently.
+            if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+                std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+            }
             tracing_subscriber::fmt()
                 .with_env_filter(
                     tracing_subscriber::EnvFilter::try_from_default_env()
