@@ -17,4 +17,5 @@ pub mod scene;
 pub mod server;
 pub mod store;
 pub mod stream;
+pub mod subsurface;
 pub mod terrain;

@@ -5,9 +5,11 @@
 //! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process. With `--json` each
 //! figure is one JSON object per line, units in the key names.
 //!
-//! `strata bench serve` (issue 3) is in [`serve`].
+//! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
+//! subsurface) in [`strata`].
 
 pub mod serve;
+pub mod strata;
 
 use crate::cli::BenchArgs;
 use crate::terrain::fractal::fbm_batch;
@@ -26,7 +28,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match args.name.as_str() {
         "tiles" => tiles(args),
         "serve" => serve::run(args),
-        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles, serve"),
+        "strata" => strata::run(args),
+        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles, serve, strata"),
     }
 }
 

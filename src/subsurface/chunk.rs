@@ -1,0 +1,329 @@
+//! §3 and §4.3: chunks of columns of stacked limits, with blend zones between layers, and a
+//! voxel's composition by interpolation between the limits around it.
+
+use super::plan::{Composition, Element, ElementKind, SubsurfacePlan};
+
+/// Largest chunk side (limits store their height in a byte).
+pub const MAX_CHUNK: u32 = 64;
+
+/// Chunk coordinates: the chunk covers voxels `[x·size, (x+1)·size)` on each axis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ChunkKey {
+    /// Chunk x.
+    pub x: i32,
+    /// Chunk y (0 holds the voxels just above and below the mean surface at y = 0).
+    pub y: i32,
+    /// Chunk z.
+    pub z: i32,
+}
+
+/// A mixture of two palette entries: `(1 − t)·palette[lo] + t·palette[hi]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mix {
+    /// First palette entry.
+    pub lo: u16,
+    /// Second palette entry.
+    pub hi: u16,
+    /// Weight of `hi`.
+    pub t: f32,
+}
+
+impl Mix {
+    fn pure(i: u16) -> Mix {
+        Mix {
+            lo: i,
+            hi: i,
+            t: 0.0,
+        }
+    }
+    fn weight(&self, i: u16) -> f32 {
+        let mut w = 0.0;
+        if self.lo == i {
+            w += 1.0 - self.t;
+        }
+        if self.hi == i {
+            w += self.t;
+        }
+        w
+    }
+}
+
+/// A limit: the volume's properties at voxel height `y` of its column (§3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Limit {
+    /// Voxel height within the column, `0..size`.
+    pub y: u8,
+    /// Composition, as a mixture of palette entries.
+    pub mix: Mix,
+}
+
+/// A chunk: `size × size` columns of stacked limits; each column has its bottom and top limits
+/// and at most `size` limits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chunk {
+    /// Where it is.
+    pub key: ChunkKey,
+    /// Voxels per side.
+    pub size: u32,
+    /// Compositions the limits mix: the void, then every layer bottom up, then the chunk's
+    /// veins and caves.
+    pub palette: Vec<Composition>,
+    /// Limits per column; column `(i, k)` (x, z) is number `k·size + i`.
+    pub counts: Vec<u8>,
+    /// All limits, column after column, bottom up.
+    pub limits: Vec<Limit>,
+    starts: Vec<u32>,
+}
+
+struct Placed {
+    element: Element,
+    palette: u16,
+}
+
+/// Composition of a voxel centre at height `y` of a column with layer tops `tops`: the layer it
+/// lies in, the blend zone at a layer's bottom (§4.3: blend × local thickness, mixing linearly
+/// from the layer below), void above the top layer, and veins then caves over both.
+fn sample(plan: &SubsurfacePlan, tops: &[f32], spans: &[(f32, f32, u16)], y: f32) -> Mix {
+    for &(lo, hi, p) in spans.iter().rev() {
+        if y >= lo && y < hi {
+            return Mix::pure(p);
+        }
+    }
+    let Some(k) = tops.iter().position(|&t| y < t) else {
+        return Mix::pure(0);
+    };
+    let layer = (k + 1) as u16;
+    if k > 0 {
+        let bottom = tops[k - 1];
+        let zone = plan.layers[k].blend * (tops[k] - bottom);
+        if y < bottom + zone {
+            return Mix {
+                lo: layer - 1,
+                hi: layer,
+                t: (y - bottom) / zone,
+            };
+        }
+    }
+    Mix::pure(layer)
+}
+
+/// Whether `m` equals the interpolation of `a` and `b` at fraction `f`, for every palette entry.
+fn on_line(a: Mix, b: Mix, m: Mix, f: f32) -> bool {
+    [a.lo, a.hi, b.lo, b.hi, m.lo, m.hi].iter().all(|&i| {
+        let w = a.weight(i) * (1.0 - f) + b.weight(i) * f;
+        (w - m.weight(i)).abs() <= 1e-5
+    })
+}
+
+impl SubsurfacePlan {
+    /// The elements (veins first, then caves) whose cells meet the square `[x0, x0+size)²`.
+    fn elements_near(&self, x0: f32, z0: f32, size: f32) -> Vec<Element> {
+        let mut out = Vec::new();
+        for kind in [ElementKind::Vein, ElementKind::Cave] {
+            let side = self.cell_side(kind);
+            let (i0, i1) = (
+                (x0 / side).floor() as i32,
+                ((x0 + size) / side).floor() as i32,
+            );
+            let (k0, k1) = (
+                (z0 / side).floor() as i32,
+                ((z0 + size) / side).floor() as i32,
+            );
+            for k in k0..=k1 {
+                for i in i0..=i1 {
+                    if let Some(e) = self.element(kind, (i, k)) {
+                        out.push(e);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Generates one chunk from the plan alone: the same bytes whatever else was generated,
+    /// in whatever order, on whatever thread.
+    pub fn chunk(&self, key: ChunkKey, size: u32) -> Chunk {
+        let size = size.clamp(1, MAX_CHUNK);
+        let s = size as f32;
+        let (x0, y0, z0) = (key.x as f32 * s, key.y as f32 * s, key.z as f32 * s);
+        let mut palette: Vec<Composition> = vec![vec![(self.void_id, 1.0)]];
+        palette.extend(self.layers.iter().map(|l| l.composition.clone()));
+        let placed: Vec<Placed> = self
+            .elements_near(x0, z0, s)
+            .into_iter()
+            .map(|element| {
+                palette.push(element.composition.clone());
+                Placed {
+                    element,
+                    palette: (palette.len() - 1) as u16,
+                }
+            })
+            .collect();
+        let n = size as usize;
+        let mut counts = Vec::with_capacity(n * n);
+        let mut limits = Vec::with_capacity(n * n * 3);
+        let mut starts = Vec::with_capacity(n * n);
+        let mut tops = Vec::with_capacity(self.layers.len());
+        let mut spans = Vec::with_capacity(placed.len());
+        let mut column = vec![Mix::pure(0); n];
+        for k in 0..n {
+            for i in 0..n {
+                let (x, z) = (x0 + i as f32 + 0.5, z0 + k as f32 + 0.5);
+                self.tops(x, z, &mut tops);
+                spans.clear();
+                for p in &placed {
+                    if let Some(h) = p.element.height_at(x, z) {
+                        let lo = tops[p.element.host];
+                        spans.push((lo, lo + h, p.palette));
+                    }
+                }
+                for (j, m) in column.iter_mut().enumerate() {
+                    *m = sample(self, &tops, &spans, y0 + j as f32 + 0.5);
+                }
+                starts.push(limits.len() as u32);
+                let before = limits.len();
+                let mut a = 0usize;
+                limits.push(Limit {
+                    y: 0,
+                    mix: column[0],
+                });
+                while a + 1 < n {
+                    let mut b = a + 1;
+                    while b + 1 < n {
+                        let c = b + 1;
+                        let ok = (a + 1..c).all(|j| {
+                            on_line(
+                                column[a],
+                                column[c],
+                                column[j],
+                                (j - a) as f32 / (c - a) as f32,
+                            )
+                        });
+                        if !ok {
+                            break;
+                        }
+                        b = c;
+                    }
+                    limits.push(Limit {
+                        y: b as u8,
+                        mix: column[b],
+                    });
+                    a = b;
+                }
+                counts.push((limits.len() - before) as u8);
+            }
+        }
+        Chunk {
+            key,
+            size,
+            palette,
+            counts,
+            limits,
+            starts,
+        }
+    }
+
+    /// Composition of the world voxel `(x, y, z)` evaluated directly, without chunks.
+    pub fn voxel(&self, x: i32, y: i32, z: i32) -> Composition {
+        let (xc, zc) = (x as f32 + 0.5, z as f32 + 0.5);
+        let mut palette: Vec<Composition> = vec![vec![(self.void_id, 1.0)]];
+        palette.extend(self.layers.iter().map(|l| l.composition.clone()));
+        let mut tops = Vec::new();
+        self.tops(xc, zc, &mut tops);
+        let mut spans = Vec::new();
+        for e in self.elements_near(x as f32, z as f32, 0.0) {
+            if let Some(h) = e.height_at(xc, zc) {
+                palette.push(e.composition.clone());
+                let lo = tops[e.host];
+                spans.push((lo, lo + h, (palette.len() - 1) as u16));
+            }
+        }
+        let m = sample(self, &tops, &spans, y as f32 + 0.5);
+        materials(&palette, &[(m.lo, 1.0 - m.t), (m.hi, m.t)])
+    }
+}
+
+/// Expands weighted palette entries into materials, merged by id and sorted.
+fn materials(palette: &[Composition], weights: &[(u16, f32)]) -> Composition {
+    let mut out: Composition = Vec::new();
+    for &(p, w) in weights {
+        if w == 0.0 {
+            continue;
+        }
+        for &(id, c) in &palette[p as usize] {
+            match out.iter_mut().find(|e| e.0 == id) {
+                Some(e) => e.1 += w * c,
+                None => out.push((id, w * c)),
+            }
+        }
+    }
+    out.sort_by_key(|e| e.0);
+    out
+}
+
+impl Chunk {
+    /// The limits of column `(i, k)`.
+    pub fn column(&self, i: u32, k: u32) -> &[Limit] {
+        let c = (k * self.size + i) as usize;
+        let s = self.starts[c] as usize;
+        &self.limits[s..s + self.counts[c] as usize]
+    }
+
+    /// Composition of voxel `(i, j, k)` of the chunk (local coordinates): the limit's when a limit
+    /// is at that height, otherwise linear interpolation between the limits below and above.
+    pub fn voxel(&self, i: u32, j: u32, k: u32) -> Composition {
+        let col = self.column(i, k);
+        let above = col
+            .iter()
+            .position(|l| u32::from(l.y) >= j)
+            .unwrap_or(col.len() - 1);
+        let hi = col[above];
+        if u32::from(hi.y) == j || above == 0 {
+            return materials(
+                &self.palette,
+                &[(hi.mix.lo, 1.0 - hi.mix.t), (hi.mix.hi, hi.mix.t)],
+            );
+        }
+        let lo = col[above - 1];
+        let f = (j - u32::from(lo.y)) as f32 / (u32::from(hi.y) - u32::from(lo.y)) as f32;
+        materials(
+            &self.palette,
+            &[
+                (lo.mix.lo, (1.0 - lo.mix.t) * (1.0 - f)),
+                (lo.mix.hi, lo.mix.t * (1.0 - f)),
+                (hi.mix.lo, (1.0 - hi.mix.t) * f),
+                (hi.mix.hi, hi.mix.t * f),
+            ],
+        )
+    }
+
+    /// Voxels in the chunk.
+    pub fn voxel_count(&self) -> usize {
+        (self.size * self.size * self.size) as usize
+    }
+
+    /// Canonical little-endian bytes: key, size, palette, limit counts, limits.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut b = Vec::with_capacity(16 + self.limits.len() * 11 + self.counts.len());
+        for v in [self.key.x, self.key.y, self.key.z] {
+            b.extend_from_slice(&v.to_le_bytes());
+        }
+        b.extend_from_slice(&self.size.to_le_bytes());
+        b.extend_from_slice(&(self.palette.len() as u32).to_le_bytes());
+        for comp in &self.palette {
+            b.extend_from_slice(&(comp.len() as u32).to_le_bytes());
+            for &(id, c) in comp {
+                b.extend_from_slice(&id.to_le_bytes());
+                b.extend_from_slice(&c.to_bits().to_le_bytes());
+            }
+        }
+        b.extend_from_slice(&self.counts);
+        for l in &self.limits {
+            b.push(l.y);
+            b.extend_from_slice(&l.mix.lo.to_le_bytes());
+            b.extend_from_slice(&l.mix.hi.to_le_bytes());
+            b.extend_from_slice(&l.mix.t.to_bits().to_le_bytes());
+        }
+        b
+    }
+}

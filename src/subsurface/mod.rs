@@ -1,0 +1,66 @@
+//! The layered subsurface: strata of mixed materials, mineral veins and caves, after
+//! Santamaría-Ibirika, Cantero, Huerta, Salaberria and Lazcano, *Procedural approach to volumetric
+//! terrain generation* (The Visual Computer, 2014; `../shared/papers/santamaria-procedural-volumetric-terrain.txt`).
+//!
+//! Pure, like [`crate::terrain`]: no tokio, axum or wgpu, and the only randomness is
+//! [`crate::terrain::hash`] (purposes in [`plan::purpose`]) and the world-anchored lattice noise
+//! [`crate::terrain::noise::lattice`].
+//!
+//! - [`config`] — §4.1's input: materials (name, id, colour, texture, the void/base/alone/vein/cave
+//!   flags, area, depth/thickness/roughness ranges with an optimum, similarity, blend), affinity
+//!   pairs (same layer, next layer, −1 incompatible) and the general parameters; validation names
+//!   the offending field by JSON pointer; Table 2's configurations A0–B3 as presets. Schema:
+//!   `api/subsurface.schema.json`.
+//! - [`plan`] — §4.2: the layer stack from the base up (Eq. 1–2 over the materials not
+//!   incompatible with the layer below, extra materials with probability 0.5, halving; main
+//!   concentration 0.5–0.9, the others random, summing to 1), the layer properties (Eq. 3), the
+//!   layer surfaces (Eq. 4), and veins and caves: bounding square of side `area/2…area` times the
+//!   Eq. 3 relative area, the midpoint-displacement outline of depth 5 (Eq. 5), the circular
+//!   height profile (Eq. 6) on top of the host layer.
+//! - [`chunk`] — §3: chunks of `size × size` columns of stacked limits (at least the bottom and
+//!   top voxel, at most `size`), a voxel's composition by interpolation between the limits around
+//!   it; §4.3's blend zones (blend × local thickness at a layer's bottom, mixing linearly from the
+//!   layer below).
+//!
+//! # Faithful, and where it deviates
+//!
+//! Faithful: the input data, Eq. 1–6, the probability-0.5-halving extra materials, the 0.5–0.9
+//! main concentration, depth-5 outlines, blend zones, and the chunk/column/limit representation
+//! with interpolation between limits.
+//!
+//! Deviations, and why:
+//! - **Order independence instead of §4.2.4's online extension.** The paper extends a terrain plot
+//!   by plot, drawing the number of veins and caves from the first plot's and interleaving them
+//!   in a stack, so a plot depends on what was generated before. Here the layer stack is a
+//!   function of the world seed alone (the whole world shares it: layers are infinite sheets
+//!   whose surfaces come from world-anchored noise), and veins and caves live on world lattices
+//!   (cell side = `vein_area` / `cave_area`): a cell holds an element with probability
+//!   `vein_density` / `cave_density`, decided by hashing the seed and the cell, and its bounding
+//!   square lies inside the cell. Any chunk is generated alone, in any order, on any thread, with
+//!   identical bytes. Densities are therefore per lattice cell, and an element's host layer is
+//!   drawn uniformly among all but the top layer rather than from the paper's stacking chance.
+//! - Layer surfaces use strata's quintic-interpolated Gaussian lattice noise (the paper's Perlin
+//!   noise) with `scale` as frequency; a layer whose surface would dip below the one underneath
+//!   pinches out (zero thickness) — the paper does not say what happens there.
+//! - Range-valued properties (thickness, roughness) are drawn per material from a triangular
+//!   distribution on `[min, max]` peaked at the optimum before Eq. 3; the depth range filters the
+//!   candidates of a layer by its relative depth (0 surface, 1 bottom), ignored when it leaves
+//!   none. The paper names these ranges without saying how they are sampled.
+//! - Eq. 5's constants come from the element's roughness `r`: `d₀ = 0.2·r` (unit square) and
+//!   `SmoothConstant = 2 − r`; outline points are clamped to the bounding square. Eq. 6's distance
+//!   is normalised by the distance from the square's centre to the outline, capped at 1.
+//! - Limits sit at voxel centres and store a mixture of two palette entries (layer, blend pair,
+//!   vein, cave or void); a column keeps the fewest limits that reproduce every voxel by
+//!   interpolation (within 1e-5).
+//! - Veins and caves override the layers they intrude into (the layers above are not pushed
+//!   up), and caves override veins.
+//! - Not implemented yet: the material flow vectors (§4.2.1's last step) and everything outside
+//!   this module (HTTP routes, scene element, caves carving volume chunks).
+
+pub mod chunk;
+pub mod config;
+pub mod plan;
+
+pub use chunk::{Chunk, ChunkKey, Limit, Mix};
+pub use config::{ConfigError, SubsurfaceConfig, PRESETS};
+pub use plan::{Composition, Element, ElementKind, Layer, SubsurfacePlan};
