@@ -123,9 +123,13 @@ fn base_layer_at_the_bottom_and_incompatible_materials_never_adjacent() {
 
 #[test]
 fn voxel_queries_interpolate_the_stored_limits_and_match_the_direct_evaluation() {
-    for plan in plans().into_iter().step_by(2) {
-        let key = ChunkKey { x: -1, y: -1, z: 2 };
+    let (mut with_elements, mut blended) = (0, 0);
+    for (plan, key) in plans().iter().flat_map(|p| {
+        [(-1, -1, 2), (0, -2, 0), (1, -3, 1), (2, 0, -1)].map(|(x, y, z)| (p, ChunkKey { x, y, z }))
+    }) {
         let chunk = plan.chunk(key, SIZE);
+        with_elements += usize::from(chunk.palette.len() > plan.layers.len() + 1);
+        blended += usize::from(chunk.limits.iter().any(|l| l.mix.lo != l.mix.hi));
         let mut limits = 0;
         for k in 0..SIZE {
             for i in 0..SIZE {
@@ -179,6 +183,10 @@ fn voxel_queries_interpolate_the_stored_limits_and_match_the_direct_evaluation()
         }
         assert!(limits < chunk.voxel_count());
     }
+    assert!(
+        with_elements > 10 && blended > 10,
+        "{with_elements} {blended}"
+    );
 }
 
 #[test]
@@ -302,5 +310,60 @@ fn presets_generate_layers_veins_and_caves() {
             !name.ends_with(['2', '3']),
             "{name} caves {caves}"
         );
+    }
+}
+
+/// Every key a preset serialises is declared by `api/subsurface.schema.json`, and every key the
+/// schema requires is serialised (a light consistency check; CI has no JSON Schema validator).
+#[test]
+fn schema_declares_the_configuration_fields() {
+    let schema: serde_json::Value =
+        serde_json::from_str(include_str!("../api/subsurface.schema.json")).expect("schema");
+    fn resolve<'a>(
+        schema: &'a serde_json::Value,
+        node: &'a serde_json::Value,
+    ) -> &'a serde_json::Value {
+        match node.get("$ref").and_then(|r| r.as_str()) {
+            Some(r) => resolve(schema, &schema["$defs"][r.trim_start_matches("#/$defs/")]),
+            None => node,
+        }
+    }
+    fn check(
+        schema: &serde_json::Value,
+        node: &serde_json::Value,
+        value: &serde_json::Value,
+        path: &str,
+    ) {
+        let node = resolve(schema, node);
+        match value {
+            serde_json::Value::Object(map) => {
+                let props = node["properties"]
+                    .as_object()
+                    .unwrap_or_else(|| panic!("{path}: no properties"));
+                for (k, v) in map {
+                    let p = props
+                        .get(k)
+                        .unwrap_or_else(|| panic!("{path}/{k} not in the schema"));
+                    check(schema, p, v, &format!("{path}/{k}"));
+                }
+                for r in node["required"].as_array().into_iter().flatten() {
+                    assert!(
+                        map.contains_key(r.as_str().expect("name")),
+                        "{path}/{r} required"
+                    );
+                }
+            }
+            serde_json::Value::Array(items) if node.get("items").is_some_and(|i| i.is_object()) => {
+                for (i, v) in items.iter().enumerate() {
+                    check(schema, &node["items"], v, &format!("{path}/{i}"));
+                }
+            }
+            _ => {}
+        }
+    }
+    for name in PRESETS {
+        let value =
+            serde_json::to_value(SubsurfaceConfig::preset(name).expect("preset")).expect("json");
+        check(&schema, &schema, &value, "");
     }
 }
