@@ -80,7 +80,7 @@ pub struct ServeArgs {
     #[arg(long, value_enum, default_value_t = BackendChoice::Auto)]
     pub backend: BackendChoice,
     /// Directory of the browser viewer served at `/`.
-    #[arg(long, default_value = "web")]
+    #[arg(long, default_value = "web/dist")]
     pub web: PathBuf,
     /// Server admin token: may create worlds and acts as admin of every world. Read from
     /// `STRATA_ADMIN_TOKEN` when not given. Without one, anyone may create worlds.

@@ -1,0 +1,126 @@
+// Drives the strata viewer in headless Chromium (Debian's /usr/bin/chromium, never a downloaded
+// browser): node viewer.mjs <page url> <screenshot.png> [copy.png …]
+//
+// Fails (exit 1) unless: the page has a WebGL2 context, at least MIN_TILES tiles arrive, no console
+// errors, no page errors, no errors shown by the viewer, and the screenshot is not blank (pixel
+// variance above a threshold, and both sky and terrain present).
+import { chromium } from "playwright-core";
+import { PNG } from "pngjs";
+import { copyFileSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join } from "node:path";
+
+const [url, shot, ...copies] = process.argv.slice(2);
+if (!url || !shot) {
+  console.error("usage: node viewer.mjs <url> <screenshot.png> [copy.png …]");
+  process.exit(2);
+}
+const CHROMIUM = process.env.STRATA_CHROMIUM ?? "/usr/bin/chromium";
+const MIN_TILES = 50;
+const TILE_TIMEOUT_MS = 45_000;
+const MIN_VARIANCE = 150; // per-channel luminance variance over the image, 0…65025
+
+if (!existsSync(CHROMIUM)) {
+  console.error(`${CHROMIUM} is missing: install Debian's chromium (apt-get install -y chromium)`);
+  process.exit(1);
+}
+
+const failures = [];
+const consoleErrors = [];
+const userDataDir = mkdtempSync(join(tmpdir(), "strata-chromium-"));
+// A fresh profile each run (playwright passes it as --user-data-dir).
+const browser = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: CHROMIUM,
+  headless: true,
+  viewport: { width: 1280, height: 720 },
+  args: [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+  ],
+});
+try {
+  const page = browser.pages()[0] ?? (await browser.newPage());
+  page.on("console", (m) => {
+    if (m.type() === "error") consoleErrors.push(m.text());
+  });
+  page.on("pageerror", (e) => consoleErrors.push(`page error: ${e.message}`));
+  page.on("requestfailed", (r) => consoleErrors.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+
+  const t0 = Date.now();
+  await page.goto(url, { waitUntil: "load" });
+  try {
+    await page.waitForFunction((n) => window.__strata && window.__strata.tiles >= n, MIN_TILES, {
+      timeout: TILE_TIMEOUT_MS,
+      polling: 250,
+    });
+  } catch {
+    failures.push(`fewer than ${MIN_TILES} tiles within ${TILE_TIMEOUT_MS / 1000} s`);
+  }
+  // Let the view finish (idle) or give it a few more seconds, then a few frames to draw.
+  await page
+    .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 10_000, polling: 250 })
+    .catch(() => {});
+  await page.waitForTimeout(1500);
+  const s = await page.evaluate(() => window.__strata);
+  console.log(
+    `after ${((Date.now() - t0) / 1000).toFixed(1)} s: tiles received ${s?.tiles}, held ${s?.held}, ` +
+      `in flight ${s?.inFlight}, idle ${s?.idle}, frames ${s?.frames}, webgl2 ${s?.webgl2}`,
+  );
+  if (!s) failures.push("window.__strata is missing");
+  else {
+    if (!s.webgl2) failures.push("no WebGL2 context");
+    if (s.errors.length) failures.push(`the viewer shows errors: ${s.errors.join(" | ")}`);
+    if (s.held < 1) failures.push("no tile meshes held");
+  }
+  const glVersion = await page.evaluate(() => {
+    const gl = document.querySelector("canvas")?.getContext("webgl2");
+    return gl ? gl.getParameter(gl.VERSION) : null;
+  });
+  console.log(`WebGL: ${glVersion}`);
+  if (!glVersion) failures.push("the canvas has no webgl2 context");
+
+  mkdirSync(dirname(shot), { recursive: true });
+  const png = await page.screenshot({ path: shot });
+  for (const c of copies) {
+    mkdirSync(dirname(c), { recursive: true });
+    copyFileSync(shot, c);
+  }
+  const img = PNG.sync.read(png);
+  let sum = 0;
+  let sum2 = 0;
+  const n = img.width * img.height;
+  const buckets = new Map();
+  for (let p = 0; p < n; p++) {
+    const [r, g, b] = [img.data[4 * p], img.data[4 * p + 1], img.data[4 * p + 2]];
+    const y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    sum += y;
+    sum2 += y * y;
+    const k = `${r >> 4},${g >> 4},${b >> 4}`;
+    buckets.set(k, (buckets.get(k) ?? 0) + 1);
+  }
+  const mean = sum / n;
+  const variance = sum2 / n - mean * mean;
+  console.log(
+    `screenshot ${shot}: ${img.width}×${img.height}, luminance mean ${mean.toFixed(1)}, variance ${variance.toFixed(1)}, ` +
+      `${buckets.size} colour buckets`,
+  );
+  if (variance < MIN_VARIANCE) failures.push(`screenshot variance ${variance.toFixed(1)} < ${MIN_VARIANCE}: blank or flat`);
+  if (buckets.size < 64) failures.push(`screenshot has only ${buckets.size} colour buckets: not a terrain`);
+} finally {
+  await browser.close();
+  rmSync(userDataDir, { recursive: true, force: true });
+}
+if (consoleErrors.length) failures.push(`console errors:\n  ${consoleErrors.join("\n  ")}`);
+if (failures.length) {
+  console.error(`viewer test failed:\n- ${failures.join("\n- ")}`);
+  process.exit(1);
+}
+console.log("viewer ok");

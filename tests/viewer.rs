@@ -1,0 +1,179 @@
+//! The browser viewer end to end: the real `strata` binary serves the built viewer (`web/dist`),
+//! and `node tests/js/viewer.mjs` drives it in Debian's headless Chromium (swiftshader WebGL2):
+//! the page connects to the seed stream, at least 50 tiles arrive, no console errors, a WebGL2
+//! context exists and the screenshot is not blank. The screenshot is written to
+//! `target/viewer.png` and copied to `docs/viewer.png` (the README shows it).
+//!
+//! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
+//! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
+
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+struct Server {
+    child: Child,
+    addr: String,
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn start(data: &Path, web: &Path) -> Server {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
+        .args([
+            "serve",
+            "--addr",
+            "127.0.0.1:0",
+            "--backend",
+            "cpu",
+            "--data",
+        ])
+        .arg(data)
+        .arg("--web")
+        .arg(web)
+        .env("NO_COLOR", "1")
+        .env("RUST_LOG", "strata=info")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::inherit())
+        .spawn()
+        .expect("start strata serve");
+    let stdout = child.stdout.take().expect("piped stdout");
+    let mut lines = BufReader::new(stdout).lines();
+    let addr = loop {
+        let line = lines
+            .next()
+            .expect("server exited before listening")
+            .expect("read server output");
+        if let Some(rest) = line.split("listening on http://").nth(1) {
+            break rest
+                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
+                .next()
+                .unwrap_or_default()
+                .to_string();
+        }
+    };
+    std::thread::spawn(move || for _ in lines.by_ref() {});
+    Server { child, addr }
+}
+
+fn require_node() {
+    match Command::new("node").arg("--version").output() {
+        Ok(out) if out.status.success() => {
+            println!("node {}", String::from_utf8_lossy(&out.stdout).trim());
+        }
+        Ok(out) => panic!(
+            "`node --version` failed ({}): {}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        ),
+        Err(e) => panic!(
+            "Node.js is required for the browser viewer test but `node` could not be started \
+             ({e}). Install Node.js 18 or newer (with npm) and put it on PATH."
+        ),
+    }
+}
+
+fn require_chromium() {
+    let chromium = Path::new("/usr/bin/chromium");
+    assert!(
+        chromium.exists(),
+        "{} is missing: the viewer test drives Debian's Chromium headless \
+         (`apt-get install -y chromium`; .ci/run installs it). It never downloads a browser.",
+        chromium.display()
+    );
+}
+
+fn ensure_packages() {
+    let js = root().join("tests").join("js");
+    let modules = js.join("node_modules");
+    if modules.join("playwright-core").is_dir() && modules.join("pngjs").is_dir() {
+        return;
+    }
+    println!(
+        "installing tests/js packages: npm ci --prefix {}",
+        js.display()
+    );
+    let out = Command::new("npm")
+        .args(["ci", "--no-audit", "--no-fund", "--prefix"])
+        .arg(&js)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("`npm` could not be started ({e}); install npm (it ships with Node.js)")
+        });
+    assert!(
+        out.status.success(),
+        "`npm ci --prefix {}` failed ({}):\n{}\n{}",
+        js.display(),
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn viewer_streams_and_draws_terrain_in_headless_chromium() {
+    require_node();
+    require_chromium();
+    ensure_packages();
+    let web = root().join("web").join("dist");
+    assert!(
+        web.join("index.html").is_file(),
+        "{} is missing: build the viewer with `npm ci --prefix web && npm run --prefix web build`",
+        web.display()
+    );
+
+    let data =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("viewer-{}", std::process::id()));
+    let server = start(&data, &web);
+    // Seed 42 around (-12 km, 26 km): coast, plains and terraced highlands in one view.
+    let url = format!("http://{}/?seed=42&x=-12000&z=26000", server.addr);
+    let shot = root().join("target").join("viewer.png");
+    let copy = root().join("docs").join("viewer.png");
+    let t0 = Instant::now();
+    let mut child = Command::new("node")
+        .arg(root().join("tests").join("js").join("viewer.mjs"))
+        .arg(&url)
+        .arg(&shot)
+        .arg(&copy)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start node tests/js/viewer.mjs");
+    // A hung browser must not hang the test suite.
+    let limit = Duration::from_secs(120);
+    loop {
+        if child.try_wait().expect("wait for node").is_some() {
+            break;
+        }
+        if t0.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("node tests/js/viewer.mjs did not finish within {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let out = child.wait_with_output().expect("node output");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    println!("{stdout}");
+    eprintln!("{stderr}");
+    println!("viewer test took {:.1} s", t0.elapsed().as_secs_f64());
+    drop(server);
+    let _ = std::fs::remove_dir_all(&data);
+    assert!(
+        out.status.success(),
+        "the viewer test failed ({}):\n{stdout}\n{stderr}",
+        out.status
+    );
+    assert!(shot.is_file(), "no screenshot at {}", shot.display());
+}

@@ -1,0 +1,91 @@
+// Decoding of stream frames (api/stream_protocol_v1.md) and STRT v1 tiles (api/tile_format_v1.md).
+
+export interface Frame {
+  lod: number;
+  x: number;
+  z: number;
+  version: number;
+  seams: number;
+  format: number;
+  payload: DataView;
+}
+
+export interface Tile {
+  lod: number;
+  x: number;
+  z: number;
+  size: number;
+  biomeCount: number;
+  spacing: number;
+  originX: number;
+  originZ: number;
+  skirtDepth: number;
+  minHeight: number;
+  maxHeight: number;
+  heights: Float32Array;
+  normals: Float32Array;
+  weights: Uint8Array;
+  materials: Uint8Array;
+  waterDepth: Float32Array;
+}
+
+const FRAME_HEADER = 44;
+
+function magic(v: DataView, at: number): string {
+  return String.fromCharCode(v.getUint8(at), v.getUint8(at + 1), v.getUint8(at + 2), v.getUint8(at + 3));
+}
+
+/** The 44-byte little-endian frame header and its payload. */
+export function decodeFrame(buf: ArrayBuffer): Frame {
+  const v = new DataView(buf);
+  if (buf.byteLength < FRAME_HEADER || magic(v, 0) !== "STRF") throw new Error("not a STRF frame");
+  const layout = v.getUint16(4, true);
+  if (layout !== 1) throw new Error(`unknown frame layout ${layout}`);
+  if (v.getUint8(6) !== 1) throw new Error(`unknown frame kind ${v.getUint8(6)}`);
+  const len = v.getUint32(40, true);
+  if (FRAME_HEADER + len > buf.byteLength) throw new Error("truncated frame");
+  return {
+    format: v.getUint8(7),
+    lod: v.getUint32(8, true),
+    x: Number(v.getBigInt64(12, true)),
+    z: Number(v.getBigInt64(20, true)),
+    version: Number(v.getBigUint64(28, true)),
+    seams: v.getUint8(36),
+    payload: new DataView(buf, FRAME_HEADER, len),
+  };
+}
+
+/** A `bin` tile: checks magic and version, reads sections at the offsets the header gives. */
+export function decodeTile(p: DataView): Tile {
+  if (p.byteLength < 128 || magic(p, 0) !== "STRT") throw new Error("not a STRT tile");
+  const version = p.getUint16(4, true);
+  if (version !== 1) throw new Error(`unknown tile version ${version}`);
+  const size = p.getUint16(36, true);
+  const biomeCount = p.getUint16(38, true);
+  const n = p.getUint32(40, true);
+  if (n !== size * size) throw new Error("vertex count is not size²");
+  if (p.getUint8(76) !== 0 || p.getUint8(77) !== 1) throw new Error("unknown normal/weight encoding");
+  const total = p.getUint32(100, true);
+  if (total > p.byteLength) throw new Error("truncated tile");
+  // Copy the sections out: the frame buffer's offsets need not be 4-byte aligned.
+  const bytes = (off: number, len: number) => new Uint8Array(p.buffer.slice(p.byteOffset + off, p.byteOffset + off + len));
+  const f32 = (off: number, count: number) => new Float32Array(bytes(off, count * 4).buffer);
+  return {
+    x: Number(p.getBigInt64(16, true)),
+    z: Number(p.getBigInt64(24, true)),
+    lod: p.getUint32(32, true),
+    size,
+    biomeCount,
+    spacing: p.getFloat32(44, true),
+    originX: p.getFloat64(48, true),
+    originZ: p.getFloat64(56, true),
+    skirtDepth: p.getFloat32(64, true),
+    minHeight: p.getFloat32(68, true),
+    maxHeight: p.getFloat32(72, true),
+    heights: f32(p.getUint32(80, true), n),
+    normals: f32(p.getUint32(84, true), 3 * n),
+    weights: bytes(p.getUint32(88, true), n * biomeCount),
+    materials: bytes(p.getUint32(92, true), n),
+    waterDepth: f32(p.getUint32(96, true), n),
+  };
+}

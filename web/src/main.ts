@@ -1,0 +1,336 @@
+// The strata viewer: streams height tiles over strata.stream.v1 and renders them with three.js.
+//
+// Query: ?seed=42 (default) or ?world=<id>&token=<read token>; ?x=&z= (metres) where the camera
+// starts; ?rings=2,1,2,4,8 the LOD rings of the view.
+import * as THREE from "three";
+import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import { decodeFrame, decodeTile, type Tile } from "./frame";
+import { buildMesh, disposeMesh } from "./mesh";
+import { selectView, tileKey } from "./view";
+
+interface Held {
+  mesh: THREE.Mesh;
+  tile: Tile;
+  version: number;
+}
+
+interface StrataState {
+  tiles: number; // frames received since the page loaded
+  held: number; // meshes in the scene
+  inFlight: number; // tiles the server still has to send for the current view
+  errors: string[]; // server errors and socket failures, as shown on screen
+  webgl2: boolean;
+  idle: boolean;
+  frames: number;
+  version: number;
+}
+
+declare global {
+  interface Window {
+    __strata: StrataState;
+  }
+}
+
+const state: StrataState = { tiles: 0, held: 0, inFlight: 0, errors: [], webgl2: false, idle: false, frames: 0, version: 0 };
+window.__strata = state;
+
+const q = new URLSearchParams(location.search);
+const seed = q.get("seed") ?? "42";
+const world = q.get("world");
+const token = q.get("token");
+const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
+const startX = Number(q.get("x") ?? 0) || 0;
+const startZ = Number(q.get("z") ?? 0) || 0;
+const CELL_M = 1; // default world; refined from /v1/info below
+
+// ---- HUD and errors -------------------------------------------------------------------------
+const hud = document.getElementById("hud") as HTMLElement;
+const errorBox = document.getElementById("errors") as HTMLElement;
+const title = document.getElementById("title") as HTMLElement;
+title.textContent = world ? `world ${world}` : `seed ${seed}`;
+
+function showError(text: string): void {
+  state.errors.push(text);
+  const line = document.createElement("div");
+  line.textContent = text;
+  errorBox.appendChild(line);
+  while (errorBox.childElementCount > 6) errorBox.firstElementChild?.remove();
+  errorBox.hidden = false;
+}
+
+// ---- renderer, scene, camera --------------------------------------------------------------------
+const canvas = document.getElementById("view") as HTMLCanvasElement;
+const gl = canvas.getContext("webgl2", { antialias: true, preserveDrawingBuffer: true });
+state.webgl2 = gl !== null;
+if (!gl) showError("this browser has no WebGL2: the viewer cannot draw");
+const renderer = new THREE.WebGLRenderer({ canvas, context: gl ?? undefined, antialias: true });
+renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+renderer.setSize(window.innerWidth, window.innerHeight);
+
+const SKY = new THREE.Color().setRGB(0.62, 0.74, 0.86, THREE.SRGBColorSpace);
+const scene = new THREE.Scene();
+scene.background = SKY;
+scene.fog = new THREE.Fog(SKY, 6000, 26000);
+scene.add(new THREE.HemisphereLight(0xdde8ff, 0x4a3c2a, 1.1));
+const sun = new THREE.DirectionalLight(0xfff4e0, 2.2);
+sun.position.set(-0.8, 0.55, -0.3);
+scene.add(sun);
+
+const camera = new THREE.PerspectiveCamera(55, window.innerWidth / window.innerHeight, 5, 40000);
+camera.position.set(startX, 1700, startZ + 1500);
+const controls = new OrbitControls(camera, canvas);
+controls.target.set(startX, 0, startZ);
+controls.enableDamping = true;
+controls.maxPolarAngle = Math.PI * 0.495;
+controls.minDistance = 20;
+controls.maxDistance = 20000;
+controls.update();
+
+window.addEventListener("resize", () => {
+  camera.aspect = window.innerWidth / window.innerHeight;
+  camera.updateProjectionMatrix();
+  renderer.setSize(window.innerWidth, window.innerHeight);
+});
+
+// Fly: WASD / arrows move camera and target over the ground, R/F up and down, speed ∝ height.
+const keys = new Set<string>();
+window.addEventListener("keydown", (e) => keys.add(e.key.toLowerCase()));
+window.addEventListener("keyup", (e) => keys.delete(e.key.toLowerCase()));
+function fly(dt: number): void {
+  const forward = new THREE.Vector3();
+  camera.getWorldDirection(forward);
+  forward.y = 0;
+  if (forward.lengthSq() < 1e-6) return;
+  forward.normalize();
+  const right = new THREE.Vector3(-forward.z, 0, forward.x);
+  const move = new THREE.Vector3();
+  if (keys.has("w") || keys.has("arrowup")) move.add(forward);
+  if (keys.has("s") || keys.has("arrowdown")) move.sub(forward);
+  if (keys.has("d") || keys.has("arrowright")) move.add(right);
+  if (keys.has("a") || keys.has("arrowleft")) move.sub(right);
+  if (keys.has("r")) move.y += 1;
+  if (keys.has("f")) move.y -= 1;
+  if (move.lengthSq() === 0) return;
+  const speed = Math.max(50, camera.position.y - groundAt(camera.position.x, camera.position.z)) * 1.2;
+  move.normalize().multiplyScalar(speed * dt);
+  camera.position.add(move);
+  controls.target.add(move);
+}
+
+// ---- tiles ----------------------------------------------------------------------------------------
+const held = new Map<string, Held>();
+const terrain = new THREE.Group();
+scene.add(terrain);
+let wanted = new Set<string>(); // keys of the current view (client-side selection, as the server's)
+let cellM = CELL_M;
+
+function putTile(tile: Tile, version: number): void {
+  const key = tileKey(tile.lod, tile.x, tile.z);
+  dropTile(key);
+  const mesh = buildMesh(tile);
+  terrain.add(mesh);
+  held.set(key, { mesh, tile, version });
+  state.held = held.size;
+}
+
+function dropTile(key: string): void {
+  const h = held.get(key);
+  if (!h) return;
+  terrain.remove(h.mesh);
+  disposeMesh(h.mesh);
+  held.delete(key);
+  state.held = held.size;
+}
+
+/** Frees the meshes the current view no longer holds. */
+function pruneToView(): void {
+  for (const key of [...held.keys()]) if (!wanted.has(key)) dropTile(key);
+}
+
+/** Ground height at world (x, z) from the finest held tile, bilinear; 0 when none covers it. */
+function groundAt(x: number, z: number): number {
+  let best: Held | undefined;
+  for (const h of held.values()) {
+    const t = h.tile;
+    const extent = (t.size - 1) * t.spacing;
+    if (x < t.originX || z < t.originZ || x > t.originX + extent || z > t.originZ + extent) continue;
+    if (!best || t.lod < best.tile.lod) best = h;
+  }
+  if (!best) return 0;
+  const t = best.tile;
+  const fi = Math.min((x - t.originX) / t.spacing, t.size - 1.0001);
+  const fj = Math.min((z - t.originZ) / t.spacing, t.size - 1.0001);
+  const i = Math.floor(fi);
+  const j = Math.floor(fj);
+  const u = fi - i;
+  const w = fj - j;
+  const h = (a: number, b: number) => t.heights[b * t.size + a];
+  return (1 - w) * ((1 - u) * h(i, j) + u * h(i + 1, j)) + w * ((1 - u) * h(i, j + 1) + u * h(i + 1, j + 1));
+}
+
+// ---- the stream -------------------------------------------------------------------------------------
+let socket: WebSocket | undefined;
+let lastCell = "";
+let lastSent = 0;
+let biomes: string[] = ["arctic", "tundra", "grassland", "desert"];
+
+function streamUrl(): string {
+  const proto = location.protocol === "https:" ? "wss:" : "ws:";
+  const path = world
+    ? `/v1/worlds/${encodeURIComponent(world)}/stream${token ? `?token=${encodeURIComponent(token)}` : ""}`
+    : `/v1/seeds/${encodeURIComponent(seed)}/stream`;
+  return new URL(path, `${proto}//${location.host}${location.pathname}`).toString();
+}
+
+function sendView(force = false): void {
+  if (!socket || socket.readyState !== WebSocket.OPEN) return;
+  const x = camera.position.x;
+  const z = camera.position.z;
+  const size = 64 * cellM;
+  const cell = `${Math.floor(x / size)},${Math.floor(z / size)}`;
+  if (!force && cell === lastCell) return;
+  const now = performance.now();
+  if (!force && now - lastSent < 250) {
+    return; // retried next frame
+  }
+  lastCell = cell;
+  lastSent = now;
+  wanted = selectView(x, z, rings, cellM);
+  socket.send(JSON.stringify({ type: "view", x, z, rings, format: "bin" }));
+}
+
+function connect(): void {
+  const ws = new WebSocket(streamUrl());
+  ws.binaryType = "arraybuffer";
+  socket = ws;
+  ws.onopen = () => {
+    lastCell = "";
+    sendView(true);
+  };
+  ws.onmessage = (ev) => {
+    if (typeof ev.data === "string") {
+      onControl(JSON.parse(ev.data));
+      return;
+    }
+    try {
+      const frame = decodeFrame(ev.data as ArrayBuffer);
+      if (frame.format !== 2) throw new Error(`unexpected payload format ${frame.format}`);
+      state.tiles++;
+      state.inFlight = Math.max(0, state.inFlight - 1);
+      const key = tileKey(frame.lod, frame.x, frame.z);
+      if (!wanted.has(key)) return; // sent for a view we have since left
+      putTile(decodeTile(frame.payload), frame.version);
+    } catch (e) {
+      showError(`bad frame: ${(e as Error).message}`);
+    }
+  };
+  ws.onclose = (ev) => {
+    if (socket !== ws) return;
+    showError(`stream closed (${ev.code}${ev.reason ? ` ${ev.reason}` : ""}); reconnecting in 3 s`);
+    state.inFlight = 0;
+    setTimeout(connect, 3000);
+  };
+}
+
+// eslint-disable-next-line @typescript-eslint/no-explicit-any
+function onControl(m: any): void {
+  switch (m.type) {
+    case "hello":
+      state.version = m.version;
+      break;
+    case "view":
+      state.inFlight = m.sending;
+      state.idle = false;
+      pruneToView();
+      break;
+    case "idle":
+      state.idle = true;
+      state.inFlight = 0;
+      state.version = m.version;
+      break;
+    case "invalidate":
+      // Fresh frames follow; the held meshes stay until they arrive and replace them.
+      state.version = m.version;
+      state.inFlight += m.tiles.length;
+      break;
+    case "ack":
+      break;
+    case "error":
+      showError(`server: ${m.code}: ${m.message}${m.field ? ` (${m.field})` : ""}`);
+      break;
+    default:
+      showError(`unknown message ${String(m.type)}`);
+  }
+}
+
+fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
+  .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
+  .then((info) => {
+    if (Array.isArray(info?.world?.biomes)) biomes = info.world.biomes;
+    if (typeof info?.world?.cell_m === "number" && info.world.cell_m !== cellM) {
+      cellM = info.world.cell_m;
+      sendView(true);
+    }
+  })
+  .catch((e: Error) => showError(e.message));
+connect();
+
+// ---- cursor probe and HUD ------------------------------------------------------------------------
+const pointer = new THREE.Vector2(2, 2);
+canvas.addEventListener("pointermove", (e) => {
+  pointer.set((e.clientX / window.innerWidth) * 2 - 1, -(e.clientY / window.innerHeight) * 2 + 1);
+});
+canvas.addEventListener("pointerleave", () => pointer.set(2, 2));
+const raycaster = new THREE.Raycaster();
+
+function probe(): string {
+  if (Math.abs(pointer.x) > 1) return "–";
+  raycaster.setFromCamera(pointer, camera);
+  const hit = raycaster.intersectObjects(terrain.children, false)[0];
+  if (!hit || !hit.face) return "–";
+  const h = [...held.values()].find((x) => x.mesh === hit.object);
+  if (!h) return "–";
+  const t = h.tile;
+  const n = t.size * t.size;
+  const v = [hit.face.a, hit.face.b, hit.face.c].find((i) => i < n) ?? 0;
+  let best = 0;
+  for (let b = 1; b < t.biomeCount; b++) if (t.weights[v * t.biomeCount + b] > t.weights[v * t.biomeCount + best]) best = b;
+  const slope = (Math.acos(Math.min(1, t.normals[3 * v + 1])) * 180) / Math.PI;
+  return `${hit.point.y.toFixed(1)} m, slope ${slope.toFixed(0)}°, ${biomes[best] ?? `biome ${best}`} (LOD ${t.lod})`;
+}
+
+let fps = 0;
+let fpsFrames = 0;
+let fpsSince = performance.now();
+let hudAt = 0;
+let last = performance.now();
+
+function frame(now: number): void {
+  const dt = Math.min(0.1, (now - last) / 1000);
+  last = now;
+  fly(dt);
+  controls.update();
+  sendView(false); // throttled: only when the camera crossed a LOD-0 tile
+  renderer.render(scene, camera);
+  state.frames++;
+  fpsFrames++;
+  if (now - fpsSince >= 1000) {
+    fps = (fpsFrames * 1000) / (now - fpsSince);
+    fpsFrames = 0;
+    fpsSince = now;
+  }
+  if (now - hudAt > 200) {
+    hudAt = now;
+    const p = camera.position;
+    const ground = groundAt(p.x, p.z);
+    hud.textContent = [
+      `camera  x ${p.x.toFixed(0)}  y ${p.y.toFixed(0)}  z ${p.z.toFixed(0)} m`,
+      `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
+      `cursor  ${probe()}`,
+      `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · v${state.version}`,
+      `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down`,
+    ].join("\n");
+  }
+  requestAnimationFrame(frame);
+}
+requestAnimationFrame(frame);

@@ -1,0 +1,163 @@
+// STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
+// api/tile_format_v1.md), vertex colours from biome weights and materials, water as a flat
+// translucent quad at sea level over tiles that reach below it.
+import * as THREE from "three";
+import type { Tile } from "./frame";
+
+// Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
+const MATERIAL = [
+  [0.36, 0.34, 0.27],
+  [0.80, 0.74, 0.55],
+  [0.30, 0.47, 0.20],
+  [0.45, 0.36, 0.25],
+  [0.47, 0.45, 0.43],
+  [0.95, 0.96, 0.98],
+].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
+
+// Biomes in the default world's order: arctic, tundra, grassland, desert (tints).
+const BIOME = [
+  [0.86, 0.90, 0.95],
+  [0.55, 0.58, 0.45],
+  [0.35, 0.55, 0.25],
+  [0.85, 0.70, 0.45],
+].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
+
+const indexCache = new Map<number, Uint16Array>();
+
+/** Triangle indices for a `size`×`size` grid plus its four skirts (one array for every tile; each
+ * geometry gets its own attribute, so disposing one tile never frees another's GPU buffer). */
+function indices(size: number): Uint16Array {
+  const cached = indexCache.get(size);
+  if (cached) return cached;
+  const q = size - 1;
+  const n = size * size;
+  const idx: number[] = [];
+  for (let j = 0; j < q; j++) {
+    for (let i = 0; i < q; i++) {
+      const v00 = j * size + i;
+      const v10 = v00 + 1;
+      const v01 = v00 + size;
+      const v11 = v01 + 1;
+      idx.push(v00, v01, v10, v10, v01, v11);
+    }
+  }
+  for (let e = 0; e < 4; e++) {
+    for (let t = 0; t < q; t++) {
+      const [t0, t1] = [edgeVertex(e, t, size), edgeVertex(e, t + 1, size)];
+      const [b0, b1] = [n + e * size + t, n + e * size + t + 1];
+      if (e < 2) idx.push(t0, t1, b0, t1, b1, b0);
+      else idx.push(t0, b0, t1, t1, b0, b1);
+    }
+  }
+  const arr = new Uint16Array(idx);
+  indexCache.set(size, arr);
+  return arr;
+}
+
+/** Edge `e` (n, e, s, w) position `t` as a surface vertex index. */
+function edgeVertex(e: number, t: number, size: number): number {
+  const q = size - 1;
+  switch (e) {
+    case 0:
+      return t; // north (t, 0)
+    case 1:
+      return t * size + q; // east (q, t)
+    case 2:
+      return q * size + t; // south (t, q)
+    default:
+      return t * size; // west (0, t)
+  }
+}
+
+const terrainMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
+export const waterMaterial = new THREE.MeshLambertMaterial({
+  color: new THREE.Color().setRGB(0.12, 0.32, 0.5, THREE.SRGBColorSpace),
+  transparent: true,
+  opacity: 0.72,
+  depthWrite: false,
+});
+
+/** The sea level a tile implies (`h + water_depth` where the ground is under water), if any. */
+export function seaLevelOf(tile: Tile): number | undefined {
+  for (let v = 0; v < tile.waterDepth.length; v++) {
+    if (tile.waterDepth[v] > 0) return tile.heights[v] + tile.waterDepth[v];
+  }
+  return undefined;
+}
+
+export function buildMesh(tile: Tile): THREE.Mesh {
+  const { size, heights, normals, weights, materials, biomeCount: k } = tile;
+  const n = size * size;
+  const total = n + 4 * size;
+  const pos = new Float32Array(3 * total);
+  const nor = new Float32Array(3 * total);
+  const col = new Float32Array(3 * total);
+  const c = new THREE.Color();
+  const b = new THREE.Color();
+  for (let j = 0; j < size; j++) {
+    for (let i = 0; i < size; i++) {
+      const v = j * size + i;
+      pos[3 * v] = i * tile.spacing;
+      pos[3 * v + 1] = heights[v];
+      pos[3 * v + 2] = j * tile.spacing;
+      nor[3 * v] = normals[3 * v];
+      nor[3 * v + 1] = normals[3 * v + 1];
+      nor[3 * v + 2] = normals[3 * v + 2];
+      b.setRGB(0, 0, 0);
+      for (let bi = 0; bi < k; bi++) {
+        const w = weights[v * k + bi] / 255;
+        const tint = BIOME[bi] ?? BIOME[BIOME.length - 1];
+        b.r += w * tint.r;
+        b.g += w * tint.g;
+        b.b += w * tint.b;
+      }
+      c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.35);
+      const depth = tile.waterDepth[v];
+      if (depth > 0) c.lerp(waterMaterial.color, Math.min(depth / 60, 0.85));
+      col[3 * v] = c.r;
+      col[3 * v + 1] = c.g;
+      col[3 * v + 2] = c.b;
+    }
+  }
+  for (let e = 0; e < 4; e++) {
+    for (let t = 0; t < size; t++) {
+      const s = edgeVertex(e, t, size);
+      const d = n + e * size + t;
+      for (let a = 0; a < 3; a++) {
+        pos[3 * d + a] = pos[3 * s + a];
+        nor[3 * d + a] = nor[3 * s + a];
+        col[3 * d + a] = col[3 * s + a];
+      }
+      pos[3 * d + 1] -= tile.skirtDepth;
+    }
+  }
+  const geo = new THREE.BufferGeometry();
+  geo.setIndex(new THREE.BufferAttribute(indices(size), 1));
+  geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+  geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
+  geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
+  geo.computeBoundingSphere();
+  geo.computeBoundingBox();
+  const mesh = new THREE.Mesh(geo, terrainMaterial);
+  mesh.position.set(tile.originX, 0, tile.originZ);
+  mesh.matrixAutoUpdate = false;
+  mesh.updateMatrix();
+  const sea = seaLevelOf(tile);
+  if (sea !== undefined) {
+    const extent = (size - 1) * tile.spacing;
+    const water = new THREE.Mesh(new THREE.PlaneGeometry(extent, extent), waterMaterial);
+    water.rotation.x = -Math.PI / 2;
+    water.position.set(extent / 2, sea, extent / 2);
+    water.renderOrder = 1;
+    water.updateMatrix();
+    mesh.add(water);
+  }
+  return mesh;
+}
+
+export function disposeMesh(mesh: THREE.Mesh): void {
+  mesh.geometry.dispose();
+  for (const child of mesh.children) {
+    if (child instanceof THREE.Mesh) child.geometry.dispose();
+  }
+}
