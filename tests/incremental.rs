@@ -225,13 +225,14 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     .await;
     assert_eq!(v2, 2);
     let expect = touched(&keys, min, max);
+    // The margin (blur radius 64 m + 2 m at LOD 0) is wider than a tile, so the square is in
+    // reach of three tiles along each axis: (0..=2)², and not of column or row 3.
     assert_eq!(
         expect,
-        [(1, 1), (2, 1), (1, 2), (2, 2)]
-            .map(|(x, z)| TileKey { lod: 0, x, z })
-            .into_iter()
+        (0..=2)
+            .flat_map(|x| (0..=2).map(move |z| TileKey { lod: 0, x, z }))
             .collect(),
-        "the margin rule as documented (blur radius 32 m + 2 m at LOD 0)"
+        "the margin rule as documented (blur radius 64 m + 2 m at LOD 0)"
     );
     let (ran, bodies) = request_block(&app, &state, &id, &keys, v2).await;
     assert_eq!(
@@ -287,7 +288,8 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     assert_eq!(ran, hill);
 
     // Moving it off the block gives those tiles the inputs they had at version 1 (no element
-    // in reach, same settings): the cache is keyed by inputs, not versions, so nothing runs.
+    // in reach, same settings): the cache is keyed by inputs, not versions, so nothing runs —
+    // except tiles the corner region also reaches, whose inputs (corner alone) are new.
     let v6 = edit(
         &app,
         &id,
@@ -297,8 +299,10 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     )
     .await;
     let (ran, bodies) = request_block(&app, &state, &id, &keys, v6).await;
-    assert!(
-        ran.is_empty(),
+    let corner = touched(&keys, [-30.0, -30.0], [-20.0, -20.0]);
+    let new_inputs: BTreeSet<TileKey> = hill.intersection(&corner).copied().collect();
+    assert_eq!(
+        ran, new_inputs,
         "moving back to version 1's inputs re-ran {ran:?}"
     );
     assert_eq!(bodies, v1);

@@ -2,7 +2,7 @@
 //!
 //! Units are in the field names' docs: metres, degrees, or plain numbers. `WorldParams::default()`
 //! is the default scene's world: four biomes ordered from pole to equator, the paper's warping
-//! constants and a 35-sample biome blur at LOD 0.
+//! constants and a 64 m biome blur (129 samples at LOD 0; `strata bench tiles` uses the paper's 35).
 
 use super::fractal::{FractalParams, WarpParams};
 use serde::{Deserialize, Serialize};
@@ -162,19 +162,19 @@ impl Default for WorldParams {
                 latitude_speed_cells: 8.0,
                 dispersion: true,
                 dispersion_d: 0.2,
-                blur_radius_m: 32.0,
+                blur_radius_m: 64.0,
             },
             biomes: vec![
                 biome(
                     "arctic",
-                    gen(60.0, 240.0, 8000.0, 0.85),
+                    gen(30.0, 200.0, 8000.0, 0.85),
                     "snow",
                     -1e9,
                     kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)]),
                 ),
                 biome(
                     "tundra",
-                    gen(30.0, 160.0, 8000.0, 0.9),
+                    gen(30.0, 170.0, 8000.0, 0.9),
                     "dirt",
                     90.0,
                     kinds(&[
@@ -185,7 +185,7 @@ impl Default for WorldParams {
                 ),
                 biome(
                     "grassland",
-                    gen(40.0, 170.0, 8000.0, 0.9),
+                    gen(30.0, 170.0, 8000.0, 0.9),
                     "grass",
                     160.0,
                     kinds(&[
@@ -196,7 +196,7 @@ impl Default for WorldParams {
                 ),
                 biome(
                     "desert",
-                    gen(25.0, 80.0, 8000.0, 0.75),
+                    gen(30.0, 140.0, 8000.0, 0.75),
                     "sand",
                     1e9,
                     kinds(&[
