@@ -64,9 +64,9 @@ try {
   } catch {
     failures.push(`fewer than ${MIN_TILES} tiles within ${TILE_TIMEOUT_MS / 1000} s`);
   }
-  // Let the view finish (idle) or give it a few more seconds, then a few frames to draw.
+  // Let the view finish (idle) or give it a while longer, then a few frames to draw.
   await page
-    .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 10_000, polling: 250 })
+    .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 35_000, polling: 250 })
     .catch(() => {});
   await page.waitForTimeout(1500);
   const s = await page.evaluate(() => window.__strata);

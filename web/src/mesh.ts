@@ -6,20 +6,20 @@ import type { Tile } from "./frame";
 
 // Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
 const MATERIAL = [
-  [0.36, 0.34, 0.27],
-  [0.80, 0.74, 0.55],
-  [0.30, 0.47, 0.20],
-  [0.45, 0.36, 0.25],
-  [0.47, 0.45, 0.43],
-  [0.95, 0.96, 0.98],
+  [0.42, 0.40, 0.33],
+  [0.84, 0.77, 0.56],
+  [0.28, 0.46, 0.18],
+  [0.50, 0.39, 0.26],
+  [0.52, 0.47, 0.42],
+  [0.96, 0.97, 0.99],
 ].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
 // Biomes in the default world's order: arctic, tundra, grassland, desert (tints).
 const BIOME = [
-  [0.86, 0.90, 0.95],
-  [0.55, 0.58, 0.45],
-  [0.35, 0.55, 0.25],
-  [0.85, 0.70, 0.45],
+  [0.88, 0.92, 0.97],
+  [0.52, 0.56, 0.40],
+  [0.30, 0.52, 0.20],
+  [0.88, 0.68, 0.40],
 ].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
 const indexCache = new Map<number, Uint16Array>();
@@ -111,7 +111,7 @@ export function buildMesh(tile: Tile): THREE.Mesh {
         b.g += w * tint.g;
         b.b += w * tint.b;
       }
-      c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.35);
+      c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.45);
       const depth = tile.waterDepth[v];
       if (depth > 0) c.lerp(waterMaterial.color, Math.min(depth / 60, 0.85));
       col[3 * v] = c.r;
