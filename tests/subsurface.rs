@@ -164,8 +164,20 @@ fn voxel_queries_interpolate_the_stored_limits_and_match_the_direct_evaluation()
                         key.y * SIZE as i32 + j as i32,
                         key.z * SIZE as i32 + k as i32,
                     );
-                    let direct = plan.voxel(x, y, z);
+                    let (direct, flow) = plan.voxel(x, y, z);
                     let stored = chunk.voxel(i, j, k);
+                    let stored_flow = chunk.flow(i, j, k);
+                    for c in 0..3 {
+                        assert!(
+                            (flow[c] - stored_flow[c]).abs() < 1e-4,
+                            "flow {flow:?} vs {stored_flow:?}"
+                        );
+                    }
+                    let norm = flow.iter().map(|c| c * c).sum::<f32>().sqrt();
+                    let solid = !direct.iter().any(|c| c.0 == plan.void_id);
+                    if solid && direct.len() == 1 {
+                        assert!((norm - 1.0).abs() < 1e-4, "unit flow {flow:?}");
+                    }
                     assert_eq!(
                         direct.iter().map(|c| c.0).collect::<Vec<_>>(),
                         stored

@@ -1,5 +1,5 @@
 //! §3 and §4.3: chunks of columns of stacked limits, with blend zones between layers, and a
-//! voxel's composition by interpolation between the limits around it.
+//! voxel's composition and flow by interpolation between the limits around it.
 
 use super::plan::{Composition, Element, ElementKind, SubsurfacePlan};
 
@@ -55,6 +55,8 @@ pub struct Limit {
     pub y: u8,
     /// Composition, as a mixture of palette entries.
     pub mix: Mix,
+    /// Material flow: the mixture of its entries' flows (§4.2.1; zero in the void).
+    pub flow: [f32; 3],
 }
 
 /// A chunk: `size × size` columns of stacked limits; each column has its bottom and top limits
@@ -78,6 +80,72 @@ pub struct Chunk {
 struct Placed {
     element: Element,
     palette: u16,
+}
+
+/// Flow of every palette entry a column uses: layers by [`SubsurfacePlan::layer_flow`], veins and
+/// caves the flow of their host layer, the void none. Computed only for the entries used.
+struct Flows {
+    flows: Vec<Option<[f32; 3]>>,
+}
+
+impl Flows {
+    fn clear(&mut self, n: usize) {
+        self.flows.clear();
+        self.flows.resize(n, None);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn of(
+        &mut self,
+        plan: &SubsurfacePlan,
+        hosts: &[usize],
+        layers: usize,
+        grads: &[(f32, f32)],
+        x: f32,
+        z: f32,
+        p: u16,
+    ) -> [f32; 3] {
+        if let Some(f) = self.flows[p as usize] {
+            return f;
+        }
+        let p = p as usize;
+        let f = if p == 0 {
+            [0.0; 3]
+        } else {
+            let k = if p <= layers {
+                p - 1
+            } else {
+                hosts[p - layers - 1]
+            };
+            plan.layer_flow(k, x, z, grads[k])
+        };
+        self.flows[p] = Some(f);
+        f
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn mix(
+        &mut self,
+        plan: &SubsurfacePlan,
+        hosts: &[usize],
+        grads: &[(f32, f32)],
+        x: f32,
+        z: f32,
+        m: Mix,
+    ) -> [f32; 3] {
+        let layers = plan.layers.len();
+        let a = self.of(plan, hosts, layers, grads, x, z, m.lo);
+        if m.lo == m.hi {
+            return a;
+        }
+        let b = self.of(plan, hosts, layers, grads, x, z, m.hi);
+        let t = m.t;
+        [
+            a[0] * (1.0 - t) + b[0] * t,
+            a[1] * (1.0 - t) + b[1] * t,
+            a[2] * (1.0 - t) + b[2] * t,
+        ]
+    }
 }
 
 /// Composition of a voxel centre at height `y` of a column with layer tops `tops`: the layer it
@@ -109,6 +177,9 @@ fn sample(plan: &SubsurfacePlan, tops: &[f32], spans: &[(f32, f32, u16)], y: f32
 
 /// Whether `m` equals the interpolation of `a` and `b` at fraction `f`, for every palette entry.
 fn on_line(a: Mix, b: Mix, m: Mix, f: f32) -> bool {
+    if a == m && m == b {
+        return true;
+    }
     [a.lo, a.hi, b.lo, b.hi, m.lo, m.hi].iter().all(|&i| {
         let w = a.weight(i) * (1.0 - f) + b.weight(i) * f;
         (w - m.weight(i)).abs() <= 1e-5
@@ -116,8 +187,10 @@ fn on_line(a: Mix, b: Mix, m: Mix, f: f32) -> bool {
 }
 
 impl SubsurfacePlan {
-    /// The elements (veins first, then caves) whose cells meet the square `[x0, x0+size)²`.
-    fn elements_near(&self, x0: f32, z0: f32, size: f32) -> Vec<Element> {
+    /// The elements (veins first, then caves) that may meet the box `[x0, x0+size)` ×
+    /// `[y0, y0+size)` × `[z0, z0+size)`.
+    fn elements_near(&self, x0: f32, y0: f32, z0: f32, size: f32) -> Vec<Element> {
+        let region = [(x0, x0 + size), (y0, y0 + size), (z0, z0 + size)];
         let mut out = Vec::new();
         for kind in [ElementKind::Vein, ElementKind::Cave] {
             let side = self.cell_side(kind);
@@ -131,7 +204,7 @@ impl SubsurfacePlan {
             );
             for k in k0..=k1 {
                 for i in i0..=i1 {
-                    if let Some(e) = self.element(kind, (i, k)) {
+                    if let Some(e) = self.element_within(kind, (i, k), Some(region)) {
                         out.push(e);
                     }
                 }
@@ -149,7 +222,7 @@ impl SubsurfacePlan {
         let mut palette: Vec<Composition> = vec![vec![(self.void_id, 1.0)]];
         palette.extend(self.layers.iter().map(|l| l.composition.clone()));
         let placed: Vec<Placed> = self
-            .elements_near(x0, z0, s)
+            .elements_near(x0, y0, z0, s)
             .into_iter()
             .map(|element| {
                 palette.push(element.composition.clone());
@@ -164,12 +237,16 @@ impl SubsurfacePlan {
         let mut limits = Vec::with_capacity(n * n * 3);
         let mut starts = Vec::with_capacity(n * n);
         let mut tops = Vec::with_capacity(self.layers.len());
+        let mut grads = Vec::with_capacity(self.layers.len());
+        let hosts: Vec<usize> = placed.iter().map(|p| p.element.host).collect();
+        let mut flows = Flows { flows: Vec::new() };
         let mut spans = Vec::with_capacity(placed.len());
         let mut column = vec![Mix::pure(0); n];
         for k in 0..n {
             for i in 0..n {
                 let (x, z) = (x0 + i as f32 + 0.5, z0 + k as f32 + 0.5);
-                self.tops(x, z, &mut tops);
+                self.tops(x, z, &mut tops, &mut grads);
+                flows.clear(palette.len());
                 spans.clear();
                 for p in &placed {
                     if let Some(h) = p.element.height_at(x, z) {
@@ -186,6 +263,7 @@ impl SubsurfacePlan {
                 limits.push(Limit {
                     y: 0,
                     mix: column[0],
+                    flow: flows.mix(self, &hosts, &grads, x, z, column[0]),
                 });
                 while a + 1 < n {
                     let mut b = a + 1;
@@ -207,6 +285,7 @@ impl SubsurfacePlan {
                     limits.push(Limit {
                         y: b as u8,
                         mix: column[b],
+                        flow: flows.mix(self, &hosts, &grads, x, z, column[b]),
                     });
                     a = b;
                 }
@@ -223,23 +302,28 @@ impl SubsurfacePlan {
         }
     }
 
-    /// Composition of the world voxel `(x, y, z)` evaluated directly, without chunks.
-    pub fn voxel(&self, x: i32, y: i32, z: i32) -> Composition {
+    /// Composition and flow of the world voxel `(x, y, z)` evaluated directly, without chunks.
+    pub fn voxel(&self, x: i32, y: i32, z: i32) -> (Composition, [f32; 3]) {
         let (xc, zc) = (x as f32 + 0.5, z as f32 + 0.5);
         let mut palette: Vec<Composition> = vec![vec![(self.void_id, 1.0)]];
         palette.extend(self.layers.iter().map(|l| l.composition.clone()));
-        let mut tops = Vec::new();
-        self.tops(xc, zc, &mut tops);
+        let (mut tops, mut grads) = (Vec::new(), Vec::new());
+        self.tops(xc, zc, &mut tops, &mut grads);
         let mut spans = Vec::new();
-        for e in self.elements_near(x as f32, z as f32, 0.0) {
+        let mut hosts = Vec::new();
+        for e in self.elements_near(x as f32, y as f32, z as f32, 1.0) {
             if let Some(h) = e.height_at(xc, zc) {
                 palette.push(e.composition.clone());
+                hosts.push(e.host);
                 let lo = tops[e.host];
                 spans.push((lo, lo + h, (palette.len() - 1) as u16));
             }
         }
         let m = sample(self, &tops, &spans, y as f32 + 0.5);
-        materials(&palette, &[(m.lo, 1.0 - m.t), (m.hi, m.t)])
+        let mut flows = Flows { flows: Vec::new() };
+        flows.clear(palette.len());
+        let flow = flows.mix(self, &hosts, &grads, xc, zc, m);
+        (materials(&palette, &[(m.lo, 1.0 - m.t), (m.hi, m.t)]), flow)
     }
 }
 
@@ -297,12 +381,30 @@ impl Chunk {
         )
     }
 
+    /// Material flow of voxel `(i, j, k)`: the limit's, or linear interpolation between the limits
+    /// below and above.
+    pub fn flow(&self, i: u32, j: u32, k: u32) -> [f32; 3] {
+        let col = self.column(i, k);
+        let above = col
+            .iter()
+            .position(|l| u32::from(l.y) >= j)
+            .unwrap_or(col.len() - 1);
+        let hi = col[above];
+        if u32::from(hi.y) == j || above == 0 {
+            return hi.flow;
+        }
+        let lo = col[above - 1];
+        let f = (j - u32::from(lo.y)) as f32 / (u32::from(hi.y) - u32::from(lo.y)) as f32;
+        [0, 1, 2].map(|c| lo.flow[c] * (1.0 - f) + hi.flow[c] * f)
+    }
+
     /// Voxels in the chunk.
     pub fn voxel_count(&self) -> usize {
         (self.size * self.size * self.size) as usize
     }
 
-    /// Canonical little-endian bytes: key, size, palette, limit counts, limits.
+    /// Canonical little-endian bytes: key, size, palette, limit counts, limits (height, mixture,
+    /// flow).
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut b = Vec::with_capacity(16 + self.limits.len() * 11 + self.counts.len());
         for v in [self.key.x, self.key.y, self.key.z] {
@@ -323,6 +425,9 @@ impl Chunk {
             b.extend_from_slice(&l.mix.lo.to_le_bytes());
             b.extend_from_slice(&l.mix.hi.to_le_bytes());
             b.extend_from_slice(&l.mix.t.to_bits().to_le_bytes());
+            for c in l.flow {
+                b.extend_from_slice(&c.to_bits().to_le_bytes());
+            }
         }
         b
     }

@@ -18,8 +18,8 @@
 //!   Eq. 3 relative area, the midpoint-displacement outline of depth 5 (Eq. 5), the circular
 //!   height profile (Eq. 6) on top of the host layer.
 //! - [`chunk`] — §3: chunks of `size × size` columns of stacked limits (at least the bottom and
-//!   top voxel, at most `size`), a voxel's composition by interpolation between the limits around
-//!   it; §4.3's blend zones (blend × local thickness at a layer's bottom, mixing linearly from the
+//!   top voxel, at most `size`), a voxel's composition and flow by interpolation between the
+//!   limits around it; §4.3's blend zones (blend × local thickness at a layer's bottom, mixing linearly from the
 //!   layer below).
 //!
 //! # Faithful, and where it deviates
@@ -54,8 +54,11 @@
 //!   interpolation (within 1e-5).
 //! - Veins and caves override the layers they intrude into (the layers above are not pushed
 //!   up), and caves override veins.
-//! - Not implemented yet: the material flow vectors (§4.2.1's last step) and everything outside
-//!   this module (HTTP routes, scene element, caves carving volume chunks).
+//! - Material flow (§4.2.1's last step): the unit tangent of the layer's surface (analytic
+//!   gradient of Eq. 4 through the noise's derivative) whose horizontal direction turns about the
+//!   y axis by `π·noise`; veins and caves take their host layer's flow (the paper regenerates it
+//!   "using the same process"); the void has none. Limits store it, voxels interpolate it.
+//! - Not here: the HTTP routes, the scene element, caves carving volume chunks.
 
 pub mod chunk;
 pub mod config;

@@ -3,7 +3,8 @@
 
 use super::config::{Range, SubsurfaceConfig};
 use crate::terrain::hash::{hash2, mix32, stream, unit};
-use crate::terrain::noise::lattice;
+use crate::terrain::hash::{PRIME_X, PRIME_Z};
+use crate::terrain::noise::{fade, gaussian, lattice_hash};
 
 /// Stream purposes of the subsurface (disjoint from `terrain::hash::purpose`).
 pub mod purpose {
@@ -15,6 +16,8 @@ pub mod purpose {
     pub const VEINS: u32 = 0x5b_0003;
     /// The cave lattice.
     pub const CAVES: u32 = 0x5b_0004;
+    /// Direction noise of the material flow (`index` = layer).
+    pub const FLOW: u32 = 0x5b_0005;
 }
 
 /// Most layers in a stack (bounds a column's work).
@@ -64,6 +67,8 @@ pub struct Layer {
     pub mean_top: f32,
     /// Seed of the surface noise.
     pub noise_seed: u32,
+    /// Seed of the flow-direction noise.
+    pub flow_seed: u32,
 }
 
 /// What kind of element a vein-lattice or cave-lattice cell holds.
@@ -112,7 +117,12 @@ pub struct SubsurfacePlan {
     pub void_id: u32,
     /// Materials' index by position: affinities, `[i][j]` = (same layer, next layer).
     affinity: Vec<Vec<(f32, f32)>>,
+    /// Lowest and highest possible top of every layer (the lattice noise is bounded).
+    bounds: Vec<(f32, f32)>,
 }
+
+/// Largest absolute value of `terrain::noise::lattice` (the byte-sum Gaussian's extreme).
+const NOISE_BOUND: f32 = 3.451;
 
 /// Eq. 1–2 selection of a main material and extras (probability 0.5, halving), with
 /// concentrations (main 0.5–0.9 when mixed, summing to 1). `below` is the composition of the
@@ -287,13 +297,31 @@ impl SubsurfacePlan {
                 roughness,
                 mean_top: height,
                 noise_seed: stream(seed, purpose::SURFACE, k),
+                flow_seed: stream(seed, purpose::FLOW, k),
             });
             below = comp;
         }
         for l in &mut layers {
             l.mean_top -= height;
         }
+        let mut bounds: Vec<(f32, f32)> = Vec::with_capacity(layers.len());
+        let mut amp = 0.0f32;
+        for (k, l) in layers.iter().enumerate() {
+            let own = NOISE_BOUND * l.roughness;
+            amp = if k == 0 {
+                own
+            } else {
+                amp * l.similarity + own * (1.0 - l.similarity)
+            };
+            let (mut lo, mut hi) = (l.mean_top - amp, l.mean_top + amp);
+            if let Some(&(plo, phi)) = bounds.last() {
+                lo = lo.max(plo);
+                hi = hi.max(phi);
+            }
+            bounds.push((lo, hi));
+        }
         SubsurfacePlan {
+            bounds,
             config,
             seed,
             layers,
@@ -312,25 +340,53 @@ impl SubsurfacePlan {
 
     /// Tops of every layer at world point `(x, z)` (voxels), bottom first, non-decreasing
     /// (Eq. 4: `h = h₋₁·s + n·(1 − s)`, plus the layer's mean top; a layer thinner than zero
-    /// pinches out).
-    pub fn tops(&self, x: f32, z: f32, out: &mut Vec<f32>) {
+    /// pinches out), and their gradients `(∂/∂x, ∂/∂z)`.
+    pub fn tops(&self, x: f32, z: f32, out: &mut Vec<f32>, grads: &mut Vec<(f32, f32)>) {
         out.clear();
+        grads.clear();
         let scale = self.config.general.scale;
         let (sx, sz) = (x * scale, z * scale);
         let mut h_prev = 0.0f32;
+        let mut g_prev = (0.0f32, 0.0f32);
         let mut top_prev = f32::NEG_INFINITY;
+        let mut tg_prev = (0.0f32, 0.0f32);
         for (k, l) in self.layers.iter().enumerate() {
-            let n = lattice(sx, sz, l.noise_seed) * l.roughness;
-            let h = if k == 0 {
-                n
+            let (n, nx, nz) = lattice_grad(sx, sz, l.noise_seed);
+            let a = l.roughness * scale;
+            let (n, nx, nz) = (n * l.roughness, nx * a, nz * a);
+            let (h, g) = if k == 0 {
+                (n, (nx, nz))
             } else {
-                h_prev * l.similarity + n * (1.0 - l.similarity)
+                let s = l.similarity;
+                (
+                    h_prev * s + n * (1.0 - s),
+                    (g_prev.0 * s + nx * (1.0 - s), g_prev.1 * s + nz * (1.0 - s)),
+                )
             };
-            let top = (l.mean_top + h).max(top_prev);
+            let top = l.mean_top + h;
+            let (top, tg) = if top >= top_prev {
+                (top, g)
+            } else {
+                (top_prev, tg_prev)
+            };
             out.push(top);
+            grads.push(tg);
             h_prev = h;
+            g_prev = g;
             top_prev = top;
+            tg_prev = tg;
         }
+    }
+
+    /// §4.2.1's material flow of layer `k` at `(x, z)`: the unit vector tangent to the layer's
+    /// surface (gradient `grad`) whose horizontal direction turns about the y axis by a 2D noise.
+    pub fn layer_flow(&self, k: usize, x: f32, z: f32, grad: (f32, f32)) -> [f32; 3] {
+        let scale = self.config.general.scale;
+        let (n, _, _) = lattice_grad(x * scale, z * scale, self.layers[k].flow_seed);
+        let (sin, cos) = libm::sincosf(n * std::f32::consts::PI);
+        let dy = grad.0 * cos + grad.1 * sin;
+        let inv = 1.0 / (1.0 + dy * dy).sqrt();
+        [cos * inv, dy * inv, sin * inv]
     }
 
     /// Side of the lattice cells of one element kind, voxels.
@@ -346,6 +402,18 @@ impl SubsurfacePlan {
     /// The element of a lattice cell, if the cell holds one (§4.2.2–4.2.3). Its bounding square
     /// lies inside the cell, so a chunk only looks at the cells its footprint meets.
     pub fn element(&self, kind: ElementKind, cell: (i32, i32)) -> Option<Element> {
+        self.element_within(kind, cell, None)
+    }
+
+    /// [`Self::element`], or `None` early (before the outline) when the element cannot meet the
+    /// box `region = [x0, x1) × [y0, y1) × [z0, z1)` (voxels): a conservative cull by its
+    /// bounding square and the host layer's height bounds, so what it keeps is unchanged.
+    pub fn element_within(
+        &self,
+        kind: ElementKind,
+        cell: (i32, i32),
+        region: Option<[(f32, f32); 3]>,
+    ) -> Option<Element> {
         let g = &self.config.general;
         let (purpose, density, area, thick) = match kind {
             ElementKind::Vein => (
@@ -404,6 +472,18 @@ impl SubsurfacePlan {
         );
         let rough = property(&self.config, &comp, |m| m.roughness, &mut d);
         let height = property(&self.config, &comp, |m| m.thickness, &mut d) * thick;
+        if let Some([(x0, x1), (y0, y1), (z0, z1)]) = region {
+            let (lo, hi) = self.bounds[host];
+            if origin.0 + side < x0
+                || origin.0 > x1
+                || origin.1 + side < z0
+                || origin.1 > z1
+                || hi + height + 1.0 < y0
+                || lo - 1.0 > y1
+            {
+                return None;
+            }
+        }
         let outline = outline(rough, &mut d);
         let norm = border_distance(&outline, 0.5, 0.5).max(1e-3);
         Some(Element {
@@ -423,6 +503,33 @@ impl SubsurfacePlan {
     pub fn affinity(&self, a: u32, b: u32) -> (f32, f32) {
         self.affinity[self.index(a)][self.index(b)]
     }
+}
+
+/// `terrain::noise::lattice` (same operations, same bits) with its partial derivatives in
+/// lattice units.
+pub fn lattice_grad(x: f32, z: f32, seed: u32) -> (f32, f32, f32) {
+    let fx = x.floor();
+    let fz = z.floor();
+    let tx = x - fx;
+    let tz = z - fz;
+    let hx0 = (fx as i32 as u32).wrapping_mul(PRIME_X);
+    let hx1 = hx0.wrapping_add(PRIME_X);
+    let hz = (fz as i32 as u32).wrapping_mul(PRIME_Z);
+    let hz0 = hz ^ seed;
+    let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
+    let v00 = gaussian(lattice_hash(hx0 ^ hz0));
+    let v10 = gaussian(lattice_hash(hx1 ^ hz0));
+    let v01 = gaussian(lattice_hash(hx0 ^ hz1));
+    let v11 = gaussian(lattice_hash(hx1 ^ hz1));
+    let u = fade(tx);
+    let v = fade(tz);
+    let a = v00 + (v10 - v00) * u;
+    let b = v01 + (v11 - v01) * u;
+    let value = a + (b - a) * v;
+    let dfade = |t: f32| 30.0 * t * t * (t * (t - 2.0) + 1.0);
+    let dx = ((v10 - v00) + ((v11 - v01) - (v10 - v00)) * v) * dfade(tx);
+    let dz = (b - a) * dfade(tz);
+    (value, dx, dz)
 }
 
 /// §4.2.2's fractal outline in the unit square: a square whose corners move along its diagonals,
@@ -507,5 +614,48 @@ impl Element {
         let dn = (border_distance(&self.outline, u, v) / self.norm).min(1.0);
         let h = (1.0 - (dn - 1.0) * (dn - 1.0)).max(0.0).sqrt();
         Some(h * self.height)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::noise::lattice;
+
+    #[test]
+    fn lattice_grad_is_the_lattice_and_its_derivative() {
+        for i in 0..200 {
+            let (x, z) = (i as f32 * 0.137 - 9.0, i as f32 * 0.291 - 20.0);
+            let (v, dx, dz) = lattice_grad(x, z, 11);
+            assert_eq!(v.to_bits(), lattice(x, z, 11).to_bits());
+            let e = 1e-2;
+            let fx = (lattice(x + e, z, 11) - lattice(x - e, z, 11)) / (2.0 * e);
+            let fz = (lattice(x, z + e, 11) - lattice(x, z - e, 11)) / (2.0 * e);
+            assert!(
+                (fx - dx).abs() < 2e-2 && (fz - dz).abs() < 2e-2,
+                "{dx} {fx} {dz} {fz}"
+            );
+        }
+    }
+
+    #[test]
+    fn layer_flow_is_a_unit_tangent() {
+        let plan = SubsurfacePlan::new(5, SubsurfaceConfig::preset("B0").expect("preset"));
+        let (mut tops, mut grads) = (Vec::new(), Vec::new());
+        for i in 0..50 {
+            let (x, z) = (i as f32 * 3.3, i as f32 * -1.7);
+            plan.tops(x, z, &mut tops, &mut grads);
+            for (k, g) in grads.iter().enumerate() {
+                let f = plan.layer_flow(k, x, z, *g);
+                let norm = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+                assert!((norm - 1.0).abs() < 1e-5);
+                // Tangent: perpendicular to the surface normal (−∂x, 1, −∂z).
+                let dot = -g.0 * f[0] + f[1] - g.1 * f[2];
+                assert!(dot.abs() < 1e-5, "{dot}");
+                let (lo, hi) = plan.bounds[k];
+                assert!(tops[k] >= lo && tops[k] <= hi, "{lo} {} {hi}", tops[k]);
+            }
+            assert!(tops.windows(2).all(|w| w[0] <= w[1]));
+        }
     }
 }
