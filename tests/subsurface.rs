@@ -379,3 +379,35 @@ fn schema_declares_the_configuration_fields() {
         check(&schema, &schema, &value, "");
     }
 }
+
+/// `src/subsurface` is pure like `src/terrain` (ARCHITECTURE.md): no tokio, axum or wgpu, no
+/// server, device or compute front door, and no randomness besides `terrain::hash`.
+#[test]
+fn subsurface_is_pure() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/subsurface");
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).expect("src/subsurface") {
+        let path = entry.expect("entry").path();
+        let text = std::fs::read_to_string(&path).expect("readable");
+        n += 1;
+        for banned in [
+            "tokio::",
+            "axum::",
+            "wgpu::",
+            "crate::server",
+            "crate::gpu",
+            "crate::compute",
+            "getrandom",
+            "rand::",
+            "HashMap",
+            "SystemTime",
+        ] {
+            assert!(
+                !text.contains(banned),
+                "{} mentions {banned}",
+                path.display()
+            );
+        }
+    }
+    assert!(n >= 4);
+}

@@ -52,6 +52,11 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     for (n, name) in PRESETS.iter().enumerate() {
         let config =
             SubsurfaceConfig::preset(name).ok_or_else(|| anyhow::anyhow!("no preset {name}"))?;
+        // Warm-up: one untimed terrain (page faults, caches).
+        let warm = SubsurfacePlan::new(u64::MAX, config.clone());
+        for key in keys(0) {
+            black_box(warm.chunk(key, CHUNK));
+        }
         let mut total_s = 0.0f64;
         let mut max_ms = 0.0f64;
         let (mut limits, mut voxels, mut layers, mut elements) = (0usize, 0usize, 0usize, 0usize);
