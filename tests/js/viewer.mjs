@@ -66,7 +66,7 @@ try {
   }
   // Let the view finish (idle) or give it a while longer, then a few frames to draw.
   await page
-    .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 35_000, polling: 250 })
+    .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 30_000, polling: 250 })
     .catch(() => {});
   await page.waitForTimeout(1500);
   const s = await page.evaluate(() => window.__strata);
@@ -114,6 +114,30 @@ try {
   );
   if (variance < MIN_VARIANCE) failures.push(`screenshot variance ${variance.toFixed(1)} < ${MIN_VARIANCE}: blank or flat`);
   if (buckets.size < 64) failures.push(`screenshot has only ${buckets.size} colour buckets: not a terrain`);
+
+  // Fly 200 m east: the view changes, tiles that left it are freed, the new ones stream in, and
+  // once the server reports idle the meshes held are exactly the view's tiles (bounded).
+  const before = await page.evaluate(() => ({ ...window.__strata, errors: undefined }));
+  await page.evaluate(() => window.__strata.moveBy(200, 0));
+  const moved = await page
+    .waitForFunction((v) => window.__strata.views > v && window.__strata.idle, before.views, {
+      timeout: 15_000,
+      polling: 250,
+    })
+    .then(() => true)
+    .catch(() => false);
+  const after = await page.evaluate(() => window.__strata);
+  console.log(
+    `after moving 200 m east: views ${before.views} → ${after.views}, received ${before.tiles} → ${after.tiles}, ` +
+      `freed ${before.freed} → ${after.freed}, held ${after.held} of ${after.viewTiles} in view, idle ${after.idle}`,
+  );
+  if (after.views <= before.views) failures.push("moving the camera sent no new view");
+  if (after.tiles <= before.tiles) failures.push("moving the camera streamed no new tiles");
+  if (after.freed <= before.freed) failures.push("moving the camera freed no tiles");
+  if (after.held > after.viewTiles) failures.push(`${after.held} meshes held for a view of ${after.viewTiles} tiles`);
+  if (moved && after.held !== after.viewTiles)
+    failures.push(`idle with ${after.held} meshes held for a view of ${after.viewTiles} tiles`);
+  if (after.errors.length) failures.push(`the viewer shows errors: ${after.errors.join(" | ")}`);
 } finally {
   await browser.close();
   rmSync(userDataDir, { recursive: true, force: true });

@@ -23,6 +23,11 @@ interface StrataState {
   idle: boolean;
   frames: number;
   version: number;
+  views: number; // view replies from the server
+  viewTiles: number; // tiles in the current view (client-side selection)
+  freed: number; // meshes freed because they left the view or were replaced
+  /** Moves camera and target by (dx, dz) metres: lets tests fly without synthesising input. */
+  moveBy: (dx: number, dz: number) => void;
 }
 
 declare global {
@@ -31,7 +36,20 @@ declare global {
   }
 }
 
-const state: StrataState = { tiles: 0, held: 0, inFlight: 0, errors: [], webgl2: false, idle: false, frames: 0, version: 0 };
+const state: StrataState = {
+  tiles: 0,
+  held: 0,
+  inFlight: 0,
+  errors: [],
+  webgl2: false,
+  idle: false,
+  frames: 0,
+  version: 0,
+  views: 0,
+  viewTiles: 0,
+  freed: 0,
+  moveBy: () => {},
+};
 window.__strata = state;
 
 const q = new URLSearchParams(location.search);
@@ -85,6 +103,12 @@ controls.maxPolarAngle = Math.PI * 0.495;
 controls.minDistance = 20;
 controls.maxDistance = 20000;
 controls.update();
+state.moveBy = (dx, dz) => {
+  camera.position.x += dx;
+  camera.position.z += dz;
+  controls.target.x += dx;
+  controls.target.z += dz;
+};
 
 window.addEventListener("resize", () => {
   camera.aspect = window.innerWidth / window.innerHeight;
@@ -140,6 +164,7 @@ function dropTile(key: string): void {
   disposeMesh(h.mesh);
   held.delete(key);
   state.held = held.size;
+  state.freed++;
 }
 
 /** Frees the meshes the current view no longer holds. */
@@ -196,6 +221,7 @@ function sendView(force = false): void {
   lastCell = cell;
   lastSent = now;
   wanted = selectView(x, z, rings, cellM);
+  state.viewTiles = wanted.size;
   socket.send(JSON.stringify({ type: "view", x, z, rings, format: "bin" }));
 }
 
@@ -239,6 +265,7 @@ function onControl(m: any): void {
       state.version = m.version;
       break;
     case "view":
+      state.views++;
       state.inFlight = m.sending;
       state.idle = false;
       pruneToView();
