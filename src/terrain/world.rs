@@ -167,14 +167,14 @@ impl Default for WorldParams {
             biomes: vec![
                 biome(
                     "arctic",
-                    gen(30.0, 200.0, 8000.0, 0.85),
+                    gen(30.0, 190.0, 8000.0, 0.85),
                     "snow",
                     -1e9,
                     kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)]),
                 ),
                 biome(
                     "tundra",
-                    gen(30.0, 170.0, 8000.0, 0.9),
+                    gen(30.0, 175.0, 8000.0, 0.85),
                     "dirt",
                     90.0,
                     kinds(&[
@@ -185,7 +185,7 @@ impl Default for WorldParams {
                 ),
                 biome(
                     "grassland",
-                    gen(30.0, 170.0, 8000.0, 0.9),
+                    gen(30.0, 170.0, 8000.0, 0.85),
                     "grass",
                     160.0,
                     kinds(&[
@@ -196,7 +196,7 @@ impl Default for WorldParams {
                 ),
                 biome(
                     "desert",
-                    gen(30.0, 140.0, 8000.0, 0.75),
+                    gen(30.0, 160.0, 8000.0, 0.85),
                     "sand",
                     1e9,
                     kinds(&[
