@@ -2,57 +2,29 @@
 //! edits, restarted on the same data directory, and every acknowledged version must be there.
 
 use serde_json::{json, Value};
-use std::io::{BufRead, BufReader, Read, Write};
+use std::ffi::OsStr;
+use std::io::{Read, Write};
 use std::net::TcpStream;
-use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 const ADMIN: &str = "crash-test-admin-token";
 
-struct Server {
-    child: Child,
-    addr: String,
-}
+mod common;
 
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
+use common::Server;
 
 fn start(data: &std::path::Path) -> Server {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
-        .args(["serve", "--addr", "127.0.0.1:0", "--backend", "cpu"])
-        .arg("--admin-token")
-        .arg(ADMIN)
-        .arg("--data")
-        .arg(data)
-        .env("NO_COLOR", "1")
-        .env("RUST_LOG", "strata=info")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::inherit())
-        .spawn()
-        .expect("start strata serve");
-    let stdout = child.stdout.take().expect("piped stdout");
-    let mut lines = BufReader::new(stdout).lines();
-    let addr = loop {
-        let line = lines
-            .next()
-            .expect("server exited before listening")
-            .expect("read server output");
-        if let Some(rest) = line.split("listening on http://").nth(1) {
-            break rest
-                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
-                .next()
-                .unwrap_or_default()
-                .to_string();
-        }
-    };
-    std::thread::spawn(move || for _ in lines.by_ref() {});
-    Server { child, addr }
+    common::start(
+        [
+            OsStr::new("--admin-token"),
+            OsStr::new(ADMIN),
+            OsStr::new("--data"),
+            data.as_os_str(),
+        ],
+        &[],
+    )
 }
 
 /// One HTTP/1.1 request on a fresh connection: status and body, or an I/O error (the server

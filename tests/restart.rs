@@ -2,59 +2,19 @@
 //! `strata` binary is started twice (one worker thread, then three) and asked for the same
 //! products over real TCP.
 
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{Read, Write};
 use std::net::TcpStream;
-use std::process::{Child, Command, Stdio};
 use std::time::Duration;
 
-struct Server {
-    child: Child,
-    addr: String,
-}
+mod common;
 
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
+use common::Server;
 
 fn start(worker_threads: usize, data: &std::path::Path) -> Server {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
-        .args([
-            "serve",
-            "--addr",
-            "127.0.0.1:0",
-            "--backend",
-            "cpu",
-            "--data",
-        ])
-        .arg(data)
-        .env("TOKIO_WORKER_THREADS", worker_threads.to_string())
-        .env("NO_COLOR", "1")
-        .env("RUST_LOG", "strata=info")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::inherit())
-        .spawn()
-        .expect("start strata serve");
-    let stdout = child.stdout.take().expect("piped stdout");
-    let mut lines = BufReader::new(stdout).lines();
-    let addr = loop {
-        let line = lines
-            .next()
-            .expect("server exited before listening")
-            .expect("read server output");
-        if let Some(rest) = line.split("listening on http://").nth(1) {
-            break rest
-                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
-                .next()
-                .unwrap_or_default()
-                .to_string();
-        }
-    };
-    // Keep draining the log so the server never blocks on a full pipe.
-    std::thread::spawn(move || for _ in lines.by_ref() {});
-    Server { child, addr }
+    common::start(
+        [std::ffi::OsStr::new("--data"), data.as_os_str()],
+        &[("TOKIO_WORKER_THREADS", worker_threads.to_string())],
+    )
 }
 
 /// A minimal HTTP/1.1 GET: status code and body.

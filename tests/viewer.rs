@@ -7,63 +7,28 @@
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
 
-use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-struct Server {
-    child: Child,
-    addr: String,
-}
+mod common;
 
-impl Drop for Server {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
+use common::Server;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn start(data: &Path, web: &Path) -> Server {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
-        .args([
-            "serve",
-            "--addr",
-            "127.0.0.1:0",
-            "--backend",
-            "cpu",
-            "--data",
-        ])
-        .arg(data)
-        .arg("--web")
-        .arg(web)
-        .env("NO_COLOR", "1")
-        .env("RUST_LOG", "strata=info")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::inherit())
-        .spawn()
-        .expect("start strata serve");
-    let stdout = child.stdout.take().expect("piped stdout");
-    let mut lines = BufReader::new(stdout).lines();
-    let addr = loop {
-        let line = lines
-            .next()
-            .expect("server exited before listening")
-            .expect("read server output");
-        if let Some(rest) = line.split("listening on http://").nth(1) {
-            break rest
-                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
-                .next()
-                .unwrap_or_default()
-                .to_string();
-        }
-    };
-    std::thread::spawn(move || for _ in lines.by_ref() {});
-    Server { child, addr }
+    common::start(
+        [
+            std::ffi::OsStr::new("--data"),
+            data.as_os_str(),
+            std::ffi::OsStr::new("--web"),
+            web.as_os_str(),
+        ],
+        &[],
+    )
 }
 
 fn require_node() {

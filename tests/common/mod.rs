@@ -1,0 +1,59 @@
+//! Helpers shared by the integration tests that run the real `strata` binary.
+
+#![allow(dead_code)] // Each test binary uses its own subset.
+
+use std::ffi::OsStr;
+use std::io::{BufRead, BufReader};
+use std::process::{Child, Command, Stdio};
+
+/// A running `strata serve`, killed when dropped.
+pub struct Server {
+    /// The process (tests may SIGKILL it).
+    pub child: Child,
+    /// `host:port` it listens on.
+    pub addr: String,
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Starts `strata serve --addr 127.0.0.1:0 --backend cpu <args>` with `envs`, and waits for the
+/// address it logs (`listening on http://…`). The log is drained so the server never blocks on a
+/// full pipe.
+pub fn start<I, S>(args: I, envs: &[(&str, String)]) -> Server
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<OsStr>,
+{
+    let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
+        .args(["serve", "--addr", "127.0.0.1:0", "--backend", "cpu"])
+        .args(args)
+        .envs(envs.iter().map(|(k, v)| (*k, v.as_str())))
+        .env("NO_COLOR", "1")
+        .env("RUST_LOG", "strata=info")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::inherit())
+        .spawn()
+        .expect("start strata serve");
+    let stdout = child.stdout.take().expect("piped stdout");
+    let mut lines = BufReader::new(stdout).lines();
+    let addr = loop {
+        let line = lines
+            .next()
+            .expect("server exited before listening")
+            .expect("read server output");
+        if let Some(rest) = line.split("listening on http://").nth(1) {
+            break rest
+                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
+                .next()
+                .unwrap_or_default()
+                .to_string();
+        }
+    };
+    std::thread::spawn(move || for _ in lines.by_ref() {});
+    Server { child, addr }
+}
