@@ -95,7 +95,7 @@ pub struct ServeArgs {
 /// `strata bench` options.
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
-    /// Benchmark name: `tiles`.
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson` or `volume`.
     pub name: String,
     /// Print one JSON object per line instead of a table.
     #[arg(long)]

@@ -19,3 +19,4 @@ pub mod store;
 pub mod stream;
 pub mod subsurface;
 pub mod terrain;
+pub mod volume;

@@ -8,8 +8,10 @@
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`].
 
+pub mod poisson;
 pub mod serve;
 pub mod strata;
+pub mod volume;
 
 use crate::cli::BenchArgs;
 use crate::terrain::fractal::fbm_batch;
@@ -29,7 +31,11 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "tiles" => tiles(args),
         "serve" => serve::run(args),
         "strata" => strata::run(args),
-        other => anyhow::bail!("unknown benchmark {other:?}; known: tiles, serve, strata"),
+        "poisson" => poisson::run(args),
+        "volume" => volume::run(args),
+        other => anyhow::bail!(
+            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume"
+        ),
     }
 }
 

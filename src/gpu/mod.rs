@@ -44,7 +44,9 @@
 
 pub mod device;
 pub mod layout;
+pub mod poisson;
 pub mod tile;
+pub mod volume;
 
 pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, GpuHandle,

@@ -10,6 +10,7 @@ pub mod fractal;
 pub mod hash;
 pub mod noise;
 pub mod plan;
+pub mod poisson;
 pub mod scatter;
 pub mod texture;
 pub mod tile;

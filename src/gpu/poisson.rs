@@ -1,0 +1,1 @@
+//! WGSL twin of the multigrid Poisson solver (`shaders/poisson.wgsl`).

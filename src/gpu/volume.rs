@@ -1,0 +1,1 @@
+//! WGSL twins of the volume stages (`shaders/volume*.wgsl`).

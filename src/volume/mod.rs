@@ -1,0 +1,7 @@
+//! Volume terrain (issue 5): Becher et al., *Feature-based volumetric terrain generation*.
+//!
+//! [`mesh`] turns a signed distance grid into a surface-nets quad mesh with quad classes and Ptex
+//! adjacency; [`pipeline`] builds a volume region's fields from feature curves.
+
+pub mod mesh;
+pub mod pipeline;
