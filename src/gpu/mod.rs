@@ -47,6 +47,7 @@ pub mod layout;
 pub mod poisson;
 pub mod tile;
 pub mod volume;
+pub mod volume_mesh;
 
 pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, GpuHandle,

@@ -28,6 +28,7 @@
 
 pub mod access;
 pub mod bodies;
+pub mod chunks;
 pub mod error;
 pub mod exports;
 pub mod jobs;

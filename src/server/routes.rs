@@ -41,6 +41,7 @@ pub fn router(state: AppState) -> Router {
         .route("/metrics", get(super::metrics::render))
         .merge(super::worlds::routes())
         .merge(super::exports::routes())
+        .merge(super::chunks::routes())
         .merge(crate::stream::routes::router())
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {

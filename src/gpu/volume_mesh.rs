@@ -1,0 +1,1 @@
+//! WGSL twin of surface-nets meshing (`shaders/volume_mesh.wgsl`).
