@@ -300,6 +300,10 @@ pub struct QuadMesh {
     pub(crate) cell_vertex: Vec<u32>,
     /// Scratch: the quad on each of a vertex's twelve cell edges ([`CELL_EDGES`] order).
     pub(crate) slots: Vec<[u32; 12]>,
+    /// Scratch: corner sign mask of each vertex's cell (bit `i` = corner `i` is solid).
+    pub(crate) masks: Vec<u8>,
+    /// Scratch: sign bits of two sample slices.
+    pub(crate) signs: Vec<u64>,
 }
 
 impl QuadMesh {
@@ -326,6 +330,7 @@ impl QuadMesh {
         self.edges.clear();
         self.adjacency.clear();
         self.slots.clear();
+        self.masks.clear();
     }
 
     /// The point of quad `q`'s bilinear patch at local `(u, v)`, metres.

@@ -23,7 +23,7 @@ pub fn surface_nets(
     validate(sdf, attrs, opts)?;
     out.clear();
     emit(sdf, attrs, opts, out);
-    super::ptex::adjacency(sdf, opts.dims, out);
+    super::ptex::adjacency(out);
     Ok(())
 }
 
@@ -82,66 +82,124 @@ pub(crate) fn emit(
     let mut ring = std::mem::take(&mut out.cell_vertex);
     ring.clear();
     ring.resize(2 * slice, NONE);
+    // Sign bits (`S < 0`) of two sample slices, 64 samples per word: cells whose eight corners
+    // agree are skipped a word at a time.
+    let words = nx.div_ceil(64);
+    let plane = ny * words;
+    let mut signs = std::mem::take(&mut out.signs);
+    signs.clear();
+    signs.resize(2 * plane, 0);
+    fill_signs(&sdf[..sz], nx, &mut signs[..plane]);
     for cz in 0..nz - 1 {
         let cur = (cz & 1) * slice;
         let prev = slice - cur;
         ring[cur..cur + slice].fill(NONE);
+        let (lo, hi) = ((cz & 1) * plane, ((cz + 1) & 1) * plane);
+        fill_signs(
+            &sdf[(cz + 1) * sz..(cz + 2) * sz],
+            nx,
+            &mut signs[hi..hi + plane],
+        );
         for cy in 0..cny {
             let row = cy * sy + cz * sz;
-            for cx in 0..cnx {
-                let i = row + cx;
-                let v: [f32; 8] = offs.map(|o| sdf[i + o]);
-                let mut mask = 0u32;
-                for (k, &s) in v.iter().enumerate() {
-                    mask |= u32::from(s < 0.0) << k;
+            let rows = [
+                lo + cy * words,
+                lo + (cy + 1) * words,
+                hi + cy * words,
+                hi + (cy + 1) * words,
+            ];
+            let word = |w: usize| -> (u64, u64) {
+                if w == words {
+                    return (0, u64::MAX);
                 }
-                if mask == 0 || mask == 0xff {
-                    continue;
-                }
-                let vi = out.positions.len() as u32;
-                ring[cur + cy * cnx + cx] = vi;
-                push_vertex(out, &v, mask, [cx, cy, cz], i, &offs, attrs, spacing);
-                // Quads of the three grid edges leaving corner 0 (sample p = this cell's corner).
-                let p = [cx as u32, cy as u32, cz as u32];
-                if (0..3).any(|k| p[k] < qmin[k] || p[k] >= qmax[k]) {
-                    continue;
-                }
-                let solid0 = mask & 1 != 0;
-                let at = |x: usize, y: usize, slice_base: usize| slice_base + y * cnx + x;
-                // Edge along X (corner 1): cells p − Y − Z, p − Z, p, p − Y.
-                if cy > 0 && cz > 0 && ((mask >> 1) & 1 != 0) != solid0 {
-                    let c = [
-                        ring[at(cx, cy - 1, prev)],
-                        ring[at(cx, cy, prev)],
-                        vi,
-                        ring[at(cx, cy - 1, cur)],
-                    ];
-                    push_quad(out, 0, solid0, c, p);
-                }
-                // Edge along Y (corner 2): b = Z, c = X: cells p − Z − X, p − X, p, p − Z.
-                if cz > 0 && cx > 0 && ((mask >> 2) & 1 != 0) != solid0 {
-                    let c = [
-                        ring[at(cx - 1, cy, prev)],
-                        ring[at(cx - 1, cy, cur)],
-                        vi,
-                        ring[at(cx, cy, prev)],
-                    ];
-                    push_quad(out, 1, solid0, c, p);
-                }
-                // Edge along Z (corner 4): b = X, c = Y: cells p − X − Y, p − Y, p, p − X.
-                if cx > 0 && cy > 0 && ((mask >> 4) & 1 != 0) != solid0 {
-                    let c = [
-                        ring[at(cx - 1, cy - 1, cur)],
-                        ring[at(cx, cy - 1, cur)],
-                        vi,
-                        ring[at(cx - 1, cy, cur)],
-                    ];
-                    push_quad(out, 2, solid0, c, p);
+                let r = rows.map(|b| signs[b + w]);
+                (r[0] | r[1] | r[2] | r[3], r[0] & r[1] & r[2] & r[3])
+            };
+            let mut next = word(0);
+            for w in 0..words {
+                let (any0, all0) = next;
+                next = word(w + 1);
+                let any = any0 | (any0 >> 1) | (next.0 << 63);
+                let all = all0 & ((all0 >> 1) | (next.1 << 63));
+                let valid = cnx - 64 * w;
+                let mut mixed = (any & !all)
+                    & if valid >= 64 {
+                        u64::MAX
+                    } else {
+                        (1u64 << valid) - 1
+                    };
+                while mixed != 0 {
+                    let cx = 64 * w + mixed.trailing_zeros() as usize;
+                    mixed &= mixed - 1;
+                    let i = row + cx;
+                    let v: [f32; 8] = offs.map(|o| sdf[i + o]);
+                    let mut mask = 0u32;
+                    for (k, &s) in v.iter().enumerate() {
+                        mask |= u32::from(s < 0.0) << k;
+                    }
+                    if mask == 0 || mask == 0xff {
+                        continue;
+                    }
+                    let vi = out.positions.len() as u32;
+                    ring[cur + cy * cnx + cx] = vi;
+                    push_vertex(out, &v, mask, [cx, cy, cz], i, &offs, attrs, spacing);
+                    // Quads of the three grid edges leaving corner 0 (sample p = this cell's corner).
+                    let p = [cx as u32, cy as u32, cz as u32];
+                    if (0..3).any(|k| p[k] < qmin[k] || p[k] >= qmax[k]) {
+                        continue;
+                    }
+                    let solid0 = mask & 1 != 0;
+                    let at = |x: usize, y: usize, slice_base: usize| slice_base + y * cnx + x;
+                    // Edge along X (corner 1): cells p − Y − Z, p − Z, p, p − Y.
+                    if cy > 0 && cz > 0 && ((mask >> 1) & 1 != 0) != solid0 {
+                        let c = [
+                            ring[at(cx, cy - 1, prev)],
+                            ring[at(cx, cy, prev)],
+                            vi,
+                            ring[at(cx, cy - 1, cur)],
+                        ];
+                        push_quad(out, 0, solid0, c, p);
+                    }
+                    // Edge along Y (corner 2): b = Z, c = X: cells p − Z − X, p − X, p, p − Z.
+                    if cz > 0 && cx > 0 && ((mask >> 2) & 1 != 0) != solid0 {
+                        let c = [
+                            ring[at(cx - 1, cy, prev)],
+                            ring[at(cx - 1, cy, cur)],
+                            vi,
+                            ring[at(cx, cy, prev)],
+                        ];
+                        push_quad(out, 1, solid0, c, p);
+                    }
+                    // Edge along Z (corner 4): b = X, c = Y: cells p − X − Y, p − Y, p, p − X.
+                    if cx > 0 && cy > 0 && ((mask >> 4) & 1 != 0) != solid0 {
+                        let c = [
+                            ring[at(cx - 1, cy - 1, cur)],
+                            ring[at(cx, cy - 1, cur)],
+                            vi,
+                            ring[at(cx - 1, cy, cur)],
+                        ];
+                        push_quad(out, 2, solid0, c, p);
+                    }
                 }
             }
         }
     }
     out.cell_vertex = ring;
+    out.signs = signs;
+}
+
+/// Sign bits of one sample slice: bit `x % 64` of word `y·words + x / 64` is `S(x, y) < 0`.
+fn fill_signs(slice: &[f32], nx: usize, out: &mut [u64]) {
+    let words = nx.div_ceil(64);
+    for (row, dst) in slice.chunks_exact(nx).zip(out.chunks_exact_mut(words)) {
+        for (chunk, word) in row.chunks(64).zip(dst.iter_mut()) {
+            let mut bits = 0u64;
+            for (b, &v) in chunk.iter().enumerate() {
+                bits |= u64::from(v < 0.0) << b;
+            }
+            *word = bits;
+        }
+    }
 }
 
 /// Appends the vertex of a surface cell: position, normal, attributes, empty quad slots.
@@ -199,6 +257,7 @@ fn push_vertex(
         }
     });
     out.slots.push([NONE; 12]);
+    out.masks.push(mask as u8);
 }
 
 /// Trilinear weights of the eight corners at in-cell offset `f`.

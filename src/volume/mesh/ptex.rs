@@ -24,7 +24,7 @@
 //! that [`super::nets`] fills while emitting quads (the paper's "indices of generated quads
 //! stored per vertex in a fixed pattern").
 
-use super::{Neighbor, QuadMesh, NONE};
+use super::{Neighbor, QuadClass, QuadMesh, NONE};
 
 /// An affine map of uv space with integer coefficients: `u' = m[0][0]·u + m[0][1]·v + t[0]`,
 /// `v' = m[1][0]·u + m[1][1]·v + t[1]`.
@@ -98,55 +98,100 @@ pub fn edge_point(k: usize, t: f32) -> [f32; 2] {
     ]
 }
 
-/// Fills `mesh.adjacency` from the quads, their grid edges and the per-vertex quad slots.
-pub(crate) fn adjacency(sdf: &[f32], dims: [usize; 3], mesh: &mut QuadMesh) {
-    let (sy, sz) = (dims[0] as i64, (dims[0] * dims[1]) as i64);
-    let solid = |p: [i64; 3]| sdf[(p[0] + sy * p[1] + sz * p[2]) as usize] < 0.0;
+/// What edge `k` of a quad of some class needs, relative to the cell `c0` of its vertex `k`:
+/// the corner bits of the face's samples `P0 = p`, `P1 = p + eₐ`, `R0 = p + δ`, `R1 = P1 + δ` in
+/// `c0`'s corner mask, and the slots in `c0`'s quad table of the three other grid edges of the
+/// face (the edge `P0–R0`, the edge `P1–R1`, the parallel edge `R0–R1`).
+#[derive(Clone, Copy, Debug, Default)]
+struct EdgeRule {
+    bits: [u8; 4],
+    slots: [u8; 3],
+}
+
+/// The cells of a quad's vertices relative to its grid edge's lower sample `p` (module docs of
+/// [`super`]: `c(j_b, j_c) = p − (1 − j_b)·e_b − (1 − j_c)·e_c`, in the class's vertex order).
+fn vertex_cells(class: QuadClass) -> [[i64; 3]; 4] {
+    let a = class.axis();
+    let (b, c) = ((a + 1) % 3, (a + 2) % 3);
+    let cell = |jb: i64, jc: i64| {
+        let mut v = [0i64; 3];
+        v[b] = jb - 1;
+        v[c] = jc - 1;
+        v
+    };
+    if class.positive() {
+        [cell(0, 0), cell(1, 0), cell(1, 1), cell(0, 1)]
+    } else {
+        [cell(0, 0), cell(0, 1), cell(1, 1), cell(1, 0)]
+    }
+}
+
+/// The [`EdgeRule`] of every class and edge.
+fn edge_rules() -> [[EdgeRule; 4]; 6] {
+    let mut out = [[EdgeRule::default(); 4]; 6];
+    for class in QuadClass::ALL {
+        let a = class.axis();
+        let cells = vertex_cells(class);
+        for k in 0..4 {
+            let (c0, c1) = (cells[k], cells[(k + 1) % 4]);
+            let d = (0..3).find(|&i| c0[i] != c1[i]).unwrap_or(a);
+            let e = 3 - a - d;
+            let mut de = [0i64; 3];
+            de[e] = if c0[e] < 0 { -1 } else { 1 };
+            let mut ea = [0i64; 3];
+            ea[a] = 1;
+            let lo_e = if de[e] < 0 { de } else { [0; 3] };
+            let rel = |s: [i64; 3]| [s[0] - c0[0], s[1] - c0[1], s[2] - c0[2]];
+            let bit = |s: [i64; 3]| {
+                let r = rel(s);
+                (r[0] + 2 * r[1] + 4 * r[2]) as u8
+            };
+            let slot = |lo: [i64; 3], axis: usize| {
+                let r = rel(lo);
+                (4 * axis as i64 + r[(axis + 1) % 3] + 2 * r[(axis + 2) % 3]) as u8
+            };
+            out[class as usize][k] = EdgeRule {
+                bits: [bit([0; 3]), bit(ea), bit(de), bit(add(ea, de))],
+                slots: [slot(lo_e, e), slot(add(ea, lo_e), e), slot(de, a)],
+            };
+        }
+    }
+    out
+}
+
+/// Fills `mesh.adjacency` from the quads, the per-vertex quad slots and the vertices' corner
+/// masks. Edge `k` of quad `Q` joins the vertices of cells `c0`, `c1`; the face between them is a
+/// face of `c0`, so its four corner signs are bits of `c0`'s mask and its four grid edges are
+/// slots of `c0`'s quad table: which slot holds the neighbour depends only on the signs and on
+/// `(class, k)`.
+pub(crate) fn adjacency(mesh: &mut QuadMesh) {
+    let rules = edge_rules();
     mesh.adjacency.clear();
     mesh.adjacency.reserve(mesh.quads.len());
-    for q in 0..mesh.quads.len() {
-        let quad = mesh.quads[q];
-        let class = mesh.classes[q];
-        let a = class.axis();
-        let p = mesh.edges[q].map(i64::from);
-        let mut ea = [0i64; 3];
-        ea[a] = 1;
-        let p1 = add(p, ea);
+    for (quad, class) in mesh.quads.iter().zip(&mesh.classes) {
         let mut row = [Neighbor::NONE; 4];
         for (k, slot) in row.iter_mut().enumerate() {
+            let rule = rules[*class as usize][k];
             let (v0, v1) = (quad[k], quad[(k + 1) % 4]);
-            let (c0, c1) = (mesh.cells[v0 as usize], mesh.cells[v1 as usize]);
-            let Some(d) = (0..3).find(|&i| c0[i] != c1[i]) else {
-                continue;
-            };
-            // The face lies in the plane spanned by `a` and `e`; it extends from Q's edge toward
-            // the cells' side along `e`.
-            let e = 3 - a - d;
-            let step = if i64::from(c0[e]) < p[e] { -1 } else { 1 };
-            let mut de = [0i64; 3];
-            de[e] = step;
-            let (r0, r1) = (add(p, de), add(p1, de));
-            let (s0, s1, sr0, sr1) = (solid(p), solid(p1), solid(r0), solid(r1));
-            let lo_e = if step < 0 { de } else { [0; 3] };
-            // Partner grid edge: (lower sample, axis).
-            let third_at_p0 = (add(p, lo_e), e);
-            let third_at_p1 = (add(p1, lo_e), e);
+            let mask = mesh.masks[v0 as usize];
+            let [s0, s1, sr0, sr1] = rule.bits.map(|b| (mask >> b) & 1 == 1);
             let partner = if sr0 == sr1 {
+                // Two sign changes: P1–R1 if R matches P0, else P0–R0.
                 if sr0 == s0 {
-                    third_at_p1
+                    rule.slots[1]
                 } else {
-                    third_at_p0
+                    rule.slots[0]
                 }
             } else if sr0 == s0 {
-                (r0, a)
+                rule.slots[2]
             } else if s0 {
                 // Checkerboard face: pair with the quad sharing this quad's solid corner.
-                third_at_p0
+                rule.slots[0]
             } else {
                 debug_assert!(s1);
-                third_at_p1
+                rule.slots[1]
             };
-            let n = lookup(mesh, v0, partner);
+            let n = mesh.slots[v0 as usize][partner as usize];
             if n == NONE {
                 continue;
             }
@@ -158,7 +203,7 @@ pub(crate) fn adjacency(sdf: &[f32], dims: [usize; 3], mesh: &mut QuadMesh) {
                     transform: (4 * k + k2) as u8,
                 };
             } else {
-                debug_assert!(false, "quad {q} edge {k}: neighbour {n} is not opposite");
+                debug_assert!(false, "edge {k}: neighbour {n} is not opposite");
             }
         }
         mesh.adjacency.push(row);
@@ -167,20 +212,4 @@ pub(crate) fn adjacency(sdf: &[f32], dims: [usize; 3], mesh: &mut QuadMesh) {
 
 fn add(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-/// The quad on grid edge `(lower sample, axis)`, read from the slots of vertex `v` (whose cell
-/// contains that edge), or [`NONE`].
-fn lookup(mesh: &QuadMesh, v: u32, (lo, axis): ([i64; 3], usize)) -> u32 {
-    let c = mesh.cells[v as usize].map(i64::from);
-    let (b, cc) = ((axis + 1) % 3, (axis + 2) % 3);
-    let (o1, o2) = (lo[b] - c[b], lo[cc] - c[cc]);
-    if !(0..2).contains(&o1) || !(0..2).contains(&o2) || lo[axis] != c[axis] {
-        debug_assert!(
-            false,
-            "grid edge {lo:?}/{axis} is not an edge of cell {c:?}"
-        );
-        return NONE;
-    }
-    mesh.slots[v as usize][4 * axis + (o1 + 2 * o2) as usize]
 }
