@@ -8,6 +8,7 @@
 //! [`Compute::tile_cached`] puts the [`crate::cache::StageCache`] in front: a tile whose input
 //! hash is cached runs no stage; otherwise each stage run is counted there.
 
+use crate::authoring::Displacement;
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
@@ -104,22 +105,31 @@ impl Compute {
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
     pub async fn tile(&self, plan: Arc<WorldPlan>, key: TileKey, coarser: [bool; 4]) -> Tile {
-        self.run_stages(plan, key, coarser, None).await
+        self.run_stages(plan, key, coarser, None, Vec::new()).await
     }
 
     /// The tile whose input hash is `inputs` ([`crate::scene::SceneInputs::tile`] of the same
     /// plan, key and seams): from `cache` when it holds it (memory, then disk), else computed as
     /// [`Compute::tile`] does, with each stage run counted in `cache`, and kept there.
-    pub async fn tile_cached(
+    /// `authored` yields the solved regions the tile meets; it is awaited only on a miss.
+    pub async fn tile_cached<F>(
         &self,
         cache: &StageCache,
         inputs: InputHash,
         plan: Arc<WorldPlan>,
         key: TileKey,
         seams: [bool; 4],
-    ) -> Arc<Tile> {
+        authored: F,
+    ) -> Arc<Tile>
+    where
+        F: std::future::Future<Output = Vec<Arc<Displacement>>>,
+    {
         cache
-            .get_or_compute(inputs, || self.run_stages(plan, key, seams, Some(cache)))
+            .get_or_compute(inputs, || async move {
+                let authored = authored.await;
+                self.run_stages(plan, key, seams, Some(cache), authored)
+                    .await
+            })
             .await
     }
 
@@ -129,6 +139,7 @@ impl Compute {
         key: TileKey,
         coarser: [bool; 4],
         counts: Option<&StageCache>,
+        authored: Vec<Arc<Displacement>>,
     ) -> Tile {
         let count = |stage, since: std::time::Instant| {
             if let Some(c) = counts {
@@ -137,16 +148,23 @@ impl Compute {
         };
         let n = TILE_VERTS + 2;
         let started = std::time::Instant::now();
-        let f = self
-            .field(plan.clone(), key.lod, key.x * 64 - 1, key.z * 64 - 1, n, n)
-            .await;
+        let (gx0, gz0) = (key.x * 64 - 1, key.z * 64 - 1);
+        let mut f = self.field(plan.clone(), key.lod, gx0, gz0, n, n).await;
+        let spacing = |lod: u32| plan.lods[lod as usize].spacing_m;
+        for d in &authored {
+            d.add_to_lattice(spacing(key.lod), gx0, gz0, n, n, &mut f.heights);
+        }
         count(Stage::Field, started);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 let started = std::time::Instant::now();
-                strips.push((*edge, self.field(plan.clone(), lod, gx0, gz0, w, h).await));
+                let mut strip = self.field(plan.clone(), lod, gx0, gz0, w, h).await;
+                for d in &authored {
+                    d.add_to_lattice(spacing(lod), gx0, gz0, w, h, &mut strip.heights);
+                }
+                strips.push((*edge, strip));
                 count(Stage::Snap, started);
             }
         }

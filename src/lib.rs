@@ -6,6 +6,7 @@
 //! their versions and tokens durably; [`cache`] keeps finished tiles under the hash of their
 //! inputs.
 
+pub mod authoring;
 pub mod bench;
 pub mod cache;
 pub mod cli;

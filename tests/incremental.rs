@@ -220,7 +220,8 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         &token,
         json!([{ "op": "add", "path": "/regions/-",
                  "value": { "id": "hill", "bbox": { "min": min, "max": max },
-                            "ops": [{ "tool": "raise", "h": 5 }] } }]),
+                            "ops": [{ "op": "amplify", "center": [99.5, 99.5],
+                                      "radius_m": 1, "factor": 1 }] } }]),
     )
     .await;
     assert_eq!(v2, 2);
@@ -240,7 +241,8 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         "exactly the touched tiles re-run the field stage"
     );
     assert_eq!(field_runs(&state), 16 + expect.len() as u64);
-    // Regions do not shape the terrain yet, so the recomputed tiles equal the old ones.
+    // The region's one operation changes nothing (an amplify brush of factor 1: the
+    // displacement is exactly 0), so the recomputed tiles equal the old ones.
     assert_eq!(bodies, v1);
     // The old version is still cached under its own hashes.
     let (ran, _) = request_block(&app, &state, &id, &keys, 1).await;
@@ -281,7 +283,7 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         &app,
         &id,
         &token,
-        json!([{ "op": "replace", "path": "/regions/0/ops/0/h", "value": 6 }]),
+        json!([{ "op": "replace", "path": "/regions/0/ops/0/radius_m", "value": 2 }]),
     )
     .await;
     let (ran, _) = request_block(&app, &state, &id, &keys, v5).await;

@@ -2,7 +2,10 @@
 //! and `node tests/js/viewer.mjs` drives it in Debian's headless Chromium (swiftshader WebGL2):
 //! the page connects to the seed stream, at least 50 tiles arrive, no console errors, a WebGL2
 //! context exists and the screenshot is not blank. The screenshot is written to
-//! `target/viewer.png` and copied to `docs/viewer.png` (the README shows it).
+//! `target/viewer.png` and copied to `docs/viewer.png` (the README shows it). Then
+//! `tests/js/edit.mjs` creates a world, opens the viewer on it with an edit token, raises the
+//! terrain with the UI's raise tool and a click, and compares screenshots before and after
+//! (`target/viewer-edit-{before,after}.png`): changed around the click, unchanged far away.
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
@@ -85,6 +88,40 @@ fn ensure_packages() {
     );
 }
 
+fn path(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+/// Runs `node tests/js/<script> <args>` with a time limit (a hung browser must not hang the
+/// suite); returns whether it succeeded and its output.
+fn run_node(script: &str, args: &[&str]) -> (bool, String) {
+    let t0 = Instant::now();
+    let mut child = Command::new("node")
+        .arg(root().join("tests").join("js").join(script))
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("start node tests/js/{script}: {e}"));
+    let limit = Duration::from_secs(360);
+    while child.try_wait().expect("wait for node").is_none() {
+        if t0.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("node tests/js/{script} did not finish within {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let out = child.wait_with_output().expect("node output");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    println!("{script} took {:.1} s:\n{text}", t0.elapsed().as_secs_f64());
+    (out.status.success(), text)
+}
+
 #[test]
 fn viewer_streams_and_draws_terrain_in_headless_chromium() {
     require_node();
@@ -108,41 +145,18 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
     );
     let shot = root().join("target").join("viewer.png");
     let copy = root().join("docs").join("viewer.png");
-    let t0 = Instant::now();
-    let mut child = Command::new("node")
-        .arg(root().join("tests").join("js").join("viewer.mjs"))
-        .arg(&url)
-        .arg(&shot)
-        .arg(&copy)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start node tests/js/viewer.mjs");
-    // A hung browser must not hang the test suite.
-    let limit = Duration::from_secs(120);
-    loop {
-        if child.try_wait().expect("wait for node").is_some() {
-            break;
-        }
-        if t0.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("node tests/js/viewer.mjs did not finish within {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    let out = child.wait_with_output().expect("node output");
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    println!("{stdout}");
-    eprintln!("{stderr}");
-    println!("viewer test took {:.1} s", t0.elapsed().as_secs_f64());
+    let viewer = run_node("viewer.mjs", &[url.as_str(), path(&shot), path(&copy)]);
+    // Issue 7, Done-when 2: a scripted edit through the UI changes the terrain where it edits.
+    let before = root().join("target").join("viewer-edit-before.png");
+    let after = root().join("target").join("viewer-edit-after.png");
+    let edit = run_node(
+        "edit.mjs",
+        &[server.addr.as_str(), path(&before), path(&after)],
+    );
     drop(server);
     let _ = std::fs::remove_dir_all(&data);
-    assert!(
-        out.status.success(),
-        "the viewer test failed ({}):\n{stdout}\n{stderr}",
-        out.status
-    );
+    for (name, (ok, out)) in [("viewer.mjs", viewer), ("edit.mjs", edit)] {
+        assert!(ok, "{name} failed:\n{out}");
+    }
     assert!(shot.is_file(), "no screenshot at {}", shot.display());
 }

@@ -32,8 +32,10 @@
 //! of the world settings changes every hash.
 
 use super::{Element, Rect, Scene};
+use crate::authoring::RegionSpec;
 use crate::terrain::{TileKey, WorldParams};
 use serde_json::Value;
+use std::sync::Arc;
 
 /// Domain tag at the start of every tile input encoding.
 pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
@@ -134,6 +136,17 @@ pub struct SceneInputs {
     world: WorldParams,
     world_digest: [u8; 32],
     elements: Vec<ElementInput>,
+    regions: Vec<RegionInput>,
+}
+
+/// An authored region of the scene, parsed, with the digest that keys its solution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RegionInput {
+    /// Digest of the world settings and the element: equal digests, equal solutions (with the
+    /// seed).
+    pub digest: [u8; 32],
+    /// The parsed element.
+    pub spec: Arc<RegionSpec>,
 }
 
 impl SceneInputs {
@@ -151,11 +164,43 @@ impl SceneInputs {
                 })
             })
             .collect();
+        let world_digest = digest(&scene.world);
+        let regions = scene
+            .regions
+            .iter()
+            .filter_map(|e| {
+                let spec = RegionSpec::from_element(e).ok()?;
+                let mut h = blake3::Hasher::new();
+                h.update(&world_digest);
+                h.update(&digest(e));
+                Some(RegionInput {
+                    digest: *h.finalize().as_bytes(),
+                    spec: Arc::new(spec),
+                })
+            })
+            .collect();
         Self {
             world: scene.world.clone(),
-            world_digest: digest(&scene.world),
+            world_digest,
             elements,
+            regions,
         }
+    }
+
+    /// The authored regions whose bbox meets what tile `key` reads, in document order.
+    pub fn regions_touching(&self, key: TileKey) -> Vec<RegionInput> {
+        let reach = tile_reach(&self.world, key);
+        self.regions
+            .iter()
+            .filter(|r| {
+                Rect {
+                    min: r.spec.min,
+                    max: r.spec.max,
+                }
+                .intersects(&reach)
+            })
+            .cloned()
+            .collect()
     }
 
     /// The inputs of a world with these settings and no elements (a bare seed's world).
@@ -164,6 +209,7 @@ impl SceneInputs {
             world: world.clone(),
             world_digest: digest(world),
             elements: Vec::new(),
+            regions: Vec::new(),
         }
     }
 

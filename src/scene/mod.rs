@@ -16,8 +16,8 @@ mod inputs;
 
 pub use dirty::{dirty_region, Dirty, Rect};
 pub use inputs::{
-    canonical_json, margin_m, tile_footprint, tile_inputs, tile_reach, SceneInputs, INPUTS_DOMAIN,
-    TILE_CODE_VERSION,
+    canonical_json, margin_m, tile_footprint, tile_inputs, tile_reach, RegionInput, SceneInputs,
+    INPUTS_DOMAIN, TILE_CODE_VERSION,
 };
 
 use crate::terrain::world::ParamError;
@@ -134,7 +134,7 @@ pub fn param_pointer(prefix: &str, field: &str) -> String {
     out
 }
 
-fn path_pointer(path: &serde_path_to_error::Path) -> String {
+pub(crate) fn path_pointer(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
     for seg in path.iter() {
@@ -229,6 +229,10 @@ impl Scene {
                             "must not be less than min",
                         ));
                     }
+                }
+                if kind == "regions" {
+                    crate::authoring::RegionSpec::from_element(e)
+                        .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
                 }
             }
         }

@@ -35,6 +35,7 @@ pub mod jobs;
 pub mod metrics;
 pub mod params;
 mod plans;
+pub mod regions;
 pub mod routes;
 pub mod worlds;
 
@@ -99,6 +100,8 @@ pub struct AppState {
     pub bodies: Arc<bodies::BodyCache>,
     /// Export jobs (see [`AppState::with_jobs_dir`]).
     pub jobs: Arc<jobs::Jobs>,
+    /// Solved authored regions.
+    pub regions: Arc<regions::RegionCache>,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -127,6 +130,7 @@ impl AppState {
                 default_jobs_dir(),
                 jobs::JobLimits::default(),
             )),
+            regions: Arc::default(),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
@@ -244,8 +248,19 @@ impl AppState {
         seams: [bool; 4],
     ) -> Arc<Tile> {
         let hash = inputs.tile(plan.seed, key, seams);
+        let regions = inputs.regions_touching(key);
+        let (cache, solved) = (self.regions.clone(), plan.clone());
+        let authored = async move {
+            let mut out = Vec::new();
+            for region in regions {
+                if let Some(d) = cache.get(&solved, &region).await {
+                    out.push(d);
+                }
+            }
+            out
+        };
         self.compute
-            .tile_cached(&self.cache, hash, plan, key, seams)
+            .tile_cached(&self.cache, hash, plan, key, seams, authored)
             .await
     }
 

@@ -1,12 +1,14 @@
 // The strata viewer: streams height tiles over strata.stream.v1 and renders them with three.js.
 //
-// Query: ?seed=42 (default) or ?world=<id>&token=<read token>; ?x=&z= (metres) where the camera
-// starts; ?rings=2,1,2,4,8 the LOD rings of the view.
+// Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
+// camera looks at first and ?dist= (metres) how far away it starts; ?rings=2,1,2,4,8 the LOD rings
+// of the view. With a world and a token the edit tools are shown (see ./edit.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { decodeFrame, decodeTile, type Tile } from "./frame";
 import { buildMesh, disposeMesh } from "./mesh";
 import { selectView, tileKey } from "./view";
+import { addPatch, crestRegion, pointRegion, removePatch, TOOLS, type GroundPoint, type Tool } from "./edit";
 
 interface Held {
   mesh: THREE.Mesh;
@@ -28,6 +30,10 @@ interface StrataState {
   freed: number; // meshes freed because they left the view or were replaced
   /** Moves camera and target by (dx, dz) metres: lets tests fly without synthesising input. */
   moveBy: (dx: number, dz: number) => void;
+  tool: string; // the edit tool in use, "" when not editing
+  edits: number; // edits the server acknowledged (durable)
+  pendingEdits: number; // edits sent and not yet acknowledged
+  lastEdit: string; // id of the last region element the viewer added
 }
 
 declare global {
@@ -49,6 +55,10 @@ const state: StrataState = {
   viewTiles: 0,
   freed: 0,
   moveBy: () => {},
+  tool: "",
+  edits: 0,
+  pendingEdits: 0,
+  lastEdit: "",
 };
 window.__strata = state;
 
@@ -59,12 +69,13 @@ const token = q.get("token");
 const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
 const startX = Number(q.get("x") ?? 0) || 0;
 const startZ = Number(q.get("z") ?? 0) || 0;
+const startDist = Math.max(50, Math.min(20000, Number(q.get("dist") ?? 4600) || 4600));
 const CELL_M = 1; // default world; refined from /v1/info below
 
 // ---- HUD and errors -------------------------------------------------------------------------
 const hud = document.getElementById("hud") as HTMLElement;
 const errorBox = document.getElementById("errors") as HTMLElement;
-const title = document.getElementById("title") as HTMLElement;
+const title = document.getElementById("title-text") as HTMLElement;
 title.textContent = world ? `world ${world}` : `seed ${seed}`;
 
 function showError(text: string): void {
@@ -95,7 +106,7 @@ sun.position.set(-0.8, 0.55, -0.3);
 scene.add(sun);
 
 const camera = new THREE.PerspectiveCamera(55, window.innerWidth / window.innerHeight, 5, 60000);
-camera.position.set(startX, 2600, startZ + 3800);
+camera.position.set(startX, startDist * 0.565, startZ + startDist * 0.825);
 const controls = new OrbitControls(camera, canvas);
 controls.target.set(startX, 0, startZ);
 controls.enableDamping = true;
@@ -281,9 +292,11 @@ function onControl(m: any): void {
       state.inFlight += m.tiles.length;
       break;
     case "ack":
+      onAck(m.id, m.version);
       break;
     case "error":
       showError(`server: ${m.code}: ${m.message}${m.field ? ` (${m.field})` : ""}`);
+      if (typeof m.id === "string" && pending.delete(m.id)) state.pendingEdits = pending.size;
       break;
     default:
       showError(`unknown message ${String(m.type)}`);
@@ -301,6 +314,158 @@ fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   })
   .catch((e: Error) => showError(e.message));
 connect();
+
+// ---- editing ------------------------------------------------------------------------------------------
+// Each edit is one region element added over the socket; `pending` maps the edit message's id to
+// what it does, so the ack can push the element on the undo stack.
+const pending = new Map<string, { add?: string }>();
+const undoStack: string[] = [];
+let editSeq = 0;
+let crestStart: GroundPoint | undefined;
+const toolsBox = document.getElementById("tools") as HTMLElement | null;
+const toolStatus = document.getElementById("tool-status") as HTMLElement | null;
+
+function setStatus(text: string): void {
+  if (toolStatus) toolStatus.textContent = text;
+}
+
+function setTool(tool: Tool | ""): void {
+  state.tool = tool;
+  crestStart = undefined;
+  controls.enabled = true;
+  for (const b of toolsBox?.querySelectorAll("button[data-tool]") ?? []) {
+    (b as HTMLButtonElement).classList.toggle("on", b.getAttribute("data-tool") === tool);
+  }
+  setStatus(tool ? `${tool}: click the terrain${tool === "crest" ? " at both ends" : ""} · Esc: stop` : "");
+}
+
+function sendEdit(patch: object[], add?: string): void {
+  if (!socket || socket.readyState !== WebSocket.OPEN) {
+    showError("cannot edit: the stream is not connected");
+    return;
+  }
+  const id = `e${++editSeq}`;
+  pending.set(id, { add });
+  state.pendingEdits = pending.size;
+  socket.send(JSON.stringify({ type: "edit", id, patch }));
+  setStatus(`sent ${add ?? "undo"}…`);
+}
+
+function onAck(id: string, version: number): void {
+  const p = pending.get(id);
+  if (!p) return;
+  pending.delete(id);
+  state.pendingEdits = pending.size;
+  state.edits++;
+  if (p.add) {
+    undoStack.push(p.add);
+    state.lastEdit = p.add;
+  }
+  setStatus(`saved as version ${version}`);
+}
+
+async function undo(): Promise<void> {
+  const id = undoStack.pop();
+  if (!id || !world) return;
+  try {
+    const r = await fetch(new URL(`v1/worlds/${encodeURIComponent(world)}`, `${location.origin}${location.pathname}`), {
+      headers: token ? { authorization: `Bearer ${token}` } : {},
+    });
+    if (!r.ok) throw new Error(`GET world: HTTP ${r.status}`);
+    const doc = await r.json();
+    const index = (doc?.scene?.regions ?? []).findIndex((e: { id?: string }) => e?.id === id);
+    if (index < 0) throw new Error(`undo: region ${id} is no longer in the scene`);
+    sendEdit(removePatch(id, index));
+  } catch (e) {
+    showError((e as Error).message);
+  }
+}
+
+function groundHit(clientX: number, clientY: number): GroundPoint | undefined {
+  const ndc = new THREE.Vector2((clientX / window.innerWidth) * 2 - 1, -(clientY / window.innerHeight) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  const hit = raycaster.intersectObjects(terrain.children, false)[0];
+  return hit ? { x: hit.point.x, y: hit.point.y, z: hit.point.z } : undefined;
+}
+
+function applyTool(p: GroundPoint): void {
+  const tool = state.tool as Tool;
+  if (tool === "crest") {
+    if (!crestStart) {
+      crestStart = p;
+      setStatus("crest: now click the other end");
+      return;
+    }
+    const region = crestRegion(crestStart, p) as { id: string };
+    crestStart = undefined;
+    sendEdit(addPatch(region), region.id);
+    return;
+  }
+  const region = pointRegion(tool, p) as { id: string };
+  sendEdit(addPatch(region), region.id);
+}
+
+if (world && token && toolsBox) {
+  toolsBox.hidden = false;
+  for (const b of toolsBox.querySelectorAll("button[data-tool]")) {
+    b.addEventListener("click", () => {
+      const t = b.getAttribute("data-tool") as Tool;
+      setTool(state.tool === t ? "" : t);
+    });
+  }
+  toolsBox.querySelector("#undo")?.addEventListener("click", () => void undo());
+  window.addEventListener("keydown", (e) => {
+    if (e.key === "Escape") setTool("");
+    const n = Number(e.key);
+    if (n >= 1 && n <= TOOLS.length) setTool(TOOLS[n - 1]);
+    if (e.key === "z" && (e.ctrlKey || e.metaKey)) void undo();
+  });
+  // A click (no drag) with a tool selected edits; drags still orbit.
+  let down: { x: number; y: number; t: number } | undefined;
+  canvas.addEventListener("pointerdown", (e) => {
+    down = { x: e.clientX, y: e.clientY, t: performance.now() };
+  });
+  canvas.addEventListener("pointerup", (e) => {
+    if (!state.tool || !down || e.button !== 0) return;
+    const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
+    if (moved > 5 || performance.now() - down.t > 600) return;
+    const p = groundHit(e.clientX, e.clientY);
+    if (!p) {
+      showError("edit: no terrain under the cursor");
+      return;
+    }
+    applyTool(p);
+  });
+}
+
+// ---- world picker ----------------------------------------------------------------------------------
+const picker = document.getElementById("picker") as HTMLSelectElement | null;
+if (picker) {
+  const here = world ? `world:${world}` : `seed:${seed}`;
+  const option = (value: string, label: string) => {
+    const o = document.createElement("option");
+    o.value = value;
+    o.textContent = label;
+    o.selected = value === here;
+    picker.appendChild(o);
+  };
+  for (const s of new Set([seed, "42", "7", "2026"])) option(`seed:${s}`, `seed ${s}`);
+  fetch(new URL("v1/worlds", `${location.origin}${location.pathname}`), {
+    headers: token ? { authorization: `Bearer ${token}` } : {},
+  })
+    .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`world list: HTTP ${r.status}`))))
+    .then((doc) => {
+      for (const w of doc?.worlds ?? []) option(`world:${w.id}`, `world ${w.id} (seed ${w.seed})`);
+    })
+    .catch((e: Error) => showError(e.message));
+  picker.addEventListener("change", () => {
+    const [kind, value] = picker.value.split(/:(.*)/s);
+    const next = new URLSearchParams();
+    next.set(kind, value);
+    if (kind === "world" && value === world && token) next.set("token", token);
+    location.search = next.toString();
+  });
+}
 
 // ---- cursor probe and HUD ------------------------------------------------------------------------
 const pointer = new THREE.Vector2(2, 2);
@@ -355,7 +520,7 @@ function frame(now: number): void {
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · v${state.version}`,
-      `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down`,
+      `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–4: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");
   }
   requestAnimationFrame(frame);

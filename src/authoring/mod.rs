@@ -1,0 +1,40 @@
+//! Authored regions (issue 4): rectangles of the world edited in the gradient domain after Guérin,
+//! Peytavie, Masnou, Digne, Sauvage, Gain and Galin, *Gradient Terrain Authoring* (Computer
+//! Graphics Forum 41(2), 2022; `../shared/papers/guerin-gradient-terrain-authoring.txt`): the heights are the Poisson reconstruction `Δh = ∇·g` of an edited gradient field `g`, with
+//! hard elevation constraints as Dirichlet samples ([`crate::terrain::poisson`]).
+//!
+//! Pure code: no tokio, axum or wgpu.
+//!
+//! # The displacement formulation (how a region meets the infinite world)
+//!
+//! A region's grid is a square of `samples × samples` (`2^k + 1`) anchored at the west-north
+//! corner of its `bbox`, spacing `δ = max(width, depth) / (samples − 1)`. Its starting gradient
+//! field is the procedural world's own ([`grid::Procedural`] samples it), and its border takes the
+//! procedural heights as Dirichlet values. Rather than reconstructing heights `h` and replacing the
+//! world's, the region solves for the displacement `d = h − h_proc`:
+//!
+//! `Δd = ∇·(g − ∇h_proc)`, `d = 0` on the border and outside the `bbox`, `d = e − h_proc` where an
+//! elevation constraint imposes `e`.
+//!
+//! This is the same linear system (the Laplacian is linear), but an unedited region gives `d = 0`
+//! exactly, and a tile adds `d`, bilinearly interpolated at each vertex, to its own procedural
+//! heights at its own LOD ([`Displacement::add_to_lattice`]). Hence:
+//!
+//! - the region's edge meets the procedural world with no step: `d` is 0 on the border and
+//!   continuous inside;
+//! - neighbouring tiles share edges bit for bit: a vertex's displacement is a pure function of its
+//!   world position and the region;
+//! - coarser LODs keep their fewer octaves and still show the edit.
+//!
+//! Tools ([`spec::Op`]) are rasterised on the grid in document order ([`raster`]): each either
+//! adds to the target gradient of `d` (soft: the least-squares target) or fixes samples (hard).
+//! A hard constraint beats any conflicting soft one because fixed samples are not unknowns.
+
+pub mod grid;
+pub mod raster;
+pub mod region;
+pub mod spec;
+
+pub use grid::{Procedural, RegionGrid};
+pub use region::{solve_region, Displacement, RegionError};
+pub use spec::{Op, RegionSpec, Shape, MAX_OPS, MAX_POINTS, SAMPLE_CHOICES};

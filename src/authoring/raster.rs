@@ -1,0 +1,255 @@
+//! Rasterising tool operations on a region's grid, in the displacement formulation of
+//! [`super`]: hard operations fix samples of `d`, soft ones edit the target gradient of `d`.
+//!
+//! Discretisation as in [`crate::terrain::poisson::Problem`]: `gx[j·(n−1) + i]` is the target
+//! `∂d/∂x` on the edge between samples `(i, j)` and `(i+1, j)`, `gz[j·n + i]` the target `∂d/∂z`
+//! between `(i, j)` and `(i, j+1)`. Brush falloffs are the C² kernel `(1 − (r/R)²)³`.
+
+use super::grid::RegionGrid;
+use crate::terrain::hash::stream;
+use crate::terrain::noise::lattice;
+
+/// Hash purpose of the noise brush's seed.
+const NOISE_PURPOSE: u32 = 0x4a_0001;
+
+/// The C² brush falloff: 1 at the centre, 0 with zero first and second derivatives at `radius`.
+pub fn falloff(r: f64, radius: f64) -> f64 {
+    if radius <= 0.0 || r >= radius {
+        return 0.0;
+    }
+    let t = r / radius;
+    let u = 1.0 - t * t;
+    u * u * u
+}
+
+/// Distance from `p` to the polyline and the arc-length parameter of the closest point
+/// (`(distance, segment index, fraction along it)`).
+pub fn polyline_distance(pts: &[[f64; 2]], p: [f64; 2]) -> (f64, usize, f64) {
+    if pts.len() == 1 {
+        return (dist(pts[0], p), 0, 0.0);
+    }
+    let mut best = (f64::INFINITY, 0, 0.0);
+    for (s, w) in pts.windows(2).enumerate() {
+        let (a, b) = (w[0], w[1]);
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let len2 = d[0] * d[0] + d[1] * d[1];
+        let t = if len2 > 0.0 {
+            (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let q = [a[0] + t * d[0], a[1] + t * d[1]];
+        let dd = dist(q, p);
+        if dd < best.0 {
+            best = (dd, s, t);
+        }
+    }
+    best
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
+}
+
+/// The problem being built: the fixed samples of `d` with their values and the target gradient
+/// of `d`, plus the procedural heights they are relative to.
+#[derive(Clone, Debug)]
+pub struct Canvas {
+    /// The grid.
+    pub grid: RegionGrid,
+    /// Procedural heights at the samples, metres.
+    pub base: Vec<f32>,
+    /// True where `d` is fixed (outside the bbox, the border, and hard constraints).
+    pub fixed: Vec<bool>,
+    /// Samples a freeze brush protects from later hard constraints.
+    pub frozen: Vec<bool>,
+    /// `d` at the fixed samples, metres.
+    pub d: Vec<f32>,
+    /// Target `∂d/∂x` on the x-edges.
+    pub gx: Vec<f32>,
+    /// Target `∂d/∂z` on the z-edges.
+    pub gz: Vec<f32>,
+}
+
+impl Canvas {
+    /// An unedited region: `d = 0` fixed outside the bbox and on the border, zero target gradient.
+    pub fn new(grid: RegionGrid, base: Vec<f32>) -> Self {
+        let n = grid.n;
+        let fixed = (0..n * n)
+            .map(|v| !grid.is_interior(v % n, v / n))
+            .collect();
+        Self {
+            grid,
+            base,
+            fixed,
+            frozen: vec![false; n * n],
+            d: vec![0.0; n * n],
+            gx: vec![0.0; (n - 1) * n],
+            gz: vec![0.0; n * (n - 1)],
+        }
+    }
+
+    fn fix(&mut self, v: usize, height_m: f64) {
+        if self.frozen[v] || !self.grid.is_interior(v % self.grid.n, v / self.grid.n) {
+            return;
+        }
+        self.fixed[v] = true;
+        self.d[v] = (height_m - f64::from(self.base[v])) as f32;
+    }
+
+    /// Samples within `radius` of the polyline (at least the nearest one), with the parameter of
+    /// their closest point: `(sample, distance, segment, fraction)`.
+    fn near_polyline(&self, pts: &[[f64; 2]], radius: f64) -> Vec<(usize, f64, usize, f64)> {
+        let n = self.grid.n;
+        let mut out = Vec::new();
+        let mut nearest = (f64::INFINITY, 0, 0, 0.0);
+        for v in 0..n * n {
+            let p = self.grid.position(v % n, v / n);
+            let (d, s, t) = polyline_distance(pts, p);
+            if d <= radius {
+                out.push((v, d, s, t));
+            }
+            if d < nearest.0 {
+                nearest = (d, v, s, t);
+            }
+        }
+        if out.is_empty() {
+            out.push((nearest.1, nearest.0, nearest.2, nearest.3));
+        }
+        out
+    }
+
+    /// Hard elevation constraint along a polyline (one point is a polyline of one point), the
+    /// elevation interpolated linearly between the points' elevations.
+    pub fn elevation(&mut self, pts: &[[f64; 2]], elevations: &[f64], radius: f64) {
+        for (v, _, s, t) in self.near_polyline(pts, radius) {
+            let e = if elevations.len() == 1 {
+                elevations[0]
+            } else {
+                elevations[s] * (1.0 - t) + elevations[s + 1] * t
+            };
+            self.fix(v, e);
+        }
+    }
+
+    /// Freeze brush: fixes the samples within `radius` of `center` at the displacement `current`
+    /// (the solution of the operations so far) and protects them from later hard constraints.
+    pub fn freeze(&mut self, center: [f64; 2], radius: f64, current: &[f32]) {
+        for (v, ..) in self.near_polyline(&[center], radius) {
+            if self.grid.is_interior(v % self.grid.n, v / self.grid.n) {
+                self.fixed[v] = true;
+                self.d[v] = current[v];
+                self.frozen[v] = true;
+            }
+        }
+    }
+
+    /// Visits every edge with its midpoint: `f(is_x_edge, edge index, midpoint, (a, b))` where
+    /// `a`, `b` are the sample indices at its ends.
+    fn edges(&mut self, mut f: impl FnMut(&mut Self, bool, usize, [f64; 2], (usize, usize))) {
+        let n = self.grid.n;
+        let h = self.grid.spacing_m;
+        for j in 0..n {
+            for i in 0..n - 1 {
+                let p = self.grid.position(i, j);
+                f(
+                    self,
+                    true,
+                    j * (n - 1) + i,
+                    [p[0] + 0.5 * h, p[1]],
+                    (j * n + i, j * n + i + 1),
+                );
+            }
+        }
+        for j in 0..n - 1 {
+            for i in 0..n {
+                let p = self.grid.position(i, j);
+                f(
+                    self,
+                    false,
+                    j * n + i,
+                    [p[0], p[1] + 0.5 * h],
+                    (j * n + i, (j + 1) * n + i),
+                );
+            }
+        }
+    }
+
+    /// Gradient amplify/suppress brush: the target gradient of the heights, `∇h_proc + g_d`,
+    /// is scaled by `1 + (factor − 1)·f(r)`.
+    pub fn amplify(&mut self, center: [f64; 2], radius: f64, factor: f64) {
+        let inv = 1.0 / self.grid.spacing_m;
+        self.edges(|c, is_x, e, mid, (a, b)| {
+            let w = falloff(dist(mid, center), radius);
+            if w == 0.0 {
+                return;
+            }
+            let proc = (f64::from(c.base[b]) - f64::from(c.base[a])) * inv;
+            let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
+            let total = proc + f64::from(*g);
+            *g = (f64::from(*g) + (factor - 1.0) * w * total) as f32;
+        });
+    }
+
+    /// Noise brush: `g += f(r)·∇n` with `n = amplitude · lattice(x/λ, z/λ)`.
+    pub fn noise(
+        &mut self,
+        world_seed: u64,
+        center: [f64; 2],
+        radius: f64,
+        amplitude: f64,
+        wavelength: f64,
+        seed: u32,
+    ) {
+        let s = stream(world_seed, NOISE_PURPOSE, seed);
+        let n_at = |p: [f64; 2]| {
+            amplitude
+                * f64::from(lattice(
+                    (p[0] / wavelength) as f32,
+                    (p[1] / wavelength) as f32,
+                    s,
+                ))
+        };
+        let inv = 1.0 / self.grid.spacing_m;
+        self.edges(|c, is_x, e, mid, (a, b)| {
+            let w = falloff(dist(mid, center), radius);
+            if w == 0.0 {
+                return;
+            }
+            let n = c.grid.n;
+            let pa = c.grid.position(a % n, a / n);
+            let pb = c.grid.position(b % n, b / n);
+            let dn = (n_at(pb) - n_at(pa)) * inv;
+            let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
+            *g = (f64::from(*g) + w * dn) as f32;
+        });
+    }
+
+    /// Crest (Fig. 4): the ridge line fixed at `elevation` (hard), and on both flanks, out to
+    /// `width`, a target slope of `slope_deg` falling away from the line (soft; it replaces the
+    /// target gradient there, blended out over the last third of the width).
+    pub fn crest(&mut self, pts: &[[f64; 2]], elevation: f64, slope_deg: f64, width: f64) {
+        let half = 0.5 * self.grid.spacing_m;
+        self.elevation(pts, &[elevation], half);
+        let tan = slope_deg.to_radians().tan();
+        let inv = 1.0 / self.grid.spacing_m;
+        self.edges(|c, is_x, e, mid, (a, b)| {
+            let (d, s, t) = polyline_distance(pts, mid);
+            if d >= width || d == 0.0 {
+                return;
+            }
+            let w = ((width - d) / (width / 3.0)).min(1.0);
+            let (p0, p1) = if pts.len() == 1 {
+                (pts[0], pts[0])
+            } else {
+                (pts[s], pts[s + 1])
+            };
+            let q = [p0[0] + t * (p1[0] - p0[0]), p0[1] + t * (p1[1] - p0[1])];
+            let away = [(mid[0] - q[0]) / d, (mid[1] - q[1]) / d];
+            let target = -tan * if is_x { away[0] } else { away[1] };
+            let proc = (f64::from(c.base[b]) - f64::from(c.base[a])) * inv;
+            let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
+            *g = (f64::from(*g) * (1.0 - w) + (target - proc) * w) as f32;
+        });
+    }
+}

@@ -1,0 +1,353 @@
+//! The `regions` scene element: a `bbox`, a grid resolution and a list of tool operations.
+//!
+//! ```json
+//! {"id": "valley", "bbox": {"min": [0, 0], "max": [512, 512]}, "samples": 257,
+//!  "ops": [{"op": "elevation", "shape": {"point": [256, 256]}, "elevation_m": 80, "radius_m": 12},
+//!          {"op": "amplify", "center": [100, 300], "radius_m": 60, "factor": 2.0}]}
+//! ```
+//!
+//! Units: positions in world metres (`[x, z]`), radii and elevations in metres, slopes in
+//! degrees. Every limit is a constant here ([`SAMPLE_CHOICES`], [`MAX_OPS`], [`MAX_POINTS`]).
+
+use crate::scene::Element;
+use serde::{Deserialize, Serialize};
+
+/// Allowed grid resolutions, samples per side (`2^k + 1`).
+pub const SAMPLE_CHOICES: [usize; 7] = [33, 65, 129, 257, 513, 1025, 2049];
+/// Default grid resolution.
+pub const DEFAULT_SAMPLES: usize = 257;
+/// Most operations per region.
+pub const MAX_OPS: usize = 256;
+/// Most points of one polyline.
+pub const MAX_POINTS: usize = 1024;
+/// Largest magnitude of an elevation, metres.
+pub const MAX_ELEVATION_M: f64 = 20_000.0;
+
+/// Where an elevation constraint applies.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum Shape {
+    /// One point `[x, z]`, metres.
+    Point([f64; 2]),
+    /// A polyline of points `[x, z]`, metres.
+    Polyline(Vec<[f64; 2]>),
+}
+
+/// One tool operation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Op {
+    /// Hard elevation constraint: samples within `radius_m` of the shape take `elevation_m`
+    /// (a polyline may give one elevation per point in `elevations_m`, interpolated along it).
+    Elevation {
+        /// Point or polyline.
+        shape: Shape,
+        /// Imposed elevation, metres (or per polyline point: `elevations_m`).
+        #[serde(default)]
+        elevation_m: Option<f64>,
+        /// One elevation per polyline point, metres.
+        #[serde(default)]
+        elevations_m: Option<Vec<f64>>,
+        /// Samples closer than this to the shape are constrained (at least the nearest), metres.
+        #[serde(default)]
+        radius_m: f64,
+    },
+    /// Freeze brush: samples within `radius_m` of `center` keep the procedural height (hard).
+    Freeze {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+    },
+    /// Gradient amplify (`factor > 1`) or suppress (`factor < 1`) brush with a C² falloff: the
+    /// target gradient becomes `(1 + (factor − 1)·f(r)) · ∇h` (soft).
+    Amplify {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+        /// Gradient scale at the centre, `0..=8`.
+        factor: f64,
+    },
+    /// Crest: a ridge line at `elevation_m` along the polyline (hard), flanks falling at
+    /// `slope_deg` on both sides over `width_m` (soft).
+    Crest {
+        /// The ridge line, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Elevation of the ridge, metres.
+        elevation_m: f64,
+        /// Flank slope, degrees (`0..90`).
+        slope_deg: f64,
+        /// Flank width on each side, metres.
+        width_m: f64,
+    },
+    /// Noise brush: `g += ∇n` for a lattice noise `n` of `amplitude_m` and `wavelength_m`,
+    /// faded out with a C² falloff (soft).
+    Noise {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+        /// Noise amplitude, metres.
+        amplitude_m: f64,
+        /// Noise wavelength, metres.
+        wavelength_m: f64,
+        /// Noise seed (hashed with the world seed).
+        #[serde(default)]
+        seed: u32,
+    },
+}
+
+/// A region element, parsed and validated.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RegionSpec {
+    /// Element id.
+    #[serde(skip)]
+    pub id: String,
+    /// West-north corner `[x, z]`, metres.
+    #[serde(skip)]
+    pub min: [f64; 2],
+    /// East-south corner `[x, z]`, metres.
+    #[serde(skip)]
+    pub max: [f64; 2],
+    /// Grid samples per side, one of [`SAMPLE_CHOICES`].
+    #[serde(default = "default_samples")]
+    pub samples: usize,
+    /// Tool operations, applied in order.
+    #[serde(default)]
+    pub ops: Vec<Op>,
+}
+
+fn default_samples() -> usize {
+    DEFAULT_SAMPLES
+}
+
+/// A refused region: the JSON pointer below the element (`/ops/2/radius_m`) and the reason.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{pointer}: {message}")]
+pub struct SpecError {
+    /// Pointer relative to the element.
+    pub pointer: String,
+    /// Why.
+    pub message: String,
+}
+
+fn err(pointer: impl Into<String>, message: impl Into<String>) -> SpecError {
+    SpecError {
+        pointer: pointer.into(),
+        message: message.into(),
+    }
+}
+
+fn finite_in(pointer: String, v: f64, lo: f64, hi: f64) -> Result<(), SpecError> {
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        Ok(())
+    } else {
+        Err(err(pointer, format!("must be a number in [{lo}, {hi}]")))
+    }
+}
+
+impl RegionSpec {
+    /// Parses a `regions` element.
+    ///
+    /// # Errors
+    /// [`SpecError`] naming the offending field.
+    pub fn from_element(e: &Element) -> Result<Self, SpecError> {
+        let value = serde_json::Value::Object(e.rest.clone());
+        let mut spec: RegionSpec = serde_path_to_error::deserialize(&value)
+            .map_err(|x| err(crate::scene::path_pointer(x.path()), x.inner().to_string()))?;
+        spec.id = e.id.clone();
+        spec.min = e.bbox.min;
+        spec.max = e.bbox.max;
+        spec.validate()?;
+        Ok(spec)
+    }
+
+    fn validate(&self) -> Result<(), SpecError> {
+        if !SAMPLE_CHOICES.contains(&self.samples) {
+            return Err(err(
+                "/samples",
+                format!("must be one of {SAMPLE_CHOICES:?} (2^k + 1)"),
+            ));
+        }
+        if self.max[0] - self.min[0] <= 0.0 || self.max[1] - self.min[1] <= 0.0 {
+            return Err(err("/bbox", "a region needs a positive width and depth"));
+        }
+        if self.ops.len() > MAX_OPS {
+            return Err(err("/ops", format!("at most {MAX_OPS} operations")));
+        }
+        let big = crate::scene::MAX_COORD_M;
+        let pos = |p: String, v: [f64; 2]| -> Result<(), SpecError> {
+            finite_in(format!("{p}/0"), v[0], -big, big)?;
+            finite_in(format!("{p}/1"), v[1], -big, big)
+        };
+        let radius = |p: String, r: f64| finite_in(p, r, 0.0, 1.0e6);
+        let elev = |p: String, v: f64| finite_in(p, v, -MAX_ELEVATION_M, MAX_ELEVATION_M);
+        let polyline = |p: String, pts: &[[f64; 2]]| -> Result<(), SpecError> {
+            if pts.is_empty() || pts.len() > MAX_POINTS {
+                return Err(err(p, format!("needs 1 to {MAX_POINTS} points")));
+            }
+            for (i, q) in pts.iter().enumerate() {
+                pos(format!("{p}/{i}"), *q)?;
+            }
+            Ok(())
+        };
+        for (i, op) in self.ops.iter().enumerate() {
+            let at = |f: &str| format!("/ops/{i}{f}");
+            match op {
+                Op::Elevation {
+                    shape,
+                    elevation_m,
+                    elevations_m,
+                    radius_m,
+                } => {
+                    radius(at("/radius_m"), *radius_m)?;
+                    let count = match shape {
+                        Shape::Point(p) => {
+                            pos(at("/shape/point"), *p)?;
+                            1
+                        }
+                        Shape::Polyline(pts) => {
+                            polyline(at("/shape/polyline"), pts)?;
+                            pts.len()
+                        }
+                    };
+                    match (elevation_m, elevations_m) {
+                        (Some(e), None) => elev(at("/elevation_m"), *e)?,
+                        (None, Some(es)) => {
+                            if es.len() != count {
+                                return Err(err(
+                                    at("/elevations_m"),
+                                    format!("needs one elevation per point ({count})"),
+                                ));
+                            }
+                            for (k, e) in es.iter().enumerate() {
+                                elev(at(&format!("/elevations_m/{k}")), *e)?;
+                            }
+                        }
+                        _ => {
+                            return Err(err(
+                                at("/elevation_m"),
+                                "give exactly one of elevation_m and elevations_m",
+                            ))
+                        }
+                    }
+                }
+                Op::Freeze { center, radius_m } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                }
+                Op::Amplify {
+                    center,
+                    radius_m,
+                    factor,
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/factor"), *factor, 0.0, 8.0)?;
+                }
+                Op::Crest {
+                    points,
+                    elevation_m,
+                    slope_deg,
+                    width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    elev(at("/elevation_m"), *elevation_m)?;
+                    finite_in(at("/slope_deg"), *slope_deg, 0.0, 89.0)?;
+                    radius(at("/width_m"), *width_m)?;
+                }
+                Op::Noise {
+                    center,
+                    radius_m,
+                    amplitude_m,
+                    wavelength_m,
+                    ..
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/amplitude_m"), *amplitude_m, 0.0, 1.0e4)?;
+                    finite_in(at("/wavelength_m"), *wavelength_m, 1.0e-3, 1.0e6)?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+    use serde_json::json;
+
+    fn parse(region: serde_json::Value) -> Result<RegionSpec, SpecError> {
+        let element: Element = serde_json::from_value(region).expect("an element");
+        RegionSpec::from_element(&element)
+    }
+
+    #[test]
+    fn scenes_refuse_bad_regions_naming_the_field() {
+        let bad = json!({"regions": [{"id": "a", "bbox": {"min": [0, 0], "max": [9, 9]},
+            "ops": [{"op": "freeze", "center": [0, 0], "radius_m": "wide"}]}]});
+        let e = Scene::from_value(&bad).expect_err("refused");
+        assert!(e.pointer.starts_with("/regions/0/ops/0"), "{e}");
+    }
+
+    #[test]
+    fn a_region_parses_with_defaults() {
+        let r = parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 50]},
+            "ops": [{"op": "elevation", "shape": {"point": [10, 10]}, "elevation_m": 5}]}))
+        .expect("valid");
+        assert_eq!(r.samples, DEFAULT_SAMPLES);
+        assert_eq!(r.ops.len(), 1);
+    }
+
+    #[test]
+    fn bad_fields_are_named() {
+        let base = |ops: serde_json::Value| json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "ops": ops});
+        let cases = [
+            (
+                json!({"id": "a", "bbox": {"min": [0, 0], "max": [1, 1]}, "samples": 100}),
+                "/samples",
+            ),
+            (
+                base(json!([{"op": "amplify", "center": [0, 0], "radius_m": 5, "factor": 9}])),
+                "/ops/0/factor",
+            ),
+            (
+                base(json!([{"op": "freeze", "center": [0, 0], "radius_m": -1}])),
+                "/ops/0/radius_m",
+            ),
+            (
+                base(json!([{"op": "elevation", "shape": {"point": [0, 0]}}])),
+                "/ops/0/elevation_m",
+            ),
+            (
+                base(
+                    json!([{"op": "elevation", "shape": {"polyline": [[0, 0], [1, 1]]}, "elevations_m": [1]}]),
+                ),
+                "/ops/0/elevations_m",
+            ),
+            (
+                base(
+                    json!([{"op": "crest", "points": [], "elevation_m": 1, "slope_deg": 10, "width_m": 5}]),
+                ),
+                "/ops/0/points",
+            ),
+            (base(json!([{"op": "melt"}])), "/ops/0"),
+            (
+                json!({"id": "a", "bbox": {"min": [0, 0], "max": [0, 10]}}),
+                "/bbox",
+            ),
+        ];
+        for (region, pointer) in cases {
+            let e = parse(region.clone()).expect_err("refused");
+            assert!(
+                e.pointer.starts_with(pointer),
+                "{region}: got {e}, want {pointer}"
+            );
+        }
+    }
+}
