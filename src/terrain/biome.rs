@@ -311,6 +311,7 @@ pub fn biome_grid(
             corners.push(nearest(pos(gx), pos(gz)));
         }
     }
+    let mut memo: Option<((i32, i32), u8)> = None;
     for bz in bz0..=bz1 {
         for bx in bx0..=bx1 {
             let ci = ((bz - bz0) as usize) * cw + (bx - bx0) as usize;
@@ -321,7 +322,15 @@ pub fn biome_grid(
                 corners[ci + cw + 1],
             ];
             let uniform = c.iter().all(|n| n.cell == c[0].cell);
-            let fill = plan.biome_of(&c[0]);
+            // Neighbouring blocks mostly share their seed: look its biome up once.
+            let fill = match memo {
+                Some((cell, b)) if cell == c[0].cell => b,
+                _ => {
+                    let b = plan.biome_of(&c[0]);
+                    memo = Some((c[0].cell, b));
+                    b
+                }
+            };
             let xa = (bx * BLOCK).max(gx0);
             let xb = ((bx + 1) * BLOCK).min(gx0 + w as i64);
             let za = (bz * BLOCK).max(gz0);

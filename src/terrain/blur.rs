@@ -101,13 +101,23 @@ pub fn blur_weights(
             onehot[*b as usize * w + i] = 1.0;
             present[*b as usize] = true;
         }
+        // Dense sums are needed only where the window is not uniform: the span of such columns.
+        let (Some(c0), Some(c1)) = (
+            run[..ow].iter().position(|r| *r < taps),
+            run[..ow].iter().rposition(|r| *r < taps),
+        ) else {
+            for col in 0..ow {
+                tags[row * ow + col] = line[col];
+            }
+            continue;
+        };
         conv.fill(0.0);
         // A channel absent from the row would only add `k_t · 0 = +0` to `+0`: skip it.
         for c in (0..k).filter(|c| present[*c]) {
             let src = &onehot[c * w..(c + 1) * w];
-            let dst = &mut conv[c * ow..(c + 1) * ow];
+            let dst = &mut conv[c * ow + c0..c * ow + c1 + 1];
             for (t, kt) in kern.iter().enumerate() {
-                for (d, s) in dst.iter_mut().zip(&src[t..t + ow]) {
+                for (d, s) in dst.iter_mut().zip(&src[c0 + t..c1 + 1 + t]) {
                     *d += kt * s;
                 }
             }
