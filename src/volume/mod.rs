@@ -3,5 +3,6 @@
 //! [`mesh`] turns a signed distance grid into a surface-nets quad mesh with quad classes and Ptex
 //! adjacency; [`pipeline`] builds a volume region's fields from feature curves.
 
+pub mod chunk;
 pub mod mesh;
 pub mod pipeline;
