@@ -110,12 +110,9 @@ fn same_lod_seams_match_exactly() {
                 m.normals[v].map(f32::to_bits),
                 m.materials[v],
             );
-            match vertices.insert(m.global_cells[v], data) {
-                Some(old) => {
-                    assert_eq!(old, data, "vertex {:?} differs", m.global_cells[v]);
-                    shared += 1;
-                }
-                None => {}
+            if let Some(old) = vertices.insert(m.global_cells[v], data) {
+                assert_eq!(old, data, "vertex {:?} differs", m.global_cells[v]);
+                shared += 1;
             }
         }
     }

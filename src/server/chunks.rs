@@ -253,7 +253,7 @@ async fn world_chunk(
             .insert(header::VARY, HeaderValue::from_static("Authorization"));
     }
     if let Ok(v) = HeaderValue::from_str(&version.to_string()) {
-        res.headers_mut().insert("x-strata-world-version", v);
+        res.headers_mut().insert(super::worlds::VERSION_HEADER, v);
     }
     Ok(res)
 }
