@@ -392,6 +392,24 @@ async fn routes_validate_and_cache() {
         assert_eq!(e["error"]["field"], field, "{uri}: {e}");
     }
     // The edge of the world is accepted, one beyond is not.
+    // |x|, |z| ≤ 2·max_tile_coord(lod) − 1 = 2·2047 − 1 at LOD 3 (the tiles' world edge).
+    let (s, _, body) = get(
+        &app,
+        &format!("/v1/seeds/{SEED}/chunks/3/4093/0/-4093.bin"),
+        &[],
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&body));
+    for (uri, field) in [
+        (format!("/v1/seeds/{SEED}/chunks/3/4094/0/0.bin"), "x"),
+        (format!("/v1/seeds/{SEED}/chunks/3/0/0/-4094.bin"), "z"),
+    ] {
+        let (s, _, body) = get(&app, &uri, &[]).await;
+        assert_eq!(s, StatusCode::BAD_REQUEST);
+        let e: serde_json::Value = serde_json::from_slice(&body).expect("json error");
+        assert_eq!(e["error"]["field"], field);
+        assert_eq!(e["error"]["code"], "coordinate_out_of_range");
+    }
     // |y| ≤ 16384 / (32·2^lod) − 1 = 63 at LOD 3.
     let (s, _, _) = get(&app, &format!("/v1/seeds/{SEED}/chunks/3/0/64/0.json"), &[]).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
