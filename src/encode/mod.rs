@@ -15,6 +15,8 @@
 //! `api/tile_format_v1.md`.
 
 pub mod bin;
+pub mod chunk;
+pub mod chunk_glb;
 pub mod glb;
 pub mod heightmap;
 pub mod json;

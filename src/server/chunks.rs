@@ -1,9 +1,259 @@
-//! Volume-chunk routes (issue 5).
+//! Volume-chunk routes (issue 5): the surface-nets quad mesh of a 32³-cell chunk of the world's
+//! solid ([`crate::volume::chunk`]), in the formats of `api/chunk_format_v1.md`.
+//!
+//! | route | product |
+//! |---|---|
+//! | `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{json,bin,glb}` | chunk of a bare seed |
+//! | `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{json,bin,glb}[?v=N]` | chunk of a stored world |
+//!
+//! Parameters are checked in the order seed/id, lod, x, y, z, format; errors are 400 JSON naming
+//! the field ([`AppError`]). Limits: `lod` in `0..=3`, `|x|, |z| ≤ 2·max_tile_coord(lod) − 1`,
+//! `|y| ≤ max_chunk_y(lod)`. A chunk's heights come from the same-LOD height tiles through the
+//! stage cache, so a world chunk reflects the world's edits like its tiles do. Responses carry a
+//! content-hash `ETag`; seed chunks are immutable, world chunks follow the world tiles' caching
+//! (immutable when pinned with `?v=N`, short-lived otherwise).
 
+use super::error::{code, truncate, AppError};
+use super::params::{parse_coord, parse_format, parse_lod, parse_seed, split_extension};
+use super::routes::{CachedProduct, IMMUTABLE};
+use super::worlds::{authorize, LATEST_MAX_AGE_S};
 use super::AppState;
+use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
+use crate::encode::{chunk_glb, Format};
+use crate::scene::SceneInputs;
+use crate::store::Role;
+use crate::terrain::{TileKey, WorldPlan};
+use crate::volume::chunk::{
+    gather_columns, max_chunk_xz, max_chunk_y, mesh_chunk, tiles_needed, ChunkKey, TileColumns,
+    MAX_CHUNK_LOD,
+};
+use crate::volume::mesh::QuadMesh;
+use axum::extract::{Path, RawQuery, State};
+use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::response::Response;
+use axum::routing::get;
 use axum::Router;
+use std::sync::Arc;
 
 /// The volume-chunk routes.
 pub fn routes() -> Router<AppState> {
     Router::new()
+        .route(
+            "/v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z_ext}",
+            get(seed_chunk),
+        )
+        .route(
+            "/v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z_ext}",
+            get(world_chunk),
+        )
+}
+
+type Segments =
+    Result<Path<(String, String, String, String, String)>, axum::extract::rejection::PathRejection>;
+
+fn segments(path: Segments) -> Result<(String, String, String, String, String), AppError> {
+    path.map(|Path(s)| s).map_err(|e| {
+        AppError::new(
+            StatusCode::BAD_REQUEST,
+            code::BAD_PATH,
+            format!("invalid path: {e}"),
+        )
+    })
+}
+
+/// Parses `lod`, `x`, `y`, `z.ext` and checks the chunk limits against `plan`.
+fn parse_chunk(
+    plan: Option<&WorldPlan>,
+    lod: &str,
+    x: &str,
+    y: &str,
+    z_ext: &str,
+) -> Result<(ChunkKey, Format), AppError> {
+    let lod = parse_lod(lod)?;
+    if lod > MAX_CHUNK_LOD {
+        return Err(AppError::bad_request(
+            code::LOD_OUT_OF_RANGE,
+            "lod",
+            format!("chunk lod must be in 0..={MAX_CHUNK_LOD}, got {lod}"),
+        ));
+    }
+    let x = parse_coord(x, "x")?;
+    let y = parse_coord(y, "y")?;
+    let (z, ext) = split_extension(z_ext);
+    let z = parse_coord(z, "z")?;
+    let format = parse_format(ext)?;
+    if format == Format::Png {
+        return Err(AppError::bad_request(
+            code::UNKNOWN_FORMAT,
+            "format",
+            "chunks are available as .json, .bin or .glb",
+        ));
+    }
+    let key = ChunkKey { lod, x, y, z };
+    if let Some(plan) = plan {
+        check_chunk_bounds(plan, key)?;
+    }
+    Ok((key, format))
+}
+
+/// Checks `|x|, |z| ≤ 2·max_tile_coord(lod) − 1` and `|y| ≤ max_chunk_y(lod)`.
+pub fn check_chunk_bounds(plan: &WorldPlan, key: ChunkKey) -> Result<(), AppError> {
+    let xz = max_chunk_xz(plan.max_tile_coord(key.lod));
+    let ymax = max_chunk_y(key.lod);
+    for (field, v, max) in [("x", key.x, xz), ("y", key.y, ymax), ("z", key.z, xz)] {
+        if v.unsigned_abs() > max.unsigned_abs() {
+            return Err(AppError::bad_request(
+                code::COORDINATE_OUT_OF_RANGE,
+                field,
+                format!(
+                    "{field} = {v} is outside the supported world: |{field}| ≤ {max} for chunks at lod {}",
+                    key.lod
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Meshes and encodes a chunk in one synthesis slot.
+async fn product(
+    st: &AppState,
+    inputs: Arc<SceneInputs>,
+    plan: Arc<WorldPlan>,
+    key: ChunkKey,
+    format: Format,
+) -> Result<CachedProduct, AppError> {
+    let state = st.clone();
+    st.limited(async move {
+        let mut tiles = Vec::new();
+        for (tx, tz) in tiles_needed(key) {
+            let tk = TileKey {
+                lod: key.lod,
+                x: tx,
+                z: tz,
+            };
+            tiles.push((
+                (tx, tz),
+                state
+                    .tile_with_inputs(&inputs, plan.clone(), tk, [false; 4])
+                    .await,
+            ));
+        }
+        let spacing_m = plan.lods[key.lod as usize].spacing_m;
+        let info = ChunkInfo {
+            seed: plan.seed,
+            key,
+            spacing_m,
+        };
+        tokio::task::spawn_blocking(move || {
+            let views: Vec<TileColumns<'_>> = tiles
+                .iter()
+                .map(|(t, tile)| TileColumns {
+                    tile: *t,
+                    heights: &tile.heights,
+                    normals: &tile.normals,
+                    materials: &tile.materials,
+                })
+                .collect();
+            let cols = gather_columns(key, &views)
+                .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
+            let mesh = mesh_chunk(key, spacing_m, &cols, &mut QuadMesh::default())
+                .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
+            let (body, content_type) = match format {
+                Format::Json => (encode_json(&info, &mesh), Format::Json.content_type()),
+                Format::Bin => (encode_bin(&info, &mesh), BIN_CONTENT_TYPE),
+                _ => (chunk_glb::encode(&info, &mesh), Format::Glb.content_type()),
+            };
+            Ok(CachedProduct::new(body, content_type, Vec::new()))
+        })
+        .await
+        .map_err(|e| AppError::internal(format!("chunk synthesis failed: {e}")))?
+    })
+    .await
+}
+
+/// `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{ext}`.
+async fn seed_chunk(
+    State(st): State<AppState>,
+    path: Segments,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (seed, lod, x, y, z_ext) = segments(path)?;
+    let seed = parse_seed(&seed)?;
+    parse_chunk(None, &lod, &x, &y, &z_ext)?;
+    let plan = st.plan(seed).await?;
+    let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
+    let inputs = super::bare_inputs(&plan.params);
+    let p = product(&st, inputs, plan, key, format).await?;
+    Ok(p.respond(&headers))
+}
+
+/// `?v=N`: a version number, at least 1.
+fn parse_version_query(query: Option<&str>) -> Result<Option<u64>, AppError> {
+    let Some(v) = query
+        .unwrap_or("")
+        .split('&')
+        .filter_map(|p| p.split_once('=').or(Some((p, ""))))
+        .find(|(k, _)| *k == "v")
+        .map(|(_, v)| v)
+    else {
+        return Ok(None);
+    };
+    match v.parse::<u64>() {
+        Ok(n) if n >= 1 && v.bytes().all(|b| b.is_ascii_digit()) => Ok(Some(n)),
+        _ => Err(AppError::bad_request(
+            code::BAD_VERSION,
+            "v",
+            format!(
+                "v must be a version number (a positive integer), got {:?}",
+                truncate(v, 40)
+            ),
+        )),
+    }
+}
+
+/// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`.
+async fn world_chunk(
+    State(st): State<AppState>,
+    path: Segments,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (id, lod, x, y, z_ext) = segments(path)?;
+    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
+    parse_chunk(None, &lod, &x, &y, &z_ext)?;
+    let pinned = parse_version_query(query.as_deref())?;
+    let version = pinned.unwrap_or(meta.version);
+    if version > meta.version {
+        return Err(AppError::new(
+            StatusCode::NOT_FOUND,
+            code::VERSION_NOT_FOUND,
+            format!(
+                "world {id} has no version {version}; the latest is {}",
+                meta.version
+            ),
+        )
+        .with_field("v"));
+    }
+    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
+    let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
+    let p = product(&st, inputs, plan, key, format).await?;
+    let mut res = p.respond(&headers);
+    let cache = match (pinned.is_some(), meta.public) {
+        (true, true) => IMMUTABLE.to_string(),
+        (true, false) => "private, max-age=31536000, immutable".to_string(),
+        (false, true) => format!("public, max-age={LATEST_MAX_AGE_S}"),
+        (false, false) => format!("private, max-age={LATEST_MAX_AGE_S}"),
+    };
+    if let Ok(v) = HeaderValue::from_str(&cache) {
+        res.headers_mut().insert(header::CACHE_CONTROL, v);
+    }
+    if !meta.public {
+        res.headers_mut()
+            .insert(header::VARY, HeaderValue::from_static("Authorization"));
+    }
+    if let Ok(v) = HeaderValue::from_str(&version.to_string()) {
+        res.headers_mut().insert(super::worlds::VERSION_HEADER, v);
+    }
+    Ok(res)
 }

@@ -155,7 +155,7 @@ impl QuadClass {
 
     /// Whether the front faces the positive axis direction.
     pub fn positive(self) -> bool {
-        (self as usize) % 2 == 0
+        (self as usize).is_multiple_of(2)
     }
 
     /// Unit front direction (outward normal of the flat quad).

@@ -298,7 +298,13 @@ pub(crate) fn trilinear_gradient(v: &[f32; 8], f: [f32; 3]) -> [f32; 3] {
 /// Appends the quad of the grid edge along `axis` at sample `p`; `cells` are the vertices of the
 /// cells `c00, c10, c11, c01` (module docs of [`super`]).
 #[inline]
-fn push_quad(out: &mut QuadMesh, axis: usize, solid_low: bool, cells: [u32; 4], p: [u32; 3]) {
+pub(crate) fn push_quad(
+    out: &mut QuadMesh,
+    axis: usize,
+    solid_low: bool,
+    cells: [u32; 4],
+    p: [u32; 3],
+) {
     let q = out.quads.len() as u32;
     let [c00, c10, c11, c01] = cells;
     out.quads.push(if solid_low {
