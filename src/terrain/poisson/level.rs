@@ -179,7 +179,11 @@ mod tests {
         assert_eq!(fixed_coarse(4, 6), vec![(2, 3)]);
         assert_eq!(fixed_coarse(5, 6), vec![(2, 3), (3, 3)]);
         assert_eq!(fixed_coarse(4, 7), vec![(2, 3), (2, 4)]);
-        assert_eq!(fixed_coarse(5, 7), vec![], "an odd-odd point has no coarse image");
+        assert_eq!(
+            fixed_coarse(5, 7),
+            vec![],
+            "an odd-odd point has no coarse image"
+        );
     }
 
     #[test]
