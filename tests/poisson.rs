@@ -161,15 +161,13 @@ fn manufactured_solution_converges_at_second_order() {
 
 #[test]
 fn each_cycle_reduces_the_residual_by_a_steady_factor() {
-    for (label, n, constrained, cycle) in [
-        ("513² terrain, border only, V", 513, false, Cycle::V),
-        ("513² terrain, point + curve + disc, V", 513, true, Cycle::V),
-        ("257² terrain, point + curve + disc, W", 257, true, Cycle::W),
+    // Plain V- and W-cycles (only the border fixed): every cycle reduces the residual by a steady
+    // factor below 0.2.
+    for (label, n, cycle) in [
+        ("513² terrain, V", 513, Cycle::V),
+        ("257² terrain, W", 257, Cycle::W),
     ] {
-        let mut p = terrain(n);
-        if constrained {
-            add_constraints(&mut p);
-        }
+        let p = terrain(n);
         let opts = SolveOptions {
             tolerance: 1e-11,
             cycle,
@@ -178,7 +176,7 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
         let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
         let f = report.factors();
         println!(
-            "{label}: {} cycles, residuals {:?}, factors {:?}",
+            "{label}, border only: {} cycles, residuals {:?}, factors {:?}",
             report.cycles,
             report
                 .relative_residuals
@@ -196,6 +194,39 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
                 k + 1
             );
         }
+        let tail = &f[1..];
+        let (lo, hi) = tail
+            .iter()
+            .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)));
+        assert!(hi - lo < 0.05, "{label}: factors not steady: {f:?}");
+    }
+    // With interior constraints the cycles precondition conjugate gradients (see the module docs):
+    // the residual is not monotone, so the figure is the mean factor per iteration.
+    for (label, n, cycle) in [
+        ("513², point + curve + disc, V", 513, Cycle::V),
+        ("257², point + curve + disc, W", 257, Cycle::W),
+    ] {
+        let mut p = terrain(n);
+        add_constraints(&mut p);
+        let opts = SolveOptions {
+            tolerance: 1e-11,
+            cycle,
+            ..SolveOptions::default()
+        };
+        let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
+        let r = &report.relative_residuals;
+        let mean = (r[r.len() - 1] / r[0]).powf(1.0 / report.cycles as f64);
+        println!(
+            "{label}: {} CG iterations, mean factor {mean:.3}, factors {:?}",
+            report.cycles,
+            report
+                .factors()
+                .iter()
+                .map(|r| format!("{r:.3}"))
+                .collect::<Vec<_>>()
+        );
+        assert!(report.converged, "{label}: {report:?}");
+        assert!(mean < 0.4, "{label}: mean factor {mean:.3}");
     }
 }
 
@@ -207,9 +238,9 @@ fn dirichlet_samples_hold_bit_for_bit() {
     assert!(report.converged, "{report:?}");
     let n = p.grid.nx;
     let mut count = 0;
-    for k in 0..h.len() {
+    for (k, v) in h.iter().enumerate() {
         if p.fixed[k] || p.grid.is_border(k % n, k / n) {
-            assert_eq!(h[k].to_bits(), p.heights[k].to_bits(), "sample {k}");
+            assert_eq!(v.to_bits(), p.heights[k].to_bits(), "sample {k}");
             count += 1;
         }
     }

@@ -173,10 +173,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     };
     let mut pyamg_last_ms = 0.0f64;
     for (n, paper_ms, paper_mb) in PAPER {
-        let reps = match n {
-            ..=1025 => 5,
-            ..=2049 => 3,
-            _ => 1,
+        let reps = if n <= 1025 {
+            5
+        } else if n <= 2049 {
+            3
+        } else {
+            1
         };
         let mut p = bench_problem(n, true)?;
         let mut solver = Solver::new(p.grid, SolveOptions::default())?;

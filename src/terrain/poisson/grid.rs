@@ -227,12 +227,12 @@ mod tests {
         s.merge_into(&colours, &mut back, |v| v);
         assert_eq!(back, natural);
         for j in 0..5 {
-            for c in 0..2 {
+            for (c, colour) in colours.iter().enumerate() {
                 let sh = Split::shift(c, j);
                 for k in 0..s.count(c, j) {
                     let i = 2 * k + sh;
                     assert_eq!((i + j) & 1, c);
-                    assert_eq!(colours[c][j * s.stride + k], (j * 9 + i) as u32);
+                    assert_eq!(colour[j * s.stride + k], (j * 9 + i) as u32);
                 }
             }
         }

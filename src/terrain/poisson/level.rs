@@ -1,15 +1,23 @@
 //! One level of the multigrid hierarchy, and the restriction of the constraint mask and values.
 //!
-//! Fixed (Dirichlet) samples are restricted with the paper's priority rule ("hard constraints have
-//! the highest priority and automatically apply at the lowest resolution", §3): a coarse sample is
-//! fixed if any fine sample of its 3 × 3 restriction footprint `(2I + a, 2J + b)`, `a, b ∈ {−1, 0,
-//! 1}`, is fixed, so a constraint curve one sample wide never slips between coarse samples. The
-//! coarse sample's value (used only by the full-multigrid start) is its fine counterpart's value
-//! `(2I, 2J)` when that one is fixed, and otherwise the mean of the fixed samples of its footprint
-//! (the paper averages constraints of one type). In correction cycles every fixed sample carries a
-//! zero correction on every level.
+//! Fixed (Dirichlet) samples are restricted with a priority rule in the spirit of the paper's
+//! ("hard constraints have the highest priority and automatically apply at the lowest
+//! resolution", §3): a coarse sample `(I, J)` is fixed if its fine counterpart `(2I, 2J)` or one of
+//! that sample's four edge neighbours is fixed ([`CROSS`]). So a constraint curve one sample wide
+//! stays a connected barrier on the coarse grid (it crosses every even row or column it passes),
+//! while the band it removes from the coarse problem stays as thin as possible. (Measured on a
+//! 513² problem with a point, a curve and a disc: the 3 × 3 footprint — a wider band — needs 27
+//! conjugate-gradient iterations to 1e-11, this one 18; fixing only counterparts, 20, and makes
+//! plain cycles diverge.) The coarse sample's value (used only by the full-multigrid start) is its
+//! counterpart's value when that one is fixed, and otherwise the mean of the fixed samples of its
+//! footprint (the paper averages constraints of one type). In correction cycles every fixed
+//! sample carries a zero correction on every level.
 
 use super::grid::{GridSpec, Split};
+
+/// The restriction footprint of a coarse sample `(I, J)` for the mask: its fine counterpart
+/// `(2I, 2J)` and that sample's four edge neighbours.
+const CROSS: [(isize, isize); 5] = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)];
 
 /// One multigrid level: the unknowns, the right-hand side and the free-sample mask, each stored as
 /// two colour arrays (see [`super::grid`]).
@@ -98,8 +106,10 @@ impl Level {
         let cg = coarse.grid;
         for jc in 1..cg.nz - 1 {
             for ic in 1..cg.nx - 1 {
-                let free =
-                    (0..3).all(|b| (0..3).all(|a| self.is_free(2 * ic + a - 1, 2 * jc + b - 1)));
+                let (i, j) = (2 * ic, 2 * jc);
+                let free = CROSS.iter().all(|(a, b)| {
+                    self.is_free((i as isize + a) as usize, (j as isize + b) as usize)
+                });
                 let (c, k) = coarse.split.locate(ic, jc);
                 coarse.free[c][k] = u8::from(free);
             }
@@ -123,16 +133,14 @@ impl Level {
                     self.value(i, j)
                 } else {
                     let (mut sum, mut n) = (0.0f64, 0u32);
-                    for b in -1isize..=1 {
-                        for a in -1isize..=1 {
-                            let (x, z) = (i as isize + a, j as isize + b);
-                            if (0..fx).contains(&x)
-                                && (0..fz).contains(&z)
-                                && !self.is_free(x as usize, z as usize)
-                            {
-                                sum += self.value(x as usize, z as usize);
-                                n += 1;
-                            }
+                    for (a, b) in CROSS {
+                        let (x, z) = (i as isize + a, j as isize + b);
+                        if (0..fx).contains(&x)
+                            && (0..fz).contains(&z)
+                            && !self.is_free(x as usize, z as usize)
+                        {
+                            sum += self.value(x as usize, z as usize);
+                            n += 1;
                         }
                     }
                     if n == 0 {
@@ -152,40 +160,51 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_fixed_sample_fixes_every_coarse_sample_whose_footprint_holds_it() {
+    fn a_fixed_sample_fixes_the_coarse_samples_whose_cross_holds_it() {
         let g = GridSpec::new(17, 17, 1.0).expect("grid");
-        let mut free = vec![true; 17 * 17];
-        free[7 * 17 + 5] = false; // (5, 7): odd column, odd row.
-        let fine = Level::with_mask(g, &free);
-        let coarse = fine.coarsen().expect("coarse");
-        let mut fixed = Vec::new();
-        for j in 1..8 {
-            for i in 1..8 {
-                if !coarse.is_free(i, j) {
-                    fixed.push((i, j));
+        let fixed_coarse = |i: usize, j: usize| {
+            let mut free = vec![true; 17 * 17];
+            free[j * 17 + i] = false;
+            let coarse = Level::with_mask(g, &free).coarsen().expect("coarse");
+            let mut fixed = Vec::new();
+            for jc in 1..8 {
+                for ic in 1..8 {
+                    if !coarse.is_free(ic, jc) {
+                        fixed.push((ic, jc));
+                    }
                 }
             }
-        }
-        assert_eq!(fixed, vec![(2, 3), (3, 3), (2, 4), (3, 4)]);
+            fixed
+        };
+        assert_eq!(fixed_coarse(4, 6), vec![(2, 3)]);
+        assert_eq!(fixed_coarse(5, 6), vec![(2, 3), (3, 3)]);
+        assert_eq!(fixed_coarse(4, 7), vec![(2, 3), (2, 4)]);
+        assert_eq!(
+            fixed_coarse(5, 7),
+            vec![],
+            "an odd-odd point has no coarse image"
+        );
     }
 
     #[test]
-    fn fixed_values_prefer_the_counterpart_then_average_the_footprint() {
+    fn fixed_values_prefer_the_counterpart_then_average_the_cross() {
         let g = GridSpec::new(9, 9, 1.0).expect("grid");
         let mut free = vec![true; 81];
         free[4 * 9 + 4] = false; // (4, 4) is the counterpart of coarse (2, 2).
-        free[4 * 9 + 5] = false; // (5, 4) is in the footprints of coarse (2, 2) and (3, 2).
-        free[3 * 9 + 5] = false; // (5, 3) is in the footprints of (2, 1), (3, 1), (2, 2), (3, 2).
+        free[4 * 9 + 5] = false; // (5, 4) is in the crosses of coarse (2, 2) and (3, 2).
+        free[2 * 9 + 5] = false; // (5, 2) is in the crosses of (2, 1) and (3, 1).
+        free[3 * 9 + 6] = false; // (6, 3) is in the crosses of (3, 1) and (3, 2).
         let mut fine = Level::with_mask(g, &free);
-        for (i, j, v) in [(4, 4, 10.0), (5, 4, 20.0), (5, 3, 40.0)] {
+        for (i, j, v) in [(4, 4, 10.0), (5, 4, 20.0), (5, 2, 40.0), (6, 3, 50.0)] {
             let (c, k) = fine.split.locate(i, j);
             fine.h[c][k] = v;
         }
         let mut coarse = fine.coarsen().expect("coarse");
         fine.restrict_fixed_values(&mut coarse);
         assert_eq!(coarse.value(2, 2), 10.0);
-        assert_eq!(coarse.value(3, 2), 30.0);
-        assert_eq!(coarse.value(3, 1), 40.0);
+        assert_eq!(coarse.value(3, 2), 35.0);
+        assert_eq!(coarse.value(3, 1), 45.0);
+        assert_eq!(coarse.value(2, 1), 40.0);
         assert!(coarse.is_free(1, 1) && coarse.value(1, 1) == 0.0);
     }
 }

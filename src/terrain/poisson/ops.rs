@@ -259,6 +259,7 @@ pub fn apply_operator(mask: &Level, p: &[Vec<f64>; 2], q: &mut [Vec<f64>; 2]) ->
 }
 
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn residual_row(
     out: &mut [f64],
     x: &[f64],
@@ -524,7 +525,7 @@ pub fn prolong<const ADD: bool>(coarse: &Level, fine: &mut Level, scratch: &mut 
                 let xr = &mut x[dj * st + k0..dj * st + k1];
                 let f = &free[c][j * st + k0..j * st + k1];
                 let n = xr.len();
-                if j % 2 == 0 {
+                if j.is_multiple_of(2) {
                     if s == 0 {
                         // Even column 2k: coarse sample k.
                         let a = &e0[k0..k0 + n];

@@ -130,8 +130,7 @@ impl Problem<'_> {
             .zip(partial.par_chunks_mut(band))
             .enumerate()
             .for_each(|(b, ((((r0, r1), h0), h1), part))| {
-                let rows = r0.len() / st;
-                for dj in 0..rows {
+                for (dj, slot) in part.iter_mut().enumerate() {
                     let j = b * band + dj;
                     let mut ss = 0.0f64;
                     for i in 0..nx {
@@ -161,7 +160,7 @@ impl Problem<'_> {
                         }
                         ss += beff * beff;
                     }
-                    part[dj] = ss;
+                    *slot = ss;
                 }
             });
         partial.iter().sum()
