@@ -27,8 +27,10 @@
 //! `shaders/volume_diffuse.wgsl` and `shaders/volume_propagate.wgsl` are the GPU twins of the
 //! diffusion sweep and the surface propagation (`crate::gpu::volume`).
 
+pub mod brick;
 pub mod curve;
 pub mod diffuse;
+pub mod edt;
 pub mod filter;
 pub mod grid;
 pub mod propagate;

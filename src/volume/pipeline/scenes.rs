@@ -110,7 +110,7 @@ pub fn arch(dims: [usize; 3]) -> (Grid, Scene, PipelineParams) {
     let scene = Scene {
         curves: vec![extrados, intrados, front, back],
         meshes: Vec::new(),
-        heightfield: Some(flat_ground(4.0, -4.0, 68.0, -4.0, 52.0)),
+        heightfield: Some(flat_ground(4.0, -4.0, 68.0, -4.0, 68.0)),
     };
     let params = PipelineParams {
         dead_zone_m: 6.0,

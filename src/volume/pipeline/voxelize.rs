@@ -22,6 +22,7 @@
 //! radius) was hit by an earlier pass — Fig. 6's dead zone that lets curves carve into a
 //! heightfield.
 
+use super::edt::squared_distance;
 use super::grid::{dot, normalize, sub, Grid};
 use super::proxy::{ProxyTriangle, Side};
 
@@ -136,23 +137,11 @@ pub fn cells_of(grid: &Grid, t: &ProxyTriangle, out: &mut Vec<usize>) {
 pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> Voxelized {
     let n = grid.len();
     let r = (dead_zone_m.max(0.0) / grid.spacing).max(0.0);
-    let ri = r.floor() as i64;
-    let mut ball = Vec::new();
-    for dz in -ri..=ri {
-        for dy in -ri..=ri {
-            for dx in -ri..=ri {
-                if ((dx * dx + dy * dy + dz * dz) as f32) <= r * r {
-                    ball.push([dx, dy, dz]);
-                }
-            }
-        }
-    }
     let mut blocked = vec![0u8; n];
     let mut hits: Vec<(u32, u32, u32)> = Vec::new();
     let mut cells = Vec::new();
     let mut pass_stats = Vec::with_capacity(passes.len());
     for (p, tris) in passes.iter().enumerate() {
-        let start = hits.len();
         let mut st = PassStats {
             triangles: tris.len(),
             ..Default::default()
@@ -170,15 +159,15 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
         }
         pass_stats.push(st);
         if p + 1 < passes.len() {
-            let [nx, ny, nz] = grid.dims.map(|d| d as i64);
-            for &(c, _, _) in &hits[start..] {
-                let [x, y, z] = grid.coords(c as usize).map(|v| v as i64);
-                for o in &ball {
-                    let (a, b, cc) = (x + o[0], y + o[1], z + o[2]);
-                    if a >= 0 && b >= 0 && cc >= 0 && a < nx && b < ny && cc < nz {
-                        blocked[grid.index(a as usize, b as usize, cc as usize)] = 1;
-                    }
-                }
+            // Dead zone: every sample within r of a sample gathered so far (this pass or an
+            // earlier one), by the exact Euclidean distance transform.
+            let mut occupied = vec![0u8; n];
+            for &(c, _, _) in &hits {
+                occupied[c as usize] = 1;
+            }
+            let d2 = squared_distance(grid.dims, &occupied);
+            for (b, d) in blocked.iter_mut().zip(&d2) {
+                *b = u8::from(*d <= r * r);
             }
         }
     }
