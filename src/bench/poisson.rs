@@ -1,8 +1,432 @@
-//! `strata bench poisson` (issue 4).
+//! `strata bench poisson` (issue 4): the multigrid Poisson reconstruction against the paper's
+//! Table 1 and two peers.
+//!
+//! For 513², 1025², 2049² and 4097² samples (Guérin et al., *Gradient Terrain Authoring*, Table 1)
+//! the benchmark builds a terrain-like problem (a few hundred metres of relief, 2 m spacing, the
+//! gradients extracted from it) with interior Dirichlet constraints (a point, a curve and a disc
+//! at conflicting heights) and measures on the CPU path, all cores:
+//!
+//! - the cold solve (full multigrid + V-cycles) to a relative residual of 1e-6, median of several
+//!   runs after a warm-up (the hierarchy is allocated once per size, outside the timing); the same
+//!   for the problem with only the border fixed (the FFT's problem);
+//! - the warm re-solve after a small brush edit (a Gaussian bump of slopes over a 32-sample disc),
+//!   as a percentage of the cold solve;
+//! - the bytes of the hierarchy;
+//! - in the same run, `bench/poisson_peers.py`: PyAMG (smoothed aggregation, CG-accelerated, setup
+//!   and solve, same matrix, same tolerance) and a type-I DST solve (`scipy.fft.dstn`) of the
+//!   border-only problem. The problem goes to the script through a temporary file (format in the
+//!   script's docstring). Without `pyamg` and `scipy` importable by `python3`, the benchmark
+//!   creates a venv at `target/bench-venv` and `pip install`s them (and says so); if that fails,
+//!   it prints that the peers are unavailable and why.
+//!
+//! Ratios: `ratio_pyamg = ms_pyamg / ms_cold` (target ≥ 50), `ratio_fft = ms_cold_border_only /
+//! ms_fft` (target ≤ 2.5), `warm_pct = 100 · ms_warm / ms_cold` (target ≤ 20), and 1025² in
+//! ≤ 68 ms (the paper's GTX 970 time).
 
+use super::emit;
 use crate::cli::BenchArgs;
+use crate::terrain::poisson::gradient::extract_edges;
+use crate::terrain::poisson::{GridSpec, Problem, SolveOptions, SolveReport, Solver, Start};
+use anyhow::Context;
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
 
-/// Runs the Poisson benchmark.
-pub fn run(_args: &BenchArgs) -> anyhow::Result<()> {
-    anyhow::bail!("not implemented yet")
+/// Target of issue 4: milliseconds for a cold 1025² solve.
+pub const TARGET_MS_1025: f64 = 68.0;
+/// Target of issue 4: PyAMG time over ours.
+pub const TARGET_RATIO_PYAMG: f64 = 50.0;
+/// Target of issue 4: our border-only time over the FFT solve's.
+pub const TARGET_RATIO_FFT: f64 = 2.5;
+/// Target of issue 4: warm re-solve after a small edit, percent of a cold solve.
+pub const TARGET_WARM_PCT: f64 = 20.0;
+/// PyAMG is skipped at a size when the previous size took longer than this (it grows at least
+/// fourfold per size, and the issue allows skipping runs of more than a minute).
+const PYAMG_SKIP_AFTER_MS: f64 = 15_000.0;
+
+/// The paper's Table 1: side, milliseconds on a GTX 970, megabytes.
+const PAPER: [(usize, f64, f64); 4] = [
+    (513, 27.0, 7.0),
+    (1025, 68.0, 28.0),
+    (2049, 275.0, 112.0),
+    (4097, 1180.0, 448.0),
+];
+
+/// An owned problem.
+struct Owned {
+    grid: GridSpec,
+    gx: Vec<f32>,
+    gz: Vec<f32>,
+    fixed: Vec<bool>,
+    heights: Vec<f32>,
+}
+
+impl Owned {
+    fn problem(&self) -> Problem<'_> {
+        Problem {
+            grid: self.grid,
+            gx: &self.gx,
+            gz: &self.gz,
+            fixed: &self.fixed,
+            heights: &self.heights,
+        }
+    }
+}
+
+/// The benchmark's terrain: waves of 300 m, 60 m, 10 m wavelengths on a 400 m plateau, 2 m
+/// spacing; constrained with a point, a curve and a disc at heights that disagree with it.
+fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<Owned> {
+    let grid = GridSpec::new(n, n, 2.0)?;
+    let heights: Vec<f32> = (0..n * n)
+        .map(|k| {
+            let (x, z) = ((k % n) as f64 * 2.0, (k / n) as f64 * 2.0);
+            (400.0
+                + 120.0 * (x / 310.0).sin() * (z / 270.0 + 0.3).cos()
+                + 35.0 * (x / 61.0 + z / 83.0).sin()
+                + 6.0 * (x / 9.7).cos() * (z / 13.1).sin()) as f32
+        })
+        .collect();
+    let mut gx = vec![0.0; grid.x_edges()];
+    let mut gz = vec![0.0; grid.z_edges()];
+    extract_edges(grid, &heights, &mut gx, &mut gz);
+    let mut p = Owned {
+        grid,
+        gx,
+        gz,
+        fixed: vec![false; n * n],
+        heights,
+    };
+    if constrained {
+        let mut fix = |i: usize, j: usize, v: f32| {
+            p.fixed[j * n + i] = true;
+            p.heights[j * n + i] = v;
+        };
+        fix(n / 3, n / 5, 250.0);
+        for t in 0..n / 2 {
+            fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
+        }
+        let (c, r) = (3 * n / 4, n / 16);
+        for j in c - r..=c + r {
+            for i in c - r..=c + r {
+                if i.abs_diff(c).pow(2) + j.abs_diff(c).pow(2) <= r * r {
+                    fix(i, j, 555.5);
+                }
+            }
+        }
+    }
+    Ok(p)
+}
+
+/// The brush edit: a Gaussian bump of slopes over a disc of 32 samples' diameter.
+fn brush(p: &mut Owned, ci: usize, cj: usize) {
+    let n = p.grid.nx;
+    for j in cj - 16..cj + 16 {
+        for i in ci - 16..ci + 16 {
+            let d2 = (i as f64 - ci as f64).powi(2) + (j as f64 - cj as f64).powi(2);
+            if d2 <= 256.0 {
+                let w = (-d2 / 60.0).exp() as f32;
+                p.gx[j * (n - 1) + i] += 0.4 * w;
+                p.gz[j * n + i] -= 0.25 * w;
+            }
+        }
+    }
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Median milliseconds of `reps` cold solves (after one warm-up), and the last report.
+fn time_cold(solver: &mut Solver, p: &Owned, reps: usize) -> anyhow::Result<(f64, SolveReport)> {
+    solver.solve(&p.problem(), Start::Cold)?;
+    let mut times = Vec::new();
+    let mut last = None;
+    for _ in 0..reps {
+        let t = Instant::now();
+        let r = solver.solve(&p.problem(), Start::Cold)?;
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+        last = Some(r);
+    }
+    Ok((median(times), last.context("at least one repetition")?))
+}
+
+/// Runs the benchmark.
+pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    let cores = rayon::current_num_threads();
+    emit(
+        args,
+        json!({"bench":"poisson","cores":cores,"tolerance":1e-6}),
+        format!("poisson: multigrid reconstruction to relative residual 1e-6, CPU path, {cores} threads; paper = Guérin et al. Table 1 (GTX 970)"),
+    );
+    let python = match peer_python(args) {
+        Ok(p) => Some(p),
+        Err(why) => {
+            emit(
+                args,
+                json!({"bench":"poisson","peers":"unavailable","reason":why}),
+                format!("  peers unavailable: {why}"),
+            );
+            None
+        }
+    };
+    let mut pyamg_last_ms = 0.0f64;
+    for (n, paper_ms, paper_mb) in PAPER {
+        let reps = match n {
+            ..=1025 => 5,
+            ..=2049 => 3,
+            _ => 1,
+        };
+        let mut p = bench_problem(n, true)?;
+        let mut solver = Solver::new(p.grid, SolveOptions::default())?;
+        let (ms_cold, report) = time_cold(&mut solver, &p, reps)?;
+        let bytes = solver.hierarchy_bytes();
+
+        let border = bench_problem(n, false)?;
+        let mut border_solver = Solver::new(border.grid, SolveOptions::default())?;
+        let (ms_border, border_report) = time_cold(&mut border_solver, &border, reps)?;
+        drop(border_solver);
+
+        // Warm re-solve after a brush edit, from the converged solution of the unedited problem.
+        let original = (p.gx.clone(), p.gz.clone());
+        let mut warm_times = Vec::new();
+        let mut warm_report = None;
+        for rep in 0..reps {
+            (p.gx, p.gz) = original.clone();
+            solver.solve(&p.problem(), Start::Cold)?;
+            brush(&mut p, n / 2 + 17 * rep, n / 3);
+            let t = Instant::now();
+            let r = solver.solve(&p.problem(), Start::Warm)?;
+            warm_times.push(t.elapsed().as_secs_f64() * 1e3);
+            warm_report = Some(r);
+        }
+        let ms_warm = median(warm_times);
+        let warm_report = warm_report.context("at least one repetition")?;
+        let warm_pct = 100.0 * ms_warm / ms_cold;
+        (p.gx, p.gz) = original;
+        drop(solver);
+
+        let peers = match &python {
+            Some(py) => {
+                let skip = pyamg_last_ms > PYAMG_SKIP_AFTER_MS;
+                match run_peers(py, &p, skip) {
+                    Ok(v) => Some((v, skip)),
+                    Err(e) => {
+                        emit(
+                            args,
+                            json!({"bench":"poisson","n":n,"peers":"failed","reason":format!("{e:#}")}),
+                            format!("  {n}²: peers failed: {e:#}"),
+                        );
+                        None
+                    }
+                }
+            }
+            None => None,
+        };
+        let ms_pyamg = peers.as_ref().and_then(|(v, _)| v["ms_pyamg"].as_f64());
+        let ms_fft = peers.as_ref().and_then(|(v, _)| v["ms_fft"].as_f64());
+        let pyamg_skipped = peers.as_ref().is_some_and(|(_, s)| *s);
+        if let Some(ms) = ms_pyamg {
+            pyamg_last_ms = ms;
+        }
+        let ratio_pyamg = ms_pyamg.map(|t| t / ms_cold);
+        let ratio_fft = ms_fft.map(|t| ms_border / t);
+        let residual = report
+            .relative_residuals
+            .last()
+            .copied()
+            .unwrap_or(f64::NAN);
+        let mut value = json!({
+            "bench":"poisson","n":n,"ms_cold":ms_cold,"cycles":report.cycles,
+            "relative_residual":residual,"converged":report.converged,
+            "ms_cold_border_only":ms_border,"cycles_border_only":border_report.cycles,
+            "bytes_hierarchy":bytes,"ms_warm":ms_warm,"cycles_warm":warm_report.cycles,
+            "warm_pct":warm_pct,"target_warm_pct":TARGET_WARM_PCT,
+            "meets_warm_target":warm_pct <= TARGET_WARM_PCT,
+            "paper_ms":paper_ms,"paper_mb":paper_mb,
+            "ms_pyamg":ms_pyamg,"ratio_pyamg":ratio_pyamg,"target_ratio_pyamg":TARGET_RATIO_PYAMG,
+            "pyamg_skipped":pyamg_skipped,
+            "ms_fft":ms_fft,"ratio_fft":ratio_fft,"target_ratio_fft":TARGET_RATIO_FFT,
+        });
+        if n == 1025 {
+            value["target_ms_cold"] = json!(TARGET_MS_1025);
+            value["meets_ms_target"] = json!(ms_cold <= TARGET_MS_1025);
+        }
+        if let Some((v, _)) = &peers {
+            for key in [
+                "ms_pyamg_setup",
+                "ms_pyamg_solve",
+                "pyamg_relative_residual",
+                "fft_relative_residual",
+            ] {
+                if let Some(x) = v.get(key) {
+                    value[key] = x.clone();
+                }
+            }
+        }
+        let fmt_ratio = |r: Option<f64>, what: &str, target: &str| match r {
+            Some(r) => format!("{what} {r:.1}× ({target})"),
+            None => format!("{what} n/a"),
+        };
+        let pyamg_text = if pyamg_skipped {
+            format!(
+                "PyAMG skipped (the previous size took {:.0} s; this one would exceed a minute)",
+                pyamg_last_ms / 1e3
+            )
+        } else {
+            match ms_pyamg {
+                Some(ms) => format!(
+                    "PyAMG {ms:.0} ms → {}",
+                    fmt_ratio(ratio_pyamg, "ours faster by", "target ≥ 50")
+                ),
+                None => "PyAMG n/a".to_string(),
+            }
+        };
+        let fft_text = match ms_fft {
+            Some(ms) => format!(
+                "FFT (DST) {ms:.1} ms vs ours border-only {ms_border:.1} ms → {}",
+                fmt_ratio(ratio_fft, "ours/FFT", "target ≤ 2.5")
+            ),
+            None => format!("FFT n/a (ours border-only {ms_border:.1} ms)"),
+        };
+        let target = if n == 1025 {
+            format!(", target ≤ {TARGET_MS_1025}")
+        } else {
+            String::new()
+        };
+        emit(
+            args,
+            value,
+            format!(
+                "  {n}²: cold {ms_cold:.1} ms (paper {paper_ms} ms{target}), {} cycles to {residual:.1e}, memory {:.1} MB (paper {paper_mb} MB)\n        warm re-solve after a brush edit {ms_warm:.1} ms, {} cycles = {warm_pct:.0}% of cold (target ≤ 20%)\n        {pyamg_text}\n        {fft_text}",
+                report.cycles,
+                bytes as f64 / 1e6,
+                warm_report.cycles,
+            ),
+        );
+    }
+    Ok(())
+}
+
+/// Writes the problem for the peers script: `POIS`, `u32 nx`, `u32 nz`, `f64 spacing`,
+/// `f64 rhs[n]`, `u8 fixed[n]`, `f64 values[n]` (little-endian, row-major).
+fn write_problem(path: &Path, p: &Owned) -> anyhow::Result<()> {
+    let g = p.grid;
+    let prob = p.problem();
+    let rhs = prob.rhs_natural();
+    let mut bytes = Vec::with_capacity(20 + g.len() * 17);
+    bytes.extend_from_slice(b"POIS");
+    bytes.extend_from_slice(&(g.nx as u32).to_le_bytes());
+    bytes.extend_from_slice(&(g.nz as u32).to_le_bytes());
+    bytes.extend_from_slice(&g.spacing_m.to_le_bytes());
+    for v in &rhs {
+        bytes.extend_from_slice(&v.to_le_bytes());
+    }
+    let fixed: Vec<bool> = prob.free_mask().iter().map(|f| !f).collect();
+    bytes.extend(fixed.iter().map(|f| u8::from(*f)));
+    for (k, f) in fixed.iter().enumerate() {
+        let v = if *f { f64::from(p.heights[k]) } else { 0.0 };
+        bytes.extend_from_slice(&v.to_le_bytes());
+    }
+    std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))
+}
+
+fn run_peers(python: &Path, p: &Owned, skip_pyamg: bool) -> anyhow::Result<serde_json::Value> {
+    let dir = std::env::temp_dir().join(format!("strata-poisson-{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    let file = dir.join(format!("problem-{}.bin", p.grid.nx));
+    write_problem(&file, p)?;
+    let mut cmd = Command::new(python);
+    cmd.arg(peers_script()).arg(&file);
+    if skip_pyamg {
+        cmd.arg("--skip-pyamg");
+    }
+    let out = cmd
+        .output()
+        .with_context(|| format!("running {}", python.display()));
+    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir(&dir);
+    let out = out?;
+    if !out.status.success() {
+        anyhow::bail!(
+            "{} exited with {}: {}",
+            peers_script().display(),
+            out.status,
+            String::from_utf8_lossy(&out.stderr).trim()
+        );
+    }
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text
+        .lines()
+        .last()
+        .context("no output from the peers script")?;
+    serde_json::from_str(line).with_context(|| format!("parsing the peers' output {line:?}"))
+}
+
+fn peers_script() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("bench/poisson_peers.py")
+}
+
+fn imports_ok(python: &Path) -> bool {
+    Command::new(python)
+        .args(["-c", "import pyamg, scipy, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+/// A Python with `pyamg`, `scipy` and `numpy`: `python3` if it has them, else the venv at
+/// `target/bench-venv` (created and filled with `pip install pyamg scipy numpy` if needed).
+fn peer_python(args: &BenchArgs) -> Result<PathBuf, String> {
+    let system = PathBuf::from("python3");
+    if imports_ok(&system) {
+        return Ok(system);
+    }
+    let venv = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/bench-venv");
+    let python = venv.join("bin/python");
+    if python.exists() && imports_ok(&python) {
+        return Ok(python);
+    }
+    let say = |msg: String| {
+        emit(
+            args,
+            json!({"bench":"poisson","setup":msg}),
+            format!("  {msg}"),
+        )
+    };
+    say(format!(
+        "python3 lacks pyamg/scipy: creating a venv at {} and running pip install pyamg scipy numpy",
+        venv.display()
+    ));
+    let status = Command::new("python3")
+        .args(["-m", "venv"])
+        .arg(&venv)
+        .status()
+        .map_err(|e| format!("python3 -m venv failed to start: {e}"))?;
+    if !status.success() {
+        return Err(format!(
+            "python3 -m venv {} exited with {status}",
+            venv.display()
+        ));
+    }
+    let out = Command::new(venv.join("bin/pip"))
+        .args(["install", "-q", "pyamg", "scipy", "numpy"])
+        .output()
+        .map_err(|e| format!("pip failed to start: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "pip install pyamg scipy numpy exited with {}: {}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr).trim()
+        ));
+    }
+    if imports_ok(&python) {
+        say("venv ready".to_string());
+        Ok(python)
+    } else {
+        Err(format!(
+            "{} still cannot import pyamg, scipy and numpy",
+            python.display()
+        ))
+    }
 }

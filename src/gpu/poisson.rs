@@ -1,1 +1,523 @@
-//! WGSL twin of the multigrid Poisson solver (`shaders/poisson.wgsl`).
+//! WGSL twin of the multigrid Poisson solver (`shaders/poisson.wgsl`, issue 4).
+//!
+//! [`PoissonKernels`] compiles the six kernels (red and black half-sweeps, residual, full-weighting
+//! restriction, bilinear prolongation, zeroing) for a device. [`PoissonKernels::upload`] copies a
+//! CPU hierarchy ([`crate::terrain::poisson::level::Level`]s, e.g. from
+//! [`crate::terrain::poisson::Solver::levels`] after [`crate::terrain::poisson::Solver::load`])
+//! to the device in `f32`, [`PoissonKernels::run`] records a list of [`Op`]s into one compute pass
+//! (WebGPU makes each dispatch's storage writes visible to the next), and
+//! [`PoissonKernels::solve`] runs finest-level V- or W-cycles exactly as the CPU's
+//! `multigrid::Solver` does (residual, restriction, coarse recursion, prolongation, smoothing; the
+//! coarsest level by `COARSEST_SWEEPS` sweeps). The host functions take the device and queue as
+//! arguments, so tests inject a software adapter.
+//!
+//! # Precision and tolerance
+//! The kernels evaluate the CPU's expressions in the CPU's order, but in `f32` (WGSL has no
+//! portable `f64`) where the CPU uses `f64`, and a WGSL compiler may contract `a·b + c` into a
+//! fused multiply-add (the residual's `Σ − 4h`, the restriction's `4 r + 2 e`). So one kernel
+//! application agrees with the CPU to a few `f32` roundings of the magnitudes involved
+//! (`tests/gpu_poisson.rs` checks `|Δ| ≤ 8 · 2⁻²⁴ · M`, `M` the largest magnitude the kernel
+//! reads), and a solve reaches the `f32` floor of the relative residual (about `1e-6` to `1e-5`:
+//! residuals of ~500 m heights are evaluated with `2⁻²⁴ · 500 m` rounding), not the CPU's `1e-6`
+//! on large grids; the heights then agree with the CPU's within a few millimetres.
+
+use crate::terrain::poisson::level::Level;
+use crate::terrain::poisson::multigrid::{Cycle, SolveOptions, COARSEST_SWEEPS};
+use anyhow::{anyhow, bail, Context};
+use bytemuck::{Pod, Zeroable};
+use std::time::Duration;
+
+/// `shaders/poisson.wgsl`.
+pub const POISSON_WGSL: &str = include_str!("../../shaders/poisson.wgsl");
+/// Invocations per workgroup (`@workgroup_size(64)`).
+const WORKGROUP: u32 = 64;
+/// Largest storage buffer the kernels may bind (WebGPU's default limit): 2 · len · 4 bytes per
+/// field, so up to 4097² samples.
+pub const MAX_BUFFER_BYTES: u64 = 128 << 20;
+/// How long a job may wait for the device.
+pub const JOB_TIMEOUT: Duration = Duration::from_secs(60);
+
+/// WGSL `PoissonParams`: the sizes of a level and of its coarser neighbour.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub struct GpuPoissonParams {
+    /// Samples along x.
+    pub nx: u32,
+    /// Samples along z.
+    pub nz: u32,
+    /// Slots per colour row, `(nx + 1) / 2`.
+    pub stride: u32,
+    /// Values per colour array, `nz · stride`.
+    pub len: u32,
+    /// Coarse samples along x (0 without a coarser level).
+    pub cnx: u32,
+    /// Coarse samples along z.
+    pub cnz: u32,
+    /// Coarse slots per colour row.
+    pub cstride: u32,
+    /// Coarse values per colour array.
+    pub clen: u32,
+}
+
+impl GpuPoissonParams {
+    /// Parameters of `level`, with `coarse` its coarser neighbour if any.
+    pub fn of(level: &Level, coarse: Option<&Level>) -> Self {
+        let s = level.split;
+        let (cnx, cnz, cstride, clen) = coarse
+            .map(|c| (c.split.nx, c.split.nz, c.split.stride, c.split.len()))
+            .unwrap_or_default();
+        Self {
+            nx: s.nx as u32,
+            nz: s.nz as u32,
+            stride: s.stride as u32,
+            len: s.len() as u32,
+            cnx: cnx as u32,
+            cnz: cnz as u32,
+            cstride: cstride as u32,
+            clen: clen as u32,
+        }
+    }
+}
+
+/// One kernel dispatch on level `l` (restriction and prolongation go between `l` and `l + 1`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Op {
+    /// Red half-sweep on level `l`.
+    SmoothRed(usize),
+    /// Black half-sweep on level `l`.
+    SmoothBlack(usize),
+    /// Residual of level `l` into its residual buffer.
+    Residual(usize),
+    /// Full weighting of level `l`'s residual buffer into level `l + 1`'s right-hand side.
+    Restrict(usize),
+    /// Bilinear prolongation of level `l + 1`'s unknowns, added to level `l`'s free samples.
+    Prolong(usize),
+    /// Level `l`'s unknowns set to zero.
+    Zero(usize),
+}
+
+/// A per-level array on the device.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GpuField {
+    /// Unknowns.
+    H,
+    /// Right-hand side.
+    Rhs,
+    /// Residual (written by [`Op::Residual`]).
+    Residual,
+}
+
+/// The compiled kernels for one device.
+#[derive(Debug)]
+pub struct PoissonKernels {
+    layout: wgpu::BindGroupLayout,
+    smooth_red: wgpu::ComputePipeline,
+    smooth_black: wgpu::ComputePipeline,
+    residual: wgpu::ComputePipeline,
+    restrict: wgpu::ComputePipeline,
+    prolong: wgpu::ComputePipeline,
+    zero: wgpu::ComputePipeline,
+}
+
+/// A hierarchy on the device: per level its parameters, unknowns, right-hand side, mask and
+/// residual buffers, and the bind group that also binds the next coarser level.
+#[derive(Debug)]
+pub struct GpuHierarchy {
+    params: Vec<GpuPoissonParams>,
+    buffers: Vec<[wgpu::Buffer; 4]>,
+    bind_groups: Vec<wgpu::BindGroup>,
+}
+
+impl GpuHierarchy {
+    /// Number of levels.
+    pub fn level_count(&self) -> usize {
+        self.params.len()
+    }
+}
+
+/// Error scopes of one job: validation, out-of-memory and internal errors are all caught.
+struct Scopes(Vec<wgpu::ErrorScopeGuard>);
+
+impl Scopes {
+    fn push(device: &wgpu::Device) -> Self {
+        Self(vec![
+            device.push_error_scope(wgpu::ErrorFilter::Validation),
+            device.push_error_scope(wgpu::ErrorFilter::OutOfMemory),
+            device.push_error_scope(wgpu::ErrorFilter::Internal),
+        ])
+    }
+
+    fn pop(mut self) -> anyhow::Result<()> {
+        let mut first = None;
+        while let Some(guard) = self.0.pop() {
+            if let Some(e) = pollster::block_on(guard.pop()) {
+                first.get_or_insert(e);
+            }
+        }
+        match first {
+            Some(e) => Err(anyhow!("wgpu error: {e}")),
+            None => Ok(()),
+        }
+    }
+}
+
+impl PoissonKernels {
+    /// Compiles `poisson.wgsl` and builds its pipelines.
+    ///
+    /// # Errors
+    /// If shader compilation or pipeline creation reports an error.
+    pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
+        let scopes = Scopes::push(device);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("strata poisson.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(POISSON_WGSL.into()),
+        });
+        let entry = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let rw = wgpu::BufferBindingType::Storage { read_only: false };
+        let ro = wgpu::BufferBindingType::Storage { read_only: true };
+        let entries = [
+            entry(0, wgpu::BufferBindingType::Uniform),
+            entry(1, rw),
+            entry(2, rw),
+            entry(3, ro),
+            entry(4, rw),
+            entry(5, rw),
+            entry(6, rw),
+            entry(7, ro),
+        ];
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("strata poisson bindings"),
+            entries: &entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("strata poisson layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = |name: &str| {
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(name),
+                layout: Some(&pipeline_layout),
+                module: &module,
+                entry_point: Some(name),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        };
+        let kernels = Self {
+            smooth_red: pipeline("smooth_red"),
+            smooth_black: pipeline("smooth_black"),
+            residual: pipeline("residual"),
+            restrict: pipeline("restrict_residual"),
+            prolong: pipeline("prolong"),
+            zero: pipeline("zero_h"),
+            layout,
+        };
+        scopes.pop().context("compiling shaders/poisson.wgsl")?;
+        Ok(kernels)
+    }
+
+    /// Copies `levels` (finest first, each the coarsening of the previous) to the device, in
+    /// `f32`.
+    ///
+    /// # Errors
+    /// If there are no levels, a buffer would exceed [`MAX_BUFFER_BYTES`], or the device reports
+    /// an error.
+    pub fn upload(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        levels: &[Level],
+    ) -> anyhow::Result<GpuHierarchy> {
+        if levels.is_empty() {
+            bail!("no levels to upload");
+        }
+        let bytes = 2 * levels[0].split.len() as u64 * 4;
+        if bytes > MAX_BUFFER_BYTES {
+            bail!(
+                "a {}×{} level needs {bytes}-byte buffers; at most {MAX_BUFFER_BYTES} are allowed",
+                levels[0].grid.nx,
+                levels[0].grid.nz
+            );
+        }
+        let scopes = Scopes::push(device);
+        let make = |label: &str, contents: &[u8], usage: wgpu::BufferUsages| {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: (contents.len() as u64).max(4).next_multiple_of(4),
+                usage: usage | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            queue.write_buffer(&buffer, 0, contents);
+            buffer
+        };
+        let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC;
+        let f32s = |a: &[Vec<f64>; 2]| -> Vec<f32> {
+            a[0].iter().chain(&a[1]).map(|v| *v as f32).collect()
+        };
+        let mut params = Vec::new();
+        let mut buffers = Vec::new();
+        let mut uniforms = Vec::new();
+        for (l, level) in levels.iter().enumerate() {
+            let p = GpuPoissonParams::of(level, levels.get(l + 1));
+            let free: Vec<u32> = level.free[0]
+                .iter()
+                .chain(&level.free[1])
+                .map(|f| u32::from(*f))
+                .collect();
+            let zeros = vec![0.0f32; 2 * level.split.len()];
+            buffers.push([
+                make("poisson h", bytemuck::cast_slice(&f32s(&level.h)), storage),
+                make(
+                    "poisson rhs",
+                    bytemuck::cast_slice(&f32s(&level.rhs)),
+                    storage,
+                ),
+                make("poisson free", bytemuck::cast_slice(&free), storage),
+                make("poisson residual", bytemuck::cast_slice(&zeros), storage),
+            ]);
+            uniforms.push(make(
+                "poisson params",
+                bytemuck::bytes_of(&p),
+                wgpu::BufferUsages::UNIFORM,
+            ));
+            params.push(p);
+        }
+        // The coarsest level binds small dummies in the coarse slots (a buffer may not be bound
+        // twice as writable storage).
+        let dummies: [wgpu::Buffer; 3] =
+            std::array::from_fn(|_| make("poisson dummy", &[0u8; 16], storage));
+        let bind_groups = (0..levels.len())
+            .map(|l| {
+                let [h, rhs, free, res] = &buffers[l];
+                let (hc, rhsc, freec) = match buffers.get(l + 1) {
+                    Some([h, r, f, _]) => (h, r, f),
+                    None => (&dummies[0], &dummies[1], &dummies[2]),
+                };
+                let list = [&uniforms[l], h, rhs, free, res, hc, rhsc, freec];
+                let entries: Vec<wgpu::BindGroupEntry> = list
+                    .iter()
+                    .enumerate()
+                    .map(|(b, buf)| wgpu::BindGroupEntry {
+                        binding: b as u32,
+                        resource: buf.as_entire_binding(),
+                    })
+                    .collect();
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("strata poisson level"),
+                    layout: &self.layout,
+                    entries: &entries,
+                })
+            })
+            .collect();
+        scopes.pop().context("uploading the Poisson hierarchy")?;
+        Ok(GpuHierarchy {
+            params,
+            buffers,
+            bind_groups,
+        })
+    }
+
+    /// Records `ops` into one compute pass and waits for them.
+    ///
+    /// # Errors
+    /// If an op names a level out of range (or a coarser level that does not exist), or the
+    /// device reports an error or times out.
+    pub fn run(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        hier: &GpuHierarchy,
+        ops: &[Op],
+    ) -> anyhow::Result<()> {
+        let n = hier.level_count();
+        for op in ops {
+            let (l, needs_coarse) = match *op {
+                Op::SmoothRed(l) | Op::SmoothBlack(l) | Op::Residual(l) | Op::Zero(l) => (l, false),
+                Op::Restrict(l) | Op::Prolong(l) => (l, true),
+            };
+            if l >= n || (needs_coarse && l + 1 >= n) {
+                bail!("{op:?} is out of range for a hierarchy of {n} levels");
+            }
+        }
+        let scopes = Scopes::push(device);
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("strata poisson"),
+        });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("strata poisson ops"),
+                timestamp_writes: None,
+            });
+            for op in ops {
+                let (pipeline, l) = match *op {
+                    Op::SmoothRed(l) => (&self.smooth_red, l),
+                    Op::SmoothBlack(l) => (&self.smooth_black, l),
+                    Op::Residual(l) => (&self.residual, l),
+                    Op::Restrict(l) => (&self.restrict, l),
+                    Op::Prolong(l) => (&self.prolong, l),
+                    Op::Zero(l) => (&self.zero, l),
+                };
+                let p = hier.params[l];
+                let (x, y) = match op {
+                    Op::Restrict(_) => (p.cnx, p.cnz),
+                    _ => (p.stride, p.nz),
+                };
+                pass.set_pipeline(pipeline);
+                pass.set_bind_group(0, &hier.bind_groups[l], &[]);
+                pass.dispatch_workgroups(x.div_ceil(WORKGROUP), y, 1);
+            }
+        }
+        let submission = queue.submit([encoder.finish()]);
+        let polled = device.poll(wgpu::PollType::Wait {
+            submission_index: Some(submission),
+            timeout: Some(JOB_TIMEOUT),
+        });
+        let scoped = scopes.pop();
+        polled.map_err(|e| anyhow!("waiting for the device: {e}"))?;
+        scoped
+    }
+
+    /// Reads one array of level `level` back as two colour arrays.
+    ///
+    /// # Errors
+    /// If the level is out of range, or the device reports an error, times out or fails to map.
+    pub fn read(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        hier: &GpuHierarchy,
+        level: usize,
+        field: GpuField,
+    ) -> anyhow::Result<[Vec<f32>; 2]> {
+        let bufs = hier
+            .buffers
+            .get(level)
+            .ok_or_else(|| anyhow!("level {level} of {}", hier.level_count()))?;
+        let src = match field {
+            GpuField::H => &bufs[0],
+            GpuField::Rhs => &bufs[1],
+            GpuField::Residual => &bufs[3],
+        };
+        let len = hier.params[level].len as usize;
+        let size = (2 * len * 4) as u64;
+        let scopes = Scopes::push(device);
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("poisson readback"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("strata poisson read"),
+        });
+        encoder.copy_buffer_to_buffer(src, 0, &readback, 0, size);
+        let submission = queue.submit([encoder.finish()]);
+        let (tx, rx) = std::sync::mpsc::channel();
+        readback.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        let polled = device.poll(wgpu::PollType::Wait {
+            submission_index: Some(submission),
+            timeout: Some(JOB_TIMEOUT),
+        });
+        let scoped = scopes.pop();
+        polled.map_err(|e| anyhow!("waiting for the device: {e}"))?;
+        scoped?;
+        match rx.try_recv() {
+            Ok(Ok(())) => {}
+            Ok(Err(e)) => bail!("mapping the result failed: {e}"),
+            Err(_) => bail!("the result was not mapped after the submission completed"),
+        }
+        let data: Vec<f32> = {
+            let view = readback
+                .slice(..)
+                .get_mapped_range()
+                .map_err(|e| anyhow!("reading the result: {e}"))?;
+            bytemuck::pod_collect_to_vec(&view)
+        };
+        let (a, b) = data.split_at(len);
+        Ok([a.to_vec(), b.to_vec()])
+    }
+
+    /// The ops of one finest-level cycle on a hierarchy of `levels` levels, as the CPU's
+    /// `multigrid::Solver` runs it: residual and restriction, zeroed coarse unknowns, the coarse
+    /// cycle(s), prolongation, `pre_smooth + post_smooth` sweeps.
+    pub fn cycle_ops(levels: usize, options: &SolveOptions) -> Vec<Op> {
+        let mut ops = Vec::new();
+        let sweep = |ops: &mut Vec<Op>, l: usize, n: usize| {
+            for _ in 0..n {
+                ops.push(Op::SmoothRed(l));
+                ops.push(Op::SmoothBlack(l));
+            }
+        };
+        if levels == 1 {
+            sweep(&mut ops, 0, options.pre_smooth + options.post_smooth);
+            return ops;
+        }
+        fn coarse(ops: &mut Vec<Op>, l: usize, levels: usize, o: &SolveOptions) {
+            let sweep = |ops: &mut Vec<Op>, n: usize| {
+                for _ in 0..n {
+                    ops.push(Op::SmoothRed(l));
+                    ops.push(Op::SmoothBlack(l));
+                }
+            };
+            if l + 1 == levels {
+                sweep(ops, COARSEST_SWEEPS);
+                return;
+            }
+            sweep(ops, o.pre_smooth);
+            ops.extend([Op::Residual(l), Op::Restrict(l), Op::Zero(l + 1)]);
+            for _ in 0..gamma(o.cycle) {
+                coarse(ops, l + 1, levels, o);
+            }
+            ops.push(Op::Prolong(l));
+            sweep(ops, o.post_smooth);
+        }
+        ops.extend([Op::Residual(0), Op::Restrict(0), Op::Zero(1)]);
+        for _ in 0..gamma(options.cycle) {
+            coarse(&mut ops, 1, levels, options);
+        }
+        ops.push(Op::Prolong(0));
+        sweep(&mut ops, 0, options.pre_smooth + options.post_smooth);
+        ops
+    }
+
+    /// Runs `cycles` finest-level cycles on the device from the state of `levels` (the finest
+    /// level's unknowns are the start, its fixed samples the constraints) and returns the finest
+    /// unknowns as two colour arrays.
+    ///
+    /// # Errors
+    /// As [`Self::upload`], [`Self::run`] and [`Self::read`].
+    pub fn solve(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        levels: &[Level],
+        cycles: usize,
+        options: &SolveOptions,
+    ) -> anyhow::Result<[Vec<f32>; 2]> {
+        let hier = self.upload(device, queue, levels)?;
+        let one = Self::cycle_ops(levels.len(), options);
+        for _ in 0..cycles {
+            self.run(device, queue, &hier, &one)?;
+        }
+        self.read(device, queue, &hier, 0, GpuField::H)
+    }
+}
+
+fn gamma(c: Cycle) -> usize {
+    match c {
+        Cycle::V => 1,
+        Cycle::W => 2,
+    }
+}

@@ -41,7 +41,17 @@ pub fn kernel_for(radius_m: f32, spacing_m: f32) -> Vec<f32> {
 
 /// Blurs `ids` (`w × h`, row-major, values below `k`) into `out` (`(w − 2r) × (h − 2r) × k`,
 /// vertex-major: `out[v * k + c]`), where `kern.len() = 2r + 1`.
-pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out: &mut [f32]) {
+///
+/// Returns `Some(b)` when every output is exactly one-hot `b`, which is the case exactly when the
+/// whole grid is biome `b` (the windows of the outputs cover the grid).
+pub fn blur_weights(
+    ids: &[u8],
+    w: usize,
+    h: usize,
+    kern: &[f32],
+    k: usize,
+    out: &mut [f32],
+) -> Option<u8> {
     let taps = kern.len();
     let r = taps / 2;
     assert!(
@@ -53,12 +63,13 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
     assert_eq!(ids.len(), w * h, "blur_weights: input size");
     assert_eq!(out.len(), ow * oh * k, "blur_weights: output size");
     // Shortcut with the same result: when the whole grid is one biome every window is uniform.
-    if ids.iter().all(|b| *b == ids[0]) {
+    // (An or-reduction without early exit: it vectorises, `all` does not.)
+    if ids.iter().fold(0u8, |acc, b| acc | (b ^ ids[0])) == 0 {
         out.fill(0.0);
-        for v in 0..ow * oh {
-            out[v * k + ids[0] as usize] = 1.0;
+        for cell in out.chunks_exact_mut(k) {
+            cell[ids[0] as usize] = 1.0;
         }
-        return;
+        return Some(ids[0]);
     }
 
     // Horizontal pass over every row: tags and dense values.
@@ -85,11 +96,14 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
         // Σ_t k_t · [id = c] as a convolution of each channel's 0/1 row: adding `k_t · 0 = +0`
         // leaves a sum unchanged, so this equals summing the matching taps in `t` order.
         onehot.fill(0.0);
+        let mut present = [false; 256];
         for (i, b) in line.iter().enumerate() {
             onehot[*b as usize * w + i] = 1.0;
+            present[*b as usize] = true;
         }
         conv.fill(0.0);
-        for c in 0..k {
+        // A channel absent from the row would only add `k_t · 0 = +0` to `+0`: skip it.
+        for c in (0..k).filter(|c| present[*c]) {
             let src = &onehot[c * w..(c + 1) * w];
             let dst = &mut conv[c * ow..(c + 1) * ow];
             for (t, kt) in kern.iter().enumerate() {
@@ -169,6 +183,7 @@ pub fn blur_weights(ids: &[u8], w: usize, h: usize, kern: &[f32], k: usize, out:
             }
         }
     }
+    None
 }
 
 #[cfg(test)]
@@ -240,11 +255,20 @@ mod tests {
                 })
                 .collect();
             let mut out = vec![0.0f32; (w - 2 * r) * (h - 2 * r) * k];
-            blur_weights(&ids, w, h, &kern, k, &mut out);
+            let single = blur_weights(&ids, w, h, &kern, k, &mut out);
+            assert_eq!(single, None, "a mixed grid is not one biome");
             let want = reference(&ids, w, h, &kern, k);
             for (a, b) in out.iter().zip(&want) {
                 assert_eq!(a.to_bits(), b.to_bits());
             }
+        }
+        // A grid of one biome: the shortcut's answer is the definition's, and it says so.
+        let ids = vec![2u8; w * h];
+        let mut out = vec![0.5f32; (w - 2 * r) * (h - 2 * r) * k];
+        assert_eq!(blur_weights(&ids, w, h, &kern, k, &mut out), Some(2));
+        let want = reference(&ids, w, h, &kern, k);
+        for (a, b) in out.iter().zip(&want) {
+            assert_eq!(a.to_bits(), b.to_bits());
         }
     }
 

@@ -12,7 +12,7 @@
 //! The vertex's material is the heaviest one (lowest id on ties). Steep rock thus suppresses
 //! grass as in the paper's Fig. 8.
 
-use super::world::{material, WorldParams, MATERIALS};
+use super::world::{material, WorldParams, MATERIALS, MAX_BIOMES};
 
 /// What the weighting function looks at.
 #[derive(Clone, Copy, Debug)]
@@ -102,8 +102,17 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     out
 }
 
-/// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`, written as a
-/// branch-free loop over vertices so it vectorises. `weights` is vertex-major with `k` biomes.
+/// Vertices per block of [`proto_texture_batch`]: the per-block rows live on the stack.
+const BLOCK: usize = 64;
+
+/// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`. `weights` is
+/// vertex-major with `k` biomes.
+///
+/// Works in blocks of [`BLOCK`] vertices: the biome-weighted snow line, the four smooth steps and
+/// `rest` as fixed-length rows, then one compare-and-select row per material in id order, so every
+/// loop vectorises and branches run once per block. Each material's weight is built from the same
+/// operations in the same order as in [`material_weights`] (base value, then `+ w_b · rest` for
+/// the biomes whose ground it is, in biome order), hence the same bits and the same argmax.
 pub fn proto_texture_batch(
     plan: &TexturePlan,
     heights: &[f32],
@@ -114,119 +123,97 @@ pub fn proto_texture_batch(
     let k = plan.ground.len();
     let n = heights.len();
     assert!(
-        normal_y.len() == n && out.len() == n && weights.len() == n * k,
+        normal_y.len() == n && out.len() == n && weights.len() == n * k && k <= MAX_BIOMES,
         "proto_texture_batch: sizes"
     );
+    // A tile inside one biome (weights exactly one-hot everywhere): `0 + 1·x` is `x` and `0·x`
+    // terms add `±0`, so the block needs no weight rows at all.
+    let single = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0));
     let blend = plan.height_blend_m;
     let inv_blend = 1.0 / blend;
-    // A tile inside one biome (weights exactly one-hot everywhere): the same weights, without the
-    // per-material rows.
-    let single = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0));
-    if let Some(b) = single {
-        single_biome(plan, b, heights, normal_y, out);
-        return;
-    }
-    // Structure of arrays, one row per material, so every loop below vectorises.
-    let mut mat = vec![0.0f32; MATERIALS.len() * n];
-    // Biome-major weights, so the per-biome loops read contiguous memory.
-    let mut wt = vec![0.0f32; k * n];
-    match single {
-        Some(b) => wt[b * n..(b + 1) * n].fill(1.0),
-        None => {
-            for (v, wv) in weights.chunks_exact(k).enumerate() {
-                for (b, w) in wv.iter().enumerate() {
-                    wt[b * n + v] = *w;
+    for (blk, ((hc, nc), oc)) in heights
+        .chunks(BLOCK)
+        .zip(normal_y.chunks(BLOCK))
+        .zip(out.chunks_mut(BLOCK))
+        .enumerate()
+    {
+        // Fixed-length rows (the tail padded) let every loop below run without bounds checks.
+        let len = hc.len();
+        let mut hs = [0.0f32; BLOCK];
+        let mut ns = [0.0f32; BLOCK];
+        hs[..len].copy_from_slice(hc);
+        ns[..len].copy_from_slice(nc);
+        let mut wt = [[0.0f32; BLOCK]; MAX_BIOMES];
+        let mut line = [0.0f32; BLOCK];
+        match single {
+            Some(b) => {
+                wt[b] = [1.0; BLOCK];
+                line = [0.0 + plan.snow_line_m[b]; BLOCK];
+            }
+            None => {
+                let wv = &weights[blk * BLOCK * k..(blk * BLOCK + len) * k];
+                for (v, cell) in wv.chunks_exact(k).enumerate() {
+                    for (b, w) in cell.iter().enumerate() {
+                        wt[b][v] = *w;
+                    }
+                }
+                for (b, l) in plan.snow_line_m.iter().enumerate() {
+                    for v in 0..BLOCK {
+                        line[v] += wt[b][v] * l;
+                    }
                 }
             }
         }
-    }
-    let mut snow_line = vec![0.0f32; n];
-    for (b, line) in plan.snow_line_m.iter().enumerate() {
-        if single.is_some_and(|s| s != b) {
-            continue;
-        }
-        for (s, w) in snow_line.iter_mut().zip(&wt[b * n..(b + 1) * n]) {
-            *s += w * line;
-        }
-    }
-    let mut rest = vec![0.0f32; n];
-    {
-        let (seabed, tail) = mat.split_at_mut(n);
-        let (sand, tail) = tail.split_at_mut(n);
-        let (_grass, tail) = tail.split_at_mut(n);
-        let (_dirt, tail) = tail.split_at_mut(n);
-        let (rock_row, snow_row) = tail.split_at_mut(n);
-        for v in 0..n {
-            let h = heights[v];
+        let mut wet = [0.0f32; BLOCK];
+        let mut rock = [0.0f32; BLOCK];
+        let mut snow = [0.0f32; BLOCK];
+        let mut beach = [0.0f32; BLOCK];
+        let mut rest = [0.0f32; BLOCK];
+        for v in 0..BLOCK {
+            let h = hs[v];
             let above = h - plan.sea_level_m;
-            let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
-            let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, normal_y[v]) * (1.0 - wet);
-            let snow = smoothstep_inv(snow_line[v] - blend, 0.5 * inv_blend, h)
-                * (1.0 - rock)
-                * (1.0 - wet);
-            let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above))
-                * (1.0 - wet)
-                * (1.0 - rock);
-            seabed[v] = wet;
-            rock_row[v] = rock;
-            snow_row[v] = snow;
-            sand[v] = beach;
-            rest[v] = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+            let we = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+            let ro = smoothstep(plan.rock_cos.0, plan.rock_cos.1, ns[v]) * (1.0 - we);
+            let sn = smoothstep_inv(line[v] - blend, 0.5 * inv_blend, h) * (1.0 - ro) * (1.0 - we);
+            let be = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above))
+                * (1.0 - we)
+                * (1.0 - ro);
+            wet[v] = we;
+            rock[v] = ro;
+            snow[v] = sn;
+            beach[v] = be;
+            rest[v] = (1.0 - we) * (1.0 - ro) * (1.0 - sn) * (1.0 - be);
         }
-    }
-    for (b, g) in plan.ground.iter().enumerate() {
-        if single.is_some_and(|s| s != b) {
-            continue;
-        }
-        let row = &mut mat[*g as usize * n..(*g as usize + 1) * n];
-        for ((m, w), r) in row.iter_mut().zip(&wt[b * n..(b + 1) * n]).zip(&rest) {
-            *m += w * r;
-        }
-    }
-    let mut top = mat[..n].to_vec();
-    out.fill(0);
-    for m in 1..MATERIALS.len() {
-        let row = &mat[m * n..(m + 1) * n];
-        for v in 0..n {
-            let better = row[v] > top[v];
-            top[v] = if better { row[v] } else { top[v] };
-            out[v] = if better { m as u8 } else { out[v] };
-        }
-    }
-}
-
-/// [`proto_texture_batch`] where every vertex is entirely biome `b`: each material's weight is
-/// the same expression as in the general path (`0 + 1·rest` is `rest`), so the same argmax.
-fn single_biome(plan: &TexturePlan, b: usize, heights: &[f32], normal_y: &[f32], out: &mut [u8]) {
-    let blend = plan.height_blend_m;
-    let inv_blend = 1.0 / blend;
-    let line = 0.0 + plan.snow_line_m[b];
-    let ground = plan.ground[b] as usize;
-    for ((h, ny), o) in heights.iter().zip(normal_y).zip(out.iter_mut()) {
-        let h = *h;
-        let above = h - plan.sea_level_m;
-        let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
-        let rock = smoothstep(plan.rock_cos.0, plan.rock_cos.1, *ny) * (1.0 - wet);
-        let snow = smoothstep_inv(line - blend, 0.5 * inv_blend, h) * (1.0 - rock) * (1.0 - wet);
-        let beach = (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above))
-            * (1.0 - wet)
-            * (1.0 - rock);
-        let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
-        let mut m = [0.0f32; MATERIALS.len()];
-        m[material::SEABED as usize] = wet;
-        m[material::ROCK as usize] = rock;
-        m[material::SNOW as usize] = snow;
-        m[material::SAND as usize] = beach;
-        m[ground] += rest;
-        let mut best = 0u8;
-        let mut top = m[0];
-        for (id, &w) in m.iter().enumerate().skip(1) {
-            if w > top {
-                top = w;
-                best = id as u8;
+        let mut top = [0.0f32; BLOCK];
+        let mut best = [0u8; BLOCK];
+        for id in 0..MATERIALS.len() as u8 {
+            let mut row = match id {
+                material::SEABED => wet,
+                material::SAND => beach,
+                material::ROCK => rock,
+                material::SNOW => snow,
+                _ => [0.0; BLOCK],
+            };
+            for (b, g) in plan.ground.iter().enumerate() {
+                if *g != id || single.is_some_and(|s| s != b) {
+                    continue;
+                }
+                let w = &wt[b];
+                for v in 0..BLOCK {
+                    row[v] += w[v] * rest[v];
+                }
+            }
+            if id == 0 {
+                top = row;
+                continue;
+            }
+            for v in 0..BLOCK {
+                let better = row[v] > top[v];
+                top[v] = if better { row[v] } else { top[v] };
+                best[v] = if better { id } else { best[v] };
             }
         }
-        *o = best;
+        oc.copy_from_slice(&best[..len]);
     }
 }
 
@@ -285,6 +272,7 @@ mod tests {
         let n = 400;
         let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.3 - 60.0).collect();
         let ny: Vec<f32> = (0..n).map(|i| 0.3 + (i % 17) as f32 * 0.04).collect();
+        let mut seen = std::collections::BTreeSet::new();
         for b in 0..params.biomes.len() {
             let weights: Vec<f32> = (0..n * 4)
                 .map(|i| if i % 4 == b { 1.0 } else { 0.0 })
@@ -299,7 +287,10 @@ mod tests {
                 };
                 assert_eq!(fast[v], proto_texture(&p, &s), "biome {b} vertex {v}");
             }
+            seen.extend(fast);
         }
+        // The inputs must reach every branch: water, beach, ground, rock and snow.
+        assert!(seen.len() >= 5, "materials reached: {seen:?}");
     }
 
     #[test]

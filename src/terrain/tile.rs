@@ -62,21 +62,21 @@ pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize)
         &mut ids,
     );
     let mut weights = vec![0.0f32; w * h * k];
-    blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
+    let single = blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
 
     let mut heights = vec![0.0f32; w * h];
+    let row: Vec<f32> = (0..w)
+        .map(|i| (gx0 + i as i64) as f32 * lp.spacing_m)
+        .collect();
     let mut xs = Vec::with_capacity(w * h);
     let mut zs = Vec::with_capacity(w * h);
     for j in 0..h {
-        let z = (gz0 + j as i64) as f32 * lp.spacing_m;
-        for i in 0..w {
-            xs.push((gx0 + i as i64) as f32 * lp.spacing_m);
-            zs.push(z);
-        }
+        xs.extend_from_slice(&row);
+        zs.resize(zs.len() + w, (gz0 + j as i64) as f32 * lp.spacing_m);
     }
     // One biome everywhere (most tiles): every weight is exactly 1, so `0 + 1·H = H`.
-    if let Some(b) = (0..k).find(|&b| weights.chunks_exact(k).all(|wv| wv[b] == 1.0)) {
-        fbm_batch(&lp.fractals[b], &xs, &zs, &mut heights);
+    if let Some(b) = single {
+        fbm_batch(&lp.fractals[b as usize], &xs, &zs, &mut heights);
         return Field {
             w,
             h,
@@ -171,6 +171,7 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
     let spacing = plan.lods[key.lod as usize].spacing_m;
     let mut heights = vec![0.0f32; TILE_VERTEX_COUNT];
     let mut normals = vec![[0.0f32; 3]; TILE_VERTEX_COUNT];
+    let mut normal_y = vec![0.0f32; TILE_VERTEX_COUNT];
     let mut weights = vec![0.0f32; TILE_VERTEX_COUNT * k];
     let inv2d = 1.0 / (2.0 * spacing);
     for j in 0..TILE_VERTS {
@@ -184,14 +185,19 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
             &f.heights[row - 1..],
             &f.heights[row + n..],
         );
+        let (up, mid, down) = (
+            &up[..TILE_VERTS],
+            &mid[..TILE_VERTS + 2],
+            &down[..TILE_VERTS],
+        );
         for i in 0..TILE_VERTS {
             let dx = (mid[i + 2] - mid[i]) * inv2d;
             let dz = (down[i] - up[i]) * inv2d;
             let inv = 1.0 / (dx * dx + 1.0 + dz * dz).sqrt();
             normals[dst + i] = [-dx * inv, inv, -dz * inv];
+            normal_y[dst + i] = inv;
         }
     }
-    let normal_y: Vec<f32> = normals.iter().map(|n| n[1]).collect();
     let mut materials = vec![0u8; TILE_VERTEX_COUNT];
     proto_texture_batch(&plan.texture, &heights, &normal_y, &weights, &mut materials);
     let water_depth = heights

@@ -6,8 +6,12 @@ pub mod pipeline;
 
 use crate::cli::BenchArgs;
 
-/// Runs both parts of the volume benchmark.
+/// Runs both parts of the volume benchmark; a failing part is reported and the other still runs.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
-    pipeline::run(args)?;
-    mesh::run(args)
+    let pipeline = pipeline::run(args);
+    if let Err(e) = &pipeline {
+        eprintln!("bench volume: the pipeline part failed: {e}");
+    }
+    mesh::run(args)?;
+    pipeline
 }

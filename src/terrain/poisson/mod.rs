@@ -1,3 +1,103 @@
 //! Poisson reconstruction of heights from a gradient field by geometric multigrid (issue 4).
 //!
-//! Guérin et al., *Gradient Terrain Authoring*: `Δh = ∇·g` with Dirichlet constraints.
+//! Guérin, Peytavie, Masnou, Digne, Sauvage, Gain, Galin, *Gradient Terrain Authoring* (Computer
+//! Graphics Forum 41(2), 2022), §3: the heights `h` of an authored region are recovered from a
+//! (user-edited) gradient field `g` by solving `Δh = ∇·g`, with Dirichlet conditions
+//! `h = c` on any subset `Ω` of the samples (points, curves, regions are just fixed samples).
+//! Gradient targets are soft (the least-squares target of the reconstruction), elevation
+//! constraints are hard: where they conflict, the constraint holds exactly and the gradient is not
+//! met (the paper's Fig. 16 behaviour).
+//!
+//! # Discretisation
+//! A grid of `nx × nz` samples (`2^k + 1` per side, [`grid::GridSpec`]), spacing `δ` metres. The
+//! gradient lives on the edges ([`problem`]): `gx` on the x-edges `(i + ½, j)`, `gz` on the
+//! z-edges `(i, j + ½)`. The normal equations of `min Σ_edges (Dh − g)²` are the 5-point
+//! equations `h_W + h_E + h_N + h_S − 4 h = δ · div_δ g` at every free sample: a clean 5-point
+//! Laplacian, exact for fields extracted with [`gradient::extract_edges`] (forward differences),
+//! second-order accurate for smooth fields sampled at edge midpoints. The paper's per-sample
+//! central-difference gradients (its §3 extraction and its two-channel gradient-map encoding) are
+//! converted by averaging onto the edges ([`gradient::edges_from_samples`]); putting the
+//! central-difference divergence of per-sample gradients on the 5-point operator would decouple
+//! the grid into four sub-lattices.
+//!
+//! # Boundary rules
+//! The border of the domain is always Dirichlet (an authored region's border takes the procedural
+//! heights, so it meets the world without a step). Any interior sample may be fixed too.
+//!
+//! # Multigrid
+//! The paper runs a "half V-cycle": from the coarsest 9 × 9 level upwards, `50 + 20ℓ` Jacobi-type
+//! iterations per level, with no residual going back down. **Deviation:** we run full multigrid
+//! (FMG) with residual correction instead ([`multigrid`]):
+//! - the problem is restricted to every level (right-hand side by full weighting; fixed samples by
+//!   the paper's priority rule, see [`level`]), the coarsest level (shorter side 3) is solved by
+//!   Gauss–Seidel sweeps, and each level's solution is interpolated bilinearly to the next finer
+//!   one, followed by one cycle there ([`SolveOptions::fmg_cycles`]);
+//! - on the finest level, correction cycles (V by default, W optional) run until the stopping rule
+//!   holds: residual `r = b − A h`, restricted by full weighting (times 4: the coarse operator has
+//!   twice the spacing), coarse-grid correction with zero correction at every fixed sample of
+//!   every level, bilinear prolongation added at free samples, red-black Gauss–Seidel smoothing;
+//! - smoothing is red-black Gauss–Seidel in place on colour-split arrays ([`grid`]), one colour
+//!   array written while the other is read, rows in parallel bands ([`ops`]).
+//!
+//! # Stopping rule and precision
+//! A solve stops when `‖b − A h‖₂ / ‖b‖₂ ≤ tolerance` (default `1e-6`), where `A` is the 5-point
+//! operator over the free samples and `b` the right-hand side with the fixed neighbours moved to
+//! it; the norm is that of the current iterate (the finest-level cycle restricts the residual it
+//! measures, so the test costs nothing). Storage is `f64` throughout: `f32` storage cannot reach
+//! `1e-6` on large grids, because rounding the heights to `f32` alone leaves a relative residual
+//! of about `2·ε_f32·√n` (≈ 1.3e-6 at 1025², 2.6e-6 at 4097²). The output is rounded to `f32` at
+//! the end (fixed samples are the imposed `f32` heights, bit for bit). The WGSL twin
+//! (`shaders/poisson.wgsl`, `crate::gpu::poisson`) runs the same kernels in `f32`.
+//!
+//! # Warm start
+//! After an edit, [`Start::Warm`] starts the finest-level cycles from the previous solution: the
+//! residual is then confined to the edited area and a couple of cycles reach the tolerance.
+
+pub mod gradient;
+pub mod grid;
+pub mod level;
+pub mod multigrid;
+pub mod ops;
+pub mod problem;
+
+pub use grid::{GridSpec, MAX_SIDE, MIN_SIDE};
+pub use multigrid::{
+    Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, DEFAULT_MAX_CYCLES,
+    DEFAULT_TOLERANCE,
+};
+pub use problem::Problem;
+
+/// A problem or option the solver rejects, naming the offending field.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum PoissonError {
+    /// A field is out of range.
+    #[error("{field}: {message}")]
+    Field {
+        /// The field (`nx`, `gx`, `heights`, `tolerance`, …).
+        field: &'static str,
+        /// What is wrong with it.
+        message: String,
+    },
+}
+
+impl PoissonError {
+    pub(crate) fn field(field: &'static str, message: String) -> Self {
+        Self::Field { field, message }
+    }
+}
+
+/// Solves `problem` cold with `options` and returns the heights (`nx · nz` metres, row-major) and
+/// the report.
+///
+/// # Errors
+/// As [`Solver::new`] and [`Solver::solve`].
+pub fn reconstruct(
+    problem: &Problem,
+    options: SolveOptions,
+) -> Result<(Vec<f32>, SolveReport), PoissonError> {
+    let mut solver = Solver::new(problem.grid, options)?;
+    let report = solver.solve(problem, Start::Cold)?;
+    let mut out = vec![0.0; problem.grid.len()];
+    solver.heights_into(&mut out)?;
+    Ok((out, report))
+}

@@ -1,0 +1,186 @@
+// WGSL twin of the multigrid kernels of `terrain::poisson::ops` (issue 4): red-black
+// Gauss–Seidel half-sweeps, the residual, full-weighting restriction, bilinear prolongation, and
+// zeroing a level's unknowns. The host driver is `gpu::poisson`.
+//
+// Storage follows the CPU's colour-split layout (`terrain::poisson::grid`): each per-sample field
+// of a level is one array of 2·len values, colour c (0 red, 1 black) at offset c·len; row j of a
+// colour holds `stride = (nx + 1) / 2` slots, slot k being column i = 2k + s with
+// s = (c + j) mod 2. The arithmetic is the CPU's, in the same order, in f32 (the CPU stores f64):
+//   smoother   h ← (((l + r) + u) + d − b) · 0.25 at free samples of one colour;
+//   residual   r = b − ((((l + r) + u) + d) − 4 h) at free samples, 0 elsewhere;
+//   restrict   b_c = (4 r_c + 2 ((r_w + r_e) + (r_n + r_s)) + ((r_nw + r_ne) + (r_sw + r_se))) · 0.25
+//              at free coarse samples, 0 elsewhere;
+//   prolong    h += coarse value / mean of 2 / ((a + b) + (c + d)) · 0.25 at free fine samples.
+//
+// `PoissonParams` is `gpu::poisson::GpuPoissonParams` on the CPU, field for field.
+
+struct PoissonParams {
+    // This level: samples per side, slots per colour row, values per colour array.
+    nx: u32,
+    nz: u32,
+    stride: u32,
+    len: u32,
+    // The next coarser level (zeros for the coarsest level).
+    cnx: u32,
+    cnz: u32,
+    cstride: u32,
+    clen: u32,
+}
+
+const WORKGROUP: u32 = 64u;
+
+@group(0) @binding(0) var<uniform> p: PoissonParams;
+// This level: unknowns, right-hand side, free mask (1 free, 0 fixed or padding), residual.
+@group(0) @binding(1) var<storage, read_write> h: array<f32>;
+@group(0) @binding(2) var<storage, read_write> rhs: array<f32>;
+@group(0) @binding(3) var<storage, read> free_mask: array<u32>;
+@group(0) @binding(4) var<storage, read_write> res: array<f32>;
+// The next coarser level: unknowns, right-hand side, free mask.
+@group(0) @binding(5) var<storage, read_write> hc: array<f32>;
+@group(0) @binding(6) var<storage, read_write> rhsc: array<f32>;
+@group(0) @binding(7) var<storage, read> cfree: array<u32>;
+
+// Index of this level's slot k of colour c in row j.
+fn slot(c: u32, j: u32, k: u32) -> u32 {
+    return c * p.len + j * p.stride + k;
+}
+
+// True if slot k of colour c in row j is an interior sample of this level.
+fn interior(c: u32, j: u32, k: u32) -> bool {
+    let s = (c + j) & 1u;
+    return j > 0u && j + 1u < p.nz && k + s >= 1u && k < p.nx / 2u;
+}
+
+// Residual of this level at natural sample (i, j) (zero on the border).
+fn res_at(i: u32, j: u32) -> f32 {
+    return res[((i + j) & 1u) * p.len + j * p.stride + i / 2u];
+}
+
+// Coarse unknown at natural sample (i, j).
+fn hc_at(i: u32, j: u32) -> f32 {
+    return hc[((i + j) & 1u) * p.clen + j * p.cstride + i / 2u];
+}
+
+fn smooth_at(c: u32, k: u32, j: u32) {
+    if (k >= p.stride || !interior(c, j, k)) {
+        return;
+    }
+    let x = slot(c, j, k);
+    if (free_mask[x] == 0u) {
+        return;
+    }
+    let s = (c + j) & 1u;
+    let y = (1u - c) * p.len + j * p.stride;
+    let l = h[y + k + s - 1u];
+    let r = h[y + k + s];
+    let u = h[y - p.stride + k];
+    let d = h[y + p.stride + k];
+    h[x] = (l + r + u + d - rhs[x]) * 0.25;
+}
+
+// Half-sweep over the red samples: one invocation per slot (x) and row (y).
+@compute @workgroup_size(64)
+fn smooth_red(@builtin(global_invocation_id) id: vec3<u32>) {
+    smooth_at(0u, id.x, id.y);
+}
+
+// Half-sweep over the black samples.
+@compute @workgroup_size(64)
+fn smooth_black(@builtin(global_invocation_id) id: vec3<u32>) {
+    smooth_at(1u, id.x, id.y);
+}
+
+// Residual of both colours of slot (x) in row (y).
+@compute @workgroup_size(64)
+fn residual(@builtin(global_invocation_id) id: vec3<u32>) {
+    let k = id.x;
+    let j = id.y;
+    if (k >= p.stride || j >= p.nz) {
+        return;
+    }
+    for (var c = 0u; c < 2u; c++) {
+        let x = slot(c, j, k);
+        var v = 0.0;
+        if (interior(c, j, k) && free_mask[x] != 0u) {
+            let s = (c + j) & 1u;
+            let y = (1u - c) * p.len + j * p.stride;
+            let l = h[y + k + s - 1u];
+            let r = h[y + k + s];
+            let u = h[y - p.stride + k];
+            let d = h[y + p.stride + k];
+            v = rhs[x] - (l + r + u + d - 4.0 * h[x]);
+        }
+        res[x] = v;
+    }
+}
+
+// Full weighting of this level's residual into the coarse right-hand side: one invocation per
+// coarse sample (x = column, y = row).
+@compute @workgroup_size(64)
+fn restrict_residual(@builtin(global_invocation_id) id: vec3<u32>) {
+    let ic = id.x;
+    let jc = id.y;
+    if (ic >= p.cnx || jc >= p.cnz) {
+        return;
+    }
+    let x = ((ic + jc) & 1u) * p.clen + jc * p.cstride + ic / 2u;
+    if (cfree[x] == 0u) {
+        rhsc[x] = 0.0;
+        return;
+    }
+    // Free coarse samples are interior, so every fine index below is in range.
+    let i = 2u * ic;
+    let j = 2u * jc;
+    let edges = (res_at(i - 1u, j) + res_at(i + 1u, j)) + (res_at(i, j - 1u) + res_at(i, j + 1u));
+    let corners = (res_at(i - 1u, j - 1u) + res_at(i + 1u, j - 1u))
+        + (res_at(i - 1u, j + 1u) + res_at(i + 1u, j + 1u));
+    rhsc[x] = (4.0 * res_at(i, j) + 2.0 * edges + corners) * 0.25;
+}
+
+// Bilinear prolongation of the coarse unknowns, added to this level's free samples: one
+// invocation per slot (x) and row (y), both colours.
+@compute @workgroup_size(64)
+fn prolong(@builtin(global_invocation_id) id: vec3<u32>) {
+    let k = id.x;
+    let j = id.y;
+    if (k >= p.stride || j >= p.nz) {
+        return;
+    }
+    for (var c = 0u; c < 2u; c++) {
+        let x = slot(c, j, k);
+        if (!interior(c, j, k) || free_mask[x] == 0u) {
+            continue;
+        }
+        let i = 2u * k + ((c + j) & 1u);
+        let ic = i / 2u;
+        let jc = j / 2u;
+        var e: f32;
+        if (j % 2u == 0u) {
+            if (i % 2u == 0u) {
+                e = hc_at(ic, jc);
+            } else {
+                e = (hc_at(ic, jc) + hc_at(ic + 1u, jc)) * 0.5;
+            }
+        } else {
+            if (i % 2u == 0u) {
+                e = (hc_at(ic, jc) + hc_at(ic, jc + 1u)) * 0.5;
+            } else {
+                e = ((hc_at(ic, jc) + hc_at(ic + 1u, jc)) + (hc_at(ic, jc + 1u) + hc_at(ic + 1u, jc + 1u))) * 0.25;
+            }
+        }
+        h[x] = h[x] + e;
+    }
+}
+
+// Sets this level's unknowns (both colours, fixed samples included) to zero: the start of a
+// correction cycle.
+@compute @workgroup_size(64)
+fn zero_h(@builtin(global_invocation_id) id: vec3<u32>) {
+    let k = id.x;
+    let j = id.y;
+    if (k >= p.stride || j >= p.nz) {
+        return;
+    }
+    h[slot(0u, j, k)] = 0.0;
+    h[slot(1u, j, k)] = 0.0;
+}

@@ -1,0 +1,595 @@
+//! The multigrid driver: full-multigrid start, V- or W-cycles with residual correction, the
+//! relative-residual stopping rule, warm starts, and the per-solve report.
+
+use super::grid::GridSpec;
+use super::level::Level;
+use super::ops::{
+    apply_operator, dot, prolong, residual, residual_restrict, restrict_rhs, smooth,
+    smooth_reverse, update_direction, update_solution,
+};
+use super::problem::Problem;
+use super::PoissonError;
+use std::time::Instant;
+
+/// Default stopping tolerance on the relative residual `‖b − A h‖₂ / ‖b‖₂`.
+pub const DEFAULT_TOLERANCE: f64 = 1e-6;
+/// Default cap on finest-level cycles per solve.
+pub const DEFAULT_MAX_CYCLES: usize = 40;
+/// Gauss–Seidel sweeps on the coarsest level (its shorter side has one interior sample, so every
+/// sweep reduces the error at least fourfold: 30 sweeps reach `f64` rounding).
+pub const COARSEST_SWEEPS: usize = 30;
+
+/// Recursion of the coarse-grid correction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cycle {
+    /// One coarse-grid visit per level.
+    V,
+    /// Two coarse-grid visits per level.
+    W,
+}
+
+/// Krylov acceleration of the finest-level cycles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Acceleration {
+    /// Conjugate gradients when interior samples are fixed, plain cycles otherwise.
+    Auto,
+    /// Plain multigrid cycles.
+    None,
+    /// Conjugate gradients preconditioned by one cycle.
+    ConjugateGradient,
+}
+
+/// Solver settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolveOptions {
+    /// Stop when `‖b − A h‖₂ / ‖b‖₂` is at most this (> 0; default [`DEFAULT_TOLERANCE`]).
+    pub tolerance: f64,
+    /// Most finest-level cycles per solve (default [`DEFAULT_MAX_CYCLES`]); a solve that reaches
+    /// it reports `converged: false`.
+    pub max_cycles: usize,
+    /// Red-black sweeps before the coarse-grid correction on the coarse levels (default 1). On
+    /// the finest level they are done after the correction, together with `post_smooth` (so the
+    /// residual of the current iterate is the one the next cycle restricts, and the stopping test
+    /// costs no extra pass; the cycle is cyclically equivalent).
+    pub pre_smooth: usize,
+    /// Red-black sweeps after the coarse-grid correction (default 1).
+    pub post_smooth: usize,
+    /// V- or W-cycles (default V).
+    pub cycle: Cycle,
+    /// Cycles per level in the full-multigrid start (default 1).
+    pub fmg_cycles: usize,
+    /// Krylov acceleration (default [`Acceleration::Auto`]).
+    pub acceleration: Acceleration,
+    /// Worker threads (`None`: rayon's global pool, one per core). Results do not depend on it.
+    pub threads: Option<usize>,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: DEFAULT_TOLERANCE,
+            max_cycles: DEFAULT_MAX_CYCLES,
+            pre_smooth: 1,
+            post_smooth: 1,
+            cycle: Cycle::V,
+            fmg_cycles: 1,
+            acceleration: Acceleration::Auto,
+            threads: None,
+        }
+    }
+}
+
+/// Initial guess of a solve.
+#[derive(Clone, Copy, Debug)]
+pub enum Start<'a> {
+    /// Full multigrid from the coarsest level.
+    Cold,
+    /// The solver's previous solution (after an edit); a cold start if there is none.
+    Warm,
+    /// The given heights (`nx · nz` metres, row-major) at the free samples.
+    From(&'a [f32]),
+}
+
+/// Which start a solve actually used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StartKind {
+    /// Full multigrid.
+    Cold,
+    /// The previous solution or given heights.
+    Warm,
+}
+
+/// What one solve did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolveReport {
+    /// The start used.
+    pub start: StartKind,
+    /// Finest-level cycles.
+    pub cycles: usize,
+    /// `‖r‖₂ / ‖b‖₂` of the start (after the full-multigrid start, or of the warm guess), then
+    /// after each cycle.
+    pub relative_residuals: Vec<f64>,
+    /// True if the last relative residual is at most the tolerance.
+    pub converged: bool,
+    /// Wall time of the solve, seconds (loading the problem included).
+    pub seconds: f64,
+    /// `‖b‖₂`, metres.
+    pub rhs_norm: f64,
+}
+
+impl SolveReport {
+    /// Residual reduction factor of each cycle.
+    pub fn factors(&self) -> Vec<f64> {
+        self.relative_residuals
+            .windows(2)
+            .map(|w| w[1] / w[0])
+            .collect()
+    }
+}
+
+/// A multigrid solver for one grid size: the level hierarchy (allocated once), the current
+/// solution (for warm starts) and, optionally, its own thread pool.
+#[derive(Debug)]
+pub struct Solver {
+    options: SolveOptions,
+    levels: Vec<Level>,
+    interior_fixed: bool,
+    krylov: Option<Krylov>,
+    scratch: Vec<f64>,
+    has_solution: bool,
+    pool: Option<rayon::ThreadPool>,
+}
+
+impl Solver {
+    /// A solver for `grid`.
+    ///
+    /// # Errors
+    /// [`PoissonError::Field`] naming `tolerance`, `max_cycles`, `threads` or `fmg_cycles` if an
+    /// option is out of range (tolerance finite and > 0, `threads ≥ 1`).
+    pub fn new(grid: GridSpec, options: SolveOptions) -> Result<Self, PoissonError> {
+        if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+            return Err(PoissonError::field(
+                "tolerance",
+                format!("{}; must be finite and > 0", options.tolerance),
+            ));
+        }
+        if options.pre_smooth + options.post_smooth == 0 {
+            return Err(PoissonError::field(
+                "post_smooth",
+                "pre_smooth + post_smooth must be at least 1".to_string(),
+            ));
+        }
+        let pool = match options.threads {
+            None => None,
+            Some(0) => {
+                return Err(PoissonError::field("threads", "0; must be ≥ 1".to_string()));
+            }
+            Some(n) => Some(
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(n)
+                    .build()
+                    .map_err(|e| PoissonError::field("threads", format!("{n}: {e}")))?,
+            ),
+        };
+        let mut levels = vec![Level::new(grid)];
+        while let Some(c) = levels.last().and_then(Level::coarsen) {
+            levels.push(c);
+        }
+        Ok(Self {
+            options,
+            levels,
+            interior_fixed: false,
+            krylov: None,
+            scratch: Vec::new(),
+            has_solution: false,
+            pool,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> GridSpec {
+        self.levels[0].grid
+    }
+
+    /// Number of multigrid levels.
+    pub fn level_count(&self) -> usize {
+        self.levels.len()
+    }
+
+    /// The options.
+    pub fn options(&self) -> &SolveOptions {
+        &self.options
+    }
+
+    /// Bytes held by the hierarchy (unknowns, right-hand sides and masks of every level, and the
+    /// prolongation scratch).
+    pub fn hierarchy_bytes(&self) -> usize {
+        self.levels.iter().map(Level::bytes).sum::<usize>()
+            + self.scratch.capacity() * std::mem::size_of::<f64>()
+            + self.krylov.as_ref().map_or(0, |k| {
+                k.zl.bytes() + 4 * k.zl.split.len() * std::mem::size_of::<f64>()
+            })
+    }
+
+    /// The hierarchy, finest level first (for diagnostics and the WGSL twin).
+    pub fn levels(&self) -> &[Level] {
+        &self.levels
+    }
+
+    /// Installs `problem` without solving: the mask on every level, the right-hand side and the
+    /// fixed heights on the finest level (free samples keep their current values: zero in a new
+    /// solver). Returns `‖b‖₂`.
+    ///
+    /// # Errors
+    /// As [`Self::solve`].
+    pub fn load(&mut self, problem: &Problem) -> Result<f64, PoissonError> {
+        if problem.grid != self.grid() {
+            return Err(PoissonError::field(
+                "grid",
+                format!(
+                    "{:?} differs from the solver's {:?}",
+                    problem.grid,
+                    self.grid()
+                ),
+            ));
+        }
+        problem.validate()?;
+        let pool = self.pool.take();
+        let run = |s: &mut Self| {
+            s.update_mask(problem);
+            s.has_solution = true;
+            problem.load(&mut s.levels[0]).sqrt()
+        };
+        let norm = match &pool {
+            Some(p) => p.install(|| run(self)),
+            None => run(self),
+        };
+        self.pool = pool;
+        Ok(norm)
+    }
+
+    /// Solves `problem` from `start`; the solution stays in the solver (read it with
+    /// [`Self::heights_into`]) and is the next warm start.
+    ///
+    /// # Errors
+    /// [`PoissonError::Field`] if the problem is invalid ([`Problem::validate`]), its grid is not
+    /// the solver's (`grid`), or `start` heights have the wrong length or non-finite values.
+    pub fn solve(&mut self, problem: &Problem, start: Start) -> Result<SolveReport, PoissonError> {
+        if problem.grid != self.grid() {
+            return Err(PoissonError::field(
+                "grid",
+                format!(
+                    "{:?} differs from the solver's {:?}",
+                    problem.grid,
+                    self.grid()
+                ),
+            ));
+        }
+        problem.validate()?;
+        if let Start::From(h) = start {
+            if h.len() != problem.grid.len() {
+                return Err(PoissonError::field(
+                    "start",
+                    format!(
+                        "{} heights; the grid has {} samples",
+                        h.len(),
+                        problem.grid.len()
+                    ),
+                ));
+            }
+            if let Some(i) = h.iter().position(|v| !v.is_finite()) {
+                return Err(PoissonError::field(
+                    "start",
+                    format!("height {} at index {i} is not finite", h[i]),
+                ));
+            }
+        }
+        let pool = self.pool.take();
+        let report = match &pool {
+            Some(p) => p.install(|| self.run(problem, start)),
+            None => self.run(problem, start),
+        };
+        self.pool = pool;
+        Ok(report)
+    }
+
+    /// The solution in metres, row-major `nx · nz`, rounded to `f32` (fixed samples are exactly
+    /// the imposed heights).
+    ///
+    /// # Errors
+    /// [`PoissonError::Field`] naming `out` if its length is not the grid's.
+    pub fn heights_into(&self, out: &mut [f32]) -> Result<(), PoissonError> {
+        self.check_out(out.len())?;
+        let l = &self.levels[0];
+        l.split.merge_into(&l.h, out, |v| v as f32);
+        Ok(())
+    }
+
+    /// The solution in metres at full precision, row-major `nx · nz`.
+    ///
+    /// # Errors
+    /// As [`Self::heights_into`].
+    pub fn heights_f64_into(&self, out: &mut [f64]) -> Result<(), PoissonError> {
+        self.check_out(out.len())?;
+        let l = &self.levels[0];
+        l.split.merge_into(&l.h, out, |v| v);
+        Ok(())
+    }
+
+    fn check_out(&self, len: usize) -> Result<(), PoissonError> {
+        let n = self.grid().len();
+        if len != n {
+            return Err(PoissonError::field(
+                "out",
+                format!("{len} values; the grid has {n} samples"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn run(&mut self, problem: &Problem, start: Start) -> SolveReport {
+        let t0 = Instant::now();
+        self.update_mask(problem);
+        let bnorm = problem.load(&mut self.levels[0]).sqrt();
+        let kind = match start {
+            Start::Warm if self.has_solution => StartKind::Warm,
+            Start::From(h) => {
+                let l = &mut self.levels[0];
+                let g = l.grid;
+                for j in 0..g.nz {
+                    for i in 0..g.nx {
+                        let (c, k) = l.split.locate(i, j);
+                        if l.free[c][k] != 0 {
+                            l.h[c][k] = f64::from(h[j * g.nx + i]);
+                        }
+                    }
+                }
+                StartKind::Warm
+            }
+            _ => StartKind::Cold,
+        };
+        self.has_solution = true;
+        if bnorm == 0.0 {
+            // b = 0 with zero constraints: the solution is zero.
+            let l = &mut self.levels[0];
+            for c in 0..2 {
+                for (h, f) in l.h[c].iter_mut().zip(&l.free[c]) {
+                    if *f != 0 {
+                        *h = 0.0;
+                    }
+                }
+            }
+            return SolveReport {
+                start: kind,
+                cycles: 0,
+                relative_residuals: vec![0.0],
+                converged: true,
+                seconds: t0.elapsed().as_secs_f64(),
+                rhs_norm: 0.0,
+            };
+        }
+        if kind == StartKind::Cold {
+            self.full_multigrid();
+        }
+        let (cycles, relative_residuals) = self.cycles(bnorm);
+        let converged = relative_residuals
+            .last()
+            .is_some_and(|r| *r <= self.options.tolerance);
+        SolveReport {
+            start: kind,
+            cycles,
+            relative_residuals,
+            converged,
+            seconds: t0.elapsed().as_secs_f64(),
+            rhs_norm: bnorm,
+        }
+    }
+
+    /// Installs the problem's mask on the finest level and re-restricts the coarse masks if it
+    /// changed.
+    fn update_mask(&mut self, problem: &Problem) {
+        let free = problem.free_mask();
+        let l0 = &self.levels[0];
+        let g = l0.grid;
+        let same = (0..g.nz).all(|j| (0..g.nx).all(|i| l0.is_free(i, j) == free[j * g.nx + i]));
+        if same && self.has_solution {
+            return;
+        }
+        self.interior_fixed = (1..g.nz - 1).any(|j| (1..g.nx - 1).any(|i| !free[j * g.nx + i]));
+        self.levels[0].set_mask(&free);
+        for l in 1..self.levels.len() {
+            let (a, b) = self.levels.split_at_mut(l);
+            a[l - 1].restrict_mask(&mut b[0]);
+        }
+    }
+
+    /// Full multigrid: restrict the problem to every level, solve the coarsest, then interpolate
+    /// upwards with `fmg_cycles` cycles on each level but the finest.
+    fn full_multigrid(&mut self) {
+        let n = self.levels.len();
+        for l in 1..n {
+            let (a, b) = self.levels.split_at_mut(l);
+            restrict_rhs(&a[l - 1], &mut b[0]);
+            a[l - 1].restrict_fixed_values(&mut b[0]);
+        }
+        smooth(&mut self.levels[n - 1], COARSEST_SWEEPS);
+        for l in (0..n - 1).rev() {
+            let (a, b) = self.levels.split_at_mut(l + 1);
+            prolong::<false>(&b[0], &mut a[l], &mut self.scratch);
+            if l > 0 {
+                for _ in 0..self.options.fmg_cycles {
+                    cycle(&mut self.levels, l, &self.options, &mut self.scratch, false);
+                }
+            }
+        }
+    }
+
+    /// Finest-level cycles until the tolerance or the cycle cap. Returns the cycle count and the
+    /// relative residual history.
+    fn cycles(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
+        let o = self.options;
+        let cg = match o.acceleration {
+            Acceleration::Auto => self.interior_fixed,
+            Acceleration::None => false,
+            Acceleration::ConjugateGradient => true,
+        };
+        if cg && self.levels.len() > 1 {
+            return self.conjugate_gradients(bnorm);
+        }
+        let mut history = Vec::new();
+        let mut done = 0;
+        if self.levels.len() == 1 {
+            let l = &mut self.levels[0];
+            let mut r = [vec![0.0; l.split.len()], vec![0.0; l.split.len()]];
+            loop {
+                let rel = residual(l, &mut r).sqrt() / bnorm;
+                history.push(rel);
+                if rel <= o.tolerance || done == o.max_cycles {
+                    return (done, history);
+                }
+                smooth(l, o.pre_smooth + o.post_smooth);
+                done += 1;
+            }
+        }
+        loop {
+            let (a, b) = self.levels.split_at_mut(1);
+            let rel = residual_restrict(&a[0], &mut b[0]).sqrt() / bnorm;
+            history.push(rel);
+            if rel <= o.tolerance || done == o.max_cycles {
+                return (done, history);
+            }
+            b[0].zero_h();
+            for _ in 0..gamma(o.cycle) {
+                cycle(&mut self.levels, 1, &o, &mut self.scratch, false);
+            }
+            let (a, b) = self.levels.split_at_mut(1);
+            prolong::<true>(&b[0], &mut a[0], &mut self.scratch);
+            smooth(&mut a[0], o.pre_smooth + o.post_smooth);
+            done += 1;
+        }
+    }
+}
+
+impl Solver {
+    /// Conjugate gradients on `K h = −b` (`K = −A`, symmetric positive definite over the free
+    /// samples), preconditioned by one symmetric cycle (pre-smoothing red→black, post-smoothing
+    /// black→red, restriction = prolongationᵀ). The residual kept is `r = b − A h = −(−b − K h)`.
+    fn conjugate_gradients(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
+        let o = self.options;
+        let mut kr = match self.krylov.take() {
+            Some(k) if k.zl.grid == self.levels[0].grid => k,
+            _ => Krylov::new(&self.levels[0]),
+        };
+        kr.zl.free.clone_from(&self.levels[0].free);
+        let mut history = Vec::new();
+        let mut done = 0;
+        let rr = residual(&self.levels[0], &mut kr.zl.rhs);
+        history.push(rr.sqrt() / bnorm);
+        if history[0] <= o.tolerance || o.max_cycles == 0 {
+            self.krylov = Some(kr);
+            return (0, history);
+        }
+        precondition(&mut kr.zl, &mut self.levels, &o, &mut self.scratch);
+        kr.p.clone_from(&kr.zl.h);
+        let mut rho = -dot(&kr.zl.rhs, &kr.zl.h);
+        loop {
+            let pq = apply_operator(&self.levels[0], &kr.p, &mut kr.q);
+            if !(pq > 0.0 && rho.is_finite()) {
+                break;
+            }
+            let alpha = rho / pq;
+            let rr = update_solution(&mut self.levels[0].h, &mut kr.zl.rhs, &kr.p, &kr.q, alpha);
+            done += 1;
+            let rel = rr.sqrt() / bnorm;
+            history.push(rel);
+            if rel <= o.tolerance || done == o.max_cycles {
+                break;
+            }
+            precondition(&mut kr.zl, &mut self.levels, &o, &mut self.scratch);
+            let next = -dot(&kr.zl.rhs, &kr.zl.h);
+            let beta = next / rho;
+            rho = next;
+            update_direction(&mut kr.p, &kr.zl.h, beta);
+        }
+        self.krylov = Some(kr);
+        (done, history)
+    }
+}
+
+/// Work arrays of the conjugate gradients on the finest level: `zl` holds the preconditioned
+/// residual `z` (its unknowns) and the residual `r` (its right-hand side) with the finest mask;
+/// `p` is the search direction and `q = K p`.
+#[derive(Debug)]
+struct Krylov {
+    zl: Level,
+    p: [Vec<f64>; 2],
+    q: [Vec<f64>; 2],
+}
+
+impl Krylov {
+    fn new(finest: &Level) -> Self {
+        let n = finest.split.len();
+        Self {
+            zl: Level::new(finest.grid),
+            p: [vec![0.0; n], vec![0.0; n]],
+            q: [vec![0.0; n], vec![0.0; n]],
+        }
+    }
+}
+
+/// `zl.h ← M zl.rhs`: one symmetric cycle from zero on the finest-level correction `zl`, with
+/// the coarse levels of `levels`.
+fn precondition(zl: &mut Level, levels: &mut [Level], o: &SolveOptions, scratch: &mut Vec<f64>) {
+    zl.zero_h();
+    smooth(zl, o.pre_smooth);
+    residual_restrict(zl, &mut levels[1]);
+    levels[1].zero_h();
+    for _ in 0..gamma(o.cycle) {
+        cycle(levels, 1, o, scratch, true);
+    }
+    prolong::<true>(&levels[1], zl, scratch);
+    smooth_reverse(zl, o.post_smooth);
+}
+
+fn gamma(c: Cycle) -> usize {
+    match c {
+        Cycle::V => 1,
+        Cycle::W => 2,
+    }
+}
+
+/// One cycle on level `l` (≥ 1 in the correction cycles): pre-smoothing, residual restriction,
+/// coarse-grid correction (recursively), prolongation, post-smoothing. The coarsest level is
+/// solved by [`COARSEST_SWEEPS`] sweeps.
+///
+/// With `symmetric`, post-smoothing runs black→red (the adjoint of the pre-smoother), as the
+/// conjugate-gradient preconditioner needs; plain cycles smooth red→black both times, which
+/// converges faster after bilinear prolongation.
+fn cycle(
+    levels: &mut [Level],
+    l: usize,
+    o: &SolveOptions,
+    scratch: &mut Vec<f64>,
+    symmetric: bool,
+) {
+    if l + 1 == levels.len() {
+        smooth(&mut levels[l], COARSEST_SWEEPS);
+        return;
+    }
+    smooth(&mut levels[l], o.pre_smooth);
+    {
+        let (a, b) = levels.split_at_mut(l + 1);
+        residual_restrict(&a[l], &mut b[0]);
+        b[0].zero_h();
+    }
+    for _ in 0..gamma(o.cycle) {
+        cycle(levels, l + 1, o, scratch, symmetric);
+    }
+    let (a, b) = levels.split_at_mut(l + 1);
+    prolong::<true>(&b[0], &mut a[l], scratch);
+    if symmetric {
+        smooth_reverse(&mut a[l], o.post_smooth);
+    } else {
+        smooth(&mut a[l], o.post_smooth);
+    }
+}

@@ -1,0 +1,665 @@
+//! The multigrid kernels on one level or between two levels: red-black Gauss–Seidel half-sweeps,
+//! the residual, full-weighting restriction (fused with the residual and its norm) and bilinear
+//! prolongation. `shaders/poisson.wgsl` holds their WGSL twins.
+//!
+//! Every kernel works row by row on contiguous slices of the colour-split arrays
+//! ([`super::grid`]); rows are distributed over rayon's threads in bands when a level has at least
+//! [`PARALLEL_MIN_SAMPLES`] samples. Each output value is a fixed expression of its inputs (no
+//! reduction across rows inside a value), so results do not depend on the band split or the thread
+//! count. Residual norms are summed per row with eight interleaved accumulators and the row sums
+//! are added in row order: also independent of the thread count.
+//!
+//! Operator, in the order the CPU and the WGSL twin evaluate it (`Σ = ((l + r) + u) + d`):
+//! - smoother at a free sample: `h ← (Σ − b) · 0.25`;
+//! - residual at a free sample: `r = b − (Σ − 4 h)`, zero at fixed samples;
+//! - restriction: `b_c = ¼ · (4 r_c + 2 (r_w + r_e + r_n + r_s) + r_nw + r_ne + r_sw + r_se)`, the
+//!   full-weighting average times 4 because the coarse operator has twice the spacing;
+//! - prolongation: coarse values at even-even samples, the mean of two at even-odd and odd-even
+//!   samples, the mean of four (`((a + b) + (c + d)) · 0.25`) at odd-odd samples.
+
+use super::grid::Split;
+use super::level::Level;
+use rayon::prelude::*;
+
+/// Levels with at least this many samples run their loops on several threads.
+pub const PARALLEL_MIN_SAMPLES: usize = 1 << 16;
+
+/// Rows per parallel task for a level of `rows` rows.
+fn band_rows(rows: usize) -> usize {
+    let tasks = 4 * rayon::current_num_threads().max(1);
+    rows.div_ceil(tasks).max(4)
+}
+
+fn parallel(split: &Split) -> bool {
+    split.nx * split.nz >= PARALLEL_MIN_SAMPLES
+}
+
+/// Runs `f(first_row, rows)` over bands of `rows_of` rows of `data` (row length `stride`).
+fn for_bands<T: Send>(
+    data: &mut [T],
+    stride: usize,
+    par: bool,
+    f: impl Fn(usize, &mut [T]) + Send + Sync,
+) {
+    let rows = data.len() / stride;
+    let band = band_rows(rows);
+    if par {
+        data.par_chunks_mut(band * stride)
+            .enumerate()
+            .for_each(|(b, chunk)| f(b * band, chunk));
+    } else {
+        data.chunks_mut(band * stride)
+            .enumerate()
+            .for_each(|(b, chunk)| f(b * band, chunk));
+    }
+}
+
+/// The slot range `k0..k1` of the interior samples of colour `c` in row `j`, and the column
+/// parity `s` of that colour row: left neighbours are `other[j][k − 1 + s]`, right neighbours
+/// `other[j][k + s]`, vertical neighbours `other[j ± 1][k]`.
+#[inline]
+fn interior(split: &Split, c: usize, j: usize) -> (usize, usize, usize) {
+    let s = Split::shift(c, j);
+    (1 - s, split.nx / 2, s)
+}
+
+/// One red-black Gauss–Seidel half-sweep over the free samples of colour `c`.
+pub fn smooth_colour(level: &mut Level, c: usize) {
+    let split = level.split;
+    let st = split.stride;
+    let par = parallel(&split);
+    let [h0, h1] = &mut level.h;
+    let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
+    let b = &level.rhs[c];
+    let f = &level.free[c];
+    for_bands(x, st, par, |j0, rows| {
+        for (dj, xrow) in rows.chunks_exact_mut(st).enumerate() {
+            let j = j0 + dj;
+            if j == 0 || j + 1 == split.nz {
+                continue;
+            }
+            let (k0, k1, s) = interior(&split, c, j);
+            let yc = &y[j * st..(j + 1) * st];
+            smooth_row(
+                &mut xrow[k0..k1],
+                &yc[k0 + s - 1..k1 + s - 1],
+                &yc[k0 + s..k1 + s],
+                &y[(j - 1) * st + k0..(j - 1) * st + k1],
+                &y[(j + 1) * st + k0..(j + 1) * st + k1],
+                &b[j * st + k0..j * st + k1],
+                &f[j * st + k0..j * st + k1],
+            );
+        }
+    });
+}
+
+#[inline(always)]
+fn smooth_row(x: &mut [f64], l: &[f64], r: &[f64], u: &[f64], d: &[f64], b: &[f64], f: &[u8]) {
+    let n = x.len();
+    let (l, r, u, d, b, f) = (&l[..n], &r[..n], &u[..n], &d[..n], &b[..n], &f[..n]);
+    for k in 0..n {
+        let v = (l[k] + r[k] + u[k] + d[k] - b[k]) * 0.25;
+        x[k] = if f[k] != 0 { v } else { x[k] };
+    }
+}
+
+/// `sweeps` full red-black Gauss–Seidel sweeps (red half-sweep, then black).
+pub fn smooth(level: &mut Level, sweeps: usize) {
+    for _ in 0..sweeps {
+        smooth_colour(level, 0);
+        smooth_colour(level, 1);
+    }
+}
+
+/// `sweeps` sweeps in the reverse colour order (black, then red): the adjoint of [`smooth`], for
+/// post-smoothing, so a cycle is a symmetric operator (a valid conjugate-gradient preconditioner).
+pub fn smooth_reverse(level: &mut Level, sweeps: usize) {
+    for _ in 0..sweeps {
+        smooth_colour(level, 1);
+        smooth_colour(level, 0);
+    }
+}
+
+/// Values per chunk of the flat vector operations (fixed, so sums do not depend on threads).
+const CHUNK: usize = 1 << 14;
+
+/// `Σ a·b` over two colour-array pairs, in a thread-count-independent order.
+pub fn dot(a: &[Vec<f64>; 2], b: &[Vec<f64>; 2]) -> f64 {
+    let mut total = 0.0;
+    for c in 0..2 {
+        let parts: Vec<f64> = a[c]
+            .par_chunks(CHUNK)
+            .zip(b[c].par_chunks(CHUNK))
+            .map(|(x, y)| dot_slice(x, y))
+            .collect();
+        total += parts.iter().sum::<f64>();
+    }
+    total
+}
+
+#[inline]
+fn dot_slice(x: &[f64], y: &[f64]) -> f64 {
+    let n = x.len().min(y.len());
+    let (x, y) = (&x[..n], &y[..n]);
+    let mut acc = [0.0f64; 8];
+    let mut k = 0;
+    while k + 8 <= n {
+        for l in 0..8 {
+            acc[l] += x[k + l] * y[k + l];
+        }
+        k += 8;
+    }
+    for l in 0..n - k {
+        acc[l] += x[k + l] * y[k + l];
+    }
+    ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]))
+}
+
+/// `x += α p` and `r += α q` (element-wise on colour arrays); returns `‖r‖²`.
+pub fn update_solution(
+    x: &mut [Vec<f64>; 2],
+    r: &mut [Vec<f64>; 2],
+    p: &[Vec<f64>; 2],
+    q: &[Vec<f64>; 2],
+    alpha: f64,
+) -> f64 {
+    let mut total = 0.0;
+    for c in 0..2 {
+        let parts: Vec<f64> = x[c]
+            .par_chunks_mut(CHUNK)
+            .zip(r[c].par_chunks_mut(CHUNK))
+            .zip(p[c].par_chunks(CHUNK))
+            .zip(q[c].par_chunks(CHUNK))
+            .map(|(((x, r), p), q)| {
+                let n = x.len();
+                let (r, p, q) = (&mut r[..n], &p[..n], &q[..n]);
+                for k in 0..n {
+                    x[k] += alpha * p[k];
+                    r[k] += alpha * q[k];
+                }
+                sum_squares(r)
+            })
+            .collect();
+        total += parts.iter().sum::<f64>();
+    }
+    total
+}
+
+/// `p ← z + β p`.
+pub fn update_direction(p: &mut [Vec<f64>; 2], z: &[Vec<f64>; 2], beta: f64) {
+    for c in 0..2 {
+        p[c].par_chunks_mut(CHUNK)
+            .zip(z[c].par_chunks(CHUNK))
+            .for_each(|(p, z)| {
+                let n = p.len();
+                let z = &z[..n];
+                for k in 0..n {
+                    p[k] = z[k] + beta * p[k];
+                }
+            });
+    }
+}
+
+/// `q = K p` with `K = −A` (the symmetric positive definite form: `4 p − Σ neighbours`) at the
+/// free samples of `mask` (zero elsewhere; `p` must be zero at fixed samples). Returns `p · q`.
+pub fn apply_operator(mask: &Level, p: &[Vec<f64>; 2], q: &mut [Vec<f64>; 2]) -> f64 {
+    let split = mask.split;
+    let st = split.stride;
+    let par = parallel(&split);
+    let band = band_rows(split.nz);
+    let mut partial = vec![0.0f64; split.nz];
+    let [q0, q1] = q;
+    let work = |b: usize, ((q0, q1), part): ((&mut [f64], &mut [f64]), &mut [f64])| {
+        let rows = q0.len() / st;
+        for dj in 0..rows {
+            let j = b * band + dj;
+            let mut ss = 0.0;
+            for (c, qc) in [&mut *q0, &mut *q1].into_iter().enumerate() {
+                let out = &mut qc[dj * st..(dj + 1) * st];
+                out.fill(0.0);
+                if j == 0 || j + 1 == split.nz {
+                    continue;
+                }
+                let (k0, k1, s) = interior(&split, c, j);
+                let x = &p[c][j * st..(j + 1) * st];
+                let y = &p[1 - c];
+                let yc = &y[j * st..(j + 1) * st];
+                let o = &mut out[k0..k1];
+                let n = o.len();
+                let (xs, l, r) = (&x[k0..k1], &yc[k0 + s - 1..k1 + s - 1], &yc[k0 + s..k1 + s]);
+                let (u, d) = (
+                    &y[(j - 1) * st + k0..(j - 1) * st + k1],
+                    &y[(j + 1) * st + k0..(j + 1) * st + k1],
+                );
+                let f = &mask.free[c][j * st + k0..j * st + k1];
+                let (xs, l, r, u, d, f) = (&xs[..n], &l[..n], &r[..n], &u[..n], &d[..n], &f[..n]);
+                for k in 0..n {
+                    let v = 4.0 * xs[k] - (l[k] + r[k] + u[k] + d[k]);
+                    o[k] = if f[k] != 0 { v } else { 0.0 };
+                }
+                ss += dot_slice(xs, o);
+            }
+            part[dj] = ss;
+        }
+    };
+    if par {
+        q0.par_chunks_mut(band * st)
+            .zip(q1.par_chunks_mut(band * st))
+            .zip(partial.par_chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, x)| work(b, x));
+    } else {
+        q0.chunks_mut(band * st)
+            .zip(q1.chunks_mut(band * st))
+            .zip(partial.chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, x)| work(b, x));
+    }
+    partial.iter().sum()
+}
+
+#[inline(always)]
+fn residual_row(
+    out: &mut [f64],
+    x: &[f64],
+    l: &[f64],
+    r: &[f64],
+    u: &[f64],
+    d: &[f64],
+    b: &[f64],
+    f: &[u8],
+) {
+    let n = out.len();
+    let (x, l, r, u, d, b, f) = (
+        &x[..n],
+        &l[..n],
+        &r[..n],
+        &u[..n],
+        &d[..n],
+        &b[..n],
+        &f[..n],
+    );
+    for k in 0..n {
+        let v = b[k] - (l[k] + r[k] + u[k] + d[k] - 4.0 * x[k]);
+        out[k] = if f[k] != 0 { v } else { 0.0 };
+    }
+}
+
+/// Sum of squares with eight interleaved accumulators (vectorisable and deterministic).
+#[inline]
+fn sum_squares(v: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 8];
+    let chunks = v.chunks_exact(8);
+    let tail = chunks.remainder();
+    for c in chunks {
+        for (a, x) in acc.iter_mut().zip(c) {
+            *a += x * x;
+        }
+    }
+    for (a, x) in acc.iter_mut().zip(tail) {
+        *a += x * x;
+    }
+    ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]))
+}
+
+/// Residual of row `j` (both colours) into `out[0]`, `out[1]` (each `stride` long; border slots
+/// zero). Returns its sum of squares.
+fn residual_of_row(level: &Level, j: usize, out: &mut [Vec<f64>; 2]) -> f64 {
+    let split = &level.split;
+    let st = split.stride;
+    out[0].fill(0.0);
+    out[1].fill(0.0);
+    if j == 0 || j + 1 == split.nz {
+        return 0.0;
+    }
+    let mut ss = 0.0;
+    for (c, o) in out.iter_mut().enumerate() {
+        let (k0, k1, s) = interior(split, c, j);
+        let x = &level.h[c][j * st..(j + 1) * st];
+        let y = &level.h[1 - c];
+        let yc = &y[j * st..(j + 1) * st];
+        residual_row(
+            &mut o[k0..k1],
+            &x[k0..k1],
+            &yc[k0 + s - 1..k1 + s - 1],
+            &yc[k0 + s..k1 + s],
+            &y[(j - 1) * st + k0..(j - 1) * st + k1],
+            &y[(j + 1) * st + k0..(j + 1) * st + k1],
+            &level.rhs[c][j * st + k0..j * st + k1],
+            &level.free[c][j * st + k0..j * st + k1],
+        );
+        ss += sum_squares(&o[k0..k1]);
+    }
+    ss
+}
+
+/// The residual `b − A h` of every sample (zero at fixed ones) into two colour arrays, and its
+/// squared Euclidean norm.
+pub fn residual(level: &Level, out: &mut [Vec<f64>; 2]) -> f64 {
+    let split = level.split;
+    let st = split.stride;
+    let par = parallel(&split);
+    let band = band_rows(split.nz);
+    let mut partial = vec![0.0f64; split.nz];
+    let [o0, o1] = out;
+    let work = |b: usize, ((o0, o1), part): ((&mut [f64], &mut [f64]), &mut [f64])| {
+        let mut rows = [vec![0.0; st], vec![0.0; st]];
+        for dj in 0..o0.len() / st {
+            part[dj] = residual_of_row(level, b * band + dj, &mut rows);
+            o0[dj * st..(dj + 1) * st].copy_from_slice(&rows[0]);
+            o1[dj * st..(dj + 1) * st].copy_from_slice(&rows[1]);
+        }
+    };
+    if par {
+        o0.par_chunks_mut(band * st)
+            .zip(o1.par_chunks_mut(band * st))
+            .zip(partial.par_chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, x)| work(b, x));
+    } else {
+        o0.chunks_mut(band * st)
+            .zip(o1.chunks_mut(band * st))
+            .zip(partial.chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, x)| work(b, x));
+    }
+    partial.iter().sum()
+}
+
+/// Full weighting of fine rows `up = 2J − 1`, `mid = 2J`, `down = 2J + 1` (each as two colour
+/// rows) into the natural coarse row `out` (interior columns `1..ncx − 1`), times 4.
+fn full_weighting(up: &[Vec<f64>; 2], mid: &[Vec<f64>; 2], down: &[Vec<f64>; 2], out: &mut [f64]) {
+    // Row 2J is even: red holds even columns (2I at slot I), black odd columns (2I ± 1 at slots
+    // I − 1 and I). Rows 2J ± 1 are odd: red holds odd columns (2I ± 1 at I − 1, I), black even
+    // columns (2I at I).
+    let n = out.len() - 2;
+    let o = &mut out[1..n + 1];
+    let (mr, mb0, mb1) = (&mid[0][1..n + 1], &mid[1][..n], &mid[1][1..n + 1]);
+    let (ub, db) = (&up[1][1..n + 1], &down[1][1..n + 1]);
+    let (ur0, ur1) = (&up[0][..n], &up[0][1..n + 1]);
+    let (dr0, dr1) = (&down[0][..n], &down[0][1..n + 1]);
+    for k in 0..n {
+        let edges = (mb0[k] + mb1[k]) + (ub[k] + db[k]);
+        let corners = (ur0[k] + ur1[k]) + (dr0[k] + dr1[k]);
+        o[k] = (4.0 * mr[k] + 2.0 * edges + corners) * 0.25;
+    }
+}
+
+/// Writes the natural coarse row `nat` of row `jc` into the coarse right-hand side colour rows
+/// `r0`, `r1` (zero at fixed samples).
+fn scatter_rhs(
+    coarse_split: &Split,
+    jc: usize,
+    nat: &[f64],
+    r0: &mut [f64],
+    r1: &mut [f64],
+    free: [&[u8]; 2],
+) {
+    for (c, r) in [r0, r1].into_iter().enumerate() {
+        let s = Split::shift(c, jc);
+        let count = coarse_split.count(c, jc);
+        for k in 0..count {
+            let v = nat[2 * k + s];
+            r[k] = if free[c][k] != 0 { v } else { 0.0 };
+        }
+    }
+}
+
+/// Computes the residual of `fine`, restricts it by full weighting into the right-hand side of
+/// `coarse` (zero at coarse fixed samples), and returns the squared norm of the fine residual.
+pub fn residual_restrict(fine: &Level, coarse: &mut Level) -> f64 {
+    restrict_impl(fine, coarse, true)
+}
+
+/// Restricts the right-hand side of `fine` by full weighting into that of `coarse`: the coarse
+/// full problem of the full-multigrid start.
+pub fn restrict_rhs(fine: &Level, coarse: &mut Level) {
+    restrict_impl(fine, coarse, false);
+}
+
+fn restrict_impl(fine: &Level, coarse: &mut Level, residual: bool) -> f64 {
+    let cs = coarse.split;
+    let cst = cs.stride;
+    let fst = fine.split.stride;
+    let par = parallel(&fine.split);
+    let nzc = cs.nz;
+    let band = band_rows(nzc);
+    let free = &coarse.free;
+    let [r0, r1] = &mut coarse.rhs;
+    let mut partial = vec![0.0f64; nzc];
+    let work = |b: usize, (c0, c1, part): (&mut [f64], &mut [f64], &mut [f64])| {
+        let mut bufs: [[Vec<f64>; 2]; 3] =
+            std::array::from_fn(|_| [vec![0.0; fst], vec![0.0; fst]]);
+        let mut nat = vec![0.0f64; cs.nx];
+        let fine_row = |j: usize, out: &mut [Vec<f64>; 2]| -> f64 {
+            if residual {
+                residual_of_row(fine, j, out)
+            } else {
+                out[0].copy_from_slice(&fine.rhs[0][j * fst..(j + 1) * fst]);
+                out[1].copy_from_slice(&fine.rhs[1][j * fst..(j + 1) * fst]);
+                0.0
+            }
+        };
+        let j0 = b * band;
+        let rows = c0.len() / cst;
+        // `bufs[2]` holds fine row 2J + 1 of the previous coarse row, reused as row 2J − 1.
+        let mut have_down = None;
+        let mut down_ss = 0.0;
+        for dj in 0..rows {
+            let jc = j0 + dj;
+            let (o0, o1) = (
+                &mut c0[dj * cst..(dj + 1) * cst],
+                &mut c1[dj * cst..(dj + 1) * cst],
+            );
+            if jc == 0 || jc + 1 == nzc {
+                o0.fill(0.0);
+                o1.fill(0.0);
+                continue;
+            }
+            // Coarse row J owns the norms of fine rows 2J − 1 and 2J (and 2J + 1 for the last
+            // interior coarse row).
+            let mut ss = if have_down == Some(jc - 1) {
+                bufs.swap(0, 2);
+                down_ss
+            } else {
+                fine_row(2 * jc - 1, &mut bufs[0])
+            };
+            ss += fine_row(2 * jc, &mut bufs[1]);
+            down_ss = fine_row(2 * jc + 1, &mut bufs[2]);
+            have_down = Some(jc);
+            if jc + 2 == nzc {
+                ss += down_ss;
+            }
+            part[dj] = ss;
+            full_weighting(&bufs[0], &bufs[1], &bufs[2], &mut nat);
+            let fr = [
+                &free[0][jc * cst..(jc + 1) * cst],
+                &free[1][jc * cst..(jc + 1) * cst],
+            ];
+            scatter_rhs(&cs, jc, &nat, o0, o1, fr);
+        }
+    };
+    if par {
+        r0.par_chunks_mut(band * cst)
+            .zip(r1.par_chunks_mut(band * cst))
+            .zip(partial.par_chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, ((c0, c1), p))| work(b, (c0, c1, p)));
+    } else {
+        r0.chunks_mut(band * cst)
+            .zip(r1.chunks_mut(band * cst))
+            .zip(partial.chunks_mut(band))
+            .enumerate()
+            .for_each(|(b, ((c0, c1), p))| work(b, (c0, c1, p)));
+    }
+    partial.iter().sum()
+}
+
+/// Bilinear prolongation of `coarse.h` into `fine.h` at the free samples of `fine`: added when
+/// `ADD` (coarse-grid correction), assigned otherwise (full-multigrid interpolation).
+/// `scratch` (at least `coarse` samples long) receives the natural coarse values.
+pub fn prolong<const ADD: bool>(coarse: &Level, fine: &mut Level, scratch: &mut Vec<f64>) {
+    let cs = coarse.split;
+    scratch.resize(cs.nx * cs.nz, 0.0);
+    cs.merge_into(&coarse.h, scratch, |v| v);
+    let nat: &[f64] = scratch;
+    let ncx = cs.nx;
+    let fs = fine.split;
+    let st = fs.stride;
+    let par = parallel(&fs);
+    let band = band_rows(fs.nz);
+    let [h0, h1] = &mut fine.h;
+    let free = &fine.free;
+    let work = |b: usize, (x0, x1): (&mut [f64], &mut [f64])| {
+        let rows = x0.len() / st;
+        for dj in 0..rows {
+            let j = b * band + dj;
+            if j == 0 || j + 1 == fs.nz {
+                continue;
+            }
+            let jc = j / 2;
+            let e0 = &nat[jc * ncx..(jc + 1) * ncx];
+            for (c, x) in [&mut *x0, &mut *x1].into_iter().enumerate() {
+                let (k0, k1, s) = interior(&fs, c, j);
+                let xr = &mut x[dj * st + k0..dj * st + k1];
+                let f = &free[c][j * st + k0..j * st + k1];
+                let n = xr.len();
+                if j % 2 == 0 {
+                    if s == 0 {
+                        // Even column 2k: coarse sample k.
+                        let a = &e0[k0..k0 + n];
+                        apply::<ADD>(xr, f, |k| a[k]);
+                    } else {
+                        // Odd column 2k + 1: mean of coarse k and k + 1.
+                        let (a, bb) = (&e0[k0..k0 + n], &e0[k0 + 1..k0 + 1 + n]);
+                        apply::<ADD>(xr, f, |k| (a[k] + bb[k]) * 0.5);
+                    }
+                } else {
+                    let e1 = &nat[(jc + 1) * ncx..(jc + 2) * ncx];
+                    if s == 0 {
+                        let (a, d) = (&e0[k0..k0 + n], &e1[k0..k0 + n]);
+                        apply::<ADD>(xr, f, |k| (a[k] + d[k]) * 0.5);
+                    } else {
+                        let (a, bb) = (&e0[k0..k0 + n], &e0[k0 + 1..k0 + 1 + n]);
+                        let (d, e) = (&e1[k0..k0 + n], &e1[k0 + 1..k0 + 1 + n]);
+                        apply::<ADD>(xr, f, |k| ((a[k] + bb[k]) + (d[k] + e[k])) * 0.25);
+                    }
+                }
+            }
+        }
+    };
+    if par {
+        h0.par_chunks_mut(band * st)
+            .zip(h1.par_chunks_mut(band * st))
+            .enumerate()
+            .for_each(|(b, p)| work(b, p));
+    } else {
+        h0.chunks_mut(band * st)
+            .zip(h1.chunks_mut(band * st))
+            .enumerate()
+            .for_each(|(b, p)| work(b, p));
+    }
+}
+
+#[inline(always)]
+fn apply<const ADD: bool>(x: &mut [f64], f: &[u8], v: impl Fn(usize) -> f64) {
+    let n = x.len();
+    let f = &f[..n];
+    for k in 0..n {
+        let e = v(k);
+        let new = if ADD { x[k] + e } else { e };
+        x[k] = if f[k] != 0 { new } else { x[k] };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::poisson::grid::GridSpec;
+
+    fn level_with(nx: usize, nz: usize, h: impl Fn(usize, usize) -> f64) -> Level {
+        let g = GridSpec::new(nx, nz, 1.0).expect("grid");
+        let mut l = Level::with_mask(g, &vec![true; nx * nz]);
+        for j in 0..nz {
+            for i in 0..nx {
+                let (c, k) = l.split.locate(i, j);
+                l.h[c][k] = h(i, j);
+            }
+        }
+        l
+    }
+
+    #[test]
+    fn residual_of_a_quadratic_is_its_constant_laplacian() {
+        // h = x² + 2 z² has A h = 2 + 4 = 6 everywhere; with b = 0 the residual is −6.
+        let l = level_with(9, 17, |i, j| (i * i + 2 * j * j) as f64);
+        let mut r = [vec![0.0; l.split.len()], vec![0.0; l.split.len()]];
+        let ss = residual(&l, &mut r);
+        for j in 0..17 {
+            for i in 0..9 {
+                let (c, k) = l.split.locate(i, j);
+                let want = if l.grid.is_border(i, j) { 0.0 } else { -6.0 };
+                assert_eq!(r[c][k], want, "({i}, {j})");
+            }
+        }
+        assert_eq!(ss, 36.0 * 7.0 * 15.0);
+    }
+
+    #[test]
+    fn restriction_is_four_times_full_weighting() {
+        // A linear residual field restricts to four times itself (full weighting is exact on
+        // linear functions); check through restrict_rhs.
+        let mut fine = level_with(17, 9, |_, _| 0.0);
+        for j in 1..8 {
+            for i in 1..16 {
+                let (c, k) = fine.split.locate(i, j);
+                fine.rhs[c][k] = (3 * i + j) as f64;
+            }
+        }
+        let mut coarse = fine.coarsen().expect("coarse");
+        restrict_rhs(&fine, &mut coarse);
+        for jc in 1..4 {
+            for ic in 1..8 {
+                let (c, k) = coarse.split.locate(ic, jc);
+                assert_eq!(coarse.rhs[c][k], 4.0 * (6 * ic + 2 * jc) as f64);
+            }
+        }
+    }
+
+    #[test]
+    fn prolongation_is_exact_on_bilinear_functions() {
+        let coarse = level_with(9, 5, |i, j| (2 * i + 3 * j + i * j) as f64);
+        let mut fine = level_with(17, 9, |_, _| 0.0);
+        let mut scratch = Vec::new();
+        prolong::<false>(&coarse, &mut fine, &mut scratch);
+        for j in 1..8 {
+            for i in 1..16 {
+                let (x, z) = (i as f64 / 2.0, j as f64 / 2.0);
+                assert_eq!(fine.value(i, j), 2.0 * x + 3.0 * z + x * z, "({i}, {j})");
+            }
+        }
+        prolong::<true>(&coarse, &mut fine, &mut scratch);
+        assert_eq!(fine.value(3, 5), 2.0 * (2.0 * 1.5 + 3.0 * 2.5 + 1.5 * 2.5));
+        assert_eq!(fine.value(0, 0), 0.0, "border samples are fixed");
+    }
+
+    #[test]
+    fn a_half_sweep_solves_each_sample_of_its_colour() {
+        let mut l = level_with(9, 9, |i, j| ((i * 7 + j * 3) % 5) as f64);
+        smooth_colour(&mut l, 0);
+        let mut r = [vec![0.0; l.split.len()], vec![0.0; l.split.len()]];
+        residual(&l, &mut r);
+        for j in 1..8 {
+            for i in 1..8 {
+                let (c, k) = l.split.locate(i, j);
+                if c == 0 {
+                    assert!(
+                        r[c][k].abs() < 1e-12,
+                        "red residual at ({i}, {j}): {}",
+                        r[c][k]
+                    );
+                }
+            }
+        }
+    }
+}

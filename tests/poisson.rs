@@ -1,0 +1,424 @@
+//! The multigrid Poisson solver of issue 4 (`strata::terrain::poisson`): second-order accuracy on
+//! a manufactured solution, steady per-cycle residual reduction, exact Dirichlet constraints, hard
+//! constraints beating conflicting gradients (the paper's Fig. 16), warm starts, determinism
+//! across thread counts, and input validation.
+
+use strata::terrain::poisson::gradient::extract_edges;
+use strata::terrain::poisson::{
+    reconstruct, Cycle, GridSpec, PoissonError, Problem, SolveOptions, Solver, Start,
+};
+
+/// An owned problem for the tests.
+struct Owned {
+    grid: GridSpec,
+    gx: Vec<f32>,
+    gz: Vec<f32>,
+    fixed: Vec<bool>,
+    heights: Vec<f32>,
+}
+
+impl Owned {
+    fn problem(&self) -> Problem<'_> {
+        Problem {
+            grid: self.grid,
+            gx: &self.gx,
+            gz: &self.gz,
+            fixed: &self.fixed,
+            heights: &self.heights,
+        }
+    }
+}
+
+/// `h = sin(3x + 0.4) cos(2z − 0.3) + 0.3 x² z` and its gradient.
+fn exact(x: f64, z: f64) -> (f64, f64, f64) {
+    let (a, b) = (3.0 * x + 0.4, 2.0 * z - 0.3);
+    (
+        a.sin() * b.cos() + 0.3 * x * x * z,
+        3.0 * a.cos() * b.cos() + 0.6 * x * z,
+        -2.0 * a.sin() * b.sin() + 0.3 * x * x,
+    )
+}
+
+/// The manufactured problem on `[0, 2] × [0, 1]` with `nz` rows: analytic slopes at the edge
+/// midpoints, analytic heights on the border.
+fn manufactured(nz: usize) -> Owned {
+    let nx = 2 * (nz - 1) + 1;
+    let d = 1.0 / (nz - 1) as f64;
+    let grid = GridSpec::new(nx, nz, d).expect("grid");
+    let mut gx = vec![0.0; grid.x_edges()];
+    let mut gz = vec![0.0; grid.z_edges()];
+    for j in 0..nz {
+        for i in 0..nx - 1 {
+            gx[j * (nx - 1) + i] = exact((i as f64 + 0.5) * d, j as f64 * d).1 as f32;
+        }
+    }
+    for j in 0..nz - 1 {
+        for i in 0..nx {
+            gz[j * nx + i] = exact(i as f64 * d, (j as f64 + 0.5) * d).2 as f32;
+        }
+    }
+    let heights = (0..nx * nz)
+        .map(|n| exact((n % nx) as f64 * d, (n / nx) as f64 * d).0 as f32)
+        .collect();
+    Owned {
+        grid,
+        gx,
+        gz,
+        fixed: vec![false; nx * nz],
+        heights,
+    }
+}
+
+/// A terrain-like field: a few hundred metres of relief from a sum of waves, 2 m spacing.
+fn terrain(n: usize) -> Owned {
+    let grid = GridSpec::new(n, n, 2.0).expect("grid");
+    let h: Vec<f32> = (0..n * n)
+        .map(|k| {
+            let (x, z) = ((k % n) as f64 * 2.0, (k / n) as f64 * 2.0);
+            (400.0
+                + 120.0 * (x / 310.0).sin() * (z / 270.0 + 0.3).cos()
+                + 35.0 * (x / 61.0 + z / 83.0).sin()
+                + 6.0 * (x / 9.7).cos() * (z / 13.1).sin()
+                + 0.002 * x * z) as f32
+        })
+        .collect();
+    let mut gx = vec![0.0; grid.x_edges()];
+    let mut gz = vec![0.0; grid.z_edges()];
+    extract_edges(grid, &h, &mut gx, &mut gz);
+    Owned {
+        grid,
+        gx,
+        gz,
+        fixed: vec![false; n * n],
+        heights: h,
+    }
+}
+
+/// Fixes a point, a diagonal curve and a disc at heights that conflict with the gradients.
+fn add_constraints(p: &mut Owned) {
+    let n = p.grid.nx;
+    let mut fix = |i: usize, j: usize, v: f32| {
+        p.fixed[j * n + i] = true;
+        p.heights[j * n + i] = v;
+    };
+    fix(n / 3, n / 5, 250.0);
+    for t in 0..n / 2 {
+        fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
+    }
+    let (ci, cj, r) = (3 * n / 4, 3 * n / 4, n / 16);
+    for j in cj - r..=cj + r {
+        for i in ci - r..=ci + r {
+            if (i.abs_diff(ci).pow(2) + j.abs_diff(cj).pow(2)) <= r * r {
+                fix(i, j, 555.5);
+            }
+        }
+    }
+}
+
+fn tight(tolerance: f64) -> SolveOptions {
+    SolveOptions {
+        tolerance,
+        ..SolveOptions::default()
+    }
+}
+
+#[test]
+fn manufactured_solution_converges_at_second_order() {
+    let mut errors = Vec::new();
+    for nz in [33, 65, 129, 257] {
+        let p = manufactured(nz);
+        let mut solver = Solver::new(p.grid, tight(1e-11)).expect("solver");
+        let report = solver.solve(&p.problem(), Start::Cold).expect("solve");
+        assert!(report.converged, "{nz}: {report:?}");
+        let mut h = vec![0.0f64; p.grid.len()];
+        solver.heights_f64_into(&mut h).expect("heights");
+        let d = p.grid.spacing_m;
+        let err = h
+            .iter()
+            .enumerate()
+            .map(|(k, v)| {
+                (v - exact((k % p.grid.nx) as f64 * d, (k / p.grid.nx) as f64 * d).0).abs()
+            })
+            .fold(0.0f64, f64::max);
+        println!(
+            "{}×{nz}: max error {err:.3e}, {} cycles, factors {:?}",
+            p.grid.nx,
+            report.cycles,
+            report.factors()
+        );
+        errors.push(err);
+    }
+    let orders: Vec<f64> = errors.windows(2).map(|w| (w[0] / w[1]).log2()).collect();
+    println!("observed orders {orders:?}");
+    for (k, o) in orders.iter().enumerate() {
+        assert!(
+            *o >= 1.8,
+            "order {o:.3} between levels {k} and {} (errors {errors:?})",
+            k + 1
+        );
+    }
+}
+
+#[test]
+fn each_cycle_reduces_the_residual_by_a_steady_factor() {
+    for (label, n, constrained, cycle) in [
+        ("513² terrain, border only, V", 513, false, Cycle::V),
+        ("513² terrain, point + curve + disc, V", 513, true, Cycle::V),
+        ("257² terrain, point + curve + disc, W", 257, true, Cycle::W),
+    ] {
+        let mut p = terrain(n);
+        if constrained {
+            add_constraints(&mut p);
+        }
+        let opts = SolveOptions {
+            tolerance: 1e-11,
+            cycle,
+            ..SolveOptions::default()
+        };
+        let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
+        let f = report.factors();
+        println!(
+            "{label}: {} cycles, residuals {:?}, factors {:?}",
+            report.cycles,
+            report
+                .relative_residuals
+                .iter()
+                .map(|r| format!("{r:.2e}"))
+                .collect::<Vec<_>>(),
+            f.iter().map(|r| format!("{r:.3}")).collect::<Vec<_>>()
+        );
+        assert!(report.converged, "{label}: {report:?}");
+        assert!(f.len() >= 3, "{label}: too few cycles to judge: {f:?}");
+        for (k, x) in f.iter().enumerate() {
+            assert!(
+                *x < 0.2,
+                "{label}: cycle {} reduced the residual by only {x:.3}",
+                k + 1
+            );
+        }
+    }
+}
+
+#[test]
+fn dirichlet_samples_hold_bit_for_bit() {
+    let mut p = terrain(257);
+    add_constraints(&mut p);
+    let (h, report) = reconstruct(&p.problem(), SolveOptions::default()).expect("solve");
+    assert!(report.converged, "{report:?}");
+    let n = p.grid.nx;
+    let mut count = 0;
+    for k in 0..h.len() {
+        if p.fixed[k] || p.grid.is_border(k % n, k / n) {
+            assert_eq!(h[k].to_bits(), p.heights[k].to_bits(), "sample {k}");
+            count += 1;
+        }
+    }
+    assert!(count > 4 * 256 + 100, "{count} fixed samples checked");
+}
+
+#[test]
+fn a_hard_constraint_beats_a_conflicting_gradient() {
+    // A uniform 0.5 slope along x (the soft target) and a disc fixed 60 m below the ramp: the
+    // disc holds exactly, so the target slope cannot be met inside it, and the surface bends to
+    // meet it around it (Fig. 16: "hard ones always prevail").
+    let n = 129;
+    let grid = GridSpec::new(n, n, 1.0).expect("grid");
+    let ramp = |i: usize| 0.5 * i as f32;
+    let mut fixed = vec![false; n * n];
+    let mut heights: Vec<f32> = (0..n * n).map(|k| ramp(k % n)).collect();
+    let (c, r) = (64usize, 8usize);
+    for j in c - r..=c + r {
+        for i in c - r..=c + r {
+            if i.abs_diff(c).pow(2) + j.abs_diff(c).pow(2) <= r * r {
+                fixed[j * n + i] = true;
+                heights[j * n + i] = ramp(c) - 60.0;
+            }
+        }
+    }
+    let gx = vec![0.5f32; grid.x_edges()];
+    let gz = vec![0.0f32; grid.z_edges()];
+    let p = Problem {
+        grid,
+        gx: &gx,
+        gz: &gz,
+        fixed: &fixed,
+        heights: &heights,
+    };
+    let (h, report) = reconstruct(&p, SolveOptions::default()).expect("solve");
+    assert!(report.converged);
+    let at = |i: usize, j: usize| h[j * n + i];
+    // The constraint holds exactly; the slope across the disc is zero, not the 0.5 target.
+    for i in c - 5..=c + 5 {
+        assert_eq!(at(i, c), ramp(c) - 60.0);
+    }
+    assert_eq!(at(c + 1, c) - at(c, c), 0.0);
+    // Around the disc the surface is pulled down towards it.
+    assert!(
+        at(c + r + 2, c) < ramp(c + r + 2) - 20.0,
+        "{}",
+        at(c + r + 2, c)
+    );
+    // Far from it the ramp is nearly met.
+    assert!((at(10, 10) - ramp(10)).abs() < 2.0, "{}", at(10, 10));
+    // The gradient target is not met next to the disc: the residual of the slope there is large.
+    let slope = at(c + r + 1, c) - at(c + r, c);
+    assert!(
+        slope > 2.0,
+        "slope just outside the disc {slope} (target 0.5)"
+    );
+}
+
+#[test]
+fn reconstruction_of_extracted_gradients_returns_the_heights() {
+    let p = terrain(129);
+    let (h, report) = reconstruct(&p.problem(), tight(1e-10)).expect("solve");
+    assert!(report.converged);
+    let worst = h
+        .iter()
+        .zip(&p.heights)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0f32, f32::max);
+    // The gradients are f32 (≈ 3e-8 relative error each); the heights are ~500 m.
+    assert!(worst < 2e-3, "worst difference {worst} m");
+}
+
+/// A small brush edit: a Gaussian bump of slopes over a 32-sample disc.
+fn brush(p: &mut Owned, ci: usize, cj: usize) {
+    let n = p.grid.nx;
+    for j in cj - 16..cj + 16 {
+        for i in ci - 16..ci + 16 {
+            let d2 = (i as f64 - ci as f64).powi(2) + (j as f64 - cj as f64).powi(2);
+            if d2 <= 256.0 {
+                let w = (-d2 / 60.0).exp() as f32;
+                p.gx[j * (n - 1) + i] += 0.4 * w;
+                p.gz[j * n + i] -= 0.25 * w;
+            }
+        }
+    }
+}
+
+#[test]
+fn a_warm_start_after_a_brush_edit_needs_fewer_cycles_than_a_cold_solve() {
+    let mut p = terrain(513);
+    add_constraints(&mut p);
+    let mut solver = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    solver
+        .solve(&p.problem(), Start::Cold)
+        .expect("first solve");
+    brush(&mut p, 200, 180);
+    let warm = solver.solve(&p.problem(), Start::Warm).expect("warm");
+    let mut hw = vec![0.0f32; p.grid.len()];
+    solver.heights_into(&mut hw).expect("heights");
+    let mut fresh = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    let cold = fresh.solve(&p.problem(), Start::Cold).expect("cold");
+    let mut hc = vec![0.0f32; p.grid.len()];
+    fresh.heights_into(&mut hc).expect("heights");
+    println!(
+        "warm: {} cycles {:?} ({:.1} ms); cold: {} cycles {:?} ({:.1} ms)",
+        warm.cycles,
+        warm.relative_residuals,
+        warm.seconds * 1e3,
+        cold.cycles,
+        cold.relative_residuals,
+        cold.seconds * 1e3
+    );
+    assert!(warm.converged && cold.converged);
+    assert!(
+        warm.cycles < cold.cycles,
+        "warm {} vs cold {}",
+        warm.cycles,
+        cold.cycles
+    );
+    let worst = hw
+        .iter()
+        .zip(&hc)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0f32, f32::max);
+    assert!(worst < 0.05, "warm and cold solutions differ by {worst} m");
+}
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let mut p = terrain(513);
+    add_constraints(&mut p);
+    let mut reference: Option<(Vec<u64>, Vec<f64>)> = None;
+    for threads in [1, 2, 3] {
+        let opts = SolveOptions {
+            threads: Some(threads),
+            ..SolveOptions::default()
+        };
+        let mut solver = Solver::new(p.grid, opts).expect("solver");
+        let report = solver.solve(&p.problem(), Start::Cold).expect("solve");
+        let mut h = vec![0.0f64; p.grid.len()];
+        solver.heights_f64_into(&mut h).expect("heights");
+        let bits: Vec<u64> = h.iter().map(|v| v.to_bits()).collect();
+        match &reference {
+            None => reference = Some((bits, report.relative_residuals)),
+            Some((b, r)) => {
+                assert!(bits == *b, "{threads} threads changed the solution");
+                assert_eq!(
+                    &report.relative_residuals, r,
+                    "{threads} threads changed the residuals"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_input_names_the_field() {
+    let p = terrain(33);
+    let field = |e: PoissonError| match e {
+        PoissonError::Field { field, .. } => field,
+    };
+    let mut solver = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    let short = &p.gx[1..];
+    let bad = Problem {
+        gx: short,
+        ..p.problem()
+    };
+    assert_eq!(
+        field(solver.solve(&bad, Start::Cold).expect_err("short gx")),
+        "gx"
+    );
+    let mut nan = p.heights.clone();
+    nan[0] = f32::NAN;
+    let bad = Problem {
+        heights: &nan,
+        ..p.problem()
+    };
+    assert_eq!(
+        field(solver.solve(&bad, Start::Cold).expect_err("NaN border")),
+        "heights"
+    );
+    let other = terrain(65);
+    assert_eq!(
+        field(
+            solver
+                .solve(&other.problem(), Start::Cold)
+                .expect_err("grid")
+        ),
+        "grid"
+    );
+    assert_eq!(
+        field(Solver::new(p.grid, tight(0.0)).expect_err("tolerance")),
+        "tolerance"
+    );
+    let start = vec![0.0f32; 3];
+    assert_eq!(
+        field(
+            solver
+                .solve(&p.problem(), Start::From(&start))
+                .expect_err("start")
+        ),
+        "start"
+    );
+    // A NaN at a free sample's height is ignored (heights are read only where fixed).
+    let mut free_nan = p.heights.clone();
+    free_nan[40] = f32::NAN;
+    let ok = Problem {
+        heights: &free_nan,
+        ..p.problem()
+    };
+    assert!(solver.solve(&ok, Start::Cold).expect("solve").converged);
+}
