@@ -789,3 +789,82 @@ fn bricked_sweeps_and_propagation_equal_the_single_grid() {
     assert!(bl == layer, "the same layers");
     assert!(bs == s, "bricked propagation equals the single grid");
 }
+
+/// `S` with one layer of air (`+spacing`) added on every side, so the mesh of the solid closes.
+fn padded(f: &strata::volume::pipeline::RegionFields) -> ([usize; 3], Vec<f32>) {
+    let [nx, ny, nz] = f.grid.dims;
+    let d = [nx + 2, ny + 2, nz + 2];
+    let mut out = vec![f.grid.spacing; d[0] * d[1] * d[2]];
+    for z in 0..nz {
+        for y in 0..ny {
+            for x in 0..nx {
+                out[(x + 1) + d[0] * ((y + 1) + d[1] * (z + 1))] = f.surface[f.grid.index(x, y, z)];
+            }
+        }
+    }
+    (d, out)
+}
+
+/// Vertices, undirected edges, quads and connected components of a quad mesh.
+fn mesh_topology(m: &strata::volume::mesh::QuadMesh) -> (i64, i64, i64, usize) {
+    let mut edges = std::collections::BTreeSet::new();
+    for q in &m.quads {
+        for k in 0..4 {
+            let (a, b) = (q[k], q[(k + 1) % 4]);
+            edges.insert((a.min(b), a.max(b)));
+        }
+    }
+    let mut parent: Vec<usize> = (0..m.vertex_count()).collect();
+    fn find(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            p[i] = p[p[i]];
+            i = p[i];
+        }
+        i
+    }
+    for q in &m.quads {
+        for k in 1..4 {
+            let (a, b) = (
+                find(&mut parent, q[0] as usize),
+                find(&mut parent, q[k] as usize),
+            );
+            parent[a] = b;
+        }
+    }
+    let roots: std::collections::BTreeSet<usize> = (0..m.vertex_count())
+        .map(|i| find(&mut parent, i))
+        .collect();
+    (
+        m.vertex_count() as i64,
+        edges.len() as i64,
+        m.quad_count() as i64,
+        roots.len(),
+    )
+}
+
+#[test]
+fn arch_mesh_has_genus_one() {
+    use strata::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
+    let (grid, scene, params) = scenes::arch([64, 32, 48]);
+    let f = generate(&grid, &scene, &params).expect("arch");
+    let (dims, sdf) = padded(&f);
+    let mut m = QuadMesh::default();
+    surface_nets(
+        &sdf,
+        SampleAttributes::default(),
+        &MeshOptions::new(dims, grid.spacing),
+        &mut m,
+    )
+    .expect("mesh");
+    let (v, e, q, comps) = mesh_topology(&m);
+    eprintln!(
+        "arch mesh: V={v} E={e} F={q}, {comps} component(s), χ = {}",
+        v - e + q
+    );
+    assert_eq!(comps, 1, "one closed surface");
+    assert_eq!(
+        v - e + q,
+        0,
+        "χ = 2 − 2g = 0: genus 1, the arch's through-hole"
+    );
+}
