@@ -3,6 +3,8 @@
 //! a software adapter (lavapipe). These tests REQUIRE an adapter: without one they fail with
 //! instructions, they never skip. Grids are small because lavapipe is slow.
 
+#![allow(clippy::needless_range_loop)]
+
 use std::mem::{offset_of, size_of};
 use strata::cli::BackendChoice;
 use strata::gpu::request_device;

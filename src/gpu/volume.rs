@@ -258,7 +258,7 @@ fn read_back(
 
 fn check_grid(device: &wgpu::Device, dims: [usize; 3], chans: &[Vec<f32>]) -> anyhow::Result<u32> {
     let n = dims.iter().product::<usize>();
-    let limit = u64::from(device.limits().max_storage_buffer_binding_size);
+    let limit = device.limits().max_storage_buffer_binding_size;
     if (n as u64) * 16 > limit || n >= u32::MAX as usize {
         bail!(
             "grid {dims:?} needs a {}-byte buffer; the device allows {limit}",
@@ -372,10 +372,14 @@ pub fn diffuse_on_device(
             timestamp_writes: None,
         });
         pass.set_pipeline(&pipe);
-        pass.set_bind_group(0, if s % 2 == 0 { &ab } else { &ba }, &[]);
+        pass.set_bind_group(0, if s.is_multiple_of(2) { &ab } else { &ba }, &[]);
         pass.dispatch_workgroups(gx, gy, 1);
     }
-    let result = if input.sweeps % 2 == 0 { &a } else { &b };
+    let result = if input.sweeps.is_multiple_of(2) {
+        &a
+    } else {
+        &b
+    };
     let bytes = read_back(device, queue, encoder, result, u64::from(n) * 16);
     scopes
         .pop()

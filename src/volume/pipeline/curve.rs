@@ -51,6 +51,7 @@ impl ConstraintPoint {
     /// A constraint point at `t` of `curve` whose ribbons both face `normal` (tilted away from it
     /// by `droop` radians: 0 is a flat ribbon pair, positive values make a ridge), each `width`
     /// metres wide.
+    #[allow(clippy::too_many_arguments)]
     pub fn facing(
         curve: &FeatureCurve,
         t: f32,

@@ -22,7 +22,7 @@
 //! **O(n) instead of thousands of Jacobi sweeps (§8).** The harmonic fill is a cascadic
 //! multigrid (Bornemann & Deuflhard 1996): the constraints are restricted to a pyramid of grids
 //! of half resolution (a coarse sample is constrained if any of its eight children is; its value
-//! is their mean), the coarsest grid (≤ 4096 samples) is solved with plain Jacobi sweeps, and each
+//! is their mean), the coarsest grid (≤ [`COARSEST`] samples) is solved with plain Jacobi sweeps, and each
 //! finer level starts from the trilinear interpolation of the coarser solution and runs
 //! `fine_sweeps·2^level` sweeps. Total work is a small constant times n. A warm start (a previous
 //! solution as the initial guess, [`super::region::regenerate`]) skips the pyramid.
@@ -35,6 +35,9 @@
 //! [`sweep`].
 
 use super::grid::par_slabs_multi;
+
+/// Most samples of the coarsest level of the cascade and the V-cycles.
+pub const COARSEST: usize = 512;
 
 /// The paper's Perona–Malik parameter `k`.
 pub const K_PERONA_MALIK: f32 = 0.01;
@@ -51,8 +54,11 @@ pub fn g(x: f32, k: f32) -> f32 {
 pub struct DiffuseParams {
     /// Jacobi sweeps on the finest level of the cascade (doubling per coarser level).
     pub fine_sweeps: u32,
-    /// Jacobi sweeps on the coarsest level (at most 4096 samples).
+    /// Jacobi sweeps on the coarsest level (at most [`COARSEST`] samples).
     pub coarsest_sweeps: u32,
+    /// Multigrid V-cycles after the cascade (each: two sweeps before and after the coarse
+    /// correction on every level).
+    pub vcycles: u32,
     /// Anisotropic (Perona–Malik) sweeps after the harmonic fill of `N`.
     pub pm_sweeps: u32,
     /// Perona–Malik `k`.
@@ -63,7 +69,8 @@ impl Default for DiffuseParams {
     fn default() -> Self {
         Self {
             fine_sweeps: 4,
-            coarsest_sweeps: 400,
+            coarsest_sweeps: 200,
+            vcycles: 2,
             pm_sweeps: 6,
             k: K_PERONA_MALIK,
         }
@@ -131,18 +138,16 @@ pub fn sweep(
                     let c0 = &src[0][r.o..r.o + nx];
                     let c1 = &src[1][r.o..r.o + nx];
                     let c2 = &src[2][r.o..r.o + nx];
-                    for (d, cf) in coef.iter_mut().enumerate() {
-                        let nb = |ch: usize| -> &[f32] {
-                            match d {
-                                0 => &east[ch],
-                                1 => &west[ch],
-                                2 => &src[ch][r.u..r.u + nx],
-                                3 => &src[ch][r.d..r.d + nx],
-                                4 => &src[ch][r.n..r.n + nx],
-                                _ => &src[ch][r.s..r.s + nx],
-                            }
-                        };
-                        let (b0, b1, b2) = (nb(0), nb(1), nb(2));
+                    let row = |ch: usize, o: usize| &src[ch][o..o + nx];
+                    let nbs: [[&[f32]; 3]; 6] = [
+                        [&east[0][..nx], &east[1][..nx], &east[2][..nx]],
+                        [&west[0][..nx], &west[1][..nx], &west[2][..nx]],
+                        [row(0, r.u), row(1, r.u), row(2, r.u)],
+                        [row(0, r.d), row(1, r.d), row(2, r.d)],
+                        [row(0, r.n), row(1, r.n), row(2, r.n)],
+                        [row(0, r.s), row(1, r.s), row(2, r.s)],
+                    ];
+                    for (cf, [b0, b1, b2]) in coef.iter_mut().zip(nbs) {
                         let cf = &mut cf[..nx];
                         for x in 0..nx {
                             let d0 = b0[x] - c0[x];
@@ -199,7 +204,7 @@ pub fn sweep(
 
 /// `sweeps` Jacobi sweeps (see [`sweep`]) in place, ping-ponging through a scratch copy.
 pub fn sweeps(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], pm: Option<f32>, n: u32) {
-    let mut other: Vec<Vec<f32>> = chans.iter().map(|c| c.clone()).collect();
+    let mut other: Vec<Vec<f32>> = chans.to_vec();
     for _ in 0..n {
         {
             let src: Vec<&[f32]> = chans.iter().map(|c| c.as_slice()).collect();
@@ -262,12 +267,18 @@ fn edge_sum(dims: [usize; 3], chans: &[Vec<f32>], f: impl Fn(f64) -> f64) -> f64
 /// become 0.
 pub fn harmonic_fill(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffuseParams) {
     cascade(dims, chans, fixed, p, 0);
+    let zero = vec![0.0f32; fixed.len()];
+    for c in chans.iter_mut() {
+        for _ in 0..p.vcycles {
+            vcycle(dims, c, &zero, fixed, p.coarsest_sweeps);
+        }
+    }
 }
 
 fn cascade(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffuseParams, level: u32) {
     let n = dims.iter().product::<usize>();
     let coarse = dims.map(|d| d.div_ceil(2));
-    if n <= 4096 || coarse.iter().any(|&d| d < 2) {
+    if n <= COARSEST || coarse.iter().any(|&d| d < 2) {
         // Coarsest level: start from the mean of the constraints.
         for c in chans.iter_mut() {
             let (mut s, mut k) = (0.0f64, 0usize);
@@ -318,37 +329,11 @@ fn cascade(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffusePa
     }
     cascade(coarse, &mut cchans, &cfixed, p, level + 1);
     // Trilinear prolongation into the free fine samples.
-    let axis = |nf: usize, nc: usize| -> Vec<(usize, usize, f32)> {
-        (0..nf)
-            .map(|i| {
-                let f = (i as f32 * 0.5 - 0.25).clamp(0.0, (nc - 1) as f32);
-                let i0 = (f.floor() as usize).min(nc - 1);
-                let i1 = (i0 + 1).min(nc - 1);
-                (i0, i1, f - i0 as f32)
-            })
-            .collect()
-    };
-    let (ax, ay, az) = (axis(nx, cx), axis(ny, cy), axis(nz, cz));
     for (c, cc) in chans.iter_mut().zip(&cchans) {
-        for z in 0..nz {
-            let (z0, z1, wz) = az[z];
-            for y in 0..ny {
-                let (y0, y1, wy) = ay[y];
-                let r00 = cx * (y0 + cy * z0);
-                let r10 = cx * (y1 + cy * z0);
-                let r01 = cx * (y0 + cy * z1);
-                let r11 = cx * (y1 + cy * z1);
-                let o = nx * (y + ny * z);
-                for x in 0..nx {
-                    if fixed[o + x] != 0 {
-                        continue;
-                    }
-                    let (x0, x1, wx) = ax[x];
-                    let lerp = |r: usize| cc[r + x0] + wx * (cc[r + x1] - cc[r + x0]);
-                    let a = lerp(r00) + wy * (lerp(r10) - lerp(r00));
-                    let b = lerp(r01) + wy * (lerp(r11) - lerp(r01));
-                    c[o + x] = a + wz * (b - a);
-                }
+        let fine = prolong(dims, coarse, cc);
+        for ((v, f), fx) in c.iter_mut().zip(fine).zip(fixed) {
+            if *fx == 0 {
+                *v = f;
             }
         }
     }
@@ -392,4 +377,158 @@ pub fn diffuse_normals(
     normalize_field(n, fixed);
     sweeps(dims, n, fixed, Some(p.k), p.pm_sweeps);
     normalize_field(n, fixed);
+}
+
+/// `out = u + ⅙ (Σ_nb (u_nb − u) + b)` at free samples, `u` at fixed ones (one damped Jacobi
+/// sweep for `Σ_nb (u − u_nb) = b`, Neumann borders). With `b = 0` it is [`sweep`] (Laplace).
+fn smooth_rhs(dims: [usize; 3], u: &[f32], b: &[f32], fixed: &[u8], out: &mut [f32]) {
+    let [nx, ny, _] = dims;
+    super::grid::par_slabs(out, nx * ny, |z0, out| {
+        let (mut east, mut west) = (vec![0.0f32; nx], vec![0.0f32; nx]);
+        for zl in 0..out.len() / (nx * ny) {
+            let z = z0 + zl;
+            for y in 0..ny {
+                let r = rows(dims, y, z);
+                let c = &u[r.o..r.o + nx];
+                east[..nx - 1].copy_from_slice(&c[1..]);
+                east[nx - 1] = c[nx - 1];
+                west[1..].copy_from_slice(&c[..nx - 1]);
+                west[0] = c[0];
+                let (e, w) = (&east[..nx], &west[..nx]);
+                let (up, dn) = (&u[r.u..r.u + nx], &u[r.d..r.d + nx]);
+                let (no, so) = (&u[r.n..r.n + nx], &u[r.s..r.s + nx]);
+                let (bb, fx) = (&b[r.o..r.o + nx], &fixed[r.o..r.o + nx]);
+                let dst = &mut out[zl * nx * ny + y * nx..zl * nx * ny + y * nx + nx];
+                for x in 0..nx {
+                    let v = c[x];
+                    let acc = (e[x] - v)
+                        + (w[x] - v)
+                        + (up[x] - v)
+                        + (dn[x] - v)
+                        + (no[x] - v)
+                        + (so[x] - v);
+                    let nv = v + (acc + bb[x]) * (1.0 / 6.0);
+                    dst[x] = if fx[x] != 0 { v } else { nv };
+                }
+            }
+        }
+    });
+}
+
+/// Residual `b − Σ_nb (u − u_nb)` at free samples, 0 at fixed ones.
+fn residual(dims: [usize; 3], u: &[f32], b: &[f32], fixed: &[u8]) -> Vec<f32> {
+    let [nx, ny, nz] = dims;
+    let mut r = vec![0.0f32; u.len()];
+    for z in 0..nz {
+        for y in 0..ny {
+            let rw = rows(dims, y, z);
+            for x in 0..nx {
+                let i = rw.o + x;
+                if fixed[i] != 0 {
+                    continue;
+                }
+                let v = u[i];
+                let e = if x + 1 < nx { u[i + 1] } else { v };
+                let w = if x > 0 { u[i - 1] } else { v };
+                let lap = (e - v)
+                    + (w - v)
+                    + (u[rw.u + x] - v)
+                    + (u[rw.d + x] - v)
+                    + (u[rw.n + x] - v)
+                    + (u[rw.s + x] - v);
+                r[i] = b[i] + lap;
+            }
+        }
+    }
+    r
+}
+
+/// One multigrid V-cycle for `Σ_nb (u − u_nb) = b` at the free samples (cell-centred: mean
+/// restriction of the residual, the operator rediscretised on the coarse grid — hence the
+/// factor 4 — trilinear prolongation of the correction, two damped Jacobi sweeps before and
+/// after). A coarse sample is fixed (zero correction) when any of its children is.
+fn vcycle(dims: [usize; 3], u: &mut Vec<f32>, b: &[f32], fixed: &[u8], coarsest_sweeps: u32) {
+    let n = u.len();
+    let coarse = dims.map(|d| d.div_ceil(2));
+    let mut tmp = vec![0.0f32; n];
+    let mut smooth = |u: &mut Vec<f32>, k: u32| {
+        for _ in 0..k {
+            smooth_rhs(dims, u, b, fixed, &mut tmp);
+            std::mem::swap(u, &mut tmp);
+        }
+    };
+    if n <= COARSEST || coarse.iter().any(|&d| d < 2) {
+        smooth(u, coarsest_sweeps);
+        return;
+    }
+    smooth(u, 2);
+    let r = residual(dims, u, b, fixed);
+    let [nx, ny, nz] = dims;
+    let [cx, cy, cz] = coarse;
+    let cn = cx * cy * cz;
+    let mut rc = vec![0.0f32; cn];
+    let mut cnt = vec![0u8; cn];
+    let mut cfixed = vec![0u8; cn];
+    for z in 0..nz {
+        for y in 0..ny {
+            for x in 0..nx {
+                let i = x + nx * (y + ny * z);
+                let ci = x / 2 + cx * (y / 2 + cy * (z / 2));
+                rc[ci] += r[i];
+                cnt[ci] += 1;
+                cfixed[ci] |= fixed[i];
+            }
+        }
+    }
+    for (v, c) in rc.iter_mut().zip(&cnt) {
+        *v = 4.0 * *v / f32::from(*c);
+    }
+    let mut ec = vec![0.0f32; cn];
+    vcycle(coarse, &mut ec, &rc, &cfixed, coarsest_sweeps);
+    let corr = prolong(dims, coarse, &ec);
+    for i in 0..n {
+        if fixed[i] == 0 {
+            u[i] += corr[i];
+        }
+    }
+    smooth(u, 2);
+}
+
+/// Trilinear interpolation of a coarse grid (sample `X` at fine position `2X + ½`) onto `dims`.
+fn prolong(dims: [usize; 3], coarse: [usize; 3], cc: &[f32]) -> Vec<f32> {
+    let [nx, ny, nz] = dims;
+    let [cx, cy, cz] = coarse;
+    let axis = |nf: usize, nc: usize| -> Vec<(usize, usize, f32)> {
+        (0..nf)
+            .map(|i| {
+                let f = (i as f32 * 0.5 - 0.25).clamp(0.0, (nc - 1) as f32);
+                let i0 = (f.floor() as usize).min(nc - 1);
+                let i1 = (i0 + 1).min(nc - 1);
+                (i0, i1, f - i0 as f32)
+            })
+            .collect()
+    };
+    let (ax, ay, az) = (axis(nx, cx), axis(ny, cy), axis(nz, cz));
+    let mut out = vec![0.0f32; nx * ny * nz];
+    super::grid::par_slabs(&mut out, nx * ny, |zs, out| {
+        for zl in 0..out.len() / (nx * ny) {
+            let (z0, z1, wz) = az[zs + zl];
+            for y in 0..ny {
+                let (y0, y1, wy) = ay[y];
+                let r00 = cx * (y0 + cy * z0);
+                let r10 = cx * (y1 + cy * z0);
+                let r01 = cx * (y0 + cy * z1);
+                let r11 = cx * (y1 + cy * z1);
+                let o = nx * (y + ny * zl);
+                for x in 0..nx {
+                    let (x0, x1, wx) = ax[x];
+                    let lerp = |r: usize| cc[r + x0] + wx * (cc[r + x1] - cc[r + x0]);
+                    let a = lerp(r00) + wy * (lerp(r10) - lerp(r00));
+                    let b = lerp(r01) + wy * (lerp(r11) - lerp(r01));
+                    out[o + x] = a + wz * (b - a);
+                }
+            }
+        }
+    });
+    out
 }

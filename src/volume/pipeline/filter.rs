@@ -12,7 +12,7 @@ pub const MAX_RADIUS: usize = 16;
 
 /// The normalised kernel for `sigma` samples (a single tap of 1 when `sigma ≤ 0`).
 pub fn kernel(sigma: f32) -> Vec<f32> {
-    if !(sigma > 0.0) {
+    if sigma.is_nan() || sigma <= 0.0 {
         return vec![1.0];
     }
     let r = ((2.0 * sigma).ceil() as usize).clamp(1, MAX_RADIUS) as i64;

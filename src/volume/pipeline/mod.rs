@@ -27,6 +27,9 @@
 //! `shaders/volume_diffuse.wgsl` and `shaders/volume_propagate.wgsl` are the GPU twins of the
 //! diffusion sweep and the surface propagation (`crate::gpu::volume`).
 
+// Grid code indexes several parallel arrays by one sample index; index loops read clearer here.
+#![allow(clippy::needless_range_loop)]
+
 pub mod brick;
 pub mod curve;
 pub mod diffuse;

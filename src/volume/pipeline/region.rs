@@ -27,6 +27,9 @@ pub const MAX_CURVES: usize = 4096;
 /// Most input meshes in one scene.
 pub const MAX_MESHES: usize = 256;
 
+/// A box of samples `[lo, hi)` per axis.
+pub type SampleBox = ([usize; 3], [usize; 3]);
+
 /// The modelling primitives of a region.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Scene {
@@ -251,7 +254,7 @@ pub fn generate(
 }
 
 /// The box `[lo, hi)` of samples whose constraints differ between `a` and `b`, or `None`.
-fn changed_box(grid: &Grid, a: &Voxelized, b: &Voxelized) -> Option<([usize; 3], [usize; 3])> {
+fn changed_box(grid: &Grid, a: &Voxelized, b: &Voxelized) -> Option<SampleBox> {
     let mut lo = grid.dims;
     let mut hi = [0usize; 3];
     for i in 0..grid.len() {
@@ -328,7 +331,7 @@ pub fn regenerate(
     prev: &RegionFields,
     scene: &Scene,
     params: &PipelineParams,
-) -> Result<(RegionFields, Option<([usize; 3], [usize; 3])>), PipelineError> {
+) -> Result<(RegionFields, Option<SampleBox>), PipelineError> {
     let grid = prev.grid;
     let mut times = StageTimes::default();
     let v = build_voxels(&grid, scene, params, &mut times)?;
