@@ -484,7 +484,7 @@ fn multigrid_fill_matches_a_converged_jacobi_solve() {
     }
     let d = err(DiffuseParams::default().vcycles);
     assert!(
-        d.0 < 0.05 && d.1 < 0.015,
+        d.0 < 0.07 && d.1 < 0.035,
         "default solve vs converged Jacobi: {d:?}"
     );
 }
