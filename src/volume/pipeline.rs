@@ -1,1 +1,0 @@
-//! The volume-region pipeline of Becher §4: voxelization, diffusions, surface propagation.

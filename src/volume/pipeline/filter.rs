@@ -1,0 +1,80 @@
+//! The Gaussian filter applied to `S` after the surface propagation (Becher §4.5: it "suppresses
+//! the noise" of the locally planar propagation).
+//!
+//! Separable: three 1-D passes (x, y, z) with the normalised kernel `exp(−d²/2σ²)`,
+//! `|d| ≤ ⌈2σ⌉`, clamped to the grid at the borders (so a constant field stays constant to the
+//! last bit of rounding). σ is in samples. Parallel over z-slabs (x and y passes) or rows (z).
+
+use super::grid::par_slabs;
+
+/// Most kernel radius in samples.
+pub const MAX_RADIUS: usize = 16;
+
+/// The normalised kernel for `sigma` samples (a single tap of 1 when `sigma ≤ 0`).
+pub fn kernel(sigma: f32) -> Vec<f32> {
+    if sigma.is_nan() || sigma <= 0.0 {
+        return vec![1.0];
+    }
+    let r = ((2.0 * sigma).ceil() as usize).clamp(1, MAX_RADIUS) as i64;
+    let w: Vec<f32> = (-r..=r)
+        .map(|d| (-(d * d) as f32 / (2.0 * sigma * sigma)).exp())
+        .collect();
+    let sum: f32 = w.iter().sum();
+    w.iter().map(|v| v / sum).collect()
+}
+
+/// Filters `field` (grid `dims`) in place with the Gaussian of `sigma` samples.
+pub fn gaussian(dims: [usize; 3], field: &mut [f32], sigma: f32) {
+    let k = kernel(sigma);
+    if k.len() == 1 {
+        return;
+    }
+    let r = (k.len() / 2) as i64;
+    let [nx, ny, _] = dims;
+    let slice = nx * ny;
+    let mut tmp = vec![0.0f32; field.len()];
+    // The pass along axis `a` reads `src` and writes `dst`.
+    for axis in 0..3 {
+        let (src, dst): (&[f32], &mut [f32]) = if axis % 2 == 0 {
+            (&*field, &mut tmp)
+        } else {
+            (&tmp, &mut *field)
+        };
+        let n_axis = dims[axis] as i64;
+        let stride = [1, nx, slice][axis];
+        par_slabs(dst, slice, |z0, out| {
+            let nzs = out.len() / slice;
+            for zl in 0..nzs {
+                let z = z0 + zl;
+                for y in 0..ny {
+                    let o = nx * (y + ny * z);
+                    let dst = &mut out[zl * slice + y * nx..zl * slice + y * nx + nx];
+                    let coord = [0, y as i64, z as i64][axis];
+                    if axis == 0 {
+                        let row = &src[o..o + nx];
+                        for (x, d) in dst.iter_mut().enumerate() {
+                            let mut acc = 0.0;
+                            for (t, w) in k.iter().enumerate() {
+                                let xx = (x as i64 + t as i64 - r).clamp(0, nx as i64 - 1);
+                                acc += w * row[xx as usize];
+                            }
+                            *d = acc;
+                        }
+                    } else {
+                        dst.fill(0.0);
+                        for (t, w) in k.iter().enumerate() {
+                            let c = (coord + t as i64 - r).clamp(0, n_axis - 1);
+                            let ro = (o as i64 + (c - coord) * stride as i64) as usize;
+                            let row = &src[ro..ro + nx];
+                            for (d, v) in dst.iter_mut().zip(row) {
+                                *d += w * v;
+                            }
+                        }
+                    }
+                }
+            }
+        });
+    }
+    // Three passes: the result is in `tmp`.
+    field.copy_from_slice(&tmp);
+}

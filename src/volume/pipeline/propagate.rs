@@ -1,0 +1,162 @@
+//! Wavefront propagations: material with confidence (Becher §4.4) and the surface field `S`
+//! (§4.5).
+//!
+//! Both grow outwards from a seed set one layer at a time: layer 0 is the seed set (`Ω_R`,
+//! `Ω_S`), layer `L + 1` the unset samples with a neighbour in layer `L` — the paper's boundary
+//! `∂Ω_S`, "set according to the following function and inserted into `Ω_S`". A sample of layer
+//! `L` is computed only from its neighbours of layers `< L` and **set once**. [`layers`] is the
+//! breadth-first search that orders the samples by layer; on the GPU
+//! (`shaders/volume_propagate.wgsl`) the same layers are produced by one dispatch per layer.
+//!
+//! **Surface propagation** (§4.5): with `NB` the six neighbours,
+//!
+//! `S_ijk = min_{x ∈ NB, layer(x) < layer(ijk)} ( S_x + ((i,j,k) − x) · (N_ijk + N_x)/2 )`
+//!
+//! positions in metres (the offset is ±`spacing` along one axis). `N` points out of the solid,
+//! so `S` grows into the air and falls into the rock: `S < 0` inside.
+//!
+//! **Material propagation** (§4.4): a sample of layer `L` sums the confidence of its neighbours of
+//! lower layers per material, takes the material with the largest sum (ties: the smaller id) and
+//! that sum divided by the total as its confidence; seeds have confidence 1. Confidence is thus
+//! in `(0, 1]`. Deviation: the paper re-averages confidences during every diffusion iteration; we
+//! assign each sample once, in wavefront order, which is the same rule evaluated on the
+//! neighbours that already hold a material, in O(n).
+
+use super::grid::Grid;
+use super::voxelize::NO_MATERIAL;
+use std::collections::VecDeque;
+
+/// Layer of a sample no seed reaches (there are no seeds).
+pub const UNREACHED: u32 = u32::MAX;
+
+/// Breadth-first layers from the seed samples (`seeds[i] != 0`): the samples in visiting order
+/// (non-decreasing layer) and each sample's layer.
+pub fn layers(dims: [usize; 3], seeds: &[u8]) -> (Vec<u32>, Vec<u32>) {
+    let [nx, ny, nz] = dims;
+    let n = nx * ny * nz;
+    let mut layer = vec![UNREACHED; n];
+    let mut order = Vec::with_capacity(n);
+    let mut queue = VecDeque::new();
+    for (i, s) in seeds.iter().enumerate() {
+        if *s != 0 {
+            layer[i] = 0;
+            queue.push_back(i as u32);
+        }
+    }
+    while let Some(i) = queue.pop_front() {
+        order.push(i);
+        let i = i as usize;
+        let l = layer[i] + 1;
+        let (x, y, z) = (i % nx, (i / nx) % ny, i / (nx * ny));
+        let mut visit = |j: usize| {
+            if layer[j] == UNREACHED {
+                layer[j] = l;
+                queue.push_back(j as u32);
+            }
+        };
+        if x + 1 < nx {
+            visit(i + 1);
+        }
+        if x > 0 {
+            visit(i - 1);
+        }
+        if y + 1 < ny {
+            visit(i + nx);
+        }
+        if y > 0 {
+            visit(i - nx);
+        }
+        if z + 1 < nz {
+            visit(i + nx * ny);
+        }
+        if z > 0 {
+            visit(i - nx * ny);
+        }
+    }
+    (order, layer)
+}
+
+/// The six neighbours of sample `i` in the order E, W, U, D, N, S, each with its axis and the
+/// sign of `(i − x)` along it; `None` outside the grid.
+#[inline]
+pub fn neighbours(dims: [usize; 3], i: usize) -> [Option<(usize, usize, f32)>; 6] {
+    let [nx, ny, nz] = dims;
+    let (x, y, z) = (i % nx, (i / nx) % ny, i / (nx * ny));
+    [
+        (x + 1 < nx).then(|| (i + 1, 0, -1.0)),
+        (x > 0).then(|| (i - 1, 0, 1.0)),
+        (y + 1 < ny).then(|| (i + nx, 1, -1.0)),
+        (y > 0).then(|| (i - nx, 1, 1.0)),
+        (z + 1 < nz).then(|| (i + nx * ny, 2, -1.0)),
+        (z > 0).then(|| (i - nx * ny, 2, 1.0)),
+    ]
+}
+
+/// Surface propagation (§4.5) in place: `s` holds the seed values in `Ω_S` (`omega_s != 0`);
+/// every other reachable sample is set once by the min rule. Returns the layers (for tests and
+/// the GPU twin). Samples no seed reaches keep their value.
+pub fn propagate_surface(
+    grid: &Grid,
+    normal: &[Vec<f32>],
+    omega_s: &[u8],
+    s: &mut [f32],
+) -> Vec<u32> {
+    let dims = grid.dims;
+    let (order, layer) = layers(dims, omega_s);
+    let h = grid.spacing;
+    for &i in &order {
+        let i = i as usize;
+        let li = layer[i];
+        if li == 0 {
+            continue;
+        }
+        let mut best = f32::INFINITY;
+        for (j, axis, sign) in neighbours(dims, i).into_iter().flatten() {
+            if layer[j] < li {
+                let v = s[j] + (sign * h) * ((normal[axis][i] + normal[axis][j]) * 0.5);
+                best = best.min(v);
+            }
+        }
+        s[i] = best;
+    }
+    layer
+}
+
+/// Material propagation with confidence (§4.4) in place: `material` holds the seeds' materials
+/// in `Ω_R` (`omega_r != 0`); returns the confidence of every sample (1 in `Ω_R`, 0 where no
+/// material arrives).
+pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]) -> Vec<f32> {
+    let (order, layer) = layers(dims, omega_r);
+    let mut conf = vec![0.0f32; material.len()];
+    let mut votes: Vec<(u16, f32)> = Vec::with_capacity(6);
+    for &i in &order {
+        let i = i as usize;
+        let li = layer[i];
+        if li == 0 {
+            conf[i] = 1.0;
+            continue;
+        }
+        votes.clear();
+        let mut total = 0.0f32;
+        for (j, _, _) in neighbours(dims, i).into_iter().flatten() {
+            if layer[j] < li && material[j] != NO_MATERIAL {
+                total += conf[j];
+                match votes.iter_mut().find(|(m, _)| *m == material[j]) {
+                    Some(v) => v.1 += conf[j],
+                    None => votes.push((material[j], conf[j])),
+                }
+            }
+        }
+        let mut best = (NO_MATERIAL, -1.0f32);
+        for &(m, w) in &votes {
+            if w > best.1 || (w == best.1 && m < best.0) {
+                best = (m, w);
+            }
+        }
+        if total > 0.0 {
+            material[i] = best.0;
+            conf[i] = (best.1 / total).clamp(0.0, 1.0);
+        }
+    }
+    conf
+}

@@ -1,0 +1,381 @@
+//! A volume region end to end: proxies → voxelization → normal diffusion → noise diffusion and
+//! material propagation → surface propagation → Gaussian filter (Becher §4.1, stages 1–4 and the
+//! filter of §4.5), with per-stage times for `strata bench volume`.
+//!
+//! **Warm start after an edit (§8).** [`regenerate`] takes the previous result: samples whose
+//! constraints did not change keep their solution as the initial guess. The region re-solved is
+//! the bounding box of the samples whose `Ω_N`/`Ω_R` membership or constraint values changed,
+//! grown by `warm_margin` samples; inside it the cascade runs on the box with the previous
+//! solution as fixed boundary values on its faces, outside it the previous `N`, `α`, `β` are
+//! kept. The surface propagation and the filter (O(n), cheap) always run on the whole grid.
+//! Deviation: outside the box the result is the previous one, not a fresh solve; the harmonic
+//! influence of a local edit decays with distance, and `warm_margin` bounds what is ignored.
+
+use super::curve::FeatureCurve;
+use super::diffuse::{diffuse_normals, harmonic_fill, DiffuseParams};
+use super::filter::gaussian;
+use super::grid::Grid;
+use super::propagate::{propagate_material, propagate_surface};
+use super::proxy::{curve_proxy, heightfield_proxy, mesh_proxy, Heightfield, InputMesh};
+use super::voxelize::{voxelize, Voxelized};
+use super::PipelineError;
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
+
+/// Most feature curves in one scene.
+pub const MAX_CURVES: usize = 4096;
+/// Most input meshes in one scene.
+pub const MAX_MESHES: usize = 256;
+
+/// A box of samples `[lo, hi)` per axis.
+pub type SampleBox = ([usize; 3], [usize; 3]);
+
+/// The modelling primitives of a region.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Scene {
+    /// Feature curves (highest priority).
+    pub curves: Vec<FeatureCurve>,
+    /// Input meshes (middle priority).
+    pub meshes: Vec<InputMesh>,
+    /// The world's heightfield around the region (lowest priority).
+    pub heightfield: Option<Heightfield>,
+}
+
+/// Parameters of the pipeline.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PipelineParams {
+    /// Dead-zone radius around higher-priority inputs, metres (§4.2).
+    pub dead_zone_m: f32,
+    /// Length of a curve proxy segment, metres (`None`: half the grid spacing).
+    pub curve_step_m: Option<f32>,
+    /// Diffusion solver settings.
+    pub diffuse: DiffuseParams,
+    /// σ of the Gaussian filter on `S`, samples (0 disables it).
+    pub gaussian_sigma: f32,
+    /// Samples added around the changed box by [`regenerate`].
+    pub warm_margin: usize,
+}
+
+impl Default for PipelineParams {
+    fn default() -> Self {
+        Self {
+            dead_zone_m: 3.0,
+            curve_step_m: None,
+            diffuse: DiffuseParams::default(),
+            gaussian_sigma: 1.0,
+            warm_margin: 12,
+        }
+    }
+}
+
+/// Wall-clock milliseconds of each stage of one run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct StageTimes {
+    /// Building proxy triangles.
+    pub proxy_ms: f64,
+    /// Voxelization (gather, dead zone, average).
+    pub voxelize_ms: f64,
+    /// Normal (guidance) field diffusion.
+    pub normal_diffusion_ms: f64,
+    /// Noise-parameter diffusion and material propagation.
+    pub noise_diffusion_ms: f64,
+    /// Surface propagation.
+    pub surface_propagation_ms: f64,
+    /// Gaussian filter.
+    pub filter_ms: f64,
+    /// All of the above.
+    pub total_ms: f64,
+}
+
+/// The fields of a region after the pipeline.
+#[derive(Clone, Debug)]
+pub struct RegionFields {
+    /// The sample grid.
+    pub grid: Grid,
+    /// Dense unit normals `N`.
+    pub normal: [Vec<f32>; 3],
+    /// Voxelized bitangents `B` (sparse: zero where no curve was gathered).
+    pub bitangent: [Vec<f32>; 3],
+    /// Final signed distance `S`, metres, negative inside the solid.
+    pub surface: Vec<f32>,
+    /// `S` before the Gaussian filter.
+    pub surface_raw: Vec<f32>,
+    /// Layer in which the surface propagation set each sample (0 = `Ω_S`).
+    pub surface_layer: Vec<u32>,
+    /// Noise amplitude `α` per sample.
+    pub alpha: Vec<f32>,
+    /// Noise roughness `β` per sample.
+    pub beta: Vec<f32>,
+    /// Material id per sample.
+    pub material: Vec<u16>,
+    /// Confidence of the material, `[0, 1]`.
+    pub confidence: Vec<f32>,
+    /// The voxelization's constraints (kept for warm starts and tests).
+    pub voxelized: Voxelized,
+    /// Stage times of the run that produced these fields.
+    pub times: StageTimes,
+}
+
+fn ms(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
+}
+
+fn build_voxels(
+    grid: &Grid,
+    scene: &Scene,
+    params: &PipelineParams,
+    times: &mut StageTimes,
+) -> Result<Voxelized, PipelineError> {
+    if scene.curves.len() > MAX_CURVES {
+        return Err(PipelineError::invalid(
+            "curves",
+            format!("at most {MAX_CURVES} curves"),
+        ));
+    }
+    if scene.meshes.len() > MAX_MESHES {
+        return Err(PipelineError::invalid(
+            "meshes",
+            format!("at most {MAX_MESHES} meshes"),
+        ));
+    }
+    if !(params.dead_zone_m.is_finite() && params.dead_zone_m >= 0.0) {
+        return Err(PipelineError::invalid(
+            "dead_zone_m",
+            "must be a non-negative number of metres",
+        ));
+    }
+    let step = params.curve_step_m.unwrap_or(0.5 * grid.spacing);
+    if !(step.is_finite() && step > 0.0) {
+        return Err(PipelineError::invalid("curve_step_m", "must be positive"));
+    }
+    let t0 = Instant::now();
+    let mut curves = Vec::new();
+    for (i, c) in scene.curves.iter().enumerate() {
+        curves.extend(curve_proxy(c, step).map_err(|e| e.within(&format!("curves[{i}]")))?);
+    }
+    let mut meshes = Vec::new();
+    for (i, m) in scene.meshes.iter().enumerate() {
+        meshes.extend(mesh_proxy(m).map_err(|e| e.within(&format!("meshes[{i}]")))?);
+    }
+    let ground = match &scene.heightfield {
+        Some(hf) => {
+            let lo = [grid.origin[0], grid.origin[2]];
+            let hi = [
+                grid.origin[0] + grid.spacing * (grid.dims[0] - 1) as f32,
+                grid.origin[2] + grid.spacing * (grid.dims[2] - 1) as f32,
+            ];
+            heightfield_proxy(hf, lo, hi).map_err(|e| e.within("heightfield"))?
+        }
+        None => Vec::new(),
+    };
+    times.proxy_ms = ms(t0);
+    let t0 = Instant::now();
+    let v = voxelize(grid, &[&curves, &meshes, &ground], params.dead_zone_m);
+    times.voxelize_ms = ms(t0);
+    if !v.omega_s.iter().any(|&s| s != 0) {
+        return Err(PipelineError::NoSurface);
+    }
+    Ok(v)
+}
+
+fn finish(
+    grid: &Grid,
+    v: Voxelized,
+    normal: [Vec<f32>; 3],
+    alpha: Vec<f32>,
+    beta: Vec<f32>,
+    params: &PipelineParams,
+    mut times: StageTimes,
+) -> RegionFields {
+    let t0 = Instant::now();
+    let mut material = v.material.clone();
+    let confidence = propagate_material(grid.dims, &v.omega_r, &mut material);
+    times.noise_diffusion_ms += ms(t0);
+
+    let t0 = Instant::now();
+    let mut s = v.surface.clone();
+    let surface_layer = propagate_surface(grid, &normal, &v.omega_s, &mut s);
+    times.surface_propagation_ms = ms(t0);
+
+    let t0 = Instant::now();
+    let mut surface = s.clone();
+    gaussian(grid.dims, &mut surface, params.gaussian_sigma);
+    times.filter_ms = ms(t0);
+    times.total_ms = times.proxy_ms
+        + times.voxelize_ms
+        + times.normal_diffusion_ms
+        + times.noise_diffusion_ms
+        + times.surface_propagation_ms
+        + times.filter_ms;
+    RegionFields {
+        grid: *grid,
+        normal,
+        bitangent: v.bitangent.clone(),
+        surface,
+        surface_raw: s,
+        surface_layer,
+        alpha,
+        beta,
+        material,
+        confidence,
+        voxelized: v,
+        times,
+    }
+}
+
+/// Runs the whole pipeline on `grid` for `scene`.
+///
+/// # Errors
+/// [`PipelineError::Invalid`] naming the offending input field; [`PipelineError::NoSurface`]
+/// when no seed primitive touches the region.
+pub fn generate(
+    grid: &Grid,
+    scene: &Scene,
+    params: &PipelineParams,
+) -> Result<RegionFields, PipelineError> {
+    let grid = Grid::new(grid.dims, grid.origin, grid.spacing)?;
+    let mut times = StageTimes::default();
+    let v = build_voxels(&grid, scene, params, &mut times)?;
+
+    let t0 = Instant::now();
+    let mut n: Vec<Vec<f32>> = v.normal.to_vec();
+    diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
+    times.normal_diffusion_ms = ms(t0);
+
+    let t0 = Instant::now();
+    let mut r = vec![v.alpha.clone(), v.beta.clone()];
+    harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
+    times.noise_diffusion_ms = ms(t0);
+
+    let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+    let beta = r.pop().expect("beta");
+    let alpha = r.pop().expect("alpha");
+    Ok(finish(&grid, v, [n0, n1, n2], alpha, beta, params, times))
+}
+
+/// The box `[lo, hi)` of samples whose constraints differ between `a` and `b`, or `None`.
+fn changed_box(grid: &Grid, a: &Voxelized, b: &Voxelized) -> Option<SampleBox> {
+    let mut lo = grid.dims;
+    let mut hi = [0usize; 3];
+    for i in 0..grid.len() {
+        let differs = a.omega_n[i] != b.omega_n[i]
+            || a.omega_r[i] != b.omega_r[i]
+            || (0..3).any(|k| a.normal[k][i] != b.normal[k][i])
+            || a.alpha[i] != b.alpha[i]
+            || a.beta[i] != b.beta[i];
+        if differs {
+            let c = grid.coords(i);
+            for k in 0..3 {
+                lo[k] = lo[k].min(c[k]);
+                hi[k] = hi[k].max(c[k] + 1);
+            }
+        }
+    }
+    (hi[0] > 0).then_some((lo, hi))
+}
+
+/// Re-solves `diffuse` for the channels inside the box, with the box's outermost layer (where
+/// it is not the grid's border) fixed at the values already in `chans`.
+fn solve_box(
+    grid: &Grid,
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    lo: [usize; 3],
+    hi: [usize; 3],
+    solve: impl Fn([usize; 3], &mut [Vec<f32>], &[u8]),
+) {
+    let dims = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
+    let n = dims[0] * dims[1] * dims[2];
+    let mut sub: Vec<Vec<f32>> = chans.iter().map(|_| vec![0.0; n]).collect();
+    let mut sfix = vec![0u8; n];
+    for z in 0..dims[2] {
+        for y in 0..dims[1] {
+            for x in 0..dims[0] {
+                let (gx, gy, gz) = (x + lo[0], y + lo[1], z + lo[2]);
+                let gi = grid.index(gx, gy, gz);
+                let si = x + dims[0] * (y + dims[1] * z);
+                let face = |c: usize, l: usize, h: usize, d: usize| {
+                    (c == l && l > 0) || (c + 1 == h && h < d)
+                };
+                let on_face = face(gx, lo[0], hi[0], grid.dims[0])
+                    || face(gy, lo[1], hi[1], grid.dims[1])
+                    || face(gz, lo[2], hi[2], grid.dims[2]);
+                sfix[si] = u8::from(fixed[gi] != 0 || on_face);
+                for (s, c) in sub.iter_mut().zip(chans.iter()) {
+                    s[si] = c[gi];
+                }
+            }
+        }
+    }
+    solve(dims, &mut sub, &sfix);
+    for z in 0..dims[2] {
+        for y in 0..dims[1] {
+            for x in 0..dims[0] {
+                let gi = grid.index(x + lo[0], y + lo[1], z + lo[2]);
+                let si = x + dims[0] * (y + dims[1] * z);
+                for (s, c) in sub.iter().zip(chans.iter_mut()) {
+                    c[gi] = s[si];
+                }
+            }
+        }
+    }
+}
+
+/// Warm start after an edit: runs the pipeline for `scene` reusing `prev` (same grid) as the
+/// module docs describe. Returns the new fields and the re-solved box (`None` if nothing
+/// changed).
+///
+/// # Errors
+/// As [`generate`].
+pub fn regenerate(
+    prev: &RegionFields,
+    scene: &Scene,
+    params: &PipelineParams,
+) -> Result<(RegionFields, Option<SampleBox>), PipelineError> {
+    let grid = prev.grid;
+    let mut times = StageTimes::default();
+    let v = build_voxels(&grid, scene, params, &mut times)?;
+    let changed = changed_box(&grid, &prev.voxelized, &v).map(|(lo, hi)| {
+        let m = params.warm_margin;
+        let lo = lo.map(|c| c.saturating_sub(m));
+        let hi = [0, 1, 2].map(|k| (hi[k] + m).min(grid.dims[k]));
+        (lo, hi)
+    });
+
+    let t0 = Instant::now();
+    let mut n: Vec<Vec<f32>> = prev.normal.to_vec();
+    // New constraints replace the previous values everywhere they apply.
+    for i in 0..grid.len() {
+        if v.omega_n[i] != 0 {
+            for k in 0..3 {
+                n[k][i] = v.normal[k][i];
+            }
+        }
+    }
+    let mut r = vec![prev.alpha.clone(), prev.beta.clone()];
+    for i in 0..grid.len() {
+        if v.omega_r[i] != 0 {
+            r[0][i] = v.alpha[i];
+            r[1][i] = v.beta[i];
+        }
+    }
+    let dp = params.diffuse;
+    if let Some((lo, hi)) = changed {
+        solve_box(&grid, &mut n, &v.omega_n, lo, hi, |d, c, f| {
+            diffuse_normals(d, c, f, &dp, false)
+        });
+        times.normal_diffusion_ms = ms(t0);
+        let t0 = Instant::now();
+        solve_box(&grid, &mut r, &v.omega_r, lo, hi, |d, c, f| {
+            harmonic_fill(d, c, f, &dp)
+        });
+        times.noise_diffusion_ms = ms(t0);
+    }
+    let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+    let beta = r.pop().expect("beta");
+    let alpha = r.pop().expect("alpha");
+    Ok((
+        finish(&grid, v, [n0, n1, n2], alpha, beta, params, times),
+        changed,
+    ))
+}
