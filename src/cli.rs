@@ -107,6 +107,7 @@ pub struct BenchArgs {
 
 /// Runs a parsed command line.
 pub fn run(cli: Cli) -> anyhow::Result<()> {
+    keep_freed_memory();
     match cli.command {
         Command::Serve(args) => {
             // Mesa's drivers complain on every adapter probe without it. Set before any thread
@@ -127,5 +128,24 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Command::Bench(args) => crate::bench::run(&args),
         Command::Export(args) => crate::export::cli::run(&args),
+    }
+}
+
+/// Heap bytes glibc may keep after frees instead of returning them to the system.
+pub const MALLOC_TRIM_THRESHOLD: i32 = 256 << 20;
+/// Allocations from this size up get their own mapping (smaller ones reuse the heap).
+pub const MALLOC_MMAP_THRESHOLD: i32 = 32 << 20;
+
+/// Tile synthesis allocates and frees a few hundred kilobytes per tile; glibc's default
+/// thresholds hand that memory back to the kernel and fault it in again for the next tile (about
+/// 3% of a tile's time in page faults, 5% in zeroing). Keeping it costs at most
+/// [`MALLOC_TRIM_THRESHOLD`] of idle heap.
+fn keep_freed_memory() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: mallopt only sets allocator parameters; it is called before any other thread
+    // exists.
+    unsafe {
+        libc::mallopt(libc::M_TRIM_THRESHOLD, MALLOC_TRIM_THRESHOLD);
+        libc::mallopt(libc::M_MMAP_THRESHOLD, MALLOC_MMAP_THRESHOLD);
     }
 }

@@ -56,11 +56,14 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
 }
 
 pub(crate) fn emit(args: &BenchArgs, value: serde_json::Value, line: String) {
-    if args.json {
-        println!("{value}");
+    use std::io::Write;
+    // A closed pipe (`| head`) ends the output, not the process with a panic.
+    let mut out = std::io::stdout().lock();
+    let _ = if args.json {
+        writeln!(out, "{value}")
     } else {
-        println!("{line}");
-    }
+        writeln!(out, "{line}")
+    };
 }
 
 /// The tiles of the benchmark: a strip of LOD-0 tiles that crosses several biome cells, so border
