@@ -131,7 +131,8 @@ mod tests {
     }
 
     fn el(id: &str, x0: f64, x1: f64, extra: i64) -> serde_json::Value {
-        json!({"id": id, "bbox": {"min": [x0, 0.0], "max": [x1, 10.0]}, "ops": [extra]})
+        json!({"id": id, "bbox": {"min": [x0, 0.0], "max": [x1, 10.0]},
+               "ops": [{"op": "freeze", "center": [x0, 5.0], "radius_m": extra}]})
     }
 
     fn r(x0: f64, x1: f64) -> Rect {

@@ -277,7 +277,8 @@ mod tests {
     }
 
     fn region(id: &str, min: [f64; 2], max: [f64; 2], h: i64) -> Value {
-        json!({"id": id, "bbox": {"min": min, "max": max}, "ops": [{"tool": "raise", "h": h}]})
+        json!({"id": id, "bbox": {"min": min, "max": max},
+               "ops": [{"op": "elevation", "shape": {"point": min}, "elevation_m": h, "radius_m": 1}]})
     }
 
     #[test]

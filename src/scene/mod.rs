@@ -307,9 +307,13 @@ mod tests {
     #[test]
     fn elements_keep_their_other_fields() {
         let v = json!({"regions": [{"id": "r1", "bbox": {"min": [0.0, 0.5], "max": [10.0, 10.0]},
-                                    "ops": [{"tool": "raise", "h": 3}]}]});
+                                    "ops": [{"op": "freeze", "center": [1, 2], "radius_m": 3}]}],
+                       "decals": [{"id": "d1", "bbox": {"min": [0.0, 0.5], "max": [10.0, 10.0]},
+                                   "anything": {"tool": "raise", "h": 3}}]});
         let s = Scene::from_value(&v).expect("valid");
-        assert_eq!(s.regions[0].rest["ops"][0]["h"], json!(3));
+        assert_eq!(s.regions[0].rest["ops"][0]["radius_m"], json!(3));
+        assert_eq!(s.decals[0].rest["anything"]["h"], json!(3));
         assert_eq!(s.to_value()["regions"], v["regions"]);
+        assert_eq!(s.to_value()["decals"], v["decals"]);
     }
 }
