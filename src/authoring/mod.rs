@@ -30,10 +30,18 @@
 //! adds to the target gradient of `d` (soft: the least-squares target) or fixes samples (hard).
 //! A hard constraint beats any conflicting soft one because fixed samples are not unknowns.
 
+pub mod erosion;
+pub mod exchange;
 pub mod grid;
+pub mod landform;
+pub mod paste;
 pub mod raster;
 pub mod region;
 pub mod spec;
+pub mod stats;
+pub mod tensor;
+#[cfg(test)]
+mod tests;
 
 pub use grid::{Procedural, RegionGrid};
 pub use region::{solve_region, Displacement, RegionError};
