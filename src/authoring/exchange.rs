@@ -73,6 +73,9 @@ pub struct Image<T> {
     pub values: T,
 }
 
+/// Per-sample gradients `(∂h/∂x, ∂h/∂z)`, row-major.
+pub type GradientPair = (Vec<f32>, Vec<f32>);
+
 /// The solved heights `h_proc + d` of a region, metres, row-major `n × n`.
 pub fn heights(r: &Displacement) -> Vec<f32> {
     r.base.iter().zip(&r.d).map(|(b, d)| b + d).collect()
@@ -223,11 +226,8 @@ pub fn export_gradient_map(r: &Displacement) -> Result<GradientPng, ExchangeErro
 /// # Errors
 /// [`ExchangeError`] if the bytes are not a 16-bit RGB PNG of at most [`MAX_IMPORT_SIDE`] a
 /// side, or `m` is not positive and finite.
-pub fn import_gradient_map(
-    bytes: &[u8],
-    m: f32,
-) -> Result<Image<(Vec<f32>, Vec<f32>)>, ExchangeError> {
-    if !(m.is_finite() && m > 0.0) {
+pub fn import_gradient_map(bytes: &[u8], m: f32) -> Result<Image<GradientPair>, ExchangeError> {
+    if !m.is_finite() || m <= 0.0 {
         return Err(invalid("m", "must be positive and finite"));
     }
     let img = read_png(bytes, png::ColorType::Rgb)?;

@@ -202,7 +202,7 @@ impl Canvas {
                     w[0][1] + u * (w[1][1] - w[0][1]),
                 ];
                 let jitter = (f64::from(unit(hash2(k as i32, 0, s))) - 0.5) * 60f64.to_radians();
-                let side = if k % 2 == 0 { 1.0 } else { -1.0 };
+                let side = if k.is_multiple_of(2) { 1.0 } else { -1.0 };
                 // The right-hand normal of the tangent, rotated by the jitter.
                 let (c, sn) = (jitter.cos(), jitter.sin());
                 let nrm = [-t[1] * side, t[0] * side];

@@ -526,7 +526,7 @@ impl RegionSpec {
                     pos(at("/target"), *target)?;
                     for k in 0..2 {
                         let extent = source_max[k] - source_min[k];
-                        if !(extent > 0.0 && extent <= MAX_PASTE_M) {
+                        if extent <= 0.0 || extent > MAX_PASTE_M {
                             return Err(err(
                                 at(&format!("/source_max/{k}")),
                                 format!(

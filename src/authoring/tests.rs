@@ -133,8 +133,7 @@ fn a_mountain_range_stroke_raises_a_ridge_above_its_surroundings() {
         json!([{"op": "mountain_range", "points": [[1015, 2064], [1064, 2060], [1113, 2064]],
         "height_m": 10, "width_m": 20, "seed": 3}]),
     );
-    for x in [1040.0, 1064.0, 1088.0] {
-        let z = if x == 1064.0 { 2060.0 } else { 2062.0 };
+    for (x, z) in [(1040.0, 2062.0), (1064.0, 2060.0), (1088.0, 2062.0)] {
         let ridge = d_at(&r, x, z);
         let around = 0.5 * (d_at(&r, x, z - 28.0) + d_at(&r, x, z + 28.0));
         assert!(
@@ -204,34 +203,36 @@ fn correlation(a: &[f64], b: &[f64]) -> f64 {
     sab / (saa * sbb).sqrt()
 }
 
-/// Least-squares `v ≈ a + b·x + c·z`: `[a, b, c]`.
+/// Least-squares `v ≈ a + b·x + c·z`: `[a, b, c]` (normal equations, Cramer's rule).
 fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
-    let mut m = [[0.0; 4]; 3];
+    let mut m = [[0.0f64; 3]; 3];
+    let mut rhs = [0.0f64; 3];
     for (q, y) in p.iter().zip(v) {
         let row = [1.0, q[0], q[1]];
-        for a in 0..3 {
-            for b in 0..3 {
-                m[a][b] += row[a] * row[b];
-            }
-            m[a][3] += row[a] * y;
-        }
-    }
-    // Gauss-Jordan elimination on the 3×3 normal equations (positive definite).
-    for c in 0..3 {
-        let pivot = m[c][c];
-        for k in c..4 {
-            m[c][k] /= pivot;
-        }
-        for r in 0..3 {
-            if r != c {
-                let f = m[r][c];
-                for k in c..4 {
-                    m[r][k] -= f * m[c][k];
-                }
+        for (mr, ra) in m.iter_mut().zip(row) {
+            for (mc, rb) in mr.iter_mut().zip(row) {
+                *mc += ra * rb;
             }
         }
+        for (r, ra) in rhs.iter_mut().zip(row) {
+            *r += ra * y;
+        }
     }
-    [m[0][3], m[1][3], m[2][3]]
+    let det = |a: [[f64; 3]; 3]| {
+        a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+            - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+    };
+    let d = det(m);
+    let mut out = [0.0; 3];
+    for (c, o) in out.iter_mut().enumerate() {
+        let mut a = m;
+        for (row, r) in a.iter_mut().zip(rhs) {
+            row[c] = r;
+        }
+        *o = det(a) / d;
+    }
+    out
 }
 
 #[test]
