@@ -29,11 +29,30 @@
 //! Tools ([`spec::Op`]) are rasterised on the grid in document order ([`raster`]): each either
 //! adds to the target gradient of `d` (soft: the least-squares target) or fixes samples (hard).
 //! A hard constraint beats any conflicting soft one because fixed samples are not unknowns.
+//!
+//! # Tools by module
+//!
+//! - [`raster`]: elevation, freeze, amplify, crest and noise (§4.1, §4.4).
+//! - [`landform`]: the rest of Fig. 4 (cliff, river, free crest, ravine, fault) and the Fig. 8
+//!   composites (mountain range, mesa).
+//! - [`tensor`]: §4.3 tensor maps (directional, skeleton, stroke-aligned).
+//! - [`paste`]: §4.1 copy-paste of the procedural world's gradients, rotated and scaled.
+//! - [`erosion`]: §4.4 an elevation-domain brush (thermal erosion) keeping the Dirichlet samples.
+//! - [`stats`]: readouts (elevation, slope) over a point, polyline or rectangle.
+//! - [`exchange`]: PNG16 heightmaps and the §3 two-channel gradient-map encoding, in and out.
 
+pub mod erosion;
+pub mod exchange;
 pub mod grid;
+pub mod landform;
+pub mod paste;
 pub mod raster;
 pub mod region;
 pub mod spec;
+pub mod stats;
+pub mod tensor;
+#[cfg(test)]
+mod tests;
 
 pub use grid::{Procedural, RegionGrid};
 pub use region::{solve_region, Displacement, RegionError};

@@ -47,7 +47,7 @@ pub fn polyline_distance(pts: &[[f64; 2]], p: [f64; 2]) -> (f64, usize, f64) {
     best
 }
 
-fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+pub(super) fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
 }
 
@@ -89,7 +89,7 @@ impl Canvas {
         }
     }
 
-    fn fix(&mut self, v: usize, height_m: f64) {
+    pub(super) fn fix(&mut self, v: usize, height_m: f64) {
         if self.frozen[v] || !self.grid.is_interior(v % self.grid.n, v / self.grid.n) {
             return;
         }
@@ -99,7 +99,11 @@ impl Canvas {
 
     /// Samples within `radius` of the polyline (at least the nearest one), with the parameter of
     /// their closest point: `(sample, distance, segment, fraction)`.
-    fn near_polyline(&self, pts: &[[f64; 2]], radius: f64) -> Vec<(usize, f64, usize, f64)> {
+    pub(super) fn near_polyline(
+        &self,
+        pts: &[[f64; 2]],
+        radius: f64,
+    ) -> Vec<(usize, f64, usize, f64)> {
         let n = self.grid.n;
         let mut out = Vec::new();
         let mut nearest = (f64::INFINITY, 0, 0, 0.0);
@@ -146,7 +150,10 @@ impl Canvas {
 
     /// Visits every edge with its midpoint: `f(is_x_edge, edge index, midpoint, (a, b))` where
     /// `a`, `b` are the sample indices at its ends.
-    fn edges(&mut self, mut f: impl FnMut(&mut Self, bool, usize, [f64; 2], (usize, usize))) {
+    pub(super) fn edges(
+        &mut self,
+        mut f: impl FnMut(&mut Self, bool, usize, [f64; 2], (usize, usize)),
+    ) {
         let n = self.grid.n;
         let h = self.grid.spacing_m;
         for j in 0..n {

@@ -2,6 +2,7 @@
 //! lattice heights.
 
 use super::grid::{Procedural, RegionGrid};
+use super::paste::{PasteSource, Placement};
 use super::raster::Canvas;
 use super::spec::{Op, RegionSpec, Shape};
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
@@ -160,6 +161,98 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 *wavelength_m,
                 *seed,
             ),
+            Op::Cliff {
+                points,
+                top_elevation_m,
+                slope_deg,
+                width_m,
+            } => canvas.cliff(points, *top_elevation_m, *slope_deg, *width_m),
+            Op::River {
+                points,
+                bed_elevation_m,
+                bed_width_m,
+                bank_slope_deg,
+                bank_width_m,
+            } => canvas.river(
+                points,
+                *bed_elevation_m,
+                *bed_width_m,
+                *bank_slope_deg,
+                *bank_width_m,
+            ),
+            Op::FreeCrest {
+                points,
+                slope_deg,
+                width_m,
+            } => canvas.free_crest(points, 1.0, *slope_deg, *width_m),
+            Op::Ravine {
+                points,
+                slope_deg,
+                width_m,
+            } => canvas.free_crest(points, -1.0, *slope_deg, *width_m),
+            Op::Fault {
+                points,
+                throw_m,
+                width_m,
+            } => canvas.fault(points, *throw_m, *width_m),
+            Op::MountainRange {
+                points,
+                height_m,
+                width_m,
+                seed,
+            } => canvas.mountain_range(points, *height_m, *width_m, plan.seed, *seed),
+            Op::Mesa {
+                center,
+                radius_m,
+                elevation_m,
+                slope_deg,
+                cliff_width_m,
+            } => canvas.mesa(*center, *radius_m, *elevation_m, *slope_deg, *cliff_width_m),
+            Op::CopyPaste {
+                source_min,
+                source_max,
+                target,
+                rotation_deg,
+                scale,
+            } => {
+                let src =
+                    PasteSource::sample(plan, *source_min, *source_max, grid.spacing_m / scale);
+                let at = Placement {
+                    target: *target,
+                    rotation_deg: *rotation_deg,
+                    scale: *scale,
+                };
+                canvas.paste(&src, &at);
+            }
+            Op::DirectionalTensor {
+                center,
+                radius_m,
+                angle_deg,
+                strength,
+            } => canvas.directional_tensor(*center, *radius_m, *angle_deg, *strength),
+            Op::SkeletonTensor {
+                points,
+                radius_m,
+                angle_deg,
+                strength,
+            } => canvas.skeleton_tensor(points, *radius_m, *angle_deg, *strength),
+            Op::StrokeTensor {
+                points,
+                radius_m,
+                strength,
+            } => canvas.stroke_tensor(points, *radius_m, *strength),
+            Op::Erosion {
+                center,
+                radius_m,
+                talus_deg,
+                iterations,
+            } => {
+                if !solved {
+                    cycles = solve(&canvas, &mut current, first)?;
+                    first = false;
+                }
+                canvas.erode(*center, *radius_m, *talus_deg, *iterations, &current);
+            }
         }
         solved = matches!(op, Op::Freeze { .. });
     }
@@ -184,17 +277,17 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::scene::Scene;
     use crate::terrain::WorldParams;
     use serde_json::json;
 
-    fn plan() -> WorldPlan {
+    pub(crate) fn plan() -> WorldPlan {
         WorldPlan::new(11, WorldParams::default()).expect("plan")
     }
 
-    fn spec(samples: usize, ops: serde_json::Value) -> RegionSpec {
+    pub(crate) fn spec(samples: usize, ops: serde_json::Value) -> RegionSpec {
         let scene = Scene::from_value(&json!({"regions": [{
             "id": "r", "bbox": {"min": [1000, 2000], "max": [1128, 2128]},
             "samples": samples, "ops": ops}]}))
@@ -202,13 +295,13 @@ mod tests {
         RegionSpec::from_element(&scene.regions[0]).expect("spec")
     }
 
-    fn height(r: &Displacement, i: usize, j: usize) -> f64 {
+    pub(crate) fn height(r: &Displacement, i: usize, j: usize) -> f64 {
         let v = j * r.grid.n + i;
         f64::from(r.base[v]) + f64::from(r.d[v])
     }
 
     /// Nearest sample to a world position.
-    fn sample_at(r: &Displacement, x: f64, z: f64) -> (usize, usize) {
+    pub(crate) fn sample_at(r: &Displacement, x: f64, z: f64) -> (usize, usize) {
         let (u, v) = r.grid.grid_coords(x, z);
         (u.round() as usize, v.round() as usize)
     }

@@ -9,6 +9,7 @@
 //! Units: positions in world metres (`[x, z]`), radii and elevations in metres, slopes in
 //! degrees. Every limit is a constant here ([`SAMPLE_CHOICES`], [`MAX_OPS`], [`MAX_POINTS`]).
 
+use super::erosion::MAX_EROSION_ITERATIONS;
 use crate::scene::Element;
 use serde::{Deserialize, Serialize};
 
@@ -22,6 +23,8 @@ pub const MAX_OPS: usize = 256;
 pub const MAX_POINTS: usize = 1024;
 /// Largest magnitude of an elevation, metres.
 pub const MAX_ELEVATION_M: f64 = 20_000.0;
+/// Largest width or depth of a copy-paste source, metres.
+pub const MAX_PASTE_M: f64 = 8192.0;
 
 /// Where an elevation constraint applies.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -96,6 +99,174 @@ pub enum Op {
         #[serde(default)]
         seed: u32,
     },
+
+    /// Cliff (Fig. 4): the top edge at `top_elevation_m` along the polyline (hard) and, on the
+    /// right of the stroke (looking along it, north up), a face falling at `slope_deg` away
+    /// from the edge over `width_m` (soft). The foot lies near `top − width·tan(slope)`.
+    Cliff {
+        /// The top edge, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Elevation of the top edge, metres.
+        top_elevation_m: f64,
+        /// Slope of the face, degrees (`0..=89`).
+        slope_deg: f64,
+        /// Horizontal width of the face, metres.
+        width_m: f64,
+    },
+    /// River (Fig. 4): the bed at `bed_elevation_m` within `bed_width_m / 2` of the polyline
+    /// (hard) and banks rising gently at `bank_slope_deg` over `bank_width_m` on both sides
+    /// (soft).
+    River {
+        /// The river's course, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Elevation of the bed, metres.
+        bed_elevation_m: f64,
+        /// Width of the bed, metres (at least one sample is fixed).
+        #[serde(default)]
+        bed_width_m: f64,
+        /// Slope of the banks, degrees (`0..=30`: gentle).
+        bank_slope_deg: f64,
+        /// Width of each bank, metres.
+        bank_width_m: f64,
+    },
+    /// Free crest (Fig. 4): a ridge made of gradients only (no elevation), the flanks falling at
+    /// up to `slope_deg` (C² falloff) over `width_m`; added to the target, so crossings add.
+    FreeCrest {
+        /// The ridge line, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Flank slope at the line, degrees (`0..=89`).
+        slope_deg: f64,
+        /// Reach on each side, metres.
+        width_m: f64,
+    },
+    /// Ravine (Fig. 4): a free crest upside down (gradients only; flanks rising away from the
+    /// line at up to `slope_deg` over `width_m`).
+    Ravine {
+        /// The ravine's line, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Flank slope at the line, degrees (`0..=89`).
+        slope_deg: f64,
+        /// Reach on each side, metres.
+        width_m: f64,
+    },
+    /// Fault (Fig. 4): a step of `throw_m` across the polyline, the right of the stroke
+    /// dropping (negative: rising), spread over a band of `width_m` (gradients only, added, so
+    /// crossing faults superpose). The step dies out beyond the polyline's ends.
+    Fault {
+        /// The fault line, `[x, z]` metres (at least 2 points).
+        points: Vec<[f64; 2]>,
+        /// Height of the step, metres.
+        throw_m: f64,
+        /// Width of the band the step is spread over, metres.
+        width_m: f64,
+    },
+    /// Mountain-range brush (Fig. 8, left): one stroke gives a main free crest rising about
+    /// `height_m` over `width_m` on each side, and side spurs every `width_m` along it.
+    MountainRange {
+        /// The stroke, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Rise of the main ridge above its surroundings, metres.
+        height_m: f64,
+        /// Reach of the main ridge on each side (and spur spacing), metres.
+        width_m: f64,
+        /// Spur jitter seed (hashed with the world seed).
+        #[serde(default)]
+        seed: u32,
+    },
+    /// Mesa (Fig. 8, right): a plateau at `elevation_m` within `radius_m` of `center` (hard)
+    /// ringed by a cliff falling at `slope_deg` over `cliff_width_m` (soft).
+    Mesa {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Plateau radius, metres.
+        radius_m: f64,
+        /// Plateau elevation, metres.
+        elevation_m: f64,
+        /// Cliff slope, degrees (`0..=89`).
+        slope_deg: f64,
+        /// Horizontal width of the cliff ring, metres.
+        cliff_width_m: f64,
+    },
+
+    /// Copy-paste (§4.1): the gradients of the procedural world over the source rectangle
+    /// `source_min..source_max` are pasted centred on `target`, rotated by `rotation_deg` (from
+    /// +x toward +z: clockwise on a north-up map) and scaled horizontally by `scale` (heights
+    /// are copied, so slopes scale by `1/scale`); they replace the target gradient (soft), and
+    /// the reconstruction blends the copy into its surroundings.
+    CopyPaste {
+        /// West-north corner of the source `[x, z]`, metres.
+        source_min: [f64; 2],
+        /// East-south corner of the source `[x, z]`, metres.
+        source_max: [f64; 2],
+        /// Centre of the pasted copy `[x, z]`, metres.
+        target: [f64; 2],
+        /// Rotation, degrees (`−360..=360`).
+        #[serde(default)]
+        rotation_deg: f64,
+        /// Horizontal scale (`0.125..=8`).
+        #[serde(default = "unit_scale")]
+        scale: f64,
+    },
+
+    /// Directional tensor (§4.3): inside the disc of `radius_m` around `center` the target
+    /// gradient is multiplied by `D = I + μ·M(θ)`, which scales slopes along `angle_deg` by
+    /// `1 + strength` and across it by `1 − strength`.
+    DirectionalTensor {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+        /// Direction `θ`, degrees from +x toward +z.
+        angle_deg: f64,
+        /// `μ`, `0..=1`.
+        strength: f64,
+    },
+    /// Skeleton tensor (§4.3): `I + μ·α(d/r)·M(θ)` around a point or polyline skeleton, `α`
+    /// the C² falloff of the distance to it.
+    SkeletonTensor {
+        /// The skeleton: one point or a polyline, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Radius of influence, metres.
+        radius_m: f64,
+        /// Direction `θ`, degrees from +x toward +z.
+        angle_deg: f64,
+        /// `μ`, `0..=1`.
+        strength: f64,
+    },
+    /// Stroke-aligned tensor brush (§4.3, Fig. 7): a skeleton tensor whose direction follows
+    /// the stroke at the closest point, orienting slopes along the stroke.
+    StrokeTensor {
+        /// The stroke, `[x, z]` metres (at least 2 points).
+        points: Vec<[f64; 2]>,
+        /// Radius of influence, metres.
+        radius_m: f64,
+        /// `μ`, `0..=1`.
+        strength: f64,
+    },
+
+    /// Erosion brush (§4.4): the heights solved so far are eroded inside the disc of
+    /// `radius_m` around `center` (thermal erosion: `iterations` steps moving material downhill
+    /// wherever the slope exceeds `talus_deg`, faded by the C² falloff), keeping every fixed
+    /// sample, and the eroded gradients replace the target there (soft).
+    Erosion {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+        /// Talus angle, degrees (`0..=89`).
+        #[serde(default = "default_talus")]
+        talus_deg: f64,
+        /// Erosion steps, `1..=500`.
+        iterations: u32,
+    },
+}
+
+fn default_talus() -> f64 {
+    30.0
+}
+
+fn unit_scale() -> f64 {
+    1.0
 }
 
 /// A region element, parsed and validated.
@@ -270,6 +441,153 @@ impl RegionSpec {
                     finite_in(at("/amplitude_m"), *amplitude_m, 0.0, 1.0e4)?;
                     finite_in(at("/wavelength_m"), *wavelength_m, 1.0e-3, 1.0e6)?;
                 }
+                Op::Cliff {
+                    points,
+                    top_elevation_m,
+                    slope_deg,
+                    width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    elev(at("/top_elevation_m"), *top_elevation_m)?;
+                    finite_in(at("/slope_deg"), *slope_deg, 0.0, 89.0)?;
+                    finite_in(at("/width_m"), *width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::River {
+                    points,
+                    bed_elevation_m,
+                    bed_width_m,
+                    bank_slope_deg,
+                    bank_width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    elev(at("/bed_elevation_m"), *bed_elevation_m)?;
+                    radius(at("/bed_width_m"), *bed_width_m)?;
+                    finite_in(at("/bank_slope_deg"), *bank_slope_deg, 0.0, 30.0)?;
+                    finite_in(at("/bank_width_m"), *bank_width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::FreeCrest {
+                    points,
+                    slope_deg,
+                    width_m,
+                }
+                | Op::Ravine {
+                    points,
+                    slope_deg,
+                    width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    finite_in(at("/slope_deg"), *slope_deg, 0.0, 89.0)?;
+                    finite_in(at("/width_m"), *width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::Fault {
+                    points,
+                    throw_m,
+                    width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    if points.len() < 2 {
+                        return Err(err(at("/points"), "a fault needs at least 2 points"));
+                    }
+                    elev(at("/throw_m"), *throw_m)?;
+                    finite_in(at("/width_m"), *width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::MountainRange {
+                    points,
+                    height_m,
+                    width_m,
+                    ..
+                } => {
+                    polyline(at("/points"), points)?;
+                    finite_in(at("/height_m"), *height_m, 0.0, MAX_ELEVATION_M)?;
+                    finite_in(at("/width_m"), *width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::Mesa {
+                    center,
+                    radius_m,
+                    elevation_m,
+                    slope_deg,
+                    cliff_width_m,
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    elev(at("/elevation_m"), *elevation_m)?;
+                    finite_in(at("/slope_deg"), *slope_deg, 0.0, 89.0)?;
+                    finite_in(at("/cliff_width_m"), *cliff_width_m, 1.0e-3, 1.0e6)?;
+                }
+                Op::CopyPaste {
+                    source_min,
+                    source_max,
+                    target,
+                    rotation_deg,
+                    scale,
+                } => {
+                    pos(at("/source_min"), *source_min)?;
+                    pos(at("/source_max"), *source_max)?;
+                    pos(at("/target"), *target)?;
+                    for k in 0..2 {
+                        let extent = source_max[k] - source_min[k];
+                        if extent <= 0.0 || extent > MAX_PASTE_M {
+                            return Err(err(
+                                at(&format!("/source_max/{k}")),
+                                format!(
+                                    "the source needs a width and depth in (0, {MAX_PASTE_M}] m"
+                                ),
+                            ));
+                        }
+                    }
+                    finite_in(at("/rotation_deg"), *rotation_deg, -360.0, 360.0)?;
+                    finite_in(at("/scale"), *scale, 0.125, 8.0)?;
+                }
+                Op::DirectionalTensor {
+                    center,
+                    radius_m,
+                    angle_deg,
+                    strength,
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/angle_deg"), *angle_deg, -360.0, 360.0)?;
+                    finite_in(at("/strength"), *strength, 0.0, 1.0)?;
+                }
+                Op::SkeletonTensor {
+                    points,
+                    radius_m,
+                    angle_deg,
+                    strength,
+                } => {
+                    polyline(at("/points"), points)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/angle_deg"), *angle_deg, -360.0, 360.0)?;
+                    finite_in(at("/strength"), *strength, 0.0, 1.0)?;
+                }
+                Op::StrokeTensor {
+                    points,
+                    radius_m,
+                    strength,
+                } => {
+                    polyline(at("/points"), points)?;
+                    if points.len() < 2 {
+                        return Err(err(at("/points"), "a stroke needs at least 2 points"));
+                    }
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/strength"), *strength, 0.0, 1.0)?;
+                }
+                Op::Erosion {
+                    center,
+                    radius_m,
+                    talus_deg,
+                    iterations,
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/talus_deg"), *talus_deg, 0.0, 89.0)?;
+                    if !(1..=MAX_EROSION_ITERATIONS).contains(iterations) {
+                        return Err(err(
+                            at("/iterations"),
+                            format!("must be in 1..={MAX_EROSION_ITERATIONS}"),
+                        ));
+                    }
+                }
             }
         }
         Ok(())
@@ -335,6 +653,44 @@ mod tests {
                     json!([{"op": "crest", "points": [], "elevation_m": 1, "slope_deg": 10, "width_m": 5}]),
                 ),
                 "/ops/0/points",
+            ),
+            (
+                base(
+                    json!([{"op": "cliff", "points": [[0, 0], [9, 0]], "top_elevation_m": 1, "slope_deg": 95, "width_m": 5}]),
+                ),
+                "/ops/0/slope_deg",
+            ),
+            (
+                base(json!([{"op": "fault", "points": [[0, 0]], "throw_m": 3, "width_m": 5}])),
+                "/ops/0/points",
+            ),
+            (
+                base(
+                    json!([{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 10], "target": [5, 5], "scale": 20}]),
+                ),
+                "/ops/0/scale",
+            ),
+            (
+                base(
+                    json!([{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 0], "target": [5, 5]}]),
+                ),
+                "/ops/0/source_max/1",
+            ),
+            (
+                base(json!([{"op": "erosion", "center": [0, 0], "radius_m": 5, "iterations": 0}])),
+                "/ops/0/iterations",
+            ),
+            (
+                base(
+                    json!([{"op": "directional_tensor", "center": [0, 0], "radius_m": 5, "angle_deg": 0, "strength": 2}]),
+                ),
+                "/ops/0/strength",
+            ),
+            (
+                base(
+                    json!([{"op": "river", "points": [[0, 0], [9, 0]], "bed_elevation_m": 1, "bank_slope_deg": 45, "bank_width_m": 5}]),
+                ),
+                "/ops/0/bank_slope_deg",
             ),
             (base(json!([{"op": "melt"}])), "/ops/0"),
             (
