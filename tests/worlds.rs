@@ -271,6 +271,77 @@ async fn create_edit_read_and_versions() {
 }
 
 #[tokio::test]
+async fn region_stats_read_the_authored_heights() {
+    let dir = tempfile::tempdir().expect("tmp");
+    let app = service(dir.path(), Some(ADMIN));
+    let w = create(&app, Some(ADMIN), json!({"seed": 42})).await;
+    let tok = Some(w.admin.as_str());
+    let patch = json!([{"op": "add", "path": "/regions/-", "value": {
+        "id": "peak", "bbox": {"min": [0.0, 0.0], "max": [128.0, 128.0]}, "samples": 65,
+        "ops": [{"op": "elevation", "shape": {"point": [64.0, 64.0]}, "elevation_m": 333.0, "radius_m": 3.0}]}}]);
+    assert_eq!(
+        edit(&app, &w.id, tok, None, &patch).await.status,
+        StatusCode::OK
+    );
+    let base = format!("/v1/worlds/{}/regions/peak/stats", w.id);
+
+    let r = get(&app, &format!("{base}?point=64,64"), tok).await;
+    assert_eq!(
+        r.status,
+        StatusCode::OK,
+        "{}",
+        String::from_utf8_lossy(&r.body)
+    );
+    let s = &r.json()["stats"];
+    let e = s["elevation_mean_m"].as_f64().expect("elevation");
+    assert!((e - 333.0).abs() < 1e-3, "elevation at the constraint {e}");
+    // Around the peak the slopes are real numbers of degrees, steepest at least the mean.
+    let r = get(&app, &format!("{base}?rect=40,40;90,90&v=2"), tok).await;
+    assert_eq!(
+        r.status,
+        StatusCode::OK,
+        "{}",
+        String::from_utf8_lossy(&r.body)
+    );
+    let s = &r.json()["stats"];
+    let (mean, steep) = (
+        s["mean_slope_deg"].as_f64().expect("mean"),
+        s["steepest_slope_deg"].as_f64().expect("steepest"),
+    );
+    assert!(mean > 1.0 && steep >= mean && steep < 90.0, "{s}");
+    assert!(s["elevation_max_m"].as_f64() >= s["elevation_min_m"].as_f64());
+    let r = get(&app, &format!("{base}?polyline=10,64;64,64;120,64"), tok).await;
+    assert_eq!(r.status, StatusCode::OK);
+
+    get(&app, &format!("{base}?point=abc"), tok).await.error(
+        StatusCode::BAD_REQUEST,
+        "bad_coordinate",
+        Some("point"),
+    );
+    get(&app, &base, tok)
+        .await
+        .error(StatusCode::BAD_REQUEST, "bad_coordinate", Some("point"));
+    get(&app, &format!("{base}?rect=1,2"), tok).await.error(
+        StatusCode::BAD_REQUEST,
+        "bad_coordinate",
+        Some("rect"),
+    );
+    get(&app, &format!("{base}?point=500,500"), tok)
+        .await
+        .error(StatusCode::BAD_REQUEST, "bad_coordinate", Some("point"));
+    get(
+        &app,
+        &format!("/v1/worlds/{}/regions/nope/stats?point=1,1", w.id),
+        tok,
+    )
+    .await
+    .error(StatusCode::NOT_FOUND, "not_found", None);
+    get(&app, &format!("{base}?point=64,64&v=9"), tok)
+        .await
+        .error(StatusCode::NOT_FOUND, "version_not_found", None);
+}
+
+#[tokio::test]
 async fn bare_seed_world_serves_the_seed_products_with_version_caching() {
     let dir = tempfile::tempdir().expect("tmp");
     let app = service(dir.path(), None);

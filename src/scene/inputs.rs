@@ -187,6 +187,11 @@ impl SceneInputs {
         }
     }
 
+    /// The authored region with element id `id`.
+    pub fn region(&self, id: &str) -> Option<&RegionInput> {
+        self.regions.iter().find(|r| r.spec.id == id)
+    }
+
     /// The authored regions whose bbox meets what tile `key` reads, in document order.
     pub fn regions_touching(&self, key: TileKey) -> Vec<RegionInput> {
         let reach = tile_reach(&self.world, key);

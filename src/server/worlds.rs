@@ -23,7 +23,7 @@
 //! [`AppState::subscribe_edits`]) after they are committed.
 
 use super::access::{caller, Caller};
-use super::error::{code, AppError};
+use super::error::{code, truncate, AppError};
 use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
 };
@@ -276,6 +276,7 @@ pub(super) fn routes() -> Router<AppState> {
         .route("/v1/worlds/{id}/access", post(set_access))
         .route("/v1/worlds/{id}/tiles/{lod}/{x}/{z_ext}", get(tile))
         .route("/v1/worlds/{id}/scatter/{lod}/{x}/{z_ext}", get(scatter))
+        .route("/v1/worlds/{id}/regions/{rid}/stats", get(region_stats))
 }
 
 /// Maps a store failure to its HTTP answer.
@@ -915,6 +916,109 @@ async fn scatter(
         })
         .await?;
     Ok(finish_product(&p, product.respond(&headers)))
+}
+
+/// Parses `x,z;x,z;…` (metres) for the stats readout.
+fn parse_points(text: &str, field: &'static str) -> Result<Vec<[f64; 2]>, AppError> {
+    let bad = || {
+        AppError::bad_request(
+            code::BAD_COORDINATE,
+            field,
+            format!("{field} must be x,z pairs in metres separated by ';'"),
+        )
+    };
+    let points = text
+        .split(';')
+        .map(|pair| {
+            let mut it = pair.split(',').map(|v| v.trim().parse::<f64>());
+            match (it.next(), it.next(), it.next()) {
+                (Some(Ok(x)), Some(Ok(z)), None) if x.is_finite() && z.is_finite() => Ok([x, z]),
+                _ => Err(bad()),
+            }
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if points.is_empty() || points.len() > crate::authoring::MAX_POINTS {
+        return Err(bad());
+    }
+    Ok(points)
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/stats?point=x,z | polyline=x,z;x,z;… |
+/// rect=x0,z0;x1,z1 [&v=N]`: elevation (min, mean, max, metres) and mean and steepest slope
+/// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
+/// §6.3).
+async fn region_stats(
+    State(st): State<AppState>,
+    Path((id, rid)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    use crate::authoring::stats::{stats, StatsShape};
+    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
+    let query = query.as_deref();
+    let version = match query_param(query, "v") {
+        None => meta.version,
+        Some(v) => parse_version(v, "v")?,
+    };
+    if version > meta.version {
+        return Err(store_error(StoreError::VersionNotFound {
+            version,
+            latest: meta.version,
+        }));
+    }
+    let shape = match (
+        query_param(query, "point"),
+        query_param(query, "polyline"),
+        query_param(query, "rect"),
+    ) {
+        (Some(p), None, None) => StatsShape::Point(parse_points(p, "point")?[0]),
+        (None, Some(p), None) => StatsShape::Polyline(parse_points(p, "polyline")?),
+        (None, None, Some(p)) => match parse_points(p, "rect")?.as_slice() {
+            [a, b] => StatsShape::Rect {
+                min: [a[0].min(b[0]), a[1].min(b[1])],
+                max: [a[0].max(b[0]), a[1].max(b[1])],
+            },
+            _ => {
+                return Err(AppError::bad_request(
+                    code::BAD_COORDINATE,
+                    "rect",
+                    "rect must be two corners: x0,z0;x1,z1",
+                ))
+            }
+        },
+        _ => {
+            return Err(AppError::bad_request(
+                code::BAD_COORDINATE,
+                "point",
+                "give exactly one of point, polyline and rect",
+            ))
+        }
+    };
+    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
+    let region = inputs.region(&rid).ok_or_else(|| {
+        AppError::new(
+            StatusCode::NOT_FOUND,
+            code::NOT_FOUND,
+            format!(
+                "world {id} has no region {:?} at version {version}",
+                truncate(&rid, 128)
+            ),
+        )
+    })?;
+    let solved = st
+        .regions
+        .get(&plan, region)
+        .await
+        .ok_or_else(|| AppError::internal("the region could not be solved"))?;
+    let s = stats(&solved, &shape)
+        .map_err(|e| AppError::bad_request(code::BAD_COORDINATE, e.field, e.message))?;
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "region": rid, "version": version, "stats": s }),
+        "private, no-cache",
+    );
+    set_version_headers(&mut res, version, false);
+    Ok(res)
 }
 
 #[cfg(test)]
