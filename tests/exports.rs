@@ -181,8 +181,12 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
     let app = service(dir.path());
     let (id, admin) = world(&app, 42).await;
     let tok = Some(admin.as_str());
-    // Version 2 has other world settings, so the export must pick the version asked for.
-    let patch = json!([{"op": "replace", "path": "/world/sea_level_m", "value": 20}]);
+    // Version 2 has other world settings and an authored region, so the export must pick the
+    // version asked for and carry the region's edit as the tile routes do.
+    let patch = json!([{"op": "replace", "path": "/world/sea_level_m", "value": 20},
+        {"op": "add", "path": "/regions/-", "value": {"id": "peak",
+         "bbox": {"min": [0.0, 0.0], "max": [200.0, 200.0]}, "samples": 65,
+         "ops": [{"op": "elevation", "shape": {"point": [100.0, 100.0]}, "elevation_m": 500.0, "radius_m": 8.0}]}}]);
     let req = Request::post(format!("/v1/worlds/{id}/edits"))
         .header("authorization", format!("Bearer {admin}"))
         .header("content-type", "application/json-patch+json")
@@ -333,7 +337,8 @@ async fn three_shard_jobs_equal_the_whole_job_and_the_cli() {
         formats: vec!["bin".into(), "png".into()],
     };
     let mut local = Vec::new();
-    export::write_archive(&plan, &spec, Shard::WHOLE, 2, &mut local, |_, _| {}).expect("export");
+    export::write_archive(&plan, &[], &spec, Shard::WHOLE, 2, &mut local, |_, _| {})
+        .expect("export");
     assert!(
         local == archives[0],
         "the job's archive equals the CLI's, byte for byte"

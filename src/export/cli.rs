@@ -55,21 +55,29 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
     let start = Instant::now();
     let tty = std::io::stderr().is_terminal();
     let mut last = 0.0f64;
-    let manifest = write_archive(&plan, &spec, shard, threads, &mut out, |done, total| {
-        let t = start.elapsed().as_secs_f64();
-        if done == total || t - last >= 0.2 {
-            last = t;
-            let width = 30;
-            let filled = (done * width).checked_div(total).unwrap_or(width);
-            let bar = format!("[{}{}]", "#".repeat(filled), " ".repeat(width - filled));
-            let line = format!("{bar} {done}/{total} tiles  {t:.1} s");
-            if tty {
-                eprint!("\r{line}");
-            } else {
-                eprintln!("{line}");
+    let manifest = write_archive(
+        &plan,
+        &[],
+        &spec,
+        shard,
+        threads,
+        &mut out,
+        |done, total| {
+            let t = start.elapsed().as_secs_f64();
+            if done == total || t - last >= 0.2 {
+                last = t;
+                let width = 30;
+                let filled = (done * width).checked_div(total).unwrap_or(width);
+                let bar = format!("[{}{}]", "#".repeat(filled), " ".repeat(width - filled));
+                let line = format!("{bar} {done}/{total} tiles  {t:.1} s");
+                if tty {
+                    eprint!("\r{line}");
+                } else {
+                    eprintln!("{line}");
+                }
             }
-        }
-    })?;
+        },
+    )?;
     out.flush()?;
     if tty {
         eprintln!();

@@ -13,7 +13,7 @@ pub mod cli;
 pub mod tar;
 
 use crate::encode::{self, Format};
-use crate::terrain::{synthesize, Tile, TileKey, WorldPlan, MAX_LOD};
+use crate::terrain::{Tile, TileKey, WorldPlan, MAX_LOD};
 use serde::{Deserialize, Serialize};
 use std::io::Write;
 
@@ -236,6 +236,7 @@ pub struct Manifest {
 /// An invalid spec or a failing writer.
 pub fn write_archive(
     plan: &WorldPlan,
+    authored: &[std::sync::Arc<crate::authoring::Displacement>],
     spec: &ExportSpec,
     shard: Shard,
     threads: usize,
@@ -262,7 +263,13 @@ pub fn write_archive(
                             .iter()
                             .skip(t)
                             .step_by(threads)
-                            .map(|k| members(plan, spec, &synthesize(plan, *k)))
+                            .map(|k| {
+                                members(
+                                    plan,
+                                    spec,
+                                    &crate::authoring::synthesize(plan, *k, authored),
+                                )
+                            })
                             .collect::<Vec<_>>()
                     })
                 })
@@ -315,7 +322,7 @@ mod tests {
     fn shards_concatenate_to_the_whole_export() {
         let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
         let mut whole = Vec::new();
-        write_archive(&plan, &spec(), Shard::WHOLE, 2, &mut whole, |_, _| {}).expect("export");
+        write_archive(&plan, &[], &spec(), Shard::WHOLE, 2, &mut whole, |_, _| {}).expect("export");
         let whole = tar::read_members(&whole).expect("read");
         assert_eq!(whole.len(), 12 * 3 + 1);
         let mut joined = Vec::new();
@@ -323,6 +330,7 @@ mod tests {
             let mut part = Vec::new();
             write_archive(
                 &plan,
+                &[],
                 &spec(),
                 Shard { index: i, count: 3 },
                 1 + i as usize,

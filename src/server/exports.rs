@@ -150,10 +150,25 @@ async fn create(
         products: req.products,
         formats: req.formats,
     };
-    let plan = st.worlds.plan(&meta, version).await?;
+    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     spec.validate(&plan)
         .map_err(|e| invalid(pointer(e.field), e.message))?;
-    let job = match st.jobs.submit(&meta.id, version, plan, spec, shard) {
+    // The regions the exported tiles meet, solved now (cached), so the archive shows the edits.
+    let mut authored = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    for key in spec.keys(shard) {
+        for region in inputs.regions_touching(key) {
+            if seen.insert(region.digest) {
+                if let Some(d) = st.regions.get(&plan, &region).await {
+                    authored.push(d);
+                }
+            }
+        }
+    }
+    let job = match st
+        .jobs
+        .submit_with(&meta.id, version, plan, authored, spec, shard)
+    {
         Ok(job) => job,
         Err(e @ SubmitError::TooMany { .. }) => {
             let mut res = AppError::new(

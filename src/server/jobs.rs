@@ -114,6 +114,8 @@ pub struct Job {
     pub spec: ExportSpec,
     /// Which shard.
     pub shard: Shard,
+    /// The solved authored regions of the world version, added to every tile.
+    pub authored: Vec<Arc<crate::authoring::Displacement>>,
     seq: u64,
     path: PathBuf,
     state: watch::Sender<Progress>,
@@ -290,6 +292,19 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
+        self.submit_with(world, version, plan, Vec::new(), spec, shard)
+    }
+
+    /// [`Jobs::submit`] for a world with authored regions (`authored`, already solved).
+    pub fn submit_with(
+        &self,
+        world: &str,
+        version: u64,
+        plan: Arc<WorldPlan>,
+        authored: Vec<Arc<crate::authoring::Displacement>>,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Result<Arc<Job>, SubmitError> {
         let total = spec.keys(shard).len();
         let evicted = {
             let mut jobs = self.jobs();
@@ -316,6 +331,7 @@ impl Jobs {
                 version,
                 spec,
                 shard,
+                authored,
                 seq: self.seq.fetch_add(1, Ordering::Relaxed),
                 state: watch::Sender::new(Progress {
                     status: Status::Queued,
@@ -451,6 +467,7 @@ fn write(job: &Job, plan: &WorldPlan, dir: &Path, threads: usize) -> anyhow::Res
         let mut last: Option<Instant> = None;
         export::write_archive(
             plan,
+            &job.authored,
             &job.spec,
             job.shard,
             threads,
