@@ -45,6 +45,7 @@
 pub mod device;
 pub mod layout;
 pub mod poisson;
+mod scopes;
 pub mod tile;
 pub mod volume;
 pub mod volume_mesh;

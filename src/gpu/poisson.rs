@@ -21,6 +21,7 @@
 //! residuals of ~500 m heights are evaluated with `2⁻²⁴ · 500 m` rounding), not the CPU's `1e-6`
 //! on large grids; the heights then agree with the CPU's within a few millimetres.
 
+use super::scopes::Scopes;
 use crate::terrain::poisson::level::Level;
 use crate::terrain::poisson::multigrid::{Cycle, SolveOptions, COARSEST_SWEEPS};
 use anyhow::{anyhow, bail, Context};
@@ -132,32 +133,6 @@ impl GpuHierarchy {
     /// Number of levels.
     pub fn level_count(&self) -> usize {
         self.params.len()
-    }
-}
-
-/// Error scopes of one job: validation, out-of-memory and internal errors are all caught.
-struct Scopes(Vec<wgpu::ErrorScopeGuard>);
-
-impl Scopes {
-    fn push(device: &wgpu::Device) -> Self {
-        Self(vec![
-            device.push_error_scope(wgpu::ErrorFilter::Validation),
-            device.push_error_scope(wgpu::ErrorFilter::OutOfMemory),
-            device.push_error_scope(wgpu::ErrorFilter::Internal),
-        ])
-    }
-
-    fn pop(mut self) -> anyhow::Result<()> {
-        let mut first = None;
-        while let Some(guard) = self.0.pop() {
-            if let Some(e) = pollster::block_on(guard.pop()) {
-                first.get_or_insert(e);
-            }
-        }
-        match first {
-            Some(e) => Err(anyhow!("wgpu error: {e}")),
-            None => Ok(()),
-        }
     }
 }
 

@@ -8,6 +8,7 @@
 //! `Err`, never as a panic.
 
 use super::layout::{GpuBiomeMap, GpuFractal, GpuParams};
+use super::scopes::Scopes;
 use crate::terrain::biome::BLOCK;
 use crate::terrain::tile::Field;
 use crate::terrain::world::MAX_BIOMES;
@@ -122,33 +123,6 @@ pub struct TileKernels {
     biome_ids: wgpu::ComputePipeline,
     blur_h: wgpu::ComputePipeline,
     blur_v: wgpu::ComputePipeline,
-}
-
-/// Error scopes of one job: validation, out-of-memory and internal errors are all caught.
-struct Scopes(Vec<wgpu::ErrorScopeGuard>);
-
-impl Scopes {
-    fn push(device: &wgpu::Device) -> Self {
-        Self(vec![
-            device.push_error_scope(wgpu::ErrorFilter::Validation),
-            device.push_error_scope(wgpu::ErrorFilter::OutOfMemory),
-            device.push_error_scope(wgpu::ErrorFilter::Internal),
-        ])
-    }
-
-    /// Pops the scopes (innermost first) and returns the first error caught.
-    fn pop(mut self) -> anyhow::Result<()> {
-        let mut first = None;
-        while let Some(guard) = self.0.pop() {
-            if let Some(e) = pollster::block_on(guard.pop()) {
-                first.get_or_insert(e);
-            }
-        }
-        match first {
-            Some(e) => Err(anyhow!("wgpu error: {e}")),
-            None => Ok(()),
-        }
-    }
 }
 
 impl TileKernels {

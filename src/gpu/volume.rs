@@ -22,6 +22,7 @@
 //! device's `max_storage_buffer_binding_size` (128 MiB by default: 8 Mi samples, e.g.
 //! 256 × 128 × 256); larger grids are an error, not a panic.
 
+use super::scopes::Scopes;
 use crate::volume::pipeline::grid::Grid;
 use anyhow::{anyhow, bail, Context};
 
@@ -104,31 +105,6 @@ pub struct PropagateInput<'a> {
 pub const DIFFUSE_WGSL: &str = include_str!("../../shaders/volume_diffuse.wgsl");
 /// The shader source of `volume_propagate.wgsl`.
 pub const PROPAGATE_WGSL: &str = include_str!("../../shaders/volume_propagate.wgsl");
-
-struct Scopes(Vec<wgpu::ErrorScopeGuard>);
-
-impl Scopes {
-    fn push(device: &wgpu::Device) -> Self {
-        Self(vec![
-            device.push_error_scope(wgpu::ErrorFilter::Validation),
-            device.push_error_scope(wgpu::ErrorFilter::OutOfMemory),
-            device.push_error_scope(wgpu::ErrorFilter::Internal),
-        ])
-    }
-
-    fn pop(mut self) -> anyhow::Result<()> {
-        let mut first = None;
-        while let Some(guard) = self.0.pop() {
-            if let Some(e) = pollster::block_on(guard.pop()) {
-                first.get_or_insert(e);
-            }
-        }
-        match first {
-            Some(e) => Err(anyhow!("wgpu error: {e}")),
-            None => Ok(()),
-        }
-    }
-}
 
 /// Bindings: 0 uniform params (dynamic offset if `dynamic`), 1 read-only storage, 2 storage
 /// (read-only if `b2_read_only`), 3 read-write storage.
