@@ -8,8 +8,8 @@
 //! [`Compute::tile_cached`] puts the [`crate::cache::StageCache`] in front: a tile whose input
 //! hash is cached runs no stage; otherwise each stage run is counted there.
 
-use crate::authoring::Displacement;
 use crate::cache::{InputHash, Stage, StageCache};
+use crate::edits::TileEdits;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
 use crate::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
@@ -105,13 +105,15 @@ impl Compute {
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
     pub async fn tile(&self, plan: Arc<WorldPlan>, key: TileKey, coarser: [bool; 4]) -> Tile {
-        self.run_stages(plan, key, coarser, None, Vec::new()).await
+        self.run_stages(plan, key, coarser, None, TileEdits::default())
+            .await
     }
 
     /// The tile whose input hash is `inputs` ([`crate::scene::SceneInputs::tile`] of the same
     /// plan, key and seams): from `cache` when it holds it (memory, then disk), else computed as
     /// [`Compute::tile`] does, with each stage run counted in `cache`, and kept there.
-    /// `authored` yields the solved regions the tile meets; it is awaited only on a miss.
+    /// `edits` yields what the tile applies on top of the field (solved authored regions, cave
+    /// breaches); it is awaited only on a miss.
     pub async fn tile_cached<F>(
         &self,
         cache: &StageCache,
@@ -119,16 +121,15 @@ impl Compute {
         plan: Arc<WorldPlan>,
         key: TileKey,
         seams: [bool; 4],
-        authored: F,
+        edits: F,
     ) -> Arc<Tile>
     where
-        F: std::future::Future<Output = Vec<Arc<Displacement>>>,
+        F: std::future::Future<Output = TileEdits>,
     {
         cache
             .get_or_compute(inputs, || async move {
-                let authored = authored.await;
-                self.run_stages(plan, key, seams, Some(cache), authored)
-                    .await
+                let edits = edits.await;
+                self.run_stages(plan, key, seams, Some(cache), edits).await
             })
             .await
     }
@@ -139,7 +140,7 @@ impl Compute {
         key: TileKey,
         coarser: [bool; 4],
         counts: Option<&StageCache>,
-        authored: Vec<Arc<Displacement>>,
+        edits: TileEdits,
     ) -> Tile {
         let count = |stage, since: std::time::Instant| {
             if let Some(c) = counts {
@@ -151,9 +152,7 @@ impl Compute {
         let (gx0, gz0) = (key.x * 64 - 1, key.z * 64 - 1);
         let mut f = self.field(plan.clone(), key.lod, gx0, gz0, n, n).await;
         let spacing = |lod: u32| plan.lods[lod as usize].spacing_m;
-        for d in &authored {
-            d.add_to_lattice(spacing(key.lod), gx0, gz0, n, n, &mut f.heights);
-        }
+        edits.apply(spacing(key.lod), gx0, gz0, n, n, &mut f.heights);
         count(Stage::Field, started);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
@@ -161,9 +160,7 @@ impl Compute {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 let started = std::time::Instant::now();
                 let mut strip = self.field(plan.clone(), lod, gx0, gz0, w, h).await;
-                for d in &authored {
-                    d.add_to_lattice(spacing(lod), gx0, gz0, w, h, &mut strip.heights);
-                }
+                edits.apply(spacing(lod), gx0, gz0, w, h, &mut strip.heights);
                 strips.push((*edge, strip));
                 count(Stage::Snap, started);
             }

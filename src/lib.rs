@@ -4,13 +4,15 @@
 //! [`gpu`] owns the compute device and the WGSL twins; [`encode`] turns products into wire formats;
 //! [`server`] is the HTTP service; [`scene`] is the scene document and [`store`] keeps worlds,
 //! their versions and tokens durably; [`cache`] keeps finished tiles under the hash of their
-//! inputs.
+//! inputs; [`edits`] are what a tile applies on top of the procedural field (authored regions,
+//! cave breaches).
 
 pub mod authoring;
 pub mod bench;
 pub mod cache;
 pub mod cli;
 pub mod compute;
+pub mod edits;
 pub mod encode;
 pub mod export;
 pub mod gpu;

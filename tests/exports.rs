@@ -337,8 +337,16 @@ async fn three_shard_jobs_equal_the_whole_job_and_the_cli() {
         formats: vec!["bin".into(), "png".into()],
     };
     let mut local = Vec::new();
-    export::write_archive(&plan, &[], &spec, Shard::WHOLE, 2, &mut local, |_, _| {})
-        .expect("export");
+    export::write_archive(
+        &plan,
+        &Default::default(),
+        &spec,
+        Shard::WHOLE,
+        2,
+        &mut local,
+        |_, _| {},
+    )
+    .expect("export");
     assert!(
         local == archives[0],
         "the job's archive equals the CLI's, byte for byte"

@@ -55,5 +55,5 @@ pub mod tensor;
 mod tests;
 
 pub use grid::{Procedural, RegionGrid};
-pub use region::{solve_region, synthesize, Displacement, RegionError};
+pub use region::{solve_region, Displacement, RegionError};
 pub use spec::{Op, RegionSpec, Shape, MAX_OPS, MAX_POINTS, SAMPLE_CHOICES};

@@ -82,25 +82,6 @@ impl Displacement {
     }
 }
 
-/// Synthesises tile `key` of the world `plan` with the authored regions `authored` added (the
-/// CPU path of the tile routes, for batch exports): the field with its margin, each region's
-/// displacement by position, then normals, materials and skirts.
-pub fn synthesize(
-    plan: &WorldPlan,
-    key: crate::terrain::TileKey,
-    authored: &[std::sync::Arc<Displacement>],
-) -> crate::terrain::Tile {
-    use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
-    let n = TILE_VERTS + 2;
-    let (gx0, gz0) = (key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1);
-    let mut f = crate::terrain::tile::field(plan, key.lod, gx0, gz0, n, n);
-    let spacing = plan.lods[key.lod as usize].spacing_m;
-    for d in authored {
-        d.add_to_lattice(spacing, gx0, gz0, n, n, &mut f.heights);
-    }
-    crate::terrain::tile::finish(plan, key, &f)
-}
-
 /// Solves a region of the world `plan`: samples the procedural heights, rasterises the
 /// operations in order (a freeze brush solves what precedes it first) and reconstructs `d`.
 ///

@@ -15,6 +15,8 @@ pub const BIN_MAGIC: [u8; 4] = *b"STCK";
 pub const BIN_VERSION: u32 = 1;
 /// Bytes of the binary header.
 pub const BIN_HEADER_BYTES: usize = 96;
+/// Header flag (offset 12): a `u32 ×V` section of subsurface materials ends the body.
+pub const FLAG_GEOLOGY: u32 = 1;
 /// `Content-Type` of the binary product.
 pub const BIN_CONTENT_TYPE: &str = "application/vnd.strata.chunk.v1";
 
@@ -74,6 +76,10 @@ pub fn encode_json(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
             "quads": m.skirt_quads.iter().flatten().collect::<Vec<_>>(),
         },
     });
+    let mut doc = doc;
+    if !m.geology.is_empty() {
+        doc["geology"] = json!(m.geology);
+    }
     serde_json::to_vec(&doc).unwrap_or_default()
 }
 
@@ -90,7 +96,12 @@ pub fn encode_bin(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
     out.extend_from_slice(&BIN_MAGIC);
     out.extend_from_slice(&BIN_VERSION.to_le_bytes());
     out.extend_from_slice(&info.key.lod.to_le_bytes());
-    out.extend_from_slice(&0u32.to_le_bytes());
+    let flags = if m.geology.is_empty() {
+        0
+    } else {
+        FLAG_GEOLOGY
+    };
+    out.extend_from_slice(&flags.to_le_bytes());
     for c in [info.key.x, info.key.y, info.key.z] {
         out.extend_from_slice(&c.to_le_bytes());
     }
@@ -126,6 +137,9 @@ pub fn encode_bin(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
     }
     for i in m.skirt_quads.iter().flatten() {
         out.extend_from_slice(&i.to_le_bytes());
+    }
+    for g in &m.geology {
+        out.extend_from_slice(&g.to_le_bytes());
     }
     out
 }

@@ -57,7 +57,7 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
     let mut last = 0.0f64;
     let manifest = write_archive(
         &plan,
-        &[],
+        &Default::default(),
         &spec,
         shard,
         threads,

@@ -236,7 +236,7 @@ pub struct Manifest {
 /// An invalid spec or a failing writer.
 pub fn write_archive(
     plan: &WorldPlan,
-    authored: &[std::sync::Arc<crate::authoring::Displacement>],
+    edits: &crate::edits::TileEdits,
     spec: &ExportSpec,
     shard: Shard,
     threads: usize,
@@ -264,11 +264,7 @@ pub fn write_archive(
                             .skip(t)
                             .step_by(threads)
                             .map(|k| {
-                                members(
-                                    plan,
-                                    spec,
-                                    &crate::authoring::synthesize(plan, *k, authored),
-                                )
+                                members(plan, spec, &crate::edits::synthesize(plan, *k, edits))
                             })
                             .collect::<Vec<_>>()
                     })
@@ -322,7 +318,16 @@ mod tests {
     fn shards_concatenate_to_the_whole_export() {
         let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
         let mut whole = Vec::new();
-        write_archive(&plan, &[], &spec(), Shard::WHOLE, 2, &mut whole, |_, _| {}).expect("export");
+        write_archive(
+            &plan,
+            &Default::default(),
+            &spec(),
+            Shard::WHOLE,
+            2,
+            &mut whole,
+            |_, _| {},
+        )
+        .expect("export");
         let whole = tar::read_members(&whole).expect("read");
         assert_eq!(whole.len(), 12 * 3 + 1);
         let mut joined = Vec::new();
@@ -330,7 +335,7 @@ mod tests {
             let mut part = Vec::new();
             write_archive(
                 &plan,
-                &[],
+                &Default::default(),
                 &spec(),
                 Shard { index: i, count: 3 },
                 1 + i as usize,

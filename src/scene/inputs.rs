@@ -33,6 +33,7 @@
 
 use super::{Element, Rect, Scene};
 use crate::authoring::RegionSpec;
+use crate::subsurface::{Geology, StrataSpec};
 use crate::terrain::{TileKey, WorldParams};
 use serde_json::Value;
 use std::sync::Arc;
@@ -137,6 +138,42 @@ pub struct SceneInputs {
     world_digest: [u8; 32],
     elements: Vec<ElementInput>,
     regions: Vec<RegionInput>,
+    strata: Vec<StrataInput>,
+}
+
+/// A `strata` element of the scene, parsed; bound to the world's seed on first use.
+#[derive(Clone, Debug)]
+pub struct StrataInput {
+    /// The parsed element.
+    pub spec: Arc<StrataSpec>,
+    bound: Arc<std::sync::OnceLock<(u64, Arc<Geology>)>>,
+}
+
+impl PartialEq for StrataInput {
+    fn eq(&self, other: &Self) -> bool {
+        self.spec == other.spec
+    }
+}
+
+impl StrataInput {
+    /// The element bound to `seed` (built once per scene version for the world's seed).
+    pub fn geology(&self, seed: u64) -> Arc<Geology> {
+        let (s, g) = self
+            .bound
+            .get_or_init(|| (seed, Arc::new(Geology::new(seed, (*self.spec).clone()))));
+        if *s == seed {
+            g.clone()
+        } else {
+            Arc::new(Geology::new(seed, (*self.spec).clone()))
+        }
+    }
+
+    fn rect(&self) -> Rect {
+        Rect {
+            min: self.spec.min,
+            max: self.spec.max,
+        }
+    }
 }
 
 /// An authored region of the scene, parsed, with the digest that keys its solution.
@@ -179,12 +216,42 @@ impl SceneInputs {
                 })
             })
             .collect();
+        let strata = scene
+            .strata
+            .iter()
+            .filter_map(|e| {
+                Some(StrataInput {
+                    spec: Arc::new(StrataSpec::from_element(e).ok()?),
+                    bound: Arc::default(),
+                })
+            })
+            .collect();
         Self {
             world: scene.world.clone(),
             world_digest,
             elements,
             regions,
+            strata,
         }
+    }
+
+    /// The `strata` elements, in document order.
+    pub fn strata(&self) -> &[StrataInput] {
+        &self.strata
+    }
+
+    /// The `strata` elements whose bbox meets `rect`, bound to `seed`, in document order.
+    pub fn strata_meeting(&self, seed: u64, rect: &Rect) -> Vec<Arc<Geology>> {
+        self.strata
+            .iter()
+            .filter(|s| s.rect().intersects(rect))
+            .map(|s| s.geology(seed))
+            .collect()
+    }
+
+    /// The `strata` elements whose bbox meets what tile `key` reads, bound to `seed`.
+    pub fn strata_touching(&self, seed: u64, key: TileKey) -> Vec<Arc<Geology>> {
+        self.strata_meeting(seed, &tile_reach(&self.world, key))
     }
 
     /// The authored region with element id `id`.
@@ -215,6 +282,7 @@ impl SceneInputs {
             world_digest: digest(world),
             elements: Vec::new(),
             regions: Vec::new(),
+            strata: Vec::new(),
         }
     }
 

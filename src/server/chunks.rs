@@ -9,7 +9,8 @@
 //! Parameters are checked in the order seed/id, lod, x, y, z, format; errors are 400 JSON naming
 //! the field ([`AppError`]). Limits: `lod` in `0..=3`, `|x|, |z| ≤ 2·max_tile_coord(lod) − 1`,
 //! `|y| ≤ max_chunk_y(lod)`. A chunk's heights come from the same-LOD height tiles through the
-//! stage cache, so a world chunk reflects the world's edits like its tiles do. Responses carry a
+//! stage cache, so a world chunk reflects the world's edits like its tiles do, and the caves of
+//! the world's `strata` elements carve it ([`crate::subsurface::carve`]). Responses carry a
 //! content-hash `ETag`; seed chunks are immutable, world chunks follow the world tiles' caching
 //! (immutable when pinned with `?v=N`, short-lived otherwise).
 
@@ -20,11 +21,13 @@ use super::worlds::{authorize, LATEST_MAX_AGE_S};
 use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
 use crate::encode::{chunk_glb, Format};
+use crate::scene::Rect;
 use crate::scene::SceneInputs;
 use crate::store::Role;
+use crate::subsurface::carve::mesh_world_chunk;
 use crate::terrain::{TileKey, WorldPlan};
 use crate::volume::chunk::{
-    gather_columns, max_chunk_xz, max_chunk_y, mesh_chunk, tiles_needed, ChunkKey, TileColumns,
+    gather_columns, max_chunk_xz, max_chunk_y, tiles_needed, ChunkKey, TileColumns, CHUNK_CELLS,
     MAX_CHUNK_LOD,
 };
 use crate::volume::mesh::QuadMesh;
@@ -115,6 +118,17 @@ pub fn check_chunk_bounds(plan: &WorldPlan, key: ChunkKey) -> Result<(), AppErro
     Ok(())
 }
 
+/// The ground-plane rectangle whose columns chunk `key` reads (its padded samples), metres.
+fn chunk_rect(key: ChunkKey, spacing_m: f32) -> Rect {
+    let s = f64::from(spacing_m);
+    let side = CHUNK_CELLS as f64 * s;
+    let (x0, z0) = (key.x as f64 * side, key.z as f64 * side);
+    Rect {
+        min: [x0 - s, z0 - s],
+        max: [x0 + side + s, z0 + side + s],
+    }
+}
+
 /// Meshes and encodes a chunk in one synthesis slot.
 async fn product(
     st: &AppState,
@@ -140,6 +154,7 @@ async fn product(
             ));
         }
         let spacing_m = plan.lods[key.lod as usize].spacing_m;
+        let strata = inputs.strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
         let info = ChunkInfo {
             seed: plan.seed,
             key,
@@ -157,7 +172,7 @@ async fn product(
                 .collect();
             let cols = gather_columns(key, &views)
                 .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
-            let mesh = mesh_chunk(key, spacing_m, &cols, &mut QuadMesh::default())
+            let mesh = mesh_world_chunk(key, spacing_m, &cols, &strata, &mut QuadMesh::default())
                 .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
             let (body, content_type) = match format {
                 Format::Json => (encode_json(&info, &mesh), Format::Json.content_type()),

@@ -154,20 +154,27 @@ async fn create(
     spec.validate(&plan)
         .map_err(|e| invalid(pointer(e.field), e.message))?;
     // The regions the exported tiles meet, solved now (cached), so the archive shows the edits.
-    let mut authored = Vec::new();
+    let mut edits = crate::edits::TileEdits::default();
     let mut seen = std::collections::HashSet::new();
     for key in spec.keys(shard) {
         for region in inputs.regions_touching(key) {
             if seen.insert(region.digest) {
                 if let Some(d) = st.regions.get(&plan, &region).await {
-                    authored.push(d);
+                    edits.displacements.push(d);
                 }
             }
         }
     }
+    // Every strata element: a breach depends only on the element in force at a column, which
+    // is the same whether or not elements far from the tile are listed.
+    edits.strata = inputs
+        .strata()
+        .iter()
+        .map(|s| s.geology(plan.seed))
+        .collect();
     let job = match st
         .jobs
-        .submit_with(&meta.id, version, plan, authored, spec, shard)
+        .submit_with(&meta.id, version, plan, edits, spec, shard)
     {
         Ok(job) => job,
         Err(e @ SubmitError::TooMany { .. }) => {

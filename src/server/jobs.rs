@@ -114,8 +114,9 @@ pub struct Job {
     pub spec: ExportSpec,
     /// Which shard.
     pub shard: Shard,
-    /// The solved authored regions of the world version, added to every tile.
-    pub authored: Vec<Arc<crate::authoring::Displacement>>,
+    /// What every tile applies on top of the field: the solved authored regions and the
+    /// `strata` elements of the world version.
+    pub edits: crate::edits::TileEdits,
     seq: u64,
     path: PathBuf,
     state: watch::Sender<Progress>,
@@ -292,16 +293,16 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
-        self.submit_with(world, version, plan, Vec::new(), spec, shard)
+        self.submit_with(world, version, plan, Default::default(), spec, shard)
     }
 
-    /// [`Jobs::submit`] for a world with authored regions (`authored`, already solved).
+    /// [`Jobs::submit`] for a world with edits (authored regions already solved, strata).
     pub fn submit_with(
         &self,
         world: &str,
         version: u64,
         plan: Arc<WorldPlan>,
-        authored: Vec<Arc<crate::authoring::Displacement>>,
+        edits: crate::edits::TileEdits,
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
@@ -331,7 +332,7 @@ impl Jobs {
                 version,
                 spec,
                 shard,
-                authored,
+                edits,
                 seq: self.seq.fetch_add(1, Ordering::Relaxed),
                 state: watch::Sender::new(Progress {
                     status: Status::Queued,
@@ -467,7 +468,7 @@ fn write(job: &Job, plan: &WorldPlan, dir: &Path, threads: usize) -> anyhow::Res
         let mut last: Option<Instant> = None;
         export::write_archive(
             plan,
-            &job.authored,
+            &job.edits,
             &job.spec,
             job.shard,
             threads,

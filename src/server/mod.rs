@@ -31,6 +31,7 @@ pub mod bodies;
 pub mod chunks;
 pub mod error;
 pub mod exports;
+pub mod geology;
 pub mod jobs;
 pub mod metrics;
 pub mod params;
@@ -249,18 +250,22 @@ impl AppState {
     ) -> Arc<Tile> {
         let hash = inputs.tile(plan.seed, key, seams);
         let regions = inputs.regions_touching(key);
+        let strata = inputs.strata_touching(plan.seed, key);
         let (cache, solved) = (self.regions.clone(), plan.clone());
-        let authored = async move {
-            let mut out = Vec::new();
+        let edits = async move {
+            let mut displacements = Vec::new();
             for region in regions {
                 if let Some(d) = cache.get(&solved, &region).await {
-                    out.push(d);
+                    displacements.push(d);
                 }
             }
-            out
+            crate::edits::TileEdits {
+                displacements,
+                strata,
+            }
         };
         self.compute
-            .tile_cached(&self.cache, hash, plan, key, seams, authored)
+            .tile_cached(&self.cache, hash, plan, key, seams, edits)
             .await
     }
 

@@ -42,6 +42,7 @@ pub fn router(state: AppState) -> Router {
         .merge(super::worlds::routes())
         .merge(super::exports::routes())
         .merge(super::chunks::routes())
+        .merge(super::geology::routes())
         .merge(crate::stream::routes::router())
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {

@@ -555,7 +555,7 @@ async fn show(
 }
 
 /// A version number: 1 to 19 ASCII digits, at least 1.
-fn parse_version(s: &str, field: &'static str) -> Result<u64, AppError> {
+pub(crate) fn parse_version(s: &str, field: &'static str) -> Result<u64, AppError> {
     let bad = || {
         AppError::bad_request(
             code::BAD_VERSION,
@@ -605,7 +605,7 @@ async fn version(
 
 /// The value of a query parameter (first occurrence, no percent-decoding: the parameters read
 /// here are plain integers).
-fn query_param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
+pub(crate) fn query_param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
     query?
         .split('&')
         .filter_map(|p| p.split_once('=').or(Some((p, ""))))
@@ -943,6 +943,23 @@ fn parse_points(text: &str, field: &'static str) -> Result<Vec<[f64; 2]>, AppErr
     Ok(points)
 }
 
+/// The version a product request names with `?v=N` (the latest without), checked against the
+/// world's latest.
+pub(crate) fn requested_version(meta: &WorldMeta, query: Option<&str>) -> Result<u64, AppError> {
+    let version = match query_param(query, "v") {
+        None => meta.version,
+        Some(v) => parse_version(v, "v")?,
+    };
+    if version > meta.version {
+        return Err(store_error(StoreError::VersionNotFound {
+            version,
+            latest: meta.version,
+        })
+        .with_field("v"));
+    }
+    Ok(version)
+}
+
 /// `GET /v1/worlds/{id}/regions/{rid}/stats?point=x,z | polyline=x,z;x,z;… |
 /// rect=x0,z0;x1,z1 [&v=N]`: elevation (min, mean, max, metres) and mean and steepest slope
 /// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
@@ -956,16 +973,7 @@ async fn region_stats(
     use crate::authoring::stats::{stats, StatsShape};
     let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     let query = query.as_deref();
-    let version = match query_param(query, "v") {
-        None => meta.version,
-        Some(v) => parse_version(v, "v")?,
-    };
-    if version > meta.version {
-        return Err(store_error(StoreError::VersionNotFound {
-            version,
-            latest: meta.version,
-        }));
-    }
+    let version = requested_version(&meta, query)?;
     let shape = match (
         query_param(query, "point"),
         query_param(query, "polyline"),

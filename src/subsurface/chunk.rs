@@ -150,8 +150,12 @@ impl Flows {
 
 /// Composition of a voxel centre at height `y` of a column with layer tops `tops`: the layer it
 /// lies in, the blend zone at a layer's bottom (§4.3: blend × local thickness, mixing linearly
-/// from the layer below), void above the top layer, and veins then caves over both.
+/// from the layer below), void above the top layer, and veins then caves over both; anchored to
+/// a ground ([`SubsurfacePlan::anchored`]), void at and above local height 0.
 fn sample(plan: &SubsurfacePlan, tops: &[f32], spans: &[(f32, f32, u16)], y: f32) -> Mix {
+    if plan.ground_anchored && y >= 0.0 {
+        return Mix::pure(0);
+    }
     for &(lo, hi, p) in spans.iter().rev() {
         if y >= lo && y < hi {
             return Mix::pure(p);
@@ -216,6 +220,12 @@ impl SubsurfacePlan {
     /// Generates one chunk from the plan alone: the same bytes whatever else was generated,
     /// in whatever order, on whatever thread.
     pub fn chunk(&self, key: ChunkKey, size: u32) -> Chunk {
+        self.chunk_within(key, size, None)
+    }
+
+    /// [`Self::chunk`] keeping only the veins and caves whose bounding square lies inside
+    /// `bounds = [x0, z0, x1, z1]` (voxels), as a `strata` element's bbox does.
+    pub fn chunk_within(&self, key: ChunkKey, size: u32, bounds: Option<[f32; 4]>) -> Chunk {
         let size = size.clamp(1, MAX_CHUNK);
         let s = size as f32;
         let (x0, y0, z0) = (key.x as f32 * s, key.y as f32 * s, key.z as f32 * s);
@@ -224,6 +234,7 @@ impl SubsurfacePlan {
         let placed: Vec<Placed> = self
             .elements_near(x0, y0, z0, s)
             .into_iter()
+            .filter(|e| square_within(e, bounds))
             .map(|element| {
                 palette.push(element.composition.clone());
                 Placed {
@@ -304,6 +315,44 @@ impl SubsurfacePlan {
 
     /// Composition and flow of the world voxel `(x, y, z)` evaluated directly, without chunks.
     pub fn voxel(&self, x: i32, y: i32, z: i32) -> (Composition, [f32; 3]) {
+        let near = self.elements_near(x as f32, y as f32, z as f32, 1.0);
+        self.voxel_among(x, y, z, near.iter())
+    }
+
+    /// [`Self::voxel`] with the lattice elements taken from `memo`, which keeps them for the
+    /// next query nearby and drops those outside its bounds ([`ElementMemo::within`]).
+    pub fn voxel_memo(
+        &self,
+        x: i32,
+        y: i32,
+        z: i32,
+        memo: &mut ElementMemo,
+    ) -> (Composition, [f32; 3]) {
+        let near = memo.near(self, x as f32, z as f32, 1.0);
+        self.voxel_among(x, y, z, near.iter().map(|e| e.as_ref()))
+    }
+
+    /// The cave over world column `(x, z)` (voxels): the lowest and highest local height of its
+    /// Eq. 6 profile on its host layer, `(top of host, top of host + height)`, if a cave of
+    /// `memo`'s bounds covers the column.
+    pub fn cave_at(&self, x: f32, z: f32, memo: &mut ElementMemo) -> Option<(f32, f32)> {
+        let side = self.cell_side(ElementKind::Cave);
+        let cell = ((x / side).floor() as i32, (z / side).floor() as i32);
+        let e = memo.get(self, ElementKind::Cave, cell)?;
+        let h = e.height_at(x, z)?;
+        let (mut tops, mut grads) = (Vec::new(), Vec::new());
+        self.tops(x, z, &mut tops, &mut grads);
+        let lo = tops[e.host];
+        Some((lo, lo + h))
+    }
+
+    fn voxel_among<'a>(
+        &self,
+        x: i32,
+        y: i32,
+        z: i32,
+        near: impl Iterator<Item = &'a Element>,
+    ) -> (Composition, [f32; 3]) {
         let (xc, zc) = (x as f32 + 0.5, z as f32 + 0.5);
         let mut palette: Vec<Composition> = vec![vec![(self.void_id, 1.0)]];
         palette.extend(self.layers.iter().map(|l| l.composition.clone()));
@@ -311,7 +360,7 @@ impl SubsurfacePlan {
         self.tops(xc, zc, &mut tops, &mut grads);
         let mut spans = Vec::new();
         let mut hosts = Vec::new();
-        for e in self.elements_near(x as f32, y as f32, z as f32, 1.0) {
+        for e in near {
             if let Some(h) = e.height_at(xc, zc) {
                 palette.push(e.composition.clone());
                 hosts.push(e.host);
@@ -325,6 +374,74 @@ impl SubsurfacePlan {
         let flow = flows.mix(self, &hosts, &grads, xc, zc, m);
         (materials(&palette, &[(m.lo, 1.0 - m.t), (m.hi, m.t)]), flow)
     }
+}
+
+/// The lattice elements already built, for many queries in one neighbourhood (a volume chunk's
+/// vertices, a batch of points). It caches a pure function, so answers do not depend on what
+/// was asked before; elements whose bounding square leaves the bounds count as absent.
+#[derive(Debug, Default)]
+pub struct ElementMemo {
+    bounds: Option<[f32; 4]>,
+    cells: std::collections::BTreeMap<(bool, i32, i32), Option<std::sync::Arc<Element>>>,
+}
+
+impl ElementMemo {
+    /// A memo keeping only elements whose bounding square lies inside `[x0, x1] × [z0, z1]`
+    /// (voxels), given as `[x0, z0, x1, z1]`.
+    pub fn within(bounds: [f32; 4]) -> ElementMemo {
+        ElementMemo {
+            bounds: Some(bounds),
+            cells: Default::default(),
+        }
+    }
+
+    fn get(
+        &mut self,
+        plan: &SubsurfacePlan,
+        kind: ElementKind,
+        cell: (i32, i32),
+    ) -> Option<std::sync::Arc<Element>> {
+        let bounds = self.bounds;
+        self.cells
+            .entry((kind == ElementKind::Cave, cell.0, cell.1))
+            .or_insert_with(|| {
+                let e = plan.element(kind, cell)?;
+                square_within(&e, bounds).then(|| std::sync::Arc::new(e))
+            })
+            .clone()
+    }
+
+    /// Veins, then caves, of the cells the square `[x0, x0+size)` × `[z0, z0+size)` meets.
+    fn near(
+        &mut self,
+        plan: &SubsurfacePlan,
+        x0: f32,
+        z0: f32,
+        size: f32,
+    ) -> Vec<std::sync::Arc<Element>> {
+        let mut out = Vec::new();
+        for kind in [ElementKind::Vein, ElementKind::Cave] {
+            let side = plan.cell_side(kind);
+            let cells = |a: f32| (a / side).floor() as i32..=((a + size) / side).floor() as i32;
+            for k in cells(z0) {
+                for i in cells(x0) {
+                    out.extend(self.get(plan, kind, (i, k)));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Whether the element's bounding square lies inside `bounds = [x0, z0, x1, z1]` (voxels);
+/// always without bounds.
+fn square_within(e: &Element, bounds: Option<[f32; 4]>) -> bool {
+    bounds.is_none_or(|[x0, z0, x1, z1]| {
+        e.origin.0 >= x0
+            && e.origin.1 >= z0
+            && e.origin.0 + e.side <= x1
+            && e.origin.1 + e.side <= z1
+    })
 }
 
 /// Expands weighted palette entries into materials, merged by id and sorted.

@@ -58,9 +58,16 @@
 //!   gradient of Eq. 4 through the noise's derivative) whose horizontal direction turns about the
 //!   y axis by `π·noise`; veins and caves take their host layer's flow (the paper regenerates it
 //!   "using the same process"); the void has none. Limits store it, voxels interpolate it.
-//! - Not here: the HTTP routes, the scene element, caves carving volume chunks.
+//! - In a world (the `strata` scene element, [`spec`], [`world`], [`carve`]) the stack is
+//!   anchored to the ground: local height is `y − ground`, the top layer reaches the ground, the
+//!   ground truncates the layers it cuts, and all at or above it is air. The paper's terrain has a
+//!   flat top; a world's ground has relief, and without the anchor the noisy stack would leave
+//!   void below the ground and rock above it. Caves carve the world's solid and open the height
+//!   tiles where they reach the ground; veins do not carve.
 //!
 //! # The paper's evaluation criteria (§2.1), for this generator
+//!
+//! (Also in `docs/subsurface.md`.)
 //!
 //! Our own assessment against the paper's Table 1 requirements; the scores in brackets are on
 //! the paper's scales, and only speed and memory are measured (`strata bench strata`).
@@ -76,17 +83,23 @@
 //!   0–1 scales. Two are technical and have no geological reading: the noise `scale` and the
 //!   outline constants derived from roughness.
 //! - Control (2): the designer sets materials, affinities and densities; edit-and-regenerate
-//!   iteration (3) needs the scene integration, which is not done.
+//!   iteration (3): a `strata` element is part of the scene, edited by JSON Patch like any
+//!   element, and the tiles, chunks, columns and queries of the new version follow at once.
 //! - Ampliability (2): other terrains come from other configurations (Table 2 presets) without
 //!   code changes.
 //! - Scalability (1): `scale`, the thicknesses and the areas rescale the result; chunk size is
 //!   a parameter, up to 64. There is no level of detail.
 //! - Realism (2): plausible but not simulated. There is no erosion, tectonics or deposition.
 
+pub mod carve;
 pub mod chunk;
 pub mod config;
 pub mod plan;
+pub mod spec;
+pub mod world;
 
-pub use chunk::{Chunk, ChunkKey, Limit, Mix};
+pub use chunk::{Chunk, ChunkKey, ElementMemo, Limit, Mix};
 pub use config::{ConfigError, SubsurfaceConfig, PRESETS};
 pub use plan::{Composition, Element, ElementKind, Layer, SubsurfacePlan};
+pub use spec::{StrataError, StrataSpec};
+pub use world::Geology;

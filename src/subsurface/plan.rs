@@ -119,6 +119,10 @@ pub struct SubsurfacePlan {
     affinity: Vec<Vec<(f32, f32)>>,
     /// Lowest and highest possible top of every layer (the lattice noise is bounded).
     bounds: Vec<(f32, f32)>,
+    /// Whether the stack is anchored to the ground of a world ([`SubsurfacePlan::anchored`]):
+    /// local height 0 is the ground, the top layer reaches it everywhere, the ground truncates
+    /// every other layer, and everything at or above it is void.
+    pub ground_anchored: bool,
 }
 
 /// Largest absolute value of `terrain::noise::lattice` (the byte-sum Gaussian's extreme).
@@ -327,7 +331,36 @@ impl SubsurfacePlan {
             layers,
             void_id,
             affinity,
+            ground_anchored: false,
         }
+    }
+
+    /// [`SubsurfacePlan::new`] anchored to a world's ground (the `strata` scene element): local
+    /// height `y = 0` is the ground surface at every column. The paper's stack has its mean top
+    /// at 0 and noisy layer surfaces, which under a real ground would leave void pockets below
+    /// the ground and layers sticking out of it; anchored, every layer top is clamped to at
+    /// most 0 (the ground truncates the layers it cuts, as erosion does), the top layer's top is
+    /// 0 itself, and veins, caves and layers at or above 0 give way to the void (the air).
+    pub fn anchored(seed: u64, config: SubsurfaceConfig) -> SubsurfacePlan {
+        let mut plan = SubsurfacePlan::new(seed, config);
+        plan.ground_anchored = true;
+        let last = plan.bounds.len().saturating_sub(1);
+        for (k, b) in plan.bounds.iter_mut().enumerate() {
+            *b = if k == last {
+                (0.0, 0.0)
+            } else {
+                (b.0.min(0.0), b.1.min(0.0))
+            };
+        }
+        plan
+    }
+
+    /// The lowest and highest height any layer top can take (voxels): below the first is the
+    /// base material only.
+    pub fn depth_range(&self) -> (f32, f32) {
+        let lo = self.bounds.first().map_or(0.0, |b| b.0);
+        let hi = self.bounds.last().map_or(0.0, |b| b.1);
+        (lo, hi)
     }
 
     fn index(&self, id: u32) -> usize {
@@ -375,6 +408,15 @@ impl SubsurfacePlan {
             g_prev = g;
             top_prev = top;
             tg_prev = tg;
+        }
+        if self.ground_anchored {
+            let last = out.len().saturating_sub(1);
+            for (k, (t, g)) in out.iter_mut().zip(grads.iter_mut()).enumerate() {
+                if k == last || *t >= 0.0 {
+                    *t = 0.0;
+                    *g = (0.0, 0.0);
+                }
+            }
         }
     }
 

@@ -17,7 +17,8 @@
 //! to the tilted surface plane (better than `y − h` on slopes, same zero set and sign). `h`, `n_y`
 //! and the material come from the world's height tiles of the same LOD (vertex `(i, j)` of tile
 //! `(tx, tz)` is column `(64·tx + i, 64·tz + j)`), so chunks follow the world's edits exactly as
-//! tiles do. Volume regions and caves will replace `S` inside their boxes later.
+//! tiles do. Caves of the world's `strata` elements carve it ([`crate::subsurface::carve`]);
+//! volume regions will replace `S` inside their boxes later.
 //!
 //! # The 1-cell padding rule (same-LOD seams)
 //!
@@ -217,7 +218,14 @@ pub struct ChunkMesh {
     pub skirt_quads: Vec<[u32; 4]>,
     /// How far skirts hang below their boundary edge, metres.
     pub skirt_depth_m: f32,
+    /// Subsurface material id per vertex (the `strata` element's material found half a voxel
+    /// inside the solid, [`crate::subsurface::carve`]), [`NO_GEOLOGY`] where no element is in
+    /// force; empty when none touches the chunk.
+    pub geology: Vec<u32>,
 }
+
+/// [`ChunkMesh::geology`] of a vertex no `strata` element covers.
+pub const NO_GEOLOGY: u32 = u32::MAX;
 
 /// Meshes a chunk from its columns. `scratch` is reused between calls.
 pub fn mesh_chunk(
@@ -229,6 +237,18 @@ pub fn mesh_chunk(
     let mut sdf = Vec::new();
     let mut mats = Vec::new();
     chunk_sdf(key, spacing_m, cols, &mut sdf, &mut mats);
+    mesh_sdf(key, spacing_m, &sdf, &mats, scratch)
+}
+
+/// Meshes a chunk's padded grid as [`chunk_sdf`] lays it out (34³ values, negative inside the
+/// solid), e.g. after caves carved it ([`crate::subsurface::carve`]).
+pub fn mesh_sdf(
+    key: ChunkKey,
+    spacing_m: f32,
+    sdf: &[f32],
+    mats: &[u8],
+    scratch: &mut QuadMesh,
+) -> Result<ChunkMesh, MeshError> {
     let n = CHUNK_SAMPLES;
     let opts = MeshOptions {
         quad_min: [1; 3],
@@ -236,10 +256,10 @@ pub fn mesh_chunk(
         ..MeshOptions::new([n; 3], spacing_m)
     };
     let attrs = SampleAttributes {
-        materials: Some(&mats),
+        materials: Some(mats),
         noise: None,
     };
-    surface_nets(&sdf, attrs, &opts, scratch)?;
+    surface_nets(sdf, attrs, &opts, scratch)?;
     Ok(assemble(key, spacing_m, scratch))
 }
 

@@ -1,0 +1,63 @@
+//! The edits a height tile applies to the procedural field, in this order: the displacements
+//! of the authored regions it meets (issue 4, added by world position), then the cave breaches
+//! of the `strata` elements it meets (issue 6, the column lowered to the cave's floor where a
+//! cave reaches the ground; [`crate::subsurface::world`]). Both are pure functions of the world
+//! position of a lattice sample, so tiles that share an edge agree on it bit for bit and seam
+//! strips of the coarser LOD get the same edits.
+//!
+//! Pure: no tokio, axum or wgpu.
+
+use crate::authoring::Displacement;
+use crate::subsurface::world::breach_lattice;
+use crate::subsurface::Geology;
+use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
+use crate::terrain::tile::{field, finish};
+use crate::terrain::{Tile, TileKey, WorldPlan};
+use std::sync::Arc;
+
+/// What a tile applies on top of the procedural field.
+#[derive(Clone, Debug, Default)]
+pub struct TileEdits {
+    /// Solved authored regions meeting the tile, in document order.
+    pub displacements: Vec<Arc<Displacement>>,
+    /// `strata` elements meeting the tile, in document order.
+    pub strata: Vec<Arc<Geology>>,
+}
+
+impl TileEdits {
+    /// Applies the edits to the `w × h` lattice whose sample `(i, j)` sits at
+    /// `((gx0 + i)·s, (gz0 + j)·s)`, `s = spacing_m`, heights row-major.
+    pub fn apply(
+        &self,
+        spacing_m: f32,
+        gx0: i64,
+        gz0: i64,
+        w: usize,
+        h: usize,
+        heights: &mut [f32],
+    ) {
+        for d in &self.displacements {
+            d.add_to_lattice(spacing_m, gx0, gz0, w, h, heights);
+        }
+        if !self.strata.is_empty() {
+            breach_lattice(&self.strata, spacing_m, gx0, gz0, w, h, heights);
+        }
+    }
+}
+
+/// Synthesises tile `key` of the world `plan` with `edits` (the CPU path of the tile routes, for
+/// batch exports): the field with its margin, the edits, then normals, materials and skirts.
+pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
+    let n = TILE_VERTS + 2;
+    let (gx0, gz0) = (key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1);
+    let mut f = field(plan, key.lod, gx0, gz0, n, n);
+    edits.apply(
+        plan.lods[key.lod as usize].spacing_m,
+        gx0,
+        gz0,
+        n,
+        n,
+        &mut f.heights,
+    );
+    finish(plan, key, &f)
+}

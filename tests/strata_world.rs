@@ -1,0 +1,618 @@
+//! The subsurface in the world (issue 6, "Integration"): caves carve closed cavities into volume
+//! chunks, seamless across chunk borders; a cave that reaches the ground opens the height tiles;
+//! chunk vertices carry the material found there; and the `strata` element, the column and
+//! material-query routes work through the router with errors naming the field.
+
+use axum::body::Body;
+use axum::http::{Method, Request, StatusCode};
+use axum::Router;
+use http_body_util::BodyExt;
+use serde_json::{json, Value};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::sync::Arc;
+use strata::compute::Compute;
+use strata::edits::{synthesize, TileEdits};
+use strata::server::{app, AppState};
+use strata::subsurface::carve::mesh_world_chunk;
+use strata::subsurface::world::carved_at;
+use strata::subsurface::{ElementKind, Geology, StrataSpec, SubsurfaceConfig};
+use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
+use strata::volume::chunk::{
+    gather_columns, tiles_needed, ChunkKey, ChunkMesh, TileColumns, NO_GEOLOGY,
+};
+use strata::volume::mesh::QuadMesh;
+use tower::ServiceExt;
+
+const SEED: u64 = 7;
+
+/// B2 (one cave material) with a cave in every lattice cell.
+fn cave_config() -> SubsurfaceConfig {
+    let mut c = SubsurfaceConfig::preset("B2").expect("B2");
+    c.general.cave_density = 1.0;
+    // Taller caves than the preset's, so some reach the ground near the origin.
+    c.general.cave_thickness = 14.0;
+    c
+}
+
+fn geology() -> Arc<Geology> {
+    Arc::new(Geology::new(
+        SEED,
+        StrataSpec {
+            id: "rock".into(),
+            min: [-3000.0, -3000.0],
+            max: [3000.0, 3000.0],
+            config: cave_config(),
+            voxel_m: 1.0,
+            carve: true,
+        },
+    ))
+}
+
+struct World {
+    plan: WorldPlan,
+    edits: TileEdits,
+    tiles: HashMap<TileKey, Tile>,
+}
+
+impl World {
+    fn new(strata: bool) -> Self {
+        Self {
+            plan: WorldPlan::new(SEED, WorldParams::default()).expect("default world"),
+            edits: TileEdits {
+                displacements: Vec::new(),
+                strata: if strata { vec![geology()] } else { Vec::new() },
+            },
+            tiles: HashMap::new(),
+        }
+    }
+
+    fn tile(&mut self, key: TileKey) -> &Tile {
+        let (plan, edits) = (&self.plan, &self.edits);
+        self.tiles
+            .entry(key)
+            .or_insert_with(|| synthesize(plan, key, edits))
+    }
+
+    fn chunk(&mut self, key: ChunkKey) -> ChunkMesh {
+        let needed = tiles_needed(key);
+        for &(x, z) in &needed {
+            self.tile(TileKey { lod: key.lod, x, z });
+        }
+        let views: Vec<TileColumns<'_>> = needed
+            .iter()
+            .map(|&(x, z)| {
+                let t = &self.tiles[&TileKey { lod: key.lod, x, z }];
+                TileColumns {
+                    tile: (x, z),
+                    heights: &t.heights,
+                    normals: &t.normals,
+                    materials: &t.materials,
+                }
+            })
+            .collect();
+        let cols = gather_columns(key, &views).expect("tiles present");
+        let s = self.plan.lods[key.lod as usize].spacing_m;
+        mesh_world_chunk(key, s, &cols, &self.edits.strata, &mut QuadMesh::default()).expect("mesh")
+    }
+
+    /// LOD-0 ground height (before breaches) at integer column `(gx, gz)`.
+    fn ground(&mut self, gx: i64, gz: i64) -> f32 {
+        let t = self.tile(TileKey {
+            lod: 0,
+            x: gx.div_euclid(64),
+            z: gz.div_euclid(64),
+        });
+        let h = t.heights[(gz.rem_euclid(64) * 65 + gx.rem_euclid(64)) as usize];
+        let geos = self.edits.strata.clone();
+        let mut memos = strata::subsurface::world::memos(&geos);
+        strata::subsurface::world::ground_under(&geos, &mut memos, gx as f64, gz as f64, h)
+    }
+}
+
+/// The carved interval at every integer column of a cave's bounding square.
+fn cave_columns(g: &Geology, cell: (i32, i32)) -> Option<BTreeMap<(i64, i64), (f32, f32)>> {
+    let e = g.plan.element(ElementKind::Cave, cell)?;
+    let geos = vec![Arc::new(g.clone())];
+    let mut memos = strata::subsurface::world::memos(&geos);
+    let mut out = BTreeMap::new();
+    let (x0, z0) = (e.origin.0.floor() as i64, e.origin.1.floor() as i64);
+    let side = e.side.ceil() as i64 + 1;
+    for gz in z0..=z0 + side {
+        for gx in x0..=x0 + side {
+            if let Some(span) = carved_at(&geos, &mut memos, gx as f64, gz as f64) {
+                out.insert((gx, gz), span);
+            }
+        }
+    }
+    (!out.is_empty()).then_some(out)
+}
+
+/// Merged surface of several chunks: vertices by global cell, quads as global-cell corners.
+#[derive(Default)]
+struct Union {
+    positions: BTreeMap<[i64; 3], [f64; 3]>,
+    quads: Vec<[[i64; 3]; 4]>,
+}
+
+impl Union {
+    fn add(&mut self, key: ChunkKey, m: &ChunkMesh, s: f64) {
+        let origin = key.first_cell().map(|c| c as f64 * s);
+        for (v, cell) in m.global_cells.iter().enumerate() {
+            let p: [f64; 3] = std::array::from_fn(|a| origin[a] + f64::from(m.positions[v][a]));
+            if let Some(q) = self.positions.insert(*cell, p) {
+                assert!(
+                    (0..3).all(|a| (q[a] - p[a]).abs() < 1e-3),
+                    "a vertex shared by two chunks moved: {q:?} {p:?}"
+                );
+            }
+        }
+        for q in &m.quads {
+            self.quads.push(q.map(|v| m.global_cells[v as usize]));
+        }
+    }
+}
+
+#[test]
+fn caves_carve_closed_cavities_seamless_across_chunk_borders() {
+    let g = geology();
+    let mut world = World::new(true);
+    // An underground cave whose bounding square crosses a chunk border (x or z multiple of 32).
+    let mut found = None;
+    'search: for cz in 0..8 {
+        for cx in 0..8 {
+            let Some(cols) = cave_columns(&g, (cx, cz)) else {
+                continue;
+            };
+            let top = cols.values().map(|s| s.1).fold(f32::MIN, f32::max);
+            let xs: BTreeSet<i64> = cols.keys().map(|k| k.0.div_euclid(32)).collect();
+            let zs: BTreeSet<i64> = cols.keys().map(|k| k.1.div_euclid(32)).collect();
+            if top < -1.5 && cols.len() > 40 && (xs.len() > 1 || zs.len() > 1) {
+                found = Some(cols);
+                break 'search;
+            }
+        }
+    }
+    let cols = found.expect("an underground cave across a chunk border near the origin");
+    // The chunks holding the cave: x, z from its columns, y from the ground plus its span.
+    let (mut ylo, mut yhi) = (f64::MAX, f64::MIN);
+    for (&(gx, gz), &(a, b)) in &cols {
+        let ground = f64::from(world.ground(gx, gz));
+        ylo = ylo.min(ground + f64::from(a));
+        yhi = yhi.max(ground + f64::from(b));
+    }
+    let xs: BTreeSet<i64> = cols.keys().map(|k| k.0.div_euclid(32)).collect();
+    let zs: BTreeSet<i64> = cols.keys().map(|k| k.1.div_euclid(32)).collect();
+    let ys = (ylo.floor() as i64 - 1).div_euclid(32)..=(yhi.ceil() as i64 + 1).div_euclid(32);
+    let mut union = Union::default();
+    let mut chunks = 0;
+    for &z in &zs {
+        for y in ys.clone() {
+            for &x in &xs {
+                let key = ChunkKey { lod: 0, x, y, z };
+                let m = world.chunk(key);
+                assert_eq!(m.geology.len(), m.positions.len());
+                union.add(key, &m, 1.0);
+                chunks += 1;
+            }
+        }
+    }
+    assert!(chunks >= 2);
+    // The cavity: the quads whose vertices lie over the cave's columns, below the ground.
+    let mut ground = BTreeMap::new();
+    for &(gx, gz) in cols.keys() {
+        for (dx, dz) in [(0, 0), (1, 0), (0, 1), (1, 1), (-1, 0), (0, -1), (-1, -1)] {
+            let c = (gx + dx, gz + dz);
+            ground
+                .entry(c)
+                .or_insert_with(|| f64::from(world.ground(c.0, c.1)));
+        }
+    }
+    let in_cave = |c: &[i64; 3], y: f64| {
+        [(0, 0), (1, 0), (0, 1), (1, 1)].iter().any(|&(dx, dz)| {
+            let col = (c[0] + dx, c[2] + dz);
+            cols.contains_key(&col) && ground.get(&col).is_some_and(|g| y < g - 0.75)
+        })
+    };
+    let cavity: Vec<[[i64; 3]; 4]> = union
+        .quads
+        .iter()
+        .filter(|q| q.iter().all(|c| in_cave(c, union.positions[c][1])))
+        .copied()
+        .collect();
+    assert!(
+        cavity.len() > 20,
+        "the cave is meshed: {} quads",
+        cavity.len()
+    );
+    // Closed and consistently wound: every directed edge meets its reverse.
+    let mut directed: BTreeMap<([i64; 3], [i64; 3]), i32> = BTreeMap::new();
+    for q in &cavity {
+        for k in 0..4 {
+            *directed.entry((q[k], q[(k + 1) % 4])).or_default() += 1;
+        }
+    }
+    let open: Vec<_> = directed
+        .iter()
+        .filter(|((a, b), n)| directed.get(&(*b, *a)).copied().unwrap_or(0) != **n)
+        .collect();
+    assert!(open.is_empty(), "the cavity has {} open edges", open.len());
+    // It crosses a chunk border.
+    let cx: BTreeSet<i64> = cavity
+        .iter()
+        .flatten()
+        .map(|c| c[0].div_euclid(32) * 1000 + c[2].div_euclid(32))
+        .collect();
+    assert!(cx.len() > 1, "the cavity spans chunks");
+    // Air inside: the outward normals (out of the solid) point into the cavity, so the signed
+    // volume the quads enclose is negative, and close to the carved volume.
+    let mut volume = 0.0;
+    for q in &cavity {
+        let p = q.map(|c| union.positions[&c]);
+        for t in [[0, 1, 2], [0, 2, 3]] {
+            let (a, b, c) = (p[t[0]], p[t[1]], p[t[2]]);
+            volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                + a[2] * (b[0] * c[1] - b[1] * c[0]))
+                / 6.0;
+        }
+    }
+    let carved: f64 = cols.values().map(|(a, b)| f64::from(b - a)).sum();
+    eprintln!(
+        "cavity: {} quads across {} chunk columns, enclosing {:.1} m³ against {carved:.1} m³ carved",
+        cavity.len(),
+        cx.len(),
+        -volume
+    );
+    assert!(
+        volume < 0.0 && (-volume) > 0.4 * carved && (-volume) < 1.6 * carved,
+        "enclosed {volume} m³ against {carved} m³ carved"
+    );
+}
+
+#[test]
+fn a_cave_reaching_the_ground_opens_the_height_tiles() {
+    let g = geology();
+    let mut with = World::new(true);
+    let mut without = World::new(false);
+    // A breaching column of a cave near the origin.
+    let mut breach = None;
+    'search: for cz in -4..4 {
+        for cx in -4..4 {
+            if let Some(cols) = cave_columns(&g, (cx, cz)) {
+                if let Some((&c, &(a, _))) = cols.iter().find(|(_, s)| s.0 < -1.0 && s.1 > 0.0) {
+                    breach = Some((c, a));
+                    break 'search;
+                }
+            }
+        }
+    }
+    let ((gx, gz), a) = breach.expect("a cave reaching the ground");
+    let key = TileKey {
+        lod: 0,
+        x: gx.div_euclid(64),
+        z: gz.div_euclid(64),
+    };
+    let v = (gz.rem_euclid(64) * 65 + gx.rem_euclid(64)) as usize;
+    let (h, h0) = (with.tile(key).heights[v], without.tile(key).heights[v]);
+    assert_eq!(h, h0 + a, "the vertex sits on the cave floor");
+    let changed = with
+        .tile(key)
+        .heights
+        .clone()
+        .iter()
+        .zip(&without.tile(key).heights)
+        .filter(|(p, q)| p != q)
+        .count();
+    assert!(
+        (1..65 * 65 / 2).contains(&changed),
+        "{changed} vertices opened"
+    );
+    // Neighbours still share their edges bit for bit.
+    for lod in 0..3u32 {
+        let k = TileKey {
+            lod,
+            x: gx.div_euclid(64 << lod),
+            z: gz.div_euclid(64 << lod),
+        };
+        let t = with.tile(k).heights.clone();
+        let east = with.tile(TileKey { x: k.x + 1, ..k }).heights.clone();
+        let south = with.tile(TileKey { z: k.z + 1, ..k }).heights.clone();
+        for i in 0..65 {
+            assert_eq!(t[i * 65 + 64].to_bits(), east[i * 65].to_bits());
+            assert_eq!(t[64 * 65 + i].to_bits(), south[i].to_bits());
+        }
+    }
+}
+
+#[test]
+fn chunk_vertices_carry_the_material_found_there() {
+    let g = geology();
+    let mut world = World::new(true);
+    let top_layer = g.plan.layers.last().expect("layers").composition[0].0;
+    let cave_ids: Vec<u32> = g
+        .plan
+        .config
+        .materials
+        .iter()
+        .filter(|m| m.flags.cave || m.flags.void)
+        .map(|m| m.id)
+        .collect();
+    // The ground chunk over the origin: every up-facing vertex shows the top layer, possibly
+    // mixed with what lies just under it; none shows air or a cave.
+    let ground = world.ground(5, 5);
+    let mut ups = Vec::new();
+    let mut key = ChunkKey {
+        lod: 0,
+        x: 0,
+        y: 0,
+        z: 0,
+    };
+    for y in (ground as i64).div_euclid(32) - 1..=(ground as i64).div_euclid(32) + 1 {
+        key.y = y;
+        let m = world.chunk(key);
+        assert_eq!(m.geology.len(), m.positions.len());
+        ups.extend(
+            m.normals
+                .iter()
+                .zip(&m.geology)
+                .filter(|(n, _)| n[1] > 0.9)
+                .map(|(_, &id)| id),
+        );
+    }
+    assert!(ups.len() > 100);
+    let on_top = ups.iter().filter(|&&id| id == top_layer).count();
+    assert!(
+        on_top * 2 > ups.len(),
+        "{on_top} of {} on the top layer",
+        ups.len()
+    );
+    let odd: Vec<u32> = ups
+        .iter()
+        .copied()
+        .filter(|id| *id == NO_GEOLOGY || cave_ids.contains(id))
+        .collect();
+    assert!(
+        odd.is_empty(),
+        "{odd:?} (top layer {top_layer}, caves {cave_ids:?})"
+    );
+    // Without a strata element there is no geology.
+    let mut bare = World::new(false);
+    assert!(bare.chunk(key).geology.is_empty());
+}
+
+// ----- HTTP -----
+
+const ADMIN: &str = "server-admin-token-for-strata";
+
+async fn send(app: &Router, method: Method, uri: &str, body: Option<Value>) -> (StatusCode, Value) {
+    let mut req = Request::builder()
+        .method(method)
+        .uri(uri)
+        .header("authorization", format!("Bearer {ADMIN}"));
+    if body.is_some() {
+        req = req.header("content-type", "application/json");
+    }
+    let body = body.map_or_else(Body::empty, |b| Body::from(b.to_string()));
+    let res = app
+        .clone()
+        .oneshot(req.body(body).expect("request"))
+        .await
+        .expect("infallible");
+    let status = res.status();
+    let bytes = res.into_body().collect().await.expect("body").to_bytes();
+    let v = serde_json::from_slice(&bytes).unwrap_or(Value::Null);
+    (status, v)
+}
+
+fn expect_error(reply: &(StatusCode, Value), field: &str) {
+    assert!(reply.0.is_client_error(), "{reply:?}");
+    assert_eq!(reply.1["error"]["field"], field, "{}", reply.1);
+}
+
+fn router(dir: &std::path::Path) -> Router {
+    let store = strata::store::SqliteStore::open_in_dir(dir).expect("store");
+    app(AppState::new(Compute::cpu()).with_worlds(Arc::new(store), Some(ADMIN)))
+}
+
+fn strata_element(config: Value) -> Value {
+    json!({"id": "rock", "bbox": {"min": [-3000, -3000], "max": [3000, 3000]},
+           "config": config, "voxel_m": 1.0})
+}
+
+/// The composition of voxel `(i, j, k)` from a `strata.columns.v1` document, by interpolation
+/// between the stored limits.
+fn from_limits(doc: &Value, i: i64, j: i64, k: i64) -> BTreeMap<u64, f64> {
+    let size = doc["size"].as_i64().expect("size");
+    let (li, lk) = (
+        i - doc["x"].as_i64().expect("x") * size,
+        k - doc["z"].as_i64().expect("z") * size,
+    );
+    let cy = j.div_euclid(size);
+    let ly = j.rem_euclid(size);
+    let chunk = doc["chunks"]
+        .as_array()
+        .expect("chunks")
+        .iter()
+        .find(|c| c["y"] == cy)
+        .expect("the chunk of the voxel");
+    let counts: Vec<usize> = chunk["counts"]
+        .as_array()
+        .expect("counts")
+        .iter()
+        .map(|c| c.as_u64().expect("count") as usize)
+        .collect();
+    let col = (lk * size + li) as usize;
+    let start: usize = counts[..col].iter().sum();
+    let limits = &chunk["limits"].as_array().expect("limits")[start..start + counts[col]];
+    let at = |l: &Value, w: f64, out: &mut BTreeMap<u64, f64>| {
+        let t = l[3].as_f64().expect("t");
+        for (p, pw) in [
+            (l[1].as_u64().expect("lo"), 1.0 - t),
+            (l[2].as_u64().expect("hi"), t),
+        ] {
+            for e in chunk["palette"][p as usize].as_array().expect("palette") {
+                let id = e[0].as_u64().expect("id");
+                *out.entry(id).or_default() += w * pw * e[1].as_f64().expect("c");
+            }
+        }
+    };
+    let mut out = BTreeMap::new();
+    let above = limits
+        .iter()
+        .position(|l| l[0].as_i64().expect("y") >= ly)
+        .unwrap_or(limits.len() - 1);
+    let hi = &limits[above];
+    let hy = hi[0].as_i64().expect("y");
+    if hy == ly || above == 0 {
+        at(hi, 1.0, &mut out);
+    } else {
+        let lo = &limits[above - 1];
+        let lyy = lo[0].as_i64().expect("y");
+        let f = (ly - lyy) as f64 / (hy - lyy) as f64;
+        at(lo, 1.0 - f, &mut out);
+        at(hi, f, &mut out);
+    }
+    out.retain(|_, w| *w > 1e-7);
+    out
+}
+
+#[tokio::test]
+async fn columns_and_material_queries_agree_through_the_router() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let app = router(dir.path());
+    let config = serde_json::to_value(cave_config()).expect("config");
+    // A bad element is refused with its field.
+    let mut bad = config.clone();
+    bad["general"]["cave_density"] = json!(2);
+    let r = send(
+        &app,
+        Method::POST,
+        "/v1/worlds",
+        Some(json!({"seed": SEED, "scene": {"strata": [strata_element(bad)]}})),
+    )
+    .await;
+    assert!(r.0.is_client_error(), "{r:?}");
+    assert!(
+        r.1.to_string()
+            .contains("/strata/0/config/general/cave_density"),
+        "{}",
+        r.1
+    );
+    let r = send(
+        &app,
+        Method::POST,
+        "/v1/worlds",
+        Some(json!({"seed": SEED, "scene": {"strata": [strata_element(config)]}})),
+    )
+    .await;
+    assert_eq!(r.0, StatusCode::CREATED, "{r:?}");
+    let id = r.1["id"].as_str().expect("id").to_string();
+
+    let (status, doc) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/columns/1/-1.json?size=8"),
+        None,
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{doc}");
+    assert_eq!(doc["format"], "strata.columns.v1");
+    assert_eq!(doc["ground_m"].as_array().expect("ground").len(), 64);
+    // Points in the column chunk, at several depths; the query answers what the limits store.
+    let mut points = Vec::new();
+    let mut voxels = Vec::new();
+    for (n, c) in [(0i64, 0i64), (3, 5), (7, 7), (2, 6)] {
+        let (i, k) = (8 + n, -8 + c);
+        let g = doc["ground_m"][(c * 8 + n) as usize]
+            .as_f64()
+            .expect("ground");
+        for depth in [0.5, 2.5, 7.5, 15.5, 33.5] {
+            points.push(json!([i as f64 + 0.25, g - depth, k as f64 + 0.75]));
+            voxels.push((i, (-depth).floor() as i64, k));
+        }
+    }
+    let (status, answer) = send(
+        &app,
+        Method::POST,
+        &format!("/v1/worlds/{id}/materials/query"),
+        Some(json!({ "points": points })),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{answer}");
+    let results = answer["results"].as_array().expect("results");
+    assert_eq!(results.len(), voxels.len());
+    for (r, &(i, j, k)) in results.iter().zip(&voxels) {
+        assert_eq!(r["strata"], "rock");
+        assert_eq!(r["voxel"], json!([i, j, k]), "{r}");
+        let got: BTreeMap<u64, f64> = r["composition"]
+            .as_array()
+            .expect("composition")
+            .iter()
+            .map(|c| {
+                (
+                    c["id"].as_u64().expect("id"),
+                    c["concentration"].as_f64().expect("c"),
+                )
+            })
+            .filter(|(_, w)| *w > 1e-7)
+            .collect();
+        let stored = from_limits(&doc, i, j, k);
+        assert_eq!(
+            got.keys().collect::<Vec<_>>(),
+            stored.keys().collect::<Vec<_>>(),
+            "{r}"
+        );
+        for (id, w) in &got {
+            // f32 limits interpolated in f64 here and in f32 by the server: 1e-5.
+            assert!((w - stored[id]).abs() < 1e-5, "{id}: {w} vs {}", stored[id]);
+        }
+        let total: f64 = got.values().sum();
+        assert!((total - 1.0).abs() < 1e-5, "concentrations sum to {total}");
+    }
+    // A world chunk carries the geology.
+    let (status, chunk) = send(
+        &app,
+        Method::GET,
+        &format!(
+            "/v1/worlds/{id}/chunks/0/0/{}/0.json",
+            (doc["ground_m"][0].as_f64().expect("g") as i64).div_euclid(32)
+        ),
+        None,
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK);
+    assert_eq!(
+        chunk["geology"].as_array().map(Vec::len),
+        chunk["vertex_count"].as_u64().map(|n| n as usize)
+    );
+    // Bad input names the field.
+    for (uri, field) in [
+        (format!("/v1/worlds/{id}/columns/1/2.json?size=0"), "size"),
+        (format!("/v1/worlds/{id}/columns/1/2.json?size=99"), "size"),
+        (format!("/v1/worlds/{id}/columns/x/2.json"), "x"),
+        (format!("/v1/worlds/{id}/columns/1/2.png"), "format"),
+        (
+            format!("/v1/worlds/{id}/columns/1/2.json?strata=nope"),
+            "strata",
+        ),
+        (format!("/v1/worlds/{id}/columns/1/2.json?v=9"), "v"),
+    ] {
+        expect_error(&send(&app, Method::GET, &uri, None).await, field);
+    }
+    let q = format!("/v1/worlds/{id}/materials/query");
+    for (body, field) in [
+        (json!({"points": [[1, 2]]}), "points/0"),
+        (json!({"points": [[1, "a", 2]]}), "points/0/1"),
+        (json!({"pts": []}), "points"),
+        (json!({"points": [[1e12, 0, 0]]}), "points/0/0"),
+        (
+            json!({"points": (0..5000).map(|_| json!([0, 0, 0])).collect::<Vec<_>>()}),
+            "points",
+        ),
+        (
+            json!({"points": (0..100).map(|i| json!([i * 64, 0, 0])).collect::<Vec<_>>()}),
+            "points",
+        ),
+    ] {
+        expect_error(&send(&app, Method::POST, &q, Some(body)).await, field);
+    }
+}
