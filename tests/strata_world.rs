@@ -131,6 +131,9 @@ fn cave_columns(g: &Geology, cell: (i32, i32)) -> Option<BTreeMap<(i64, i64), (f
 #[derive(Default)]
 struct Union {
     positions: BTreeMap<[i64; 3], [f64; 3]>,
+    /// Bits of each vertex's in-cell offset, normal and material, to compare across chunks.
+    bits: BTreeMap<[i64; 3], ([u32; 3], [u32; 3], u32)>,
+    shared: usize,
     quads: Vec<[[i64; 3]; 4]>,
 }
 
@@ -139,11 +142,15 @@ impl Union {
         let origin = key.first_cell().map(|c| c as f64 * s);
         for (v, cell) in m.global_cells.iter().enumerate() {
             let p: [f64; 3] = std::array::from_fn(|a| origin[a] + f64::from(m.positions[v][a]));
-            if let Some(q) = self.positions.insert(*cell, p) {
-                assert!(
-                    (0..3).all(|a| (q[a] - p[a]).abs() < 1e-3),
-                    "a vertex shared by two chunks moved: {q:?} {p:?}"
-                );
+            self.positions.insert(*cell, p);
+            let bits = (
+                m.offsets[v].map(f32::to_bits),
+                m.normals[v].map(f32::to_bits),
+                m.geology[v],
+            );
+            if let Some(before) = self.bits.insert(*cell, bits) {
+                self.shared += 1;
+                assert_eq!(before, bits, "vertex {cell:?} differs between two chunks");
             }
         }
         for q in &m.quads {
@@ -197,6 +204,10 @@ fn caves_carve_closed_cavities_seamless_across_chunk_borders() {
         }
     }
     assert!(chunks >= 2);
+    assert!(
+        union.shared > 0,
+        "neighbouring chunks share the vertices of their border cells"
+    );
     // The cavity: the quads whose vertices lie over the cave's columns, below the ground.
     let mut ground = BTreeMap::new();
     for &(gx, gz) in cols.keys() {
@@ -384,11 +395,14 @@ fn chunk_vertices_carry_the_material_found_there() {
 const ADMIN: &str = "server-admin-token-for-strata";
 
 async fn send(app: &Router, method: Method, uri: &str, body: Option<Value>) -> (StatusCode, Value) {
+    let patch = uri.ends_with("/edits");
     let mut req = Request::builder()
         .method(method)
         .uri(uri)
         .header("authorization", format!("Bearer {ADMIN}"));
-    if body.is_some() {
+    if patch {
+        req = req.header("content-type", "application/json-patch+json");
+    } else if body.is_some() {
         req = req.header("content-type", "application/json");
     }
     let body = body.map_or_else(Body::empty, |b| Body::from(b.to_string()));
@@ -615,4 +629,79 @@ async fn columns_and_material_queries_agree_through_the_router() {
     ] {
         expect_error(&send(&app, Method::POST, &q, Some(body)).await, field);
     }
+}
+
+#[tokio::test]
+async fn editing_the_strata_element_changes_the_tiles_it_opens() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let app = router(dir.path());
+    let config = serde_json::to_value(cave_config()).expect("config");
+    let (status, created) = send(
+        &app,
+        Method::POST,
+        "/v1/worlds",
+        Some(json!({"seed": SEED, "scene": {"strata": [strata_element(config)]}})),
+    )
+    .await;
+    assert_eq!(status, StatusCode::CREATED, "{created}");
+    let id = created["id"].as_str().expect("id").to_string();
+    // A column where a cave of this element reaches the ground.
+    let g = geology();
+    let mut breach = None;
+    'search: for cz in -4..4 {
+        for cx in -4..4 {
+            if let Some(cols) = cave_columns(&g, (cx, cz)) {
+                if let Some((&c, &(a, _))) = cols.iter().find(|(_, s)| s.0 < -1.0 && s.1 > 0.0) {
+                    breach = Some((c, a));
+                    break 'search;
+                }
+            }
+        }
+    }
+    let ((gx, gz), a) = breach.expect("a cave reaching the ground");
+    let (tx, tz) = (gx.div_euclid(64), gz.div_euclid(64));
+    let v = (gz.rem_euclid(64) * 65 + gx.rem_euclid(64)) as usize;
+    let height = |doc: &Value| doc["heights"][v].as_f64().expect("height");
+    let (_, v1) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/tiles/0/{tx}/{tz}.json?v=1"),
+        None,
+    )
+    .await;
+    // Turn carving off: the cave no longer opens the ground.
+    let (status, ack) = send(
+        &app,
+        Method::POST,
+        &format!("/v1/worlds/{id}/edits"),
+        Some(json!([{"op": "add", "path": "/strata/0/carve", "value": false}])),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{ack}");
+    assert_eq!(ack["version"], 2);
+    let (_, v2) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/tiles/0/{tx}/{tz}.json?v=2"),
+        None,
+    )
+    .await;
+    assert!(
+        (height(&v1) - (height(&v2) + f64::from(a))).abs() < 1e-3,
+        "v1 {} = v2 {} + floor {a}",
+        height(&v1),
+        height(&v2)
+    );
+    // A bad edit is refused with the pointer of the bad value, and nothing changes.
+    let (status, err) = send(
+        &app,
+        Method::POST,
+        &format!("/v1/worlds/{id}/edits"),
+        Some(json!([{"op": "replace", "path": "/strata/0/voxel_m", "value": 50}])),
+    )
+    .await;
+    assert!(status.is_client_error(), "{err}");
+    assert!(err.to_string().contains("/strata/0/voxel_m"), "{err}");
+    let (_, latest) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), None).await;
+    assert_eq!(latest["version"], 2);
 }
