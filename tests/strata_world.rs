@@ -92,7 +92,15 @@ impl World {
             .collect();
         let cols = gather_columns(key, &views).expect("tiles present");
         let s = self.plan.lods[key.lod as usize].spacing_m;
-        mesh_world_chunk(key, s, &cols, &self.edits.strata, &mut QuadMesh::default()).expect("mesh")
+        mesh_world_chunk(
+            key,
+            s,
+            &cols,
+            &[],
+            &self.edits.strata,
+            &mut QuadMesh::default(),
+        )
+        .expect("mesh")
     }
 
     /// LOD-0 ground height (before breaches) at integer column `(gx, gz)`.

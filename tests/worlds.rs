@@ -1165,6 +1165,10 @@ fn scene_schema_describes_what_the_server_accepts() {
     // Regions are interpreted (issue 4): their fields are the grid and the tool operations.
     full["regions"] = json!([{"id": "regions-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "samples": 65, "ops": [{"op": "elevation", "shape": {"point": [0.0, 1.0]}, "elevation_m": 3.0, "radius_m": 1.0}]}]);
+    // So are volume regions (issue 5): the vertical extent, grid spacing and primitives.
+    full["volumes"] = json!([{"id": "volumes-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
+        "y_m": [0.0, 8.0], "spacing_m": 1.0, "dead_zone_m": 2.0, "curves": [], "meshes": [],
+        "ground": {"alpha": 0.3, "beta": 0.5, "material": 0}}]);
     // So are strata elements (issue 6): a preset or a configuration, the voxel size, carving.
     full["strata"] = json!([{"id": "strata-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "preset": "B2", "voxel_m": 0.5, "carve": false}]);

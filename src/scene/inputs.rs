@@ -35,6 +35,7 @@ use super::{Element, Rect, Scene};
 use crate::authoring::RegionSpec;
 use crate::subsurface::{Geology, StrataSpec};
 use crate::terrain::{TileKey, WorldParams};
+use crate::volume::element::VolumeSpec;
 use serde_json::Value;
 use std::sync::Arc;
 
@@ -139,6 +140,17 @@ pub struct SceneInputs {
     elements: Vec<ElementInput>,
     regions: Vec<RegionInput>,
     strata: Vec<StrataInput>,
+    volumes: Vec<VolumeInput>,
+}
+
+/// A volume region of the scene, parsed, with the digest that keys its solution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VolumeInput {
+    /// Digest of the world settings and the element: equal digests, equal solutions (with the
+    /// seed).
+    pub digest: [u8; 32],
+    /// The parsed element.
+    pub spec: Arc<VolumeSpec>,
 }
 
 /// A `strata` element of the scene, parsed; bound to the world's seed on first use.
@@ -226,13 +238,46 @@ impl SceneInputs {
                 })
             })
             .collect();
+        let volumes = scene
+            .volumes
+            .iter()
+            .filter_map(|e| {
+                let spec = VolumeSpec::from_element(e).ok()?;
+                let mut h = blake3::Hasher::new();
+                h.update(&world_digest);
+                h.update(&digest(e));
+                Some(VolumeInput {
+                    digest: *h.finalize().as_bytes(),
+                    spec: Arc::new(spec),
+                })
+            })
+            .collect();
         Self {
             world: scene.world.clone(),
             world_digest,
             elements,
             regions,
             strata,
+            volumes,
         }
+    }
+
+    /// The volume regions whose box meets the world-space box `[lo, hi]` (metres, `[x, y, z]`),
+    /// in document order.
+    pub fn volumes_meeting(&self, lo: [f64; 3], hi: [f64; 3]) -> Vec<VolumeInput> {
+        self.volumes
+            .iter()
+            .filter(|v| {
+                let s = &v.spec;
+                lo[0] < s.max[0]
+                    && hi[0] > s.min[0]
+                    && lo[2] < s.max[1]
+                    && hi[2] > s.min[1]
+                    && lo[1] < f64::from(s.y_m[1])
+                    && hi[1] > f64::from(s.y_m[0])
+            })
+            .cloned()
+            .collect()
     }
 
     /// The `strata` elements, in document order.
@@ -283,6 +328,7 @@ impl SceneInputs {
             elements: Vec::new(),
             regions: Vec::new(),
             strata: Vec::new(),
+            volumes: Vec::new(),
         }
     }
 

@@ -17,7 +17,7 @@ mod inputs;
 pub use dirty::{dirty_region, Dirty, Rect};
 pub use inputs::{
     canonical_json, margin_m, tile_footprint, tile_inputs, tile_reach, RegionInput, SceneInputs,
-    StrataInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
+    StrataInput, VolumeInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
 };
 
 use crate::terrain::world::ParamError;
@@ -232,6 +232,10 @@ impl Scene {
                 }
                 if kind == "regions" {
                     crate::authoring::RegionSpec::from_element(e)
+                        .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+                }
+                if kind == "volumes" {
+                    crate::volume::element::VolumeSpec::from_element(e)
                         .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
                 }
                 if kind == "strata" {

@@ -10,7 +10,8 @@
 //! the field ([`AppError`]). Limits: `lod` in `0..=3`, `|x|, |z| ≤ 2·max_tile_coord(lod) − 1`,
 //! `|y| ≤ max_chunk_y(lod)`. A chunk's heights come from the same-LOD height tiles through the
 //! stage cache, so a world chunk reflects the world's edits like its tiles do, and the caves of
-//! the world's `strata` elements carve it ([`crate::subsurface::carve`]). Responses carry a
+//! the world's `strata` elements carve it ([`crate::subsurface::carve`]); its `volumes` elements
+//! (solved once per version, [`super::volumes`]) blend in ([`crate::volume::element`]). Responses carry a
 //! content-hash `ETag`; seed chunks are immutable, world chunks follow the world tiles' caching
 //! (immutable when pinned with `?v=N`, short-lived otherwise).
 
@@ -129,6 +130,16 @@ fn chunk_rect(key: ChunkKey, spacing_m: f32) -> Rect {
     }
 }
 
+/// The world-space box of a chunk's padded samples, metres (`[x, y, z]` corners).
+fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
+    let s = f64::from(spacing_m);
+    let first = key.first_cell();
+    (
+        first.map(|c| (c - 1) as f64 * s),
+        first.map(|c| (c + CHUNK_CELLS as i64 + 1) as f64 * s),
+    )
+}
+
 /// Meshes and encodes a chunk in one synthesis slot.
 async fn product(
     st: &AppState,
@@ -155,6 +166,13 @@ async fn product(
         }
         let spacing_m = plan.lods[key.lod as usize].spacing_m;
         let strata = inputs.strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
+        let (lo, hi) = chunk_box(key, spacing_m);
+        let mut volumes = Vec::new();
+        for v in inputs.volumes_meeting(lo, hi) {
+            if let Some(solved) = state.volumes.get(&plan, &v).await {
+                volumes.push(solved);
+            }
+        }
         let info = ChunkInfo {
             seed: plan.seed,
             key,
@@ -172,8 +190,15 @@ async fn product(
                 .collect();
             let cols = gather_columns(key, &views)
                 .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
-            let mesh = mesh_world_chunk(key, spacing_m, &cols, &strata, &mut QuadMesh::default())
-                .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
+            let mesh = mesh_world_chunk(
+                key,
+                spacing_m,
+                &cols,
+                &volumes,
+                &strata,
+                &mut QuadMesh::default(),
+            )
+            .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
             let (body, content_type) = match format {
                 Format::Json => (encode_json(&info, &mesh), Format::Json.content_type()),
                 Format::Bin => (encode_bin(&info, &mesh), BIN_CONTENT_TYPE),

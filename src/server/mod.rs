@@ -38,6 +38,7 @@ pub mod params;
 mod plans;
 pub mod regions;
 pub mod routes;
+pub mod volumes;
 pub mod worlds;
 
 pub use error::AppError;
@@ -103,6 +104,8 @@ pub struct AppState {
     pub jobs: Arc<jobs::Jobs>,
     /// Solved authored regions.
     pub regions: Arc<regions::RegionCache>,
+    /// Solved volume regions.
+    pub volumes: Arc<volumes::VolumeCache>,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -132,6 +135,7 @@ impl AppState {
                 jobs::JobLimits::default(),
             )),
             regions: Arc::default(),
+            volumes: Arc::default(),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),

@@ -23,15 +23,17 @@ use super::world::{carved_at, ground_under, in_force, main_material, memos, Geol
 use crate::volume::chunk::{
     chunk_sdf, mesh_sdf, ChunkKey, ChunkMesh, Columns, CHUNK_CELLS, CHUNK_SAMPLES, NO_GEOLOGY,
 };
+use crate::volume::element::SolvedVolume;
 use crate::volume::mesh::{MeshError, QuadMesh};
 use std::sync::Arc;
 
 /// Half-voxel steps a vertex looks into the solid for its material.
 pub const MATERIAL_STEPS: usize = 4;
 
-/// Meshes chunk `key` of a world whose tiles gave `cols`, with the caves of `geos` (the
-/// `strata` elements meeting the chunk, in document order) carved and vertex materials set.
-/// With no element it equals [`crate::volume::chunk::mesh_chunk`].
+/// Meshes chunk `key` of a world whose tiles gave `cols`: the heightfield solid, the volume
+/// regions `volumes` blended in (in document order, [`SolvedVolume::blend`]), then the caves of
+/// `geos` (the `strata` elements meeting the chunk, in document order) carved and vertex
+/// materials set. With no element it equals [`crate::volume::chunk::mesh_chunk`].
 ///
 /// # Errors
 /// [`MeshError`] if the mesher refuses the grid.
@@ -39,18 +41,22 @@ pub fn mesh_world_chunk(
     key: ChunkKey,
     spacing_m: f32,
     cols: &Columns,
+    volumes: &[Arc<SolvedVolume>],
     geos: &[Arc<Geology>],
     scratch: &mut QuadMesh,
 ) -> Result<ChunkMesh, MeshError> {
     let mut sdf = Vec::new();
     let mut mats = Vec::new();
     chunk_sdf(key, spacing_m, cols, &mut sdf, &mut mats);
-    if geos.is_empty() {
-        return mesh_sdf(key, spacing_m, &sdf, &mats, scratch);
-    }
     let n = CHUNK_SAMPLES;
     let [gx0, gy0, gz0] = key.first_cell().map(|c| c - 1);
     let s = f64::from(spacing_m);
+    for v in volumes {
+        blend_volume(v, [gx0, gy0, gz0], s, &mut sdf);
+    }
+    if geos.is_empty() {
+        return mesh_sdf(key, spacing_m, &sdf, &mats, scratch);
+    }
     let mut memos = memos(geos);
     let mut ground = vec![0.0f32; n * n];
     for k in 0..n {
@@ -92,6 +98,30 @@ pub fn mesh_world_chunk(
         })
         .collect();
     Ok(mesh)
+}
+
+/// Blends a volume region into the padded grid whose first sample is global `first`
+/// ([`SolvedVolume::blend`]); samples outside the region's box keep their value.
+fn blend_volume(v: &SolvedVolume, first: [i64; 3], s: f64, sdf: &mut [f32]) {
+    let n = CHUNK_SAMPLES;
+    let lo = first.map(|c| c as f64 * s);
+    let hi = first.map(|c| (c + n as i64 - 1) as f64 * s);
+    if !v.meets(lo, hi) {
+        return;
+    }
+    for k in 0..n {
+        for j in 0..n {
+            for i in 0..n {
+                let p = [
+                    (first[0] + i as i64) as f64 * s,
+                    (first[1] + j as i64) as f64 * s,
+                    (first[2] + k as i64) as f64 * s,
+                ];
+                let c = (k * n + j) * n + i;
+                sdf[c] = v.blend(p, sdf[c]);
+            }
+        }
+    }
 }
 
 /// The padded column grid of a chunk and its ground, metres.

@@ -5,5 +5,6 @@
 //! [`pipeline`] builds a volume region's fields from feature curves.
 
 pub mod chunk;
+pub mod element;
 pub mod mesh;
 pub mod pipeline;

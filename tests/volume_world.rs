@@ -1,0 +1,151 @@
+//! Volume regions in the world (issue 5, "Volume chunks everywhere"): a `volumes` element with the
+//! arch curves puts an arch into the volume chunks, the chunks beside the box are untouched bit
+//! for bit (the region meets the heightfield without a gap), and the element is validated with
+//! errors naming the field.
+
+use serde_json::{json, Value};
+use std::sync::Arc;
+use strata::edits::{synthesize, TileEdits};
+use strata::scene::{Element, Scene};
+use strata::subsurface::carve::mesh_world_chunk;
+use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
+use strata::volume::chunk::{gather_columns, tiles_needed, ChunkKey, ChunkMesh, TileColumns};
+use strata::volume::element::{solve_volume, SolvedVolume, VolumeSpec};
+use strata::volume::mesh::{QuadClass, QuadMesh};
+use strata::volume::pipeline::scenes;
+
+const SEED: u64 = 7;
+
+fn plan() -> WorldPlan {
+    WorldPlan::new(SEED, WorldParams::default()).expect("default world")
+}
+
+fn tiles(plan: &WorldPlan, key: ChunkKey) -> Vec<(TileKey, Tile)> {
+    tiles_needed(key)
+        .into_iter()
+        .map(|(x, z)| {
+            let tk = TileKey { lod: key.lod, x, z };
+            (tk, synthesize(plan, tk, &TileEdits::default()))
+        })
+        .collect()
+}
+
+fn chunk(plan: &WorldPlan, key: ChunkKey, volumes: &[Arc<SolvedVolume>]) -> ChunkMesh {
+    let t = tiles(plan, key);
+    let views: Vec<TileColumns<'_>> = t
+        .iter()
+        .map(|(k, t)| TileColumns {
+            tile: (k.x, k.z),
+            heights: &t.heights,
+            normals: &t.normals,
+            materials: &t.materials,
+        })
+        .collect();
+    let cols = gather_columns(key, &views).expect("tiles present");
+    let s = plan.lods[key.lod as usize].spacing_m;
+    mesh_world_chunk(key, s, &cols, volumes, &[], &mut QuadMesh::default()).expect("mesh")
+}
+
+/// The arch scene's curves lifted so their feet stand on the world's ground at the box centre.
+fn arch_element(ground: f32) -> Value {
+    let (_, scene, _) = scenes::arch([64, 32, 48]);
+    let mut curves = serde_json::to_value(&scene.curves).expect("curves");
+    for c in curves.as_array_mut().expect("array") {
+        for p in c["control_points"].as_array_mut().expect("points") {
+            let y = p[1].as_f64().expect("y");
+            p[1] = json!(y - 4.0 + f64::from(ground));
+        }
+    }
+    json!({"id": "arch", "bbox": {"min": [0, 0], "max": [64, 48]},
+           "y_m": [ground - 12.0, ground + 36.0], "spacing_m": 1.0, "dead_zone_m": 6.0,
+           "curves": curves})
+}
+
+fn ground_at(plan: &WorldPlan, x: i64, z: i64) -> f32 {
+    let t = synthesize(plan, TileKey { lod: 0, x: 0, z: 0 }, &TileEdits::default());
+    t.heights[(z * 65 + x) as usize]
+}
+
+fn element(v: Value) -> Element {
+    serde_json::from_value(v).expect("element")
+}
+
+/// Sign changes of the solid along the vertical line through global column `(gx, gz)`: the
+/// quads whose grid edge is vertical there.
+fn crossings(meshes: &[ChunkMesh], gx: i64, gz: i64) -> usize {
+    meshes
+        .iter()
+        .map(|m| {
+            m.classes
+                .iter()
+                .zip(&m.global_edges)
+                .filter(|(c, e)| {
+                    matches!(c, QuadClass::PosY | QuadClass::NegY) && e[0] == gx && e[2] == gz
+                })
+                .count()
+        })
+        .sum()
+}
+
+#[test]
+fn a_volume_element_puts_an_arch_into_the_chunks_and_leaves_the_rest() {
+    let plan = plan();
+    let ground = ground_at(&plan, 32, 24);
+    let spec = VolumeSpec::from_element(&element(arch_element(ground))).expect("valid element");
+    let solved = Arc::new(solve_volume(&plan, &spec).expect("solved"));
+    let volumes = vec![solved];
+    let ys = ((ground - 12.0) as i64).div_euclid(32)..=((ground + 36.0) as i64).div_euclid(32);
+    let mut with = Vec::new();
+    let mut without = Vec::new();
+    for y in ys.clone() {
+        let key = ChunkKey {
+            lod: 0,
+            x: 1,
+            y,
+            z: 0,
+        };
+        with.push(chunk(&plan, key, &volumes));
+        without.push(chunk(&plan, key, &[]));
+    }
+    // Under the arch's crown (x = 32, z = 24): ground, intrados and extrados.
+    let (n_with, n_without) = (crossings(&with, 32, 24), crossings(&without, 32, 24));
+    eprintln!("crossings under the crown: {n_with} with the arch, {n_without} without");
+    assert_eq!(n_without, 1, "the heightfield crosses once");
+    assert!(n_with >= 3, "the arch adds its span: {n_with} crossings");
+    // Beside the box (x < 0), the chunks are the heightfield's, bit for bit.
+    for y in ys {
+        let key = ChunkKey {
+            lod: 0,
+            x: -1,
+            y,
+            z: 0,
+        };
+        let (a, b) = (chunk(&plan, key, &volumes), chunk(&plan, key, &[]));
+        assert_eq!(a.positions, b.positions);
+        assert_eq!(a.normals, b.normals);
+        assert_eq!(a.quads, b.quads);
+    }
+}
+
+#[test]
+fn volume_elements_are_validated_with_the_field_named() {
+    let plan = plan();
+    let good = arch_element(ground_at(&plan, 32, 24));
+    let scene = |v: Value| Scene::from_value(&json!({ "volumes": [v] }));
+    scene(good.clone()).expect("the arch element is valid");
+    let mut bad = good.clone();
+    bad["y_m"] = json!([10, 5]);
+    assert_eq!(scene(bad).expect_err("refused").pointer, "/volumes/0/y_m");
+    let mut bad = good.clone();
+    bad["curves"][2]["control_points"] = json!([[0, 0, 0]]);
+    assert!(scene(bad)
+        .expect_err("refused")
+        .pointer
+        .starts_with("/volumes/0/curves/2"));
+    let mut bad = good;
+    bad["spacing_m"] = json!(0.25);
+    assert_eq!(
+        scene(bad).expect_err("refused").pointer,
+        "/volumes/0/spacing_m"
+    );
+}
