@@ -43,16 +43,21 @@
 
 pub mod erosion;
 pub mod exchange;
+pub mod fitting;
 pub mod grid;
+pub mod hydraulic;
 pub mod landform;
 pub mod paste;
 pub mod raster;
 pub mod region;
 pub mod spec;
+pub mod spec_tools;
 pub mod stats;
 pub mod tensor;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_tools;
 
 pub use grid::{Procedural, RegionGrid};
 pub use region::{solve_region, synthesize, Displacement, RegionError};

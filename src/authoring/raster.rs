@@ -198,7 +198,13 @@ impl Canvas {
         });
     }
 
-    /// Noise brush: `g += f(r)·∇n` with `n = amplitude · lattice(x/λ, z/λ)`.
+    /// Noise brush: `g += f(r)·A·∇n` with `n = amplitude · lattice(x/λ, z/λ)` and the tensor
+    /// `A = I + modulation` (§4.3 applied to the noise, as in Fig. 11 where the noise is
+    /// oriented by tensors; `modulation = μ·M(θ)` stretches the noise's slopes along `θ` by
+    /// `1 + μ` and across it by `1 − μ`; zero for plain noise). The component along an edge is
+    /// the noise's difference across the edge; the other, for the tensor, its central
+    /// difference at the edge's midpoint.
+    #[allow(clippy::too_many_arguments)]
     pub fn noise(
         &mut self,
         world_seed: u64,
@@ -207,6 +213,7 @@ impl Canvas {
         amplitude: f64,
         wavelength: f64,
         seed: u32,
+        modulation: [[f64; 2]; 2],
     ) {
         let s = stream(world_seed, NOISE_PURPOSE, seed);
         let n_at = |p: [f64; 2]| {
@@ -217,7 +224,9 @@ impl Canvas {
                     s,
                 ))
         };
-        let inv = 1.0 / self.grid.spacing_m;
+        let modulated = modulation.iter().flatten().any(|m| *m != 0.0);
+        let h = self.grid.spacing_m;
+        let inv = 1.0 / h;
         self.edges(|c, is_x, e, mid, (a, b)| {
             let w = falloff(dist(mid, center), radius);
             if w == 0.0 {
@@ -226,7 +235,18 @@ impl Canvas {
             let n = c.grid.n;
             let pa = c.grid.position(a % n, a / n);
             let pb = c.grid.position(b % n, b / n);
-            let dn = (n_at(pb) - n_at(pa)) * inv;
+            let along = (n_at(pb) - n_at(pa)) * inv;
+            let dn = if modulated {
+                let off = if is_x { [0.0, 0.5 * h] } else { [0.5 * h, 0.0] };
+                let across = (n_at([mid[0] + off[0], mid[1] + off[1]])
+                    - n_at([mid[0] - off[0], mid[1] - off[1]]))
+                    * inv;
+                let g = if is_x { [along, across] } else { [across, along] };
+                let axis = usize::from(!is_x);
+                along + modulation[axis][0] * g[0] + modulation[axis][1] * g[1]
+            } else {
+                along
+            };
             let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
             *g = (f64::from(*g) + w * dn) as f32;
         });

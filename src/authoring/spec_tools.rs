@@ -1,0 +1,232 @@
+//! Parameter types and validation of the fitting, regularisation, hydraulic-erosion and import
+//! tools (the newer half of [`super::spec::Op`]): contour lines, ridge/river networks, and the
+//! heightmap source of a copy-paste.
+//!
+//! Units: positions in world metres (`[x, z]`), elevations and widths in metres, slopes in
+//! degrees. Every limit is a constant here.
+
+use super::spec::{err, finite_in, SpecError, MAX_ELEVATION_M, MAX_POINTS};
+use serde::{Deserialize, Serialize};
+
+/// Most contour lines of one `contours` operation.
+pub const MAX_CONTOURS: usize = 256;
+/// Most nodes of one `network` operation.
+pub const MAX_NETWORK_NODES: usize = 1024;
+/// Most edges of one `network` operation.
+pub const MAX_NETWORK_EDGES: usize = 1024;
+/// Most droplets of one hydraulic-erosion brush.
+pub const MAX_DROPLETS: u32 = 200_000;
+/// Most steps of one droplet.
+pub const MAX_DROPLET_STEPS: u32 = 512;
+/// Longest inline heightmap (`png_base64`), characters: 512 KiB of base64 (384 KiB of PNG), so
+/// a scene with one stays well below the store's 1 MiB scene limit.
+pub const MAX_HEIGHTMAP_BASE64: usize = 512 * 1024;
+
+/// One contour line: a polyline at one elevation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Contour {
+    /// The line, `[x, z]` metres (repeat the first point to close it).
+    pub points: Vec<[f64; 2]>,
+    /// Its elevation, metres.
+    pub elevation_m: f64,
+}
+
+/// A node of a ridge/river network.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NetworkNode {
+    /// Position `[x, z]`, metres.
+    pub at: [f64; 2],
+    /// Elevation, metres.
+    pub elevation_m: f64,
+}
+
+/// What an edge of a network is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EdgeKind {
+    /// A crest line: flanks fall away from it.
+    Ridge,
+    /// A river flowing from `from` to `to`: banks rise away from it, and it never rises.
+    River,
+}
+
+/// An edge of a ridge/river network: a polyline from one node to another.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NetworkEdge {
+    /// Index of the start node (for a river: upstream).
+    pub from: usize,
+    /// Index of the end node (for a river: downstream).
+    pub to: usize,
+    /// Ridge or river.
+    pub kind: EdgeKind,
+    /// Intermediate vertices `[x, z]`, metres, between the two nodes.
+    #[serde(default)]
+    pub points: Vec<[f64; 2]>,
+    /// Reach of the flanks (ridge) or banks (river) on each side, metres (0: none).
+    #[serde(default)]
+    pub width_m: f64,
+    /// Slope of the flanks or banks, degrees (`0..=89`).
+    #[serde(default)]
+    pub slope_deg: f64,
+}
+
+/// A PNG16 heightmap carried inline in the scene (the source of a copy-paste).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Heightmap {
+    /// A 16-bit greyscale PNG, base64 (standard alphabet, padded), at most
+    /// [`MAX_HEIGHTMAP_BASE64`] characters.
+    pub png_base64: String,
+    /// Elevation of sample value 0, metres.
+    pub lo_m: f64,
+    /// Elevation of sample value 65535, metres.
+    pub hi_m: f64,
+    /// Distance between the image's pixels on the ground, metres.
+    pub spacing_m: f64,
+}
+
+fn position(pointer: &str, p: [f64; 2]) -> Result<(), SpecError> {
+    let big = crate::scene::MAX_COORD_M;
+    finite_in(format!("{pointer}/0"), p[0], -big, big)?;
+    finite_in(format!("{pointer}/1"), p[1], -big, big)
+}
+
+fn polyline(pointer: &str, pts: &[[f64; 2]], min: usize) -> Result<(), SpecError> {
+    if pts.len() < min || pts.len() > MAX_POINTS {
+        return Err(err(pointer, format!("needs {min} to {MAX_POINTS} points")));
+    }
+    for (i, q) in pts.iter().enumerate() {
+        position(&format!("{pointer}/{i}"), *q)?;
+    }
+    Ok(())
+}
+
+/// Validates a `contours` operation at `at` (`/ops/3`).
+pub fn validate_contours(at: &str, lines: &[Contour], detail: f64) -> Result<(), SpecError> {
+    if lines.is_empty() || lines.len() > MAX_CONTOURS {
+        return Err(err(
+            format!("{at}/lines"),
+            format!("needs 1 to {MAX_CONTOURS} lines"),
+        ));
+    }
+    for (k, c) in lines.iter().enumerate() {
+        polyline(&format!("{at}/lines/{k}/points"), &c.points, 1)?;
+        finite_in(
+            format!("{at}/lines/{k}/elevation_m"),
+            c.elevation_m,
+            -MAX_ELEVATION_M,
+            MAX_ELEVATION_M,
+        )?;
+    }
+    finite_in(format!("{at}/detail"), detail, 0.0, 1.0)
+}
+
+/// Validates a `network` operation at `at`: node indices exist, rivers never rise.
+pub fn validate_network(
+    at: &str,
+    nodes: &[NetworkNode],
+    edges: &[NetworkEdge],
+    detail: f64,
+) -> Result<(), SpecError> {
+    if nodes.is_empty() || nodes.len() > MAX_NETWORK_NODES {
+        return Err(err(
+            format!("{at}/nodes"),
+            format!("needs 1 to {MAX_NETWORK_NODES} nodes"),
+        ));
+    }
+    for (k, n) in nodes.iter().enumerate() {
+        position(&format!("{at}/nodes/{k}/at"), n.at)?;
+        finite_in(
+            format!("{at}/nodes/{k}/elevation_m"),
+            n.elevation_m,
+            -MAX_ELEVATION_M,
+            MAX_ELEVATION_M,
+        )?;
+    }
+    if edges.is_empty() || edges.len() > MAX_NETWORK_EDGES {
+        return Err(err(
+            format!("{at}/edges"),
+            format!("needs 1 to {MAX_NETWORK_EDGES} edges"),
+        ));
+    }
+    for (k, e) in edges.iter().enumerate() {
+        let p = format!("{at}/edges/{k}");
+        for (name, i) in [("from", e.from), ("to", e.to)] {
+            if i >= nodes.len() {
+                return Err(err(
+                    format!("{p}/{name}"),
+                    format!("names node {i}; there are {}", nodes.len()),
+                ));
+            }
+        }
+        if e.from == e.to {
+            return Err(err(format!("{p}/to"), "an edge joins two different nodes"));
+        }
+        polyline(&format!("{p}/points"), &e.points, 0)?;
+        finite_in(format!("{p}/width_m"), e.width_m, 0.0, 1.0e6)?;
+        finite_in(format!("{p}/slope_deg"), e.slope_deg, 0.0, 89.0)?;
+        if e.kind == EdgeKind::River && nodes[e.to].elevation_m > nodes[e.from].elevation_m {
+            return Err(err(
+                format!("{p}/to"),
+                "a river flows from `from` to `to` and cannot rise: its end node is higher",
+            ));
+        }
+    }
+    finite_in(format!("{at}/detail"), detail, 0.0, 1.0)
+}
+
+/// Validates an inline heightmap at `at` (`/ops/2/heightmap`) by decoding it.
+pub fn validate_heightmap(at: &str, h: &Heightmap) -> Result<(), SpecError> {
+    finite_in(
+        format!("{at}/lo_m"),
+        h.lo_m,
+        -MAX_ELEVATION_M,
+        MAX_ELEVATION_M,
+    )?;
+    finite_in(
+        format!("{at}/hi_m"),
+        h.hi_m,
+        -MAX_ELEVATION_M,
+        MAX_ELEVATION_M,
+    )?;
+    finite_in(format!("{at}/spacing_m"), h.spacing_m, 1.0e-3, 1.0e4)?;
+    h.decode()
+        .map(|_| ())
+        .map_err(|e| err(format!("{at}/png_base64"), e))
+}
+
+impl Heightmap {
+    /// The image's heights, metres.
+    ///
+    /// # Errors
+    /// Why the text is not a base64 16-bit greyscale PNG within the limits.
+    pub fn decode(&self) -> Result<super::exchange::Image<Vec<f32>>, String> {
+        use base64::Engine;
+        if self.png_base64.len() > MAX_HEIGHTMAP_BASE64 {
+            return Err(format!(
+                "at most {MAX_HEIGHTMAP_BASE64} base64 characters, got {}",
+                self.png_base64.len()
+            ));
+        }
+        let bytes = base64::engine::general_purpose::STANDARD
+            .decode(self.png_base64.as_bytes())
+            .map_err(|e| format!("not base64: {e}"))?;
+        let img = super::exchange::import_png16(&bytes, self.lo_m, self.hi_m)
+            .map_err(|e| e.to_string())?;
+        if img.width < 2 || img.height < 2 {
+            return Err("the image needs at least 2×2 pixels".into());
+        }
+        Ok(img)
+    }
+
+    /// The ground extent of the image `[width, depth]`, metres (pixel centres at the corners).
+    pub fn extent_m(&self, width: usize, height: usize) -> [f64; 2] {
+        [
+            (width - 1) as f64 * self.spacing_m,
+            (height - 1) as f64 * self.spacing_m,
+        ]
+    }
+}
