@@ -191,7 +191,9 @@ async fn a_region_exports_its_heights_and_gradients_as_png16() {
         .zip(&want)
         .map(|(a, b)| f64::from((a - b).abs()))
         .fold(0.0, f64::max);
-    println!("heightmap.png: {n}², range {lo:.2}..{hi:.2} m, worst error {worst:.4} m (step {step:.4})");
+    println!(
+        "heightmap.png: {n}², range {lo:.2}..{hi:.2} m, worst error {worst:.4} m (step {step:.4})"
+    );
     assert!(worst <= 0.5 * step + 1e-3, "worst {worst} m, step {step}");
     assert!(hi >= 299.99, "the crest is the top: {hi}");
 
@@ -274,7 +276,10 @@ async fn an_uploaded_png16_is_pasted_and_the_region_takes_its_gradients() {
     let scene = w.get("").await.json()["scene"].clone();
     let op = &scene["regions"][1]["ops"][0];
     assert_eq!(op["op"], "copy_paste");
-    assert_eq!(op["heightmap"]["spacing_m"], 2.0, "the image spans the region");
+    assert_eq!(
+        op["heightmap"]["spacing_m"], 2.0,
+        "the image spans the region"
+    );
     assert_eq!(op["target"], json!([64.0, 64.0]));
 
     // The image spans the region sample for sample, so the pasted target gradient is the
@@ -324,9 +329,13 @@ async fn a_bad_upload_is_refused_naming_the_field() {
     w.post_png(&format!("{path}?hi_m=1"), "image/png", png.bytes.clone())
         .await
         .error(StatusCode::BAD_REQUEST, "bad_parameter", Some("lo_m"));
-    w.post_png(&format!("{path}?lo_m=0&hi_m=x"), "image/png", png.bytes.clone())
-        .await
-        .error(StatusCode::BAD_REQUEST, "bad_parameter", Some("hi_m"));
+    w.post_png(
+        &format!("{path}?lo_m=0&hi_m=x"),
+        "image/png",
+        png.bytes.clone(),
+    )
+    .await
+    .error(StatusCode::BAD_REQUEST, "bad_parameter", Some("hi_m"));
     w.post_png(
         &format!("{path}?lo_m=0&hi_m=1&target=5"),
         "image/png",
@@ -334,9 +343,13 @@ async fn a_bad_upload_is_refused_naming_the_field() {
     )
     .await
     .error(StatusCode::BAD_REQUEST, "bad_parameter", Some("target"));
-    w.post_png(&format!("{path}?lo_m=0&hi_m=1"), "image/png", b"not a png".to_vec())
-        .await
-        .error(StatusCode::BAD_REQUEST, "bad_body", Some("body"));
+    w.post_png(
+        &format!("{path}?lo_m=0&hi_m=1"),
+        "image/png",
+        b"not a png".to_vec(),
+    )
+    .await
+    .error(StatusCode::BAD_REQUEST, "bad_body", Some("body"));
     w.post_png(
         &format!("{path}?lo_m=0&hi_m=1"),
         "application/json",
@@ -348,9 +361,17 @@ async fn a_bad_upload_is_refused_naming_the_field() {
         "unsupported_media_type",
         Some("Content-Type"),
     );
-    w.post_png(&format!("{path}?lo_m=0&hi_m=1"), "image/png", vec![0; 400_000])
-        .await
-        .error(StatusCode::PAYLOAD_TOO_LARGE, "payload_too_large", Some("body"));
+    w.post_png(
+        &format!("{path}?lo_m=0&hi_m=1"),
+        "image/png",
+        vec![0; 400_000],
+    )
+    .await
+    .error(
+        StatusCode::PAYLOAD_TOO_LARGE,
+        "payload_too_large",
+        Some("body"),
+    );
     // A scale out of range is refused by the scene's validation, naming the operation's field.
     w.post_png(
         &format!("{path}?lo_m=0&hi_m=1&scale=50"),

@@ -24,8 +24,8 @@
 //!   brush's promise outlives the regularisation).
 
 use super::landform::{band, Edit};
-use super::spec_tools::{Contour, EdgeKind, NetworkEdge, NetworkNode};
 use super::raster::{dist, Canvas};
+use super::spec_tools::{Contour, EdgeKind, NetworkEdge, NetworkNode};
 
 impl Canvas {
     /// Scales the target gradient of the heights, `∇h_proc + g_d`, by `detail` on every edge.
@@ -184,7 +184,10 @@ mod tests {
         assert!(after < 1e-6, "curl after {after}");
         let v = 16 * n + 16;
         assert!(!c.fixed[v], "the elevation constraint is dropped");
-        assert!(c.fixed[8 * n + 8] && c.d[8 * n + 8] == 0.5, "frozen samples stay");
+        assert!(
+            c.fixed[8 * n + 8] && c.d[8 * n + 8] == 0.5,
+            "frozen samples stay"
+        );
         assert!(c.fixed[0] && c.fixed[n * n - 1], "the border stays");
         // The edge targets are the differences of `current` (fixed samples at their values).
         let e = 5 * (n - 1) + 20;

@@ -83,7 +83,8 @@ impl Field<'_> {
         let (nw, ne, sw, se) = (h(i, j), h(i + 1, j), h(i, j + 1), h(i + 1, j + 1));
         let gx = (ne - nw) * (1.0 - v) + (se - sw) * v;
         let gz = (sw - nw) * (1.0 - u) + (se - ne) * u;
-        let height = nw * (1.0 - u) * (1.0 - v) + ne * u * (1.0 - v) + sw * (1.0 - u) * v + se * u * v;
+        let height =
+            nw * (1.0 - u) * (1.0 - v) + ne * u * (1.0 - v) + sw * (1.0 - u) * v + se * u * v;
         (height, [gx, gz])
     }
 
@@ -151,7 +152,12 @@ impl Field<'_> {
 /// Runs the droplets over `field`, starting in the disc of `radius` (cells) around `center`
 /// (grid coordinates). Returns how many droplet steps visited each sample (the nearest sample
 /// to each position): the flow.
-pub fn run_droplets(field: &mut Field<'_>, center: [f64; 2], radius: f64, p: &Droplets) -> Vec<u32> {
+pub fn run_droplets(
+    field: &mut Field<'_>,
+    center: [f64; 2],
+    radius: f64,
+    p: &Droplets,
+) -> Vec<u32> {
     let n = field.n;
     let mut flow = vec![0u32; n * n];
     for k in 0..p.count {
@@ -173,8 +179,8 @@ pub fn run_droplets(field: &mut Field<'_>, center: [f64; 2], radius: f64, p: &Dr
             ];
             let len = dir[0].hypot(dir[1]);
             if len < 1e-12 {
-                let t = std::f64::consts::TAU
-                    * f64::from(unit(hash2(key, 2 + step as i32, p.seed)));
+                let t =
+                    std::f64::consts::TAU * f64::from(unit(hash2(key, 2 + step as i32, p.seed)));
                 dir = [t.cos(), t.sin()];
             } else {
                 dir = [dir[0] / len, dir[1] / len];
@@ -251,7 +257,11 @@ impl Canvas {
             droplets,
         );
         // The change, exactly 0 where the droplets did not touch (fixed samples included).
-        let change: Vec<f64> = cells.iter().zip(&before).map(|(a, b)| (a - b) * h).collect();
+        let change: Vec<f64> = cells
+            .iter()
+            .zip(&before)
+            .map(|(a, b)| (a - b) * h)
+            .collect();
         self.edges(|c, is_x, e, _, (a, b)| {
             let dd = change[b] - change[a];
             if dd != 0.0 {
@@ -339,7 +349,10 @@ mod tests {
         assert_eq!(before[0].to_bits(), after[0].to_bits());
         // The same seed gives the same result, bit for bit.
         let (_, again, _) = run(&fixed);
-        assert!(after.iter().zip(&again).all(|(a, b)| a.to_bits() == b.to_bits()));
+        assert!(after
+            .iter()
+            .zip(&again)
+            .all(|(a, b)| a.to_bits() == b.to_bits()));
     }
 
     #[test]
@@ -354,9 +367,8 @@ mod tests {
             })
             .collect();
         inner.sort_by_key(|v| std::cmp::Reverse(flow[*v]));
-        let change = |vs: &[usize]| {
-            vs.iter().map(|v| after[*v] - before[*v]).sum::<f64>() / vs.len() as f64
-        };
+        let change =
+            |vs: &[usize]| vs.iter().map(|v| after[*v] - before[*v]).sum::<f64>() / vs.len() as f64;
         let busy = &inner[..inner.len() / 10];
         let (busy_change, rest_change) = (change(busy), change(&inner[inner.len() / 10..]));
         println!(

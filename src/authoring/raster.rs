@@ -241,7 +241,11 @@ impl Canvas {
                 let across = (n_at([mid[0] + off[0], mid[1] + off[1]])
                     - n_at([mid[0] - off[0], mid[1] - off[1]]))
                     * inv;
-                let g = if is_x { [along, across] } else { [across, along] };
+                let g = if is_x {
+                    [along, across]
+                } else {
+                    [across, along]
+                };
                 let axis = usize::from(!is_x);
                 along + modulation[axis][0] * g[0] + modulation[axis][1] * g[1]
             } else {

@@ -3,10 +3,10 @@
 
 use super::grid::{Procedural, RegionGrid};
 use super::hydraulic::{droplet_seed, Droplets};
-use super::tensor::orientation;
 use super::paste::{PasteSource, Placement, Warp};
 use super::raster::Canvas;
 use super::spec::{Op, RegionSpec, Shape};
+use super::tensor::orientation;
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
 
@@ -261,7 +261,13 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 let src = match (heightmap, source_seed) {
                     (Some(h), _) => {
                         let img = h.decode().map_err(source_err)?;
-                        PasteSource::from_image(&img, h.spacing_m, *source_min, *source_max, spacing)
+                        PasteSource::from_image(
+                            &img,
+                            h.spacing_m,
+                            *source_min,
+                            *source_max,
+                            spacing,
+                        )
                     }
                     (None, Some(seed)) => {
                         let other = WorldPlan::new(*seed, plan.params.clone())

@@ -775,7 +775,10 @@ mod tests {
             "ops": [{"op": "copy_paste", "source_min": [0, 0], "source_max": [9, 9], "target": [5, 5]}]}))
         .expect("valid");
         let text = serde_json::to_string(&p.ops[0]).expect("json");
-        assert!(!text.contains("heightmap") && !text.contains("source_seed"), "{text}");
+        assert!(
+            !text.contains("heightmap") && !text.contains("source_seed"),
+            "{text}"
+        );
     }
 
     #[test]

@@ -307,7 +307,9 @@ fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
     );
     let src = PasteSource::sample(&plan(), min, max, r.grid.spacing_m / at.scale);
     let (c, gain, c0, count) = paste_agreement(&r, &src, &at);
-    println!("copy-paste: {count} gradients, correlation {c:.3} (unedited {c0:.3}), gain {gain:.3}");
+    println!(
+        "copy-paste: {count} gradients, correlation {c:.3} (unedited {c0:.3}), gain {gain:.3}"
+    );
     assert!(count > 1000, "{count} samples");
     assert!(c > 0.95, "correlation {c:.3}");
     assert!((0.85..1.15).contains(&gain), "gain {gain:.3}");

@@ -178,7 +178,10 @@ fn a_network_holds_ridges_at_their_elevations_and_rivers_flow_downhill() {
     };
     for (from, to, via) in [(0, 1, vec![]), (1, 2, vec![[1090.0, 2030.0]])] {
         let (line, grade) = walk(from, to, &via);
-        assert!(line.iter().all(Option::is_some), "ridge {from}→{to}: a gap in the line");
+        assert!(
+            line.iter().all(Option::is_some),
+            "ridge {from}→{to}: a gap in the line"
+        );
         for (h, want) in line.iter().flatten() {
             // The sample's own closest point is within 0.71 spacing of the walk's.
             assert!(
@@ -195,9 +198,16 @@ fn a_network_holds_ridges_at_their_elevations_and_rivers_flow_downhill() {
     }
     // Rivers never rise along their flow, and their banks rise away from them.
     let mut worst_rise: f64 = 0.0;
-    for (from, to, via) in [(3, 4, vec![]), (5, 4, vec![[1050.0, 2080.0]]), (4, 6, vec![])] {
+    for (from, to, via) in [
+        (3, 4, vec![]),
+        (5, 4, vec![[1050.0, 2080.0]]),
+        (4, 6, vec![]),
+    ] {
         let (line, grade) = walk(from, to, &via);
-        assert!(line.iter().all(Option::is_some), "river {from}→{to}: a gap in the bed");
+        assert!(
+            line.iter().all(Option::is_some),
+            "river {from}→{to}: a gap in the bed"
+        );
         let bed: Vec<f64> = line.iter().flatten().map(|(h, _)| *h).collect();
         for w in bed.windows(2) {
             // Consecutive picks' closest points may step back by up to √2 spacings.
@@ -219,7 +229,10 @@ fn a_network_holds_ridges_at_their_elevations_and_rivers_flow_downhill() {
     // Banks: 6 m north and south of the lower river (E→G) the ground is higher than the bed.
     let (i, j) = sample_at(&r, 1090.0, 2096.0);
     for side in [j - 6, j + 6] {
-        assert!(height(&r, i, side) > height(&r, i, j) + 0.3, "bank at row {side}");
+        assert!(
+            height(&r, i, side) > height(&r, i, j) + 0.3,
+            "bank at row {side}"
+        );
     }
 }
 
@@ -259,7 +272,10 @@ fn regularisation_reproduces_the_first_pass_and_frees_the_constraints() {
     let kept = height(&solve(serde_json::Value::Array(held)), i, j);
     let freed = height(&solve(serde_json::Value::Array(twice)), i, j);
     assert!((kept - e).abs() < 1e-3, "unregularised: held at {kept}");
-    assert!((freed - e).abs() > 0.5, "regularised: moved to {freed} from {e}");
+    assert!(
+        (freed - e).abs() > 0.5,
+        "regularised: moved to {freed} from {e}"
+    );
 }
 
 #[test]
@@ -271,8 +287,10 @@ fn hydraulic_erosion_keeps_the_constraints_and_conserves_material() {
         {"op": "noise", "center": [1064, 2064], "radius_m": 50, "amplitude_m": 4, "wavelength_m": 8}
     ]);
     let mut eroded_ops = before.as_array().expect("array").clone();
-    eroded_ops.push(json!({"op": "hydraulic_erosion", "center": [1064, 2064], "radius_m": 45,
-        "droplets": 4000, "steps": 60, "erosion_rate": 0.4, "seed": 3}));
+    eroded_ops.push(
+        json!({"op": "hydraulic_erosion", "center": [1064, 2064], "radius_m": 45,
+        "droplets": 4000, "steps": 60, "erosion_rate": 0.4, "seed": 3}),
+    );
     let plain = solve(before);
     let eroded = solve(serde_json::Value::Array(eroded_ops.clone()));
     assert_eq!(plain.fixed, eroded.fixed, "the same samples are fixed");
@@ -370,11 +388,17 @@ fn copy_paste_from_another_world_reproduces_its_gradients() {
     println!("  Laplacian mismatch {worst:.2e} m over {compared} samples (source's up to {largest:.3} m)");
     // Single-precision targets and the solver's relative residual 1e-6: 1 % of the relief's.
     assert!(compared > 2000 && largest > 1e-3, "{compared}, {largest}");
-    assert!(worst < 0.01 * largest, "Laplacian mismatch {worst} of {largest}");
+    assert!(
+        worst < 0.01 * largest,
+        "Laplacian mismatch {worst} of {largest}"
+    );
     // The gradients themselves, with the harmonic blend's near-affine part removed, follow the
     // other world's source, not this world's.
     assert!(c > 0.85, "correlation {c:.3}");
-    assert!(c_same < c - 0.5, "this world's source correlates {c_same:.3}");
+    assert!(
+        c_same < c - 0.5,
+        "this world's source correlates {c_same:.3}"
+    );
 }
 
 #[test]
@@ -418,7 +442,10 @@ fn copy_paste_from_a_png16_heightmap_reproduces_its_gradients() {
     let (worst, largest, compared) = laplacian_match(&r, &src, &at);
     println!("  Laplacian mismatch {worst:.2e} m over {compared} samples (source's up to {largest:.3} m)");
     assert!(compared > 2000 && largest > 1e-3, "{compared}, {largest}");
-    assert!(worst < 0.01 * largest, "Laplacian mismatch {worst} of {largest}");
+    assert!(
+        worst < 0.01 * largest,
+        "Laplacian mismatch {worst} of {largest}"
+    );
 }
 
 #[test]
@@ -446,7 +473,9 @@ fn a_tensor_modulated_noise_brush_stretches_the_noise_along_its_direction() {
     let plain = ratio(json!({}));
     let east = ratio(json!({"anisotropy": 0.8, "angle_deg": 0}));
     let south = ratio(json!({"anisotropy": 0.8, "angle_deg": 90}));
-    println!("noise slope ratio x/z: plain {plain:.2}, θ 0° μ 0.8 {east:.2}, θ 90° μ 0.8 {south:.2}");
+    println!(
+        "noise slope ratio x/z: plain {plain:.2}, θ 0° μ 0.8 {east:.2}, θ 90° μ 0.8 {south:.2}"
+    );
     assert!((0.6..1.6).contains(&plain), "plain {plain:.2}");
     // The modulated field has curl, so the reconstruction meets it only in part (as for the
     // tensor tools); μ 0.8 would be a ratio of 9 on the target.
@@ -481,5 +510,8 @@ fn a_warped_paste_follows_the_warped_source() {
          {c_straight:.3} with the unwarped one, gain {gain:.3}"
     );
     assert!(c > 0.9, "correlation {c:.3}");
-    assert!(c_straight < c - 0.1, "the unwarped source correlates {c_straight:.3}");
+    assert!(
+        c_straight < c - 0.1,
+        "the unwarped source correlates {c_straight:.3}"
+    );
 }

@@ -47,18 +47,19 @@ pub(super) fn routes() -> Router<AppState> {
             "/v1/worlds/{id}/regions/{rid}/heightmap.png",
             get(heightmap_out).post(heightmap_in),
         )
-        .route("/v1/worlds/{id}/regions/{rid}/gradients.png", get(gradients_out))
+        .route(
+            "/v1/worlds/{id}/regions/{rid}/gradients.png",
+            get(gradients_out),
+        )
 }
 
 /// The value of `name` in a raw query (no percent-decoding: the values are numbers).
 fn param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
-    query?
-        .split('&')
-        .find_map(|kv| match kv.split_once('=') {
-            Some((k, v)) if k == name => Some(v),
-            None if kv == name => Some(""),
-            _ => None,
-        })
+    query?.split('&').find_map(|kv| match kv.split_once('=') {
+        Some((k, v)) if k == name => Some(v),
+        None if kv == name => Some(""),
+        _ => None,
+    })
 }
 
 fn bad(field: &'static str, message: impl Into<String>) -> AppError {
@@ -90,13 +91,9 @@ async fn solved(
     let (meta, _) = authorize(st, headers, id, Role::Read).await?;
     let version = match param(query, "v") {
         None => meta.version,
-        Some(v) => v
-            .parse::<u64>()
-            .ok()
-            .filter(|v| *v >= 1)
-            .ok_or_else(|| {
-                AppError::bad_request(code::BAD_VERSION, "v", "v must be a version number ≥ 1")
-            })?,
+        Some(v) => v.parse::<u64>().ok().filter(|v| *v >= 1).ok_or_else(|| {
+            AppError::bad_request(code::BAD_VERSION, "v", "v must be a version number ≥ 1")
+        })?,
     };
     if version > meta.version {
         return Err(store_error(StoreError::VersionNotFound {
@@ -223,7 +220,10 @@ async fn heightmap_in(
     let lo_m = number(q, "lo_m", None)?;
     let hi_m = number(q, "hi_m", None)?;
     let head = st.worlds.store.head(&id).await.map_err(store_error)?;
-    let regions = head.scene["regions"].as_array().cloned().unwrap_or_default();
+    let regions = head.scene["regions"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
     let Some((index, element)) = regions
         .iter()
         .enumerate()
@@ -232,7 +232,10 @@ async fn heightmap_in(
         return Err(no_region(&id, &rid, head.meta.version));
     };
     let bbox = |k: &str, c: usize| element["bbox"][k][c].as_f64().unwrap_or(0.0);
-    let (min, max) = ([bbox("min", 0), bbox("min", 1)], [bbox("max", 0), bbox("max", 1)]);
+    let (min, max) = (
+        [bbox("min", 0), bbox("min", 1)],
+        [bbox("max", 0), bbox("max", 1)],
+    );
     let mut map = Heightmap {
         png_base64: base64::engine::general_purpose::STANDARD.encode(&body),
         lo_m,
