@@ -8,6 +8,10 @@
 use super::spec::{err, finite_in, SpecError, MAX_ELEVATION_M, MAX_POINTS};
 use serde::{Deserialize, Serialize};
 
+/// Largest side of an inline heightmap, pixels (its decoded samples stay below 17 MB).
+pub const MAX_HEIGHTMAP_SIDE: usize = 2049;
+/// Most points of all the lines (or edges, nodes included) of one fitting operation together.
+pub const MAX_FIT_POINTS: usize = 8192;
 /// Most contour lines of one `contours` operation.
 pub const MAX_CONTOURS: usize = 256;
 /// Most nodes of one `network` operation.
@@ -112,6 +116,13 @@ pub fn validate_contours(at: &str, lines: &[Contour], detail: f64) -> Result<(),
             format!("needs 1 to {MAX_CONTOURS} lines"),
         ));
     }
+    let total: usize = lines.iter().map(|c| c.points.len()).sum();
+    if total > MAX_FIT_POINTS {
+        return Err(err(
+            format!("{at}/lines"),
+            format!("at most {MAX_FIT_POINTS} points in all, got {total}"),
+        ));
+    }
     for (k, c) in lines.iter().enumerate() {
         polyline(&format!("{at}/lines/{k}/points"), &c.points, 1)?;
         finite_in(
@@ -150,6 +161,13 @@ pub fn validate_network(
         return Err(err(
             format!("{at}/edges"),
             format!("needs 1 to {MAX_NETWORK_EDGES} edges"),
+        ));
+    }
+    let total: usize = edges.iter().map(|e| e.points.len() + 2).sum();
+    if total > MAX_FIT_POINTS {
+        return Err(err(
+            format!("{at}/edges"),
+            format!("at most {MAX_FIT_POINTS} points in all (2 nodes per edge), got {total}"),
         ));
     }
     for (k, e) in edges.iter().enumerate() {
@@ -214,6 +232,16 @@ impl Heightmap {
         let bytes = base64::engine::general_purpose::STANDARD
             .decode(self.png_base64.as_bytes())
             .map_err(|e| format!("not base64: {e}"))?;
+        // A PNG compresses a flat image well: read the size from the header before decoding.
+        if bytes.len() >= 24 && &bytes[12..16] == b"IHDR" {
+            let w = u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]);
+            let h = u32::from_be_bytes([bytes[20], bytes[21], bytes[22], bytes[23]]);
+            if w as usize > MAX_HEIGHTMAP_SIDE || h as usize > MAX_HEIGHTMAP_SIDE {
+                return Err(format!(
+                    "at most {MAX_HEIGHTMAP_SIDE} pixels a side, got {w}×{h}"
+                ));
+            }
+        }
         let img = super::exchange::import_png16(&bytes, self.lo_m, self.hi_m)
             .map_err(|e| e.to_string())?;
         if img.width < 2 || img.height < 2 {

@@ -515,3 +515,59 @@ fn a_warped_paste_follows_the_warped_source() {
         "the unwarped source correlates {c_straight:.3}"
     );
 }
+
+#[test]
+fn an_oversized_inline_heightmap_is_refused_before_decoding() {
+    use base64::Engine;
+    let png = super::exchange::encode_png16(2050, 2, &vec![1.0; 4100]).expect("png");
+    let map = json!({"png_base64": base64::engine::general_purpose::STANDARD.encode(&png.bytes),
+        "lo_m": 0, "hi_m": 1, "spacing_m": 1});
+    let scene = crate::scene::Scene::from_value(&json!({"regions": [{
+        "id": "r", "bbox": {"min": [0, 0], "max": [64, 64]}, "samples": 33,
+        "ops": [{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 1],
+                 "target": [32, 32], "heightmap": map}]}]}));
+    let e = scene.expect_err("refused");
+    assert_eq!(e.pointer, "/regions/0/ops/0/heightmap/png_base64", "{e}");
+    assert!(e.message.contains("2049"), "{e}");
+}
+
+#[test]
+fn near_polyline_finds_what_a_full_scan_finds() {
+    use super::grid::RegionGrid;
+    use super::raster::{polyline_distance, Canvas};
+    let n = 33;
+    let grid = RegionGrid {
+        origin: [10.0, 20.0],
+        spacing_m: 0.75,
+        n,
+        max: [34.0, 44.0],
+    };
+    let c = Canvas::new(grid, vec![0.0; n * n]);
+    let line = [
+        [12.3, 21.1],
+        [30.2, 25.7],
+        [18.0, 40.9],
+        [18.0, 40.9],
+        [29.5, 43.0],
+    ];
+    for radius in [0.0, 0.3, 0.75, 2.6] {
+        let fast = c.near_polyline(&line, radius);
+        let full: Vec<_> = (0..n * n)
+            .filter_map(|v| {
+                let (d, s, t) = polyline_distance(&line, grid.position(v % n, v / n));
+                (d <= radius).then_some((v, d, s, t))
+            })
+            .collect();
+        if full.is_empty() {
+            assert_eq!(
+                fast.len(),
+                1,
+                "the nearest sample when none is within {radius}"
+            );
+        } else {
+            assert_eq!(fast, full, "radius {radius}");
+        }
+    }
+    // A point far outside the grid still gets its nearest sample.
+    assert_eq!(c.near_polyline(&[[-100.0, 20.0]], 1.0)[0].0, 0);
+}
