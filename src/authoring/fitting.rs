@@ -53,11 +53,20 @@ impl Canvas {
 
     /// Fitting to a ridge/river network: the prior relief scaled by `detail`, every edge's
     /// flanks or banks (soft), then every edge's line at its interpolated elevations (hard).
-    pub fn network(&mut self, nodes: &[NetworkNode], edges: &[NetworkEdge], detail: f64) {
+    /// `elevations` are the nodes' ([`super::spec_tools::resolve_elevations`]).
+    pub fn network(
+        &mut self,
+        nodes: &[NetworkNode],
+        elevations: &[f64],
+        edges: &[NetworkEdge],
+        detail: f64,
+    ) {
         self.keep_detail(detail);
         let half = 0.5 * self.grid.spacing_m;
-        let lines: Vec<(Vec<[f64; 2]>, Vec<f64>)> =
-            edges.iter().map(|e| edge_line(nodes, e)).collect();
+        let lines: Vec<(Vec<[f64; 2]>, Vec<f64>)> = edges
+            .iter()
+            .map(|e| edge_line(nodes, elevations, e))
+            .collect();
         for (e, (pts, _)) in edges.iter().zip(&lines) {
             if e.width_m <= 0.0 {
                 continue;
@@ -119,9 +128,14 @@ impl Canvas {
 }
 
 /// An edge's polyline (start node, its vertices, end node) and the elevation at each vertex,
-/// linear in arc length between the nodes' elevations.
-pub fn edge_line(nodes: &[NetworkNode], e: &NetworkEdge) -> (Vec<[f64; 2]>, Vec<f64>) {
+/// linear in arc length between the nodes' `elevations`.
+pub fn edge_line(
+    nodes: &[NetworkNode],
+    elevations: &[f64],
+    e: &NetworkEdge,
+) -> (Vec<[f64; 2]>, Vec<f64>) {
     let (a, b) = (&nodes[e.from], &nodes[e.to]);
+    let (ea, eb) = (elevations[e.from], elevations[e.to]);
     let pts: Vec<[f64; 2]> = std::iter::once(a.at)
         .chain(e.points.iter().copied())
         .chain(std::iter::once(b.at))
@@ -135,7 +149,7 @@ pub fn edge_line(nodes: &[NetworkNode], e: &NetworkEdge) -> (Vec<[f64; 2]>, Vec<
         .iter()
         .map(|w| {
             let t = if total > 0.0 { w / total } else { 0.0 };
-            a.elevation_m + t * (b.elevation_m - a.elevation_m)
+            ea + t * (eb - ea)
         })
         .collect();
     (pts, es)
@@ -144,6 +158,7 @@ pub fn edge_line(nodes: &[NetworkNode], e: &NetworkEdge) -> (Vec<[f64; 2]>, Vec<
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::authoring::spec_tools::resolve_elevations;
     use crate::authoring::RegionGrid;
 
     /// A canvas over a bumpy field, 33 × 33 at 1 m.
@@ -211,11 +226,11 @@ mod tests {
         let nodes = [
             NetworkNode {
                 at: [0.0, 0.0],
-                elevation_m: 10.0,
+                elevation_m: Some(10.0),
             },
             NetworkNode {
                 at: [30.0, 40.0],
-                elevation_m: 0.0,
+                elevation_m: None,
             },
         ];
         let e = NetworkEdge {
@@ -225,9 +240,19 @@ mod tests {
             points: vec![[30.0, 0.0]],
             width_m: 0.0,
             slope_deg: 0.0,
+            grade_deg: Some(-(1.0f64 / 7.0).atan().to_degrees()),
         };
-        let (pts, es) = edge_line(&nodes, &e);
+        // The end node's elevation comes from the grade: 70 m at 1 in 7 drops 10 m.
+        let elevations = resolve_elevations(&nodes, std::slice::from_ref(&e)).expect("resolved");
+        assert!((elevations[1] - 0.0).abs() < 1e-9, "{elevations:?}");
+        let (pts, es) = edge_line(&nodes, &[10.0, 0.0], &e);
         assert_eq!(pts.len(), 3);
         assert_eq!(es, vec![10.0, 10.0 - 10.0 * 30.0 / 70.0, 0.0]);
+        // Without the grade the end node has no elevation.
+        let bare = NetworkEdge {
+            grade_deg: None,
+            ..e
+        };
+        assert_eq!(resolve_elevations(&nodes, &[bare]), Err(1));
     }
 }

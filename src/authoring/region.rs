@@ -6,6 +6,7 @@ use super::hydraulic::{droplet_seed, Droplets};
 use super::paste::{PasteSource, Placement, Warp};
 use super::raster::Canvas;
 use super::spec::{Op, RegionSpec, Shape};
+use super::spec_tools::resolve_elevations;
 use super::tensor::orientation;
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
@@ -16,8 +17,9 @@ pub enum RegionError {
     /// The solver refused the problem.
     #[error("region solver: {0}")]
     Solver(#[from] PoissonError),
-    /// A copy-paste source could not be read (the operation index and the reason).
-    #[error("/ops/{op}: copy-paste source: {message}")]
+    /// An operation's input could not be used (a copy-paste source unreadable, a network node
+    /// without an elevation): the operation index and the reason.
+    #[error("/ops/{op}: {message}")]
     Source {
         /// Index of the operation.
         op: usize,
@@ -257,7 +259,10 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 warp_seed,
             } => {
                 let spacing = grid.spacing_m / scale;
-                let source_err = |message: String| RegionError::Source { op: index, message };
+                let source_err = |message: String| RegionError::Source {
+                    op: index,
+                    message: format!("copy-paste source: {message}"),
+                };
                 let src = match (heightmap, source_seed) {
                     (Some(h), _) => {
                         let img = h.decode().map_err(source_err)?;
@@ -338,7 +343,14 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 nodes,
                 edges,
                 detail,
-            } => canvas.network(nodes, edges, *detail),
+            } => {
+                let elevations =
+                    resolve_elevations(nodes, edges).map_err(|k| RegionError::Source {
+                        op: index,
+                        message: format!("node {k} has no elevation"),
+                    })?;
+                canvas.network(nodes, &elevations, edges, *detail)
+            }
             Op::Regularize {} => {
                 if !solved {
                     cycles = solve(&canvas, &mut current, first)?;

@@ -911,6 +911,18 @@ mod tests {
             ),
             (base(json!([{"op": "regularize", "x": 1}])), "/ops/0"),
             (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}, {"at": [9, 9]}],
+                    "edges": [{"from": 0, "to": 1, "kind": "ridge"}]}])),
+                "/ops/0/nodes/1/elevation_m",
+            ),
+            (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}, {"at": [9, 9]}],
+                    "edges": [{"from": 0, "to": 1, "kind": "river", "grade_deg": 5}]}])),
+                "/ops/0/edges/0/to",
+            ),
+            (
                 json!({"id": "a", "bbox": {"min": [0, 0], "max": [0, 10]}}),
                 "/bbox",
             ),

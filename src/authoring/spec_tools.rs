@@ -42,8 +42,10 @@ pub struct Contour {
 pub struct NetworkNode {
     /// Position `[x, z]`, metres.
     pub at: [f64; 2],
-    /// Elevation, metres.
-    pub elevation_m: f64,
+    /// Elevation, metres; when absent, derived along an edge with a `grade_deg` from a node
+    /// that has one ([`resolve_elevations`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub elevation_m: Option<f64>,
 }
 
 /// What an edge of a network is.
@@ -75,6 +77,51 @@ pub struct NetworkEdge {
     /// Slope of the flanks or banks, degrees (`0..=89`).
     #[serde(default)]
     pub slope_deg: f64,
+    /// Slope along the edge from `from` to `to`, degrees (`−89..=89`, negative descending):
+    /// gives an end node without an elevation one (`e_to = e_from + length·tan(grade)`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grade_deg: Option<f64>,
+}
+
+/// Length of an edge's polyline (node, vertices, node), metres.
+pub fn edge_length(nodes: &[NetworkNode], e: &NetworkEdge) -> f64 {
+    let pts: Vec<[f64; 2]> = std::iter::once(nodes[e.from].at)
+        .chain(e.points.iter().copied())
+        .chain(std::iter::once(nodes[e.to].at))
+        .collect();
+    pts.windows(2)
+        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+        .sum()
+}
+
+/// Every node's elevation, metres: the given ones, and the missing ones derived along edges
+/// with a `grade_deg` from a node that has one, sweeping the edges in document order until
+/// nothing changes (deterministic; a grade between two nodes that both have elevations is not
+/// used). Node and edge indices must be valid.
+///
+/// # Errors
+/// The index of a node no graded edge reaches.
+pub fn resolve_elevations(nodes: &[NetworkNode], edges: &[NetworkEdge]) -> Result<Vec<f64>, usize> {
+    let mut known: Vec<Option<f64>> = nodes.iter().map(|n| n.elevation_m).collect();
+    loop {
+        let mut changed = false;
+        for e in edges {
+            let Some(grade) = e.grade_deg else {
+                continue;
+            };
+            let rise = edge_length(nodes, e) * grade.to_radians().tan();
+            match (known[e.from], known[e.to]) {
+                (Some(a), None) => known[e.to] = Some(a + rise),
+                (None, Some(b)) => known[e.from] = Some(b - rise),
+                _ => continue,
+            }
+            changed = true;
+        }
+        if !changed {
+            break;
+        }
+    }
+    known.iter().enumerate().map(|(k, e)| e.ok_or(k)).collect()
 }
 
 /// A PNG16 heightmap carried inline in the scene (the source of a copy-paste).
@@ -150,12 +197,14 @@ pub fn validate_network(
     }
     for (k, n) in nodes.iter().enumerate() {
         position(&format!("{at}/nodes/{k}/at"), n.at)?;
-        finite_in(
-            format!("{at}/nodes/{k}/elevation_m"),
-            n.elevation_m,
-            -MAX_ELEVATION_M,
-            MAX_ELEVATION_M,
-        )?;
+        if let Some(e) = n.elevation_m {
+            finite_in(
+                format!("{at}/nodes/{k}/elevation_m"),
+                e,
+                -MAX_ELEVATION_M,
+                MAX_ELEVATION_M,
+            )?;
+        }
     }
     if edges.is_empty() || edges.len() > MAX_NETWORK_EDGES {
         return Err(err(
@@ -186,9 +235,31 @@ pub fn validate_network(
         polyline(&format!("{p}/points"), &e.points, 0)?;
         finite_in(format!("{p}/width_m"), e.width_m, 0.0, 1.0e6)?;
         finite_in(format!("{p}/slope_deg"), e.slope_deg, 0.0, 89.0)?;
-        if e.kind == EdgeKind::River && nodes[e.to].elevation_m > nodes[e.from].elevation_m {
+        if let Some(g) = e.grade_deg {
+            finite_in(format!("{p}/grade_deg"), g, -89.0, 89.0)?;
+        }
+    }
+    let elevations = resolve_elevations(nodes, edges).map_err(|k| {
+        err(
+            format!("{at}/nodes/{k}/elevation_m"),
+            "needs an elevation, or an edge with grade_deg from a node that has one",
+        )
+    })?;
+    for (k, (e, n)) in elevations.iter().zip(nodes).enumerate() {
+        if n.elevation_m.is_none() {
+            finite_in(
+                format!("{at}/nodes/{k}/elevation_m"),
+                *e,
+                -MAX_ELEVATION_M,
+                MAX_ELEVATION_M,
+            )
+            .map_err(|e| err(e.pointer, format!("derived from the grades: {}", e.message)))?;
+        }
+    }
+    for (k, e) in edges.iter().enumerate() {
+        if e.kind == EdgeKind::River && elevations[e.to] > elevations[e.from] {
             return Err(err(
-                format!("{p}/to"),
+                format!("{at}/edges/{k}/to"),
                 "a river flows from `from` to `to` and cannot rise: its end node is higher",
             ));
         }

@@ -571,3 +571,26 @@ fn near_polyline_finds_what_a_full_scan_finds() {
     // A point far outside the grid still gets its nearest sample.
     assert_eq!(c.near_polyline(&[[-100.0, 20.0]], 1.0)[0].0, 0);
 }
+
+#[test]
+fn a_graded_river_gives_its_mouth_an_elevation_and_falls_to_it() {
+    let g = ground(1064.0, 2100.0);
+    // The mouth has no elevation: 80 m at a grade of −2° puts it 2.79 m below the source.
+    let r = solve(json!([{"op": "network",
+        "nodes": [{"at": [1020, 2100], "elevation_m": g}, {"at": [1100, 2100]}],
+        "edges": [{"from": 0, "to": 1, "kind": "river", "grade_deg": -2, "width_m": 6, "slope_deg": 6}]}]));
+    let mouth = g - 80.0 * 2f64.to_radians().tan();
+    let (i, j) = sample_at(&r, 1100.0, 2100.0);
+    assert!(
+        (height(&r, i, j) - mouth).abs() < 1e-3,
+        "mouth at {}",
+        height(&r, i, j)
+    );
+    let (i0, _) = sample_at(&r, 1020.0, 2100.0);
+    let bed: Vec<f64> = (i0..=i).map(|k| height(&r, k, j)).collect();
+    assert!(
+        bed.windows(2).all(|w| w[1] <= w[0] + 1e-4),
+        "the bed falls all along"
+    );
+    assert!((bed[0] - g).abs() < 1e-3);
+}
