@@ -4,10 +4,10 @@
 //! the target gradient inside the brush. As in the paper, the Dirichlet constraints are kept: a
 //! fixed sample never moves, so user-designated elevations hold through the erosion.
 //!
-//! Deviation from the paper: the paper adapts a hydraulic simulation; this brush runs thermal
-//! erosion (material slides downhill wherever the slope exceeds the talus angle, scaled by the
-//! brush's C² falloff), a deterministic Jacobi-style update that removes peaks and fills hollows.
-//! It is the simplest erosion with the same place in the pipeline.
+//! This is the thermal companion of the paper's hydraulic brush (that one is
+//! [`super::hydraulic`]): material slides downhill wherever the slope exceeds the talus angle,
+//! scaled by the brush's C² falloff, a deterministic Jacobi-style update that removes peaks and
+//! fills hollows.
 
 use super::raster::{dist, falloff, Canvas};
 

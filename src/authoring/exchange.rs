@@ -82,14 +82,14 @@ pub fn heights(r: &Displacement) -> Vec<f32> {
 }
 
 fn write_png(
-    side: u32,
+    (width, height): (u32, u32),
     color: png::ColorType,
     data: &[u8],
     text: &[(&str, String)],
 ) -> Result<Vec<u8>, ExchangeError> {
     let mut bytes = Vec::new();
     {
-        let mut enc = png::Encoder::new(&mut bytes, side, side);
+        let mut enc = png::Encoder::new(&mut bytes, width, height);
         enc.set_color(color);
         enc.set_depth(png::BitDepth::Sixteen);
         for (k, v) in text {
@@ -143,7 +143,21 @@ fn read_png(bytes: &[u8], color: png::ColorType) -> Result<Image<Vec<u16>>, Exch
 /// # Errors
 /// [`ExchangeError::Encode`] if the PNG encoder fails.
 pub fn export_png16(r: &Displacement) -> Result<HeightPng, ExchangeError> {
-    let h = heights(r);
+    encode_png16(r.grid.n, r.grid.n, &heights(r))
+}
+
+/// Encodes `width × height` heights (metres, row-major) as a 16-bit greyscale PNG, the range
+/// their own minimum to maximum (1 m wide when flat).
+///
+/// # Errors
+/// [`ExchangeError`] if the size does not match or the PNG encoder fails.
+pub fn encode_png16(width: usize, height: usize, h: &[f32]) -> Result<HeightPng, ExchangeError> {
+    if width * height != h.len() || width == 0 || height == 0 {
+        return Err(invalid(
+            "size",
+            format!("{width}×{height} does not match {} heights", h.len()),
+        ));
+    }
     let lo = h.iter().fold(f64::INFINITY, |a, v| a.min(f64::from(*v)));
     let hi = h
         .iter()
@@ -161,7 +175,12 @@ pub fn export_png16(r: &Displacement) -> Result<HeightPng, ExchangeError> {
         ("strata:lo_m", lo.to_string()),
         ("strata:hi_m", hi.to_string()),
     ];
-    let bytes = write_png(r.grid.n as u32, png::ColorType::Grayscale, &data, &text)?;
+    let bytes = write_png(
+        (width as u32, height as u32),
+        png::ColorType::Grayscale,
+        &data,
+        &text,
+    )?;
     Ok(HeightPng {
         bytes,
         lo_m: lo,
@@ -212,7 +231,7 @@ pub fn export_gradient_map(r: &Displacement) -> Result<GradientPng, ExchangeErro
         })
         .collect();
     let bytes = write_png(
-        n as u32,
+        (n as u32, n as u32),
         png::ColorType::Rgb,
         &data,
         &[("strata:m", m.to_string())],

@@ -74,7 +74,7 @@ pub fn frame(pts: &[[f64; 2]], p: [f64; 2]) -> Frame {
 }
 
 /// What a tool does to one edge's target gradient.
-enum Edit {
+pub(super) enum Edit {
     /// The target gradient of the heights becomes `w·v + (1 − w)·previous` (`v` a vector; the
     /// edge takes its component along the edge's axis).
     Replace([f64; 2], f64),
@@ -84,13 +84,13 @@ enum Edit {
 
 /// Weight of a replacing gradient constraint of reach `width` at distance `d`: 1 out to two
 /// thirds of the width, then linearly down to 0 at the width.
-fn band(d: f64, width: f64) -> f64 {
+pub(super) fn band(d: f64, width: f64) -> f64 {
     ((width - d) / (width / 3.0)).clamp(0.0, 1.0)
 }
 
 impl Canvas {
     /// Applies `f` to every edge by its midpoint's [`Frame`] relative to `pts`.
-    fn by_frame(&mut self, pts: &[[f64; 2]], mut f: impl FnMut(&Frame) -> Option<Edit>) {
+    pub(super) fn by_frame(&mut self, pts: &[[f64; 2]], mut f: impl FnMut(&Frame) -> Option<Edit>) {
         let inv = 1.0 / self.grid.spacing_m;
         self.edges(|c, is_x, e, mid, (a, b)| {
             let Some(edit) = f(&frame(pts, mid)) else {

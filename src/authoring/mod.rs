@@ -36,23 +36,33 @@
 //! - [`landform`]: the rest of Fig. 4 (cliff, river, free crest, ravine, fault) and the Fig. 8
 //!   composites (mountain range, mesa).
 //! - [`tensor`]: §4.3 tensor maps (directional, skeleton, stroke-aligned).
-//! - [`paste`]: §4.1 copy-paste of the procedural world's gradients, rotated and scaled.
+//! - [`paste`]: §4.1 copy-paste of gradients (from this world, another seed or an inline PNG16
+//!   heightmap), rotated, scaled and warped.
 //! - [`erosion`]: §4.4 an elevation-domain brush (thermal erosion) keeping the Dirichlet samples.
+//! - [`hydraulic`]: §4.4 the hydraulic erosion brush (deterministic droplets) keeping them too.
+//! - [`fitting`]: §5.1 fitting to contour lines and to ridge/river networks, and the §3
+//!   two-pass regularisation.
+//! - [`spec_tools`]: the parameter types and limits of the fitting and import tools.
 //! - [`stats`]: readouts (elevation, slope) over a point, polyline or rectangle.
 //! - [`exchange`]: PNG16 heightmaps and the §3 two-channel gradient-map encoding, in and out.
 
 pub mod erosion;
 pub mod exchange;
+pub mod fitting;
 pub mod grid;
+pub mod hydraulic;
 pub mod landform;
 pub mod paste;
 pub mod raster;
 pub mod region;
 pub mod spec;
+pub mod spec_tools;
 pub mod stats;
 pub mod tensor;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_tools;
 
 pub use grid::{Procedural, RegionGrid};
 pub use region::{solve_region, Displacement, RegionError};

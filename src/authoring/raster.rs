@@ -98,29 +98,72 @@ impl Canvas {
     }
 
     /// Samples within `radius` of the polyline (at least the nearest one), with the parameter of
-    /// their closest point: `(sample, distance, segment, fraction)`.
+    /// their closest point: `(sample, distance, segment, fraction)`, in sample order.
+    ///
+    /// Each segment visits only the samples of its bounding box grown by `radius`, so the cost
+    /// follows the polyline's length, not the grid's area; the closest segment of a sample is
+    /// the first of the least distance, as [`polyline_distance`] picks it.
     pub(super) fn near_polyline(
         &self,
         pts: &[[f64; 2]],
         radius: f64,
     ) -> Vec<(usize, f64, usize, f64)> {
         let n = self.grid.n;
-        let mut out = Vec::new();
-        let mut nearest = (f64::INFINITY, 0, 0, 0.0);
-        for v in 0..n * n {
-            let p = self.grid.position(v % n, v / n);
-            let (d, s, t) = polyline_distance(pts, p);
-            if d <= radius {
-                out.push((v, d, s, t));
+        let last = (n - 1) as f64;
+        let segments: Vec<([f64; 2], [f64; 2])> = if pts.len() == 1 {
+            vec![(pts[0], pts[0])]
+        } else {
+            pts.windows(2).map(|w| (w[0], w[1])).collect()
+        };
+        let mut best: std::collections::BTreeMap<usize, (f64, usize, f64)> = Default::default();
+        for (s, (a, b)) in segments.iter().enumerate() {
+            let lo = self
+                .grid
+                .grid_coords(a[0].min(b[0]) - radius, a[1].min(b[1]) - radius);
+            let hi = self
+                .grid
+                .grid_coords(a[0].max(b[0]) + radius, a[1].max(b[1]) + radius);
+            if hi.0 < 0.0 || hi.1 < 0.0 || lo.0 > last || lo.1 > last {
+                continue;
             }
-            if d < nearest.0 {
-                nearest = (d, v, s, t);
+            // One sample of slack against rounding at the box's edges (the distance decides).
+            let (i0, j0) = (
+                (lo.0 - 1.0).max(0.0).ceil() as usize,
+                (lo.1 - 1.0).max(0.0).ceil() as usize,
+            );
+            let (i1, j1) = (
+                (hi.0 + 1.0).min(last).floor() as usize,
+                (hi.1 + 1.0).min(last).floor() as usize,
+            );
+            for j in j0..=j1 {
+                for i in i0..=i1 {
+                    let p = self.grid.position(i, j);
+                    let (d, _, t) = polyline_distance(&[*a, *b], p);
+                    if d > radius {
+                        continue;
+                    }
+                    let v = j * n + i;
+                    let entry = best.entry(v).or_insert((f64::INFINITY, s, t));
+                    if d < entry.0 {
+                        *entry = (d, s, t);
+                    }
+                }
             }
         }
-        if out.is_empty() {
-            out.push((nearest.1, nearest.0, nearest.2, nearest.3));
+        if best.is_empty() {
+            // Nothing within the radius: the nearest sample, by a full scan.
+            let mut nearest = (f64::INFINITY, 0, 0, 0.0);
+            for v in 0..n * n {
+                let (d, s, t) = polyline_distance(pts, self.grid.position(v % n, v / n));
+                if d < nearest.0 {
+                    nearest = (d, v, s, t);
+                }
+            }
+            return vec![(nearest.1, nearest.0, nearest.2, nearest.3)];
         }
-        out
+        best.into_iter()
+            .map(|(v, (d, s, t))| (v, d, s, t))
+            .collect()
     }
 
     /// Hard elevation constraint along a polyline (one point is a polyline of one point), the
@@ -198,7 +241,13 @@ impl Canvas {
         });
     }
 
-    /// Noise brush: `g += f(r)·∇n` with `n = amplitude · lattice(x/λ, z/λ)`.
+    /// Noise brush: `g += f(r)·A·∇n` with `n = amplitude · lattice(x/λ, z/λ)` and the tensor
+    /// `A = I + modulation` (§4.3 applied to the noise, as in Fig. 11 where the noise is
+    /// oriented by tensors; `modulation = μ·M(θ)` stretches the noise's slopes along `θ` by
+    /// `1 + μ` and across it by `1 − μ`; zero for plain noise). The component along an edge is
+    /// the noise's difference across the edge; the other, for the tensor, its central
+    /// difference at the edge's midpoint.
+    #[allow(clippy::too_many_arguments)]
     pub fn noise(
         &mut self,
         world_seed: u64,
@@ -207,6 +256,7 @@ impl Canvas {
         amplitude: f64,
         wavelength: f64,
         seed: u32,
+        modulation: [[f64; 2]; 2],
     ) {
         let s = stream(world_seed, NOISE_PURPOSE, seed);
         let n_at = |p: [f64; 2]| {
@@ -217,7 +267,9 @@ impl Canvas {
                     s,
                 ))
         };
-        let inv = 1.0 / self.grid.spacing_m;
+        let modulated = modulation.iter().flatten().any(|m| *m != 0.0);
+        let h = self.grid.spacing_m;
+        let inv = 1.0 / h;
         self.edges(|c, is_x, e, mid, (a, b)| {
             let w = falloff(dist(mid, center), radius);
             if w == 0.0 {
@@ -226,7 +278,22 @@ impl Canvas {
             let n = c.grid.n;
             let pa = c.grid.position(a % n, a / n);
             let pb = c.grid.position(b % n, b / n);
-            let dn = (n_at(pb) - n_at(pa)) * inv;
+            let along = (n_at(pb) - n_at(pa)) * inv;
+            let dn = if modulated {
+                let off = if is_x { [0.0, 0.5 * h] } else { [0.5 * h, 0.0] };
+                let across = (n_at([mid[0] + off[0], mid[1] + off[1]])
+                    - n_at([mid[0] - off[0], mid[1] - off[1]]))
+                    * inv;
+                let g = if is_x {
+                    [along, across]
+                } else {
+                    [across, along]
+                };
+                let axis = usize::from(!is_x);
+                along + modulation[axis][0] * g[0] + modulation[axis][1] * g[1]
+            } else {
+                along
+            };
             let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
             *g = (f64::from(*g) + w * dn) as f32;
         });

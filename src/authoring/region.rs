@@ -2,9 +2,12 @@
 //! lattice heights.
 
 use super::grid::{Procedural, RegionGrid};
-use super::paste::{PasteSource, Placement};
+use super::hydraulic::{droplet_seed, Droplets};
+use super::paste::{PasteSource, Placement, Warp};
 use super::raster::Canvas;
 use super::spec::{Op, RegionSpec, Shape};
+use super::spec_tools::resolve_elevations;
+use super::tensor::orientation;
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
 
@@ -14,6 +17,15 @@ pub enum RegionError {
     /// The solver refused the problem.
     #[error("region solver: {0}")]
     Solver(#[from] PoissonError),
+    /// An operation's input could not be used (a copy-paste source unreadable, a network node
+    /// without an elevation): the operation index and the reason.
+    #[error("/ops/{op}: {message}")]
+    Source {
+        /// Index of the operation.
+        op: usize,
+        /// Why.
+        message: String,
+    },
 }
 
 /// A solved region: the displacement `d` to add to procedural heights (see [`super`]).
@@ -110,7 +122,7 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
             Ok(report.cycles)
         };
     let mut first = true;
-    for op in &spec.ops {
+    for (index, op) in spec.ops.iter().enumerate() {
         match op {
             Op::Elevation {
                 shape,
@@ -153,14 +165,21 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 amplitude_m,
                 wavelength_m,
                 seed,
-            } => canvas.noise(
-                plan.seed,
-                *center,
-                *radius_m,
-                *amplitude_m,
-                *wavelength_m,
-                *seed,
-            ),
+                anisotropy,
+                angle_deg,
+            } => {
+                let m = orientation(angle_deg.to_radians());
+                let k = *anisotropy;
+                canvas.noise(
+                    plan.seed,
+                    *center,
+                    *radius_m,
+                    *amplitude_m,
+                    *wavelength_m,
+                    *seed,
+                    [[k * m[0][0], k * m[0][1]], [k * m[1][0], k * m[1][1]]],
+                )
+            }
             Op::Cliff {
                 points,
                 top_elevation_m,
@@ -214,13 +233,40 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 target,
                 rotation_deg,
                 scale,
+                source_seed,
+                heightmap,
+                warp_m,
+                warp_wavelength_m,
+                warp_seed,
             } => {
-                let src =
-                    PasteSource::sample(plan, *source_min, *source_max, grid.spacing_m / scale);
+                let spacing = grid.spacing_m / scale;
+                let source_err = |message: String| RegionError::Source {
+                    op: index,
+                    message: format!("copy-paste source: {message}"),
+                };
+                let src = match (heightmap, source_seed) {
+                    (Some(h), _) => {
+                        let img = h.decode().map_err(source_err)?;
+                        PasteSource::from_image(
+                            &img,
+                            h.spacing_m,
+                            *source_min,
+                            *source_max,
+                            spacing,
+                        )
+                    }
+                    (None, Some(seed)) => {
+                        let other = WorldPlan::new(*seed, plan.params.clone())
+                            .map_err(|e| source_err(e.to_string()))?;
+                        PasteSource::sample(&other, *source_min, *source_max, spacing)
+                    }
+                    (None, None) => PasteSource::sample(plan, *source_min, *source_max, spacing),
+                };
                 let at = Placement {
                     target: *target,
                     rotation_deg: *rotation_deg,
                     scale: *scale,
+                    warp: Warp::new(plan.seed, *warp_seed, *warp_m, *warp_wavelength_m),
                 };
                 canvas.paste(&src, &at);
             }
@@ -252,6 +298,46 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                     first = false;
                 }
                 canvas.erode(*center, *radius_m, *talus_deg, *iterations, &current);
+            }
+            Op::HydraulicErosion {
+                center,
+                radius_m,
+                droplets,
+                steps,
+                erosion_rate,
+                seed,
+            } => {
+                if !solved {
+                    cycles = solve(&canvas, &mut current, first)?;
+                    first = false;
+                }
+                let d = Droplets {
+                    count: *droplets,
+                    steps: *steps,
+                    erosion_rate: *erosion_rate,
+                    seed: droplet_seed(plan.seed, *seed),
+                };
+                canvas.hydraulic_erode(*center, *radius_m, &d, &current);
+            }
+            Op::Contours { lines, detail } => canvas.contours(lines, *detail),
+            Op::Network {
+                nodes,
+                edges,
+                detail,
+            } => {
+                let elevations =
+                    resolve_elevations(nodes, edges).map_err(|k| RegionError::Source {
+                        op: index,
+                        message: format!("node {k} has no elevation"),
+                    })?;
+                canvas.network(nodes, &elevations, edges, *detail)
+            }
+            Op::Regularize {} => {
+                if !solved {
+                    cycles = solve(&canvas, &mut current, first)?;
+                    first = false;
+                }
+                canvas.regularize(&current);
             }
         }
         solved = matches!(op, Op::Freeze { .. });

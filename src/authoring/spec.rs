@@ -10,6 +10,10 @@
 //! degrees. Every limit is a constant here ([`SAMPLE_CHOICES`], [`MAX_OPS`], [`MAX_POINTS`]).
 
 use super::erosion::MAX_EROSION_ITERATIONS;
+use super::spec_tools::{
+    validate_contours, validate_heightmap, validate_network, Contour, Heightmap, NetworkEdge,
+    NetworkNode, MAX_DROPLETS, MAX_DROPLET_STEPS,
+};
 use crate::scene::Element;
 use serde::{Deserialize, Serialize};
 
@@ -98,6 +102,13 @@ pub enum Op {
         /// Noise seed (hashed with the world seed).
         #[serde(default)]
         seed: u32,
+        /// Tensor modulation `μ` (§4.3): the noise's slopes along `angle_deg` are scaled by
+        /// `1 + μ`, across it by `1 − μ` (`0..=1`; 0: isotropic noise).
+        #[serde(default)]
+        anisotropy: f64,
+        /// Direction `θ` of the modulation, degrees from +x toward +z.
+        #[serde(default)]
+        angle_deg: f64,
     },
 
     /// Cliff (Fig. 4): the top edge at `top_elevation_m` along the polyline (hard) and, on the
@@ -192,7 +203,9 @@ pub enum Op {
     /// `source_min..source_max` are pasted centred on `target`, rotated by `rotation_deg` (from
     /// +x toward +z: clockwise on a north-up map) and scaled horizontally by `scale` (heights
     /// are copied, so slopes scale by `1/scale`); they replace the target gradient (soft), and
-    /// the reconstruction blends the copy into its surroundings.
+    /// the reconstruction blends the copy into its surroundings. The source is this world, the
+    /// world of seed `source_seed` (same settings), or an inline PNG16 `heightmap` (then the
+    /// source rectangle is in metres from the image's west-north pixel); at most one of the two.
     CopyPaste {
         /// West-north corner of the source `[x, z]`, metres.
         source_min: [f64; 2],
@@ -206,6 +219,22 @@ pub enum Op {
         /// Horizontal scale (`0.125..=8`).
         #[serde(default = "unit_scale")]
         scale: f64,
+        /// Seed of another world to copy from (with this world's settings).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        source_seed: Option<u64>,
+        /// An uploaded heightmap to copy from.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        heightmap: Option<Heightmap>,
+        /// Warp amplitude, metres (`0..=1000`; 0: none): the footprint is displaced by a
+        /// smooth noise field before the mapping ([`super::paste::Warp`]).
+        #[serde(default)]
+        warp_m: f64,
+        /// Wavelength of the warp, metres (`1..=100000`).
+        #[serde(default = "default_warp_wavelength")]
+        warp_wavelength_m: f64,
+        /// Warp noise seed (hashed with the world seed).
+        #[serde(default)]
+        warp_seed: u32,
     },
 
     /// Directional tensor (§4.3): inside the disc of `radius_m` around `center` the target
@@ -259,6 +288,70 @@ pub enum Op {
         /// Erosion steps, `1..=500`.
         iterations: u32,
     },
+    /// Hydraulic erosion brush (§4.4, Fig. 14): the heights solved so far are eroded inside the
+    /// disc of `radius_m` around `center` by `droplets` water droplets (each starting at a
+    /// hashed point of the disc and running at most `steps` cells downhill, picking up and
+    /// dropping sediment), keeping every fixed sample; the erosion's gradient change joins the target
+    /// there (soft, added). See [`super::hydraulic`].
+    HydraulicErosion {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Radius, metres.
+        radius_m: f64,
+        /// Droplets, `1..=200000`.
+        droplets: u32,
+        /// Most cells a droplet runs, `1..=512`.
+        #[serde(default = "default_steps")]
+        steps: u32,
+        /// Share of the missing sediment capacity picked up per step, `0..=1`.
+        #[serde(default = "default_erosion_rate")]
+        erosion_rate: f64,
+        /// Droplet seed (hashed with the world seed).
+        #[serde(default)]
+        seed: u32,
+    },
+    /// Fitting to contour lines (§5.1, Fig. 10): every line becomes an elevation constraint at
+    /// its elevation (hard), and the target gradient of the heights over the whole region is
+    /// scaled by `detail` (0: the null Laplacian, a membrane between the contours; 1: keep the
+    /// relief, e.g. the procedural world's or a noise brush's, as detail).
+    Contours {
+        /// The contour lines.
+        lines: Vec<Contour>,
+        /// Share of the prior relief kept, `0..=1`.
+        #[serde(default)]
+        detail: f64,
+    },
+    /// Fitting to a ridge/river network (§5.1, Fig. 11): each edge is an elevation constraint
+    /// along its polyline (hard), the elevation linear in arc length between its nodes' (so
+    /// junctions agree), with flanks falling from ridges and banks rising from rivers at
+    /// `slope_deg` over `width_m` (soft); the rest of the region's target gradient is scaled by
+    /// `detail` as for contours.
+    Network {
+        /// The nodes (junctions, sources, mouths, peaks).
+        nodes: Vec<NetworkNode>,
+        /// The edges between nodes.
+        edges: Vec<NetworkEdge>,
+        /// Share of the prior relief kept, `0..=1`.
+        #[serde(default)]
+        detail: f64,
+    },
+    /// Two-pass regularisation (§3): the operations so far are reconstructed, the target
+    /// gradient becomes the gradient of that reconstruction (curl-free), and the interior
+    /// Dirichlet constraints are dropped (frozen samples stay), as they are now part of the
+    /// gradient field. Later operations edit that field.
+    Regularize {},
+}
+
+fn default_warp_wavelength() -> f64 {
+    64.0
+}
+
+fn default_steps() -> u32 {
+    64
+}
+
+fn default_erosion_rate() -> f64 {
+    0.3
 }
 
 fn default_talus() -> f64 {
@@ -304,14 +397,14 @@ pub struct SpecError {
     pub message: String,
 }
 
-fn err(pointer: impl Into<String>, message: impl Into<String>) -> SpecError {
+pub(super) fn err(pointer: impl Into<String>, message: impl Into<String>) -> SpecError {
     SpecError {
         pointer: pointer.into(),
         message: message.into(),
     }
 }
 
-fn finite_in(pointer: String, v: f64, lo: f64, hi: f64) -> Result<(), SpecError> {
+pub(super) fn finite_in(pointer: String, v: f64, lo: f64, hi: f64) -> Result<(), SpecError> {
     if v.is_finite() && (lo..=hi).contains(&v) {
         Ok(())
     } else {
@@ -434,12 +527,16 @@ impl RegionSpec {
                     radius_m,
                     amplitude_m,
                     wavelength_m,
+                    anisotropy,
+                    angle_deg,
                     ..
                 } => {
                     pos(at("/center"), *center)?;
                     radius(at("/radius_m"), *radius_m)?;
                     finite_in(at("/amplitude_m"), *amplitude_m, 0.0, 1.0e4)?;
                     finite_in(at("/wavelength_m"), *wavelength_m, 1.0e-3, 1.0e6)?;
+                    finite_in(at("/anisotropy"), *anisotropy, 0.0, 1.0)?;
+                    finite_in(at("/angle_deg"), *angle_deg, -360.0, 360.0)?;
                 }
                 Op::Cliff {
                     points,
@@ -520,7 +617,23 @@ impl RegionSpec {
                     target,
                     rotation_deg,
                     scale,
+                    source_seed,
+                    heightmap,
+                    warp_m,
+                    warp_wavelength_m,
+                    ..
                 } => {
+                    finite_in(at("/warp_m"), *warp_m, 0.0, 1000.0)?;
+                    finite_in(at("/warp_wavelength_m"), *warp_wavelength_m, 1.0, 1.0e5)?;
+                    if let Some(h) = heightmap {
+                        if source_seed.is_some() {
+                            return Err(err(
+                                at("/source_seed"),
+                                "give at most one of source_seed and heightmap",
+                            ));
+                        }
+                        validate_heightmap(&at("/heightmap"), h)?;
+                    }
                     pos(at("/source_min"), *source_min)?;
                     pos(at("/source_max"), *source_max)?;
                     pos(at("/target"), *target)?;
@@ -588,6 +701,37 @@ impl RegionSpec {
                         ));
                     }
                 }
+                Op::HydraulicErosion {
+                    center,
+                    radius_m,
+                    droplets,
+                    steps,
+                    erosion_rate,
+                    ..
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    if !(1..=MAX_DROPLETS).contains(droplets) {
+                        return Err(err(
+                            at("/droplets"),
+                            format!("must be in 1..={MAX_DROPLETS}"),
+                        ));
+                    }
+                    if !(1..=MAX_DROPLET_STEPS).contains(steps) {
+                        return Err(err(
+                            at("/steps"),
+                            format!("must be in 1..={MAX_DROPLET_STEPS}"),
+                        ));
+                    }
+                    finite_in(at("/erosion_rate"), *erosion_rate, 0.0, 1.0)?;
+                }
+                Op::Contours { lines, detail } => validate_contours(&at(""), lines, *detail)?,
+                Op::Network {
+                    nodes,
+                    edges,
+                    detail,
+                } => validate_network(&at(""), nodes, edges, *detail)?,
+                Op::Regularize {} => {}
             }
         }
         Ok(())
@@ -611,6 +755,30 @@ mod tests {
             "ops": [{"op": "freeze", "center": [0, 0], "radius_m": "wide"}]}]});
         let e = Scene::from_value(&bad).expect_err("refused");
         assert!(e.pointer.starts_with("/regions/0/ops/0"), "{e}");
+    }
+
+    #[test]
+    fn the_new_tools_parse_with_defaults() {
+        let r = parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]},
+            "ops": [{"op": "hydraulic_erosion", "center": [50, 50], "radius_m": 20, "droplets": 100},
+                    {"op": "regularize"},
+                    {"op": "contours", "lines": [{"points": [[1, 1], [9, 9]], "elevation_m": 3}]}]}))
+        .expect("valid");
+        assert!(matches!(
+            r.ops[0],
+            Op::HydraulicErosion { steps: 64, erosion_rate, seed: 0, .. } if erosion_rate == 0.3
+        ));
+        assert_eq!(r.ops[1], Op::Regularize {});
+        assert!(matches!(&r.ops[2], Op::Contours { detail, .. } if *detail == 0.0));
+        // A copy-paste without a heightmap or seed serialises as before.
+        let p = parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]},
+            "ops": [{"op": "copy_paste", "source_min": [0, 0], "source_max": [9, 9], "target": [5, 5]}]}))
+        .expect("valid");
+        let text = serde_json::to_string(&p.ops[0]).expect("json");
+        assert!(
+            !text.contains("heightmap") && !text.contains("source_seed"),
+            "{text}"
+        );
     }
 
     #[test]
@@ -693,6 +861,67 @@ mod tests {
                 "/ops/0/bank_slope_deg",
             ),
             (base(json!([{"op": "melt"}])), "/ops/0"),
+            (
+                base(
+                    json!([{"op": "hydraulic_erosion", "center": [0, 0], "radius_m": 5, "droplets": 0}]),
+                ),
+                "/ops/0/droplets",
+            ),
+            (
+                base(
+                    json!([{"op": "hydraulic_erosion", "center": [0, 0], "radius_m": 5, "droplets": 9, "erosion_rate": 2}]),
+                ),
+                "/ops/0/erosion_rate",
+            ),
+            (
+                base(json!([{"op": "contours", "lines": []}])),
+                "/ops/0/lines",
+            ),
+            (
+                base(
+                    json!([{"op": "contours", "lines": [{"points": [[0, 0]], "elevation_m": 1e9}]}]),
+                ),
+                "/ops/0/lines/0/elevation_m",
+            ),
+            (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}, {"at": [9, 9], "elevation_m": 5}],
+                    "edges": [{"from": 0, "to": 1, "kind": "river"}]}])),
+                "/ops/0/edges/0/to",
+            ),
+            (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}],
+                    "edges": [{"from": 0, "to": 3, "kind": "ridge"}]}])),
+                "/ops/0/edges/0/to",
+            ),
+            (
+                base(
+                    json!([{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 10], "target": [5, 5],
+                        "heightmap": {"png_base64": "not*base64", "lo_m": 0, "hi_m": 1, "spacing_m": 1}}]),
+                ),
+                "/ops/0/heightmap/png_base64",
+            ),
+            (
+                base(
+                    json!([{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 10], "target": [5, 5],
+                        "source_seed": 4, "heightmap": {"png_base64": "", "lo_m": 0, "hi_m": 1, "spacing_m": 1}}]),
+                ),
+                "/ops/0/source_seed",
+            ),
+            (base(json!([{"op": "regularize", "x": 1}])), "/ops/0"),
+            (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}, {"at": [9, 9]}],
+                    "edges": [{"from": 0, "to": 1, "kind": "ridge"}]}])),
+                "/ops/0/nodes/1/elevation_m",
+            ),
+            (
+                base(json!([{"op": "network",
+                    "nodes": [{"at": [0, 0], "elevation_m": 1}, {"at": [9, 9]}],
+                    "edges": [{"from": 0, "to": 1, "kind": "river", "grade_deg": 5}]}])),
+                "/ops/0/edges/0/to",
+            ),
             (
                 json!({"id": "a", "bbox": {"min": [0, 0], "max": [0, 10]}}),
                 "/bbox",

@@ -191,7 +191,7 @@ fn a_mesa_is_flat_at_its_elevation_with_a_steep_rim() {
 }
 
 /// Pearson correlation of two series.
-fn correlation(a: &[f64], b: &[f64]) -> f64 {
+pub(super) fn correlation(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len() as f64;
     let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
     let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
@@ -204,7 +204,7 @@ fn correlation(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// Least-squares `v ≈ a + b·x + c·z`: `[a, b, c]` (normal equations, Cramer's rule).
-fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
+pub(super) fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
     let mut m = [[0.0f64; 3]; 3];
     let mut rhs = [0.0f64; 3];
     for (q, y) in p.iter().zip(v) {
@@ -235,20 +235,19 @@ fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
     out
 }
 
-#[test]
-fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
-    use super::paste::{PasteSource, Placement};
-    let (min, max) = ([1500.0, 2500.0], [1560.0, 2560.0]);
-    let at = Placement {
-        target: [1064.0, 2064.0],
-        rotation_deg: 30.0,
-        scale: 1.25,
-    };
-    let r = solve(
-        json!([{"op": "copy_paste", "source_min": min, "source_max": max,
-        "target": at.target, "rotation_deg": at.rotation_deg, "scale": at.scale}]),
-    );
-    let src = PasteSource::sample(&plan(), min, max, r.grid.spacing_m / at.scale);
+/// How a pasted region's gradients match the source's over the core of the footprint (15 m
+/// from its centre in source metres): correlation and gain against the mapped source gradients,
+/// the unedited terrain's correlation, and how many samples were compared.
+///
+/// Poisson pasting keeps the copy's relief but reconciles its large-scale slope with the
+/// surroundings: the heights are the copy's plus a harmonic correction, whose gradient over the
+/// core is close to affine in position. So the gradients are compared with each component's
+/// best affine fit in position removed.
+pub(super) fn paste_agreement(
+    r: &Displacement,
+    src: &super::paste::PasteSource,
+    at: &super::paste::Placement,
+) -> (f64, f64, f64, usize) {
     let h = r.grid.spacing_m;
     let (mut pasted, mut expected, mut before) = (Vec::new(), Vec::new(), Vec::new());
     let mut positions = Vec::new();
@@ -257,25 +256,21 @@ fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
         for i in 1..n - 1 {
             let p = r.grid.position(i, j);
             // The core of the footprint: away from its boundary, where the blend acts.
-            let (q, _) = at.source_of(&src, p);
+            let (q, _) = at.source_of(src, p);
             if (q[0] - src.center[0]).abs() > 15.0 || (q[1] - src.center[1]).abs() > 15.0 {
                 continue;
             }
-            let read = |dx: f64, dz: f64| src.height(at.source_of(&src, [p[0] + dx, p[1] + dz]).0);
+            let read = |dx: f64, dz: f64| src.height(at.source_of(src, [p[0] + dx, p[1] + dz]).0);
             expected.push((read(h, 0.0) - read(-h, 0.0)) / (2.0 * h));
             expected.push((read(0.0, h) - read(0.0, -h)) / (2.0 * h));
-            pasted.push((height(&r, i + 1, j) - height(&r, i - 1, j)) / (2.0 * h));
-            pasted.push((height(&r, i, j + 1) - height(&r, i, j - 1)) / (2.0 * h));
+            pasted.push((height(r, i + 1, j) - height(r, i - 1, j)) / (2.0 * h));
+            pasted.push((height(r, i, j + 1) - height(r, i, j - 1)) / (2.0 * h));
             positions.push([p[0] - at.target[0], p[1] - at.target[1]]);
             let v = j * n + i;
             before.push((f64::from(r.base[v + 1]) - f64::from(r.base[v - 1])) / (2.0 * h));
             before.push((f64::from(r.base[v + n]) - f64::from(r.base[v - n])) / (2.0 * h));
         }
     }
-    // Poisson pasting keeps the copy's relief but reconciles its large-scale slope with the
-    // surroundings: the heights are the copy's plus a harmonic correction, whose gradient over
-    // the core is close to affine in position. So compare the gradients with each component's
-    // best affine fit in position removed.
     for series in [&mut pasted, &mut expected, &mut before] {
         for k in 0..2 {
             let values: Vec<f64> = series.iter().skip(k).step_by(2).copied().collect();
@@ -293,11 +288,29 @@ fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
         .map(|(a, b)| a * b)
         .sum::<f64>()
         / expected.iter().map(|b| b * b).sum::<f64>();
-    println!(
-        "copy-paste: {} gradients, correlation {c:.3} (unedited {c0:.3}), gain {gain:.3}",
-        pasted.len() / 2
+    (c, gain, c0, pasted.len() / 2)
+}
+
+#[test]
+fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
+    use super::paste::{PasteSource, Placement};
+    let (min, max) = ([1500.0, 2500.0], [1560.0, 2560.0]);
+    let at = Placement {
+        target: [1064.0, 2064.0],
+        rotation_deg: 30.0,
+        scale: 1.25,
+        warp: Default::default(),
+    };
+    let r = solve(
+        json!([{"op": "copy_paste", "source_min": min, "source_max": max,
+        "target": at.target, "rotation_deg": at.rotation_deg, "scale": at.scale}]),
     );
-    assert!(pasted.len() > 1000, "{} samples", pasted.len());
+    let src = PasteSource::sample(&plan(), min, max, r.grid.spacing_m / at.scale);
+    let (c, gain, c0, count) = paste_agreement(&r, &src, &at);
+    println!(
+        "copy-paste: {count} gradients, correlation {c:.3} (unedited {c0:.3}), gain {gain:.3}"
+    );
+    assert!(count > 1000, "{count} samples");
     assert!(c > 0.95, "correlation {c:.3}");
     assert!((0.85..1.15).contains(&gain), "gain {gain:.3}");
     assert!(c0 < c - 0.2, "the unedited terrain correlates {c0:.3}");

@@ -179,7 +179,7 @@ mod tests {
         // The same id in another array is another element.
         let d = scene(
             json!({"regions": [el("a", 0.0, 1.0, 0), el("b", 5.0, 6.0, 0)],
-                             "volumes": [el("d", 40.0, 41.0, 0)],
+                             "materials": [el("d", 40.0, 41.0, 0)],
                              "decals": [el("d", 20.0, 21.0, 0)]}),
         );
         assert_eq!(dirty_region(&a, &d), Dirty::Rects(vec![r(40.0, 41.0)]));

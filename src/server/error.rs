@@ -49,6 +49,8 @@ pub mod code {
     pub const UNAUTHENTICATED: &str = "unauthenticated";
     /// The token does not grant this operation.
     pub const FORBIDDEN: &str = "forbidden";
+    /// A query parameter is missing or not a valid value; `field` names it.
+    pub const BAD_PARAMETER: &str = "bad_parameter";
     /// The body is not the JSON the route expects; `field` is a JSON pointer into it.
     pub const BAD_BODY: &str = "bad_body";
     /// The body's `Content-Type` is not the one the route accepts.

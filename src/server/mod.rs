@@ -36,6 +36,7 @@ pub mod jobs;
 pub mod metrics;
 pub mod params;
 mod plans;
+pub mod region_io;
 pub mod regions;
 pub mod routes;
 pub mod volumes;

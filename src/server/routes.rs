@@ -40,6 +40,7 @@ pub fn router(state: AppState) -> Router {
         .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
         .route("/metrics", get(super::metrics::render))
         .merge(super::worlds::routes())
+        .merge(super::region_io::routes())
         .merge(super::exports::routes())
         .merge(super::chunks::routes())
         .merge(super::geology::routes())

@@ -1,0 +1,288 @@
+//! Import and export of an authored region over HTTP (issue 4, item 4), with the encodings of
+//! [`crate::authoring::exchange`] (Guérin et al. 2022, §3):
+//!
+//! | route | who | answer |
+//! |---|---|---|
+//! | `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]` | read | 16-bit greyscale PNG of the solved heights; range in `X-Strata-Lo-M` / `X-Strata-Hi-M` |
+//! | `GET /v1/worlds/{id}/regions/{rid}/gradients.png[?v=N]` | read | the two-channel gradient map (16-bit RGB, blue 0); `m` in `X-Strata-Gradient-M` |
+//! | `POST /v1/worlds/{id}/regions/{rid}/heightmap.png?lo_m=&hi_m=[&spacing_m=&target=x,z&rotation_deg=&scale=]` (`image/png`) | edit | `{id, version, region, op}` after the commit |
+//!
+//! The import appends to the region, at the latest version, a `copy_paste` operation whose
+//! source is the uploaded heightmap carried inline in the scene (base64, at most
+//! [`MAX_HEIGHTMAP_BASE64`] characters, so at most [`MAX_IMPORT_PNG_BYTES`] of PNG): its
+//! gradients replace the region's over the footprint and the reconstruction blends it into the
+//! surroundings. By default the image spans the region (`spacing_m = max(width, depth) /
+//! (max(pixels) − 1)`, centred on the region's centre); the query places it otherwise. The
+//! scene stays the one source of truth: the import is an ordinary edit, in the edit log.
+
+use super::error::{code, truncate, AppError};
+use super::worlds::{authorize, check_content_type, commit_edit, json_response, store_error};
+use super::AppState;
+use crate::authoring::exchange::{export_gradient_map, export_png16};
+use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
+use crate::authoring::Displacement;
+use crate::store::{Role, StoreError};
+use axum::body::Bytes;
+use axum::extract::{Path, RawQuery, State};
+use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::routing::get;
+use axum::Router;
+use serde_json::json;
+use std::sync::Arc;
+
+/// Largest uploaded PNG, bytes: what fits in [`MAX_HEIGHTMAP_BASE64`] base64 characters.
+pub const MAX_IMPORT_PNG_BYTES: usize = MAX_HEIGHTMAP_BASE64 / 4 * 3;
+/// Elevation of PNG value 0 on export, metres.
+pub const LO_HEADER: &str = "x-strata-lo-m";
+/// Elevation of PNG value 65535 on export, metres.
+pub const HI_HEADER: &str = "x-strata-hi-m";
+/// The gradient map's `m` (largest absolute component) on export.
+pub const GRADIENT_M_HEADER: &str = "x-strata-gradient-m";
+
+/// The routes of this module (merged into the service's router).
+pub(super) fn routes() -> Router<AppState> {
+    Router::new()
+        .route(
+            "/v1/worlds/{id}/regions/{rid}/heightmap.png",
+            get(heightmap_out).post(heightmap_in),
+        )
+        .route(
+            "/v1/worlds/{id}/regions/{rid}/gradients.png",
+            get(gradients_out),
+        )
+}
+
+/// The value of `name` in a raw query (no percent-decoding: the values are numbers).
+fn param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
+    query?.split('&').find_map(|kv| match kv.split_once('=') {
+        Some((k, v)) if k == name => Some(v),
+        None if kv == name => Some(""),
+        _ => None,
+    })
+}
+
+fn bad(field: &'static str, message: impl Into<String>) -> AppError {
+    AppError::bad_request(code::BAD_PARAMETER, field, message)
+}
+
+/// A finite number from the query, or `default` when absent (`None` default: required).
+fn number(query: Option<&str>, name: &'static str, default: Option<f64>) -> Result<f64, AppError> {
+    match (param(query, name), default) {
+        (Some(v), _) => v
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| bad(name, format!("{name} must be a finite number"))),
+        (None, Some(d)) => Ok(d),
+        (None, None) => Err(bad(name, format!("{name} is required"))),
+    }
+}
+
+/// The solved region `rid` of world `id` at the query's `v` (default: latest), after checking
+/// read access; with its version.
+async fn solved(
+    st: &AppState,
+    headers: &HeaderMap,
+    id: &str,
+    rid: &str,
+    query: Option<&str>,
+) -> Result<(Arc<Displacement>, u64), AppError> {
+    let (meta, _) = authorize(st, headers, id, Role::Read).await?;
+    let version = match param(query, "v") {
+        None => meta.version,
+        Some(v) => v.parse::<u64>().ok().filter(|v| *v >= 1).ok_or_else(|| {
+            AppError::bad_request(code::BAD_VERSION, "v", "v must be a version number ≥ 1")
+        })?,
+    };
+    if version > meta.version {
+        return Err(store_error(StoreError::VersionNotFound {
+            version,
+            latest: meta.version,
+        }));
+    }
+    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
+    let region = inputs
+        .region(rid)
+        .ok_or_else(|| no_region(id, rid, version))?;
+    let solved = st
+        .regions
+        .get(&plan, region)
+        .await
+        .ok_or_else(|| AppError::internal("the region could not be solved"))?;
+    Ok((solved, version))
+}
+
+fn no_region(id: &str, rid: &str, version: u64) -> AppError {
+    AppError::new(
+        StatusCode::NOT_FOUND,
+        code::NOT_FOUND,
+        format!(
+            "world {id} has no region {:?} at version {version}",
+            truncate(rid, 128)
+        ),
+    )
+    .with_field("rid")
+}
+
+/// A PNG answer with the version and extra headers.
+fn png_response(bytes: Vec<u8>, version: u64, extra: &[(&'static str, String)]) -> Response {
+    let mut res = (StatusCode::OK, bytes).into_response();
+    let h = res.headers_mut();
+    h.insert(header::CONTENT_TYPE, HeaderValue::from_static("image/png"));
+    h.insert(
+        header::CACHE_CONTROL,
+        HeaderValue::from_static("private, no-cache"),
+    );
+    h.insert(
+        HeaderName::from_static(super::worlds::VERSION_HEADER),
+        HeaderValue::from(version),
+    );
+    for (k, v) in extra {
+        if let Ok(v) = HeaderValue::from_str(v) {
+            h.insert(HeaderName::from_static(k), v);
+        }
+    }
+    res
+}
+
+async fn blocking<T: Send + 'static>(
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, AppError> {
+    tokio::task::spawn_blocking(f)
+        .await
+        .map_err(|_| AppError::internal("image encoding failed"))
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]`.
+async fn heightmap_out(
+    State(st): State<AppState>,
+    Path((id, rid)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
+    let png = blocking(move || export_png16(&region))
+        .await?
+        .map_err(|e| AppError::internal(format!("heightmap encoding: {e}")))?;
+    Ok(png_response(
+        png.bytes,
+        version,
+        &[
+            (LO_HEADER, png.lo_m.to_string()),
+            (HI_HEADER, png.hi_m.to_string()),
+        ],
+    ))
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/gradients.png[?v=N]`.
+async fn gradients_out(
+    State(st): State<AppState>,
+    Path((id, rid)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+) -> Result<Response, AppError> {
+    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
+    let png = blocking(move || export_gradient_map(&region))
+        .await?
+        .map_err(|e| AppError::internal(format!("gradient map encoding: {e}")))?;
+    Ok(png_response(
+        png.bytes,
+        version,
+        &[(GRADIENT_M_HEADER, png.m.to_string())],
+    ))
+}
+
+/// `POST /v1/worlds/{id}/regions/{rid}/heightmap.png?lo_m=&hi_m=[…]`: appends a copy-paste of
+/// the uploaded heightmap to the region (see the module docs).
+async fn heightmap_in(
+    State(st): State<AppState>,
+    Path((id, rid)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
+    headers: HeaderMap,
+    body: Bytes,
+) -> Result<Response, AppError> {
+    use base64::Engine;
+    authorize(&st, &headers, &id, Role::Edit).await?;
+    check_content_type(&headers, "image/png", true)?;
+    if body.len() > MAX_IMPORT_PNG_BYTES {
+        return Err(AppError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            code::PAYLOAD_TOO_LARGE,
+            format!(
+                "the heightmap is {} bytes; the limit is {MAX_IMPORT_PNG_BYTES}",
+                body.len()
+            ),
+        )
+        .with_field("body"));
+    }
+    let q = query.as_deref();
+    let lo_m = number(q, "lo_m", None)?;
+    let hi_m = number(q, "hi_m", None)?;
+    let head = st.worlds.store.head(&id).await.map_err(store_error)?;
+    let regions = head.scene["regions"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
+    let Some((index, element)) = regions
+        .iter()
+        .enumerate()
+        .find(|(_, r)| r["id"].as_str() == Some(rid.as_str()))
+    else {
+        return Err(no_region(&id, &rid, head.meta.version));
+    };
+    let bbox = |k: &str, c: usize| element["bbox"][k][c].as_f64().unwrap_or(0.0);
+    let (min, max) = (
+        [bbox("min", 0), bbox("min", 1)],
+        [bbox("max", 0), bbox("max", 1)],
+    );
+    let mut map = Heightmap {
+        png_base64: base64::engine::general_purpose::STANDARD.encode(&body),
+        lo_m,
+        hi_m,
+        spacing_m: 1.0,
+    };
+    let img = map
+        .decode()
+        .map_err(|e| AppError::bad_request(code::BAD_BODY, "body", e))?;
+    let side = (img.width.max(img.height) - 1) as f64;
+    let fit = (max[0] - min[0]).max(max[1] - min[1]) / side;
+    map.spacing_m = number(q, "spacing_m", Some(fit))?;
+    let target = match param(q, "target") {
+        None => [0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1])],
+        Some(t) => {
+            let xz: Vec<f64> = t.split(',').filter_map(|v| v.trim().parse().ok()).collect();
+            match xz.as_slice() {
+                [x, z] if x.is_finite() && z.is_finite() => [*x, *z],
+                _ => return Err(bad("target", "target must be x,z in metres")),
+            }
+        }
+    };
+    let extent = map.extent_m(img.width, img.height);
+    let op = json!({
+        "op": "copy_paste",
+        "source_min": [0.0, 0.0],
+        "source_max": extent,
+        "target": target,
+        "rotation_deg": number(q, "rotation_deg", Some(0.0))?,
+        "scale": number(q, "scale", Some(1.0))?,
+        "heightmap": map,
+    });
+    let ops = element["ops"].as_array().map_or(0, Vec::len);
+    let patch: json_patch::Patch = serde_json::from_value(json!([
+        {"op": "test", "path": format!("/regions/{index}/id"), "value": rid},
+        {"op": "add", "path": format!("/regions/{index}/ops/-"), "value": op},
+    ]))
+    .map_err(|e| AppError::internal(format!("import patch: {e}")))?;
+    let applied = commit_edit(&st, &id, patch, Some(head.meta.version)).await?;
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
+        "no-store",
+    );
+    res.headers_mut().insert(
+        HeaderName::from_static(super::worlds::VERSION_HEADER),
+        HeaderValue::from(applied.version),
+    );
+    Ok(res)
+}
