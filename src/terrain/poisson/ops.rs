@@ -103,20 +103,133 @@ fn smooth_row(x: &mut [f64], l: &[f64], r: &[f64], u: &[f64], d: &[f64], b: &[f6
     }
 }
 
-/// `sweeps` full red-black Gauss–Seidel sweeps (red half-sweep, then black).
+/// The four colours of the 9-point smoother on coarse levels: `(colour array, row parity)`. No
+/// two samples of one of them are neighbours in a 3 × 3 stencil.
+const FOUR_COLOURS: [(usize, usize); 4] = [(0, 0), (0, 1), (1, 0), (1, 1)];
+
+/// `sweeps` Gauss–Seidel sweeps: red then black on the finest level (5-point), the four colours
+/// of [`FOUR_COLOURS`] in order on coarse levels (9-point).
 pub fn smooth(level: &mut Level, sweeps: usize) {
     for _ in 0..sweeps {
-        smooth_colour(level, 0);
-        smooth_colour(level, 1);
+        if level.nine.is_some() {
+            for (c, p) in FOUR_COLOURS {
+                smooth_nine(level, c, p);
+            }
+        } else {
+            smooth_colour(level, 0);
+            smooth_colour(level, 1);
+        }
     }
 }
 
-/// `sweeps` sweeps in the reverse colour order (black, then red): the adjoint of [`smooth`], for
-/// post-smoothing, so a cycle is a symmetric operator (a valid conjugate-gradient preconditioner).
+/// `sweeps` sweeps in the reverse colour order: the adjoint of [`smooth`], for post-smoothing, so
+/// a cycle is a symmetric operator (a valid conjugate-gradient preconditioner).
 pub fn smooth_reverse(level: &mut Level, sweeps: usize) {
     for _ in 0..sweeps {
-        smooth_colour(level, 1);
-        smooth_colour(level, 0);
+        if level.nine.is_some() {
+            for (c, p) in FOUR_COLOURS.into_iter().rev() {
+                smooth_nine(level, c, p);
+            }
+        } else {
+            smooth_colour(level, 1);
+            smooth_colour(level, 0);
+        }
+    }
+}
+
+/// The eight neighbour rows of a colour row on a 9-point level, each a slice aligned with the
+/// row's interior slots `k0..k1`: `[uw, u, ue, w, e, dw, d, de]` (`u` the row above, `j − 1`).
+type Neighbours<'a> = [&'a [f64]; 8];
+
+/// Neighbour slices of the interior slots `k0..k1` of colour `c` in row `j`: `other` is the other
+/// colour's array, `up` and `down` this colour's rows `j ∓ 1`.
+#[inline]
+fn neighbours<'a>(
+    split: &Split,
+    c: usize,
+    j: usize,
+    other: &'a [f64],
+    up: &'a [f64],
+    down: &'a [f64],
+) -> (usize, usize, Neighbours<'a>) {
+    let st = split.stride;
+    let (k0, k1, s) = interior(split, c, j);
+    let (a, b) = (k0 + s - 1, k0 + s);
+    let n = k1 - k0;
+    let yc = &other[j * st..(j + 1) * st];
+    (
+        k0,
+        k1,
+        [
+            &up[a..a + n],
+            &other[(j - 1) * st + k0..(j - 1) * st + k1],
+            &up[b..b + n],
+            &yc[a..a + n],
+            &yc[b..b + n],
+            &down[a..a + n],
+            &other[(j + 1) * st + k0..(j + 1) * st + k1],
+            &down[b..b + n],
+        ],
+    )
+}
+
+/// `Σ` of the off-centre stencil terms at position `k` of the neighbour slices, in the order the
+/// WGSL twin uses: `((w + e) + (u + d)) + ((uw + ue) + (dw + de))`, each term weighted.
+#[inline(always)]
+fn off_centre(s: &[f64; 9], nb: &Neighbours, k: usize) -> f64 {
+    let [uw, u, ue, w, e, dw, d, de] = nb;
+    ((s[3] * w[k] + s[5] * e[k]) + (s[1] * u[k] + s[7] * d[k]))
+        + ((s[0] * uw[k] + s[2] * ue[k]) + (s[6] * dw[k] + s[8] * de[k]))
+}
+
+/// One Gauss–Seidel pass over the free samples of colour `c` in the rows of parity `p` of a
+/// coarse (9-point) level: `h ← (b − Σ) / s_c`. The rows written are disjoint from every row
+/// read, so rows run in parallel.
+pub fn smooth_nine(level: &mut Level, c: usize, p: usize) {
+    let split = level.split;
+    let st = split.stride;
+    let nz = split.nz;
+    let par = parallel(&split);
+    let Some(op) = level.nine.as_ref() else {
+        return;
+    };
+    let [h0, h1] = &mut level.h;
+    let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
+    let b = &level.rhs[c];
+    let f = &level.free[c];
+    let mut mine: Vec<(usize, &mut [f64])> = Vec::with_capacity(nz / 2 + 1);
+    let mut same: Vec<&[f64]> = Vec::with_capacity(nz);
+    for (j, row) in x.chunks_mut(st).enumerate() {
+        if j % 2 == p && j > 0 && j + 1 < nz {
+            mine.push((j, row));
+            same.push(&[]);
+        } else {
+            same.push(row);
+        }
+    }
+    let work = |(j, xrow): &mut (usize, &mut [f64])| {
+        let j = *j;
+        let (k0, k1, nb) = neighbours(&split, c, j, y, same[j - 1], same[j + 1]);
+        let xr = &mut xrow[k0..k1];
+        let br = &b[j * st + k0..j * st + k1];
+        let fr = &f[j * st + k0..j * st + k1];
+        let (sd, inv) = (&op.default, op.inv_default);
+        for k in 0..xr.len() {
+            let v = (br[k] - off_centre(sd, &nb, k)) * inv;
+            xr[k] = if fr[k] != 0 { v } else { xr[k] };
+        }
+        for sp in op.row(j) {
+            if sp.colour == c {
+                let k = sp.slot - j * st - k0;
+                xr[k] = (br[k] - off_centre(&sp.stencil, &nb, k)) * sp.inv_centre;
+            }
+        }
+    };
+    let band = band_rows(nz / 2 + 1);
+    if par {
+        mine.par_iter_mut().with_min_len(band).for_each(work);
+    } else {
+        mine.iter_mut().for_each(work);
     }
 }
 
@@ -318,17 +431,41 @@ fn residual_of_row(level: &Level, j: usize, out: &mut [Vec<f64>; 2]) -> f64 {
         let (k0, k1, s) = interior(split, c, j);
         let x = &level.h[c][j * st..(j + 1) * st];
         let y = &level.h[1 - c];
-        let yc = &y[j * st..(j + 1) * st];
-        residual_row(
-            &mut o[k0..k1],
-            &x[k0..k1],
-            &yc[k0 + s - 1..k1 + s - 1],
-            &yc[k0 + s..k1 + s],
-            &y[(j - 1) * st + k0..(j - 1) * st + k1],
-            &y[(j + 1) * st + k0..(j + 1) * st + k1],
-            &level.rhs[c][j * st + k0..j * st + k1],
-            &level.free[c][j * st + k0..j * st + k1],
-        );
+        let b = &level.rhs[c][j * st + k0..j * st + k1];
+        let f = &level.free[c][j * st + k0..j * st + k1];
+        match &level.nine {
+            None => {
+                let yc = &y[j * st..(j + 1) * st];
+                residual_row(
+                    &mut o[k0..k1],
+                    &x[k0..k1],
+                    &yc[k0 + s - 1..k1 + s - 1],
+                    &yc[k0 + s..k1 + s],
+                    &y[(j - 1) * st + k0..(j - 1) * st + k1],
+                    &y[(j + 1) * st + k0..(j + 1) * st + k1],
+                    b,
+                    f,
+                );
+            }
+            Some(op) => {
+                let hc = &level.h[c];
+                let (up, down) = (&hc[(j - 1) * st..j * st], &hc[(j + 1) * st..(j + 2) * st]);
+                let (_, _, nb) = neighbours(split, c, j, y, up, down);
+                let (xs, or) = (&x[k0..k1], &mut o[k0..k1]);
+                let sd = &op.default;
+                for k in 0..or.len() {
+                    let v = b[k] - (off_centre(sd, &nb, k) + sd[4] * xs[k]);
+                    or[k] = if f[k] != 0 { v } else { 0.0 };
+                }
+                for sp in op.row(j) {
+                    if sp.colour == c {
+                        let k = sp.slot - j * st - k0;
+                        let st9 = &sp.stencil;
+                        or[k] = b[k] - (off_centre(st9, &nb, k) + st9[4] * xs[k]);
+                    }
+                }
+            }
+        }
         ss += sum_squares(&o[k0..k1]);
     }
     ss
