@@ -4,7 +4,10 @@
 //! sample at offset `d` (each component −1, 0 or 1) from the counterpart `(2I, 2J)` of a coarse
 //! sample receives the weight `w(d) = (1 − |d_x|/2)(1 − |d_z|/2)` of that coarse value. Its rows
 //! at fixed fine samples are zero (a fixed sample takes no correction), its columns at fixed
-//! coarse samples are dropped (a fixed coarse sample carries no correction). The restriction is
+//! coarse samples are dropped (a fixed coarse sample carries no correction), and a fine sample
+//! at an odd-odd position takes no weight from a corner when both samples between them are fixed
+//! ([`interpolation_weight`]): a constraint curve with a diagonal step separates them, and
+//! interpolating across it would couple the corrections of its two sides. The restriction is
 //! `Pᵀ` (full weighting times 4, [`super::ops`]), so `A_c` is the Galerkin product and the
 //! coarse-grid correction is the energy-optimal one in the range of `P`, whatever the constraints:
 //! this is what keeps the per-cycle reduction steady with interior Dirichlet samples.
@@ -130,6 +133,25 @@ pub fn galerkin_default(fine: &[f64; 9]) -> [f64; 9] {
     out
 }
 
+/// The interpolation weight `P(f, I)` of coarse sample `(ci, cj)` at fine sample `(fi, fj)`: the
+/// bilinear weight, except that a fine sample at an odd-odd position takes nothing from a corner
+/// when both samples connecting it to that corner are fixed (the corner lies across a
+/// constraint, e.g. a diagonal step of a curve).
+pub fn interpolation_weight(fine: &Level, fi: usize, fj: usize, ci: usize, cj: usize) -> f64 {
+    let (x, z) = (fi as isize - 2 * ci as isize, fj as isize - 2 * cj as isize);
+    let w = weight(x, z);
+    if w == 0.0 || x == 0 || z == 0 {
+        return w;
+    }
+    let open = fine.is_free((fi as isize - x) as usize, fj)
+        || fine.is_free(fi, (fj as isize - z) as usize);
+    if open {
+        w
+    } else {
+        0.0
+    }
+}
+
 /// The stencil of fine sample `(i, j)` of `level` (5-point on the finest level).
 fn fine_stencil(level: &Level, i: usize, j: usize) -> [f64; 9] {
     match &level.nine {
@@ -151,7 +173,10 @@ fn galerkin_at(fine: &Level, coarse: &Level, ic: usize, jc: usize) -> [f64; 9] {
             if !fine.is_free(ai, aj) {
                 continue;
             }
-            let wa = weight(ax, az);
+            let wa = interpolation_weight(fine, ai, aj, ic, jc);
+            if wa == 0.0 {
+                continue;
+            }
             let row = fine_stencil(fine, ai, aj);
             for ez in -1..=1isize {
                 for ex in -1..=1isize {
@@ -165,10 +190,19 @@ fn galerkin_at(fine: &Level, coarse: &Level, ic: usize, jc: usize) -> [f64; 9] {
                     }
                     for dz in -1..=1isize {
                         for dx in -1..=1isize {
-                            let w = weight(bi - 2 * (ci + dx), bj - 2 * (cj + dz));
-                            if w == 0.0 || !coarse.is_free((ci + dx) as usize, (cj + dz) as usize) {
+                            let (jx, jz) = (ci + dx, cj + dz);
+                            if weight(bi - 2 * jx, bj - 2 * jz) == 0.0
+                                || !coarse.is_free(jx as usize, jz as usize)
+                            {
                                 continue;
                             }
+                            let w = interpolation_weight(
+                                fine,
+                                bi as usize,
+                                bj as usize,
+                                jx as usize,
+                                jz as usize,
+                            );
                             out[entry(dx, dz)] += wa * a * w;
                         }
                     }
@@ -213,8 +247,8 @@ pub fn coarsen_into(fine: &Level, coarse: &mut Level) {
         for c in 0..2 {
             let s = Split::shift(c, j);
             let row = &fine.free[c][j * fs.stride..(j + 1) * fs.stride];
-            for k in 1 - s..fg.nx / 2 {
-                if row[k] == 0 {
+            for (k, f) in row.iter().enumerate().take(fg.nx / 2).skip(1 - s) {
+                if *f == 0 {
                     mark(2 * k + s, j);
                 }
             }

@@ -204,6 +204,14 @@ mod tests {
                                 *j as isize - 2 * *jc as isize,
                             );
                             if x.abs() > 1 || z.abs() > 1 {
+                                return 0.0;
+                            }
+                            // A corner across a diagonal step of a constraint gives nothing.
+                            let blocked = x != 0
+                                && z != 0
+                                && !f.is_free((*i as isize - x) as usize, *j)
+                                && !f.is_free(*i, (*j as isize - z) as usize);
+                            if blocked {
                                 0.0
                             } else {
                                 (1.0 - 0.5 * x.abs() as f64) * (1.0 - 0.5 * z.abs() as f64)

@@ -505,8 +505,17 @@ pub fn residual(level: &Level, out: &mut [Vec<f64>; 2]) -> f64 {
 }
 
 /// Full weighting of fine rows `up = 2J − 1`, `mid = 2J`, `down = 2J + 1` (each as two colour
-/// rows) into the natural coarse row `out` (interior columns `1..ncx − 1`), times 4.
-fn full_weighting(up: &[Vec<f64>; 2], mid: &[Vec<f64>; 2], down: &[Vec<f64>; 2], out: &mut [f64]) {
+/// rows) into the natural coarse row `out` (interior columns `1..ncx − 1`), times 4: `Pᵀ`. The
+/// black free masks of the three rows (`fu`, `fm`, `fd`) give the corner weights: a corner
+/// sample contributes only if one of the two samples connecting it to the coarse sample (its
+/// edge neighbours `(2I, 2J ± 1)`, `(2I ± 1, 2J)`) is free, as in [`prolong`].
+fn full_weighting(
+    up: &[Vec<f64>; 2],
+    mid: &[Vec<f64>; 2],
+    down: &[Vec<f64>; 2],
+    masks: [&[u8]; 3],
+    out: &mut [f64],
+) {
     // Row 2J is even: red holds even columns (2I at slot I), black odd columns (2I ± 1 at slots
     // I − 1 and I). Rows 2J ± 1 are odd: red holds odd columns (2I ± 1 at I − 1, I), black even
     // columns (2I at I).
@@ -516,9 +525,13 @@ fn full_weighting(up: &[Vec<f64>; 2], mid: &[Vec<f64>; 2], down: &[Vec<f64>; 2],
     let (ub, db) = (&up[1][1..n + 1], &down[1][1..n + 1]);
     let (ur0, ur1) = (&up[0][..n], &up[0][1..n + 1]);
     let (dr0, dr1) = (&down[0][..n], &down[0][1..n + 1]);
+    let [fu, fm, fd] = masks;
+    let (fu, fd) = (&fu[1..n + 1], &fd[1..n + 1]);
+    let (fl, fr) = (&fm[..n], &fm[1..n + 1]);
     for k in 0..n {
         let edges = (mb0[k] + mb1[k]) + (ub[k] + db[k]);
-        let corners = (ur0[k] + ur1[k]) + (dr0[k] + dr1[k]);
+        let corners = (open(fl[k] | fu[k]) * ur0[k] + open(fr[k] | fu[k]) * ur1[k])
+            + (open(fl[k] | fd[k]) * dr0[k] + open(fr[k] | fd[k]) * dr1[k]);
         o[k] = (4.0 * mr[k] + 2.0 * edges + corners) * 0.25;
     }
 }
@@ -609,7 +622,13 @@ fn restrict_impl(fine: &Level, coarse: &mut Level, residual: bool) -> f64 {
                 ss += down_ss;
             }
             part[dj] = ss;
-            full_weighting(&bufs[0], &bufs[1], &bufs[2], &mut nat);
+            let fb = &fine.free[1];
+            let masks = [
+                &fb[(2 * jc - 1) * fst..2 * jc * fst],
+                &fb[2 * jc * fst..(2 * jc + 1) * fst],
+                &fb[(2 * jc + 1) * fst..(2 * jc + 2) * fst],
+            ];
+            full_weighting(&bufs[0], &bufs[1], &bufs[2], masks, &mut nat);
             let fr = [
                 &free[0][jc * cst..(jc + 1) * cst],
                 &free[1][jc * cst..(jc + 1) * cst],
@@ -678,9 +697,18 @@ pub fn prolong<const ADD: bool>(coarse: &Level, fine: &mut Level, scratch: &mut 
                         let (a, d) = (&e0[k0..k0 + n], &e1[k0..k0 + n]);
                         apply::<ADD>(xr, f, |k| (a[k] + d[k]) * 0.5);
                     } else {
+                        // Odd-odd sample: a corner whose two connecting samples are both
+                        // fixed lies across a constraint and gives no weight.
                         let (a, bb) = (&e0[k0..k0 + n], &e0[k0 + 1..k0 + 1 + n]);
                         let (d, e) = (&e1[k0..k0 + n], &e1[k0 + 1..k0 + 1 + n]);
-                        apply::<ADD>(xr, f, |k| ((a[k] + bb[k]) + (d[k] + e[k])) * 0.25);
+                        let fo = &free[1 - c];
+                        let (fl, fr) = (&fo[j * st + k0..], &fo[j * st + k0 + 1..]);
+                        let (fu, fd) = (&fo[(j - 1) * st + k0..], &fo[(j + 1) * st + k0..]);
+                        apply::<ADD>(xr, f, |k| {
+                            ((open(fl[k] | fu[k]) * a[k] + open(fr[k] | fu[k]) * bb[k])
+                                + (open(fl[k] | fd[k]) * d[k] + open(fr[k] | fd[k]) * e[k]))
+                                * 0.25
+                        });
                     }
                 }
             }
@@ -696,6 +724,17 @@ pub fn prolong<const ADD: bool>(coarse: &Level, fine: &mut Level, scratch: &mut 
             .zip(h1.chunks_mut(band * st))
             .enumerate()
             .for_each(|(b, p)| work(b, p));
+    }
+}
+
+/// The weight factor of a corner: 1 if one of its two connecting samples is free (`flags ≠ 0`),
+/// else 0.
+#[inline(always)]
+fn open(flags: u8) -> f64 {
+    if flags != 0 {
+        1.0
+    } else {
+        0.0
     }
 }
 
