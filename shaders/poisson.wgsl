@@ -8,9 +8,10 @@
 // s = (c + j) mod 2. The arithmetic is the CPU's, in the same order, in f32 (the CPU stores f64):
 //   smoother   h ← (((l + r) + u) + d − b) · 0.25 at free samples of one colour;
 //   residual   r = b − ((((l + r) + u) + d) − 4 h) at free samples, 0 elsewhere;
-//   restrict   b_c = (4 r_c + 2 ((r_w + r_e) + (r_n + r_s)) + ((r_nw + r_ne) + (r_sw + r_se))) · 0.25
-//              at free coarse samples, 0 elsewhere;
-//   prolong    h += coarse value / mean of 2 / ((a + b) + (c + d)) · 0.25 at free fine samples.
+//   restrict   b_c = (4 r_c + 2 ((r_w + r_e) + (r_n + r_s)) + ((o r_nw + o r_ne) + (o r_sw + o r_se)))
+//              · 0.25 at free coarse samples, 0 elsewhere;
+//   prolong    h += coarse value / mean of 2 / ((o a + o b) + (o c + o d)) · 0.25 at free fine samples;
+// where o is 1, or 0 for a corner whose two connecting fine samples are both fixed.
 // Coarse levels carry a Galerkin 9-point operator (`terrain::poisson::galerkin`): one default 3×3
 // stencil and a list of samples with their own stencil. With
 //   Σ = ((s_w w + s_e e) + (s_u u + s_d d)) + ((s_uw uw + s_ue ue) + (s_dw dw + s_de de))
@@ -69,6 +70,18 @@ fn interior(c: u32, j: u32, k: u32) -> bool {
 // Residual of this level at natural sample (i, j) (zero on the border).
 fn res_at(i: u32, j: u32) -> f32 {
     return res[((i + j) & 1u) * p.len + j * p.stride + i / 2u];
+}
+
+// True if this level's natural sample (i, j) is free.
+fn free_at(i: u32, j: u32) -> bool {
+    return free_mask[((i + j) & 1u) * p.len + j * p.stride + i / 2u] != 0u;
+}
+
+// Weight factor of a corner between an odd-odd fine sample and a coarse counterpart: 1 if one
+// of the two samples connecting them, (i1, j1) and (i2, j2), is free, else 0 (the corner lies
+// across a constraint).
+fn open(i1: u32, j1: u32, i2: u32, j2: u32) -> f32 {
+    return select(0.0, 1.0, free_at(i1, j1) || free_at(i2, j2));
 }
 
 // Coarse unknown at natural sample (i, j).
@@ -147,8 +160,10 @@ fn restrict_residual(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = 2u * ic;
     let j = 2u * jc;
     let edges = (res_at(i - 1u, j) + res_at(i + 1u, j)) + (res_at(i, j - 1u) + res_at(i, j + 1u));
-    let corners = (res_at(i - 1u, j - 1u) + res_at(i + 1u, j - 1u))
-        + (res_at(i - 1u, j + 1u) + res_at(i + 1u, j + 1u));
+    let corners = (open(i - 1u, j, i, j - 1u) * res_at(i - 1u, j - 1u)
+        + open(i + 1u, j, i, j - 1u) * res_at(i + 1u, j - 1u))
+        + (open(i - 1u, j, i, j + 1u) * res_at(i - 1u, j + 1u)
+        + open(i + 1u, j, i, j + 1u) * res_at(i + 1u, j + 1u));
     rhsc[x] = (4.0 * res_at(i, j) + 2.0 * edges + corners) * 0.25;
 }
 
@@ -180,7 +195,10 @@ fn prolong(@builtin(global_invocation_id) id: vec3<u32>) {
             if (i % 2u == 0u) {
                 e = (hc_at(ic, jc) + hc_at(ic, jc + 1u)) * 0.5;
             } else {
-                e = ((hc_at(ic, jc) + hc_at(ic + 1u, jc)) + (hc_at(ic, jc + 1u) + hc_at(ic + 1u, jc + 1u))) * 0.25;
+                e = ((open(i - 1u, j, i, j - 1u) * hc_at(ic, jc)
+                    + open(i + 1u, j, i, j - 1u) * hc_at(ic + 1u, jc))
+                    + (open(i - 1u, j, i, j + 1u) * hc_at(ic, jc + 1u)
+                    + open(i + 1u, j, i, j + 1u) * hc_at(ic + 1u, jc + 1u))) * 0.25;
             }
         }
         h[x] = h[x] + e;
