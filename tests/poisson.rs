@@ -5,7 +5,7 @@
 
 use strata::terrain::poisson::gradient::extract_edges;
 use strata::terrain::poisson::{
-    reconstruct, Cycle, GridSpec, PoissonError, Problem, SolveOptions, Solver, Start,
+    reconstruct, Acceleration, Cycle, GridSpec, PoissonError, Problem, SolveOptions, Solver, Start,
 };
 
 /// An owned problem for the tests.
@@ -200,35 +200,99 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
             .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)));
         assert!(hi - lo < 0.05, "{label}: factors not steady: {f:?}");
     }
-    // With interior constraints the cycles precondition conjugate gradients (see the module docs):
-    // the residual is not monotone, so the figure is the mean factor per iteration.
-    for (label, n, cycle) in [
-        ("513², point + curve + disc, V", 513, Cycle::V),
-        ("257², point + curve + disc, W", 257, Cycle::W),
+    // With interior constraints (a point, a curve and a painted disc at conflicting heights) the
+    // Galerkin coarse operators keep plain W-cycles steady at the border-only rate.
+    for (label, n) in [
+        ("513², point + curve + disc, W", 513),
+        ("257², point + curve + disc, W", 257),
     ] {
         let mut p = terrain(n);
         add_constraints(&mut p);
-        let opts = SolveOptions {
-            tolerance: 1e-11,
-            cycle,
-            ..SolveOptions::default()
-        };
-        let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
-        let r = &report.relative_residuals;
-        let mean = (r[r.len() - 1] / r[0]).powf(1.0 / report.cycles as f64);
-        println!(
-            "{label}: {} CG iterations, mean factor {mean:.3}, factors {:?}",
-            report.cycles,
-            report
-                .factors()
-                .iter()
-                .map(|r| format!("{r:.3}"))
-                .collect::<Vec<_>>()
+        let f = plain_factors(&p, Cycle::W, label);
+        for (k, x) in f.iter().enumerate() {
+            assert!(
+                *x < STEADY_BOUND,
+                "{label}: cycle {} reduced the residual by only {x:.3}",
+                k + 1
+            );
+        }
+        let (lo, hi) = spread(&f[1..]);
+        assert!(
+            hi - lo < STEADY_SPREAD,
+            "{label}: factors not steady: {f:?}"
         );
-        assert!(report.converged, "{label}: {report:?}");
-        assert!(mean < 0.4, "{label}: mean factor {mean:.3}");
     }
+    // Plain V-cycles with the same constraints: fast at first, then steady at a slower rate set
+    // by the isolated fixed point (the coarse levels cannot shape its logarithmic dip; the
+    // W-cycle's second coarse visit can).
+    let mut p = terrain(513);
+    add_constraints(&mut p);
+    let label = "513², point + curve + disc, V";
+    let f = plain_factors(&p, Cycle::V, label);
+    let tail = &f[f.len() - 6..];
+    let (lo, hi) = spread(tail);
+    println!("{label}: asymptotic factor {hi:.3} per V-cycle");
+    assert!(hi - lo < 0.02, "{label}: factors not steady: {f:?}");
+    assert!(hi < 0.4, "{label}: asymptotic factor {hi:.3}");
+    assert!(f[..3].iter().all(|x| *x < STEADY_BOUND), "{label}: {f:?}");
+
+    // The default (plain V-cycles, then conjugate gradients preconditioned by the V-cycle once a
+    // cycle reduces by less than 0.3): the mean factor per iteration.
+    let opts = SolveOptions {
+        tolerance: 1e-11,
+        ..SolveOptions::default()
+    };
+    let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
+    let r = &report.relative_residuals;
+    let mean = (r[r.len() - 1] / r[0]).powf(1.0 / report.cycles as f64);
+    println!(
+        "513², point + curve + disc, default: {} iterations, mean factor {mean:.3}, factors {:?}",
+        report.cycles,
+        report
+            .factors()
+            .iter()
+            .map(|r| format!("{r:.3}"))
+            .collect::<Vec<_>>()
+    );
+    assert!(report.converged, "{report:?}");
+    assert!(mean < STEADY_BOUND, "default: mean factor {mean:.3}");
 }
+
+/// Per-cycle factors of plain cycles to 1e-11 (printed).
+fn plain_factors(p: &Owned, cycle: Cycle, label: &str) -> Vec<f64> {
+    let opts = SolveOptions {
+        tolerance: 1e-11,
+        cycle,
+        acceleration: Acceleration::None,
+        ..SolveOptions::default()
+    };
+    let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
+    let f = report.factors();
+    println!(
+        "{label}, plain cycles: {} cycles, residuals {:?}, factors {:?}",
+        report.cycles,
+        report
+            .relative_residuals
+            .iter()
+            .map(|r| format!("{r:.2e}"))
+            .collect::<Vec<_>>(),
+        f.iter().map(|r| format!("{r:.3}")).collect::<Vec<_>>()
+    );
+    assert!(report.converged, "{label}: {report:?}");
+    assert!(f.len() >= 3, "{label}: too few cycles to judge: {f:?}");
+    f
+}
+
+/// `(min, max)` of the factors.
+fn spread(f: &[f64]) -> (f64, f64) {
+    f.iter()
+        .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)))
+}
+
+/// Largest per-cycle factor accepted with interior constraints.
+const STEADY_BOUND: f64 = 0.2;
+/// Largest spread of the per-cycle factors after the first one.
+const STEADY_SPREAD: f64 = 0.05;
 
 #[test]
 fn dirichlet_samples_hold_bit_for_bit() {
@@ -332,7 +396,10 @@ fn brush(p: &mut Owned, ci: usize, cj: usize) {
 fn a_warm_start_after_a_brush_edit_needs_fewer_cycles_than_a_cold_solve() {
     let mut p = terrain(513);
     add_constraints(&mut p);
-    let mut solver = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    // A tolerance of 1e-8: at 1e-6 the slowest error mode (the dip around the fixed point)
+    // leaves differences of several centimetres between two converged solutions.
+    let opts = tight(1e-8);
+    let mut solver = Solver::new(p.grid, opts).expect("solver");
     solver
         .solve(&p.problem(), Start::Cold)
         .expect("first solve");
@@ -340,18 +407,13 @@ fn a_warm_start_after_a_brush_edit_needs_fewer_cycles_than_a_cold_solve() {
     let warm = solver.solve(&p.problem(), Start::Warm).expect("warm");
     let mut hw = vec![0.0f32; p.grid.len()];
     solver.heights_into(&mut hw).expect("heights");
-    let mut fresh = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    let mut fresh = Solver::new(p.grid, opts).expect("solver");
     let cold = fresh.solve(&p.problem(), Start::Cold).expect("cold");
     let mut hc = vec![0.0f32; p.grid.len()];
     fresh.heights_into(&mut hc).expect("heights");
     println!(
-        "warm: {} cycles {:?} ({:.1} ms); cold: {} cycles {:?} ({:.1} ms)",
-        warm.cycles,
-        warm.relative_residuals,
-        warm.seconds * 1e3,
-        cold.cycles,
-        cold.relative_residuals,
-        cold.seconds * 1e3
+        "warm: {} cycles {:?}; cold: {} cycles {:?}",
+        warm.cycles, warm.relative_residuals, cold.cycles, cold.relative_residuals,
     );
     assert!(warm.converged && cold.converged);
     assert!(

@@ -19,6 +19,13 @@
 //!   creates a venv at `target/bench-venv` and `pip install`s them (and says so); if that fails,
 //!   it prints that the peers are unavailable and why.
 //!
+//! Times are wall-clock medians (`ms_*`); next to them `cpu_ms_*` is the process CPU time of the
+//! same solves (all threads, so up to `cores ×` the wall time), which stays meaningful when other
+//! work shares the machine. `ms_cold_new_mask` is a cold solve right after the constraints changed
+//! (it includes restricting the mask and building the Galerkin coarse operators, which the other
+//! cold solves reuse). `factor_v` is the median residual reduction per finest-level iteration of
+//! the cold solve. `STRATA_BENCH_POISSON_SIZES=513,1025` restricts the sizes (default: all four).
+//!
 //! Ratios: `ratio_pyamg = ms_pyamg / ms_cold` (target ≥ 50), `ratio_fft = ms_cold_border_only /
 //! ms_fft` (target ≤ 2.5), `warm_pct = 100 · ms_warm / ms_cold` (target ≤ 20), and 1025² in
 //! ≤ 68 ms (the paper's GTX 970 time).
@@ -135,21 +142,69 @@ fn brush(p: &mut Owned, ci: usize, cj: usize) {
 
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-/// Median milliseconds of `reps` cold solves (after one warm-up), and the last report.
-fn time_cold(solver: &mut Solver, p: &Owned, reps: usize) -> anyhow::Result<(f64, SolveReport)> {
+/// CPU time of the whole process (all threads), seconds.
+fn process_cpu_seconds() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; the clock id is a constant the kernel knows.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return f64::NAN;
+    }
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+/// Wall and process CPU milliseconds of `f`.
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
+    let (t, c) = (Instant::now(), process_cpu_seconds());
+    let out = f();
+    let cpu = (process_cpu_seconds() - c) * 1e3;
+    (out, t.elapsed().as_secs_f64() * 1e3, cpu)
+}
+
+/// Median wall and CPU milliseconds of `reps` cold solves (after one warm-up), and the last
+/// report.
+fn time_cold(
+    solver: &mut Solver,
+    p: &Owned,
+    reps: usize,
+) -> anyhow::Result<(f64, f64, SolveReport)> {
     solver.solve(&p.problem(), Start::Cold)?;
-    let mut times = Vec::new();
+    let (mut times, mut cpus) = (Vec::new(), Vec::new());
     let mut last = None;
     for _ in 0..reps {
-        let t = Instant::now();
-        let r = solver.solve(&p.problem(), Start::Cold)?;
-        times.push(t.elapsed().as_secs_f64() * 1e3);
-        last = Some(r);
+        let (r, ms, cpu) = timed(|| solver.solve(&p.problem(), Start::Cold));
+        times.push(ms);
+        cpus.push(cpu);
+        last = Some(r?);
     }
-    Ok((median(times), last.context("at least one repetition")?))
+    Ok((
+        median(times),
+        median(cpus),
+        last.context("at least one repetition")?,
+    ))
+}
+
+/// The sizes to run: all of the paper's, or those listed in `STRATA_BENCH_POISSON_SIZES`.
+fn sizes() -> Vec<(usize, f64, f64)> {
+    match std::env::var("STRATA_BENCH_POISSON_SIZES") {
+        Ok(list) => {
+            let want: Vec<usize> = list
+                .split(',')
+                .filter_map(|v| v.trim().parse().ok())
+                .collect();
+            PAPER
+                .into_iter()
+                .filter(|(n, _, _)| want.contains(n))
+                .collect()
+        }
+        Err(_) => PAPER.to_vec(),
+    }
 }
 
 /// Runs the benchmark.
@@ -172,7 +227,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         }
     };
     let mut pyamg_last_ms = 0.0f64;
-    for (n, paper_ms, paper_mb) in PAPER {
+    for (n, paper_ms, paper_mb) in sizes() {
         let reps = if n <= 1025 {
             5
         } else if n <= 2049 {
@@ -182,28 +237,34 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         };
         let mut p = bench_problem(n, true)?;
         let mut solver = Solver::new(p.grid, SolveOptions::default())?;
-        let (ms_cold, report) = time_cold(&mut solver, &p, reps)?;
-        let bytes = solver.hierarchy_bytes();
-
+        // A cold solve right after the mask changed (from the border-only problem's mask).
         let border = bench_problem(n, false)?;
+        solver.solve(&border.problem(), Start::Cold)?;
+        let (first, ms_new_mask, _) = timed(|| solver.solve(&p.problem(), Start::Cold));
+        first?;
+        let (ms_cold, cpu_cold, report) = time_cold(&mut solver, &p, reps)?;
+        let bytes = solver.hierarchy_bytes();
+        let factor_v = median(report.factors());
+
         let mut border_solver = Solver::new(border.grid, SolveOptions::default())?;
-        let (ms_border, border_report) = time_cold(&mut border_solver, &border, reps)?;
+        let (ms_border, cpu_border, border_report) = time_cold(&mut border_solver, &border, reps)?;
         drop(border_solver);
 
         // Warm re-solve after a brush edit, from the converged solution of the unedited problem.
         let original = (p.gx.clone(), p.gz.clone());
-        let mut warm_times = Vec::new();
+        let (mut warm_times, mut warm_cpus) = (Vec::new(), Vec::new());
         let mut warm_report = None;
         for rep in 0..reps {
             (p.gx, p.gz) = original.clone();
             solver.solve(&p.problem(), Start::Cold)?;
             brush(&mut p, n / 2 + 17 * rep, n / 3);
-            let t = Instant::now();
-            let r = solver.solve(&p.problem(), Start::Warm)?;
-            warm_times.push(t.elapsed().as_secs_f64() * 1e3);
-            warm_report = Some(r);
+            let (r, ms, cpu) = timed(|| solver.solve(&p.problem(), Start::Warm));
+            warm_times.push(ms);
+            warm_cpus.push(cpu);
+            warm_report = Some(r?);
         }
         let ms_warm = median(warm_times);
+        let cpu_warm = median(warm_cpus);
         let warm_report = warm_report.context("at least one repetition")?;
         let warm_pct = 100.0 * ms_warm / ms_cold;
         (p.gx, p.gz) = original;
@@ -240,10 +301,13 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             .copied()
             .unwrap_or(f64::NAN);
         let mut value = json!({
-            "bench":"poisson","n":n,"ms_cold":ms_cold,"cycles":report.cycles,
+            "bench":"poisson","n":n,"ms_cold":ms_cold,"cpu_ms_cold":cpu_cold,
+            "ms_cold_new_mask":ms_new_mask,"cycles":report.cycles,"factor_v":factor_v,
             "relative_residual":residual,"converged":report.converged,
-            "ms_cold_border_only":ms_border,"cycles_border_only":border_report.cycles,
-            "bytes_hierarchy":bytes,"ms_warm":ms_warm,"cycles_warm":warm_report.cycles,
+            "ms_cold_border_only":ms_border,"cpu_ms_cold_border_only":cpu_border,
+            "cycles_border_only":border_report.cycles,
+            "bytes_hierarchy":bytes,"ms_warm":ms_warm,"cpu_ms_warm":cpu_warm,
+            "cycles_warm":warm_report.cycles,
             "warm_pct":warm_pct,"target_warm_pct":TARGET_WARM_PCT,
             "meets_warm_target":warm_pct <= TARGET_WARM_PCT,
             "paper_ms":paper_ms,"paper_mb":paper_mb,
@@ -301,7 +365,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             args,
             value,
             format!(
-                "  {n}²: cold {ms_cold:.1} ms (paper {paper_ms} ms{target}), {} cycles to {residual:.1e}, memory {:.1} MB (paper {paper_mb} MB)\n        warm re-solve after a brush edit {ms_warm:.1} ms, {} cycles = {warm_pct:.0}% of cold (target ≤ 20%)\n        {pyamg_text}\n        {fft_text}",
+                "  {n}²: cold {ms_cold:.1} ms (CPU {cpu_cold:.1} ms; paper {paper_ms} ms{target}), {} cycles to {residual:.1e}, median factor {factor_v:.3} per cycle, memory {:.1} MB (paper {paper_mb} MB)\n        cold right after a constraint change {ms_new_mask:.1} ms (mask and Galerkin operators rebuilt)\n        warm re-solve after a brush edit {ms_warm:.1} ms (CPU {cpu_warm:.1} ms), {} cycles = {warm_pct:.0}% of cold (target ≤ 20%)\n        {pyamg_text}\n        {fft_text}",
                 report.cycles,
                 bytes as f64 / 1e6,
                 warm_report.cycles,

@@ -1,7 +1,9 @@
 //! WGSL twin of the multigrid Poisson solver (`shaders/poisson.wgsl`, issue 4).
 //!
-//! [`PoissonKernels`] compiles the six kernels (red and black half-sweeps, residual, full-weighting
-//! restriction, bilinear prolongation, zeroing) for a device. [`PoissonKernels::upload`] copies a
+//! [`PoissonKernels`] compiles the kernels (red and black half-sweeps of the finest level's 5-point
+//! operator, the four-colour passes of the coarse levels' Galerkin 9-point operators with their
+//! special stencils, the residual of either, full-weighting restriction, bilinear prolongation,
+//! zeroing) for a device. [`PoissonKernels::upload`] copies a
 //! CPU hierarchy ([`crate::terrain::poisson::level::Level`]s, e.g. from
 //! [`crate::terrain::poisson::Solver::levels`] after [`crate::terrain::poisson::Solver::load`])
 //! to the device in `f32`, [`PoissonKernels::run`] records a list of [`Op`]s into one compute pass
@@ -83,11 +85,15 @@ impl GpuPoissonParams {
 /// One kernel dispatch on level `l` (restriction and prolongation go between `l` and `l + 1`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Op {
-    /// Red half-sweep on level `l`.
+    /// Red half-sweep on level `l` (5-point: the finest level).
     SmoothRed(usize),
-    /// Black half-sweep on level `l`.
+    /// Black half-sweep on level `l` (5-point: the finest level).
     SmoothBlack(usize),
-    /// Residual of level `l` into its residual buffer.
+    /// Gauss–Seidel pass of a coarse level `l` (9-point) over colour array `c` (0 or 1) in the
+    /// rows of parity `p` (0 or 1): the default stencil, then the special ones.
+    SmoothNine(usize, usize, usize),
+    /// Residual of level `l` into its residual buffer (5-point on the finest level, 9-point with
+    /// the special stencils on coarse levels).
     Residual(usize),
     /// Full weighting of level `l`'s residual buffer into level `l + 1`'s right-hand side.
     Restrict(usize),
@@ -114,7 +120,11 @@ pub struct PoissonKernels {
     layout: wgpu::BindGroupLayout,
     smooth_red: wgpu::ComputePipeline,
     smooth_black: wgpu::ComputePipeline,
+    smooth_nine: [wgpu::ComputePipeline; 4],
+    smooth_special: [wgpu::ComputePipeline; 4],
     residual: wgpu::ComputePipeline,
+    residual_nine: wgpu::ComputePipeline,
+    residual_special: wgpu::ComputePipeline,
     restrict: wgpu::ComputePipeline,
     prolong: wgpu::ComputePipeline,
     zero: wgpu::ComputePipeline,
@@ -127,6 +137,8 @@ pub struct GpuHierarchy {
     params: Vec<GpuPoissonParams>,
     buffers: Vec<[wgpu::Buffer; 4]>,
     bind_groups: Vec<wgpu::BindGroup>,
+    /// Special stencils per level (0 on the finest level).
+    specials: Vec<u32>,
 }
 
 impl GpuHierarchy {
@@ -168,6 +180,7 @@ impl PoissonKernels {
             entry(5, rw),
             entry(6, rw),
             entry(7, ro),
+            entry(8, ro),
         ];
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("strata poisson bindings"),
@@ -191,7 +204,12 @@ impl PoissonKernels {
         let kernels = Self {
             smooth_red: pipeline("smooth_red"),
             smooth_black: pipeline("smooth_black"),
+            smooth_nine: ["00", "01", "10", "11"].map(|c| pipeline(&format!("smooth_nine_{c}"))),
+            smooth_special: ["00", "01", "10", "11"]
+                .map(|c| pipeline(&format!("smooth_special_{c}"))),
             residual: pipeline("residual"),
+            residual_nine: pipeline("residual_nine"),
+            residual_special: pipeline("residual_special"),
             restrict: pipeline("restrict_residual"),
             prolong: pipeline("prolong"),
             zero: pipeline("zero_h"),
@@ -242,6 +260,8 @@ impl PoissonKernels {
         let mut params = Vec::new();
         let mut buffers = Vec::new();
         let mut uniforms = Vec::new();
+        let mut stencils = Vec::new();
+        let mut specials = Vec::new();
         for (l, level) in levels.iter().enumerate() {
             let p = GpuPoissonParams::of(level, levels.get(l + 1));
             let free: Vec<u32> = level.free[0]
@@ -260,6 +280,13 @@ impl PoissonKernels {
                 make("poisson free", bytemuck::cast_slice(&free), storage),
                 make("poisson residual", bytemuck::cast_slice(&zeros), storage),
             ]);
+            let words = stencil_words(level);
+            specials.push(((words.len() - 10) / 11) as u32);
+            stencils.push(make(
+                "poisson stencils",
+                bytemuck::cast_slice(&words),
+                storage,
+            ));
             uniforms.push(make(
                 "poisson params",
                 bytemuck::bytes_of(&p),
@@ -278,7 +305,17 @@ impl PoissonKernels {
                     Some([h, r, f, _]) => (h, r, f),
                     None => (&dummies[0], &dummies[1], &dummies[2]),
                 };
-                let list = [&uniforms[l], h, rhs, free, res, hc, rhsc, freec];
+                let list = [
+                    &uniforms[l],
+                    h,
+                    rhs,
+                    free,
+                    res,
+                    hc,
+                    rhsc,
+                    freec,
+                    &stencils[l],
+                ];
                 let entries: Vec<wgpu::BindGroupEntry> = list
                     .iter()
                     .enumerate()
@@ -299,6 +336,7 @@ impl PoissonKernels {
             params,
             buffers,
             bind_groups,
+            specials,
         })
     }
 
@@ -317,11 +355,25 @@ impl PoissonKernels {
         let n = hier.level_count();
         for op in ops {
             let (l, needs_coarse) = match *op {
-                Op::SmoothRed(l) | Op::SmoothBlack(l) | Op::Residual(l) | Op::Zero(l) => (l, false),
+                Op::SmoothRed(l)
+                | Op::SmoothBlack(l)
+                | Op::SmoothNine(l, _, _)
+                | Op::Residual(l)
+                | Op::Zero(l) => (l, false),
                 Op::Restrict(l) | Op::Prolong(l) => (l, true),
             };
             if l >= n || (needs_coarse && l + 1 >= n) {
                 bail!("{op:?} is out of range for a hierarchy of {n} levels");
+            }
+            let nine = l > 0;
+            match *op {
+                Op::SmoothRed(_) | Op::SmoothBlack(_) if nine => {
+                    bail!("{op:?}: level {l} has a 9-point operator (use SmoothNine)")
+                }
+                Op::SmoothNine(_, c, p) if !nine || c > 1 || p > 1 => {
+                    bail!("{op:?}: needs a coarse level and colour, parity in 0..=1")
+                }
+                _ => {}
             }
         }
         let scopes = Scopes::push(device);
@@ -334,22 +386,55 @@ impl PoissonKernels {
                 timestamp_writes: None,
             });
             for op in ops {
-                let (pipeline, l) = match *op {
-                    Op::SmoothRed(l) => (&self.smooth_red, l),
-                    Op::SmoothBlack(l) => (&self.smooth_black, l),
-                    Op::Residual(l) => (&self.residual, l),
-                    Op::Restrict(l) => (&self.restrict, l),
-                    Op::Prolong(l) => (&self.prolong, l),
-                    Op::Zero(l) => (&self.zero, l),
+                let l = match *op {
+                    Op::SmoothRed(l)
+                    | Op::SmoothBlack(l)
+                    | Op::SmoothNine(l, _, _)
+                    | Op::Residual(l)
+                    | Op::Restrict(l)
+                    | Op::Prolong(l)
+                    | Op::Zero(l) => l,
                 };
                 let p = hier.params[l];
-                let (x, y) = match op {
-                    Op::Restrict(_) => (p.cnx, p.cnz),
-                    _ => (p.stride, p.nz),
-                };
-                pass.set_pipeline(pipeline);
-                pass.set_bind_group(0, &hier.bind_groups[l], &[]);
-                pass.dispatch_workgroups(x.div_ceil(WORKGROUP), y, 1);
+                let specials = hier.specials[l];
+                // (pipeline, x groups, y groups) of each dispatch of the op.
+                let mut dispatches: Vec<(&wgpu::ComputePipeline, u32, u32)> = Vec::new();
+                let grid = p.stride.div_ceil(WORKGROUP);
+                match *op {
+                    Op::SmoothRed(_) => dispatches.push((&self.smooth_red, grid, p.nz)),
+                    Op::SmoothBlack(_) => dispatches.push((&self.smooth_black, grid, p.nz)),
+                    Op::SmoothNine(_, c, par) => {
+                        dispatches.push((&self.smooth_nine[2 * c + par], grid, p.nz.div_ceil(2)));
+                        if specials > 0 {
+                            dispatches.push((
+                                &self.smooth_special[2 * c + par],
+                                specials.div_ceil(WORKGROUP),
+                                1,
+                            ));
+                        }
+                    }
+                    Op::Residual(_) if l > 0 => {
+                        dispatches.push((&self.residual_nine, grid, p.nz));
+                        if specials > 0 {
+                            dispatches.push((
+                                &self.residual_special,
+                                specials.div_ceil(WORKGROUP),
+                                1,
+                            ));
+                        }
+                    }
+                    Op::Residual(_) => dispatches.push((&self.residual, grid, p.nz)),
+                    Op::Restrict(_) => {
+                        dispatches.push((&self.restrict, p.cnx.div_ceil(WORKGROUP), p.cnz))
+                    }
+                    Op::Prolong(_) => dispatches.push((&self.prolong, grid, p.nz)),
+                    Op::Zero(_) => dispatches.push((&self.zero, grid, p.nz)),
+                }
+                for (pipeline, x, y) in dispatches {
+                    pass.set_pipeline(pipeline);
+                    pass.set_bind_group(0, &hier.bind_groups[l], &[]);
+                    pass.dispatch_workgroups(x, y, 1);
+                }
             }
         }
         let submission = queue.submit([encoder.finish()]);
@@ -442,8 +527,9 @@ impl PoissonKernels {
         fn coarse(ops: &mut Vec<Op>, l: usize, levels: usize, o: &SolveOptions) {
             let sweep = |ops: &mut Vec<Op>, n: usize| {
                 for _ in 0..n {
-                    ops.push(Op::SmoothRed(l));
-                    ops.push(Op::SmoothBlack(l));
+                    for (c, p) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+                        ops.push(Op::SmoothNine(l, c, p));
+                    }
                 }
             };
             if l + 1 == levels {
@@ -488,6 +574,26 @@ impl PoissonKernels {
         }
         self.read(device, queue, &hier, 0, GpuField::H)
     }
+}
+
+/// The words of a level's `stencils` buffer (see `shaders/poisson.wgsl`): the default stencil and
+/// its inverse centre, then per special sample its two-colour index, stencil and inverse centre,
+/// as `f32` bits. The finest level (5-point) gets a zero default.
+pub fn stencil_words(level: &Level) -> Vec<u32> {
+    let bits = |v: f64| (v as f32).to_bits();
+    let mut words = vec![0u32; 10];
+    if let Some(op) = &level.nine {
+        for (w, v) in words.iter_mut().zip(op.default) {
+            *w = bits(v);
+        }
+        words[9] = bits(op.inv_default);
+        for sp in &op.special {
+            words.push((sp.colour * level.split.len() + sp.slot) as u32);
+            words.extend(sp.stencil.iter().map(|v| bits(*v)));
+            words.push(bits(sp.inv_centre));
+        }
+    }
+    words
 }
 
 fn gamma(c: Cycle) -> usize {

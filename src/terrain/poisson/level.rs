@@ -1,23 +1,14 @@
-//! One level of the multigrid hierarchy, and the restriction of the constraint mask and values.
+//! One level of the multigrid hierarchy.
 //!
-//! Fixed (Dirichlet) samples are restricted with a priority rule in the spirit of the paper's
-//! ("hard constraints have the highest priority and automatically apply at the lowest
-//! resolution", §3): a coarse sample `(I, J)` is fixed if its fine counterpart `(2I, 2J)` or one of
-//! that sample's four edge neighbours is fixed ([`CROSS`]). So a constraint curve one sample wide
-//! stays a connected barrier on the coarse grid (it crosses every even row or column it passes),
-//! while the band it removes from the coarse problem stays as thin as possible. (Measured on a
-//! 513² problem with a point, a curve and a disc: the 3 × 3 footprint — a wider band — needs 27
-//! conjugate-gradient iterations to 1e-11, this one 18; fixing only counterparts, 20, and makes
-//! plain cycles diverge.) The coarse sample's value (used only by the full-multigrid start) is its
-//! counterpart's value when that one is fixed, and otherwise the mean of the fixed samples of its
-//! footprint (the paper averages constraints of one type). In correction cycles every fixed
-//! sample carries a zero correction on every level.
+//! The finest level carries the 5-point operator of the problem; every coarser level carries the
+//! Galerkin product `Pᵀ A P` of its finer neighbour ([`super::galerkin`]), with the mask restricted
+//! by injection (a coarse sample is fixed exactly when its fine counterpart is). The paper
+//! restricts constraints so that "hard constraints have the highest priority and automatically
+//! apply at the lowest resolution" (§3); with Galerkin operators the coarse levels need no
+//! constraint values at all: they solve for corrections, which are zero at every fixed sample.
 
+use super::galerkin::{coarsen_into, NinePoint};
 use super::grid::{GridSpec, Split};
-
-/// The restriction footprint of a coarse sample `(I, J)` for the mask: its fine counterpart
-/// `(2I, 2J)` and that sample's four edge neighbours.
-const CROSS: [(isize, isize); 5] = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)];
 
 /// One multigrid level: the unknowns, the right-hand side and the free-sample mask, each stored as
 /// two colour arrays (see [`super::grid`]).
@@ -36,6 +27,8 @@ pub struct Level {
     pub rhs: [Vec<f64>; 2],
     /// 1 where the sample is free (an unknown), 0 where it is fixed or a padding slot.
     pub free: [Vec<u8>; 2],
+    /// The Galerkin 9-point operator of a coarse level; `None` on the finest level (5-point).
+    pub nine: Option<NinePoint>,
 }
 
 impl Level {
@@ -49,6 +42,7 @@ impl Level {
             h: [vec![0.0; n], vec![0.0; n]],
             rhs: [vec![0.0; n], vec![0.0; n]],
             free: [vec![0; n], vec![0; n]],
+            nine: None,
         }
     }
 
@@ -92,75 +86,30 @@ impl Level {
     /// Bytes of the level's arrays.
     pub fn bytes(&self) -> usize {
         2 * self.split.len() * (2 * std::mem::size_of::<f64>() + 1)
+            + self.nine.as_ref().map_or(0, NinePoint::bytes)
     }
 
-    /// The coarse level of this one, with the restricted mask (priority rule of the module docs).
+    /// The coarse level of this one: the mask restricted by injection and the Galerkin operator.
     pub fn coarsen(&self) -> Option<Level> {
         let mut coarse = Level::new(self.grid.coarser()?);
-        self.restrict_mask(&mut coarse);
+        coarsen_into(self, &mut coarse);
         Some(coarse)
     }
 
-    /// Recomputes the free mask of `coarse` (this level's coarser neighbour) from this level's.
+    /// Recomputes the free mask and the Galerkin operator of `coarse` (this level's coarser
+    /// neighbour) from this level's.
     pub fn restrict_mask(&self, coarse: &mut Level) {
-        let cg = coarse.grid;
-        for jc in 1..cg.nz - 1 {
-            for ic in 1..cg.nx - 1 {
-                let (i, j) = (2 * ic, 2 * jc);
-                let free = CROSS.iter().all(|(a, b)| {
-                    self.is_free((i as isize + a) as usize, (j as isize + b) as usize)
-                });
-                let (c, k) = coarse.split.locate(ic, jc);
-                coarse.free[c][k] = u8::from(free);
-            }
-        }
-    }
-
-    /// Writes into the fixed samples of `coarse` (this level's coarser neighbour) the restricted
-    /// fixed values of this level, and zero into its free samples: the start of its full problem.
-    pub fn restrict_fixed_values(&self, coarse: &mut Level) {
-        let cg = coarse.grid;
-        let (fx, fz) = (self.grid.nx as isize, self.grid.nz as isize);
-        for jc in 0..cg.nz {
-            for ic in 0..cg.nx {
-                let (c, k) = coarse.split.locate(ic, jc);
-                if coarse.free[c][k] != 0 {
-                    coarse.h[c][k] = 0.0;
-                    continue;
-                }
-                let (i, j) = (2 * ic, 2 * jc);
-                let value = if !self.is_free(i, j) {
-                    self.value(i, j)
-                } else {
-                    let (mut sum, mut n) = (0.0f64, 0u32);
-                    for (a, b) in CROSS {
-                        let (x, z) = (i as isize + a, j as isize + b);
-                        if (0..fx).contains(&x)
-                            && (0..fz).contains(&z)
-                            && !self.is_free(x as usize, z as usize)
-                        {
-                            sum += self.value(x as usize, z as usize);
-                            n += 1;
-                        }
-                    }
-                    if n == 0 {
-                        0.0
-                    } else {
-                        sum / f64::from(n)
-                    }
-                };
-                coarse.h[c][k] = value;
-            }
-        }
+        coarsen_into(self, coarse);
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::terrain::poisson::galerkin::{entry, galerkin_default, FIVE_POINT};
 
     #[test]
-    fn a_fixed_sample_fixes_the_coarse_samples_whose_cross_holds_it() {
+    fn the_mask_is_restricted_by_injection() {
         let g = GridSpec::new(17, 17, 1.0).expect("grid");
         let fixed_coarse = |i: usize, j: usize| {
             let mut free = vec![true; 17 * 17];
@@ -177,34 +126,125 @@ mod tests {
             fixed
         };
         assert_eq!(fixed_coarse(4, 6), vec![(2, 3)]);
-        assert_eq!(fixed_coarse(5, 6), vec![(2, 3), (3, 3)]);
-        assert_eq!(fixed_coarse(4, 7), vec![(2, 3), (2, 4)]);
-        assert_eq!(
-            fixed_coarse(5, 7),
-            vec![],
-            "an odd-odd point has no coarse image"
-        );
+        assert_eq!(fixed_coarse(5, 6), vec![]);
+        assert_eq!(fixed_coarse(5, 7), vec![]);
     }
 
     #[test]
-    fn fixed_values_prefer_the_counterpart_then_average_the_cross() {
-        let g = GridSpec::new(9, 9, 1.0).expect("grid");
-        let mut free = vec![true; 81];
-        free[4 * 9 + 4] = false; // (4, 4) is the counterpart of coarse (2, 2).
-        free[4 * 9 + 5] = false; // (5, 4) is in the crosses of coarse (2, 2) and (3, 2).
-        free[2 * 9 + 5] = false; // (5, 2) is in the crosses of (2, 1) and (3, 1).
-        free[3 * 9 + 6] = false; // (6, 3) is in the crosses of (3, 1) and (3, 2).
-        let mut fine = Level::with_mask(g, &free);
-        for (i, j, v) in [(4, 4, 10.0), (5, 4, 20.0), (5, 2, 40.0), (6, 3, 50.0)] {
-            let (c, k) = fine.split.locate(i, j);
-            fine.h[c][k] = v;
+    fn the_default_coarse_stencil_is_the_galerkin_nine_point_laplacian() {
+        let s = galerkin_default(&FIVE_POINT);
+        assert_eq!(
+            s,
+            [0.25, 0.5, 0.25, 0.5, -3.0, 0.5, 0.25, 0.5, 0.25],
+            "¼ [1 2 1; 2 −12 2; 1 2 1]"
+        );
+    }
+
+    /// The level's operator as a dense matrix over its free samples (natural order).
+    fn dense(level: &Level) -> (Vec<(usize, usize)>, Vec<Vec<f64>>) {
+        let g = level.grid;
+        let free: Vec<(usize, usize)> = (0..g.nz)
+            .flat_map(|j| (0..g.nx).map(move |i| (i, j)))
+            .filter(|(i, j)| level.is_free(*i, *j))
+            .collect();
+        let index = |i: usize, j: usize| free.iter().position(|p| *p == (i, j));
+        let mut a = vec![vec![0.0; free.len()]; free.len()];
+        for (r, (i, j)) in free.iter().enumerate() {
+            let st = match &level.nine {
+                None => FIVE_POINT,
+                Some(op) => {
+                    let (c, k) = level.split.locate(*i, *j);
+                    op.stencil(c, k, *j)
+                }
+            };
+            for dz in -1..=1isize {
+                for dx in -1..=1isize {
+                    let (x, z) = ((*i as isize + dx) as usize, (*j as isize + dz) as usize);
+                    if let Some(col) = index(x, z) {
+                        a[r][col] += st[entry(dx, dz)];
+                    }
+                }
+            }
         }
-        let mut coarse = fine.coarsen().expect("coarse");
-        fine.restrict_fixed_values(&mut coarse);
-        assert_eq!(coarse.value(2, 2), 10.0);
-        assert_eq!(coarse.value(3, 2), 35.0);
-        assert_eq!(coarse.value(3, 1), 45.0);
-        assert_eq!(coarse.value(2, 1), 40.0);
-        assert!(coarse.is_free(1, 1) && coarse.value(1, 1) == 0.0);
+        (free, a)
+    }
+
+    #[test]
+    fn coarse_operators_are_the_galerkin_products_with_the_masked_interpolation() {
+        // Two levels below a 17 × 17 grid with a point at an odd-odd sample, a short curve and a
+        // sample next to the border: each coarse operator equals Pᵀ A P computed densely, with
+        // P the bilinear interpolation restricted to free samples, and is symmetric.
+        let g = GridSpec::new(17, 17, 1.0).expect("grid");
+        let mut free = vec![true; 17 * 17];
+        for (i, j) in [
+            (5, 7),
+            (8, 10),
+            (9, 10),
+            (10, 11),
+            (11, 11),
+            (1, 4),
+            (12, 4),
+        ] {
+            free[j * 17 + i] = false;
+        }
+        let fine = Level::with_mask(g, &free);
+        let mid = fine.coarsen().expect("level 1");
+        let coarse = mid.coarsen().expect("level 2");
+        assert!(!mid.nine.as_ref().expect("nine").special.is_empty());
+        for (f, c) in [(&fine, &mid), (&mid, &coarse)] {
+            let (ff, a) = dense(f);
+            let (cf, ac) = dense(c);
+            let p: Vec<Vec<f64>> = ff
+                .iter()
+                .map(|(i, j)| {
+                    cf.iter()
+                        .map(|(ic, jc)| {
+                            let (x, z) = (
+                                *i as isize - 2 * *ic as isize,
+                                *j as isize - 2 * *jc as isize,
+                            );
+                            if x.abs() > 1 || z.abs() > 1 {
+                                return 0.0;
+                            }
+                            // A corner across a diagonal step of a constraint gives nothing.
+                            let blocked = x != 0
+                                && z != 0
+                                && !f.is_free((*i as isize - x) as usize, *j)
+                                && !f.is_free(*i, (*j as isize - z) as usize);
+                            if blocked {
+                                0.0
+                            } else {
+                                (1.0 - 0.5 * x.abs() as f64) * (1.0 - 0.5 * z.abs() as f64)
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            for r in 0..cf.len() {
+                for col in 0..cf.len() {
+                    let mut want = 0.0;
+                    for x in 0..ff.len() {
+                        if p[x][r] == 0.0 {
+                            continue;
+                        }
+                        for y in 0..ff.len() {
+                            want += p[x][r] * a[x][y] * p[y][col];
+                        }
+                    }
+                    assert!(
+                        (ac[r][col] - want).abs() < 1e-12,
+                        "{:?} → {:?}: {} vs PᵀAP {want}",
+                        cf[r],
+                        cf[col],
+                        ac[r][col]
+                    );
+                    assert_eq!(
+                        ac[r][col], ac[col][r],
+                        "symmetry at {:?}, {:?}",
+                        cf[r], cf[col]
+                    );
+                }
+            }
+        }
     }
 }

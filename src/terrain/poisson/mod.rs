@@ -27,27 +27,35 @@
 //! # Multigrid
 //! The paper runs a "half V-cycle": from the coarsest 9 × 9 level upwards, `50 + 20ℓ` iterations
 //! per level, with no residual going back down. **Deviations:** we run full multigrid (FMG) with
-//! residual correction instead ([`multigrid`]), and accelerate the cycles by conjugate gradients
-//! when interior samples are fixed:
-//! - the problem is restricted to every level (right-hand side by full weighting; fixed samples by
-//!   a priority rule, see [`level`]), the coarsest level (shorter side 3) is solved by
-//!   Gauss–Seidel sweeps, and each level's solution is interpolated bilinearly to the next finer
-//!   one, followed by one cycle there ([`SolveOptions::fmg_cycles`]);
-//! - on the finest level, correction cycles (V by default, W optional) run until the stopping rule
-//!   holds: residual `r = b − A h`, restricted by full weighting (times 4: the coarse operator has
-//!   twice the spacing, so the restriction is exactly the transpose of the prolongation), a
-//!   coarse-grid correction with zero correction at every fixed sample of every level, bilinear
-//!   prolongation added at free samples, red-black Gauss–Seidel smoothing (1 + 1 sweeps);
-//! - smoothing is red-black Gauss–Seidel in place on colour-split arrays ([`grid`]), one colour
-//!   array written while the other is read, rows in parallel bands ([`ops`]);
-//! - the coarse levels re-discretise the 5-point operator on the restricted mask rather than
-//!   forming Galerkin operators. With only the border fixed the cycles converge by a steady factor
-//!   of about 0.11 (V) or 0.05 (W) per cycle. Interior constraints that do not sit on coarse
-//!   samples make the coarse problems approximate near them (plain cycles then slow to 0.5–0.9
-//!   per cycle), so with interior constraints ([`Acceleration::Auto`]) the cycle becomes the
-//!   preconditioner of conjugate gradients (symmetric: post-smoothing black→red), which brings
-//!   the mean reduction back to about 0.2–0.3 per iteration (not monotone). Galerkin coarse
-//!   operators would be the next step.
+//! residual correction instead ([`multigrid`]), on Galerkin coarse operators ([`galerkin`]):
+//! - every coarse level carries `A_c = Pᵀ A P`, with `P` bilinear interpolation from the coarse
+//!   free samples to the fine free samples (zero at fixed samples) and `Pᵀ` the restriction (full
+//!   weighting times 4); a coarse sample is fixed exactly when its fine counterpart is. Coarse
+//!   operators are 9-point: one default stencil per level plus the stencils of the few samples
+//!   near interior constraints that differ from it. So the coarse-grid correction stays the
+//!   energy-optimal one whatever the constraints (points, curves, painted regions). Measured
+//!   (`tests/poisson.rs`, terrain-like fields, 1 + 1 sweeps): border only, 0.05–0.065 per V-cycle
+//!   and 0.05–0.06 per W-cycle; with a point, a curve and a painted disc, 0.06–0.08 per W-cycle,
+//!   steady. Plain V-cycles with interior constraints reduce by 0.04–0.09 for the first four
+//!   cycles, then settle at a steady 0.37: an isolated fixed point makes a logarithmic dip that
+//!   no coarse level can shape (bilinear coarse functions only see a one-sample hole), and the
+//!   error of a V-cycle's coarse solves accumulates over the levels; the W-cycle's second visit
+//!   removes it. (Re-discretised coarse operators, the previous version, gave 0.65 per V-cycle.)
+//!   [`Acceleration::Auto`] runs plain cycles and hands over to conjugate gradients
+//!   preconditioned by the cycle once a cycle reduces by less than [`AUTO_SWITCH_FACTOR`];
+//! - smoothing is Gauss–Seidel in place on colour-split arrays ([`grid`]): red-black on the
+//!   finest level (5-point), four colours (colour array × row parity) on the 9-point coarse
+//!   levels; rows in parallel bands ([`ops`]);
+//! - full multigrid works on the correction equation: the finest free samples start from the
+//!   transfinite interpolation of the border heights, the residual of that start is restricted
+//!   to every level, the coarsest level (shorter side 3) is solved by Gauss–Seidel sweeps, and
+//!   each level's correction is interpolated bilinearly to the next finer one followed by one
+//!   cycle there ([`SolveOptions::fmg_cycles`]);
+//! - on the finest level, correction cycles (V by default, W optional) run until the stopping
+//!   rule holds: residual `r = b − A h` restricted by `Pᵀ`, a coarse-grid correction from zero,
+//!   prolongation by `P`, red-black smoothing (1 + 1 sweeps);
+//! - optionally ([`Acceleration`]) the symmetric cycle (post-smoothing in the reverse colour
+//!   order) preconditions conjugate gradients.
 //!
 //! # Stopping rule and precision
 //! A solve stops when `‖b − A h‖₂ / ‖b‖₂ ≤ tolerance` (default `1e-6`), where `A` is the 5-point
@@ -67,9 +75,11 @@
 //!
 //! # Limits
 //! Sides `2^k + 1` from 3 to 8193 samples ([`MAX_SIDE`]); memory about 23 bytes per sample for
-//! the hierarchy (17 bytes per sample and level, times 4/3), plus 33 bytes per finest sample for
-//! the conjugate-gradient vectors when interior samples are fixed.
+//! the hierarchy (17 bytes per sample and level, times 4/3) plus about 100 bytes per special
+//! coarse stencil (a few per constrained sample), plus 33 bytes per finest sample for the
+//! conjugate-gradient vectors when they are used.
 
+pub mod galerkin;
 pub mod gradient;
 pub mod grid;
 pub mod level;
@@ -79,8 +89,8 @@ pub mod problem;
 
 pub use grid::{GridSpec, MAX_SIDE, MIN_SIDE};
 pub use multigrid::{
-    Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, DEFAULT_MAX_CYCLES,
-    DEFAULT_TOLERANCE,
+    Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, AUTO_SWITCH_FACTOR,
+    DEFAULT_MAX_CYCLES, DEFAULT_TOLERANCE,
 };
 pub use problem::Problem;
 

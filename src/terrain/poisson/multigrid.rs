@@ -1,7 +1,7 @@
 //! The multigrid driver: full-multigrid start, V- or W-cycles with residual correction, the
 //! relative-residual stopping rule, warm starts, and the per-solve report.
 
-use super::grid::GridSpec;
+use super::grid::{GridSpec, Split};
 use super::level::Level;
 use super::ops::{
     apply_operator, dot, prolong, residual, residual_restrict, restrict_rhs, smooth,
@@ -9,10 +9,12 @@ use super::ops::{
 };
 use super::problem::Problem;
 use super::PoissonError;
-use std::time::Instant;
 
 /// Default stopping tolerance on the relative residual `‖b − A h‖₂ / ‖b‖₂`.
 pub const DEFAULT_TOLERANCE: f64 = 1e-6;
+/// With [`Acceleration::Auto`], a plain cycle that reduces the residual by less than this factor
+/// hands over to conjugate gradients (preconditioned by the same cycle) for the rest of the solve.
+pub const AUTO_SWITCH_FACTOR: f64 = 0.3;
 /// Default cap on finest-level cycles per solve.
 pub const DEFAULT_MAX_CYCLES: usize = 40;
 /// Gauss–Seidel sweeps on the coarsest level (its shorter side has one interior sample, so every
@@ -31,7 +33,9 @@ pub enum Cycle {
 /// Krylov acceleration of the finest-level cycles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Acceleration {
-    /// Conjugate gradients when interior samples are fixed, plain cycles otherwise.
+    /// Plain cycles while each reduces the residual by at least [`AUTO_SWITCH_FACTOR`], then
+    /// conjugate gradients preconditioned by the cycle (plain V-cycles slow down to about 0.35
+    /// per cycle around isolated fixed points once the residual is small; W-cycles do not).
     Auto,
     /// Plain multigrid cycles.
     None,
@@ -111,8 +115,6 @@ pub struct SolveReport {
     pub relative_residuals: Vec<f64>,
     /// True if the last relative residual is at most the tolerance.
     pub converged: bool,
-    /// Wall time of the solve, seconds (loading the problem included).
-    pub seconds: f64,
     /// `‖b‖₂`, metres.
     pub rhs_norm: f64,
 }
@@ -133,7 +135,6 @@ impl SolveReport {
 pub struct Solver {
     options: SolveOptions,
     levels: Vec<Level>,
-    interior_fixed: bool,
     krylov: Option<Krylov>,
     scratch: Vec<f64>,
     has_solution: bool,
@@ -178,7 +179,6 @@ impl Solver {
         Ok(Self {
             options,
             levels,
-            interior_fixed: false,
             krylov: None,
             scratch: Vec::new(),
             has_solution: false,
@@ -328,7 +328,6 @@ impl Solver {
     }
 
     fn run(&mut self, problem: &Problem, start: Start) -> SolveReport {
-        let t0 = Instant::now();
         self.update_mask(problem);
         let bnorm = problem.load(&mut self.levels[0]).sqrt();
         let kind = match start {
@@ -364,7 +363,6 @@ impl Solver {
                 cycles: 0,
                 relative_residuals: vec![0.0],
                 converged: true,
-                seconds: t0.elapsed().as_secs_f64(),
                 rhs_norm: 0.0,
             };
         }
@@ -380,7 +378,6 @@ impl Solver {
             cycles,
             relative_residuals,
             converged,
-            seconds: t0.elapsed().as_secs_f64(),
             rhs_norm: bnorm,
         }
     }
@@ -395,7 +392,6 @@ impl Solver {
         if same && self.has_solution {
             return;
         }
-        self.interior_fixed = (1..g.nz - 1).any(|j| (1..g.nx - 1).any(|i| !free[j * g.nx + i]));
         self.levels[0].set_mask(&free);
         for l in 1..self.levels.len() {
             let (a, b) = self.levels.split_at_mut(l);
@@ -403,20 +399,35 @@ impl Solver {
         }
     }
 
-    /// Full multigrid: restrict the problem to every level, solve the coarsest, then interpolate
-    /// upwards with `fmg_cycles` cycles on each level but the finest.
+    /// Full multigrid on the correction equation. The free samples of the finest level start
+    /// from the transfinite (Coons) interpolation of the border heights, which matches the border
+    /// and is smooth, so the remaining correction has no boundary layer; its right-hand side (the
+    /// residual of that start) is restricted to every level, the coarsest level is solved by
+    /// sweeps, and each level's correction is interpolated bilinearly to the next finer one and
+    /// improved by `fmg_cycles` cycles there; the finest level adds it.
     fn full_multigrid(&mut self) {
         let n = self.levels.len();
-        for l in 1..n {
+        coons_start(&mut self.levels[0]);
+        if n == 1 {
+            return;
+        }
+        {
+            let (a, b) = self.levels.split_at_mut(1);
+            residual_restrict(&a[0], &mut b[0]);
+        }
+        for l in 2..n {
             let (a, b) = self.levels.split_at_mut(l);
             restrict_rhs(&a[l - 1], &mut b[0]);
-            a[l - 1].restrict_fixed_values(&mut b[0]);
         }
+        self.levels[n - 1].zero_h();
         smooth(&mut self.levels[n - 1], COARSEST_SWEEPS);
         for l in (0..n - 1).rev() {
             let (a, b) = self.levels.split_at_mut(l + 1);
-            prolong::<false>(&b[0], &mut a[l], &mut self.scratch);
-            if l > 0 {
+            if l == 0 {
+                prolong::<true>(&b[0], &mut a[0], &mut self.scratch);
+            } else {
+                a[l].zero_h();
+                prolong::<false>(&b[0], &mut a[l], &mut self.scratch);
                 for _ in 0..self.options.fmg_cycles {
                     cycle(&mut self.levels, l, &self.options, &mut self.scratch, false);
                 }
@@ -428,14 +439,10 @@ impl Solver {
     /// relative residual history.
     fn cycles(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
         let o = self.options;
-        let cg = match o.acceleration {
-            Acceleration::Auto => self.interior_fixed,
-            Acceleration::None => false,
-            Acceleration::ConjugateGradient => true,
-        };
-        if cg && self.levels.len() > 1 {
-            return self.conjugate_gradients(bnorm);
+        if o.acceleration == Acceleration::ConjugateGradient && self.levels.len() > 1 {
+            return self.conjugate_gradients(bnorm, o.max_cycles);
         }
+        let auto = o.acceleration == Acceleration::Auto;
         let mut history = Vec::new();
         let mut done = 0;
         if self.levels.len() == 1 {
@@ -458,6 +465,13 @@ impl Solver {
             if rel <= o.tolerance || done == o.max_cycles {
                 return (done, history);
             }
+            let slow = done > 0 && rel > AUTO_SWITCH_FACTOR * history[history.len() - 2];
+            if auto && slow {
+                // Continue from the current iterate with conjugate gradients.
+                let (more, tail) = self.conjugate_gradients(bnorm, o.max_cycles - done);
+                history.extend_from_slice(&tail[1..]);
+                return (done + more, history);
+            }
             b[0].zero_h();
             for _ in 0..gamma(o.cycle) {
                 cycle(&mut self.levels, 1, &o, &mut self.scratch, false);
@@ -474,7 +488,7 @@ impl Solver {
     /// Conjugate gradients on `K h = −b` (`K = −A`, symmetric positive definite over the free
     /// samples), preconditioned by one symmetric cycle (pre-smoothing red→black, post-smoothing
     /// black→red, restriction = prolongationᵀ). The residual kept is `r = b − A h = −(−b − K h)`.
-    fn conjugate_gradients(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
+    fn conjugate_gradients(&mut self, bnorm: f64, max_cycles: usize) -> (usize, Vec<f64>) {
         let o = self.options;
         let mut kr = match self.krylov.take() {
             Some(k) if k.zl.grid == self.levels[0].grid => k,
@@ -485,7 +499,7 @@ impl Solver {
         let mut done = 0;
         let rr = residual(&self.levels[0], &mut kr.zl.rhs);
         history.push(rr.sqrt() / bnorm);
-        if history[0] <= o.tolerance || o.max_cycles == 0 {
+        if history[0] <= o.tolerance || max_cycles == 0 {
             self.krylov = Some(kr);
             return (0, history);
         }
@@ -502,7 +516,7 @@ impl Solver {
             done += 1;
             let rel = rr.sqrt() / bnorm;
             history.push(rel);
-            if rel <= o.tolerance || done == o.max_cycles {
+            if rel <= o.tolerance || done == max_cycles {
                 break;
             }
             precondition(&mut kr.zl, &mut self.levels, &o, &mut self.scratch);
@@ -549,6 +563,41 @@ fn precondition(zl: &mut Level, levels: &mut [Level], o: &SolveOptions, scratch:
     }
     prolong::<true>(&levels[1], zl, scratch);
     smooth_reverse(zl, o.post_smooth);
+}
+
+/// Sets the free samples of `level` (the finest) to the transfinite interpolation of its border
+/// values: `H(x, z) = (1 − x) h(0, z) + x h(1, z) + (1 − z) h(x, 0) + z h(x, 1)` minus the bilinear
+/// interpolation of the four corners (`x`, `z` in `[0, 1]` across the grid).
+fn coons_start(level: &mut Level) {
+    let g = level.grid;
+    let (nx, nz) = (g.nx, g.nz);
+    let west: Vec<f64> = (0..nz).map(|j| level.value(0, j)).collect();
+    let east: Vec<f64> = (0..nz).map(|j| level.value(nx - 1, j)).collect();
+    let north: Vec<f64> = (0..nx).map(|i| level.value(i, 0)).collect();
+    let south: Vec<f64> = (0..nx).map(|i| level.value(i, nz - 1)).collect();
+    let (c00, c10, c01, c11) = (north[0], north[nx - 1], south[0], south[nx - 1]);
+    let st = level.split.stride;
+    for c in 0..2 {
+        let (h, f) = (&mut level.h[c], &level.free[c]);
+        for j in 1..nz - 1 {
+            let z = j as f64 / (nz - 1) as f64;
+            let s = Split::shift(c, j);
+            for k in 0..st {
+                let slot = j * st + k;
+                if f[slot] == 0 {
+                    continue;
+                }
+                let i = 2 * k + s;
+                let x = i as f64 / (nx - 1) as f64;
+                let edges = (1.0 - x) * west[j] + x * east[j] + (1.0 - z) * north[i] + z * south[i];
+                let corners = (1.0 - x) * (1.0 - z) * c00
+                    + x * (1.0 - z) * c10
+                    + (1.0 - x) * z * c01
+                    + x * z * c11;
+                h[slot] = edges - corners;
+            }
+        }
+    }
 }
 
 fn gamma(c: Cycle) -> usize {
