@@ -151,8 +151,16 @@ pub(crate) fn laplace_row<const RHS: bool>(
         } else {
             v + acc * weight
         };
-        dst[x] = if fx[x] != 0 { v } else { nv };
+        dst[x] = keep_fixed(fx[x], v, nv);
     }
+}
+
+/// `v` where `fixed != 0`, else `nv`, as a branch-free bit blend: the loops compute `nv` for
+/// every sample and vectorise with plain loads (a branch makes the compiler mask the loads).
+#[inline(always)]
+pub(crate) fn keep_fixed(fixed: u8, v: f32, nv: f32) -> f32 {
+    let keep = u32::from(fixed != 0).wrapping_neg();
+    f32::from_bits((v.to_bits() & keep) | (nv.to_bits() & !keep))
 }
 
 /// One Jacobi sweep over all channels: Laplace (`pm = None`, `c ≡ 1`) or Perona–Malik with
@@ -222,7 +230,17 @@ pub(crate) fn laplace_sweep(
                             dst,
                         ),
                         None => laplace_row::<false>(
-                            c, &east, &west, u, d, no, so, &[], fx, weight, dst,
+                            c,
+                            &east,
+                            &west,
+                            u,
+                            d,
+                            no,
+                            so,
+                            &[],
+                            fx,
+                            weight,
+                            dst,
                         ),
                     }
                 }
@@ -326,7 +344,7 @@ fn pm_slab(
                         + cn[x] * (no[x] - v)
                         + cs[x] * (so[x] - v);
                     let nv = v + acc * (1.0 / 6.0);
-                    dst[x] = if fx[x] != 0 { v } else { nv };
+                    dst[x] = keep_fixed(fx[x], v, nv);
                 }
             }
             std::mem::swap(&mut cy_lo, &mut cy_hi);

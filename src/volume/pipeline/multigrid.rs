@@ -22,7 +22,7 @@
 //! pass is parallel over z-slabs and writes disjoint samples from read-only inputs, so the result
 //! does not depend on the thread count.
 
-use super::diffuse::{laplace_sweep, rows, shifted, DiffuseParams, COARSEST};
+use super::diffuse::{keep_fixed, laplace_sweep, rows, shifted, DiffuseParams, COARSEST};
 use super::grid::par_slabs_multi;
 
 /// Smoothing step of the V-cycles: `ω/6` with `ω = 6/7`.
@@ -125,14 +125,11 @@ fn prolong<const ADD: bool>(
 ) {
     let [nx, ny, nz] = fine;
     let [cx, cy, cz] = coarse;
-    let (ax, ay, az) = (
-        axis_table(nx, cx),
-        axis_table(ny, cy),
-        axis_table(nz, cz),
-    );
+    let (ax, ay, az) = (axis_table(nx, cx), axis_table(ny, cy), axis_table(nz, cz));
     let outs: Vec<&mut [f32]> = out.iter_mut().map(|c| c.as_mut_slice()).collect();
     par_slabs_multi(outs, nx * ny, |zs, out| {
         let mut line = vec![0.0f32; cx];
+        let mut fine_line = vec![0.0f32; nx];
         for zl in 0..out[0].len() / (nx * ny) {
             let (z0, z1, wz) = az[zs + zl];
             for y in 0..ny {
@@ -148,18 +145,13 @@ fn prolong<const ADD: bool>(
                         let b = r01[x] + wy * (r11[x] - r01[x]);
                         line[x] = a + wz * (b - a);
                     }
+                    for (f, &(x0, x1, wx)) in fine_line.iter_mut().zip(&ax) {
+                        *f = line[x0] + wx * (line[x1] - line[x0]);
+                    }
                     let dst = &mut out[ch][ol..ol + nx];
-                    for (x, d) in dst.iter_mut().enumerate() {
-                        if fx[x] != 0 {
-                            continue;
-                        }
-                        let (x0, x1, wx) = ax[x];
-                        let v = line[x0] + wx * (line[x1] - line[x0]);
-                        if ADD {
-                            *d += v;
-                        } else {
-                            *d = v;
-                        }
+                    for ((d, f), fx) in dst.iter_mut().zip(&fine_line).zip(fx) {
+                        let v = if ADD { *d + f } else { *f };
+                        *d = keep_fixed(*fx, *d, v);
                     }
                 }
             }
@@ -249,6 +241,7 @@ fn residual_restrict(
                             let (up, dn, no, so) = (row(rw.u), row(rw.d), row(rw.n), row(rw.s));
                             let fx = &fixed[rw.o..rw.o + nx];
                             let (e, w) = (&east[..nx], &west[..nx]);
+                            let r = &mut r[..nx];
                             for x in 0..nx {
                                 let v = cc[x];
                                 let lap = (e[x] - v)
@@ -257,11 +250,20 @@ fn residual_restrict(
                                     + (dn[x] - v)
                                     + (no[x] - v)
                                     + (so[x] - v);
-                                let bx = b.map_or(0.0, |b| b[ch][rw.o + x]);
-                                r[x] = if fx[x] != 0 { 0.0 } else { bx + lap };
+                                r[x] = keep_fixed(fx[x], 0.0, lap);
                             }
-                            for x in 0..nx {
-                                acc[x / 2] += r[x];
+                            if let Some(b) = b {
+                                let (b, fx) = (&b[ch][rw.o..rw.o + nx], fx);
+                                for x in 0..nx {
+                                    r[x] += keep_fixed(fx[x], 0.0, b[x]);
+                                }
+                            }
+                            let (pairs, odd) = r.split_at(nx & !1);
+                            for (a, p) in acc.iter_mut().zip(pairs.chunks_exact(2)) {
+                                *a += p[0] + p[1];
+                            }
+                            if let Some(last) = odd.first() {
+                                acc[nx / 2] += last;
                             }
                         }
                     }

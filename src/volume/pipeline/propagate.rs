@@ -126,7 +126,14 @@ fn wavefront(
     let [nx, ny, _] = dims;
     let n = seeds.len();
     let bits = neighbour_bits(dims);
-    let offsets = [1isize, -1, nx as isize, -(nx as isize), (nx * ny) as isize, -((nx * ny) as isize)];
+    let offsets = [
+        1isize,
+        -1,
+        nx as isize,
+        -(nx as isize),
+        (nx * ny) as isize,
+        -((nx * ny) as isize),
+    ];
     let mut layer = vec![UNREACHED; n];
     let mut queue: Vec<u32> = Vec::with_capacity(n);
     for (i, s) in seeds.iter().enumerate() {
@@ -205,12 +212,28 @@ pub fn propagate_surface(
 /// in `Ω_R` (`omega_r != 0`); returns the confidence of every sample (1 in `Ω_R`, 0 where no
 /// material arrives). One breadth-first pass.
 pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]) -> Vec<f32> {
-    let mut conf: Vec<f32> = omega_r.iter().map(|&o| if o != 0 { 1.0 } else { 0.0 }).collect();
-    wavefront(dims, omega_r, |i, li, _, layer| {
+    let mut conf: Vec<f32> = omega_r
+        .iter()
+        .map(|&o| if o != 0 { 1.0 } else { 0.0 })
+        .collect();
+    let [nx, ny, _] = dims;
+    let offsets = [
+        1isize,
+        -1,
+        nx as isize,
+        -(nx as isize),
+        (nx * ny) as isize,
+        -((nx * ny) as isize),
+    ];
+    wavefront(dims, omega_r, |i, li, bits, layer| {
         let mut votes = [(NO_MATERIAL, 0.0f32); 6];
         let mut nv = 0;
         let mut total = 0.0f32;
-        for (j, _, _) in neighbours(dims, i).into_iter().flatten() {
+        for (k, off) in offsets.iter().enumerate() {
+            if bits & (1 << k) == 0 {
+                continue;
+            }
+            let j = i.wrapping_add_signed(*off);
             if layer[j] < li && material[j] != NO_MATERIAL {
                 total += conf[j];
                 match votes[..nv].iter_mut().find(|(m, _)| *m == material[j]) {
