@@ -5,7 +5,9 @@
 //! `Ω_S`), layer `L + 1` the unset samples with a neighbour in layer `L` — the paper's boundary
 //! `∂Ω_S`, "set according to the following function and inserted into `Ω_S`". A sample of layer
 //! `L` is computed only from its neighbours of layers `< L` and **set once**. [`layers`] is the
-//! breadth-first search that orders the samples by layer; on the GPU
+//! breadth-first search that orders the samples by layer; the propagations fuse it with the
+//! update (a sample is set when it leaves the queue, when all its lower-layer neighbours are
+//! final), one pass each, and test neighbour-existence bits instead of dividing indices; on the GPU
 //! (`shaders/volume_propagate.wgsl`) the same layers are produced by one dispatch per layer.
 //!
 //! **Surface propagation** (§4.5): with `NB` the six neighbours,
