@@ -3,6 +3,7 @@
 //! envelope of parabolas, O(n). The voxelization's dead zone (§4.2) is `d² ≤ r²` of it.
 
 use super::grid::{par_slabs, threads};
+use rayon::prelude::*;
 
 const FAR: f32 = 1e20;
 
@@ -93,44 +94,39 @@ pub fn squared_distance(dims: [usize; 3], set: &[u8]) -> Vec<f32> {
             }
         });
     }
-    // z pass: columns, parallel over ranges of rows y, each thread writing its own buffer.
-    let t = threads().min(ny).max(1);
-    let per = ny.div_ceil(t);
-    let src = &b;
-    let parts: Vec<(usize, Vec<f32>)> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..t)
-            .map(|k| {
-                s.spawn(move || {
-                    let (y0, y1) = (k * per, ((k + 1) * per).min(ny));
-                    let mut res = vec![0.0f32; (y1.saturating_sub(y0)) * nx * nz];
-                    let (mut f, mut d) = (vec![0.0f32; nz], vec![0.0f32; nz]);
-                    let (mut v, mut zz) = (vec![0usize; nz], vec![0.0f32; nz + 1]);
-                    for y in y0..y1 {
-                        for x in 0..nx {
-                            for z in 0..nz {
-                                f[z] = src[x + nx * (y + ny * z)];
-                            }
-                            line(&f, &mut d, &mut v, &mut zz);
-                            let o = ((y - y0) * nx + x) * nz;
-                            res[o..o + nz].copy_from_slice(&d);
+    // z pass: columns into a y-major buffer (`t[(y·nx + x)·nz + z]`, contiguous per y, so the
+    // y-rows are distributed over threads without sharing), then transposed back into the
+    // z-major layout, distributed over z-slabs.
+    let mut t = vec![0.0f32; a.len()];
+    {
+        let src = &b;
+        let band = nx * nz;
+        let per = ny.div_ceil(2 * threads()).max(1);
+        t.par_chunks_mut(per * band)
+            .enumerate()
+            .for_each(|(k, out)| {
+                let (mut f, mut d) = (vec![0.0f32; nz], vec![0.0f32; nz]);
+                let (mut v, mut zz) = (vec![0usize; nz], vec![0.0f32; nz + 1]);
+                for (yl, rows) in out.chunks_mut(band).enumerate() {
+                    let y = k * per + yl;
+                    for (x, col) in rows.chunks_mut(nz).enumerate() {
+                        for (z, fz) in f.iter_mut().enumerate() {
+                            *fz = src[x + nx * (y + ny * z)];
                         }
+                        line(&f, &mut d, &mut v, &mut zz);
+                        col.copy_from_slice(&d);
                     }
-                    (y0, res)
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().expect("distance transform thread"))
-            .collect()
-    });
-    for (y0, res) in parts {
-        for (r, chunk) in res.chunks(nz).enumerate() {
-            let (y, x) = (y0 + r / nx, r % nx);
-            for (z, v) in chunk.iter().enumerate() {
-                a[x + nx * (y + ny * z)] = *v;
+                }
+            });
+    }
+    let t = &t;
+    par_slabs(&mut a, slice, |z0, out| {
+        for (zl, sl) in out.chunks_mut(slice).enumerate() {
+            let z = z0 + zl;
+            for (i, o) in sl.iter_mut().enumerate() {
+                *o = t[i * nz + z];
             }
         }
-    }
+    });
     a
 }

@@ -44,6 +44,7 @@ pub fn gaussian(dims: [usize; 3], field: &mut [f32], sigma: f32) {
         let stride = [1, nx, slice][axis];
         par_slabs(dst, slice, |z0, out| {
             let nzs = out.len() / slice;
+            let mut pad: Vec<f32> = Vec::with_capacity(nx + 2 * r as usize);
             for zl in 0..nzs {
                 let z = z0 + zl;
                 for y in 0..ny {
@@ -51,14 +52,19 @@ pub fn gaussian(dims: [usize; 3], field: &mut [f32], sigma: f32) {
                     let dst = &mut out[zl * slice + y * nx..zl * slice + y * nx + nx];
                     let coord = [0, y as i64, z as i64][axis];
                     if axis == 0 {
+                        // The row with its border samples repeated `r` times on each side, so
+                        // every tap is a plain (vectorisable) shifted read.
                         let row = &src[o..o + nx];
-                        for (x, d) in dst.iter_mut().enumerate() {
-                            let mut acc = 0.0;
-                            for (t, w) in k.iter().enumerate() {
-                                let xx = (x as i64 + t as i64 - r).clamp(0, nx as i64 - 1);
-                                acc += w * row[xx as usize];
+                        let ru = r as usize;
+                        pad.clear();
+                        pad.extend(std::iter::repeat_n(row[0], ru));
+                        pad.extend_from_slice(row);
+                        pad.extend(std::iter::repeat_n(row[nx - 1], ru));
+                        dst.fill(0.0);
+                        for (t, w) in k.iter().enumerate() {
+                            for (d, v) in dst.iter_mut().zip(&pad[t..t + nx]) {
+                                *d += w * v;
                             }
-                            *d = acc;
                         }
                     } else {
                         dst.fill(0.0);

@@ -7,6 +7,7 @@
 //! "voxel" and a "sample" are the same thing.
 
 use super::PipelineError;
+use rayon::prelude::*;
 
 /// Most samples along one axis.
 pub const MAX_DIM: usize = 2048;
@@ -111,41 +112,32 @@ impl Grid {
     }
 }
 
-/// Worker threads for the slab-parallel loops: the machine's parallelism, at most 16. Results
-/// never depend on it (every parallel loop writes disjoint samples from read-only inputs).
+/// Worker threads for the slab-parallel loops: rayon's pool size, at most 16. Results never
+/// depend on it (every parallel loop writes disjoint samples from read-only inputs).
 pub fn threads() -> usize {
-    std::thread::available_parallelism()
-        .map(|n| n.get())
-        .unwrap_or(1)
-        .clamp(1, 16)
+    rayon::current_num_threads().clamp(1, 16)
 }
 
-/// Runs `f(z0, slab)` on disjoint z-slabs of `out` (one slab per thread, whole z-slices of
-/// `slice` samples each) with `std::thread::scope`. `f` must only read shared inputs.
+/// Fewest samples for which a slab loop is worth distributing over threads.
+const PAR_MIN: usize = 1 << 14;
+
+/// Runs `f(z0, slab)` on disjoint z-slabs of `out` (whole z-slices of `slice` samples each, about
+/// two slabs per thread) on rayon's pool. `f` must only read shared inputs.
 pub fn par_slabs<T: Send, F>(out: &mut [T], slice: usize, f: F)
 where
     F: Fn(usize, &mut [T]) + Sync,
 {
-    let nz = out.len() / slice.max(1);
-    let t = threads().min(nz.max(1));
-    if t <= 1 || out.len() < 1 << 14 {
+    let slice = slice.max(1);
+    let nz = out.len() / slice;
+    let t = (2 * threads()).min(nz.max(1));
+    if t <= 1 || out.len() < PAR_MIN {
         f(0, out);
         return;
     }
     let per = nz.div_ceil(t);
-    std::thread::scope(|s| {
-        let mut rest = out;
-        let mut z0 = 0;
-        let f = &f;
-        while !rest.is_empty() {
-            let take = (per * slice).min(rest.len());
-            let (head, tail) = rest.split_at_mut(take);
-            rest = tail;
-            let z = z0;
-            s.spawn(move || f(z, head));
-            z0 += per;
-        }
-    });
+    out.par_chunks_mut(per * slice)
+        .enumerate()
+        .for_each(|(k, chunk)| f(k * per, chunk));
 }
 
 #[inline]
@@ -199,10 +191,11 @@ pub fn par_slabs_multi<F>(outs: Vec<&mut [f32]>, slice: usize, f: F)
 where
     F: Fn(usize, &mut [&mut [f32]]) + Sync,
 {
+    let slice = slice.max(1);
     let len = outs.first().map_or(0, |o| o.len());
-    let nz = len / slice.max(1);
-    let t = threads().min(nz.max(1));
-    if t <= 1 || len < 1 << 14 {
+    let nz = len / slice;
+    let t = (2 * threads()).min(nz.max(1));
+    if t <= 1 || len < PAR_MIN {
         let mut outs = outs;
         f(0, &mut outs);
         return;
@@ -214,13 +207,9 @@ where
             slabs[k].push(chunk);
         }
     }
-    std::thread::scope(|s| {
-        let f = &f;
-        for (k, mut slab) in slabs.into_iter().enumerate() {
-            if slab.is_empty() {
-                continue;
-            }
-            s.spawn(move || f(k * per, &mut slab));
-        }
-    });
+    slabs
+        .into_par_iter()
+        .enumerate()
+        .filter(|(_, slab)| !slab.is_empty())
+        .for_each(|(k, mut slab)| f(k * per, &mut slab));
 }

@@ -36,6 +36,7 @@ pub mod diffuse;
 pub mod edt;
 pub mod filter;
 pub mod grid;
+pub mod multigrid;
 pub mod propagate;
 pub mod proxy;
 pub mod region;

@@ -5,7 +5,9 @@
 //! `Ω_S`), layer `L + 1` the unset samples with a neighbour in layer `L` — the paper's boundary
 //! `∂Ω_S`, "set according to the following function and inserted into `Ω_S`". A sample of layer
 //! `L` is computed only from its neighbours of layers `< L` and **set once**. [`layers`] is the
-//! breadth-first search that orders the samples by layer; on the GPU
+//! breadth-first search that orders the samples by layer; the propagations fuse it with the
+//! update (a sample is set when it leaves the queue, when all its lower-layer neighbours are
+//! final), one pass each, and test neighbour-existence bits instead of dividing indices; on the GPU
 //! (`shaders/volume_propagate.wgsl`) the same layers are produced by one dispatch per layer.
 //!
 //! **Surface propagation** (§4.5): with `NB` the six neighbours,
@@ -92,9 +94,81 @@ pub fn neighbours(dims: [usize; 3], i: usize) -> [Option<(usize, usize, f32)>; 6
     ]
 }
 
+/// Neighbour-existence bits of every sample (bit `k` set when neighbour `k` of
+/// [`neighbours`]' order E, W, U, D, N, S lies inside the grid): the breadth-first searches test
+/// bits instead of dividing indices into coordinates.
+fn neighbour_bits(dims: [usize; 3]) -> Vec<u8> {
+    let [nx, ny, nz] = dims;
+    let mut bits = vec![0u8; nx * ny * nz];
+    for z in 0..nz {
+        for y in 0..ny {
+            let row = u8::from(y + 1 < ny) << 2
+                | u8::from(y > 0) << 3
+                | u8::from(z + 1 < nz) << 4
+                | u8::from(z > 0) << 5;
+            let o = nx * (y + ny * z);
+            for (x, b) in bits[o..o + nx].iter_mut().enumerate() {
+                *b = row | u8::from(x + 1 < nx) | u8::from(x > 0) << 1;
+            }
+        }
+    }
+    bits
+}
+
+/// Breadth-first wavefront from the seeds that calls `set(i, layer, neighbour bits, &layers)`
+/// for every
+/// non-seed sample when it leaves the queue. At that moment every neighbour of a lower layer
+/// has already left the queue (the queue holds layers in non-decreasing order), so `set` sees
+/// exactly the values of [`layers`] followed by a pass in its order. Returns the layers.
+fn wavefront(
+    dims: [usize; 3],
+    seeds: &[u8],
+    mut set: impl FnMut(usize, u32, u8, &[u32]),
+) -> Vec<u32> {
+    let [nx, ny, _] = dims;
+    let n = seeds.len();
+    let bits = neighbour_bits(dims);
+    let offsets = [
+        1isize,
+        -1,
+        nx as isize,
+        -(nx as isize),
+        (nx * ny) as isize,
+        -((nx * ny) as isize),
+    ];
+    let mut layer = vec![UNREACHED; n];
+    let mut queue: Vec<u32> = Vec::with_capacity(n);
+    for (i, s) in seeds.iter().enumerate() {
+        if *s != 0 {
+            layer[i] = 0;
+            queue.push(i as u32);
+        }
+    }
+    let mut head = 0;
+    while head < queue.len() {
+        let i = queue[head] as usize;
+        head += 1;
+        let li = layer[i];
+        let b = bits[i];
+        if li > 0 {
+            set(i, li, b, &layer);
+        }
+        for (k, off) in offsets.iter().enumerate() {
+            if b & (1 << k) != 0 {
+                let j = i.wrapping_add_signed(*off);
+                if layer[j] == UNREACHED {
+                    layer[j] = li + 1;
+                    queue.push(j as u32);
+                }
+            }
+        }
+    }
+    layer
+}
+
 /// Surface propagation (§4.5) in place: `s` holds the seed values in `Ω_S` (`omega_s != 0`);
-/// every other reachable sample is set once by the min rule. Returns the layers (for tests and
-/// the GPU twin). Samples no seed reaches keep their value.
+/// every other reachable sample is set once by the min rule, in one breadth-first pass. Returns
+/// the layers (for tests and the GPU twin). Samples no seed reaches keep their value.
 pub fn propagate_surface(
     grid: &Grid,
     normal: &[Vec<f32>],
@@ -102,53 +176,79 @@ pub fn propagate_surface(
     s: &mut [f32],
 ) -> Vec<u32> {
     let dims = grid.dims;
-    let (order, layer) = layers(dims, omega_s);
+    let [nx, ny, _] = dims;
     let h = grid.spacing;
-    for &i in &order {
-        let i = i as usize;
-        let li = layer[i];
-        if li == 0 {
-            continue;
-        }
+    let (n0, n1, n2) = (&normal[0], &normal[1], &normal[2]);
+    wavefront(dims, omega_s, |i, li, b, layer| {
         let mut best = f32::INFINITY;
-        for (j, axis, sign) in neighbours(dims, i).into_iter().flatten() {
+        // E, W, U, D, N, S with the sign of (i − x) along the axis, as `neighbours`.
+        let mut take = |j: usize, nc: &[f32], sign: f32| {
             if layer[j] < li {
-                let v = s[j] + (sign * h) * ((normal[axis][i] + normal[axis][j]) * 0.5);
+                let v = s[j] + (sign * h) * ((nc[i] + nc[j]) * 0.5);
                 best = best.min(v);
             }
+        };
+        if b & 1 != 0 {
+            take(i + 1, n0, -1.0);
+        }
+        if b & 2 != 0 {
+            take(i - 1, n0, 1.0);
+        }
+        if b & 4 != 0 {
+            take(i + nx, n1, -1.0);
+        }
+        if b & 8 != 0 {
+            take(i - nx, n1, 1.0);
+        }
+        if b & 16 != 0 {
+            take(i + nx * ny, n2, -1.0);
+        }
+        if b & 32 != 0 {
+            take(i - nx * ny, n2, 1.0);
         }
         s[i] = best;
-    }
-    layer
+    })
 }
 
 /// Material propagation with confidence (§4.4) in place: `material` holds the seeds' materials
 /// in `Ω_R` (`omega_r != 0`); returns the confidence of every sample (1 in `Ω_R`, 0 where no
-/// material arrives).
+/// material arrives). One breadth-first pass.
 pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]) -> Vec<f32> {
-    let (order, layer) = layers(dims, omega_r);
-    let mut conf = vec![0.0f32; material.len()];
-    let mut votes: Vec<(u16, f32)> = Vec::with_capacity(6);
-    for &i in &order {
-        let i = i as usize;
-        let li = layer[i];
-        if li == 0 {
-            conf[i] = 1.0;
-            continue;
-        }
-        votes.clear();
+    let mut conf: Vec<f32> = omega_r
+        .iter()
+        .map(|&o| if o != 0 { 1.0 } else { 0.0 })
+        .collect();
+    let [nx, ny, _] = dims;
+    let offsets = [
+        1isize,
+        -1,
+        nx as isize,
+        -(nx as isize),
+        (nx * ny) as isize,
+        -((nx * ny) as isize),
+    ];
+    wavefront(dims, omega_r, |i, li, bits, layer| {
+        let mut votes = [(NO_MATERIAL, 0.0f32); 6];
+        let mut nv = 0;
         let mut total = 0.0f32;
-        for (j, _, _) in neighbours(dims, i).into_iter().flatten() {
+        for (k, off) in offsets.iter().enumerate() {
+            if bits & (1 << k) == 0 {
+                continue;
+            }
+            let j = i.wrapping_add_signed(*off);
             if layer[j] < li && material[j] != NO_MATERIAL {
                 total += conf[j];
-                match votes.iter_mut().find(|(m, _)| *m == material[j]) {
+                match votes[..nv].iter_mut().find(|(m, _)| *m == material[j]) {
                     Some(v) => v.1 += conf[j],
-                    None => votes.push((material[j], conf[j])),
+                    None => {
+                        votes[nv] = (material[j], conf[j]);
+                        nv += 1;
+                    }
                 }
             }
         }
         let mut best = (NO_MATERIAL, -1.0f32);
-        for &(m, w) in &votes {
+        for &(m, w) in &votes[..nv] {
             if w > best.1 || (w == best.1 && m < best.0) {
                 best = (m, w);
             }
@@ -157,6 +257,6 @@ pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]
             material[i] = best.0;
             conf[i] = (best.1 / total).clamp(0.0, 1.0);
         }
-    }
+    });
     conf
 }

@@ -68,7 +68,8 @@ impl Default for PipelineParams {
     }
 }
 
-/// Wall-clock milliseconds of each stage of one run.
+/// Milliseconds of each stage of one run: wall-clock time ([`RegionFields::times`]) or CPU time
+/// of all threads together ([`RegionFields::cpu_times`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct StageTimes {
     /// Building proxy triangles.
@@ -77,14 +78,33 @@ pub struct StageTimes {
     pub voxelize_ms: f64,
     /// Normal (guidance) field diffusion.
     pub normal_diffusion_ms: f64,
-    /// Noise-parameter diffusion and material propagation.
+    /// Noise-parameter (`α`, `β`) diffusion.
     pub noise_diffusion_ms: f64,
+    /// Material propagation with confidence. It runs on its own thread concurrently with the
+    /// surface propagation (both are sequential wavefronts), so it overlaps that stage.
+    pub material_ms: f64,
     /// Surface propagation.
     pub surface_propagation_ms: f64,
     /// Gaussian filter.
     pub filter_ms: f64,
-    /// All of the above.
+    /// The whole run, end to end (less than the sum of the stages by the overlap).
     pub total_ms: f64,
+}
+
+/// Wall-clock and CPU times of a run being recorded.
+#[derive(Clone, Copy, Default)]
+struct Timing {
+    wall: StageTimes,
+    cpu: StageTimes,
+}
+
+impl Timing {
+    /// Records the time since `sw` into the field `f` of both.
+    fn record(&mut self, sw: Stopwatch, f: fn(&mut StageTimes) -> &mut f64) {
+        let (w, c) = sw.lap();
+        *f(&mut self.wall) += w;
+        *f(&mut self.cpu) += c;
+    }
 }
 
 /// The fields of a region after the pipeline.
@@ -112,19 +132,78 @@ pub struct RegionFields {
     pub confidence: Vec<f32>,
     /// The voxelization's constraints (kept for warm starts and tests).
     pub voxelized: Voxelized,
-    /// Stage times of the run that produced these fields.
+    /// Wall-clock stage times of the run that produced these fields.
     pub times: StageTimes,
+    /// CPU time of each stage, all threads together (process CPU time; for the concurrent
+    /// material and surface propagations, each one's thread CPU time).
+    pub cpu_times: StageTimes,
 }
 
 fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
+/// CPU time of the whole process (every thread), milliseconds.
+pub fn process_cpu_ms() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; the call only writes it.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return 0.0;
+    }
+    ts.tv_sec as f64 * 1e3 + ts.tv_nsec as f64 * 1e-6
+}
+
+/// CPU time of the calling thread, milliseconds.
+fn thread_cpu_ms() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; the call only writes it.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return 0.0;
+    }
+    ts.tv_sec as f64 * 1e3 + ts.tv_nsec as f64 * 1e-6
+}
+
+/// Runs `f` and returns its result with its wall-clock and thread CPU milliseconds.
+fn timed_on_thread<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
+    let (w, c) = (Instant::now(), thread_cpu_ms());
+    let r = f();
+    (r, ms(w), thread_cpu_ms() - c)
+}
+
+/// Wall-clock and process CPU time since a start.
+#[derive(Clone, Copy)]
+struct Stopwatch {
+    wall: Instant,
+    cpu: f64,
+}
+
+impl Stopwatch {
+    fn start() -> Self {
+        Self {
+            wall: Instant::now(),
+            cpu: process_cpu_ms(),
+        }
+    }
+
+    /// `(wall ms, cpu ms)` since the start.
+    fn lap(&self) -> (f64, f64) {
+        (ms(self.wall), process_cpu_ms() - self.cpu)
+    }
+}
+
 fn build_voxels(
     grid: &Grid,
     scene: &Scene,
     params: &PipelineParams,
-    times: &mut StageTimes,
+    times: &mut Timing,
 ) -> Result<Voxelized, PipelineError> {
     if scene.curves.len() > MAX_CURVES {
         return Err(PipelineError::invalid(
@@ -148,7 +227,7 @@ fn build_voxels(
     if !(step.is_finite() && step > 0.0) {
         return Err(PipelineError::invalid("curve_step_m", "must be positive"));
     }
-    let t0 = Instant::now();
+    let sw = Stopwatch::start();
     let mut curves = Vec::new();
     for (i, c) in scene.curves.iter().enumerate() {
         curves.extend(curve_proxy(c, step).map_err(|e| e.within(&format!("curves[{i}]")))?);
@@ -168,16 +247,17 @@ fn build_voxels(
         }
         None => Vec::new(),
     };
-    times.proxy_ms = ms(t0);
-    let t0 = Instant::now();
+    times.record(sw, |t| &mut t.proxy_ms);
+    let sw = Stopwatch::start();
     let v = voxelize(grid, &[&curves, &meshes, &ground], params.dead_zone_m);
-    times.voxelize_ms = ms(t0);
+    times.record(sw, |t| &mut t.voxelize_ms);
     if !v.omega_s.iter().any(|&s| s != 0) {
         return Err(PipelineError::NoSurface);
     }
     Ok(v)
 }
 
+#[allow(clippy::too_many_arguments)]
 fn finish(
     grid: &Grid,
     v: Voxelized,
@@ -185,28 +265,39 @@ fn finish(
     alpha: Vec<f32>,
     beta: Vec<f32>,
     params: &PipelineParams,
-    mut times: StageTimes,
+    mut times: Timing,
+    run: Stopwatch,
 ) -> RegionFields {
-    let t0 = Instant::now();
-    let mut material = v.material.clone();
-    let confidence = propagate_material(grid.dims, &v.omega_r, &mut material);
-    times.noise_diffusion_ms += ms(t0);
+    // Material (§4.4) and surface (§4.5) propagation are independent sequential wavefronts: one
+    // thread each.
+    let ((material, confidence, mw, mc), (s, surface_layer, sw, sc)) = rayon::join(
+        || {
+            let ((m, c), w, t) = timed_on_thread(|| {
+                let mut material = v.material.clone();
+                let confidence = propagate_material(grid.dims, &v.omega_r, &mut material);
+                (material, confidence)
+            });
+            (m, c, w, t)
+        },
+        || {
+            let ((s, l), w, t) = timed_on_thread(|| {
+                let mut s = v.surface.clone();
+                let layer = propagate_surface(grid, &normal, &v.omega_s, &mut s);
+                (s, layer)
+            });
+            (s, l, w, t)
+        },
+    );
+    times.wall.material_ms = mw;
+    times.cpu.material_ms = mc;
+    times.wall.surface_propagation_ms = sw;
+    times.cpu.surface_propagation_ms = sc;
 
-    let t0 = Instant::now();
-    let mut s = v.surface.clone();
-    let surface_layer = propagate_surface(grid, &normal, &v.omega_s, &mut s);
-    times.surface_propagation_ms = ms(t0);
-
-    let t0 = Instant::now();
+    let sw = Stopwatch::start();
     let mut surface = s.clone();
     gaussian(grid.dims, &mut surface, params.gaussian_sigma);
-    times.filter_ms = ms(t0);
-    times.total_ms = times.proxy_ms
-        + times.voxelize_ms
-        + times.normal_diffusion_ms
-        + times.noise_diffusion_ms
-        + times.surface_propagation_ms
-        + times.filter_ms;
+    times.record(sw, |t| &mut t.filter_ms);
+    times.record(run, |t| &mut t.total_ms);
     RegionFields {
         grid: *grid,
         normal,
@@ -219,7 +310,8 @@ fn finish(
         material,
         confidence,
         voxelized: v,
-        times,
+        times: times.wall,
+        cpu_times: times.cpu,
     }
 }
 
@@ -233,24 +325,34 @@ pub fn generate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<RegionFields, PipelineError> {
+    let run = Stopwatch::start();
     let grid = Grid::new(grid.dims, grid.origin, grid.spacing)?;
-    let mut times = StageTimes::default();
+    let mut times = Timing::default();
     let v = build_voxels(&grid, scene, params, &mut times)?;
 
-    let t0 = Instant::now();
+    let sw = Stopwatch::start();
     let mut n: Vec<Vec<f32>> = v.normal.to_vec();
     diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
-    times.normal_diffusion_ms = ms(t0);
+    times.record(sw, |t| &mut t.normal_diffusion_ms);
 
-    let t0 = Instant::now();
+    let sw = Stopwatch::start();
     let mut r = vec![v.alpha.clone(), v.beta.clone()];
     harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
-    times.noise_diffusion_ms = ms(t0);
+    times.record(sw, |t| &mut t.noise_diffusion_ms);
 
     let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
-    Ok(finish(&grid, v, [n0, n1, n2], alpha, beta, params, times))
+    Ok(finish(
+        &grid,
+        v,
+        [n0, n1, n2],
+        alpha,
+        beta,
+        params,
+        times,
+        run,
+    ))
 }
 
 /// The box `[lo, hi)` of samples whose constraints differ between `a` and `b`, or `None`.
@@ -332,8 +434,9 @@ pub fn regenerate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<(RegionFields, Option<SampleBox>), PipelineError> {
+    let run = Stopwatch::start();
     let grid = prev.grid;
-    let mut times = StageTimes::default();
+    let mut times = Timing::default();
     let v = build_voxels(&grid, scene, params, &mut times)?;
     let changed = changed_box(&grid, &prev.voxelized, &v).map(|(lo, hi)| {
         let m = params.warm_margin;
@@ -342,7 +445,7 @@ pub fn regenerate(
         (lo, hi)
     });
 
-    let t0 = Instant::now();
+    let sw = Stopwatch::start();
     let mut n: Vec<Vec<f32>> = prev.normal.to_vec();
     // New constraints replace the previous values everywhere they apply.
     for i in 0..grid.len() {
@@ -364,18 +467,18 @@ pub fn regenerate(
         solve_box(&grid, &mut n, &v.omega_n, lo, hi, |d, c, f| {
             diffuse_normals(d, c, f, &dp, false)
         });
-        times.normal_diffusion_ms = ms(t0);
-        let t0 = Instant::now();
+        times.record(sw, |t| &mut t.normal_diffusion_ms);
+        let sw = Stopwatch::start();
         solve_box(&grid, &mut r, &v.omega_r, lo, hi, |d, c, f| {
             harmonic_fill(d, c, f, &dp)
         });
-        times.noise_diffusion_ms = ms(t0);
+        times.record(sw, |t| &mut t.noise_diffusion_ms);
     }
     let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
     Ok((
-        finish(&grid, v, [n0, n1, n2], alpha, beta, params, times),
+        finish(&grid, v, [n0, n1, n2], alpha, beta, params, times, run),
         changed,
     ))
 }

@@ -158,7 +158,8 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
             }
         }
         pass_stats.push(st);
-        if p + 1 < passes.len() {
+        // A pass that gathered nothing leaves the dead zone as it was.
+        if p + 1 < passes.len() && st.gathered > 0 {
             // Dead zone: every sample within r of a sample gathered so far (this pass or an
             // earlier one), by the exact Euclidean distance transform.
             let mut occupied = vec![0u8; n];
