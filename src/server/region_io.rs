@@ -16,12 +16,15 @@
 //! scene stays the one source of truth: the import is an ordinary edit, in the edit log.
 
 use super::error::{code, truncate, AppError};
-use super::worlds::{authorize, check_content_type, commit_edit, json_response, store_error};
+use super::worlds::{
+    authorize, check_content_type, commit_edit, json_response, query_param, requested_version,
+    store_error,
+};
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
 use crate::authoring::Displacement;
-use crate::store::{Role, StoreError};
+use crate::store::Role;
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
@@ -53,22 +56,13 @@ pub(super) fn routes() -> Router<AppState> {
         )
 }
 
-/// The value of `name` in a raw query (no percent-decoding: the values are numbers).
-fn param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a str> {
-    query?.split('&').find_map(|kv| match kv.split_once('=') {
-        Some((k, v)) if k == name => Some(v),
-        None if kv == name => Some(""),
-        _ => None,
-    })
-}
-
 fn bad(field: &'static str, message: impl Into<String>) -> AppError {
     AppError::bad_request(code::BAD_PARAMETER, field, message)
 }
 
 /// A finite number from the query, or `default` when absent (`None` default: required).
 fn number(query: Option<&str>, name: &'static str, default: Option<f64>) -> Result<f64, AppError> {
-    match (param(query, name), default) {
+    match (query_param(query, name), default) {
         (Some(v), _) => v
             .parse::<f64>()
             .ok()
@@ -89,18 +83,7 @@ async fn solved(
     query: Option<&str>,
 ) -> Result<(Arc<Displacement>, u64), AppError> {
     let (meta, _) = authorize(st, headers, id, Role::Read).await?;
-    let version = match param(query, "v") {
-        None => meta.version,
-        Some(v) => v.parse::<u64>().ok().filter(|v| *v >= 1).ok_or_else(|| {
-            AppError::bad_request(code::BAD_VERSION, "v", "v must be a version number ≥ 1")
-        })?,
-    };
-    if version > meta.version {
-        return Err(store_error(StoreError::VersionNotFound {
-            version,
-            latest: meta.version,
-        }));
-    }
+    let version = requested_version(&meta, query)?;
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     let region = inputs
         .region(rid)
@@ -248,7 +231,7 @@ async fn heightmap_in(
     let side = (img.width.max(img.height) - 1) as f64;
     let fit = (max[0] - min[0]).max(max[1] - min[1]) / side;
     map.spacing_m = number(q, "spacing_m", Some(fit))?;
-    let target = match param(q, "target") {
+    let target = match query_param(q, "target") {
         None => [0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1])],
         Some(t) => {
             let xz: Vec<f64> = t.split(',').filter_map(|v| v.trim().parse().ok()).collect();
