@@ -108,6 +108,92 @@ impl Canvas {
         });
     }
 
+    /// Point gradient constraint: the heights' slope at `center` becomes `slope_deg` rising
+    /// toward `direction_deg`. Soft and added: the target gradient gains the discrete gradient
+    /// of the potential `φ = w(r)·(tan(slope)·(p − c)·u − (h₀(p) − h₀(c)))` (`w` the C² falloff
+    /// over `radius`, `u` the direction, `h₀` the procedural heights), so the field stays
+    /// curl-free and is reconstructed exactly where nothing else conflicts; at the centre
+    /// (`w = 1`, `∇w = 0`) the heights' gradient is `tan(slope)·u`.
+    pub fn slope_point(
+        &mut self,
+        center: [f64; 2],
+        radius: f64,
+        slope_deg: f64,
+        direction_deg: f64,
+    ) {
+        let tan = slope_deg.to_radians().tan();
+        let (sin, cos) = direction_deg.to_radians().sin_cos();
+        let n = self.grid.n;
+        let (fi, fj) = self.grid.grid_coords(center[0], center[1]);
+        let near = |f: f64| (f.round().max(0.0) as usize).min(n - 1);
+        let h_c = f64::from(self.base[near(fj) * n + near(fi)]);
+        let phi: Vec<f64> = (0..n * n)
+            .map(|v| {
+                let p = self.grid.position(v % n, v / n);
+                let w = falloff(dist(p, center), radius);
+                if w == 0.0 {
+                    return 0.0;
+                }
+                let plane = tan * ((p[0] - center[0]) * cos + (p[1] - center[1]) * sin);
+                w * (plane - (f64::from(self.base[v]) - h_c))
+            })
+            .collect();
+        self.add_potential(&phi);
+    }
+
+    /// Curve gradient constraint with a slope profile on each side: out to `width` the heights
+    /// fall away from the polyline at `left_deg` on its left and `right_deg` on its right,
+    /// keeping the procedural heights along the curve itself. Soft and added, as
+    /// [`Canvas::slope_point`]: the target gradient gains the discrete gradient of the potential
+    /// `φ = W(dist)·(−tan(slope_side)·dist − (h₀(p) − h₀(q)))` (`q` the closest point of the
+    /// curve, `W` 1 out to two thirds of the width, then a smoothstep down to 0), which is
+    /// curl-free, so inside the band the heights are `h₀(q) − tan·dist`.
+    pub fn slope_curve(&mut self, pts: &[[f64; 2]], left_deg: f64, right_deg: f64, width: f64) {
+        let (tl, tr) = (left_deg.to_radians().tan(), right_deg.to_radians().tan());
+        let n = self.grid.n;
+        let phi: Vec<f64> = (0..n * n)
+            .map(|v| {
+                let p = self.grid.position(v % n, v / n);
+                let f = frame(pts, p);
+                if f.dist >= width {
+                    return 0.0;
+                }
+                let x = ((f.dist - 2.0 * width / 3.0) / (width / 3.0)).clamp(0.0, 1.0);
+                let w = 1.0 - x * x * (3.0 - 2.0 * x);
+                let tan = if f.side > 0.0 { tr } else { tl };
+                let q = [p[0] - f.dist * f.away[0], p[1] - f.dist * f.away[1]];
+                w * (-tan * f.dist - (f64::from(self.base[v]) - self.base_at(q)))
+            })
+            .collect();
+        self.add_potential(&phi);
+    }
+
+    /// Adds the discrete gradient of the per-sample potential `phi` to the target gradient.
+    fn add_potential(&mut self, phi: &[f64]) {
+        let inv = 1.0 / self.grid.spacing_m;
+        self.edges(|c, is_x, e, _, (a, b)| {
+            let step = (phi[b] - phi[a]) * inv;
+            if step != 0.0 {
+                let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
+                *g = (f64::from(*g) + step) as f32;
+            }
+        });
+    }
+
+    /// The procedural height at world point `q`, bilinear between samples (clamped to the grid).
+    fn base_at(&self, q: [f64; 2]) -> f64 {
+        let n = self.grid.n;
+        let (fi, fj) = self.grid.grid_coords(q[0], q[1]);
+        let top = (n - 1) as f64;
+        let (fi, fj) = (fi.clamp(0.0, top), fj.clamp(0.0, top));
+        let (i, j) = ((fi as usize).min(n - 2), (fj as usize).min(n - 2));
+        let (tx, tz) = (fi - i as f64, fj - j as f64);
+        let h = |i: usize, j: usize| f64::from(self.base[j * n + i]);
+        let near = h(i, j) * (1.0 - tx) + h(i + 1, j) * tx;
+        let far = h(i, j + 1) * (1.0 - tx) + h(i + 1, j + 1) * tx;
+        near * (1.0 - tz) + far * tz
+    }
+
     /// Cliff (Fig. 4): the top edge fixed at `top` along the polyline (hard), and on the right
     /// of the stroke (the downhill side), out to `width`, a target slope of `slope_deg` falling
     /// away from the top edge (soft, replacing). The foot lies near `top − width·tan(slope)`.

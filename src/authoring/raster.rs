@@ -47,6 +47,22 @@ pub fn polyline_distance(pts: &[[f64; 2]], p: [f64; 2]) -> (f64, usize, f64) {
     best
 }
 
+/// Whether `p` lies inside the polygon `poly` (even-odd rule; closed implicitly).
+pub fn inside_polygon(poly: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let mut inside = false;
+    let mut j = poly.len().saturating_sub(1);
+    for (i, a) in poly.iter().enumerate() {
+        let b = poly[j];
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
+        {
+            inside = !inside;
+        }
+        j = i;
+    }
+    inside
+}
+
 pub(super) fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
 }
@@ -177,6 +193,20 @@ impl Canvas {
             };
             self.fix(v, e);
         }
+    }
+
+    /// Hard elevation constraint over a painted region: every sample inside the polygon `poly`
+    /// (even-odd rule) or within `radius` of its outline takes `elevation`.
+    pub fn elevation_region(&mut self, poly: &[[f64; 2]], elevation: f64, radius: f64) {
+        let n = self.grid.n;
+        for v in 0..n * n {
+            if inside_polygon(poly, self.grid.position(v % n, v / n)) {
+                self.fix(v, elevation);
+            }
+        }
+        let mut ring = poly.to_vec();
+        ring.push(poly[0]);
+        self.elevation(&ring, &[elevation], radius);
     }
 
     /// Freeze brush: fixes the samples within `radius` of `center` at the displacement `current`

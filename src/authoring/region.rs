@@ -130,16 +130,16 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 elevations_m,
                 radius_m,
             } => {
-                let pts = match shape {
-                    Shape::Point(p) => vec![*p],
-                    Shape::Polyline(pts) => pts.clone(),
-                };
                 let es = match (elevation_m, elevations_m) {
                     (_, Some(es)) => es.clone(),
                     (Some(e), None) => vec![*e],
                     (None, None) => vec![0.0],
                 };
-                canvas.elevation(&pts, &es, *radius_m);
+                match shape {
+                    Shape::Point(p) => canvas.elevation(&[*p], &es, *radius_m),
+                    Shape::Polyline(pts) => canvas.elevation(pts, &es, *radius_m),
+                    Shape::Region(poly) => canvas.elevation_region(poly, es[0], *radius_m),
+                }
             }
             Op::Freeze { center, radius_m } => {
                 if !solved {
@@ -180,6 +180,18 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                     [[k * m[0][0], k * m[0][1]], [k * m[1][0], k * m[1][1]]],
                 )
             }
+            Op::SlopePoint {
+                center,
+                radius_m,
+                slope_deg,
+                direction_deg,
+            } => canvas.slope_point(*center, *radius_m, *slope_deg, *direction_deg),
+            Op::SlopeCurve {
+                points,
+                slope_left_deg,
+                slope_right_deg,
+                width_m,
+            } => canvas.slope_curve(points, *slope_left_deg, *slope_right_deg, *width_m),
             Op::Cliff {
                 points,
                 top_elevation_m,

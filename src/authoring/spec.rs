@@ -38,6 +38,9 @@ pub enum Shape {
     Point([f64; 2]),
     /// A polyline of points `[x, z]`, metres.
     Polyline(Vec<[f64; 2]>),
+    /// A painted region: the polygon of points `[x, z]` (metres, at least 3, closed
+    /// implicitly); every sample inside it, or within `radius_m` of its outline, is constrained.
+    Region(Vec<[f64; 2]>),
 }
 
 /// One tool operation.
@@ -109,6 +112,34 @@ pub enum Op {
         /// Direction `θ` of the modulation, degrees from +x toward +z.
         #[serde(default)]
         angle_deg: f64,
+    },
+
+    /// Point gradient constraint (§4.1): the slope at `center` becomes `slope_deg` rising toward
+    /// `direction_deg` (degrees from +x toward +z), faded out over `radius_m` by a curl-free
+    /// field (soft, added; `Canvas::slope_point`).
+    SlopePoint {
+        /// Centre `[x, z]`, metres.
+        center: [f64; 2],
+        /// Reach, metres.
+        radius_m: f64,
+        /// Slope, degrees (`−89..=89`; negative falls toward the direction).
+        slope_deg: f64,
+        /// Direction of the rise, degrees from +x toward +z.
+        direction_deg: f64,
+    },
+    /// Curve gradient constraint with a slope profile on each side (§4.1): out to `width_m`
+    /// from the polyline the heights fall away from it at `slope_left_deg` on its left and
+    /// `slope_right_deg` on its right (negative values rise), blended back over the last third
+    /// of the width by a curl-free field (soft, added; `Canvas::slope_curve`).
+    SlopeCurve {
+        /// The curve, `[x, z]` metres.
+        points: Vec<[f64; 2]>,
+        /// Slope falling away on the left of the stroke, degrees (`−89..=89`).
+        slope_left_deg: f64,
+        /// Slope falling away on the right of the stroke, degrees (`−89..=89`).
+        slope_right_deg: f64,
+        /// Reach on each side, metres.
+        width_m: f64,
     },
 
     /// Cliff (Fig. 4): the top edge at `top_elevation_m` along the polyline (hard) and, on the
@@ -476,6 +507,22 @@ impl RegionSpec {
                             polyline(at("/shape/polyline"), pts)?;
                             pts.len()
                         }
+                        Shape::Region(pts) => {
+                            polyline(at("/shape/region"), pts)?;
+                            if pts.len() < 3 {
+                                return Err(err(
+                                    at("/shape/region"),
+                                    "a painted region needs at least 3 points",
+                                ));
+                            }
+                            if elevations_m.is_some() {
+                                return Err(err(
+                                    at("/elevations_m"),
+                                    "a painted region takes one elevation_m",
+                                ));
+                            }
+                            1
+                        }
                     };
                     match (elevation_m, elevations_m) {
                         (Some(e), None) => elev(at("/elevation_m"), *e)?,
@@ -537,6 +584,28 @@ impl RegionSpec {
                     finite_in(at("/wavelength_m"), *wavelength_m, 1.0e-3, 1.0e6)?;
                     finite_in(at("/anisotropy"), *anisotropy, 0.0, 1.0)?;
                     finite_in(at("/angle_deg"), *angle_deg, -360.0, 360.0)?;
+                }
+                Op::SlopePoint {
+                    center,
+                    radius_m,
+                    slope_deg,
+                    direction_deg,
+                } => {
+                    pos(at("/center"), *center)?;
+                    radius(at("/radius_m"), *radius_m)?;
+                    finite_in(at("/slope_deg"), *slope_deg, -89.0, 89.0)?;
+                    finite_in(at("/direction_deg"), *direction_deg, -360.0, 360.0)?;
+                }
+                Op::SlopeCurve {
+                    points,
+                    slope_left_deg,
+                    slope_right_deg,
+                    width_m,
+                } => {
+                    polyline(at("/points"), points)?;
+                    finite_in(at("/slope_left_deg"), *slope_left_deg, -89.0, 89.0)?;
+                    finite_in(at("/slope_right_deg"), *slope_right_deg, -89.0, 89.0)?;
+                    finite_in(at("/width_m"), *width_m, 1.0e-3, 1.0e6)?;
                 }
                 Op::Cliff {
                     points,

@@ -420,3 +420,115 @@ fn erosion_keeps_the_constraints_and_wears_the_peak_down() {
     );
     assert!(top1 < top0 - 0.5, "peak {top0:.2} → {top1:.2}");
 }
+
+#[test]
+fn a_painted_region_holds_its_elevation_inside_and_nowhere_else() {
+    let e = ground(1064.0, 2064.0) + 12.0;
+    let poly = [
+        [1040.0, 2040.0],
+        [1090.0, 2045.0],
+        [1080.0, 2090.0],
+        [1045.0, 2080.0],
+    ];
+    let r = solve(
+        json!([{"op": "elevation", "shape": {"region": poly}, "elevation_m": e,
+                          "radius_m": 0}]),
+    );
+    let n = r.grid.n;
+    let (mut inside, mut outside_moved) = (0, 0);
+    for j in 0..n {
+        for i in 0..n {
+            let p = r.grid.position(i, j);
+            if super::raster::inside_polygon(&poly, p) {
+                inside += 1;
+                assert!((height(&r, i, j) - e).abs() < 1e-3, "inside at {p:?}");
+            } else if (height(&r, i, j) - e).abs() < 1e-3 && !r.fixed[j * n + i] {
+                outside_moved += 1;
+            }
+        }
+    }
+    assert!(inside > 1500, "{inside} samples painted");
+    assert!(
+        outside_moved < inside / 20,
+        "{outside_moved} free samples sit at the elevation"
+    );
+    // Refused: fewer than three points, or one elevation per point.
+    let bad = |ops: serde_json::Value| {
+        super::spec::RegionSpec::from_element(
+            &serde_json::from_value(json!({"id": "r",
+                "bbox": {"min": [1000, 2000], "max": [1128, 2128]}, "ops": ops}))
+            .expect("element"),
+        )
+        .expect_err("refused")
+        .pointer
+    };
+    assert_eq!(
+        bad(
+            json!([{"op": "elevation", "shape": {"region": [[1010, 2010], [1020, 2010]]},
+                    "elevation_m": 1}])
+        ),
+        "/ops/0/shape/region"
+    );
+    assert_eq!(
+        bad(json!([{"op": "elevation", "shape": {"region": poly}, "elevations_m": [1, 2, 3, 4]}])),
+        "/ops/0/elevations_m"
+    );
+}
+
+/// Mean slope (degrees, positive rising) from `(i, j)` over `k` samples along `(di, dj)`.
+fn slope_along(r: &Displacement, i: usize, j: usize, di: i64, dj: i64, k: i64) -> f64 {
+    let (a, b) = (
+        height(r, i, j),
+        height(
+            r,
+            (i as i64 + di * k) as usize,
+            (j as i64 + dj * k) as usize,
+        ),
+    );
+    let run = (k as f64) * r.grid.spacing_m * ((di * di + dj * dj) as f64).sqrt();
+    ((b - a) / run).atan().to_degrees()
+}
+
+#[test]
+fn a_curve_gradient_constraint_gives_each_side_its_slope() {
+    // The stroke heads east: its left is north (−z), its right south (+z).
+    let r = solve(
+        json!([{"op": "slope_curve", "points": [[1010, 2064], [1118, 2064]],
+                          "slope_left_deg": 10, "slope_right_deg": 35, "width_m": 24}]),
+    );
+    let flat = solve(json!([]));
+    for x in [1040.0, 1064.0, 1090.0] {
+        let (i, j) = sample_at(&r, x, 2064.0);
+        // Falling away from the curve: a negative slope going outward, over the inner part of
+        // the band where the constraint has full weight.
+        let right = -slope_along(&r, i, j + 2, 0, 1, 10);
+        let left = -slope_along(&r, i, j - 2, 0, -1, 10);
+        let right0 = -slope_along(&flat, i, j + 2, 0, 1, 10);
+        println!(
+            "slope_curve at x = {x}: left {left:.1}°, right {right:.1}° (unedited {right0:.1}°)"
+        );
+        assert!(
+            (right - 35.0).abs() < 3.0,
+            "right side {right:.1}° at x = {x}"
+        );
+        assert!((left - 10.0).abs() < 3.0, "left side {left:.1}° at x = {x}");
+    }
+}
+
+#[test]
+fn a_point_gradient_constraint_sets_the_slope_and_direction_at_its_centre() {
+    // 25° rising toward +z (direction 90°).
+    let r = solve(
+        json!([{"op": "slope_point", "center": [1064, 2064], "radius_m": 16,
+                          "slope_deg": 25, "direction_deg": 90}]),
+    );
+    let (i, j) = sample_at(&r, 1064.0, 2064.0);
+    let along = slope_along(&r, i, j - 2, 0, 1, 4);
+    let across = slope_along(&r, i - 2, j, 1, 0, 4);
+    println!("slope_point: {along:.1}° along +z, {across:.1}° across");
+    assert!(
+        (along - 25.0).abs() < 5.0,
+        "{along:.1}° along the direction"
+    );
+    assert!(across.abs() < 8.0, "{across:.1}° across it");
+}
