@@ -189,7 +189,7 @@ async fn columns(
             Ok(n) if (1..=MAX_COLUMN_SIZE).contains(&n) => n,
             _ => {
                 return Err(AppError::bad_request(
-                    code::BAD_COORDINATE,
+                    code::BAD_PARAMETER,
                     "size",
                     format!(
                         "size must be an integer in 1..={MAX_COLUMN_SIZE}, got {:?}",
@@ -216,15 +216,16 @@ async fn columns(
         None => match strata {
             [one] => one,
             [] => {
-                return Err(AppError::bad_request(
+                return Err(AppError::new(
+                    StatusCode::NOT_FOUND,
                     code::NOT_FOUND,
-                    "strata",
                     format!("world {id} has no strata element at version {version}"),
-                ))
+                )
+                .with_field("strata"))
             }
             _ => {
                 return Err(AppError::bad_request(
-                    code::BAD_COORDINATE,
+                    code::BAD_PARAMETER,
                     "strata",
                     "the world has several strata elements: name one with ?strata=ID",
                 ))
