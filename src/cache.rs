@@ -47,7 +47,7 @@ pub const DEFAULT_BUDGET_BYTES: usize = 256 << 20;
 /// Bytes counted per memory entry besides the tile itself (map slot, LRU node, `Arc` header).
 pub const ENTRY_OVERHEAD_BYTES: usize = 128;
 /// Version of the disk file layout.
-pub const DISK_FORMAT_VERSION: u32 = 1;
+pub const DISK_FORMAT_VERSION: u32 = 2;
 /// Magic at the start of a disk cache file.
 pub const DISK_MAGIC: [u8; 4] = *b"STRC";
 
@@ -506,8 +506,9 @@ impl DiskCache {
 /// Header: magic, format version, hash, lod, x, z, spacing, biome count, skirt depth.
 const HEADER_LEN: usize = 4 + 4 + 32 + 4 + 8 + 8 + 4 + 4 + 4;
 
-/// The disk form of a tile: the header, then heights, normals (x, y, z), weights, materials and
-/// water depth, all little-endian, then blake3 of everything before it.
+/// The disk form of a tile: the header, then heights, normals (x, y, z), weights, materials,
+/// water depth, a byte saying whether the volume-override marks follow and the marks (one byte
+/// per vertex), all little-endian, then blake3 of everything before it.
 pub fn encode_tile(hash: &InputHash, t: &Tile) -> Vec<u8> {
     let n = t.heights.len();
     let mut out = Vec::with_capacity(HEADER_LEN + n * (4 + 12 + 1 + 4) + t.weights.len() * 4 + 32);
@@ -533,6 +534,8 @@ pub fn encode_tile(hash: &InputHash, t: &Tile) -> Vec<u8> {
     for v in &t.water_depth {
         out.extend_from_slice(&v.to_le_bytes());
     }
+    out.push(u8::from(!t.volume_override.is_empty()));
+    out.extend_from_slice(&t.volume_override);
     let sum = blake3::hash(&out);
     out.extend_from_slice(sum.as_bytes());
     out
@@ -584,7 +587,8 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
         return Err(format!("lod {lod} or biome count {k} out of range"));
     }
     let n = TILE_VERTEX_COUNT;
-    if r.bytes.len() != n * (4 + 12 + 4 * k + 1 + 4) {
+    let fixed = n * (4 + 12 + 4 * k + 1 + 4) + 1;
+    if r.bytes.len() != fixed && r.bytes.len() != fixed + n {
         return Err(format!("{} payload bytes for {k} biomes", r.bytes.len()));
     }
     let heights = r.f32s(n);
@@ -597,6 +601,12 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
     let materials = r.bytes[..n].to_vec();
     r.bytes = &r.bytes[n..];
     let water_depth = r.f32s(n);
+    let marked = r.take::<1>()[0] == 1;
+    let volume_override = if marked {
+        r.bytes[..n].to_vec()
+    } else {
+        Vec::new()
+    };
     Ok(Tile {
         key: TileKey { lod, x, z },
         spacing_m,
@@ -607,6 +617,7 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
         materials,
         water_depth,
         skirt_depth_m,
+        volume_override,
     })
 }
 

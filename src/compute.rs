@@ -170,6 +170,7 @@ impl Compute {
             for (edge, strip) in &strips {
                 apply_snap(&mut t, *edge, &strip.heights);
             }
+            edits.mark(&mut t);
             t
         };
         let started = std::time::Instant::now();

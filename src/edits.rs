@@ -3,7 +3,8 @@
 //! of the `strata` elements it meets (issue 6, the column lowered to the cave's floor where a
 //! cave reaches the ground; [`crate::subsurface::world`]). Both are pure functions of the world
 //! position of a lattice sample, so tiles that share an edge agree on it bit for bit and seam
-//! strips of the coarser LOD get the same edits.
+//! strips of the coarser LOD get the same edits. A finished tile then marks the vertices the
+//! volume regions it meets override (issue 5, [`TileEdits::mark`]).
 //!
 //! Pure: no tokio, axum or wgpu.
 
@@ -13,6 +14,7 @@ use crate::subsurface::Geology;
 use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
 use crate::terrain::tile::{field, finish};
 use crate::terrain::{Tile, TileKey, WorldPlan};
+use crate::volume::element::VolumeSpec;
 use std::sync::Arc;
 
 /// What a tile applies on top of the procedural field.
@@ -22,6 +24,8 @@ pub struct TileEdits {
     pub displacements: Vec<Arc<Displacement>>,
     /// `strata` elements meeting the tile, in document order.
     pub strata: Vec<Arc<Geology>>,
+    /// Volume regions meeting the tile: their boxes mark the vertices they override.
+    pub volumes: Vec<Arc<VolumeSpec>>,
 }
 
 impl TileEdits {
@@ -43,6 +47,40 @@ impl TileEdits {
             breach_lattice(&self.strata, spacing_m, gx0, gz0, w, h, heights);
         }
     }
+
+    /// Marks the vertices of a finished tile whose ground lies inside a volume region's box
+    /// (`x`, `z` within its bbox, the height within its `y_m`): volume chunks give the surface
+    /// there. Leaves [`Tile::volume_override`] empty when no vertex is marked.
+    pub fn mark(&self, tile: &mut Tile) {
+        if self.volumes.is_empty() {
+            return;
+        }
+        let s = f64::from(tile.spacing_m);
+        let (x0, z0) = (tile.origin_x_m(), tile.origin_z_m());
+        let marks: Vec<u8> = tile
+            .heights
+            .iter()
+            .enumerate()
+            .map(|(v, &h)| {
+                let (x, z) = (
+                    x0 + (v % TILE_VERTS) as f64 * s,
+                    z0 + (v / TILE_VERTS) as f64 * s,
+                );
+                let inside = self.volumes.iter().any(|b| {
+                    x >= b.min[0]
+                        && x <= b.max[0]
+                        && z >= b.min[1]
+                        && z <= b.max[1]
+                        && h >= b.y_m[0]
+                        && h <= b.y_m[1]
+                });
+                u8::from(inside)
+            })
+            .collect();
+        if marks.contains(&1) {
+            tile.volume_override = marks;
+        }
+    }
 }
 
 /// Synthesises tile `key` of the world `plan` with `edits` (the CPU path of the tile routes, for
@@ -59,5 +97,7 @@ pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
         n,
         &mut f.heights,
     );
-    finish(plan, key, &f)
+    let mut t = finish(plan, key, &f);
+    edits.mark(&mut t);
+    t
 }

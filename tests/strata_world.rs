@@ -61,6 +61,7 @@ impl World {
             edits: TileEdits {
                 displacements: Vec::new(),
                 strata: if strata { vec![geology()] } else { Vec::new() },
+                volumes: Vec::new(),
             },
             tiles: HashMap::new(),
         }

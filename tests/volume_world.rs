@@ -149,3 +149,61 @@ fn volume_elements_are_validated_with_the_field_named() {
         "/volumes/0/spacing_m"
     );
 }
+
+#[test]
+fn height_tiles_mark_the_vertices_a_volume_region_overrides() {
+    let plan = plan();
+    let ground = ground_at(&plan, 32, 24);
+    let spec = Arc::new(VolumeSpec::from_element(&element(arch_element(ground))).expect("valid"));
+    let edits = TileEdits {
+        volumes: vec![spec.clone()],
+        ..TileEdits::default()
+    };
+    let key = TileKey { lod: 0, x: 0, z: 0 };
+    let tile = synthesize(&plan, key, &edits);
+    let bare = synthesize(&plan, key, &TileEdits::default());
+    assert!(bare.volume_override.is_empty(), "no region, no marks");
+    assert_eq!(tile.heights, bare.heights, "marks change no height");
+    let mut marked = 0;
+    for (v, &m) in tile.volume_override.iter().enumerate() {
+        let (x, z) = ((v % 65) as f64, (v / 65) as f64);
+        let h = tile.heights[v];
+        let inside = (0.0..=64.0).contains(&x)
+            && (0.0..=48.0).contains(&z)
+            && (spec.y_m[0]..=spec.y_m[1]).contains(&h);
+        assert_eq!(m == 1, inside, "vertex ({x}, {z}) at {h} m");
+        marked += usize::from(m);
+    }
+    assert_eq!(
+        marked,
+        65 * 49,
+        "the box covers 65 × 49 vertices of this tile"
+    );
+    // The neighbour east shares the edge x = 64 and marks it the same.
+    let east = synthesize(&plan, TileKey { lod: 0, x: 1, z: 0 }, &edits);
+    for j in 0..65 {
+        assert_eq!(
+            tile.volume_override[j * 65 + 64],
+            east.volume_override[j * 65]
+        );
+    }
+    // The wire formats and the disk cache carry the marks.
+    let json: Value =
+        serde_json::from_slice(&strata::encode::json::encode(&plan, &tile)).expect("json");
+    assert_eq!(
+        json["volume_override"].as_array().map(Vec::len),
+        Some(marked)
+    );
+    let bin = strata::encode::bin::encode(&plan, &tile);
+    let at = |o: usize| u32::from_le_bytes(bin[o..o + 4].try_into().expect("u32")) as usize;
+    let off = at(strata::encode::bin::offset::VOLUME_OVERRIDE);
+    assert_eq!(&bin[off..off + 65 * 65], tile.volume_override.as_slice());
+    assert_eq!(at(strata::encode::bin::offset::TOTAL_LEN), bin.len());
+    let hash = [7u8; 32];
+    let disk = strata::cache::decode_tile(&strata::cache::encode_tile(&hash, &tile), &hash)
+        .expect("decoded");
+    assert_eq!(disk, tile);
+    let plain = strata::cache::decode_tile(&strata::cache::encode_tile(&hash, &bare), &hash)
+        .expect("decoded");
+    assert_eq!(plain, bare);
+}

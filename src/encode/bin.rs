@@ -79,7 +79,9 @@ pub mod offset {
     pub const WATER_DEPTH: usize = 96;
     /// `u32` total length of the file in bytes.
     pub const TOTAL_LEN: usize = 100;
-    // 104..128: reserved, zero.
+    /// `u32` offset of the volume-override section (`u8` per vertex), 0 when absent.
+    pub const VOLUME_OVERRIDE: usize = 104;
+    // 108..128: reserved, zero.
 }
 
 fn pad4(n: usize) -> usize {
@@ -144,7 +146,9 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
     let weights_off = normals_off + 12 * n;
     let materials_off = weights_off + pad4(n * k);
     let water_off = materials_off + pad4(n);
-    let total = water_off + 4 * n;
+    let marked = !tile.volume_override.is_empty();
+    let override_off = if marked { water_off + 4 * n } else { 0 };
+    let total = water_off + 4 * n + if marked { pad4(n) } else { 0 };
 
     let mut out = vec![0u8; total];
     let put = |out: &mut Vec<u8>, at: usize, bytes: &[u8]| {
@@ -194,6 +198,7 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
         (offset::MATERIALS, materials_off),
         (offset::WATER_DEPTH, water_off),
         (offset::TOTAL_LEN, total),
+        (offset::VOLUME_OVERRIDE, override_off),
     ] {
         put(&mut out, field, &(value as u32).to_le_bytes());
     }
@@ -216,6 +221,10 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
     out[materials_off..materials_off + m].copy_from_slice(&tile.materials[..m]);
     for (v, d) in tile.water_depth.iter().take(n).enumerate() {
         put(&mut out, water_off + 4 * v, &d.to_le_bytes());
+    }
+    if marked {
+        let m = tile.volume_override.len().min(n);
+        out[override_off..override_off + m].copy_from_slice(&tile.volume_override[..m]);
     }
     out
 }

@@ -68,6 +68,9 @@ struct TileJson<'a> {
     materials: &'a [u8],
     /// Water depth above the ground, metres (0 on land).
     water_depth: &'a [f32],
+    /// Vertices a volume region overrides (indices), when any.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    volume_override: Vec<u32>,
 }
 
 /// Encodes a tile as `strata.tile.v1` JSON.
@@ -92,6 +95,13 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
         normals: &tile.normals,
         materials: &tile.materials,
         water_depth: &tile.water_depth,
+        volume_override: tile
+            .volume_override
+            .iter()
+            .enumerate()
+            .filter(|(_, &m)| m != 0)
+            .map(|(v, _)| v as u32)
+            .collect(),
     };
     // Serialising plain structs of numbers and strings into a Vec cannot fail.
     serde_json::to_vec(&doc).unwrap_or_default()

@@ -172,6 +172,11 @@ async fn create(
         .iter()
         .map(|s| s.geology(plan.seed))
         .collect();
+    edits.volumes = inputs
+        .volumes_meeting([f64::MIN; 3], [f64::MAX; 3])
+        .into_iter()
+        .map(|v| v.spec)
+        .collect();
     let job = match st
         .jobs
         .submit_with(&meta.id, version, plan, edits, spec, shard)

@@ -256,6 +256,17 @@ impl AppState {
         let hash = inputs.tile(plan.seed, key, seams);
         let regions = inputs.regions_touching(key);
         let strata = inputs.strata_touching(plan.seed, key);
+        // The reach, not the footprint: a box touching the tile's edge marks the edge's
+        // vertices in both neighbours, and the reach's elements are in the tile's input hash.
+        let foot = crate::scene::tile_reach(inputs.world(), key);
+        let volumes = inputs
+            .volumes_meeting(
+                [foot.min[0], f64::MIN, foot.min[1]],
+                [foot.max[0], f64::MAX, foot.max[1]],
+            )
+            .into_iter()
+            .map(|v| v.spec)
+            .collect();
         let (cache, solved) = (self.regions.clone(), plan.clone());
         let edits = async move {
             let mut displacements = Vec::new();
@@ -267,6 +278,7 @@ impl AppState {
             crate::edits::TileEdits {
                 displacements,
                 strata,
+                volumes,
             }
         };
         self.compute

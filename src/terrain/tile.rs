@@ -134,6 +134,9 @@ pub struct Tile {
     pub water_depth: Vec<f32>,
     /// Depth of the skirts hanging from the four edges, metres.
     pub skirt_depth_m: f32,
+    /// 1 where a volume region's box holds the vertex's ground, so volume chunks, not this
+    /// heightfield, give the surface there (issue 5); empty when no vertex is (`crate::edits`).
+    pub volume_override: Vec<u8>,
 }
 
 impl Tile {
@@ -215,6 +218,7 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         materials,
         water_depth,
         skirt_depth_m,
+        volume_override: Vec::new(),
     }
 }
 
