@@ -136,6 +136,21 @@ fn cave_columns(g: &Geology, cell: (i32, i32)) -> Option<BTreeMap<(i64, i64), (f
     (!out.is_empty()).then_some(out)
 }
 
+/// A column near the origin where a cave reaches the ground (its carved interval spans 0), with
+/// the interval's floor `a` (metres below the ground).
+fn breach_column(g: &Geology) -> ((i64, i64), f32) {
+    for cz in -4..4 {
+        for cx in -4..4 {
+            if let Some(cols) = cave_columns(g, (cx, cz)) {
+                if let Some((&c, &(a, _))) = cols.iter().find(|(_, s)| s.0 < -1.0 && s.1 > 0.0) {
+                    return (c, a);
+                }
+            }
+        }
+    }
+    panic!("no cave reaches the ground near the origin");
+}
+
 /// Merged surface of several chunks: vertices by global cell, quads as global-cell corners.
 #[derive(Default)]
 struct Union {
@@ -294,18 +309,7 @@ fn a_cave_reaching_the_ground_opens_the_height_tiles() {
     let mut with = World::new(true);
     let mut without = World::new(false);
     // A breaching column of a cave near the origin.
-    let mut breach = None;
-    'search: for cz in -4..4 {
-        for cx in -4..4 {
-            if let Some(cols) = cave_columns(&g, (cx, cz)) {
-                if let Some((&c, &(a, _))) = cols.iter().find(|(_, s)| s.0 < -1.0 && s.1 > 0.0) {
-                    breach = Some((c, a));
-                    break 'search;
-                }
-            }
-        }
-    }
-    let ((gx, gz), a) = breach.expect("a cave reaching the ground");
+    let ((gx, gz), a) = breach_column(&g);
     let key = TileKey {
         lod: 0,
         x: gx.div_euclid(64),
@@ -656,18 +660,7 @@ async fn editing_the_strata_element_changes_the_tiles_it_opens() {
     let id = created["id"].as_str().expect("id").to_string();
     // A column where a cave of this element reaches the ground.
     let g = geology();
-    let mut breach = None;
-    'search: for cz in -4..4 {
-        for cx in -4..4 {
-            if let Some(cols) = cave_columns(&g, (cx, cz)) {
-                if let Some((&c, &(a, _))) = cols.iter().find(|(_, s)| s.0 < -1.0 && s.1 > 0.0) {
-                    breach = Some((c, a));
-                    break 'search;
-                }
-            }
-        }
-    }
-    let ((gx, gz), a) = breach.expect("a cave reaching the ground");
+    let ((gx, gz), a) = breach_column(&g);
     let (tx, tz) = (gx.div_euclid(64), gz.div_euclid(64));
     let v = (gz.rem_euclid(64) * 65 + gx.rem_euclid(64)) as usize;
     let height = |doc: &Value| doc["heights"][v].as_f64().expect("height");

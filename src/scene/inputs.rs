@@ -267,15 +267,7 @@ impl SceneInputs {
     pub fn volumes_meeting(&self, lo: [f64; 3], hi: [f64; 3]) -> Vec<VolumeInput> {
         self.volumes
             .iter()
-            .filter(|v| {
-                let s = &v.spec;
-                lo[0] < s.max[0]
-                    && hi[0] > s.min[0]
-                    && lo[2] < s.max[1]
-                    && hi[2] > s.min[1]
-                    && lo[1] < f64::from(s.y_m[1])
-                    && hi[1] > f64::from(s.y_m[0])
-            })
+            .filter(|v| v.spec.meets(lo, hi))
             .cloned()
             .collect()
     }

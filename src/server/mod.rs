@@ -39,6 +39,7 @@ mod plans;
 pub mod region_io;
 pub mod regions;
 pub mod routes;
+pub mod solved;
 pub mod volumes;
 pub mod worlds;
 

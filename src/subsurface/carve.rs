@@ -21,7 +21,7 @@
 use super::chunk::ElementMemo;
 use super::world::{carved_at, ground_under, in_force, main_material, memos, Geology};
 use crate::volume::chunk::{
-    chunk_sdf, mesh_sdf, ChunkKey, ChunkMesh, Columns, CHUNK_CELLS, CHUNK_SAMPLES, NO_GEOLOGY,
+    chunk_sdf, mesh_sdf, ChunkKey, ChunkMesh, Columns, CHUNK_SAMPLES, NO_GEOLOGY,
 };
 use crate::volume::element::SolvedVolume;
 use crate::volume::mesh::{MeshError, QuadMesh};
@@ -106,7 +106,7 @@ fn blend_volume(v: &SolvedVolume, first: [i64; 3], s: f64, sdf: &mut [f32]) {
     let n = CHUNK_SAMPLES;
     let lo = first.map(|c| c as f64 * s);
     let hi = first.map(|c| (c + n as i64 - 1) as f64 * s);
-    if !v.meets(lo, hi) {
+    if !v.spec.meets(lo, hi) {
         return;
     }
     for k in 0..n {
@@ -172,9 +172,4 @@ fn vertex_material(
         }
     }
     found
-}
-
-/// Chunk side in metres at `spacing_m` (for callers choosing which elements meet a chunk).
-pub fn chunk_side_m(spacing_m: f32) -> f64 {
-    CHUNK_CELLS as f64 * f64::from(spacing_m)
 }

@@ -236,6 +236,18 @@ impl VolumeSpec {
     }
 }
 
+impl VolumeSpec {
+    /// Whether the region's box meets the world-space box `[lo, hi]` (metres, `[x, y, z]`).
+    pub fn meets(&self, lo: [f64; 3], hi: [f64; 3]) -> bool {
+        lo[0] < self.max[0]
+            && hi[0] > self.min[0]
+            && lo[2] < self.max[1]
+            && hi[2] > self.min[1]
+            && lo[1] < f64::from(self.y_m[1])
+            && hi[1] > f64::from(self.y_m[0])
+    }
+}
+
 /// A solved volume region.
 #[derive(Clone, Debug)]
 pub struct SolvedVolume {
@@ -326,17 +338,6 @@ impl SolvedVolume {
         let x = (d / band).min(1.0);
         let w = x * x * (3.0 - 2.0 * x);
         (w * self.surface_at(p) + (1.0 - w) * f64::from(s_h)) as f32
-    }
-
-    /// Whether the box meets the world-space box `[lo, hi]` (metres, `[x, y, z]`).
-    pub fn meets(&self, lo: [f64; 3], hi: [f64; 3]) -> bool {
-        let sp = &self.spec;
-        lo[0] < sp.max[0]
-            && hi[0] > sp.min[0]
-            && lo[2] < sp.max[1]
-            && hi[2] > sp.min[1]
-            && lo[1] < f64::from(sp.y_m[1])
-            && hi[1] > f64::from(sp.y_m[0])
     }
 }
 
