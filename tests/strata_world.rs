@@ -707,3 +707,45 @@ async fn editing_the_strata_element_changes_the_tiles_it_opens() {
     let (_, latest) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), None).await;
     assert_eq!(latest["version"], 2);
 }
+
+/// A column chunk whose ground spans more LOD-0 tiles than a request may read (a world with a
+/// very small `cell_m`) is refused naming `size`, the parameter that sets the span; a smaller
+/// column of the same world is answered.
+#[tokio::test]
+async fn a_column_spanning_too_many_tiles_is_refused_naming_size() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let app = router(dir.path());
+    let config = serde_json::to_value(cave_config()).expect("config");
+    let mut world = serde_json::to_value(WorldParams::default()).expect("world");
+    world["cell_m"] = json!(0.05);
+    world["layout"]["blur_radius_m"] = json!(1.0);
+    let r = send(
+        &app,
+        Method::POST,
+        "/v1/worlds",
+        Some(json!({"seed": SEED, "scene": {"world": world,
+                    "strata": [strata_element(config)]}})),
+    )
+    .await;
+    assert_eq!(r.0, StatusCode::CREATED, "{r:?}");
+    let id = r.1["id"].as_str().expect("id").to_string();
+    // 32 voxels of 1 m over tiles of 64 × 0.05 m: 10 × 10 tiles.
+    let r = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/columns/0/0.json?size=32"),
+        None,
+    )
+    .await;
+    expect_error(&r, "size");
+    assert!(r.1.to_string().contains("at most 64"), "{}", r.1);
+    let (status, doc) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/columns/0/0.json?size=4"),
+        None,
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{doc}");
+    assert_eq!(doc["ground_m"].as_array().expect("ground").len(), 16);
+}

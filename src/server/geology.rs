@@ -11,6 +11,9 @@
 //! Limits: `size` in 1..=[`MAX_COLUMN_SIZE`] (default [`DEFAULT_COLUMN_SIZE`]); at most
 //! [`MAX_QUERY_POINTS`] points per query, spread over at most [`MAX_QUERY_TILES`] LOD-0 tiles.
 //! Errors are 400 JSON naming the field (`x`, `z`, `size`, `strata`, `points`, `points/3/1`…).
+//! Both routes run in the synthesis slots and under the synthesis time limit, like the chunk
+//! routes ([`AppState::limited`]); a column whose ground spans more LOD-0 tiles than
+//! [`MAX_QUERY_TILES`] (a very small `world.cell_m`) is refused naming `size`.
 
 use super::error::{code, truncate, AppError};
 use super::params::parse_coord;
@@ -72,13 +75,16 @@ impl Ground {
         )
     }
 
-    /// Fetches the tiles the points need; `Err(i)` names a point outside the world.
+    /// Fetches the tiles the points need. A point outside the world is an error naming
+    /// `points/i`; more than [`MAX_QUERY_TILES`] tiles is an error naming `field` (the request
+    /// field that set the points' spread).
     async fn load(
         st: &AppState,
         inputs: &SceneInputs,
         plan: &Arc<WorldPlan>,
         points: &[(f64, f64)],
         strata: Vec<Arc<Geology>>,
+        field: &'static str,
     ) -> Result<Ground, AppError> {
         let spacing_m = f64::from(plan.lods[0].spacing_m);
         let max = plan.max_tile_coord(0);
@@ -96,10 +102,14 @@ impl Ground {
         }
         if keys.len() > MAX_QUERY_TILES {
             return Err(AppError::bad_request(
-                code::BAD_BODY,
-                "points",
+                if field == "points" {
+                    code::BAD_BODY
+                } else {
+                    code::BAD_PARAMETER
+                },
+                field,
                 format!(
-                    "the points fall in {} LOD-0 tiles; at most {MAX_QUERY_TILES} per request",
+                    "the request spans {} LOD-0 tiles; at most {MAX_QUERY_TILES} per request",
                     keys.len()
                 ),
             ));
@@ -253,8 +263,19 @@ async fn columns(
             )
         })
         .collect();
-    let ground = Ground::load(&st, &inputs, &plan, &centres, vec![geology.clone()]).await?;
-    let body = tokio::task::spawn_blocking(move || {
+    let state = st.clone();
+    let body = st
+        .limited(async move {
+            let ground = Ground::load(
+                &state,
+                &inputs,
+                &plan,
+                &centres,
+                vec![geology.clone()],
+                "size",
+            )
+            .await?;
+            tokio::task::spawn_blocking(move || {
         let ground_m: Vec<f64> = centres.iter().map(|&(cx, cz)| ground.at(cx, cz)).collect();
         let (xi, zi) = (
             i32::try_from(x).unwrap_or(i32::MAX),
@@ -287,7 +308,9 @@ async fn columns(
         })
     })
     .await
-    .map_err(|e| AppError::internal(format!("column synthesis failed: {e}")))?;
+    .map_err(|e| AppError::internal(format!("column synthesis failed: {e}")))
+        })
+        .await?;
     Ok(json_ok(body, version))
 }
 
@@ -392,8 +415,11 @@ async fn query(
             },
         )
         .collect();
-    let ground = Ground::load(&st, &inputs, &plan, &centres, strata.clone()).await?;
-    let body = tokio::task::spawn_blocking(move || {
+    let state = st.clone();
+    let body = st
+        .limited(async move {
+    let ground = Ground::load(&state, &inputs, &plan, &centres, strata.clone(), "points").await?;
+    tokio::task::spawn_blocking(move || {
         let mut memos = memos(&strata);
         let results: Vec<Value> = points
             .iter()
@@ -432,6 +458,8 @@ async fn query(
         json!({ "version": version, "results": results })
     })
     .await
-    .map_err(|e| AppError::internal(format!("material query failed: {e}")))?;
+    .map_err(|e| AppError::internal(format!("material query failed: {e}")))
+        })
+        .await?;
     Ok(json_ok(body, version))
 }
