@@ -3,10 +3,8 @@
 //! `strata::server::app` with `tower::ServiceExt::oneshot` on a SQLite store in a temporary
 //! directory.
 
-use axum::body::Body;
-use axum::http::{HeaderMap, Method, Request, StatusCode};
+use axum::http::{Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use std::sync::Arc;
 use strata::authoring::exchange::{encode_png16, import_gradient_map, import_png16};
@@ -18,82 +16,12 @@ use strata::store::SqliteStore;
 use strata::terrain::poisson::gradient::extract_samples;
 use strata::terrain::poisson::GridSpec;
 use strata::terrain::WorldPlan;
-use tower::ServiceExt;
+mod common;
+
+use common::oneshot::{send, Reply};
 
 const ADMIN: &str = "server-admin-token-for-tests";
 const SEED: u64 = 42;
-
-struct Reply {
-    status: StatusCode,
-    headers: HeaderMap,
-    body: Vec<u8>,
-}
-
-impl Reply {
-    fn header(&self, name: &str) -> Option<&str> {
-        self.headers.get(name).and_then(|v| v.to_str().ok())
-    }
-
-    fn json(&self) -> Value {
-        serde_json::from_slice(&self.body)
-            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)))
-    }
-
-    fn ok(&self) {
-        assert_eq!(
-            self.status,
-            StatusCode::OK,
-            "{}",
-            String::from_utf8_lossy(&self.body)
-        );
-    }
-
-    /// Asserts a JSON error with this status, code and field.
-    fn error(&self, status: StatusCode, code: &str, field: Option<&str>) {
-        assert_eq!(
-            self.status,
-            status,
-            "{}",
-            String::from_utf8_lossy(&self.body)
-        );
-        let e = &self.json()["error"];
-        assert_eq!(e["code"], code, "{e}");
-        assert_eq!(e["field"].as_str(), field, "{e}");
-    }
-}
-
-async fn send(
-    app: &Router,
-    method: Method,
-    uri: &str,
-    headers: &[(&str, String)],
-    body: Option<Vec<u8>>,
-) -> Reply {
-    let mut req = Request::builder().method(method).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, v.as_str());
-    }
-    let body = body.map(Body::from).unwrap_or_else(Body::empty);
-    let res = app
-        .clone()
-        .oneshot(req.body(body).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let headers = res.headers().clone();
-    let body = res
-        .into_body()
-        .collect()
-        .await
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    Reply {
-        status,
-        headers,
-        body,
-    }
-}
 
 struct World {
     app: Router,
@@ -117,7 +45,7 @@ impl World {
                 ("authorization", format!("Bearer {ADMIN}")),
                 ("content-type", "application/json".into()),
             ],
-            Some(serde_json::to_vec(&body).expect("json")),
+            Some(&serde_json::to_vec(&body).expect("json")),
         )
         .await;
         assert_eq!(r.status, StatusCode::CREATED, "{}", r.json());
@@ -142,7 +70,7 @@ impl World {
             ("authorization", format!("Bearer {}", self.token)),
             ("content-type", content_type.to_string()),
         ];
-        send(&self.app, Method::POST, &uri, &h, Some(body)).await
+        send(&self.app, Method::POST, &uri, &h, Some(&body)).await
     }
 }
 
@@ -235,7 +163,7 @@ async fn a_region_exports_its_heights_and_gradients_as_png16() {
         &w.app,
         Method::GET,
         &format!("/v1/worlds/{}/regions/peak/heightmap.png", w.id),
-        &[],
+        &[] as &[(&str, &str)],
         None,
     )
     .await;

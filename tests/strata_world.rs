@@ -3,10 +3,8 @@
 //! chunk vertices carry the material found there; and the `strata` element, the column and
 //! material-query routes work through the router with errors naming the field.
 
-use axum::body::Body;
-use axum::http::{Method, Request, StatusCode};
+use axum::http::{Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::sync::Arc;
@@ -21,7 +19,8 @@ use strata::volume::chunk::{
     gather_columns, tiles_needed, ChunkKey, ChunkMesh, TileColumns, NO_GEOLOGY,
 };
 use strata::volume::mesh::QuadMesh;
-use tower::ServiceExt;
+
+mod common;
 
 const SEED: u64 = 7;
 
@@ -407,27 +406,22 @@ fn chunk_vertices_carry_the_material_found_there() {
 
 const ADMIN: &str = "server-admin-token-for-strata";
 
+/// Sends a JSON request as the server admin; the reply's status and JSON (null if none).
 async fn send(app: &Router, method: Method, uri: &str, body: Option<Value>) -> (StatusCode, Value) {
-    let patch = uri.ends_with("/edits");
-    let mut req = Request::builder()
-        .method(method)
-        .uri(uri)
-        .header("authorization", format!("Bearer {ADMIN}"));
-    if patch {
-        req = req.header("content-type", "application/json-patch+json");
-    } else if body.is_some() {
-        req = req.header("content-type", "application/json");
+    let content_type = if uri.ends_with("/edits") {
+        "application/json-patch+json"
+    } else {
+        "application/json"
+    };
+    let auth = format!("Bearer {ADMIN}");
+    let mut headers = vec![("authorization", auth.as_str())];
+    if body.is_some() {
+        headers.push(("content-type", content_type));
     }
-    let body = body.map_or_else(Body::empty, |b| Body::from(b.to_string()));
-    let res = app
-        .clone()
-        .oneshot(req.body(body).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let bytes = res.into_body().collect().await.expect("body").to_bytes();
-    let v = serde_json::from_slice(&bytes).unwrap_or(Value::Null);
-    (status, v)
+    let bytes = body.map(|b| b.to_string().into_bytes());
+    let reply = common::oneshot::send(app, method, uri, &headers, bytes.as_deref()).await;
+    let v = serde_json::from_slice(&reply.body).unwrap_or(Value::Null);
+    (reply.status, v)
 }
 
 fn expect_error(reply: &(StatusCode, Value), field: &str) {

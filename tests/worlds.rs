@@ -1,88 +1,20 @@
 //! Worlds, scenes, durable edits, versions and access, driven through `strata::server::app` with
 //! `tower::ServiceExt::oneshot` (no socket) on a SQLite store in a temporary directory.
 
-use axum::body::Body;
-use axum::http::{HeaderMap, Method, Request, StatusCode};
+use axum::http::{Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use std::sync::{Arc, Mutex};
 use strata::compute::Compute;
 use strata::scene::{Dirty, Rect, Scene};
 use strata::server::{app, AppState};
 use strata::store::{SceneStore, SqliteStore};
-use tower::ServiceExt;
+mod common;
+
+use common::oneshot::{send, Reply};
 
 const ADMIN: &str = "server-admin-token-for-tests";
 const PATCH: &str = "application/json-patch+json";
-
-struct Reply {
-    status: StatusCode,
-    headers: HeaderMap,
-    body: Vec<u8>,
-}
-
-impl Reply {
-    fn header(&self, name: &str) -> Option<&str> {
-        self.headers.get(name).and_then(|v| v.to_str().ok())
-    }
-
-    fn json(&self) -> Value {
-        serde_json::from_slice(&self.body)
-            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)))
-    }
-
-    /// Asserts a JSON error with this status, code and (if given) field.
-    fn error(&self, status: StatusCode, code: &str, field: Option<&str>) {
-        assert_eq!(
-            self.status,
-            status,
-            "{}",
-            String::from_utf8_lossy(&self.body)
-        );
-        let e = &self.json()["error"];
-        assert_eq!(e["code"], code, "{e}");
-        if let Some(f) = field {
-            assert_eq!(e["field"], f, "{e}");
-        }
-        assert!(e["message"].as_str().is_some_and(|m| !m.is_empty()));
-    }
-}
-
-async fn send(
-    app: &Router,
-    method: Method,
-    uri: &str,
-    headers: &[(&str, &str)],
-    body: Option<&[u8]>,
-) -> Reply {
-    let mut req = Request::builder().method(method).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, *v);
-    }
-    let body = body
-        .map(|b| Body::from(b.to_vec()))
-        .unwrap_or_else(Body::empty);
-    let res = app
-        .clone()
-        .oneshot(req.body(body).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let headers = res.headers().clone();
-    let body = res
-        .into_body()
-        .collect()
-        .await
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    Reply {
-        status,
-        headers,
-        body,
-    }
-}
 
 fn auth(token: Option<&str>) -> Vec<(&'static str, String)> {
     token
@@ -807,7 +739,7 @@ async fn bad_input_names_the_field() {
                 &app,
                 Method::POST,
                 &uri,
-                &[("authorization", &auth), ("content-type", ct)],
+                &[("authorization", auth.as_str()), ("content-type", ct)],
                 Some(body.as_bytes()),
             )
             .await
@@ -972,7 +904,7 @@ async fn bad_input_names_the_field() {
         &app,
         Method::DELETE,
         &format!("/v1/worlds/{}", w.id),
-        &[],
+        &[] as &[(&str, &str)],
         None,
     )
     .await

@@ -1,6 +1,9 @@
-//! Helpers shared by the integration tests that run the real `strata` binary.
+//! Helpers shared by the integration tests: the real `strata` binary ([`start`]) and requests to
+//! the router in-process ([`oneshot`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
+
+pub mod oneshot;
 
 use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};

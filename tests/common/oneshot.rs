@@ -1,0 +1,95 @@
+//! Requests to `strata::server::app` through `tower::ServiceExt::oneshot` (no socket), shared by
+//! the tests that drive the router in-process.
+
+use axum::body::Body;
+use axum::http::{HeaderMap, Method, Request, StatusCode};
+use axum::Router;
+use http_body_util::BodyExt;
+use serde_json::Value;
+use tower::ServiceExt;
+
+/// A response, body collected.
+pub struct Reply {
+    /// Status code.
+    pub status: StatusCode,
+    /// Headers.
+    pub headers: HeaderMap,
+    /// Body bytes.
+    pub body: Vec<u8>,
+}
+
+impl Reply {
+    /// The header `name` as text, if present and ASCII.
+    pub fn header(&self, name: &str) -> Option<&str> {
+        self.headers.get(name).and_then(|v| v.to_str().ok())
+    }
+
+    /// The body as JSON; panics with the body text if it is not JSON.
+    pub fn json(&self) -> Value {
+        serde_json::from_slice(&self.body)
+            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)))
+    }
+
+    /// Asserts status 200, showing the body if not.
+    pub fn ok(&self) {
+        self.status_is(StatusCode::OK);
+    }
+
+    /// Asserts the status, showing the body if it differs.
+    pub fn status_is(&self, status: StatusCode) {
+        assert_eq!(
+            self.status,
+            status,
+            "{}",
+            String::from_utf8_lossy(&self.body)
+        );
+    }
+
+    /// Asserts a JSON error with this status and code, a non-empty message and, if given, this
+    /// field.
+    pub fn error(&self, status: StatusCode, code: &str, field: Option<&str>) {
+        self.status_is(status);
+        let e = &self.json()["error"];
+        assert_eq!(e["code"], code, "{e}");
+        if let Some(f) = field {
+            assert_eq!(e["field"], f, "{e}");
+        }
+        assert!(e["message"].as_str().is_some_and(|m| !m.is_empty()), "{e}");
+    }
+}
+
+/// Sends one request with these headers and body to `app`.
+pub async fn send<H: AsRef<str>>(
+    app: &Router,
+    method: Method,
+    uri: &str,
+    headers: &[(&str, H)],
+    body: Option<&[u8]>,
+) -> Reply {
+    let mut req = Request::builder().method(method).uri(uri);
+    for (k, v) in headers {
+        req = req.header(*k, v.as_ref());
+    }
+    let body = body
+        .map(|b| Body::from(b.to_vec()))
+        .unwrap_or_else(Body::empty);
+    let res = app
+        .clone()
+        .oneshot(req.body(body).expect("request"))
+        .await
+        .expect("infallible");
+    let status = res.status();
+    let headers = res.headers().clone();
+    let body = res
+        .into_body()
+        .collect()
+        .await
+        .expect("body")
+        .to_bytes()
+        .to_vec();
+    Reply {
+        status,
+        headers,
+        body,
+    }
+}
