@@ -184,14 +184,7 @@ impl Canvas {
     fn base_at(&self, q: [f64; 2]) -> f64 {
         let n = self.grid.n;
         let (fi, fj) = self.grid.grid_coords(q[0], q[1]);
-        let top = (n - 1) as f64;
-        let (fi, fj) = (fi.clamp(0.0, top), fj.clamp(0.0, top));
-        let (i, j) = ((fi as usize).min(n - 2), (fj as usize).min(n - 2));
-        let (tx, tz) = (fi - i as f64, fj - j as f64);
-        let h = |i: usize, j: usize| f64::from(self.base[j * n + i]);
-        let near = h(i, j) * (1.0 - tx) + h(i + 1, j) * tx;
-        let far = h(i, j + 1) * (1.0 - tx) + h(i + 1, j + 1) * tx;
-        near * (1.0 - tz) + far * tz
+        crate::terrain::lattice::bilinear_clamped(&self.base, n, n, fi, fj)
     }
 
     /// Cliff (Fig. 4): the top edge fixed at `top` along the polyline (hard), and on the right

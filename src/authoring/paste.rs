@@ -85,18 +85,8 @@ impl PasteSource {
     /// Bilinear source height at a world position (clamped to the grid), metres.
     pub fn height(&self, p: [f64; 2]) -> f64 {
         let g = &self.grid;
-        let last = (g.n - 1) as f64;
         let (u, v) = g.grid_coords(p[0], p[1]);
-        let (u, v) = (u.clamp(0.0, last), v.clamp(0.0, last));
-        let (i, j) = (
-            (u.floor() as usize).min(g.n - 2),
-            (v.floor() as usize).min(g.n - 2),
-        );
-        let (fu, fv) = (u - i as f64, v - j as f64);
-        let h = |i: usize, j: usize| f64::from(self.heights[j * g.n + i]);
-        let top = h(i, j) * (1.0 - fu) + h(i + 1, j) * fu;
-        let bottom = h(i, j + 1) * (1.0 - fu) + h(i + 1, j + 1) * fu;
-        top * (1.0 - fv) + bottom * fv
+        crate::terrain::lattice::bilinear_clamped(&self.heights, g.n, g.n, u, v)
     }
 }
 

@@ -61,9 +61,8 @@ impl Displacement {
         let (fu, fv) = (u - iu, v - iv);
         let (i, j) = (iu as usize, iv as usize);
         let s = |i: usize, j: usize| f64::from(self.d[j * g.n + i]);
-        let top = s(i, j) * (1.0 - fu) + s(i + 1, j) * fu;
-        let bottom = s(i, j + 1) * (1.0 - fu) + s(i + 1, j + 1) * fu;
-        (top * (1.0 - fv) + bottom * fv) as f32
+        crate::terrain::lattice::lerp2(s(i, j), s(i + 1, j), s(i, j + 1), s(i + 1, j + 1), fu, fv)
+            as f32
     }
 
     /// Adds `d` to the heights of the lattice rectangle `(gx0 + i, gz0 + j)`, `i < w`, `j < h`,

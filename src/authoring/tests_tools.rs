@@ -6,6 +6,7 @@ use super::paste::{PasteSource, Placement};
 use super::region::tests::{height, plan, sample_at, spec};
 use super::region::{solve_region, Displacement};
 use super::tests::paste_agreement;
+use crate::terrain::lattice::lerp2;
 use serde_json::json;
 
 fn solve(ops: serde_json::Value) -> Displacement {
@@ -34,9 +35,14 @@ fn bilinear(r: &Displacement, p: [f64; 2]) -> f64 {
     let (u, v) = r.grid.grid_coords(p[0], p[1]);
     let (i, j) = (u.floor() as usize, v.floor() as usize);
     let (fu, fv) = (u - i as f64, v - j as f64);
-    let top = height(r, i, j) * (1.0 - fu) + height(r, i + 1, j) * fu;
-    let bottom = height(r, i, j + 1) * (1.0 - fu) + height(r, i + 1, j + 1) * fu;
-    top * (1.0 - fv) + bottom * fv
+    lerp2(
+        height(r, i, j),
+        height(r, i + 1, j),
+        height(r, i, j + 1),
+        height(r, i + 1, j + 1),
+        fu,
+        fv,
+    )
 }
 
 #[test]

@@ -159,9 +159,14 @@ impl Ground {
             x / s - (t.0 * TILE_QUADS + i) as f64,
             z / s - (t.1 * TILE_QUADS + k) as f64,
         );
-        let near = corner(0, 0) * (1.0 - fx) + corner(1, 0) * fx;
-        let far = corner(0, 1) * (1.0 - fx) + corner(1, 1) * fx;
-        near * (1.0 - fz) + far * fz
+        crate::terrain::lattice::lerp2(
+            corner(0, 0),
+            corner(1, 0),
+            corner(0, 1),
+            corner(1, 1),
+            fx,
+            fz,
+        )
     }
 }
 

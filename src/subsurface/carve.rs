@@ -136,15 +136,8 @@ impl Frame<'_> {
     /// Bilinear ground at `(x, z)`, clamped to the padded grid.
     fn ground_at(&self, x: f64, z: f64) -> f64 {
         let n = CHUNK_SAMPLES;
-        let top = (n - 1) as f64;
-        let fx = ((x - self.x0) / self.s).clamp(0.0, top);
-        let fz = ((z - self.z0) / self.s).clamp(0.0, top);
-        let (i, k) = ((fx as usize).min(n - 2), (fz as usize).min(n - 2));
-        let (tx, tz) = (fx - i as f64, fz - k as f64);
-        let g = |i: usize, k: usize| f64::from(self.ground[k * n + i]);
-        let near = g(i, k) * (1.0 - tx) + g(i + 1, k) * tx;
-        let far = g(i, k + 1) * (1.0 - tx) + g(i + 1, k + 1) * tx;
-        near * (1.0 - tz) + far * tz
+        let (u, v) = ((x - self.x0) / self.s, (z - self.z0) / self.s);
+        crate::terrain::lattice::bilinear_clamped(self.ground, n, n, u, v)
     }
 }
 

@@ -8,6 +8,7 @@ pub mod biome;
 pub mod blur;
 pub mod fractal;
 pub mod hash;
+pub mod lattice;
 pub mod noise;
 pub mod plan;
 pub mod poisson;
