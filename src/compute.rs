@@ -10,6 +10,7 @@
 
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::edits::TileEdits;
+use crate::terrain::lattice::Window;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
 use crate::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
@@ -152,7 +153,14 @@ impl Compute {
         let (gx0, gz0) = (key.x * 64 - 1, key.z * 64 - 1);
         let mut f = self.field(plan.clone(), key.lod, gx0, gz0, n, n).await;
         let spacing = |lod: u32| plan.lods[lod as usize].spacing_m;
-        edits.apply(spacing(key.lod), gx0, gz0, n, n, &mut f.heights);
+        let window = |lod: u32, gx0, gz0, w, h| Window {
+            spacing_m: spacing(lod),
+            gx0,
+            gz0,
+            w,
+            h,
+        };
+        edits.apply(window(key.lod, gx0, gz0, n, n), &mut f.heights);
         count(Stage::Field, started);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
@@ -160,7 +168,7 @@ impl Compute {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 let started = std::time::Instant::now();
                 let mut strip = self.field(plan.clone(), lod, gx0, gz0, w, h).await;
-                edits.apply(spacing(lod), gx0, gz0, w, h, &mut strip.heights);
+                edits.apply(window(lod, gx0, gz0, w, h), &mut strip.heights);
                 strips.push((*edge, strip));
                 count(Stage::Snap, started);
             }

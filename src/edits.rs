@@ -11,6 +11,7 @@
 use crate::authoring::Displacement;
 use crate::subsurface::world::breach_lattice;
 use crate::subsurface::Geology;
+use crate::terrain::lattice::Window;
 use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
 use crate::terrain::tile::{field, finish};
 use crate::terrain::{Tile, TileKey, WorldPlan};
@@ -29,22 +30,13 @@ pub struct TileEdits {
 }
 
 impl TileEdits {
-    /// Applies the edits to the `w × h` lattice whose sample `(i, j)` sits at
-    /// `((gx0 + i)·s, (gz0 + j)·s)`, `s = spacing_m`, heights row-major.
-    pub fn apply(
-        &self,
-        spacing_m: f32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
-        heights: &mut [f32],
-    ) {
+    /// Applies the edits to the heights of a lattice `window` (row-major).
+    pub fn apply(&self, window: Window, heights: &mut [f32]) {
         for d in &self.displacements {
-            d.add_to_lattice(spacing_m, gx0, gz0, w, h, heights);
+            d.add_to_lattice(window, heights);
         }
         if !self.strata.is_empty() {
-            breach_lattice(&self.strata, spacing_m, gx0, gz0, w, h, heights);
+            breach_lattice(&self.strata, window, heights);
         }
     }
 
@@ -89,14 +81,14 @@ pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
     let n = TILE_VERTS + 2;
     let (gx0, gz0) = (key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1);
     let mut f = field(plan, key.lod, gx0, gz0, n, n);
-    edits.apply(
-        plan.lods[key.lod as usize].spacing_m,
+    let window = Window {
+        spacing_m: plan.lods[key.lod as usize].spacing_m,
         gx0,
         gz0,
-        n,
-        n,
-        &mut f.heights,
-    );
+        w: n,
+        h: n,
+    };
+    edits.apply(window, &mut f.heights);
     let mut t = finish(plan, key, &f);
     edits.mark(&mut t);
     t

@@ -8,6 +8,7 @@ use super::raster::Canvas;
 use super::spec::{Op, RegionSpec, Shape};
 use super::spec_tools::resolve_elevations;
 use super::tensor::orientation;
+use crate::terrain::lattice::Window;
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
 
@@ -65,31 +66,14 @@ impl Displacement {
             as f32
     }
 
-    /// Adds `d` to the heights of the lattice rectangle `(gx0 + i, gz0 + j)`, `i < w`, `j < h`,
-    /// of vertex spacing `spacing_m` (a [`crate::terrain::tile::Field`]'s layout).
-    pub fn add_to_lattice(
-        &self,
-        spacing_m: f32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
-        heights: &mut [f32],
-    ) {
-        let s = f64::from(spacing_m);
-        for j in 0..h {
-            let z = (gz0 + j as i64) as f64 * s;
-            if z < self.grid.origin[1] || z > self.grid.max[1] {
-                continue;
+    /// Adds `d` to the heights of a lattice `window` (row-major).
+    pub fn add_to_lattice(&self, window: Window, heights: &mut [f32]) {
+        window.visit_mut(heights, |x, z, h| {
+            let d = self.at(x, z);
+            if d != 0.0 {
+                *h += d;
             }
-            for i in 0..w {
-                let x = (gx0 + i as i64) as f64 * s;
-                let d = self.at(x, z);
-                if d != 0.0 {
-                    heights[j * w + i] += d;
-                }
-            }
-        }
+        });
     }
 }
 
@@ -534,6 +518,17 @@ pub(super) mod tests {
         println!("slope ratios in the brush core: ×2.5 → {up:.2}, ×0.3 → {down:.2}");
     }
 
+    /// A 2 × 2 window of the lattice of spacing `s` at `(gx0, gz0)`.
+    fn window(spacing_m: f32, gx0: i64, gz0: i64) -> Window {
+        Window {
+            spacing_m,
+            gx0,
+            gz0,
+            w: 2,
+            h: 2,
+        }
+    }
+
     #[test]
     fn tiles_add_the_displacement_as_a_function_of_position() {
         let ops = json!([{"op": "elevation", "shape": {"point": [1064, 2064]}, "elevation_m": 400, "radius_m": 3}]);
@@ -541,13 +536,13 @@ pub(super) mod tests {
         // The same world point through two lattices (LOD 0 and LOD 1) gets the same `d`.
         let mut a = vec![0.0f32; 4];
         let mut b = vec![0.0f32; 4];
-        r.add_to_lattice(1.0, 1060, 2060, 2, 2, &mut a);
-        r.add_to_lattice(2.0, 530, 1030, 2, 2, &mut b);
+        r.add_to_lattice(window(1.0, 1060, 2060), &mut a);
+        r.add_to_lattice(window(2.0, 530, 1030), &mut b);
         assert_eq!(a[0], b[0]);
         assert!(a[0] > 10.0);
         // Outside the bbox nothing changes.
         let mut c = vec![0.0f32; 4];
-        r.add_to_lattice(1.0, 1129, 2000, 2, 2, &mut c);
+        r.add_to_lattice(window(1.0, 1129, 2000), &mut c);
         assert!(c.iter().all(|v| *v == 0.0));
     }
 }

@@ -32,6 +32,7 @@
 use super::chunk::ElementMemo;
 use super::plan::{Composition, SubsurfacePlan};
 use super::spec::StrataSpec;
+use crate::terrain::lattice::Window;
 use std::sync::Arc;
 
 /// How far a cave's carved interval stays inside its Eq. 6 span at each end, voxels.
@@ -171,35 +172,21 @@ pub fn carved_at(
     geos[k].carved(x, z, &mut memos[k])
 }
 
-/// Lowers the lattice heights where a cave breaches the ground (module docs): sample `(i, j)`
-/// of the `w × h` lattice sits at `((gx0 + i)·s, (gz0 + j)·s)`, `s = spacing_m`, and its height
-/// `g` becomes `g + a` when the carved interval `(a, b)` there has `a < 0 < b`.
-#[allow(clippy::too_many_arguments)]
-pub fn breach_lattice(
-    geos: &[Arc<Geology>],
-    spacing_m: f32,
-    gx0: i64,
-    gz0: i64,
-    w: usize,
-    h: usize,
-    heights: &mut [f32],
-) {
+/// Lowers the heights of a lattice `window` where a cave breaches the ground (module docs): the
+/// height `g` of a vertex becomes `g + a` when the carved interval `(a, b)` there has
+/// `a < 0 < b`.
+pub fn breach_lattice(geos: &[Arc<Geology>], window: Window, heights: &mut [f32]) {
     if geos.iter().all(|g| !g.spec.carve) {
         return;
     }
     let mut memos = memos(geos);
-    let s = f64::from(spacing_m);
-    for j in 0..h {
-        let z = (gz0 + j as i64) as f64 * s;
-        for i in 0..w {
-            let x = (gx0 + i as i64) as f64 * s;
-            if let Some((a, b)) = carved_at(geos, &mut memos, x, z) {
-                if b > 0.0 {
-                    heights[j * w + i] += a;
-                }
+    window.visit_mut(heights, |x, z, h| {
+        if let Some((a, b)) = carved_at(geos, &mut memos, x, z) {
+            if b > 0.0 {
+                *h += a;
             }
         }
-    }
+    });
 }
 
 /// The ground under column `(x, z)` whose (possibly breached) height is `height`: the inverse
@@ -272,7 +259,14 @@ mod tests {
                 let (gx, gz) = (i * 2 - 250, j - 200);
                 let (x, z) = (gx as f64, gz as f64);
                 let mut h = [37.5f32];
-                breach_lattice(&geos, 1.0, gx, gz, 1, 1, &mut h);
+                let window = Window {
+                    spacing_m: 1.0,
+                    gx0: gx,
+                    gz0: gz,
+                    w: 1,
+                    h: 1,
+                };
+                breach_lattice(&geos, window, &mut h);
                 let g = ground_under(&geos, &mut memos, x, z, h[0]);
                 assert!(
                     (g - 37.5).abs() < 1e-4,

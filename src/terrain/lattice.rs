@@ -29,6 +29,40 @@ pub fn bilinear_clamped(values: &[f32], nx: usize, nz: usize, u: f64, v: f64) ->
     )
 }
 
+/// A rectangle of a world lattice: vertices `(gx0 + i, gz0 + j)` for `i < w`, `j < h`,
+/// `spacing_m` metres apart (the layout of a [`crate::terrain::tile::Field`] or a snap strip),
+/// stored row-major.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// Vertex spacing, metres.
+    pub spacing_m: f32,
+    /// Lattice index of the first column.
+    pub gx0: i64,
+    /// Lattice index of the first row.
+    pub gz0: i64,
+    /// Vertices per row.
+    pub w: usize,
+    /// Rows.
+    pub h: usize,
+}
+
+impl Window {
+    /// Calls `f(x, z, value)` for every vertex of `values` (row-major `w × h`), row by row, with
+    /// the vertex's world position in metres: `x = (gx0 + i) · spacing_m`, and `z` likewise.
+    /// The position is a function of the lattice index alone, so the same world vertex seen
+    /// through two windows (two tiles, two LODs) gets the same position bits.
+    pub fn visit_mut(&self, values: &mut [f32], mut f: impl FnMut(f64, f64, &mut f32)) {
+        debug_assert_eq!(values.len(), self.w * self.h);
+        let s = f64::from(self.spacing_m);
+        for (j, row) in values.chunks_exact_mut(self.w).take(self.h).enumerate() {
+            let z = (self.gz0 + j as i64) as f64 * s;
+            for (i, v) in row.iter_mut().enumerate() {
+                f((self.gx0 + i as i64) as f64 * s, z, v);
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -52,6 +86,35 @@ mod tests {
         assert_eq!(
             bilinear_clamped(&values, nx, nz, -5.0, 9.0),
             bilinear_clamped(&values, nx, nz, 0.0, 2.0)
+        );
+    }
+
+    #[test]
+    fn a_window_visits_each_vertex_once_at_its_world_position() {
+        let win = Window {
+            spacing_m: 2.0,
+            gx0: -3,
+            gz0: 5,
+            w: 3,
+            h: 2,
+        };
+        let mut values = vec![0.0f32; 6];
+        let mut seen = Vec::new();
+        win.visit_mut(&mut values, |x, z, v| {
+            *v += 1.0;
+            seen.push((x, z));
+        });
+        assert!(values.iter().all(|v| *v == 1.0));
+        assert_eq!(
+            seen,
+            [
+                (-6.0, 10.0),
+                (-4.0, 10.0),
+                (-2.0, 10.0),
+                (-6.0, 12.0),
+                (-4.0, 12.0),
+                (-2.0, 12.0)
+            ]
         );
     }
 }
