@@ -78,7 +78,7 @@ impl Canvas {
             };
             let k = sign * e.slope_deg.to_radians().tan();
             let width = e.width_m;
-            self.by_frame(pts, |f| {
+            self.by_frame(pts, half + width, |f| {
                 let d = f.dist - half;
                 (d > 0.0 && d < width)
                     .then(|| Edit::Replace([k * f.away[0], k * f.away[1]], band(d, width)))

@@ -24,6 +24,7 @@
 //! Sides: "right" of a stroke is the side to the right looking along it on a map with x east
 //! and z south (north up), i.e. where `t × (p − q) > 0` for the stroke tangent `t`.
 
+use super::nearest::Nearest;
 use super::raster::{dist, falloff, polyline_distance, Canvas};
 use crate::terrain::hash::{hash2, stream, unit};
 
@@ -49,7 +50,12 @@ pub struct Frame {
 
 /// The [`Frame`] of `p` relative to `pts`.
 pub fn frame(pts: &[[f64; 2]], p: [f64; 2]) -> Frame {
-    let (d, s, t) = polyline_distance(pts, p);
+    frame_at(pts, p, polyline_distance(pts, p))
+}
+
+/// The [`Frame`] of `p` relative to `pts` from its closest point `(distance, segment,
+/// fraction)`, as [`polyline_distance`] or [`Nearest::get`] give it.
+pub fn frame_at(pts: &[[f64; 2]], p: [f64; 2], (d, s, t): (f64, usize, f64)) -> Frame {
     let (a, b) = if pts.len() == 1 {
         (pts[0], pts[0])
     } else {
@@ -89,11 +95,23 @@ pub(super) fn band(d: f64, width: f64) -> f64 {
 }
 
 impl Canvas {
-    /// Applies `f` to every edge by its midpoint's [`Frame`] relative to `pts`.
-    pub(super) fn by_frame(&mut self, pts: &[[f64; 2]], mut f: impl FnMut(&Frame) -> Option<Edit>) {
+    /// Applies `f` to every edge whose midpoint lies within `reach` metres of the polyline
+    /// `pts`, by the midpoint's [`Frame`]; `f` must edit nothing farther (each tool's width).
+    pub(super) fn by_frame(
+        &mut self,
+        pts: &[[f64; 2]],
+        reach: f64,
+        mut f: impl FnMut(&Frame) -> Option<Edit>,
+    ) {
         let inv = 1.0 / self.grid.spacing_m;
+        // A relative slack of 1e-9 keeps every edge `f` could edit despite rounding in its own
+        // distance tests (such as `dist − half < width`).
+        let index = Nearest::new(pts, reach + 1e-9 * reach.abs().max(1.0));
         self.edges(|c, is_x, e, mid, (a, b)| {
-            let Some(edit) = f(&frame(pts, mid)) else {
+            let Some(near) = index.get(mid) else {
+                return;
+            };
+            let Some(edit) = f(&frame_at(pts, mid, near)) else {
                 return;
             };
             let axis = usize::from(!is_x);
@@ -151,13 +169,14 @@ impl Canvas {
     pub fn slope_curve(&mut self, pts: &[[f64; 2]], left_deg: f64, right_deg: f64, width: f64) {
         let (tl, tr) = (left_deg.to_radians().tan(), right_deg.to_radians().tan());
         let n = self.grid.n;
+        let index = Nearest::new(pts, width);
         let phi: Vec<f64> = (0..n * n)
             .map(|v| {
                 let p = self.grid.position(v % n, v / n);
-                let f = frame(pts, p);
-                if f.dist >= width {
+                let Some(near) = index.get(p) else {
                     return 0.0;
-                }
+                };
+                let f = frame_at(pts, p, near);
                 let x = ((f.dist - 2.0 * width / 3.0) / (width / 3.0)).clamp(0.0, 1.0);
                 let w = 1.0 - x * x * (3.0 - 2.0 * x);
                 let tan = if f.side > 0.0 { tr } else { tl };
@@ -193,7 +212,7 @@ impl Canvas {
     pub fn cliff(&mut self, pts: &[[f64; 2]], top: f64, slope_deg: f64, width: f64) {
         self.elevation(pts, &[top], 0.5 * self.grid.spacing_m);
         let tan = slope_deg.to_radians().tan();
-        self.by_frame(pts, |f| {
+        self.by_frame(pts, width, |f| {
             (f.side > 0.0 && f.dist > 0.0 && f.dist < width)
                 .then(|| Edit::Replace([-tan * f.away[0], -tan * f.away[1]], band(f.dist, width)))
         });
@@ -213,7 +232,7 @@ impl Canvas {
         let half = 0.5 * bed_width.max(self.grid.spacing_m);
         self.elevation(pts, &[bed], half);
         let tan = bank_slope_deg.to_radians().tan();
-        self.by_frame(pts, |f| {
+        self.by_frame(pts, half + bank_width, |f| {
             let d = f.dist - half;
             (d > 0.0 && d < bank_width)
                 .then(|| Edit::Replace([tan * f.away[0], tan * f.away[1]], band(d, bank_width)))
@@ -226,7 +245,7 @@ impl Canvas {
     /// its surroundings.
     pub fn free_crest(&mut self, pts: &[[f64; 2]], sign: f64, slope_deg: f64, width: f64) {
         let tan = slope_deg.to_radians().tan();
-        self.by_frame(pts, |f| {
+        self.by_frame(pts, width, |f| {
             let w = falloff(f.dist, width);
             (w > 0.0 && f.dist > 0.0)
                 .then(|| Edit::Add([-sign * tan * w * f.away[0], -sign * tan * w * f.away[1]]))
@@ -239,7 +258,7 @@ impl Canvas {
     pub fn fault(&mut self, pts: &[[f64; 2]], throw: f64, width: f64) {
         let r = 0.5 * width;
         let scale = throw / (2.0 * r * FALLOFF_AREA);
-        self.by_frame(pts, |f| {
+        self.by_frame(pts, r, |f| {
             let w = falloff(f.dist, r);
             (w > 0.0 && f.dist > 0.0 && f.interior).then(|| {
                 // The height is `−throw·S(s)` for the signed distance `s` (positive on the right)
@@ -315,7 +334,7 @@ impl Canvas {
     ) {
         self.elevation(&[center], &[elevation], radius);
         let tan = slope_deg.to_radians().tan();
-        self.by_frame(&[center], |f| {
+        self.by_frame(&[center], radius + cliff_width, |f| {
             let d = f.dist - radius;
             (d > 0.0 && d < cliff_width)
                 .then(|| Edit::Replace([-tan * f.away[0], -tan * f.away[1]], band(d, cliff_width)))

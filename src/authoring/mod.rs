@@ -52,6 +52,7 @@ pub mod fitting;
 pub mod grid;
 pub mod hydraulic;
 pub mod landform;
+pub mod nearest;
 pub mod paste;
 pub mod raster;
 pub mod region;

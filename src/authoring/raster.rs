@@ -6,6 +6,7 @@
 //! between `(i, j)` and `(i, j+1)`. Brush falloffs are the C² kernel `(1 − (r/R)²)³`.
 
 use super::grid::RegionGrid;
+use super::nearest::{segment_distance, Nearest};
 use crate::terrain::hash::stream;
 use crate::terrain::noise::lattice;
 
@@ -30,16 +31,7 @@ pub fn polyline_distance(pts: &[[f64; 2]], p: [f64; 2]) -> (f64, usize, f64) {
     }
     let mut best = (f64::INFINITY, 0, 0.0);
     for (s, w) in pts.windows(2).enumerate() {
-        let (a, b) = (w[0], w[1]);
-        let d = [b[0] - a[0], b[1] - a[1]];
-        let len2 = d[0] * d[0] + d[1] * d[1];
-        let t = if len2 > 0.0 {
-            (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        let q = [a[0] + t * d[0], a[1] + t * d[1]];
-        let dd = dist(q, p);
+        let (dd, t) = segment_distance(w[0], w[1], p);
         if dd < best.0 {
             best = (dd, s, t);
         }
@@ -337,9 +329,12 @@ impl Canvas {
         self.elevation(pts, &[elevation], half);
         let tan = slope_deg.to_radians().tan();
         let inv = 1.0 / self.grid.spacing_m;
+        let index = Nearest::new(pts, width);
         self.edges(|c, is_x, e, mid, (a, b)| {
-            let (d, s, t) = polyline_distance(pts, mid);
-            if d >= width || d == 0.0 {
+            let Some((d, s, t)) = index.get(mid) else {
+                return;
+            };
+            if d == 0.0 {
                 return;
             }
             let w = ((width - d) / (width / 3.0)).min(1.0);

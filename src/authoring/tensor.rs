@@ -17,8 +17,8 @@
 //! stores one gradient component per edge; the other component at an edge's midpoint is the mean
 //! of the four nearest edges of the other family (the staggered-grid interpolation).
 
-use super::landform::frame;
-use super::raster::{dist, falloff, polyline_distance, Canvas};
+use super::nearest::Nearest;
+use super::raster::{dist, falloff, Canvas};
 
 /// `M(θ)` for `θ` in radians.
 pub fn orientation(theta: f64) -> [[f64; 2]; 2] {
@@ -26,12 +26,11 @@ pub fn orientation(theta: f64) -> [[f64; 2]; 2] {
     [[c, s], [s, -c]]
 }
 
-/// Direction of the polyline at the closest point to `p`, radians from +x toward +z.
-fn stroke_angle(pts: &[[f64; 2]], p: [f64; 2]) -> f64 {
+/// Direction of segment `s` of the polyline, radians from +x toward +z (0 for a single point).
+fn stroke_angle(pts: &[[f64; 2]], s: usize) -> f64 {
     if pts.len() < 2 {
         return 0.0;
     }
-    let (_, s, _) = polyline_distance(pts, p);
     (pts[s + 1][1] - pts[s][1]).atan2(pts[s + 1][0] - pts[s][0])
 }
 
@@ -109,8 +108,9 @@ impl Canvas {
     /// Skeleton tensor `I + μ·α(d/r)·M(θ)` around a point or polyline skeleton.
     pub fn skeleton_tensor(&mut self, pts: &[[f64; 2]], radius: f64, angle_deg: f64, mu: f64) {
         let m = orientation(angle_deg.to_radians());
+        let index = Nearest::new(pts, radius);
         self.apply_tensor(|p| {
-            let w = falloff(frame(pts, p).dist, radius);
+            let w = falloff(index.get(p)?.0, radius);
             (w > 0.0).then(|| scaled(m, mu * w))
         });
     }
@@ -118,9 +118,11 @@ impl Canvas {
     /// Stroke-aligned tensor brush (Fig. 7): `I + μ·α(d/r)·M(θ(p))`, `θ(p)` the stroke's
     /// direction at the closest point.
     pub fn stroke_tensor(&mut self, pts: &[[f64; 2]], radius: f64, mu: f64) {
+        let index = Nearest::new(pts, radius);
         self.apply_tensor(|p| {
-            let w = falloff(frame(pts, p).dist, radius);
-            (w > 0.0).then(|| scaled(orientation(stroke_angle(pts, p)), mu * w))
+            let (d, s, _) = index.get(p)?;
+            let w = falloff(d, radius);
+            (w > 0.0).then(|| scaled(orientation(stroke_angle(pts, s)), mu * w))
         });
     }
 }
