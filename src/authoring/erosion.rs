@@ -1,8 +1,15 @@
 //! The erosion brush (Guérin et al. 2022, §4.4, "backward compatible tools"): a tool of the
 //! elevation domain run inside the gradient framework. The region is solved up to the brush, the
-//! brush erodes the resulting heights, and the eroded heights' gradients are extracted back into
-//! the target gradient inside the brush. As in the paper, the Dirichlet constraints are kept: a
+//! brush erodes the resulting heights, and the change of the heights' gradients is added to the
+//! target gradient inside the brush. As in the paper, the Dirichlet constraints are kept: a
 //! fixed sample never moves, so user-designated elevations hold through the erosion.
+//!
+//! Adding the change (rather than replacing the target by the eroded heights' gradient) keeps
+//! the brush local: the change `Δ` of the heights is zero outside the disc and at fixed samples,
+//! and the target gains exactly `∇Δ`, so by linearity the reconstruction becomes the previous
+//! one plus `Δ` and nothing outside the disc moves. Replacing would also pull in, inside the
+//! disc, whatever mismatch the previous target had with the solved heights (its curl, or a
+//! conflicting constraint), and that mismatch would spread beyond the rim.
 //!
 //! This is the thermal companion of the paper's hydraulic brush (that one is
 //! [`super::hydraulic`]): material slides downhill wherever the slope exceeds the talus angle,
@@ -17,8 +24,8 @@ pub const MAX_EROSION_ITERATIONS: u32 = 500;
 impl Canvas {
     /// Erodes the heights `base + current` within `radius` of `center` for `iterations` thermal
     /// steps of talus angle `talus_deg` (rate 0.25 of the excess per neighbour and step), keeping
-    /// fixed samples, then replaces the target gradient on the edges inside the brush by the
-    /// eroded heights' differences.
+    /// fixed samples, then adds the change of the heights' differences to the target gradient on
+    /// the edges inside the brush.
     pub fn erode(
         &mut self,
         center: [f64; 2],
@@ -42,6 +49,7 @@ impl Canvas {
         let mut heights: Vec<f64> = (0..n * n)
             .map(|v| f64::from(self.base[v]) + f64::from(current[v]))
             .collect();
+        let start = heights.clone();
         let mut next = heights.clone();
         for _ in 0..iterations.min(MAX_EROSION_ITERATIONS) {
             next.copy_from_slice(&heights);
@@ -74,10 +82,9 @@ impl Canvas {
             if falloff(dist(mid, center), radius) == 0.0 {
                 return;
             }
-            let target = (heights[b] - heights[a]) * inv;
-            let proc = (f64::from(c.base[b]) - f64::from(c.base[a])) * inv;
+            let change = ((heights[b] - start[b]) - (heights[a] - start[a])) * inv;
             let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
-            *g = (target - proc) as f32;
+            *g = (f64::from(*g) + change) as f32;
         });
     }
 }

@@ -419,6 +419,27 @@ fn erosion_keeps_the_constraints_and_wears_the_peak_down() {
         "steep share {steep0:.3} → {steep1:.3}"
     );
     assert!(top1 < top0 - 0.5, "peak {top0:.2} → {top1:.2}");
+    // The brush is local: beyond its radius the heights stay as they were, up to the solver's
+    // tolerance (relative residual 1e-6, a few millimetres here), and the material it moved
+    // stays inside (thermal steps conserve it).
+    let (mut outside, mut net, mut moved) = (0.0f64, 0.0f64, 0.0f64);
+    for v in 0..n * n {
+        let delta = f64::from(eroded.d[v] - plain.d[v]);
+        let p = plain.grid.position(v % n, v / n);
+        if (p[0] - 1064.0).hypot(p[1] - 2064.0) > 46.0 {
+            outside = outside.max(delta.abs());
+        }
+        net += delta;
+        moved += delta.abs();
+    }
+    println!(
+        "erosion: moved {moved:.1} m·samples, net {net:.3}, largest change outside {outside:.2e} m"
+    );
+    assert!(
+        outside < 5e-3,
+        "the brush moved the heights outside it by {outside} m"
+    );
+    assert!(net.abs() < 1e-2 * moved, "net {net} of {moved}");
 }
 
 #[test]
