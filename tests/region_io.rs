@@ -65,11 +65,25 @@ impl World {
     }
 
     async fn post_png(&self, path: &str, content_type: &str, body: Vec<u8>) -> Reply {
+        self.post_png_if(path, content_type, body, None).await
+    }
+
+    /// As [`World::post_png`], with an `If-Match` header if given.
+    async fn post_png_if(
+        &self,
+        path: &str,
+        content_type: &str,
+        body: Vec<u8>,
+        if_match: Option<&str>,
+    ) -> Reply {
         let uri = format!("/v1/worlds/{}{path}", self.id);
-        let h = [
+        let mut h = vec![
             ("authorization", format!("Bearer {}", self.token)),
             ("content-type", content_type.to_string()),
         ];
+        if let Some(v) = if_match {
+            h.push(("if-match", v.to_string()));
+        }
         send(&self.app, Method::POST, &uri, &h, Some(&body)).await
     }
 }
@@ -315,10 +329,24 @@ async fn a_bad_upload_is_refused_naming_the_field() {
     w.post_png(
         "/regions/nope/heightmap.png?lo_m=0&hi_m=1",
         "image/png",
-        png.bytes,
+        png.bytes.clone(),
     )
     .await
     .error(StatusCode::NOT_FOUND, "not_found", Some("rid"));
+    // A stale or malformed If-Match is refused like an edit's.
+    let ok_path = format!("{path}?lo_m=0&hi_m=1");
+    w.post_png_if(&ok_path, "image/png", png.bytes.clone(), Some("\"7\""))
+        .await
+        .error(StatusCode::CONFLICT, "version_conflict", Some("If-Match"));
+    w.post_png_if(&ok_path, "image/png", png.bytes.clone(), Some("seven"))
+        .await
+        .error(StatusCode::BAD_REQUEST, "bad_version", Some("If-Match"));
     // Nothing was committed.
     assert_eq!(w.get("").await.json()["version"], 1);
+    // The current version is accepted.
+    let r = w
+        .post_png_if(&ok_path, "image/png", png.bytes, Some("1"))
+        .await;
+    r.ok();
+    assert_eq!(r.json()["version"], 2);
 }

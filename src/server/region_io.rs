@@ -13,25 +13,27 @@
 //! gradients replace the region's over the footprint and the reconstruction blends it into the
 //! surroundings. By default the image spans the region (`spacing_m = max(width, depth) /
 //! (max(pixels) − 1)`, centred on the region's centre); the query places it otherwise. The
-//! scene stays the one source of truth: the import is an ordinary edit, in the edit log.
+//! scene stays the one source of truth: the import is an ordinary edit, in the edit log. With
+//! `If-Match` it applies only to that version (409 otherwise); without it, a concurrent edit is
+//! retried on the new head up to [`IMPORT_ATTEMPTS`] times.
 
 use super::error::{code, truncate, AppError};
 use super::worlds::{
-    authorize, check_content_type, commit_edit, json_response, query_param, requested_version,
-    store_error,
+    authorize, check_content_type, commit_edit, json_response, parse_if_match, query_param,
+    requested_version, store_error,
 };
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
 use crate::authoring::Displacement;
-use crate::store::Role;
+use crate::store::{Role, StoreError};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::Router;
-use serde_json::json;
+use serde_json::{json, Value};
 use std::sync::Arc;
 
 /// Largest uploaded PNG, bytes: what fits in [`MAX_HEIGHTMAP_BASE64`] base64 characters.
@@ -199,20 +201,78 @@ async fn heightmap_in(
         )
         .with_field("body"));
     }
+    let expected = parse_if_match(&headers)?;
     let q = query.as_deref();
     let lo_m = number(q, "lo_m", None)?;
     let hi_m = number(q, "hi_m", None)?;
-    let head = st.worlds.store.head(&id).await.map_err(store_error)?;
-    let regions = head.scene["regions"]
-        .as_array()
-        .cloned()
-        .unwrap_or_default();
+    let png_base64 = base64::engine::general_purpose::STANDARD.encode(&body);
+    // Without `If-Match` the paste goes on the latest version: a concurrent edit between reading
+    // the head and committing is retried on the new head, a few times.
+    let mut attempt = 0;
+    let (applied, ops) = loop {
+        attempt += 1;
+        let head = st.worlds.store.head(&id).await.map_err(store_error)?;
+        if let Some(expected) = expected {
+            if expected != head.meta.version {
+                return Err(store_error(StoreError::Conflict {
+                    expected,
+                    latest: head.meta.version,
+                }));
+            }
+        }
+        let (patch, ops) = import_patch(
+            &head.scene,
+            &id,
+            &rid,
+            head.meta.version,
+            q,
+            lo_m,
+            hi_m,
+            &png_base64,
+        )?;
+        match commit_edit(&st, &id, patch, Some(head.meta.version)).await {
+            Err(e)
+                if e.code == code::VERSION_CONFLICT
+                    && expected.is_none()
+                    && attempt < IMPORT_ATTEMPTS => {}
+            r => break (r?, ops),
+        }
+    };
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
+        "no-store",
+    );
+    res.headers_mut().insert(
+        HeaderName::from_static(super::worlds::VERSION_HEADER),
+        HeaderValue::from(applied.version),
+    );
+    Ok(res)
+}
+
+/// Attempts of an unconditional import against concurrent edits.
+pub const IMPORT_ATTEMPTS: u32 = 3;
+
+/// The edit that appends the import's `copy_paste` operation to region `rid` of `scene` (the
+/// world's scene at `version`), and the new operation's index.
+#[allow(clippy::too_many_arguments)]
+fn import_patch(
+    scene: &Value,
+    id: &str,
+    rid: &str,
+    version: u64,
+    q: Option<&str>,
+    lo_m: f64,
+    hi_m: f64,
+    png_base64: &str,
+) -> Result<(json_patch::Patch, usize), AppError> {
+    let regions = scene["regions"].as_array().cloned().unwrap_or_default();
     let Some((index, element)) = regions
         .iter()
         .enumerate()
-        .find(|(_, r)| r["id"].as_str() == Some(rid.as_str()))
+        .find(|(_, r)| r["id"].as_str() == Some(rid))
     else {
-        return Err(no_region(&id, &rid, head.meta.version));
+        return Err(no_region(id, rid, version));
     };
     let bbox = |k: &str, c: usize| element["bbox"][k][c].as_f64().unwrap_or(0.0);
     let (min, max) = (
@@ -220,7 +280,7 @@ async fn heightmap_in(
         [bbox("max", 0), bbox("max", 1)],
     );
     let mut map = Heightmap {
-        png_base64: base64::engine::general_purpose::STANDARD.encode(&body),
+        png_base64: png_base64.to_string(),
         lo_m,
         hi_m,
         spacing_m: 1.0,
@@ -257,15 +317,5 @@ async fn heightmap_in(
         {"op": "add", "path": format!("/regions/{index}/ops/-"), "value": op},
     ]))
     .map_err(|e| AppError::internal(format!("import patch: {e}")))?;
-    let applied = commit_edit(&st, &id, patch, Some(head.meta.version)).await?;
-    let mut res = json_response(
-        StatusCode::OK,
-        json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
-        "no-store",
-    );
-    res.headers_mut().insert(
-        HeaderName::from_static(super::worlds::VERSION_HEADER),
-        HeaderValue::from(applied.version),
-    );
-    Ok(res)
+    Ok((patch, ops))
 }
