@@ -43,9 +43,12 @@ use std::sync::Arc;
 pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 
 /// Version of the code that turns inputs into tiles. Bump it whenever a change to the world
-/// function (`src/terrain`, its WGSL twin, the seam snapping) changes any tile's bits, so every
-/// cached result — in memory and on disk — is orphaned rather than served stale.
-pub const TILE_CODE_VERSION: u32 = 1;
+/// function (`src/terrain`, its WGSL twin, the seam snapping) or to the edits tiles take
+/// (`src/authoring` tools and solver, `src/subsurface` breaches) changes any tile's bits, so
+/// every cached result — in memory and on disk — is orphaned rather than served stale.
+///
+/// 2: the thermal erosion brush adds its change instead of replacing the target gradient.
+pub const TILE_CODE_VERSION: u32 = 2;
 
 /// The vertex spacing of a LOD, metres.
 fn spacing_m(world: &WorldParams, lod: u32) -> f64 {
