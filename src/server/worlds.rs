@@ -517,7 +517,7 @@ fn version_etag(version: u64) -> String {
     format!("\"{version}\"")
 }
 
-fn set_version_headers(res: &mut Response, version: u64, etag: bool) {
+pub(super) fn set_version_headers(res: &mut Response, version: u64, etag: bool) {
     let h = res.headers_mut();
     h.insert(
         HeaderName::from_static(VERSION_HEADER),
@@ -644,7 +644,7 @@ async fn edit_log(
 
 /// `If-Match`: absent or `*` is no condition; else one version, plain or quoted (`5`, `"5"`,
 /// `W/"5"`).
-fn parse_if_match(headers: &HeaderMap) -> Result<Option<u64>, AppError> {
+pub(super) fn parse_if_match(headers: &HeaderMap) -> Result<Option<u64>, AppError> {
     let Some(v) = headers.get(header::IF_MATCH) else {
         return Ok(None);
     };
