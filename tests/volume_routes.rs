@@ -297,7 +297,7 @@ async fn bad_glb_is_refused_with_the_field_named() {
     let e = scene(json!([{ "triangles": [], "glb_base64": "AAAA" }])).expect_err("both");
     assert_eq!(e.pointer, "/volumes/0/meshes/0");
     let b64 = base64::engine::general_purpose::STANDARD.encode(&good);
-    let e = scene(json!([{ "triangles": [] }, { "glb_base64": b64, "transform": [0; 16] }]))
+    let e = scene(json!([{ "triangles": [] }, { "glb_base64": b64, "transform": vec![0; 16] }]))
         .expect_err("singular transform");
     assert_eq!(e.pointer, "/volumes/0/meshes/1/transform");
     scene(json!([{ "triangles": [] }, { "glb_base64": b64 }])).expect("valid");

@@ -745,6 +745,14 @@ mod tests {
         let back = &e.branches[0][0].vertices;
         assert!(!fwd.is_empty() && back.len() >= 4, "fwd {fwd:?} back {back:?}");
         let last = fwd[fwd.len() - 1];
+        eprintln!(
+            "A: {} vertices back to {:?}, {} forward to {last:?}; B: {} and {} added",
+            back.len(),
+            back[back.len() - 1],
+            fwd.len(),
+            e.branches[1][0].vertices.len(),
+            e.branches[1][1].vertices.len()
+        );
         assert!(last[0] <= 26.0 + 1e-3 && last[0] > 25.0, "A stops before B: {last:?}");
         assert!(back[back.len() - 1][0] < 4.0, "A reaches the border: {back:?}");
         assert!(added > 0);
