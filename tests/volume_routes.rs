@@ -160,7 +160,11 @@ async fn an_uploaded_glb_solves_like_the_same_triangles_inline() {
     let glb = triangles_to_glb(&unit_cube(), Some(&m));
     let inline = cube_element(ground, json!([{ "triangles": placed, "material": 3 }]));
     let app = app(AppState::new(Compute::cpu()));
-    let (id, token) = create(&app, json!({ "volumes": [cube_element(ground, json!([]))] })).await;
+    let (id, token) = create(
+        &app,
+        json!({ "volumes": [cube_element(ground, json!([]))] }),
+    )
+    .await;
     let auth = format!("Bearer {token}");
     // Upload the glb as version 2.
     let (s, h, b) = send(
@@ -198,7 +202,8 @@ async fn an_uploaded_glb_solves_like_the_same_triangles_inline() {
     assert!(solve(&inline_glb) == with_inline);
     // And the element transform is applied after the node's: the glb without its node matrix
     // but with the same placement as `transform`.
-    let bare = base64::engine::general_purpose::STANDARD.encode(triangles_to_glb(&unit_cube(), None));
+    let bare =
+        base64::engine::general_purpose::STANDARD.encode(triangles_to_glb(&unit_cube(), None));
     let transformed = cube_element(
         ground,
         json!([{ "glb_base64": bare, "transform": m, "material": 3 }]),
@@ -212,9 +217,23 @@ async fn an_uploaded_glb_solves_like_the_same_triangles_inline() {
         let x = &doc["nodes"][0]["extras"];
         (x["vertex_count"].clone(), x["quad_count"].clone())
     };
-    let (s, _, a) = send(&app, Method::GET, &format!("/v1/worlds/{id}/volumes/cube/mesh.glb?v=2"), &[], vec![]).await;
+    let (s, _, a) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id}/volumes/cube/mesh.glb?v=2"),
+        &[],
+        vec![],
+    )
+    .await;
     assert_eq!(s, StatusCode::OK);
-    let (s, _, b) = send(&app, Method::GET, &format!("/v1/worlds/{id2}/volumes/cube/mesh.glb?v=1"), &[], vec![]).await;
+    let (s, _, b) = send(
+        &app,
+        Method::GET,
+        &format!("/v1/worlds/{id2}/volumes/cube/mesh.glb?v=1"),
+        &[],
+        vec![],
+    )
+    .await;
     assert_eq!(s, StatusCode::OK);
     assert_eq!(counts(&a), counts(&b));
     assert!(counts(&a).1.as_u64().expect("quads") > 100);
@@ -224,7 +243,11 @@ async fn an_uploaded_glb_solves_like_the_same_triangles_inline() {
 async fn bad_glb_is_refused_with_the_field_named() {
     let ground = ground_at(24, 24);
     let app = app(AppState::new(Compute::cpu()));
-    let (id, token) = create(&app, json!({ "volumes": [cube_element(ground, json!([]))] })).await;
+    let (id, token) = create(
+        &app,
+        json!({ "volumes": [cube_element(ground, json!([]))] }),
+    )
+    .await;
     let auth = format!("Bearer {token}");
     let upload = |uri: String, ct: &'static str, body: Vec<u8>| {
         let (app, auth) = (app.clone(), auth.clone());
@@ -241,7 +264,12 @@ async fn bad_glb_is_refused_with_the_field_named() {
     };
     let good = triangles_to_glb(&unit_cube(), Some(&cube_placement(ground)));
     let uri = format!("/v1/worlds/{id}/volumes/cube/meshes");
-    let (s, _, b) = upload(uri.clone(), "model/gltf-binary", b"glTF but not really".to_vec()).await;
+    let (s, _, b) = upload(
+        uri.clone(),
+        "model/gltf-binary",
+        b"glTF but not really".to_vec(),
+    )
+    .await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(field_of(&b), "body");
     let mut cut = good.clone();
@@ -286,12 +314,16 @@ async fn bad_glb_is_refused_with_the_field_named() {
     let (s, _, b) = upload(uri.clone(), "model/gltf-binary", many).await;
     assert_eq!(s, StatusCode::BAD_REQUEST);
     assert_eq!(field_of(&b), "body");
-    assert!(json_of(&b)["error"]["message"].as_str().expect("message").contains("65536"));
+    assert!(json_of(&b)["error"]["message"]
+        .as_str()
+        .expect("message")
+        .contains("65536"));
     // Nothing was committed.
     let (_, h, _) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), &[], vec![]).await;
     assert_eq!(h["x-strata-version"], "1");
     // Inline: a bad base64 glb and a bad transform name their pointers.
-    let scene = |meshes: Value| Scene::from_value(&json!({ "volumes": [cube_element(ground, meshes)] }));
+    let scene =
+        |meshes: Value| Scene::from_value(&json!({ "volumes": [cube_element(ground, meshes)] }));
     let e = scene(json!([{ "glb_base64": "AAAA" }])).expect_err("bad glb");
     assert_eq!(e.pointer, "/volumes/0/meshes/0/glb_base64");
     let e = scene(json!([{ "triangles": [], "glb_base64": "AAAA" }])).expect_err("both");
@@ -309,7 +341,9 @@ async fn bad_glb_is_refused_with_the_field_named() {
 }
 
 fn js_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("js")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("js")
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -318,7 +352,11 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
         Ok(o) if o.status.success() => {}
         other => panic!("Node.js is required for the glTF validator (install Node 18+): {other:?}"),
     }
-    if !js_dir().join("node_modules").join("gltf-validator").is_dir() {
+    if !js_dir()
+        .join("node_modules")
+        .join("gltf-validator")
+        .is_dir()
+    {
         let out = Command::new("npm")
             .args(["ci", "--no-audit", "--no-fund", "--prefix"])
             .arg(js_dir())
@@ -337,15 +375,26 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
     let (s, h, glb) = send(&app, Method::GET, &uri, &[], vec![]).await;
     assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&glb));
     assert_eq!(h[header::CONTENT_TYPE], "model/gltf-binary");
-    assert!(h[header::CACHE_CONTROL].to_str().expect("cc").contains("immutable"));
+    assert!(h[header::CACHE_CONTROL]
+        .to_str()
+        .expect("cc")
+        .contains("immutable"));
     let etag = h[header::ETAG].to_str().expect("etag").to_string();
     let (s, _, _) = send(&app, Method::GET, &uri, &[("if-none-match", &etag)], vec![]).await;
     assert_eq!(s, StatusCode::NOT_MODIFIED);
     // Errors: unknown volume, unknown version, bad version.
     for (u, status, field) in [
         (format!("/v1/worlds/{id}/volumes/nope/mesh.glb"), 404, "vid"),
-        (format!("/v1/worlds/{id}/volumes/arch/mesh.glb?v=9"), 404, "v"),
-        (format!("/v1/worlds/{id}/volumes/arch/mesh.glb?v=x"), 400, "v"),
+        (
+            format!("/v1/worlds/{id}/volumes/arch/mesh.glb?v=9"),
+            404,
+            "v",
+        ),
+        (
+            format!("/v1/worlds/{id}/volumes/arch/mesh.glb?v=x"),
+            400,
+            "v",
+        ),
     ] {
         let (s, _, b) = send(&app, Method::GET, &u, &[], vec![]).await;
         assert_eq!(s.as_u16(), status, "{u}");
@@ -371,7 +420,10 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
     assert_eq!(reports.len(), 1);
     assert_eq!(reports[0]["errors"], 0, "validator errors: {}", reports[0]);
     let triangles = reports[0]["triangles"].as_u64().unwrap_or(0);
-    assert!(triangles > 1000, "the arch region has a real mesh: {triangles}");
+    assert!(
+        triangles > 1000,
+        "the arch region has a real mesh: {triangles}"
+    );
     assert!(out.status.success());
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -451,7 +503,10 @@ async fn curves_round_trip_as_json_through_versioned_edits() {
     assert_eq!(field_of(&b), "vid");
     // Editing needs a token.
     let (s, _, _) = send(&app, Method::PUT, &uri, &[], out.clone()).await;
-    assert!(s == StatusCode::UNAUTHORIZED || s == StatusCode::FORBIDDEN, "{s}");
+    assert!(
+        s == StatusCode::UNAUTHORIZED || s == StatusCode::FORBIDDEN,
+        "{s}"
+    );
     let (_, h, _) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), &[], vec![]).await;
     assert_eq!(h["x-strata-version"], "3");
 }

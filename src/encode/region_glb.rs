@@ -133,14 +133,15 @@ pub fn encode(v: &SolvedVolume, info: RegionInfo) -> Result<Vec<u8>, ExportError
             }
         }
         let mut views = Vec::new();
-        let mut push = |bin: &mut Vec<u8>, values: &mut dyn Iterator<Item = [u8; 4]>, target: u32| {
-            let start = bin.len();
-            for b in values {
-                bin.extend_from_slice(&b);
-            }
-            views.push(json!({ "buffer": 0, "byteOffset": start,
+        let mut push =
+            |bin: &mut Vec<u8>, values: &mut dyn Iterator<Item = [u8; 4]>, target: u32| {
+                let start = bin.len();
+                for b in values {
+                    bin.extend_from_slice(&b);
+                }
+                views.push(json!({ "buffer": 0, "byteOffset": start,
                                "byteLength": bin.len() - start, "target": target }));
-        };
+            };
         push(
             &mut bin,
             &mut m.positions.iter().flatten().map(|x| x.to_le_bytes()),
@@ -158,7 +159,11 @@ pub fn encode(v: &SolvedVolume, info: RegionInfo) -> Result<Vec<u8>, ExportError
         );
         push(
             &mut bin,
-            &mut m.noise.iter().flat_map(|n| [n[0], n[1]]).map(f32::to_le_bytes),
+            &mut m
+                .noise
+                .iter()
+                .flat_map(|n| [n[0], n[1]])
+                .map(f32::to_le_bytes),
             ARRAY_BUFFER,
         );
         push(

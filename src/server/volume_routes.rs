@@ -189,8 +189,7 @@ fn check_element(mut e: Value, field: &str, value: Value) -> Result<(), (String,
     if let Some(o) = e.as_object_mut() {
         o.insert(field.to_string(), value);
     }
-    let element: Element =
-        serde_json::from_value(e).map_err(|x| (String::new(), x.to_string()))?;
+    let element: Element = serde_json::from_value(e).map_err(|x| (String::new(), x.to_string()))?;
     VolumeSpec::from_element(&element)
         .map(|_| ())
         .map_err(|x| (x.pointer, x.message))
@@ -258,13 +257,17 @@ fn patch(v: Value) -> Result<json_patch::Patch, AppError> {
 fn number_param(query: Option<&str>, name: &'static str, default: f64) -> Result<f64, AppError> {
     match query_param(query, name) {
         None => Ok(default),
-        Some(s) => s.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| {
-            AppError::bad_request(
-                code::BAD_PARAMETER,
-                name,
-                format!("{name} must be a finite number, got {:?}", truncate(s, 40)),
-            )
-        }),
+        Some(s) => s
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| {
+                AppError::bad_request(
+                    code::BAD_PARAMETER,
+                    name,
+                    format!("{name} must be a finite number, got {:?}", truncate(s, 40)),
+                )
+            }),
     }
 }
 

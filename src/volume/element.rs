@@ -159,7 +159,10 @@ fn mesh_triangles(
             if tris.len() > budget {
                 return Err(too_many());
             }
-            if let Some(k) = tris.iter().position(|t| t.iter().flatten().any(|c| !c.is_finite())) {
+            if let Some(k) = tris
+                .iter()
+                .position(|t| t.iter().flatten().any(|c| !c.is_finite()))
+            {
                 return Err(err(at(&format!("/triangles/{k}")), "must be finite"));
             }
             Ok(match &m.transform {
@@ -192,10 +195,7 @@ fn mesh_triangles(
             glb_triangles(&bytes, m.transform.as_ref(), budget)
                 .map_err(|e| err(at("/glb_base64"), e.0))
         }
-        _ => Err(err(
-            at(""),
-            "give exactly one of triangles and glb_base64",
-        )),
+        _ => Err(err(at(""), "give exactly one of triangles and glb_base64")),
     }
 }
 
@@ -306,7 +306,10 @@ impl VolumeSpec {
                 material: m.material,
             });
             if !(m.alpha.is_finite() && m.beta.is_finite()) {
-                return Err(err(format!("/meshes/{i}/alpha"), "alpha and beta must be finite"));
+                return Err(err(
+                    format!("/meshes/{i}/alpha"),
+                    "alpha and beta must be finite",
+                ));
             }
         }
         if let Some(e) = &f.expand_curves {

@@ -73,7 +73,8 @@ pub fn apply(m: &Mat4, p: [f32; 3]) -> [f32; 3] {
 /// Determinant of the upper-left 3×3 block.
 pub fn det3(m: &Mat4) -> f32 {
     let a = |r: usize, c: usize| m[c * 4 + r];
-    a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
+    a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1))
+        - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
         + a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))
 }
 
@@ -246,7 +247,10 @@ impl Glb<'_> {
         if acc.get("type").and_then(Value::as_str) != Some(want_type) {
             return Err(bad(format!("{at}.type must be {want_type}")));
         }
-        let ct = acc.get("componentType").and_then(Value::as_u64).unwrap_or(0);
+        let ct = acc
+            .get("componentType")
+            .and_then(Value::as_u64)
+            .unwrap_or(0);
         if !component_types.contains(&ct) {
             return Err(bad(format!(
                 "{at}.componentType must be one of {component_types:?}, got {ct}"
@@ -255,10 +259,10 @@ impl Glb<'_> {
         if acc.get("normalized").and_then(Value::as_bool) == Some(true) {
             return Err(bad(format!("{at}: normalized accessors are not supported")));
         }
-        let count = acc
-            .get("count")
-            .and_then(Value::as_u64)
-            .ok_or_else(|| bad(format!("{at}.count must be a number")))? as usize;
+        let count =
+            acc.get("count")
+                .and_then(Value::as_u64)
+                .ok_or_else(|| bad(format!("{at}.count must be a number")))? as usize;
         let comp = match ct {
             5121 => 1,
             5123 => 2,
@@ -323,20 +327,16 @@ impl Glb<'_> {
     }
 
     fn indices(&self, a: usize) -> Result<Vec<u32>, GlbError> {
-        let (bytes, offset, stride, count, ct) =
-            self.accessor(a, "SCALAR", &[5121, 5123, 5125])?;
+        let (bytes, offset, stride, count, ct) = self.accessor(a, "SCALAR", &[5121, 5123, 5125])?;
         Ok((0..count)
             .map(|i| {
                 let at = offset + i * stride;
                 match ct {
                     5121 => u32::from(bytes[at]),
                     5123 => u32::from(u16::from_le_bytes([bytes[at], bytes[at + 1]])),
-                    _ => u32::from_le_bytes([
-                        bytes[at],
-                        bytes[at + 1],
-                        bytes[at + 2],
-                        bytes[at + 3],
-                    ]),
+                    _ => {
+                        u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
+                    }
                 }
             })
             .collect())
@@ -567,7 +567,10 @@ mod tests {
         el[10] = 2.0;
         let glb = triangles_to_glb(&[TRI], Some(&node));
         let got = glb_triangles(&glb, Some(&el), 10).expect("read");
-        assert_eq!(got, vec![[[20.0, 0.0, 0.0], [22.0, 0.0, 0.0], [20.0, 2.0, 0.0]]]);
+        assert_eq!(
+            got,
+            vec![[[20.0, 0.0, 0.0], [22.0, 0.0, 0.0], [20.0, 2.0, 0.0]]]
+        );
         // The mirror z → −z keeps this triangle's positions (it lies in z = 0) but reverses its
         // winding, so the front face stays the mirrored front face.
         let mut mirror = IDENTITY;

@@ -47,8 +47,9 @@
 //!
 //! New vertices are appended (forward branch) or prepended (backward branch) to the control
 //! points. The curve stays a clamped uniform cubic B-spline over `t ∈ [0, 1]`, so the original
-//! constraint points are re-parametrised onto the original spans (`t' = (b + t·(m − 3)) / (m + a
-//! + b − 3)` with `m` original control points, `b` prepended and `a` appended). A branch that
+//! constraint points are re-parametrised onto the original spans:
+//! `t' = (b + t·(m − 3)) / (m + a + b − 3)` with `m` original control points, `b` prepended and
+//! `a` appended. A branch that
 //! added vertices gets a new end constraint point copying the old end's `α`, `β`, material and
 //! bitangents, the bitangents re-expressed in the frame of the new end (tangent, the sampled `N`)
 //! with the same components they had in the frame of the old end — so a ribbon's width and droop
@@ -131,7 +132,10 @@ impl ExpandParams {
     pub fn validate(&self) -> Result<(), PipelineError> {
         let within = |v: f32, lo: f32, hi: f32| v.is_finite() && (lo..=hi).contains(&v);
         if !within(self.step_m, 0.05, 16.0) {
-            return Err(PipelineError::invalid("step_m", "must be in [0.05, 16] metres"));
+            return Err(PipelineError::invalid(
+                "step_m",
+                "must be in [0.05, 16] metres",
+            ));
         }
         if !within(self.spacing_m, self.step_m, 256.0) {
             return Err(PipelineError::invalid(
@@ -218,7 +222,13 @@ pub fn smooth_bitangents(dims: [usize; 3], sparse: &[Vec<f32>; 3], sweeps: usize
             front.push(i);
         }
     }
-    let coords = |i: usize| [i % dims[0], (i / dims[0]) % dims[1], i / (dims[0] * dims[1])];
+    let coords = |i: usize| {
+        [
+            i % dims[0],
+            (i / dims[0]) % dims[1],
+            i / (dims[0] * dims[1]),
+        ]
+    };
     let mut l = 0u32;
     while !front.is_empty() {
         l += 1;
@@ -284,8 +294,7 @@ fn trilinear(grid: &Grid, f: [&[f32]; 3], g: [f32; 3]) -> [f32; 3] {
 /// The field vector of the sample nearest to grid coordinates `g` (clamped).
 fn nearest(grid: &Grid, f: [&[f32]; 3], g: [f32; 3]) -> [f32; 3] {
     let d = grid.dims;
-    let i: [usize; 3] =
-        std::array::from_fn(|k| (g[k].round().max(0.0) as usize).min(d[k] - 1));
+    let i: [usize; 3] = std::array::from_fn(|k| (g[k].round().max(0.0) as usize).min(d[k] - 1));
     let idx = grid.index(i[0], i[1], i[2]);
     [f[0][idx], f[1][idx], f[2][idx]]
 }
@@ -519,7 +528,8 @@ pub fn expand_curves(
 ) -> Result<Expansion, PipelineError> {
     params.validate()?;
     for (i, c) in curves.iter().enumerate() {
-        c.validate().map_err(|e| e.within(&format!("curves[{i}]")))?;
+        c.validate()
+            .map_err(|e| e.within(&format!("curves[{i}]")))?;
     }
     let mut branches: Vec<[Branch; 2]> = vec![Default::default(); curves.len()];
     let md = params.min_distance_m;
@@ -686,7 +696,11 @@ mod tests {
         (grid, scene, PipelineParams::default())
     }
 
-    fn guidance_fields(grid: &Grid, scene: &Scene, params: &PipelineParams) -> (super::super::RegionFields, [Vec<f32>; 3]) {
+    fn guidance_fields(
+        grid: &Grid,
+        scene: &Scene,
+        params: &PipelineParams,
+    ) -> (super::super::RegionFields, [Vec<f32>; 3]) {
         let first = generate(grid, scene, params).expect("first pass");
         let b = smooth_bitangents(grid.dims, &first.bitangent, BITANGENT_SWEEPS);
         (first, b)
@@ -734,7 +748,10 @@ mod tests {
                 for (j, c) in e.curves.iter().enumerate() {
                     if i != j {
                         let d = polygon_distance(*v, &c.control_points);
-                        assert!(d >= p.min_distance_m, "curve {i} vertex {v:?} is {d} m from curve {j}");
+                        assert!(
+                            d >= p.min_distance_m,
+                            "curve {i} vertex {v:?} is {d} m from curve {j}"
+                        );
                     }
                 }
             }
@@ -743,7 +760,10 @@ mod tests {
         // the next step would come within 4 m of it.
         let fwd = &e.branches[0][1].vertices;
         let back = &e.branches[0][0].vertices;
-        assert!(!fwd.is_empty() && back.len() >= 4, "fwd {fwd:?} back {back:?}");
+        assert!(
+            !fwd.is_empty() && back.len() >= 4,
+            "fwd {fwd:?} back {back:?}"
+        );
         let last = fwd[fwd.len() - 1];
         eprintln!(
             "A: {} vertices back to {:?}, {} forward to {last:?}; B: {} and {} added",
@@ -753,8 +773,14 @@ mod tests {
             e.branches[1][0].vertices.len(),
             e.branches[1][1].vertices.len()
         );
-        assert!(last[0] <= 26.0 + 1e-3 && last[0] > 25.0, "A stops before B: {last:?}");
-        assert!(back[back.len() - 1][0] < 4.0, "A reaches the border: {back:?}");
+        assert!(
+            last[0] <= 26.0 + 1e-3 && last[0] > 25.0,
+            "A stops before B: {last:?}"
+        );
+        assert!(
+            back[back.len() - 1][0] < 4.0,
+            "A reaches the border: {back:?}"
+        );
         assert!(added > 0);
         for c in &e.curves {
             c.validate().expect("expanded curves are valid");
@@ -772,11 +798,17 @@ mod tests {
             expand: Some(ExpandParams::default()),
             ..params
         };
-        let expanded = expand_scene(&grid, &scene, &params, &ExpandParams::default()).expect("expand");
-        assert_eq!(expanded, expand_scene(&grid, &scene, &params, &ExpandParams::default()).expect("again"));
+        let expanded =
+            expand_scene(&grid, &scene, &params, &ExpandParams::default()).expect("expand");
+        assert_eq!(
+            expanded,
+            expand_scene(&grid, &scene, &params, &ExpandParams::default()).expect("again")
+        );
         assert!(expanded.curves[0].control_points.len() > scene.curves[0].control_points.len());
         let fields = generate(&grid, &scene, &with).expect("expanded run");
-        let count = |f: &super::super::RegionFields| f.voxelized.omega_n.iter().filter(|&&o| o != 0).count();
+        let count = |f: &super::super::RegionFields| {
+            f.voxelized.omega_n.iter().filter(|&&o| o != 0).count()
+        };
         assert!(
             count(&fields) > count(&plain),
             "the expanded curves constrain more samples: {} vs {}",
@@ -784,6 +816,9 @@ mod tests {
             count(&plain)
         );
         let direct = generate(&grid, &expanded, &params).expect("direct");
-        assert_eq!(fields.surface, direct.surface, "the stage is expand then solve");
+        assert_eq!(
+            fields.surface, direct.surface,
+            "the stage is expand then solve"
+        );
     }
 }
