@@ -510,3 +510,15 @@ async fn curves_round_trip_as_json_through_versioned_edits() {
     let (_, h, _) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), &[], vec![]).await;
     assert_eq!(h["x-strata-version"], "3");
 }
+
+#[test]
+fn expand_curves_in_the_element_runs_the_expansion_stage() {
+    let ground = ground_at(32, 24);
+    let plain = arch_element(ground);
+    let mut expanded = plain.clone();
+    expanded["expand_curves"] = json!({ "step_m": 0.5, "spacing_m": 2.0, "min_distance_m": 3.0 });
+    let (a, b) = (solve(&plain), solve(&expanded));
+    assert!(a != b, "the expanded curves change the region");
+    assert!(b == solve(&expanded), "the stage is deterministic");
+    assert!(b.iter().all(|s| s.is_finite()));
+}
