@@ -64,7 +64,9 @@
 //! - The added vertices sit on the traced path, and the spline through them smooths it; the
 //!   original part of a curve moves slightly because its knots are re-spaced uniformly.
 //! - The first guidance pass is a whole `generate` run without expansion (its surface
-//!   propagation and filter are discarded): simple, about one extra pipeline run of cost.
+//!   propagation and filter are discarded): simple, about one extra pipeline run of cost. The
+//!   stage times `generate` returns are those of the final run; the expansion is not in them.
+//! - No WGSL twin yet: the stage is optional and off by default; its CPU reference is here.
 
 use super::curve::{ConstraintPoint, FeatureCurve, MAX_CONTROL_POINTS};
 use super::grid::{add, cross, dot, length, normalize, scale, sub, Grid};
