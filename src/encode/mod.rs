@@ -20,6 +20,7 @@ pub mod chunk_glb;
 pub mod glb;
 pub mod heightmap;
 pub mod json;
+pub mod region_glb;
 pub mod scatter;
 
 use crate::terrain::Tile;

@@ -14,6 +14,7 @@
 //! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w]` | height tile |
 //! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
 //! | `/v1/worlds…` | worlds, scenes, edits, tokens and their products (see [`worlds`]) |
+//! | `/v1/worlds/{id}/volumes/{vid}/{mesh.glb,curves.json,meshes}` | volume-region mesh export, curves in and out, glb uploads (see [`volume_routes`]) |
 //! | `POST /v1/worlds/{id}/exports`, `/v1/jobs/{job}[/events\|/archive]` | export jobs (see [`exports`]) |
 //! | `GET /metrics` | Prometheus text format (see [`metrics`]) |
 //! | `GET /*` | the viewer directory (`--web`) |
@@ -40,6 +41,7 @@ pub mod region_io;
 pub mod regions;
 pub mod routes;
 pub mod solved;
+pub mod volume_routes;
 pub mod volumes;
 pub mod worlds;
 

@@ -43,6 +43,7 @@ pub fn router(state: AppState) -> Router {
         .merge(super::region_io::routes())
         .merge(super::exports::routes())
         .merge(super::chunks::routes())
+        .merge(super::volume_routes::routes())
         .merge(super::geology::routes())
         .merge(crate::stream::routes::router())
         .method_not_allowed_fallback(method_not_allowed);

@@ -517,7 +517,7 @@ fn version_etag(version: u64) -> String {
     format!("\"{version}\"")
 }
 
-fn set_version_headers(res: &mut Response, version: u64, etag: bool) {
+pub(super) fn set_version_headers(res: &mut Response, version: u64, etag: bool) {
     let h = res.headers_mut();
     h.insert(
         HeaderName::from_static(VERSION_HEADER),

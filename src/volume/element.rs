@@ -5,8 +5,32 @@
 //!
 //! ```json
 //! {"id": "arch", "bbox": {"min": [0, 0], "max": [64, 48]}, "y_m": [90, 130],
-//!  "spacing_m": 1.0, "dead_zone_m": 6, "curves": [ … FeatureCurve … ], "meshes": []}
+//!  "spacing_m": 1.0, "dead_zone_m": 6, "curves": [ … FeatureCurve … ], "meshes": [],
+//!  "expand_curves": {"step_m": 0.5, "spacing_m": 4, "min_distance_m": 4, "max_length_m": 64}}
 //! ```
+//!
+//! # Input meshes
+//!
+//! Each entry of `meshes` is either inline triangles or a glTF 2.0 binary, with the noise
+//! parameters and material the pipeline assigns to the whole mesh (§4.2):
+//!
+//! - `{"triangles": [[[x, y, z], [x, y, z], [x, y, z]], …]}`: world metres, counter-clockwise
+//!   seen from outside;
+//! - `{"glb_base64": "Z2xURg…"}`: a standard-base64 `.glb` of at most
+//!   [`MAX_GLB_BYTES`](super::mesh_import::MAX_GLB_BYTES) bytes, read by
+//!   [`super::mesh_import`] (positions and indices of triangle primitives, node transforms
+//!   applied; its units are taken as metres);
+//!
+//! both with the optional `"transform"` (16 numbers, a column-major affine 4×4 matrix as glTF
+//! writes them, applied last), `"alpha"` (metres, default 0.3), `"beta"` (default 0.5) and
+//! `"material"` (default 0). All meshes of an element hold at most [`MAX_VOLUME_TRIANGLES`]
+//! triangles together. An uploaded glb (`POST …/volumes/{vid}/meshes`) becomes such a
+//! `glb_base64` entry.
+//!
+//! # Curve expansion
+//!
+//! `expand_curves` (absent: off) turns on the optional §5.1 stage
+//! ([`super::pipeline::expand`]) with its settings; `{}` takes the defaults.
 //!
 //! # Meeting the world without a gap
 //!
@@ -26,6 +50,8 @@
 //! - Vertex materials of chunks stay the tile materials; the region's per-sample material is
 //!   not carried into chunks yet.
 
+use super::mesh_import::{glb_triangles, Mat4, MAX_GLB_BYTES};
+use super::pipeline::expand::ExpandParams;
 use super::pipeline::{self, Grid, Heightfield, InputMesh, PipelineParams, RegionFields};
 use crate::scene::Element;
 use crate::terrain::WorldPlan;
@@ -86,9 +112,91 @@ struct Fields {
     #[serde(default)]
     curves: Vec<pipeline::FeatureCurve>,
     #[serde(default)]
-    meshes: Vec<InputMesh>,
+    meshes: Vec<MeshEntry>,
     #[serde(default)]
     ground: GroundInput,
+    #[serde(default)]
+    expand_curves: Option<ExpandParams>,
+}
+
+/// One entry of `meshes` (module docs): inline triangles or a base64 glb.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeshEntry {
+    #[serde(default)]
+    triangles: Option<Vec<[[f32; 3]; 3]>>,
+    #[serde(default)]
+    glb_base64: Option<String>,
+    #[serde(default)]
+    transform: Option<Mat4>,
+    #[serde(default = "default_alpha")]
+    alpha: f32,
+    #[serde(default = "default_beta")]
+    beta: f32,
+    #[serde(default)]
+    material: u16,
+}
+
+/// The triangles of mesh entry `i` (transform applied), at most `budget` of them.
+fn mesh_triangles(
+    i: usize,
+    m: &MeshEntry,
+    budget: usize,
+) -> Result<Vec<[[f32; 3]; 3]>, VolumeError> {
+    use base64::Engine as _;
+    let at = |f: &str| format!("/meshes/{i}{f}");
+    if let Some(t) = &m.transform {
+        super::mesh_import::check_transform(t).map_err(|e| err(at("/transform"), e.0))?;
+    }
+    let too_many = || {
+        err(
+            "/meshes",
+            format!("at most {MAX_VOLUME_TRIANGLES} triangles in all"),
+        )
+    };
+    match (&m.triangles, &m.glb_base64) {
+        (Some(tris), None) => {
+            if tris.len() > budget {
+                return Err(too_many());
+            }
+            if let Some(k) = tris
+                .iter()
+                .position(|t| t.iter().flatten().any(|c| !c.is_finite()))
+            {
+                return Err(err(at(&format!("/triangles/{k}")), "must be finite"));
+            }
+            Ok(match &m.transform {
+                None => tris.clone(),
+                Some(t) => {
+                    let flip = super::mesh_import::det3(t) < 0.0;
+                    tris.iter()
+                        .map(|v| {
+                            let [a, b, c] = v.map(|p| super::mesh_import::apply(t, p));
+                            if flip {
+                                [a, c, b]
+                            } else {
+                                [a, b, c]
+                            }
+                        })
+                        .collect()
+                }
+            })
+        }
+        (None, Some(text)) => {
+            if text.len() > MAX_GLB_BYTES.div_ceil(3) * 4 {
+                return Err(err(
+                    at("/glb_base64"),
+                    format!("the glb may be at most {MAX_GLB_BYTES} bytes"),
+                ));
+            }
+            let bytes = base64::engine::general_purpose::STANDARD
+                .decode(text)
+                .map_err(|e| err(at("/glb_base64"), format!("not standard base64: {e}")))?;
+            glb_triangles(&bytes, m.transform.as_ref(), budget)
+                .map_err(|e| err(at("/glb_base64"), e.0))
+        }
+        _ => Err(err(at(""), "give exactly one of triangles and glb_base64")),
+    }
 }
 
 fn default_spacing() -> f32 {
@@ -118,6 +226,8 @@ pub struct VolumeSpec {
     pub dead_zone_m: f32,
     /// The heightfield input's parameters.
     pub ground: GroundInput,
+    /// The optional curve expansion (§5.1); `None` is off.
+    pub expand: Option<ExpandParams>,
 }
 
 /// Why a `volumes` element is refused: a JSON pointer relative to the element and the reason.
@@ -184,12 +294,31 @@ impl VolumeSpec {
                 format!("at most {MAX_VOLUME_CURVES} curves"),
             ));
         }
-        let triangles: usize = f.meshes.iter().map(|m| m.triangles.len()).sum();
-        if triangles > MAX_VOLUME_TRIANGLES {
-            return Err(err(
-                "/meshes",
-                format!("at most {MAX_VOLUME_TRIANGLES} triangles in all"),
-            ));
+        let mut meshes = Vec::with_capacity(f.meshes.len());
+        let mut used = 0;
+        for (i, m) in f.meshes.iter().enumerate() {
+            let triangles = mesh_triangles(i, m, MAX_VOLUME_TRIANGLES - used)?;
+            used += triangles.len();
+            meshes.push(InputMesh {
+                triangles,
+                alpha: m.alpha,
+                beta: m.beta,
+                material: m.material,
+            });
+            if !(m.alpha.is_finite() && m.beta.is_finite()) {
+                return Err(err(
+                    format!("/meshes/{i}/alpha"),
+                    "alpha and beta must be finite",
+                ));
+            }
+        }
+        if let Some(e) = &f.expand_curves {
+            e.validate().map_err(|x| match x {
+                pipeline::PipelineError::Invalid { field, reason } => {
+                    err(format!("/expand_curves/{field}"), reason)
+                }
+                other => err("/expand_curves", other.to_string()),
+            })?;
         }
         for (i, c) in f.curves.iter().enumerate() {
             c.validate().map_err(|x| match x {
@@ -227,11 +356,12 @@ impl VolumeSpec {
             grid,
             scene: pipeline::Scene {
                 curves: f.curves,
-                meshes: f.meshes,
+                meshes,
                 heightfield: None,
             },
             dead_zone_m: f.dead_zone_m,
             ground: f.ground,
+            expand: f.expand_curves,
         })
     }
 }
@@ -284,6 +414,7 @@ pub fn solve_volume(
     });
     let params = PipelineParams {
         dead_zone_m: spec.dead_zone_m,
+        expand: spec.expand,
         ..PipelineParams::default()
     };
     let fields = pipeline::generate(&spec.grid, &scene, &params)?;

@@ -7,4 +7,5 @@
 pub mod chunk;
 pub mod element;
 pub mod mesh;
+pub mod mesh_import;
 pub mod pipeline;

@@ -21,8 +21,8 @@
 //! result after an edit; [`brick`] solves a region larger than one grid in bricks that exchange
 //! borders (§5.2). The product — `S` with material, confidence and noise parameters per sample,
 //! in the shared grid layout (`x + nx·(y + ny·z)`, y up, `S < 0` inside) — is what
-//! [`crate::volume::mesh`] meshes. The optional feature-curve expansion (§5.1) is not
-//! implemented.
+//! [`crate::volume::mesh`] meshes. The optional feature-curve expansion (§5.1) is [`expand`],
+//! run first by [`region::generate`] when [`PipelineParams::expand`] is set.
 //!
 //! `shaders/volume_diffuse.wgsl` and `shaders/volume_propagate.wgsl` are the GPU twins of the
 //! diffusion sweep and the surface propagation (`crate::gpu::volume`).
@@ -34,6 +34,7 @@ pub mod brick;
 pub mod curve;
 pub mod diffuse;
 pub mod edt;
+pub mod expand;
 pub mod filter;
 pub mod grid;
 pub mod multigrid;

@@ -54,6 +54,8 @@ pub struct PipelineParams {
     pub gaussian_sigma: f32,
     /// Samples added around the changed box by [`regenerate`].
     pub warm_margin: usize,
+    /// The optional feature-curve expansion of §5.1 ([`super::expand`]); `None` skips it.
+    pub expand: Option<super::expand::ExpandParams>,
 }
 
 impl Default for PipelineParams {
@@ -64,6 +66,7 @@ impl Default for PipelineParams {
             diffuse: DiffuseParams::default(),
             gaussian_sigma: 1.0,
             warm_margin: 12,
+            expand: None,
         }
     }
 }
@@ -325,6 +328,15 @@ pub fn generate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<RegionFields, PipelineError> {
+    if let Some(e) = &params.expand {
+        // §5.1: expand the curves along a first guidance pass, then solve for the expanded ones.
+        let expanded = super::expand::expand_scene(grid, scene, params, e)?;
+        let params = PipelineParams {
+            expand: None,
+            ..*params
+        };
+        return generate(grid, &expanded, &params);
+    }
     let run = Stopwatch::start();
     let grid = Grid::new(grid.dims, grid.origin, grid.spacing)?;
     let mut times = Timing::default();
@@ -434,6 +446,11 @@ pub fn regenerate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<(RegionFields, Option<SampleBox>), PipelineError> {
+    if params.expand.is_some() {
+        // An edit can change every expanded curve: no warm start with expansion.
+        let fields = generate(&prev.grid, scene, params)?;
+        return Ok((fields, Some(([0; 3], prev.grid.dims))));
+    }
     let run = Stopwatch::start();
     let grid = prev.grid;
     let mut times = Timing::default();
