@@ -9,8 +9,6 @@ use axum::http::{header, Method, Request, StatusCode};
 use axum::Router;
 use http_body_util::BodyExt;
 use std::collections::{HashMap, HashSet};
-use std::path::{Path, PathBuf};
-use std::process::Command;
 use strata::compute::Compute;
 use strata::server::{app, AppState};
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
@@ -19,6 +17,8 @@ use strata::volume::chunk::{
 };
 use strata::volume::mesh::{QuadMesh, NONE};
 use tower::ServiceExt;
+
+mod common;
 
 const SEED: u64 = 7;
 
@@ -489,38 +489,9 @@ async fn world_chunks_are_served() {
     assert_eq!(s, StatusCode::NOT_FOUND);
 }
 
-fn js_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests")
-        .join("js")
-}
-
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn glb_chunks_pass_the_khronos_validator() {
-    match Command::new("node").arg("--version").output() {
-        Ok(o) if o.status.success() => {}
-        other => panic!("Node.js is required for the glTF validator (install Node 18+): {other:?}"),
-    }
-    if !js_dir()
-        .join("node_modules")
-        .join("gltf-validator")
-        .is_dir()
-    {
-        let out = Command::new("npm")
-            .args(["ci", "--no-audit", "--no-fund", "--prefix"])
-            .arg(js_dir())
-            .output()
-            .expect("npm could not be started; install npm");
-        assert!(
-            out.status.success(),
-            "npm ci failed: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-    }
     let app = app(AppState::new(Compute::cpu()));
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("strata-chunks-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
     let mut files = Vec::new();
     for lod in [0u32, 2, 3] {
         let y = ground_layer(lod);
@@ -532,24 +503,10 @@ async fn glb_chunks_pass_the_khronos_validator() {
             )
             .await;
             assert_eq!(s, StatusCode::OK);
-            let path = dir.join(format!("chunk_{lod}_{x}_{yy}_{z}.glb"));
-            std::fs::write(&path, &body).expect("write");
-            files.push(path);
+            files.push((format!("chunk_{lod}_{x}_{yy}_{z}.glb"), body));
         }
     }
-    let out = Command::new("node")
-        .arg(js_dir().join("validate.mjs"))
-        .args(&files)
-        .output()
-        .expect("run node");
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    println!("{stdout}");
-    let reports: Vec<serde_json::Value> = stdout
-        .lines()
-        .filter_map(|l| l.strip_prefix("STRATA_GLTF_REPORT "))
-        .map(|j| serde_json::from_str(j).expect("report"))
-        .collect();
-    assert_eq!(reports.len(), files.len());
+    let reports = common::gltf::validate("chunks", &files);
     for r in &reports {
         assert_eq!(r["errors"], 0, "validator errors: {r}");
     }
@@ -561,5 +518,4 @@ async fn glb_chunks_pass_the_khronos_validator() {
             >= 6,
         "ground chunks have triangles"
     );
-    std::fs::remove_dir_all(&dir).ok();
 }

@@ -4,14 +4,10 @@
 //! curves go out and back in as JSON through a versioned, If-Match-checked scene edit; bad
 //! input is refused with the field named.
 
-use axum::body::Body;
-use axum::http::{header, Method, Request, StatusCode};
+use axum::http::{header, Method, StatusCode};
 use axum::Router;
 use base64::Engine as _;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
-use std::path::{Path, PathBuf};
-use std::process::Command;
 use strata::compute::Compute;
 use strata::edits::{synthesize, TileEdits};
 use strata::scene::{Element, Scene};
@@ -20,7 +16,8 @@ use strata::terrain::{TileKey, WorldParams, WorldPlan};
 use strata::volume::element::{solve_volume, VolumeSpec};
 use strata::volume::mesh_import::{triangles_to_glb, write_glb, Mat4, IDENTITY};
 use strata::volume::pipeline::scenes;
-use tower::ServiceExt;
+
+mod common;
 
 const SEED: u64 = 7;
 
@@ -31,18 +28,8 @@ async fn send(
     headers: &[(&str, &str)],
     body: Vec<u8>,
 ) -> (StatusCode, axum::http::HeaderMap, Vec<u8>) {
-    let mut req = Request::builder().method(method).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, *v);
-    }
-    let res = app
-        .clone()
-        .oneshot(req.body(Body::from(body)).expect("request"))
-        .await
-        .expect("infallible");
-    let (status, headers) = (res.status(), res.headers().clone());
-    let body = res.into_body().collect().await.expect("body").to_bytes();
-    (status, headers, body.to_vec())
+    let r = common::oneshot::send(app, method, uri, headers, Some(&body)).await;
+    (r.status, r.headers, r.body)
 }
 
 fn json_of(body: &[u8]) -> Value {
@@ -340,34 +327,8 @@ async fn bad_glb_is_refused_with_the_field_named() {
     assert_eq!(e.pointer, "/volumes/0/expand_curves/step_m");
 }
 
-fn js_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests")
-        .join("js")
-}
-
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_region_mesh_glb_passes_the_khronos_validator() {
-    match Command::new("node").arg("--version").output() {
-        Ok(o) if o.status.success() => {}
-        other => panic!("Node.js is required for the glTF validator (install Node 18+): {other:?}"),
-    }
-    if !js_dir()
-        .join("node_modules")
-        .join("gltf-validator")
-        .is_dir()
-    {
-        let out = Command::new("npm")
-            .args(["ci", "--no-audit", "--no-fund", "--prefix"])
-            .arg(js_dir())
-            .output()
-            .expect("npm could not be started; install npm");
-        assert!(
-            out.status.success(),
-            "npm ci failed: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-    }
     let ground = ground_at(32, 24);
     let app = app(AppState::new(Compute::cpu()));
     let (id, _) = create(&app, json!({ "volumes": [arch_element(ground)] })).await;
@@ -400,23 +361,7 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
         assert_eq!(s.as_u16(), status, "{u}");
         assert_eq!(field_of(&b), field, "{u}");
     }
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("strata-volume-glb-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join("arch.glb");
-    std::fs::write(&path, &glb).expect("write");
-    let out = Command::new("node")
-        .arg(js_dir().join("validate.mjs"))
-        .arg(&path)
-        .output()
-        .expect("run node");
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    println!("{stdout}");
-    let reports: Vec<Value> = stdout
-        .lines()
-        .filter_map(|l| l.strip_prefix("STRATA_GLTF_REPORT "))
-        .map(|j| serde_json::from_str(j).expect("report"))
-        .collect();
+    let reports = common::gltf::validate("volume-glb", &[("arch.glb".to_string(), glb)]);
     assert_eq!(reports.len(), 1);
     assert_eq!(reports[0]["errors"], 0, "validator errors: {}", reports[0]);
     let triangles = reports[0]["triangles"].as_u64().unwrap_or(0);
@@ -424,8 +369,6 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
         triangles > 1000,
         "the arch region has a real mesh: {triangles}"
     );
-    assert!(out.status.success());
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

@@ -3,6 +3,7 @@
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
+pub mod gltf;
 pub mod oneshot;
 
 use std::ffi::OsStr;
