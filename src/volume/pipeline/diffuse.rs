@@ -109,25 +109,42 @@ pub(crate) fn rows(dims: [usize; 3], y: usize, z: usize) -> Rows {
     }
 }
 
-/// The row `c` shifted by one sample towards −x (`east[x] = c[x + 1]`) and towards +x
-/// (`west[x] = c[x − 1]`), the border sample repeated (Neumann).
-#[inline]
-pub(crate) fn shifted(c: &[f32], east: &mut [f32], west: &mut [f32]) {
-    let nx = c.len();
-    east[..nx - 1].copy_from_slice(&c[1..]);
-    east[nx - 1] = c[nx - 1];
-    west[1..nx].copy_from_slice(&c[..nx - 1]);
-    west[0] = c[0];
+/// The Laplace update of one sample from its value `v`, the east and west neighbours `e`, `w`
+/// and the up, down, north and south ones: `v + (Σ_nb (v_nb − v) + b)·weight` (`b` ignored when
+/// `RHS` is false), `v` itself when `fixed != 0`. At a Neumann border the caller passes `v` as
+/// the missing neighbour, whose difference is then zero.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn laplace_at<const RHS: bool>(
+    v: f32,
+    e: f32,
+    w: f32,
+    u: f32,
+    d: f32,
+    no: f32,
+    so: f32,
+    b: f32,
+    fixed: u8,
+    weight: f32,
+) -> f32 {
+    let acc = (e - v) + (w - v) + (u - v) + (d - v) + (no - v) + (so - v);
+    let nv = if RHS {
+        v + (acc + b) * weight
+    } else {
+        v + acc * weight
+    };
+    keep_fixed(fixed, v, nv)
 }
 
-/// The Laplace update of one row: `dst = v + (Σ_nb (v_nb − v) + b)·w` at free samples (`b`
-/// omitted when `RHS` is false), `v` at fixed ones. All slices have the row's length.
+/// The Laplace update of one row (see [`laplace_at`]): `c` is the row itself, `u`, `d`, `no`,
+/// `so` the rows up, down, north and south (the row itself at a Neumann border), `b` the
+/// right-hand side (empty when `RHS` is false). The x neighbours are read as the row shifted by
+/// one sample, so the interior loop is a plain vectorisable pass over equal-length slices; the
+/// two border samples repeat themselves as their missing neighbour (Neumann).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn laplace_row<const RHS: bool>(
     c: &[f32],
-    e: &[f32],
-    w: &[f32],
     u: &[f32],
     d: &[f32],
     no: &[f32],
@@ -138,27 +155,35 @@ pub(crate) fn laplace_row<const RHS: bool>(
     dst: &mut [f32],
 ) {
     let nx = dst.len();
-    let (c, e, w, u, d, no, so, fx) = (
-        &c[..nx],
-        &e[..nx],
-        &w[..nx],
-        &u[..nx],
-        &d[..nx],
-        &no[..nx],
-        &so[..nx],
-        &fx[..nx],
-    );
+    let (c, u, d, no, so, fx) = (&c[..nx], &u[..nx], &d[..nx], &no[..nx], &so[..nx], &fx[..nx]);
     let b = &b[..if RHS { nx } else { 0 }];
-    for x in 0..nx {
-        let v = c[x];
-        let acc = (e[x] - v) + (w[x] - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v);
-        let nv = if RHS {
-            v + (acc + b[x]) * weight
-        } else {
-            v + acc * weight
-        };
-        dst[x] = keep_fixed(fx[x], v, nv);
+    let bx = |x: usize| if RHS { b[x] } else { 0.0 };
+    if nx == 1 {
+        dst[0] = laplace_at::<RHS>(c[0], c[0], c[0], u[0], d[0], no[0], so[0], bx(0), fx[0], weight);
+        return;
     }
+    let m = nx - 2;
+    {
+        let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
+        let (u, d, no, so, fxi) = (
+            &u[1..nx - 1],
+            &d[1..nx - 1],
+            &no[1..nx - 1],
+            &so[1..nx - 1],
+            &fx[1..nx - 1],
+        );
+        let bi = &b[if RHS { 1 } else { 0 }..if RHS { nx - 1 } else { 0 }];
+        let out = &mut dst[1..nx - 1];
+        for x in 0..m {
+            let bv = if RHS { bi[x] } else { 0.0 };
+            out[x] = laplace_at::<RHS>(
+                cv[x], ce[x], cw[x], u[x], d[x], no[x], so[x], bv, fxi[x], weight,
+            );
+        }
+    }
+    dst[0] = laplace_at::<RHS>(c[0], c[1], c[0], u[0], d[0], no[0], so[0], bx(0), fx[0], weight);
+    let l = nx - 1;
+    dst[l] = laplace_at::<RHS>(c[l], c[l], c[l - 1], u[l], d[l], no[l], so[l], bx(l), fx[l], weight);
 }
 
 /// `v` where `fixed != 0`, else `nv`, as a branch-free bit blend: the loops compute `nv` for
@@ -209,23 +234,18 @@ pub(crate) fn laplace_sweep(
 ) {
     let [nx, ny, _] = dims;
     par_slabs_multi(outs, nx * ny, |z0, out| {
-        let (mut east, mut west) = (vec![0.0f32; nx], vec![0.0f32; nx]);
         for zl in 0..out[0].len() / (nx * ny) {
             for y in 0..ny {
                 let r = rows(dims, y, z0 + zl);
                 let ol = zl * nx * ny + y * nx;
                 let fx = &fixed[r.o..r.o + nx];
                 for (ch, src) in src.iter().enumerate() {
-                    let c = &src[r.o..r.o + nx];
-                    shifted(c, &mut east, &mut west);
                     let row = |o: usize| &src[o..o + nx];
                     let dst = &mut out[ch][ol..ol + nx];
-                    let (u, d, no, so) = (row(r.u), row(r.d), row(r.n), row(r.s));
+                    let (c, u, d, no, so) = (row(r.o), row(r.u), row(r.d), row(r.n), row(r.s));
                     match rhs {
                         Some(b) => laplace_row::<true>(
                             c,
-                            &east,
-                            &west,
                             u,
                             d,
                             no,
@@ -235,19 +255,7 @@ pub(crate) fn laplace_sweep(
                             weight,
                             dst,
                         ),
-                        None => laplace_row::<false>(
-                            c,
-                            &east,
-                            &west,
-                            u,
-                            d,
-                            no,
-                            so,
-                            &[],
-                            fx,
-                            weight,
-                            dst,
-                        ),
+                        None => laplace_row::<false>(c, u, d, no, so, &[], fx, weight, dst),
                     }
                 }
             }
@@ -269,6 +277,63 @@ fn edge_weights(a: [&[f32]; 3], b: [&[f32]; 3], qk: f32, out: &mut [f32]) {
         let q = (d0 * d0 + d1 * d1 + d2 * d2) * qk;
         out[x] = 1.0 / (1.0 + q * q);
     }
+}
+
+/// The Perona–Malik update of one sample from its value `v`, its six neighbours
+/// `[e, w, u, d, n, s]` and the coefficients of the six edges: `v + ⅙ Σ c_nb (v_nb − v)`, `v`
+/// itself when `fixed != 0`.
+#[inline(always)]
+fn pm_at(v: f32, nb: [f32; 6], c: [f32; 6], fixed: u8) -> f32 {
+    let acc = c[0] * (nb[0] - v)
+        + c[1] * (nb[1] - v)
+        + c[2] * (nb[2] - v)
+        + c[3] * (nb[3] - v)
+        + c[4] * (nb[4] - v)
+        + c[5] * (nb[5] - v);
+    keep_fixed(fixed, v, v + acc * (1.0 / 6.0))
+}
+
+/// The Perona–Malik update of one row of one channel: `r = [row, up, down, north, south]`
+/// (the row itself where a neighbour is missing), `k = [x edges, up, down, north, south]`
+/// coefficients, the x edges `k[0][x]` = edge `(x − 1, x)` with `nx + 1` entries whose first and
+/// last (Neumann borders) are 1. The interior is one vectorisable pass over shifted slices; the
+/// border samples use themselves as the missing neighbour, whose term is then `1·0`.
+#[inline(always)]
+fn pm_row(r: [&[f32]; 5], k: [&[f32]; 5], fx: &[u8], dst: &mut [f32]) {
+    let nx = dst.len();
+    let (c, u, d, no, so) = (&r[0][..nx], &r[1][..nx], &r[2][..nx], &r[3][..nx], &r[4][..nx]);
+    let (kx, ku, kd, kn, ks) = (&k[0][..nx + 1], &k[1][..nx], &k[2][..nx], &k[3][..nx], &k[4][..nx]);
+    let fx = &fx[..nx];
+    let at = |x: usize, e: f32, w: f32| {
+        pm_at(
+            c[x],
+            [e, w, u[x], d[x], no[x], so[x]],
+            [kx[x + 1], kx[x], ku[x], kd[x], kn[x], ks[x]],
+            fx[x],
+        )
+    };
+    if nx == 1 {
+        dst[0] = at(0, c[0], c[0]);
+        return;
+    }
+    let m = nx - 2;
+    {
+        let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
+        let (u, d, no, so, fxi) = (&u[1..nx - 1], &d[1..nx - 1], &no[1..nx - 1], &so[1..nx - 1], &fx[1..nx - 1]);
+        let (ke, kw) = (&kx[2..nx], &kx[1..nx - 1]);
+        let (ku, kd, kn, ks) = (&ku[1..nx - 1], &kd[1..nx - 1], &kn[1..nx - 1], &ks[1..nx - 1]);
+        let out = &mut dst[1..nx - 1];
+        for x in 0..m {
+            out[x] = pm_at(
+                cv[x],
+                [ce[x], cw[x], u[x], d[x], no[x], so[x]],
+                [ke[x], kw[x], ku[x], kd[x], kn[x], ks[x]],
+                fxi[x],
+            );
+        }
+    }
+    dst[0] = at(0, c[1], c[0]);
+    dst[nx - 1] = at(nx - 1, c[nx - 1], c[nx - 2]);
 }
 
 /// The Perona–Malik sweep of the z-slab starting at `z0` into `out` (three channels).
@@ -303,8 +368,6 @@ fn pm_slab(
     let mut cy_hi = vec![1.0f32; nx];
     // x edges: `cx[x]` is the edge (x − 1, x); `cx[0]` and `cx[nx]` are the Neumann borders.
     let mut cx = vec![1.0f32; nx + 1];
-    let mut east = [vec![0.0f32; nx], vec![0.0f32; nx], vec![0.0f32; nx]];
-    let mut west = [vec![0.0f32; nx], vec![0.0f32; nx], vec![0.0f32; nx]];
     for zl in 0..nzs {
         let z = z0 + zl;
         cy_lo.fill(1.0);
@@ -322,36 +385,24 @@ fn pm_slab(
             } else {
                 czh.fill(1.0);
             }
-            for ch in 0..3 {
-                shifted(c[ch], &mut east[ch], &mut west[ch]);
-            }
             edge_weights(
                 [&c[0][..nx - 1], &c[1][..nx - 1], &c[2][..nx - 1]],
                 [&c[0][1..], &c[1][1..], &c[2][1..]],
                 qk,
                 &mut cx[1..nx],
             );
-            let (cw, ce) = (&cx[..nx], &cx[1..nx + 1]);
             let (cu, cd) = (&cy_hi[..nx], &cy_lo[..nx]);
             let (cn, cs) = (&cz_hi[y * nx..y * nx + nx], &cz_lo[y * nx..y * nx + nx]);
             let fx = &fixed[r.o..r.o + nx];
             let ol = zl * slice + y * nx;
             for ch in 0..3 {
                 let row = |o: usize| &src[ch][o..o + nx];
-                let (cc, e, w) = (c[ch], &east[ch][..nx], &west[ch][..nx]);
-                let (u, dn, no, so) = (row(r.u), row(r.d), row(r.n), row(r.s));
-                let dst = &mut out[ch][ol..ol + nx];
-                for x in 0..nx {
-                    let v = cc[x];
-                    let acc = ce[x] * (e[x] - v)
-                        + cw[x] * (w[x] - v)
-                        + cu[x] * (u[x] - v)
-                        + cd[x] * (dn[x] - v)
-                        + cn[x] * (no[x] - v)
-                        + cs[x] * (so[x] - v);
-                    let nv = v + acc * (1.0 / 6.0);
-                    dst[x] = keep_fixed(fx[x], v, nv);
-                }
+                pm_row(
+                    [c[ch], row(r.u), row(r.d), row(r.n), row(r.s)],
+                    [&cx[..], cu, cd, cn, cs],
+                    fx,
+                    &mut out[ch][ol..ol + nx],
+                );
             }
             std::mem::swap(&mut cy_lo, &mut cy_hi);
         }
