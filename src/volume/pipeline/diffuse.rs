@@ -42,6 +42,7 @@
 
 use super::grid::par_slabs_multi;
 pub use super::multigrid::harmonic_fill;
+use super::multigrid::harmonic_fill_with;
 use rayon::prelude::*;
 
 /// Most samples of the coarsest level of the cascade and the V-cycles.
@@ -416,6 +417,18 @@ pub fn sweeps(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], pm: Option
         return;
     }
     let mut other: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0; c.len()]).collect();
+    sweeps_with(dims, chans, fixed, pm, n, &mut other);
+}
+
+/// [`sweeps`] ping-ponging through a caller-owned scratch field of the same shape as `chans`.
+fn sweeps_with(
+    dims: [usize; 3],
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    pm: Option<f32>,
+    n: u32,
+    other: &mut [Vec<f32>],
+) {
     for _ in 0..n {
         {
             let src: Vec<&[f32]> = chans.iter().map(|c| c.as_slice()).collect();
@@ -510,12 +523,14 @@ pub fn diffuse_normals(
     p: &DiffuseParams,
     warm: bool,
 ) {
+    // One scratch field for the fill and the sweeps.
+    let mut tmp: Vec<Vec<f32>> = n.iter().map(|c| vec![0.0f32; c.len()]).collect();
     if warm {
-        sweeps(dims, n, fixed, None, p.fine_sweeps);
+        sweeps_with(dims, n, fixed, None, p.fine_sweeps, &mut tmp);
     } else {
-        harmonic_fill(dims, n, fixed, p);
+        harmonic_fill_with(dims, n, fixed, p, &mut tmp);
     }
     normalize_field(n, fixed);
-    sweeps(dims, n, fixed, Some(p.k), p.pm_sweeps);
+    sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp);
     normalize_field(n, fixed);
 }

@@ -416,17 +416,30 @@ fn vcycle(
 /// fixed ones: the cascade, then `p.vcycles` V-cycles (module docs). Channels without any fixed
 /// sample become 0.
 pub fn harmonic_fill(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffuseParams) {
+    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
+    harmonic_fill_with(dims, chans, fixed, p, &mut tmp);
+}
+
+/// [`harmonic_fill`] with a caller-owned scratch field of the same shape as `chans` (its
+/// contents are overwritten).
+pub(crate) fn harmonic_fill_with(
+    dims: [usize; 3],
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    p: &DiffuseParams,
+    tmp: &mut [Vec<f32>],
+) {
     if chans.is_empty() {
         return;
     }
     let mut levels = hierarchy(dims, fixed, chans.len());
-    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
-    cascade(0, dims, chans, &mut tmp, fixed, &mut levels, p);
+    let tmp = &mut tmp[..chans.len()];
+    cascade(0, dims, chans, tmp, fixed, &mut levels, p);
     for _ in 0..p.vcycles {
         vcycle(
             dims,
             chans,
-            &mut tmp,
+            tmp,
             None,
             fixed,
             &mut levels,

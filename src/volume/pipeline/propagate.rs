@@ -281,32 +281,37 @@ pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]
         -((nx * ny) as isize),
     ];
     wavefront(dims, omega_r, |i, li, bits, layer| {
-        let mut votes = [(NO_MATERIAL, 0.0f32); 6];
-        let mut nv = 0;
-        let mut total = 0.0f32;
+        // The lower-layer neighbours that hold a material, in the order E, W, U, D, N, S; an
+        // absent one votes weight 0 for no material, which changes no sum below.
+        let mut m = [NO_MATERIAL; 6];
+        let mut c = [0.0f32; 6];
         for (k, off) in offsets.iter().enumerate() {
-            if bits & (1 << k) == 0 {
-                continue;
-            }
-            let j = i.wrapping_add_signed(*off);
-            if layer[j] < li && material[j] != NO_MATERIAL {
-                total += conf[j];
-                match votes[..nv].iter_mut().find(|(m, _)| *m == material[j]) {
-                    Some(v) => v.1 += conf[j],
-                    None => {
-                        votes[nv] = (material[j], conf[j]);
-                        nv += 1;
-                    }
+            if bits & (1 << k) != 0 {
+                let j = i.wrapping_add_signed(*off);
+                if layer[j] < li && material[j] != NO_MATERIAL {
+                    m[k] = material[j];
+                    c[k] = conf[j];
                 }
             }
         }
-        let mut best = (NO_MATERIAL, -1.0f32);
-        for &(m, w) in &votes[..nv] {
-            if w > best.1 || (w == best.1 && m < best.0) {
-                best = (m, w);
-            }
-        }
+        let total = ((((c[0] + c[1]) + c[2]) + c[3]) + c[4]) + c[5];
         if total > 0.0 {
+            // Each material's summed confidence (in neighbour order), the largest sum winning
+            // and ties going to the smaller id.
+            let mut best = (NO_MATERIAL, -1.0f32);
+            for k in 0..6 {
+                if m[k] != NO_MATERIAL {
+                    let mut w = 0.0f32;
+                    for q in 0..6 {
+                        if m[q] == m[k] {
+                            w += c[q];
+                        }
+                    }
+                    if w > best.1 || (w == best.1 && m[k] < best.0) {
+                        best = (m[k], w);
+                    }
+                }
+            }
             material[i] = best.0;
             conf[i] = (best.1 / total).clamp(0.0, 1.0);
         }
