@@ -156,11 +156,29 @@ pub(crate) fn laplace_row<const RHS: bool>(
     dst: &mut [f32],
 ) {
     let nx = dst.len();
-    let (c, u, d, no, so, fx) = (&c[..nx], &u[..nx], &d[..nx], &no[..nx], &so[..nx], &fx[..nx]);
+    let (c, u, d, no, so, fx) = (
+        &c[..nx],
+        &u[..nx],
+        &d[..nx],
+        &no[..nx],
+        &so[..nx],
+        &fx[..nx],
+    );
     let b = &b[..if RHS { nx } else { 0 }];
     let bx = |x: usize| if RHS { b[x] } else { 0.0 };
     if nx == 1 {
-        dst[0] = laplace_at::<RHS>(c[0], c[0], c[0], u[0], d[0], no[0], so[0], bx(0), fx[0], weight);
+        dst[0] = laplace_at::<RHS>(
+            c[0],
+            c[0],
+            c[0],
+            u[0],
+            d[0],
+            no[0],
+            so[0],
+            bx(0),
+            fx[0],
+            weight,
+        );
         return;
     }
     let m = nx - 2;
@@ -182,9 +200,31 @@ pub(crate) fn laplace_row<const RHS: bool>(
             );
         }
     }
-    dst[0] = laplace_at::<RHS>(c[0], c[1], c[0], u[0], d[0], no[0], so[0], bx(0), fx[0], weight);
+    dst[0] = laplace_at::<RHS>(
+        c[0],
+        c[1],
+        c[0],
+        u[0],
+        d[0],
+        no[0],
+        so[0],
+        bx(0),
+        fx[0],
+        weight,
+    );
     let l = nx - 1;
-    dst[l] = laplace_at::<RHS>(c[l], c[l], c[l - 1], u[l], d[l], no[l], so[l], bx(l), fx[l], weight);
+    dst[l] = laplace_at::<RHS>(
+        c[l],
+        c[l],
+        c[l - 1],
+        u[l],
+        d[l],
+        no[l],
+        so[l],
+        bx(l),
+        fx[l],
+        weight,
+    );
 }
 
 /// `v` where `fixed != 0`, else `nv`, as a branch-free bit blend: the loops compute `nv` for
@@ -302,8 +342,20 @@ fn pm_at(v: f32, nb: [f32; 6], c: [f32; 6], fixed: u8) -> f32 {
 #[inline(always)]
 fn pm_row(r: [&[f32]; 5], k: [&[f32]; 5], fx: &[u8], dst: &mut [f32]) {
     let nx = dst.len();
-    let (c, u, d, no, so) = (&r[0][..nx], &r[1][..nx], &r[2][..nx], &r[3][..nx], &r[4][..nx]);
-    let (kx, ku, kd, kn, ks) = (&k[0][..nx + 1], &k[1][..nx], &k[2][..nx], &k[3][..nx], &k[4][..nx]);
+    let (c, u, d, no, so) = (
+        &r[0][..nx],
+        &r[1][..nx],
+        &r[2][..nx],
+        &r[3][..nx],
+        &r[4][..nx],
+    );
+    let (kx, ku, kd, kn, ks) = (
+        &k[0][..nx + 1],
+        &k[1][..nx],
+        &k[2][..nx],
+        &k[3][..nx],
+        &k[4][..nx],
+    );
     let fx = &fx[..nx];
     let at = |x: usize, e: f32, w: f32| {
         pm_at(
@@ -320,9 +372,20 @@ fn pm_row(r: [&[f32]; 5], k: [&[f32]; 5], fx: &[u8], dst: &mut [f32]) {
     let m = nx - 2;
     {
         let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
-        let (u, d, no, so, fxi) = (&u[1..nx - 1], &d[1..nx - 1], &no[1..nx - 1], &so[1..nx - 1], &fx[1..nx - 1]);
+        let (u, d, no, so, fxi) = (
+            &u[1..nx - 1],
+            &d[1..nx - 1],
+            &no[1..nx - 1],
+            &so[1..nx - 1],
+            &fx[1..nx - 1],
+        );
         let (ke, kw) = (&kx[2..nx], &kx[1..nx - 1]);
-        let (ku, kd, kn, ks) = (&ku[1..nx - 1], &kd[1..nx - 1], &kn[1..nx - 1], &ks[1..nx - 1]);
+        let (ku, kd, kn, ks) = (
+            &ku[1..nx - 1],
+            &kd[1..nx - 1],
+            &kn[1..nx - 1],
+            &ks[1..nx - 1],
+        );
         let out = &mut dst[1..nx - 1];
         for x in 0..m {
             out[x] = pm_at(

@@ -304,7 +304,14 @@ fn residual_restrict(
 /// itself where a neighbour is missing), 0 at fixed samples, into `out`.
 fn residual_row(r: [&[f32]; 5], b: Option<&[f32]>, fx: &[u8], out: &mut [f32]) {
     let nx = out.len();
-    let (c, u, d, no, so, fx) = (&r[0][..nx], &r[1][..nx], &r[2][..nx], &r[3][..nx], &r[4][..nx], &fx[..nx]);
+    let (c, u, d, no, so, fx) = (
+        &r[0][..nx],
+        &r[1][..nx],
+        &r[2][..nx],
+        &r[3][..nx],
+        &r[4][..nx],
+        &fx[..nx],
+    );
     // The Laplacian in the summation order of the sweeps (`diffuse::laplace_at`).
     let lap = |v: f32, e: f32, w: f32, x: usize| {
         (e - v) + (w - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v)
@@ -315,16 +322,27 @@ fn residual_row(r: [&[f32]; 5], b: Option<&[f32]>, fx: &[u8], out: &mut [f32]) {
         let m = nx - 2;
         {
             let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
-            let (u, d, no, so, fxi) = (&u[1..nx - 1], &d[1..nx - 1], &no[1..nx - 1], &so[1..nx - 1], &fx[1..nx - 1]);
+            let (u, d, no, so, fxi) = (
+                &u[1..nx - 1],
+                &d[1..nx - 1],
+                &no[1..nx - 1],
+                &so[1..nx - 1],
+                &fx[1..nx - 1],
+            );
             let o = &mut out[1..nx - 1];
             for x in 0..m {
                 let v = cv[x];
-                let l = (ce[x] - v) + (cw[x] - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v);
+                let l =
+                    (ce[x] - v) + (cw[x] - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v);
                 o[x] = keep_fixed(fxi[x], 0.0, l);
             }
         }
         out[0] = keep_fixed(fx[0], 0.0, lap(c[0], c[1], c[0], 0));
-        out[nx - 1] = keep_fixed(fx[nx - 1], 0.0, lap(c[nx - 1], c[nx - 1], c[nx - 2], nx - 1));
+        out[nx - 1] = keep_fixed(
+            fx[nx - 1],
+            0.0,
+            lap(c[nx - 1], c[nx - 1], c[nx - 2], nx - 1),
+        );
     }
     if let Some(b) = b {
         let b = &b[..nx];

@@ -355,23 +355,30 @@ pub fn generate(
     let (mat, n) = overlapped(
         &mut times,
         (|t| &mut t.material_ms, || material_stage(&grid, &v)),
-        (|t| &mut t.normal_diffusion_ms, || {
-            let mut n: Vec<Vec<f32>> = v.normal.to_vec();
-            diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
-            let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
-            [n0, n1, n2]
-        }),
+        (
+            |t| &mut t.normal_diffusion_ms,
+            || {
+                let mut n: Vec<Vec<f32>> = v.normal.to_vec();
+                diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
+                let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+                [n0, n1, n2]
+            },
+        ),
     );
     let (surf, mut r) = overlapped(
         &mut times,
-        (|t| &mut t.surface_propagation_ms, || {
-            surface_stage(&grid, &v, &n)
-        }),
-        (|t| &mut t.noise_diffusion_ms, || {
-            let mut r = vec![v.alpha.clone(), v.beta.clone()];
-            harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
-            r
-        }),
+        (
+            |t| &mut t.surface_propagation_ms,
+            || surface_stage(&grid, &v, &n),
+        ),
+        (
+            |t| &mut t.noise_diffusion_ms,
+            || {
+                let mut r = vec![v.alpha.clone(), v.beta.clone()];
+                harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
+                r
+            },
+        ),
     );
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
@@ -515,12 +522,23 @@ pub fn regenerate(
     let (mat, surf) = overlapped(
         &mut times,
         (|t| &mut t.material_ms, || material_stage(&grid, &v)),
-        (|t| &mut t.surface_propagation_ms, || {
-            surface_stage(&grid, &v, &normal)
-        }),
+        (
+            |t| &mut t.surface_propagation_ms,
+            || surface_stage(&grid, &v, &normal),
+        ),
     );
     Ok((
-        finish(&grid, v, normal, (alpha, beta), mat, surf, params, times, run),
+        finish(
+            &grid,
+            v,
+            normal,
+            (alpha, beta),
+            mat,
+            surf,
+            params,
+            times,
+            run,
+        ),
         changed,
     ))
 }
