@@ -334,21 +334,24 @@ fn pm_at(v: f32, nb: [f32; 6], c: [f32; 6], fixed: u8) -> f32 {
     keep_fixed(fixed, v, v + acc * (1.0 / 6.0))
 }
 
-/// The Perona–Malik update of one row of one channel: `r = [row, up, down, north, south]`
-/// (the row itself where a neighbour is missing), `k = [x edges, up, down, north, south]`
-/// coefficients, the x edges `k[0][x]` = edge `(x − 1, x)` with `nx + 1` entries whose first and
-/// last (Neumann borders) are 1. The interior is one vectorisable pass over shifted slices; the
-/// border samples use themselves as the missing neighbour, whose term is then `1·0`.
+/// The Perona–Malik update of one row of all three channels: `r[ch] = [row, up, down, north,
+/// south]` (the row itself where a neighbour is missing), `k = [x edges, up, down, north,
+/// south]` coefficients shared by the channels, the x edges `k[0][x]` = edge `(x − 1, x)` with
+/// `nx + 1` entries whose first and last (Neumann borders) are 1. The interior is one
+/// vectorisable pass over shifted slices that loads every coefficient and mask byte once for the
+/// three channels (the outputs are separate parameters so that they are known not to alias the
+/// inputs); the border samples use themselves as the missing neighbour, whose term is then `1·0`.
 #[inline(always)]
-fn pm_row(r: [&[f32]; 5], k: [&[f32]; 5], fx: &[u8], dst: &mut [f32]) {
-    let nx = dst.len();
-    let (c, u, d, no, so) = (
-        &r[0][..nx],
-        &r[1][..nx],
-        &r[2][..nx],
-        &r[3][..nx],
-        &r[4][..nx],
-    );
+fn pm_row3(
+    r: [[&[f32]; 5]; 3],
+    k: [&[f32]; 5],
+    fx: &[u8],
+    d0: &mut [f32],
+    d1: &mut [f32],
+    d2: &mut [f32],
+) {
+    let nx = d0.len();
+    let (d1, d2) = (&mut d1[..nx], &mut d2[..nx]);
     let (kx, ku, kd, kn, ks) = (
         &k[0][..nx + 1],
         &k[1][..nx],
@@ -357,47 +360,84 @@ fn pm_row(r: [&[f32]; 5], k: [&[f32]; 5], fx: &[u8], dst: &mut [f32]) {
         &k[4][..nx],
     );
     let fx = &fx[..nx];
-    let at = |x: usize, e: f32, w: f32| {
+    let border = |x: usize, e: usize, w: usize, ch: usize| {
+        let [c, u, d, no, so] = r[ch];
         pm_at(
             c[x],
-            [e, w, u[x], d[x], no[x], so[x]],
+            [c[e], c[w], u[x], d[x], no[x], so[x]],
             [kx[x + 1], kx[x], ku[x], kd[x], kn[x], ks[x]],
             fx[x],
         )
     };
     if nx == 1 {
-        dst[0] = at(0, c[0], c[0]);
+        let v = [border(0, 0, 0, 0), border(0, 0, 0, 1), border(0, 0, 0, 2)];
+        (d0[0], d1[0], d2[0]) = (v[0], v[1], v[2]);
         return;
     }
-    let m = nx - 2;
-    {
-        let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
-        let (u, d, no, so, fxi) = (
-            &u[1..nx - 1],
-            &d[1..nx - 1],
-            &no[1..nx - 1],
-            &so[1..nx - 1],
-            &fx[1..nx - 1],
-        );
-        let (ke, kw) = (&kx[2..nx], &kx[1..nx - 1]);
-        let (ku, kd, kn, ks) = (
-            &ku[1..nx - 1],
-            &kd[1..nx - 1],
-            &kn[1..nx - 1],
-            &ks[1..nx - 1],
-        );
-        let out = &mut dst[1..nx - 1];
-        for x in 0..m {
-            out[x] = pm_at(
-                cv[x],
-                [ce[x], cw[x], u[x], d[x], no[x], so[x]],
-                [ke[x], kw[x], ku[x], kd[x], kn[x], ks[x]],
-                fxi[x],
-            );
-        }
+    let l = nx - 1;
+    let first = [border(0, 1, 0, 0), border(0, 1, 0, 1), border(0, 1, 0, 2)];
+    let last = [
+        border(l, l, l - 1, 0),
+        border(l, l, l - 1, 1),
+        border(l, l, l - 1, 2),
+    ];
+    interior3(
+        r,
+        [
+            &kx[2..],
+            &kx[1..l],
+            &ku[1..l],
+            &kd[1..l],
+            &kn[1..l],
+            &ks[1..l],
+        ],
+        &fx[1..l],
+        &mut d0[1..l],
+        &mut d1[1..l],
+        &mut d2[1..l],
+    );
+    (d0[0], d1[0], d2[0]) = (first[0], first[1], first[2]);
+    (d0[l], d1[l], d2[l]) = (last[0], last[1], last[2]);
+}
+
+/// The interior samples `1..nx − 1` of [`pm_row3`]: `k` the six coefficient rows and `fx` the
+/// mask already cut to the interior, the outputs the interior of the three rows. Not inlined, so
+/// that the outputs keep their no-alias guarantee as parameters.
+#[inline(never)]
+fn interior3(
+    r: [[&[f32]; 5]; 3],
+    k: [&[f32]; 6],
+    fx: &[u8],
+    o0: &mut [f32],
+    o1: &mut [f32],
+    o2: &mut [f32],
+) {
+    let m = o0.len();
+    let (o1, o2, fx) = (&mut o1[..m], &mut o2[..m], &fx[..m]);
+    let k = k.map(|s| &s[..m]);
+    let [ke, kw, ku, kd, kn, ks] = k;
+    let cut = |ch: usize| {
+        let [c, u, d, no, so] = r[ch];
+        [
+            &c[2..m + 2],
+            &c[..m],
+            &c[1..m + 1],
+            &u[1..m + 1],
+            &d[1..m + 1],
+            &no[1..m + 1],
+            &so[1..m + 1],
+        ]
+    };
+    let [e0, w0, c0, u0, dn0, n0, s0] = cut(0);
+    let [e1, w1, c1, u1, dn1, n1, s1] = cut(1);
+    let [e2, w2, c2, u2, dn2, n2, s2] = cut(2);
+    for x in 0..m {
+        let kk = [ke[x], kw[x], ku[x], kd[x], kn[x], ks[x]];
+        let f = fx[x];
+        o0[x] = pm_at(c0[x], [e0[x], w0[x], u0[x], dn0[x], n0[x], s0[x]], kk, f);
+        o1[x] = pm_at(c1[x], [e1[x], w1[x], u1[x], dn1[x], n1[x], s1[x]], kk, f);
+        o2[x] = pm_at(c2[x], [e2[x], w2[x], u2[x], dn2[x], n2[x], s2[x]], kk, f);
     }
-    dst[0] = at(0, c[1], c[0]);
-    dst[nx - 1] = at(nx - 1, c[nx - 1], c[nx - 2]);
 }
 
 /// The Perona–Malik sweep of the z-slab starting at `z0` into `out` (three channels).
@@ -459,15 +499,21 @@ fn pm_slab(
             let (cn, cs) = (&cz_hi[y * nx..y * nx + nx], &cz_lo[y * nx..y * nx + nx]);
             let fx = &fixed[r.o..r.o + nx];
             let ol = zl * slice + y * nx;
-            for ch in 0..3 {
+            let rows5 = |ch: usize| {
                 let row = |o: usize| &src[ch][o..o + nx];
-                pm_row(
-                    [c[ch], row(r.u), row(r.d), row(r.n), row(r.s)],
-                    [&cx[..], cu, cd, cn, cs],
-                    fx,
-                    &mut out[ch][ol..ol + nx],
-                );
-            }
+                [c[ch], row(r.u), row(r.d), row(r.n), row(r.s)]
+            };
+            let [o0, o1, o2] = out else {
+                unreachable!("three output channels")
+            };
+            pm_row3(
+                [rows5(0), rows5(1), rows5(2)],
+                [&cx[..], cu, cd, cn, cs],
+                fx,
+                &mut o0[ol..ol + nx],
+                &mut o1[ol..ol + nx],
+                &mut o2[ol..ol + nx],
+            );
             std::mem::swap(&mut cy_lo, &mut cy_hi);
         }
         std::mem::swap(&mut cz_lo, &mut cz_hi);
