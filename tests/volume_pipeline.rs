@@ -8,7 +8,9 @@ use strata::volume::pipeline::diffuse::{
     dirichlet_energy, harmonic_fill, pm_energy, sweeps, DiffuseParams, K_PERONA_MALIK,
 };
 use strata::volume::pipeline::filter::gaussian;
-use strata::volume::pipeline::propagate::{neighbours, propagate_material, propagate_surface};
+use strata::volume::pipeline::propagate::{
+    l1_layers, layers, neighbours, propagate_material, propagate_surface, UNREACHED,
+};
 use strata::volume::pipeline::proxy::{curve_proxy, InputMesh, ProxyTriangle, Side};
 use strata::volume::pipeline::voxelize::{voxelize, NO_MATERIAL};
 use strata::volume::pipeline::{
@@ -886,4 +888,30 @@ fn arch_mesh_has_genus_one() {
         0,
         "χ = 2 − 2g = 0: genus 1, the arch's through-hole"
     );
+}
+
+#[test]
+fn l1_layers_equal_the_breadth_first_layers() {
+    // The propagations take their layers from the separable L1 distance; on the full grid it
+    // must equal the breadth-first search's layers exactly, for sparse, clustered and empty
+    // seed sets and a grid with an odd, thin axis.
+    for (dims, modulus) in [
+        ([17usize, 9, 13], 211usize),
+        ([6, 1, 23], 37),
+        ([12, 10, 8], 3),
+    ] {
+        let n = dims.iter().product::<usize>();
+        let seeds: Vec<u8> = (0..n)
+            .map(|i| u8::from((i * 7919) % modulus == 0))
+            .collect();
+        assert!(seeds.iter().any(|&s| s != 0));
+        let (_, bfs) = layers(dims, &seeds);
+        assert!(l1_layers(dims, &seeds) == bfs, "layers differ for {dims:?}");
+        assert!(
+            bfs.iter().any(|&l| l > 1),
+            "the layers grow beyond the seeds"
+        );
+    }
+    let empty = vec![0u8; 5 * 4 * 3];
+    assert!(l1_layers([5, 4, 3], &empty).iter().all(|&l| l == UNREACHED));
 }

@@ -93,7 +93,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             value["meets_target"] = json!(t.total_ms <= TARGET_MS_128);
         }
         let line = format!(
-            "  {:>3}×{:>3}×{:>3}: total {:8.2} ms (paper {:8.2} ms{}) | voxelize {:6.2} ({:5.2}) | normal diffusion {:7.2} ({:7.2}) | noise diffusion {:7.2} + material {:6.2} ({:7.2}) | surface propagation {:6.2} + filter {:6.2} ({:7.2}) | proxies {:5.2}{}\n      CPU time, all threads: total {:8.2} ms | voxelize {:6.2} | normal diffusion {:7.2} | noise diffusion {:7.2} | material {:6.2} (own thread, beside the surface propagation) | surface propagation {:6.2} | filter {:6.2}",
+            "  {:>3}×{:>3}×{:>3}: total {:8.2} ms (paper {:8.2} ms{}) | voxelize {:6.2} ({:5.2}) | normal diffusion {:7.2} ({:7.2}) | noise diffusion {:7.2} + material {:6.2} ({:7.2}) | surface propagation {:6.2} + filter {:6.2} ({:7.2}) | proxies {:5.2}{}\n      CPU time, all threads: total {:8.2} ms | voxelize {:6.2} | normal diffusion {:7.2} | noise diffusion {:7.2} | material {:6.2} (one worker, beside the normal diffusion) | surface propagation {:6.2} | filter {:6.2}",
             dims[0], dims[1], dims[2], t.total_ms, paper[7],
             ", incl. reconstruction and baking",
             t.voxelize_ms, paper[1], t.normal_diffusion_ms, paper[2], t.noise_diffusion_ms, t.material_ms, paper[3],

@@ -42,6 +42,7 @@
 
 use super::grid::par_slabs_multi;
 pub use super::multigrid::harmonic_fill;
+use super::multigrid::harmonic_fill_with;
 use rayon::prelude::*;
 
 /// Most samples of the coarsest level of the cascade and the V-cycles.
@@ -109,25 +110,42 @@ pub(crate) fn rows(dims: [usize; 3], y: usize, z: usize) -> Rows {
     }
 }
 
-/// The row `c` shifted by one sample towards −x (`east[x] = c[x + 1]`) and towards +x
-/// (`west[x] = c[x − 1]`), the border sample repeated (Neumann).
-#[inline]
-pub(crate) fn shifted(c: &[f32], east: &mut [f32], west: &mut [f32]) {
-    let nx = c.len();
-    east[..nx - 1].copy_from_slice(&c[1..]);
-    east[nx - 1] = c[nx - 1];
-    west[1..nx].copy_from_slice(&c[..nx - 1]);
-    west[0] = c[0];
+/// The Laplace update of one sample from its value `v`, the east and west neighbours `e`, `w`
+/// and the up, down, north and south ones: `v + (Σ_nb (v_nb − v) + b)·weight` (`b` ignored when
+/// `RHS` is false), `v` itself when `fixed != 0`. At a Neumann border the caller passes `v` as
+/// the missing neighbour, whose difference is then zero.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn laplace_at<const RHS: bool>(
+    v: f32,
+    e: f32,
+    w: f32,
+    u: f32,
+    d: f32,
+    no: f32,
+    so: f32,
+    b: f32,
+    fixed: u8,
+    weight: f32,
+) -> f32 {
+    let acc = (e - v) + (w - v) + (u - v) + (d - v) + (no - v) + (so - v);
+    let nv = if RHS {
+        v + (acc + b) * weight
+    } else {
+        v + acc * weight
+    };
+    keep_fixed(fixed, v, nv)
 }
 
-/// The Laplace update of one row: `dst = v + (Σ_nb (v_nb − v) + b)·w` at free samples (`b`
-/// omitted when `RHS` is false), `v` at fixed ones. All slices have the row's length.
+/// The Laplace update of one row (see [`laplace_at`]): `c` is the row itself, `u`, `d`, `no`,
+/// `so` the rows up, down, north and south (the row itself at a Neumann border), `b` the
+/// right-hand side (empty when `RHS` is false). The x neighbours are read as the row shifted by
+/// one sample, so the interior loop is a plain vectorisable pass over equal-length slices; the
+/// two border samples repeat themselves as their missing neighbour (Neumann).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn laplace_row<const RHS: bool>(
     c: &[f32],
-    e: &[f32],
-    w: &[f32],
     u: &[f32],
     d: &[f32],
     no: &[f32],
@@ -138,10 +156,8 @@ pub(crate) fn laplace_row<const RHS: bool>(
     dst: &mut [f32],
 ) {
     let nx = dst.len();
-    let (c, e, w, u, d, no, so, fx) = (
+    let (c, u, d, no, so, fx) = (
         &c[..nx],
-        &e[..nx],
-        &w[..nx],
         &u[..nx],
         &d[..nx],
         &no[..nx],
@@ -149,16 +165,66 @@ pub(crate) fn laplace_row<const RHS: bool>(
         &fx[..nx],
     );
     let b = &b[..if RHS { nx } else { 0 }];
-    for x in 0..nx {
-        let v = c[x];
-        let acc = (e[x] - v) + (w[x] - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v);
-        let nv = if RHS {
-            v + (acc + b[x]) * weight
-        } else {
-            v + acc * weight
-        };
-        dst[x] = keep_fixed(fx[x], v, nv);
+    let bx = |x: usize| if RHS { b[x] } else { 0.0 };
+    if nx == 1 {
+        dst[0] = laplace_at::<RHS>(
+            c[0],
+            c[0],
+            c[0],
+            u[0],
+            d[0],
+            no[0],
+            so[0],
+            bx(0),
+            fx[0],
+            weight,
+        );
+        return;
     }
+    let m = nx - 2;
+    {
+        let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
+        let (u, d, no, so, fxi) = (
+            &u[1..nx - 1],
+            &d[1..nx - 1],
+            &no[1..nx - 1],
+            &so[1..nx - 1],
+            &fx[1..nx - 1],
+        );
+        let bi = &b[if RHS { 1 } else { 0 }..if RHS { nx - 1 } else { 0 }];
+        let out = &mut dst[1..nx - 1];
+        for x in 0..m {
+            let bv = if RHS { bi[x] } else { 0.0 };
+            out[x] = laplace_at::<RHS>(
+                cv[x], ce[x], cw[x], u[x], d[x], no[x], so[x], bv, fxi[x], weight,
+            );
+        }
+    }
+    dst[0] = laplace_at::<RHS>(
+        c[0],
+        c[1],
+        c[0],
+        u[0],
+        d[0],
+        no[0],
+        so[0],
+        bx(0),
+        fx[0],
+        weight,
+    );
+    let l = nx - 1;
+    dst[l] = laplace_at::<RHS>(
+        c[l],
+        c[l],
+        c[l - 1],
+        u[l],
+        d[l],
+        no[l],
+        so[l],
+        bx(l),
+        fx[l],
+        weight,
+    );
 }
 
 /// `v` where `fixed != 0`, else `nv`, as a branch-free bit blend: the loops compute `nv` for
@@ -209,23 +275,18 @@ pub(crate) fn laplace_sweep(
 ) {
     let [nx, ny, _] = dims;
     par_slabs_multi(outs, nx * ny, |z0, out| {
-        let (mut east, mut west) = (vec![0.0f32; nx], vec![0.0f32; nx]);
         for zl in 0..out[0].len() / (nx * ny) {
             for y in 0..ny {
                 let r = rows(dims, y, z0 + zl);
                 let ol = zl * nx * ny + y * nx;
                 let fx = &fixed[r.o..r.o + nx];
                 for (ch, src) in src.iter().enumerate() {
-                    let c = &src[r.o..r.o + nx];
-                    shifted(c, &mut east, &mut west);
                     let row = |o: usize| &src[o..o + nx];
                     let dst = &mut out[ch][ol..ol + nx];
-                    let (u, d, no, so) = (row(r.u), row(r.d), row(r.n), row(r.s));
+                    let (c, u, d, no, so) = (row(r.o), row(r.u), row(r.d), row(r.n), row(r.s));
                     match rhs {
                         Some(b) => laplace_row::<true>(
                             c,
-                            &east,
-                            &west,
                             u,
                             d,
                             no,
@@ -235,19 +296,7 @@ pub(crate) fn laplace_sweep(
                             weight,
                             dst,
                         ),
-                        None => laplace_row::<false>(
-                            c,
-                            &east,
-                            &west,
-                            u,
-                            d,
-                            no,
-                            so,
-                            &[],
-                            fx,
-                            weight,
-                            dst,
-                        ),
+                        None => laplace_row::<false>(c, u, d, no, so, &[], fx, weight, dst),
                     }
                 }
             }
@@ -268,6 +317,126 @@ fn edge_weights(a: [&[f32]; 3], b: [&[f32]; 3], qk: f32, out: &mut [f32]) {
         let d2 = b2[x] - a2[x];
         let q = (d0 * d0 + d1 * d1 + d2 * d2) * qk;
         out[x] = 1.0 / (1.0 + q * q);
+    }
+}
+
+/// The Perona–Malik update of one sample from its value `v`, its six neighbours
+/// `[e, w, u, d, n, s]` and the coefficients of the six edges: `v + ⅙ Σ c_nb (v_nb − v)`, `v`
+/// itself when `fixed != 0`.
+#[inline(always)]
+fn pm_at(v: f32, nb: [f32; 6], c: [f32; 6], fixed: u8) -> f32 {
+    let acc = c[0] * (nb[0] - v)
+        + c[1] * (nb[1] - v)
+        + c[2] * (nb[2] - v)
+        + c[3] * (nb[3] - v)
+        + c[4] * (nb[4] - v)
+        + c[5] * (nb[5] - v);
+    keep_fixed(fixed, v, v + acc * (1.0 / 6.0))
+}
+
+/// The Perona–Malik update of one row of all three channels: `r[ch] = [row, up, down, north,
+/// south]` (the row itself where a neighbour is missing), `k = [x edges, up, down, north,
+/// south]` coefficients shared by the channels, the x edges `k[0][x]` = edge `(x − 1, x)` with
+/// `nx + 1` entries whose first and last (Neumann borders) are 1. The interior is one
+/// vectorisable pass over shifted slices that loads every coefficient and mask byte once for the
+/// three channels (the outputs are separate parameters so that they are known not to alias the
+/// inputs); the border samples use themselves as the missing neighbour, whose term is then `1·0`.
+#[inline(always)]
+fn pm_row3(
+    r: [[&[f32]; 5]; 3],
+    k: [&[f32]; 5],
+    fx: &[u8],
+    d0: &mut [f32],
+    d1: &mut [f32],
+    d2: &mut [f32],
+) {
+    let nx = d0.len();
+    let (d1, d2) = (&mut d1[..nx], &mut d2[..nx]);
+    let (kx, ku, kd, kn, ks) = (
+        &k[0][..nx + 1],
+        &k[1][..nx],
+        &k[2][..nx],
+        &k[3][..nx],
+        &k[4][..nx],
+    );
+    let fx = &fx[..nx];
+    let border = |x: usize, e: usize, w: usize, ch: usize| {
+        let [c, u, d, no, so] = r[ch];
+        pm_at(
+            c[x],
+            [c[e], c[w], u[x], d[x], no[x], so[x]],
+            [kx[x + 1], kx[x], ku[x], kd[x], kn[x], ks[x]],
+            fx[x],
+        )
+    };
+    if nx == 1 {
+        let v = [border(0, 0, 0, 0), border(0, 0, 0, 1), border(0, 0, 0, 2)];
+        (d0[0], d1[0], d2[0]) = (v[0], v[1], v[2]);
+        return;
+    }
+    let l = nx - 1;
+    let first = [border(0, 1, 0, 0), border(0, 1, 0, 1), border(0, 1, 0, 2)];
+    let last = [
+        border(l, l, l - 1, 0),
+        border(l, l, l - 1, 1),
+        border(l, l, l - 1, 2),
+    ];
+    interior3(
+        r,
+        [
+            &kx[2..],
+            &kx[1..l],
+            &ku[1..l],
+            &kd[1..l],
+            &kn[1..l],
+            &ks[1..l],
+        ],
+        &fx[1..l],
+        &mut d0[1..l],
+        &mut d1[1..l],
+        &mut d2[1..l],
+    );
+    (d0[0], d1[0], d2[0]) = (first[0], first[1], first[2]);
+    (d0[l], d1[l], d2[l]) = (last[0], last[1], last[2]);
+}
+
+/// The interior samples `1..nx − 1` of [`pm_row3`]: `k` the six coefficient rows and `fx` the
+/// mask already cut to the interior, the outputs the interior of the three rows. Not inlined, so
+/// that the outputs keep their no-alias guarantee as parameters.
+#[inline(never)]
+fn interior3(
+    r: [[&[f32]; 5]; 3],
+    k: [&[f32]; 6],
+    fx: &[u8],
+    o0: &mut [f32],
+    o1: &mut [f32],
+    o2: &mut [f32],
+) {
+    let m = o0.len();
+    let (o1, o2, fx) = (&mut o1[..m], &mut o2[..m], &fx[..m]);
+    let k = k.map(|s| &s[..m]);
+    let [ke, kw, ku, kd, kn, ks] = k;
+    let cut = |ch: usize| {
+        let [c, u, d, no, so] = r[ch];
+        [
+            &c[2..m + 2],
+            &c[..m],
+            &c[1..m + 1],
+            &u[1..m + 1],
+            &d[1..m + 1],
+            &no[1..m + 1],
+            &so[1..m + 1],
+        ]
+    };
+    let [e0, w0, c0, u0, dn0, n0, s0] = cut(0);
+    let [e1, w1, c1, u1, dn1, n1, s1] = cut(1);
+    let [e2, w2, c2, u2, dn2, n2, s2] = cut(2);
+    for x in 0..m {
+        let kk = [ke[x], kw[x], ku[x], kd[x], kn[x], ks[x]];
+        let f = fx[x];
+        o0[x] = pm_at(c0[x], [e0[x], w0[x], u0[x], dn0[x], n0[x], s0[x]], kk, f);
+        o1[x] = pm_at(c1[x], [e1[x], w1[x], u1[x], dn1[x], n1[x], s1[x]], kk, f);
+        o2[x] = pm_at(c2[x], [e2[x], w2[x], u2[x], dn2[x], n2[x], s2[x]], kk, f);
     }
 }
 
@@ -303,8 +472,6 @@ fn pm_slab(
     let mut cy_hi = vec![1.0f32; nx];
     // x edges: `cx[x]` is the edge (x − 1, x); `cx[0]` and `cx[nx]` are the Neumann borders.
     let mut cx = vec![1.0f32; nx + 1];
-    let mut east = [vec![0.0f32; nx], vec![0.0f32; nx], vec![0.0f32; nx]];
-    let mut west = [vec![0.0f32; nx], vec![0.0f32; nx], vec![0.0f32; nx]];
     for zl in 0..nzs {
         let z = z0 + zl;
         cy_lo.fill(1.0);
@@ -322,37 +489,31 @@ fn pm_slab(
             } else {
                 czh.fill(1.0);
             }
-            for ch in 0..3 {
-                shifted(c[ch], &mut east[ch], &mut west[ch]);
-            }
             edge_weights(
                 [&c[0][..nx - 1], &c[1][..nx - 1], &c[2][..nx - 1]],
                 [&c[0][1..], &c[1][1..], &c[2][1..]],
                 qk,
                 &mut cx[1..nx],
             );
-            let (cw, ce) = (&cx[..nx], &cx[1..nx + 1]);
             let (cu, cd) = (&cy_hi[..nx], &cy_lo[..nx]);
             let (cn, cs) = (&cz_hi[y * nx..y * nx + nx], &cz_lo[y * nx..y * nx + nx]);
             let fx = &fixed[r.o..r.o + nx];
             let ol = zl * slice + y * nx;
-            for ch in 0..3 {
+            let rows5 = |ch: usize| {
                 let row = |o: usize| &src[ch][o..o + nx];
-                let (cc, e, w) = (c[ch], &east[ch][..nx], &west[ch][..nx]);
-                let (u, dn, no, so) = (row(r.u), row(r.d), row(r.n), row(r.s));
-                let dst = &mut out[ch][ol..ol + nx];
-                for x in 0..nx {
-                    let v = cc[x];
-                    let acc = ce[x] * (e[x] - v)
-                        + cw[x] * (w[x] - v)
-                        + cu[x] * (u[x] - v)
-                        + cd[x] * (dn[x] - v)
-                        + cn[x] * (no[x] - v)
-                        + cs[x] * (so[x] - v);
-                    let nv = v + acc * (1.0 / 6.0);
-                    dst[x] = keep_fixed(fx[x], v, nv);
-                }
-            }
+                [c[ch], row(r.u), row(r.d), row(r.n), row(r.s)]
+            };
+            let [o0, o1, o2] = out else {
+                unreachable!("three output channels")
+            };
+            pm_row3(
+                [rows5(0), rows5(1), rows5(2)],
+                [&cx[..], cu, cd, cn, cs],
+                fx,
+                &mut o0[ol..ol + nx],
+                &mut o1[ol..ol + nx],
+                &mut o2[ol..ol + nx],
+            );
             std::mem::swap(&mut cy_lo, &mut cy_hi);
         }
         std::mem::swap(&mut cz_lo, &mut cz_hi);
@@ -365,6 +526,18 @@ pub fn sweeps(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], pm: Option
         return;
     }
     let mut other: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0; c.len()]).collect();
+    sweeps_with(dims, chans, fixed, pm, n, &mut other);
+}
+
+/// [`sweeps`] ping-ponging through a caller-owned scratch field of the same shape as `chans`.
+fn sweeps_with(
+    dims: [usize; 3],
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    pm: Option<f32>,
+    n: u32,
+    other: &mut [Vec<f32>],
+) {
     for _ in 0..n {
         {
             let src: Vec<&[f32]> = chans.iter().map(|c| c.as_slice()).collect();
@@ -459,12 +632,14 @@ pub fn diffuse_normals(
     p: &DiffuseParams,
     warm: bool,
 ) {
+    // One scratch field for the fill and the sweeps.
+    let mut tmp: Vec<Vec<f32>> = n.iter().map(|c| vec![0.0f32; c.len()]).collect();
     if warm {
-        sweeps(dims, n, fixed, None, p.fine_sweeps);
+        sweeps_with(dims, n, fixed, None, p.fine_sweeps, &mut tmp);
     } else {
-        harmonic_fill(dims, n, fixed, p);
+        harmonic_fill_with(dims, n, fixed, p, &mut tmp);
     }
     normalize_field(n, fixed);
-    sweeps(dims, n, fixed, Some(p.k), p.pm_sweeps);
+    sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp);
     normalize_field(n, fixed);
 }

@@ -22,7 +22,7 @@
 //! pass is parallel over z-slabs and writes disjoint samples from read-only inputs, so the result
 //! does not depend on the thread count.
 
-use super::diffuse::{keep_fixed, laplace_sweep, rows, shifted, DiffuseParams, COARSEST};
+use super::diffuse::{keep_fixed, laplace_sweep, rows, DiffuseParams, COARSEST};
 use super::grid::par_slabs_multi;
 
 /// Smoothing step of the V-cycles: `ω/6` with `ω = 6/7`.
@@ -125,11 +125,14 @@ fn prolong<const ADD: bool>(
 ) {
     let [nx, ny, nz] = fine;
     let [cx, cy, cz] = coarse;
-    let (ax, ay, az) = (axis_table(nx, cx), axis_table(ny, cy), axis_table(nz, cz));
+    let (ay, az) = (axis_table(ny, cy), axis_table(nz, cz));
     let outs: Vec<&mut [f32]> = out.iter_mut().map(|c| c.as_mut_slice()).collect();
     par_slabs_multi(outs, nx * ny, |zs, out| {
         let mut line = vec![0.0f32; cx];
-        let mut fine_line = vec![0.0f32; nx];
+        // The x interpolation of `line` at the even (`2j`, coarse position `j − ¼`) and odd
+        // (`2j + 1`, position `j + ¼`) fine samples, clamped at the borders as `axis_table`.
+        let mut even = vec![0.0f32; cx];
+        let mut odd = vec![0.0f32; cx];
         for zl in 0..out[0].len() / (nx * ny) {
             let (z0, z1, wz) = az[zs + zl];
             for y in 0..ny {
@@ -140,23 +143,59 @@ fn prolong<const ADD: bool>(
                 for (ch, c) in cc.iter().enumerate() {
                     let row = |yy: usize, zz: usize| &c[cx * (yy + cy * zz)..][..cx];
                     let (r00, r10, r01, r11) = (row(y0, z0), row(y1, z0), row(y0, z1), row(y1, z1));
+                    let line = &mut line[..cx];
                     for x in 0..cx {
                         let a = r00[x] + wy * (r10[x] - r00[x]);
                         let b = r01[x] + wy * (r11[x] - r01[x]);
                         line[x] = a + wz * (b - a);
                     }
-                    for (f, &(x0, x1, wx)) in fine_line.iter_mut().zip(&ax) {
-                        *f = line[x0] + wx * (line[x1] - line[x0]);
-                    }
+                    interpolate_x(line, &mut even, &mut odd);
                     let dst = &mut out[ch][ol..ol + nx];
-                    for ((d, f), fx) in dst.iter_mut().zip(&fine_line).zip(fx) {
-                        let v = if ADD { *d + f } else { *f };
-                        *d = keep_fixed(*fx, *d, v);
+                    let blend = |d: &mut f32, f: f32, fx: u8| {
+                        let v = if ADD { *d + f } else { f };
+                        *d = keep_fixed(fx, *d, v);
+                    };
+                    let pairs = nx / 2;
+                    let (dp, dt) = dst.split_at_mut(2 * pairs);
+                    let (fp, ft) = fx.split_at(2 * pairs);
+                    for (((d, f), e), o) in dp
+                        .chunks_exact_mut(2)
+                        .zip(fp.chunks_exact(2))
+                        .zip(&even[..pairs])
+                        .zip(&odd[..pairs])
+                    {
+                        blend(&mut d[0], *e, f[0]);
+                        blend(&mut d[1], *o, f[1]);
+                    }
+                    if let (Some(d), Some(f)) = (dt.first_mut(), ft.first()) {
+                        blend(d, even[pairs], *f);
                     }
                 }
             }
         }
     });
+}
+
+/// The linear interpolation of a coarse line at the fine samples `2j` (`even[j]`, coarse
+/// position `j − ¼`) and `2j + 1` (`odd[j]`, position `j + ¼`), positions clamped to the line:
+/// the same numbers as [`axis_table`]'s `l[i0] + w·(l[i1] − l[i0])`, as plain vectorisable
+/// passes.
+fn interpolate_x(line: &[f32], even: &mut [f32], odd: &mut [f32]) {
+    let n = line.len();
+    let (even, odd) = (&mut even[..n], &mut odd[..n]);
+    even[0] = line[0];
+    odd[n - 1] = line[n - 1];
+    if n > 1 {
+        let (lo, hi) = (&line[..n - 1], &line[1..]);
+        let e = &mut even[1..];
+        for j in 0..n - 1 {
+            e[j] = lo[j] + 0.75 * (hi[j] - lo[j]);
+        }
+        let o = &mut odd[..n - 1];
+        for j in 0..n - 1 {
+            o[j] = lo[j] + 0.25 * (hi[j] - lo[j]);
+        }
+    }
 }
 
 /// Fine children of coarse index `c` along an axis of `n` fine samples: 1 or 2.
@@ -221,7 +260,6 @@ fn residual_restrict(
     let [cx, cy, _] = coarse;
     let outs: Vec<&mut [f32]> = cb.iter_mut().map(|c| c.as_mut_slice()).collect();
     par_slabs_multi(outs, cx * cy, |cz0, out| {
-        let (mut east, mut west) = (vec![0.0f32; nx], vec![0.0f32; nx]);
         let mut r = vec![0.0f32; nx];
         for czl in 0..out[0].len() / (cx * cy) {
             let cz = cz0 + czl;
@@ -235,29 +273,14 @@ fn residual_restrict(
                     for z in 2 * cz..2 * cz + kz {
                         for y in 2 * cyy..2 * cyy + ky {
                             let rw = rows(fine, y, z);
-                            let cc = &c[rw.o..rw.o + nx];
-                            shifted(cc, &mut east, &mut west);
                             let row = |o: usize| &c[o..o + nx];
-                            let (up, dn, no, so) = (row(rw.u), row(rw.d), row(rw.n), row(rw.s));
-                            let fx = &fixed[rw.o..rw.o + nx];
-                            let (e, w) = (&east[..nx], &west[..nx]);
-                            let r = &mut r[..nx];
-                            for x in 0..nx {
-                                let v = cc[x];
-                                let lap = (e[x] - v)
-                                    + (w[x] - v)
-                                    + (up[x] - v)
-                                    + (dn[x] - v)
-                                    + (no[x] - v)
-                                    + (so[x] - v);
-                                r[x] = keep_fixed(fx[x], 0.0, lap);
-                            }
-                            if let Some(b) = b {
-                                let (b, fx) = (&b[ch][rw.o..rw.o + nx], fx);
-                                for x in 0..nx {
-                                    r[x] += keep_fixed(fx[x], 0.0, b[x]);
-                                }
-                            }
+                            let rb = b.map(|b| &b[ch][rw.o..rw.o + nx]);
+                            residual_row(
+                                [row(rw.o), row(rw.u), row(rw.d), row(rw.n), row(rw.s)],
+                                rb,
+                                &fixed[rw.o..rw.o + nx],
+                                &mut r,
+                            );
                             let (pairs, odd) = r.split_at(nx & !1);
                             for (a, p) in acc.iter_mut().zip(pairs.chunks_exact(2)) {
                                 *a += p[0] + p[1];
@@ -275,6 +298,58 @@ fn residual_restrict(
             }
         }
     });
+}
+
+/// The residual `b − Σ_nb (u − u_nb)` of one row (`r = [row, up, down, north, south]`, the row
+/// itself where a neighbour is missing), 0 at fixed samples, into `out`.
+fn residual_row(r: [&[f32]; 5], b: Option<&[f32]>, fx: &[u8], out: &mut [f32]) {
+    let nx = out.len();
+    let (c, u, d, no, so, fx) = (
+        &r[0][..nx],
+        &r[1][..nx],
+        &r[2][..nx],
+        &r[3][..nx],
+        &r[4][..nx],
+        &fx[..nx],
+    );
+    // The Laplacian in the summation order of the sweeps (`diffuse::laplace_at`).
+    let lap = |v: f32, e: f32, w: f32, x: usize| {
+        (e - v) + (w - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v)
+    };
+    if nx == 1 {
+        out[0] = keep_fixed(fx[0], 0.0, lap(c[0], c[0], c[0], 0));
+    } else {
+        let m = nx - 2;
+        {
+            let (ce, cv, cw) = (&c[2..], &c[1..nx - 1], &c[..m]);
+            let (u, d, no, so, fxi) = (
+                &u[1..nx - 1],
+                &d[1..nx - 1],
+                &no[1..nx - 1],
+                &so[1..nx - 1],
+                &fx[1..nx - 1],
+            );
+            let o = &mut out[1..nx - 1];
+            for x in 0..m {
+                let v = cv[x];
+                let l =
+                    (ce[x] - v) + (cw[x] - v) + (u[x] - v) + (d[x] - v) + (no[x] - v) + (so[x] - v);
+                o[x] = keep_fixed(fxi[x], 0.0, l);
+            }
+        }
+        out[0] = keep_fixed(fx[0], 0.0, lap(c[0], c[1], c[0], 0));
+        out[nx - 1] = keep_fixed(
+            fx[nx - 1],
+            0.0,
+            lap(c[nx - 1], c[nx - 1], c[nx - 2], nx - 1),
+        );
+    }
+    if let Some(b) = b {
+        let b = &b[..nx];
+        for x in 0..nx {
+            out[x] += keep_fixed(fx[x], 0.0, b[x]);
+        }
+    }
 }
 
 /// The cascade from level `l` (0 = the caller's grid `u`, `fixed`) down.
@@ -359,17 +434,30 @@ fn vcycle(
 /// fixed ones: the cascade, then `p.vcycles` V-cycles (module docs). Channels without any fixed
 /// sample become 0.
 pub fn harmonic_fill(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffuseParams) {
+    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
+    harmonic_fill_with(dims, chans, fixed, p, &mut tmp);
+}
+
+/// [`harmonic_fill`] with a caller-owned scratch field of the same shape as `chans` (its
+/// contents are overwritten).
+pub(crate) fn harmonic_fill_with(
+    dims: [usize; 3],
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    p: &DiffuseParams,
+    tmp: &mut [Vec<f32>],
+) {
     if chans.is_empty() {
         return;
     }
     let mut levels = hierarchy(dims, fixed, chans.len());
-    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
-    cascade(0, dims, chans, &mut tmp, fixed, &mut levels, p);
+    let tmp = &mut tmp[..chans.len()];
+    cascade(0, dims, chans, tmp, fixed, &mut levels, p);
     for _ in 0..p.vcycles {
         vcycle(
             dims,
             chans,
-            &mut tmp,
+            tmp,
             None,
             fixed,
             &mut levels,

@@ -5,9 +5,12 @@
 //! `Ω_S`), layer `L + 1` the unset samples with a neighbour in layer `L` — the paper's boundary
 //! `∂Ω_S`, "set according to the following function and inserted into `Ω_S`". A sample of layer
 //! `L` is computed only from its neighbours of layers `< L` and **set once**. [`layers`] is the
-//! breadth-first search that orders the samples by layer; the propagations fuse it with the
-//! update (a sample is set when it leaves the queue, when all its lower-layer neighbours are
-//! final), one pass each, and test neighbour-existence bits instead of dividing indices; on the GPU
+//! breadth-first search that orders the samples by layer. The propagations get the same layers
+//! as the L1 distance to the seed set ([`l1_layers`]: on the full 6-connected grid the number of
+//! breadth-first steps is the city-block distance, computed by separable passes) and visit the
+//! samples layer by layer in index order (a counting sort; a sample reads only lower layers, so
+//! the order inside a layer does not matter), testing neighbour-existence bits instead of
+//! dividing indices. This reads memory far more coherently than a queue; on the GPU
 //! (`shaders/volume_propagate.wgsl`) the same layers are produced by one dispatch per layer.
 //!
 //! **Surface propagation** (§4.5): with `NB` the six neighbours,
@@ -115,52 +118,102 @@ fn neighbour_bits(dims: [usize; 3]) -> Vec<u8> {
     bits
 }
 
-/// Breadth-first wavefront from the seeds that calls `set(i, layer, neighbour bits, &layers)`
-/// for every
-/// non-seed sample when it leaves the queue. At that moment every neighbour of a lower layer
-/// has already left the queue (the queue holds layers in non-decreasing order), so `set` sees
-/// exactly the values of [`layers`] followed by a pass in its order. Returns the layers.
+/// The breadth-first layers of [`layers`] without a queue: on the full 6-connected grid the
+/// number of steps from the nearest seed is the L1 (city-block) distance to the seed set, which
+/// is separable into forward and backward `d = min(d, d_prev + 1)` passes along x, y and z.
+/// [`UNREACHED`] everywhere when there are no seeds.
+pub fn l1_layers(dims: [usize; 3], seeds: &[u8]) -> Vec<u32> {
+    let [nx, ny, nz] = dims;
+    let slice = nx * ny;
+    let mut d: Vec<u32> = seeds
+        .iter()
+        .map(|&s| if s != 0 { 0 } else { UNREACHED })
+        .collect();
+    // Along x and y inside every z-slice.
+    for sl in d.chunks_exact_mut(slice) {
+        for row in sl.chunks_exact_mut(nx) {
+            for x in 1..nx {
+                row[x] = row[x].min(row[x - 1].saturating_add(1));
+            }
+            for x in (0..nx - 1).rev() {
+                row[x] = row[x].min(row[x + 1].saturating_add(1));
+            }
+        }
+        for y in 1..ny {
+            let (lo, hi) = sl.split_at_mut(y * nx);
+            min_plus_one(&mut hi[..nx], &lo[(y - 1) * nx..]);
+        }
+        for y in (0..ny - 1).rev() {
+            let (lo, hi) = sl.split_at_mut((y + 1) * nx);
+            min_plus_one(&mut lo[y * nx..], hi);
+        }
+    }
+    // Along z, slice against slice.
+    for z in 1..nz {
+        let (lo, hi) = d.split_at_mut(z * slice);
+        min_plus_one(&mut hi[..slice], &lo[(z - 1) * slice..]);
+    }
+    for z in (0..nz - 1).rev() {
+        let (lo, hi) = d.split_at_mut((z + 1) * slice);
+        min_plus_one(&mut lo[z * slice..], hi);
+    }
+    d
+}
+
+/// `a = min(a, b + 1)` element-wise over `a`'s length, saturating at [`UNREACHED`].
+#[inline]
+fn min_plus_one(a: &mut [u32], b: &[u32]) {
+    let b = &b[..a.len()];
+    for (a, b) in a.iter_mut().zip(b) {
+        *a = (*a).min(b.saturating_add(1));
+    }
+}
+
+/// The samples reached from the seeds, sorted by layer and, within a layer, by index
+/// (a counting sort of [`l1_layers`]).
+fn layer_order(layer: &[u32]) -> Vec<u32> {
+    let top = layer
+        .iter()
+        .filter(|&&l| l != UNREACHED)
+        .max()
+        .map_or(0, |&l| l as usize + 1);
+    let mut start = vec![0u32; top + 1];
+    for &l in layer {
+        if l != UNREACHED {
+            start[l as usize + 1] += 1;
+        }
+    }
+    for k in 1..=top {
+        start[k] += start[k - 1];
+    }
+    let mut order = vec![0u32; start[top] as usize];
+    for (i, &l) in layer.iter().enumerate() {
+        if l != UNREACHED {
+            let s = &mut start[l as usize];
+            order[*s as usize] = i as u32;
+            *s += 1;
+        }
+    }
+    order
+}
+
+/// The wavefront from the seeds: calls `set(i, layer, neighbour bits, &layers)` for every
+/// reached non-seed sample in order of layer ([`layer_order`]), so every neighbour of a lower
+/// layer is final when `set` sees it — exactly the values of the breadth-first [`layers`]
+/// followed by a pass in its order (the order inside a layer does not matter: a sample reads
+/// only lower layers). Returns the layers.
 fn wavefront(
     dims: [usize; 3],
     seeds: &[u8],
     mut set: impl FnMut(usize, u32, u8, &[u32]),
 ) -> Vec<u32> {
-    let [nx, ny, _] = dims;
-    let n = seeds.len();
     let bits = neighbour_bits(dims);
-    let offsets = [
-        1isize,
-        -1,
-        nx as isize,
-        -(nx as isize),
-        (nx * ny) as isize,
-        -((nx * ny) as isize),
-    ];
-    let mut layer = vec![UNREACHED; n];
-    let mut queue: Vec<u32> = Vec::with_capacity(n);
-    for (i, s) in seeds.iter().enumerate() {
-        if *s != 0 {
-            layer[i] = 0;
-            queue.push(i as u32);
-        }
-    }
-    let mut head = 0;
-    while head < queue.len() {
-        let i = queue[head] as usize;
-        head += 1;
+    let layer = l1_layers(dims, seeds);
+    for &i in &layer_order(&layer) {
+        let i = i as usize;
         let li = layer[i];
-        let b = bits[i];
         if li > 0 {
-            set(i, li, b, &layer);
-        }
-        for (k, off) in offsets.iter().enumerate() {
-            if b & (1 << k) != 0 {
-                let j = i.wrapping_add_signed(*off);
-                if layer[j] == UNREACHED {
-                    layer[j] = li + 1;
-                    queue.push(j as u32);
-                }
-            }
+            set(i, li, bits[i], &layer);
         }
     }
     layer
@@ -228,32 +281,37 @@ pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]
         -((nx * ny) as isize),
     ];
     wavefront(dims, omega_r, |i, li, bits, layer| {
-        let mut votes = [(NO_MATERIAL, 0.0f32); 6];
-        let mut nv = 0;
-        let mut total = 0.0f32;
+        // The lower-layer neighbours that hold a material, in the order E, W, U, D, N, S; an
+        // absent one votes weight 0 for no material, which changes no sum below.
+        let mut m = [NO_MATERIAL; 6];
+        let mut c = [0.0f32; 6];
         for (k, off) in offsets.iter().enumerate() {
-            if bits & (1 << k) == 0 {
-                continue;
-            }
-            let j = i.wrapping_add_signed(*off);
-            if layer[j] < li && material[j] != NO_MATERIAL {
-                total += conf[j];
-                match votes[..nv].iter_mut().find(|(m, _)| *m == material[j]) {
-                    Some(v) => v.1 += conf[j],
-                    None => {
-                        votes[nv] = (material[j], conf[j]);
-                        nv += 1;
-                    }
+            if bits & (1 << k) != 0 {
+                let j = i.wrapping_add_signed(*off);
+                if layer[j] < li && material[j] != NO_MATERIAL {
+                    m[k] = material[j];
+                    c[k] = conf[j];
                 }
             }
         }
-        let mut best = (NO_MATERIAL, -1.0f32);
-        for &(m, w) in &votes[..nv] {
-            if w > best.1 || (w == best.1 && m < best.0) {
-                best = (m, w);
-            }
-        }
+        let total = ((((c[0] + c[1]) + c[2]) + c[3]) + c[4]) + c[5];
         if total > 0.0 {
+            // Each material's summed confidence (in neighbour order), the largest sum winning
+            // and ties going to the smaller id.
+            let mut best = (NO_MATERIAL, -1.0f32);
+            for k in 0..6 {
+                if m[k] != NO_MATERIAL {
+                    let mut w = 0.0f32;
+                    for q in 0..6 {
+                        if m[q] == m[k] {
+                            w += c[q];
+                        }
+                    }
+                    if w > best.1 || (w == best.1 && m[k] < best.0) {
+                        best = (m[k], w);
+                    }
+                }
+            }
             material[i] = best.0;
             conf[i] = (best.1 / total).clamp(0.0, 1.0);
         }

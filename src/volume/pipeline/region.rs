@@ -83,10 +83,11 @@ pub struct StageTimes {
     pub normal_diffusion_ms: f64,
     /// Noise-parameter (`α`, `β`) diffusion.
     pub noise_diffusion_ms: f64,
-    /// Material propagation with confidence. It runs on its own thread concurrently with the
-    /// surface propagation (both are sequential wavefronts), so it overlaps that stage.
+    /// Material propagation with confidence. It runs on one worker concurrently with the normal
+    /// diffusion ([`generate`]; with the surface propagation in [`regenerate`]), so it overlaps
+    /// that stage.
     pub material_ms: f64,
-    /// Surface propagation.
+    /// Surface propagation (on one worker beside the noise diffusion in [`generate`]).
     pub surface_propagation_ms: f64,
     /// Gaussian filter.
     pub filter_ms: f64,
@@ -260,42 +261,58 @@ fn build_voxels(
     Ok(v)
 }
 
+/// Material propagation (§4.4) of the voxelized seeds: materials and confidences.
+fn material_stage(grid: &Grid, v: &Voxelized) -> (Vec<u16>, Vec<f32>) {
+    let mut material = v.material.clone();
+    let confidence = propagate_material(grid.dims, &v.omega_r, &mut material);
+    (material, confidence)
+}
+
+/// Surface propagation (§4.5) from the voxelized seeds along `normal`: `S` and its layers.
+fn surface_stage(grid: &Grid, v: &Voxelized, normal: &[Vec<f32>; 3]) -> (Vec<f32>, Vec<u32>) {
+    let mut s = v.surface.clone();
+    let layer = propagate_surface(grid, normal, &v.omega_s, &mut s);
+    (s, layer)
+}
+
+/// Runs the sequential wavefront `serial` on one worker beside the slab-parallel `parallel` on
+/// the rest of the pool, and records both stages: `serial` by its thread's CPU time, `parallel`
+/// by the process CPU time of the overlap minus that. Both wall times include the overlap.
+fn overlapped<A: Send, B: Send>(
+    times: &mut Timing,
+    serial: (fn(&mut StageTimes) -> &mut f64, impl FnOnce() -> A + Send),
+    parallel: (fn(&mut StageTimes) -> &mut f64, impl FnOnce() -> B + Send),
+) -> (A, B) {
+    let sw = Stopwatch::start();
+    let ((a, aw, ac), (b, bw)) = rayon::join(
+        || timed_on_thread(serial.1),
+        || {
+            let t = Instant::now();
+            let b = (parallel.1)();
+            (b, ms(t))
+        },
+    );
+    let (_, cpu) = sw.lap();
+    *(serial.0)(&mut times.wall) += aw;
+    *(serial.0)(&mut times.cpu) += ac;
+    *(parallel.0)(&mut times.wall) += bw;
+    *(parallel.0)(&mut times.cpu) += (cpu - ac).max(0.0);
+    (a, b)
+}
+
+/// The Gaussian filter (§4.5) and the assembled fields.
 #[allow(clippy::too_many_arguments)]
 fn finish(
     grid: &Grid,
     v: Voxelized,
     normal: [Vec<f32>; 3],
-    alpha: Vec<f32>,
-    beta: Vec<f32>,
+    (alpha, beta): (Vec<f32>, Vec<f32>),
+    (material, confidence): (Vec<u16>, Vec<f32>),
+    (s, surface_layer): (Vec<f32>, Vec<u32>),
     params: &PipelineParams,
     mut times: Timing,
     run: Stopwatch,
 ) -> RegionFields {
-    // Material (§4.4) and surface (§4.5) propagation are independent sequential wavefronts: one
-    // thread each.
-    let ((material, confidence, mw, mc), (s, surface_layer, sw, sc)) = rayon::join(
-        || {
-            let ((m, c), w, t) = timed_on_thread(|| {
-                let mut material = v.material.clone();
-                let confidence = propagate_material(grid.dims, &v.omega_r, &mut material);
-                (material, confidence)
-            });
-            (m, c, w, t)
-        },
-        || {
-            let ((s, l), w, t) = timed_on_thread(|| {
-                let mut s = v.surface.clone();
-                let layer = propagate_surface(grid, &normal, &v.omega_s, &mut s);
-                (s, layer)
-            });
-            (s, l, w, t)
-        },
-    );
-    times.wall.material_ms = mw;
-    times.cpu.material_ms = mc;
-    times.wall.surface_propagation_ms = sw;
-    times.cpu.surface_propagation_ms = sc;
-
     let sw = Stopwatch::start();
     let mut surface = s.clone();
     gaussian(grid.dims, &mut surface, params.gaussian_sigma);
@@ -342,25 +359,48 @@ pub fn generate(
     let mut times = Timing::default();
     let v = build_voxels(&grid, scene, params, &mut times)?;
 
-    let sw = Stopwatch::start();
-    let mut n: Vec<Vec<f32>> = v.normal.to_vec();
-    diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
-    times.record(sw, |t| &mut t.normal_diffusion_ms);
-
-    let sw = Stopwatch::start();
-    let mut r = vec![v.alpha.clone(), v.beta.clone()];
-    harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
-    times.record(sw, |t| &mut t.noise_diffusion_ms);
-
-    let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+    // The stages after the voxelization form two chains: material propagation (§4.4) needs
+    // only the voxelization, surface propagation (§4.5) needs the normals, the noise diffusion
+    // (§4.4) only the voxelization. Each sequential wavefront runs on one worker beside a
+    // slab-parallel diffusion on the others: material beside the normal diffusion, surface
+    // beside the noise diffusion.
+    let (mat, n) = overlapped(
+        &mut times,
+        (|t| &mut t.material_ms, || material_stage(&grid, &v)),
+        (
+            |t| &mut t.normal_diffusion_ms,
+            || {
+                let mut n: Vec<Vec<f32>> = v.normal.to_vec();
+                diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
+                let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+                [n0, n1, n2]
+            },
+        ),
+    );
+    let (surf, mut r) = overlapped(
+        &mut times,
+        (
+            |t| &mut t.surface_propagation_ms,
+            || surface_stage(&grid, &v, &n),
+        ),
+        (
+            |t| &mut t.noise_diffusion_ms,
+            || {
+                let mut r = vec![v.alpha.clone(), v.beta.clone()];
+                harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
+                r
+            },
+        ),
+    );
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
     Ok(finish(
         &grid,
         v,
-        [n0, n1, n2],
-        alpha,
-        beta,
+        n,
+        (alpha, beta),
+        mat,
+        surf,
         params,
         times,
         run,
@@ -492,10 +532,30 @@ pub fn regenerate(
         times.record(sw, |t| &mut t.noise_diffusion_ms);
     }
     let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
+    let normal = [n0, n1, n2];
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
+    // Material and surface propagation are independent sequential wavefronts: one thread each.
+    let (mat, surf) = overlapped(
+        &mut times,
+        (|t| &mut t.material_ms, || material_stage(&grid, &v)),
+        (
+            |t| &mut t.surface_propagation_ms,
+            || surface_stage(&grid, &v, &normal),
+        ),
+    );
     Ok((
-        finish(&grid, v, [n0, n1, n2], alpha, beta, params, times, run),
+        finish(
+            &grid,
+            v,
+            normal,
+            (alpha, beta),
+            mat,
+            surf,
+            params,
+            times,
+            run,
+        ),
         changed,
     ))
 }

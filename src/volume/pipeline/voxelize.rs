@@ -25,6 +25,10 @@
 use super::edt::squared_distance;
 use super::grid::{dot, normalize, sub, Grid};
 use super::proxy::{ProxyTriangle, Side};
+use rayon::prelude::*;
+
+/// Triangles per parallel task of the gathering.
+const GATHER_CHUNK: usize = 512;
 
 /// The sparse fields after voxelization. Unconstrained samples hold zeros.
 #[derive(Clone, Debug)]
@@ -139,22 +143,35 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
     let r = (dead_zone_m.max(0.0) / grid.spacing).max(0.0);
     let mut blocked = vec![0u8; n];
     let mut hits: Vec<(u32, u32, u32)> = Vec::new();
-    let mut cells = Vec::new();
     let mut pass_stats = Vec::with_capacity(passes.len());
     for (p, tris) in passes.iter().enumerate() {
         let mut st = PassStats {
             triangles: tris.len(),
             ..Default::default()
         };
-        for (ti, t) in tris.iter().enumerate() {
-            cells_of(grid, t, &mut cells);
-            for &c in &cells {
-                if blocked[c] != 0 {
-                    st.dropped += 1;
-                } else {
-                    st.gathered += 1;
-                    hits.push((c as u32, p as u32, ti as u32));
+        // The triangle–cell tests run in parallel over chunks of triangles; the chunks' hits
+        // are concatenated in triangle order, so the gathered list does not depend on the
+        // thread count.
+        let chunks: Vec<Vec<(u32, u32)>> = tris
+            .par_chunks(GATHER_CHUNK)
+            .enumerate()
+            .map(|(k, chunk)| {
+                let mut cells = Vec::new();
+                let mut out = Vec::new();
+                for (i, t) in chunk.iter().enumerate() {
+                    cells_of(grid, t, &mut cells);
+                    let ti = (k * GATHER_CHUNK + i) as u32;
+                    out.extend(cells.iter().map(|&c| (c as u32, ti)));
                 }
+                out
+            })
+            .collect();
+        for (c, ti) in chunks.into_iter().flatten() {
+            if blocked[c as usize] != 0 {
+                st.dropped += 1;
+            } else {
+                st.gathered += 1;
+                hits.push((c, p as u32, ti));
             }
         }
         pass_stats.push(st);
@@ -172,7 +189,8 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
             }
         }
     }
-    hits.sort_unstable();
+    // The keys are distinct, so the (parallel, unstable) sort is deterministic.
+    hits.par_sort_unstable();
 
     let mut v = Voxelized {
         normal: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
