@@ -83,6 +83,7 @@ pub mod galerkin;
 pub mod gradient;
 pub mod grid;
 pub mod level;
+pub mod local;
 pub mod multigrid;
 pub mod ops;
 pub mod problem;
