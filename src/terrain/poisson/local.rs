@@ -38,6 +38,17 @@
 //!   post-smooths in its window and adds its correction to `D_l`; the finest level adds it to the
 //!   heights and smooths (`pre_smooth + post_smooth` red-black sweeps, as the global cycle).
 //!
+//! Bilinear interpolation of the far correction leaves a residual proportional to its second
+//! derivatives (a smooth field interpolated bilinearly has kinks along the coarse grid lines), so
+//! the write-back smooths a band around each level's window: [`LOCAL_BAND`] samples around the
+//! finest window (two red-black sweeps with `b`), half that around coarser windows (two four-colour
+//! sweeps of the correction outside the window, where its right-hand side is zero). Measured on a
+//! 32-sample brush, the global relative residual after the write-back is 1.5e-6 (513²) to 3e-6
+//! (1025²) without the previous solve's residual: below a tolerance of 1e-5, and one global cycle
+//! away from 1e-6. (Wider bands, larger margins, more sweeps, FAC injection of the fine correction
+//! into the coarse one under the window, and full-level smoothing of the coarse corrections each
+//! moved it by less than 25 % in our trials.)
+//!
 //! Local cycles run until an estimate of the global residual, `‖r_window‖² + Σ_l ‖ρ_l‖² / 4^l`
 //! (`ρ_l` the composite residual of level `l` outside the finer window; a coarse residual value
 //! stands for about `4^l` fine residuals of `1/4^l` of its size), is at most [`LOCAL_TARGET`]

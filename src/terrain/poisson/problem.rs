@@ -172,9 +172,13 @@ impl Problem<'_> {
                         }
                         rr[k] = rhs;
                         let mut beff = rhs;
-                        for m in [n - 1, n + 1, n - nx, n + nx] {
-                            let (mi, mj) = (m % nx, m / nx);
-                            if g.is_border(mi, mj) || me.fixed[m] {
+                        for (m, border) in [
+                            (n - 1, i == 1),
+                            (n + 1, i + 2 == nx),
+                            (n - nx, j == 1),
+                            (n + nx, j + 2 == nz),
+                        ] {
+                            if border || me.fixed[m] {
                                 beff -= f64::from(me.heights[m]);
                             }
                         }
