@@ -180,6 +180,57 @@ mod tests {
     }
 
     #[test]
+    fn an_incremental_rebuild_equals_a_full_one() {
+        // A 65 × 65 grid with a disc and a curve; then a point is added, a curve sample freed
+        // and the disc moved by one column. Updating the coarse rows within reach of the changed
+        // rows gives exactly the masks and operators of a hierarchy built from scratch.
+        let g = GridSpec::new(65, 65, 1.0).expect("grid");
+        let mut fixed = vec![false; 65 * 65];
+        for t in 0..30 {
+            fixed[(10 + t / 2) * 65 + 12 + t] = true;
+        }
+        let disc = |fixed: &mut Vec<bool>, ci: usize, on: bool| {
+            for j in 40..52usize {
+                for i in ci - 6..=ci + 6 {
+                    if (i.abs_diff(ci).pow(2) + j.abs_diff(46).pow(2)) <= 30 {
+                        fixed[j * 65 + i] = on;
+                    }
+                }
+            }
+        };
+        disc(&mut fixed, 44, true);
+        let build = |fixed: &[bool]| {
+            let mut levels = vec![Level::new(g)];
+            levels[0].set_fixed(fixed);
+            while let Some(c) = levels.last().and_then(Level::coarsen) {
+                levels.push(c);
+            }
+            levels
+        };
+        let mut levels = build(&fixed);
+        fixed[20 * 65 + 50] = true;
+        fixed[(10 + 7) * 65 + 12 + 14] = false;
+        disc(&mut fixed, 44, false);
+        disc(&mut fixed, 45, true);
+        let change = levels[0].set_fixed(&fixed).expect("a change");
+        assert_eq!((change.j0, change.j1), (17, 51), "{change:?}");
+        let (mut a, mut b) = (change.j0, change.j1);
+        for l in 1..levels.len() {
+            let (x, y) = levels.split_at_mut(l);
+            (a, b) = crate::terrain::poisson::galerkin::coarsen_rows(&x[l - 1], &mut y[0], a, b);
+        }
+        let fresh = build(&fixed);
+        for (l, (u, f)) in levels.iter().zip(&fresh).enumerate() {
+            assert_eq!(u.free, f.free, "mask of level {l}");
+            assert_eq!(u.nine, f.nine, "operator of level {l}");
+        }
+        assert!(
+            levels[0].set_fixed(&fixed).is_none(),
+            "no change the second time"
+        );
+    }
+
+    #[test]
     fn the_default_coarse_stencil_is_the_galerkin_nine_point_laplacian() {
         let s = galerkin_default(&FIVE_POINT);
         assert_eq!(
