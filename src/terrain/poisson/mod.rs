@@ -80,14 +80,14 @@
 //! rule is still the true global relative residual, measured over the whole grid after the local
 //! cycles; if it is above the tolerance, ordinary global cycles continue (large edits go to global
 //! cycles directly). [`SolveReport::local_cycles`] and [`SolveReport::samples_relaxed`] say what
-//! a solve did. Measured (`strata bench poisson`, brush of 32 samples, load average about 4):
+//! a solve did. Measured (`strata bench poisson`, brush of 32 samples, load average 1.3):
 //! 1025² and 2049² need 2 local cycles and no global one (0.26 and 0.08 samples relaxed per grid
 //! sample, against 14 for a cold solve); 513² needs 2 local cycles and one global cycle. The
 //! write-back leaves a global residual of about 1.5e-6 (513²) to 3e-6 (1025²) relative, from
 //! interpolating the far correction bilinearly, which a single global cycle removes at 513². The
 //! wall time is dominated by the full passes that remain (validation, mask comparison, loading
-//! the right-hand side, the write-back and the residual check): 25–56 % of a cold solve in our
-//! measurements, above the 20 % target.
+//! the right-hand side, the write-back and the residual check): 40 % (513², 6.1 ms), 29 %
+//! (1025², 15.9 ms) and 32 % (2049², 74.5 ms) of a cold solve, above the 20 % target.
 //!
 //! # Limits
 //! Sides `2^k + 1` from 3 to 8193 samples ([`MAX_SIDE`]); memory about 23 bytes per sample for
@@ -97,10 +97,11 @@
 //! [`local`] (a finest window of at most [`local::LOCAL_MAX_FRACTION`] of the grid, else global
 //! cycles) and allocates about 60 bytes per window sample while it runs.
 //!
-//! # Measured (release, 2 threads, `strata bench poisson`, load average 3.5–5 from other builds)
-//! Cold to 1e-6: 513² 17–19 ms, 1025² 42–68 ms (42 ms at load 3.5), 2049² 403 ms (load 4.6);
-//! right after a constraint change (mask rows and Galerkin stencils rebuilt incrementally):
-//! 513² 22–29 ms, 1025² 45–76 ms. Factors per cycle of the default solve: 0.076–0.079 (median).
+//! # Measured (release, 2 threads, `strata bench poisson`, load average 1.3)
+//! Cold to 1e-6: 513² 15.3 ms, 1025² 54.6 ms, 2049² 236 ms (5 cycles after FMG, median factor
+//! 0.076–0.079 per iteration); right after a constraint change (mask rows and Galerkin stencils
+//! rebuilt incrementally, rows in parallel): 16.4, 55.6 and 243 ms. In the same run PyAMG took
+//! 69×, 90× and 99× longer; ours border-only was 1.3×, 1.2× and 1.5× the DST solve's time.
 
 pub mod galerkin;
 pub mod gradient;
