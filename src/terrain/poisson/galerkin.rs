@@ -26,6 +26,7 @@
 
 use super::grid::Split;
 use super::level::Level;
+use rayon::prelude::*;
 
 /// Index of the stencil entry of offset `(dx, dz)` (each in −1..=1): `(dz + 1) · 3 + (dx + 1)`.
 /// Row `dz = −1` is the row above (`j − 1`).
@@ -215,85 +216,139 @@ fn galerkin_at(fine: &Level, coarse: &Level, ic: usize, jc: usize) -> [f64; 9] {
 
 /// Sets the free mask of `coarse` by injection from `fine` and computes its Galerkin operator.
 pub fn coarsen_into(fine: &Level, coarse: &mut Level) {
-    let (cg, fg) = (coarse.grid, fine.grid);
-    for jc in 0..cg.nz {
-        for ic in 0..cg.nx {
-            let (c, k) = coarse.split.locate(ic, jc);
-            coarse.free[c][k] = u8::from(!cg.is_border(ic, jc) && fine.is_free(2 * ic, 2 * jc));
-        }
+    coarse.nine = None;
+    coarsen_rows(fine, coarse, 0, fine.grid.nz - 1);
+}
+
+/// Updates `coarse` after the mask or the operator of `fine` changed in fine rows `a..=b`: the
+/// injected mask rows `2J ∈ a..=b` and the stencils of the coarse rows within reach
+/// (`|2J − j| ≤ 2` for a changed fine row `j`), spliced into the special list. Returns the coarse
+/// rows whose mask or stencils may have changed (for the next coarser level). Rows run in
+/// parallel; a `coarse` without an operator yet gets a complete one.
+pub fn coarsen_rows(fine: &Level, coarse: &mut Level, a: usize, b: usize) -> (usize, usize) {
+    let cg = coarse.grid;
+    let cs = coarse.split;
+    let cst = cs.stride;
+    let (m0, m1) = (a.div_ceil(2), (b / 2).min(cg.nz - 1));
+    {
+        let [f0, f1] = &mut coarse.free;
+        f0.par_chunks_mut(cst)
+            .zip(f1.par_chunks_mut(cst))
+            .enumerate()
+            .filter(|(jc, _)| (m0..=m1).contains(jc))
+            .for_each(|(jc, (r0, r1))| {
+                for (c, row) in [r0, r1].into_iter().enumerate() {
+                    let s = Split::shift(c, jc);
+                    for (k, slot) in row.iter_mut().enumerate().take(cs.count(c, jc)) {
+                        let ic = 2 * k + s;
+                        *slot = u8::from(!cg.is_border(ic, jc) && fine.is_free(2 * ic, 2 * jc));
+                    }
+                }
+            });
     }
     let fine_default = fine.nine.as_ref().map_or(FIVE_POINT, |op| op.default);
     let default = galerkin_default(&fine_default);
-    // Coarse samples within reach of a fine non-default sample (an interior fixed sample, or a
-    // sample with its own stencil): `|2I − n| ≤ 2` in both directions.
-    let mut near = vec![false; cg.nx * cg.nz];
-    let mut mark = |i: usize, j: usize| {
+    let (s0, s1) = match &coarse.nine {
+        Some(op) if op.default == default => (
+            a.saturating_sub(2).div_ceil(2),
+            ((b + 2) / 2).min(cg.nz - 1),
+        ),
+        _ => (0, cg.nz - 1),
+    };
+    let rows: Vec<Vec<Special>> = (s0..=s1)
+        .into_par_iter()
+        .map(|jc| row_specials(fine, coarse, &default, jc))
+        .collect();
+    let old = coarse
+        .nine
+        .take()
+        .filter(|op| op.default == default)
+        .unwrap_or_else(|| NinePoint::uniform(default, cg.nz));
+    let mut op = NinePoint::uniform(default, cg.nz);
+    op.special
+        .extend_from_slice(&old.special[..old.row_start[s0]]);
+    op.row_start[..=s0].copy_from_slice(&old.row_start[..=s0]);
+    for (jc, row) in (s0..=s1).zip(rows) {
+        op.row_start[jc] = op.special.len();
+        op.special.extend(row);
+    }
+    let tail = old.row_start[s1 + 1];
+    let shift = op.special.len() as isize - tail as isize;
+    op.special.extend_from_slice(&old.special[tail..]);
+    for jc in s1 + 1..=cg.nz {
+        op.row_start[jc] = (old.row_start[jc] as isize + shift) as usize;
+    }
+    coarse.nine = Some(op);
+    (s0, s1)
+}
+
+/// The special stencils of coarse row `jc`: the coarse free samples within reach of a fine
+/// non-default sample (an interior fixed sample, or one with its own stencil: `|2I − n| ≤ 2` in
+/// both directions) whose Galerkin stencil differs from the masked default, in colour then slot
+/// order.
+fn row_specials(fine: &Level, coarse: &Level, default: &[f64; 9], jc: usize) -> Vec<Special> {
+    let (cg, fg) = (coarse.grid, fine.grid);
+    let mut out = Vec::new();
+    if jc == 0 || jc + 1 >= cg.nz {
+        return out;
+    }
+    let mut near = vec![false; cg.nx];
+    let mut mark = |i: usize| {
         let (i0, i1) = (
             i.saturating_sub(2).div_ceil(2),
             ((i + 2) / 2).min(cg.nx - 1),
         );
-        let (j0, j1) = (
-            j.saturating_sub(2).div_ceil(2),
-            ((j + 2) / 2).min(cg.nz - 1),
-        );
-        for jc in j0..=j1 {
-            for ic in i0..=i1 {
-                near[jc * cg.nx + ic] = true;
-            }
-        }
+        near[i0..=i1].fill(true);
     };
     let fs = fine.split;
-    for j in 1..fg.nz - 1 {
+    let mut any = false;
+    for j in (2 * jc).saturating_sub(2).max(1)..=(2 * jc + 2).min(fg.nz - 2) {
         for c in 0..2 {
             let s = Split::shift(c, j);
             let row = &fine.free[c][j * fs.stride..(j + 1) * fs.stride];
             for (k, f) in row.iter().enumerate().take(fg.nx / 2).skip(1 - s) {
                 if *f == 0 {
-                    mark(2 * k + s, j);
+                    mark(2 * k + s);
+                    any = true;
                 }
             }
         }
-    }
-    if let Some(op) = &fine.nine {
-        for (j, sp) in (0..fg.nz).flat_map(|j| op.row(j).iter().map(move |s| (j, s))) {
-            mark(
-                2 * (sp.slot - j * fs.stride) + Split::shift(sp.colour, j),
-                j,
-            );
+        if let Some(op) = &fine.nine {
+            for sp in op.row(j) {
+                mark(2 * (sp.slot - j * fs.stride) + Split::shift(sp.colour, j));
+                any = true;
+            }
         }
     }
-    let mut op = NinePoint::uniform(default, cg.nz);
-    for jc in 1..cg.nz - 1 {
-        op.row_start[jc] = op.special.len();
-        for c in 0..2 {
-            let s = Split::shift(c, jc);
-            for k in 1 - s..cg.nx / 2 {
-                let ic = 2 * k + s;
-                if !near[jc * cg.nx + ic] || !coarse.is_free(ic, jc) {
-                    continue;
-                }
-                let stencil = galerkin_at(fine, coarse, ic, jc);
-                let mut masked = default;
-                for dz in -1..=1isize {
-                    for dx in -1..=1isize {
-                        let (x, z) = ((ic as isize + dx) as usize, (jc as isize + dz) as usize);
-                        if !coarse.is_free(x, z) {
-                            masked[entry(dx, dz)] = 0.0;
-                        }
+    if !any {
+        return out;
+    }
+    for c in 0..2 {
+        let s = Split::shift(c, jc);
+        for k in 1 - s..cg.nx / 2 {
+            let ic = 2 * k + s;
+            if !near[ic] || !coarse.is_free(ic, jc) {
+                continue;
+            }
+            let stencil = galerkin_at(fine, coarse, ic, jc);
+            let mut masked = *default;
+            for dz in -1..=1isize {
+                for dx in -1..=1isize {
+                    let (x, z) = ((ic as isize + dx) as usize, (jc as isize + dz) as usize);
+                    if !coarse.is_free(x, z) {
+                        masked[entry(dx, dz)] = 0.0;
                     }
                 }
-                if stencil != masked {
-                    op.special.push(Special {
-                        colour: c,
-                        slot: jc * coarse.split.stride + k,
-                        stencil,
-                        inv_centre: 1.0 / stencil[4],
-                    });
-                }
+            }
+            if stencil != masked {
+                out.push(Special {
+                    colour: c,
+                    slot: jc * coarse.split.stride + k,
+                    stencil,
+                    inv_centre: 1.0 / stencil[4],
+                });
             }
         }
     }
-    op.row_start[cg.nz - 1] = op.special.len();
-    op.row_start[cg.nz] = op.special.len();
-    coarse.nine = Some(op);
+    out
 }

@@ -1,8 +1,10 @@
 //! The multigrid driver: full-multigrid start, V- or W-cycles with residual correction, the
 //! relative-residual stopping rule, warm starts, and the per-solve report.
 
+use super::galerkin::coarsen_rows;
 use super::grid::{GridSpec, Split};
 use super::level::Level;
+use super::local::{self, Rect};
 use super::ops::{
     apply_operator, dot, prolong, residual, residual_restrict, restrict_rhs, smooth,
     smooth_reverse, update_direction, update_solution,
@@ -117,6 +119,13 @@ pub struct SolveReport {
     pub converged: bool,
     /// `‖b‖₂`, metres.
     pub rhs_norm: f64,
+    /// Local cycles of a warm re-solve ([`super::local`]) run before `cycles`; their residuals
+    /// are estimates and are not listed in `relative_residuals`, whose first entry is then the
+    /// measured global residual after them.
+    pub local_cycles: usize,
+    /// Samples relaxed by the smoothers on all levels (each Gauss–Seidel sweep over a level or a
+    /// window counts its samples): the work of the solve, independent of the machine.
+    pub samples_relaxed: u64,
 }
 
 impl SolveReport {
@@ -138,6 +147,9 @@ pub struct Solver {
     krylov: Option<Krylov>,
     scratch: Vec<f64>,
     has_solution: bool,
+    /// True when the previous solve converged (the background residual of a local re-solve is
+    /// within the tolerance).
+    last_converged: bool,
     pool: Option<rayon::ThreadPool>,
 }
 
@@ -182,6 +194,7 @@ impl Solver {
             krylov: None,
             scratch: Vec::new(),
             has_solution: false,
+            last_converged: false,
             pool,
         })
     }
@@ -238,6 +251,7 @@ impl Solver {
         let run = |s: &mut Self| {
             s.update_mask(problem);
             s.has_solution = true;
+            s.last_converged = false;
             problem.load(&mut s.levels[0]).sqrt()
         };
         let norm = match &pool {
@@ -328,8 +342,15 @@ impl Solver {
     }
 
     fn run(&mut self, problem: &Problem, start: Start) -> SolveReport {
-        self.update_mask(problem);
-        let bnorm = problem.load(&mut self.levels[0]).sqrt();
+        let relaxed_before = self.relaxed();
+        let mask_change = self.update_mask(problem);
+        let (bb, load_change) = problem.load_tracked(&mut self.levels[0]);
+        let bnorm = bb.sqrt();
+        let change = match (mask_change, load_change) {
+            (Some(a), Some(b)) => Some(a.union(b)),
+            (a, b) => a.or(b),
+        };
+        let local_ok = matches!(start, Start::Warm) && self.has_solution && self.last_converged;
         let kind = match start {
             Start::Warm if self.has_solution => StartKind::Warm,
             Start::From(h) => {
@@ -358,45 +379,67 @@ impl Solver {
                     }
                 }
             }
+            self.last_converged = true;
             return SolveReport {
                 start: kind,
                 cycles: 0,
                 relative_residuals: vec![0.0],
                 converged: true,
                 rhs_norm: 0.0,
+                local_cycles: 0,
+                samples_relaxed: 0,
             };
         }
+        let mut local_cycles = 0;
+        let mut local_relaxed = 0;
         if kind == StartKind::Cold {
             self.full_multigrid();
+        } else if let (true, Some(rect)) = (local_ok, change) {
+            let o = self.options;
+            if let Some(out) = local::resolve(
+                &mut self.levels,
+                rect,
+                &o,
+                &mut self.scratch,
+                o.tolerance * bnorm,
+            ) {
+                local_cycles = out.cycles;
+                local_relaxed = out.relaxed;
+            }
         }
         let (cycles, relative_residuals) = self.cycles(bnorm);
         let converged = relative_residuals
             .last()
             .is_some_and(|r| *r <= self.options.tolerance);
+        self.last_converged = converged;
         SolveReport {
             start: kind,
             cycles,
             relative_residuals,
             converged,
             rhs_norm: bnorm,
+            local_cycles,
+            samples_relaxed: self.relaxed() - relaxed_before + local_relaxed,
         }
     }
 
-    /// Installs the problem's mask on the finest level and re-restricts the coarse masks if it
-    /// changed.
-    fn update_mask(&mut self, problem: &Problem) {
-        let free = problem.free_mask();
-        let l0 = &self.levels[0];
-        let g = l0.grid;
-        let same = (0..g.nz).all(|j| (0..g.nx).all(|i| l0.is_free(i, j) == free[j * g.nx + i]));
-        if same && self.has_solution {
-            return;
-        }
-        self.levels[0].set_mask(&free);
+    /// Samples relaxed so far on every level (and the conjugate-gradient work level).
+    fn relaxed(&self) -> u64 {
+        self.levels.iter().map(|l| l.relaxed).sum::<u64>()
+            + self.krylov.as_ref().map_or(0, |k| k.zl.relaxed)
+    }
+
+    /// Installs the problem's mask on the finest level and updates the coarse masks and
+    /// operators in the rows within reach of the samples that changed. Returns the rectangle of
+    /// the changed samples.
+    fn update_mask(&mut self, problem: &Problem) -> Option<Rect> {
+        let change = self.levels[0].set_fixed(problem.fixed)?;
+        let (mut a, mut b) = (change.j0, change.j1);
         for l in 1..self.levels.len() {
-            let (a, b) = self.levels.split_at_mut(l);
-            a[l - 1].restrict_mask(&mut b[0]);
+            let (x, y) = self.levels.split_at_mut(l);
+            (a, b) = coarsen_rows(&x[l - 1], &mut y[0], a, b);
         }
+        Some(change)
     }
 
     /// Full multigrid on the correction equation. The free samples of the finest level start
@@ -600,7 +643,7 @@ fn coons_start(level: &mut Level) {
     }
 }
 
-fn gamma(c: Cycle) -> usize {
+pub(crate) fn gamma(c: Cycle) -> usize {
     match c {
         Cycle::V => 1,
         Cycle::W => 2,
@@ -614,7 +657,7 @@ fn gamma(c: Cycle) -> usize {
 /// With `symmetric`, post-smoothing runs black→red (the adjoint of the pre-smoother), as the
 /// conjugate-gradient preconditioner needs; plain cycles smooth red→black both times, which
 /// converges faster after bilinear prolongation.
-fn cycle(
+pub(crate) fn cycle(
     levels: &mut [Level],
     l: usize,
     o: &SolveOptions,

@@ -114,6 +114,7 @@ const FOUR_COLOURS: [(usize, usize); 4] = [(0, 0), (0, 1), (1, 0), (1, 1)];
 /// `sweeps` Gauss–Seidel sweeps: red then black on the finest level (5-point), the four colours
 /// of [`FOUR_COLOURS`] in order on coarse levels (9-point).
 pub fn smooth(level: &mut Level, sweeps: usize) {
+    level.relaxed += (sweeps * level.grid.len()) as u64;
     for _ in 0..sweeps {
         if level.nine.is_some() {
             for (c, p) in FOUR_COLOURS {
@@ -129,6 +130,7 @@ pub fn smooth(level: &mut Level, sweeps: usize) {
 /// `sweeps` sweeps in the reverse colour order: the adjoint of [`smooth`], for post-smoothing, so
 /// a cycle is a symmetric operator (a valid conjugate-gradient preconditioner).
 pub fn smooth_reverse(level: &mut Level, sweeps: usize) {
+    level.relaxed += (sweeps * level.grid.len()) as u64;
     for _ in 0..sweeps {
         if level.nine.is_some() {
             for (c, p) in FOUR_COLOURS.into_iter().rev() {

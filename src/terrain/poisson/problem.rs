@@ -16,6 +16,7 @@
 
 use super::grid::GridSpec;
 use super::level::Level;
+use super::local::Rect;
 use super::PoissonError;
 use rayon::prelude::*;
 
@@ -113,12 +114,18 @@ impl Problem<'_> {
     /// returns `‖b‖²`, the squared norm of the right-hand side of the reduced system over the free
     /// samples (fixed neighbours moved to the right: `b − Σ_fixed neighbours h`).
     pub fn load(&self, level: &mut Level) -> f64 {
+        self.load_tracked(level).0
+    }
+
+    /// [`Self::load`], also returning the rectangle of the samples whose right-hand side (free
+    /// samples) or height (fixed samples) differs from what `level` held before, if any.
+    pub fn load_tracked(&self, level: &mut Level) -> (f64, Option<Rect>) {
         let g = self.grid;
         let (nx, nz) = (g.nx, g.nz);
         let st = level.split.stride;
         let delta = g.spacing_m;
         let band = (nz / (4 * rayon::current_num_threads().max(1))).max(8);
-        let mut partial = vec![0.0f64; nz];
+        let mut partial = vec![(0.0f64, None::<(usize, usize)>); nz];
         let [r0, r1] = &mut level.rhs;
         let [h0, h1] = &mut level.h;
         let free = &level.free;
@@ -133,6 +140,12 @@ impl Problem<'_> {
                 for (dj, slot) in part.iter_mut().enumerate() {
                     let j = b * band + dj;
                     let mut ss = 0.0f64;
+                    let mut span: Option<(usize, usize)> = None;
+                    let mut note = |i: usize| {
+                        span = Some(
+                            span.map_or((i, i), |(a, b): (usize, usize)| (a.min(i), b.max(i))),
+                        );
+                    };
                     for i in 0..nx {
                         let n = j * nx + i;
                         let (c, k) = ((i + j) & 1, dj * st + i / 2);
@@ -142,27 +155,51 @@ impl Problem<'_> {
                             (&mut *r1, &mut *h1)
                         };
                         if free[c][j * st + i / 2] == 0 {
+                            let v = f64::from(me.heights[n]);
+                            if rr[k] != 0.0 || hh[k] != v {
+                                note(i);
+                            }
                             rr[k] = 0.0;
-                            hh[k] = f64::from(me.heights[n]);
+                            hh[k] = v;
                             continue;
                         }
                         let ex = n - j;
                         let div = (f64::from(me.gx[ex]) - f64::from(me.gx[ex - 1]))
                             + (f64::from(me.gz[n]) - f64::from(me.gz[n - nx]));
                         let rhs = delta * div;
+                        if rr[k] != rhs {
+                            note(i);
+                        }
                         rr[k] = rhs;
                         let mut beff = rhs;
-                        for m in [n - 1, n + 1, n - nx, n + nx] {
-                            let (mi, mj) = (m % nx, m / nx);
-                            if g.is_border(mi, mj) || me.fixed[m] {
+                        for (m, border) in [
+                            (n - 1, i == 1),
+                            (n + 1, i + 2 == nx),
+                            (n - nx, j == 1),
+                            (n + nx, j + 2 == nz),
+                        ] {
+                            if border || me.fixed[m] {
                                 beff -= f64::from(me.heights[m]);
                             }
                         }
                         ss += beff * beff;
                     }
-                    *slot = ss;
+                    *slot = (ss, span);
                 }
             });
-        partial.iter().sum()
+        let norm = partial.iter().map(|p| p.0).sum();
+        let change = partial
+            .iter()
+            .enumerate()
+            .filter_map(|(j, p)| {
+                p.1.map(|(a, b)| Rect {
+                    i0: a,
+                    j0: j,
+                    i1: b,
+                    j1: j,
+                })
+            })
+            .reduce(Rect::union);
+        (norm, change)
     }
 }

@@ -1,0 +1,616 @@
+//! Localized warm re-solve after a small edit: correction cycles whose fine levels only work in
+//! windows around the change, in the spirit of the fast adaptive composite-grid method (FAC:
+//! McCormick & Thomas, *The fast adaptive composite grid method for elliptic equations*, Math.
+//! Comp. 46, 1986) on our Galerkin hierarchy.
+//!
+//! After an edit, the solver knows where the right-hand side, the fixed heights or the mask
+//! changed (a rectangle of the finest level, see [`super::Solver`]). The correction `E` that
+//! takes the previous solution to the new one solves `A E = r₀`, `r₀` the residual of the previous
+//! solution for the new problem: large near the change, and elsewhere the previous solve's
+//! residual (below the tolerance, left as it is). `E` is not local (a Green's function decays
+//! slowly), but far from the change it is smooth, so coarse levels represent it well there.
+//!
+//! # Windows
+//! The active window of the finest level is the change dilated by one sample (the residual of a
+//! changed fixed height reaches its neighbours) and by [`LOCAL_MARGIN`]; each coarser level's
+//! window covers the finer one's (with its one-sample ring) plus [`LOCAL_MARGIN`] of its own
+//! samples, so in fine samples the margins double per level. The first level whose window would
+//! cover a quarter of it (or the coarsest) is *full*: it and every coarser level run the ordinary
+//! kernels of [`super::ops`]. If the finest window covers more than [`LOCAL_MAX_FRACTION`] of the
+//! grid, the solver runs global cycles instead.
+//!
+//! # Composite correction
+//! The correction is represented on the composite grid: the finest level's values in its window
+//! (with the ring), each coarser level's accumulated correction `D_l` in its window, and `D_k` on
+//! the full level `k`; outside a level's window, a level takes the bilinear interpolation `P` of
+//! the next coarser one. One local cycle is a V-cycle on this composite problem:
+//! - finest level: the residual `b − A h` in its window (its ring holds the interpolated coarse
+//!   correction of the earlier cycles);
+//! - level `l ≥ 1`: the right-hand side is `Pᵀ` of the finer level's residual where the finer
+//!   window covers all nine fine samples of the restriction, and the composite residual
+//!   `R_l − A_l D_l` elsewhere, with `R_l` the restriction of the initial residual `r₀` (zero
+//!   outside the finest window) and `A_l` the Galerkin operator (so that, away from finer windows,
+//!   `Pᵀ (r₀ − A P D_l) = R_l − A_l D_l`); pre-smoothing in the window from a zero correction,
+//!   then the residual for the next level;
+//! - the full level `k` runs [`super::multigrid`]'s cycle (V or W) on its composite right-hand
+//!   side;
+//! - going up: each level adds `P` of the coarser correction in its window and ring,
+//!   post-smooths in its window and adds its correction to `D_l`; the finest level adds it to the
+//!   heights and smooths (`pre_smooth + post_smooth` red-black sweeps, as the global cycle).
+//!
+//! Bilinear interpolation of the far correction leaves a residual proportional to its second
+//! derivatives (a smooth field interpolated bilinearly has kinks along the coarse grid lines), so
+//! the write-back smooths a band around each level's window: [`LOCAL_BAND`] samples around the
+//! finest window (two red-black sweeps with `b`), half that around coarser windows (two four-colour
+//! sweeps of the correction outside the window, where its right-hand side is zero). Measured on a
+//! 32-sample brush, the global relative residual after the write-back is 1.5e-6 (513²) to 3e-6
+//! (1025²) without the previous solve's residual: below a tolerance of 1e-5, and one global cycle
+//! away from 1e-6. (Wider bands, larger margins, more sweeps, FAC injection of the fine correction
+//! into the coarse one under the window, and full-level smoothing of the coarse corrections each
+//! moved it by less than 25 % in our trials.)
+//!
+//! Local cycles run until an estimate of the global residual, `‖r_window‖² + Σ_l ‖ρ_l‖² / 4^l`
+//! (`ρ_l` the composite residual of level `l` outside the finer window; a coarse residual value
+//! stands for about `4^l` fine residuals of `1/4^l` of its size), is at most [`LOCAL_TARGET`]
+//! times the tolerance, or [`LOCAL_MAX_CYCLES`]. Then the corrections are interpolated down the
+//! hierarchy to the whole finest level (one prolongation per level) and the solver measures the
+//! true global relative residual `‖b − A h‖ / ‖b‖`; if it is above the tolerance, global cycles
+//! continue from there. The window kernels are sequential and the full levels use the
+//! deterministic kernels, so results do not depend on the thread count.
+
+use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
+use super::level::Level;
+use super::multigrid::{cycle, gamma, SolveOptions};
+use super::ops::prolong;
+
+/// Margin of every level's window around the finer window, in that level's samples.
+pub const LOCAL_MARGIN: usize = 8;
+/// Width of the band around the finest window smoothed after the write-back, in finest samples:
+/// bilinear interpolation of the far correction leaves a residual proportional to its second
+/// derivatives, largest next to the window.
+pub const LOCAL_BAND: usize = 96;
+/// Red-black sweeps over the band.
+pub const LOCAL_BAND_SWEEPS: usize = 2;
+/// The largest share of the finest grid the finest window may cover for a local re-solve.
+pub const LOCAL_MAX_FRACTION: f64 = 0.125;
+/// The most local cycles of one re-solve (then global cycles take over if needed).
+pub const LOCAL_MAX_CYCLES: usize = 8;
+/// Local cycles stop when the estimated relative residual is at most this times the tolerance.
+pub const LOCAL_TARGET: f64 = 0.25;
+
+/// A rectangle of samples of one level, bounds included.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rect {
+    /// First column.
+    pub i0: usize,
+    /// First row.
+    pub j0: usize,
+    /// Last column.
+    pub i1: usize,
+    /// Last row.
+    pub j1: usize,
+}
+
+impl Rect {
+    /// The rectangle of one sample.
+    pub fn point(i: usize, j: usize) -> Self {
+        Self {
+            i0: i,
+            j0: j,
+            i1: i,
+            j1: j,
+        }
+    }
+
+    /// The smallest rectangle holding both.
+    pub fn union(self, o: Self) -> Self {
+        Self {
+            i0: self.i0.min(o.i0),
+            j0: self.j0.min(o.j0),
+            i1: self.i1.max(o.i1),
+            j1: self.j1.max(o.j1),
+        }
+    }
+
+    /// Grown by `m` samples on every side, clipped to an `nx × nz` grid.
+    pub fn dilate(self, m: usize, nx: usize, nz: usize) -> Self {
+        Self {
+            i0: self.i0.saturating_sub(m),
+            j0: self.j0.saturating_sub(m),
+            i1: (self.i1 + m).min(nx - 1),
+            j1: (self.j1 + m).min(nz - 1),
+        }
+    }
+
+    /// The coarse samples whose interpolation reaches this rectangle of the finer level.
+    pub fn coarsen(self) -> Self {
+        Self {
+            i0: self.i0 / 2,
+            j0: self.j0 / 2,
+            i1: self.i1.div_ceil(2),
+            j1: self.j1.div_ceil(2),
+        }
+    }
+
+    /// Columns.
+    pub fn width(&self) -> usize {
+        self.i1 - self.i0 + 1
+    }
+
+    /// Samples.
+    pub fn area(&self) -> usize {
+        self.width() * (self.j1 - self.j0 + 1)
+    }
+
+    fn full(nx: usize, nz: usize) -> Self {
+        Self {
+            i0: 0,
+            j0: 0,
+            i1: nx - 1,
+            j1: nz - 1,
+        }
+    }
+}
+
+/// What a local re-solve did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LocalOutcome {
+    /// Local cycles run.
+    pub cycles: usize,
+    /// Samples relaxed in the windows (the full levels count in their [`Level::relaxed`]).
+    pub relaxed: u64,
+}
+
+/// One level's window: natural-order arrays over `ext` (the active window and its ring).
+struct Win {
+    act: Rect,
+    ext: Rect,
+    free: Vec<bool>,
+    /// The operator's stencil at each sample (5-point on the finest level).
+    stencil: Vec<[f64; 9]>,
+    /// True where the finer level's window covers the restriction of this sample.
+    inner: Vec<bool>,
+    /// This cycle's correction (on the finest level: the heights).
+    c: Vec<f64>,
+    /// This cycle's right-hand side (on the finest level: `b`).
+    rho: Vec<f64>,
+    /// The residual after pre-smoothing (on the finest level: of the heights).
+    s: Vec<f64>,
+    /// The accumulated correction `D_l`.
+    d: Vec<f64>,
+    /// The restriction `R_l` of the initial residual.
+    r: Vec<f64>,
+}
+
+impl Win {
+    fn new(level: &Level, act: Rect, finer: Option<Rect>) -> Self {
+        let g = level.grid;
+        let ext = act.dilate(1, g.nx, g.nz);
+        let n = ext.area();
+        let mut w = Self {
+            act,
+            ext,
+            free: vec![false; n],
+            stencil: vec![FIVE_POINT; n],
+            inner: vec![false; n],
+            c: vec![0.0; n],
+            rho: vec![0.0; n],
+            s: vec![0.0; n],
+            d: vec![0.0; n],
+            r: vec![0.0; n],
+        };
+        for j in ext.j0..=ext.j1 {
+            let row = level.nine.as_ref().map(|op| (op.default, op.row(j)));
+            for i in ext.i0..=ext.i1 {
+                let x = w.idx(i, j);
+                let (c, k) = level.split.locate(i, j);
+                w.free[x] = level.free[c][k] != 0;
+                if let Some((default, _)) = row {
+                    w.stencil[x] = default;
+                }
+                w.inner[x] = finer
+                    .is_some_and(|f| 2 * i > f.i0 && 2 * i < f.i1 && 2 * j > f.j0 && 2 * j < f.j1);
+            }
+            if let Some((_, specials)) = row {
+                for sp in specials {
+                    let i = 2 * (sp.slot - j * level.split.stride)
+                        + super::grid::Split::shift(sp.colour, j);
+                    if (ext.i0..=ext.i1).contains(&i) {
+                        let x = w.idx(i, j);
+                        w.stencil[x] = sp.stencil;
+                    }
+                }
+            }
+        }
+        w
+    }
+
+    #[inline]
+    fn idx(&self, i: usize, j: usize) -> usize {
+        (j - self.ext.j0) * self.ext.width() + (i - self.ext.i0)
+    }
+
+    /// `(A v)(i, j)` with this level's stencil.
+    #[inline]
+    fn apply(&self, v: &[f64], i: usize, j: usize) -> f64 {
+        let st = &self.stencil[self.idx(i, j)];
+        let w = self.ext.width();
+        let x = self.idx(i, j);
+        let (up, down) = (x - w, x + w);
+        ((st[entry(-1, 0)] * v[x - 1] + st[entry(1, 0)] * v[x + 1])
+            + (st[entry(0, -1)] * v[up] + st[entry(0, 1)] * v[down]))
+            + ((st[entry(-1, -1)] * v[up - 1] + st[entry(1, -1)] * v[up + 1])
+                + (st[entry(-1, 1)] * v[down - 1] + st[entry(1, 1)] * v[down + 1]))
+            + st[4] * v[x]
+    }
+
+    /// Gauss–Seidel sweeps on `c` in the active window: red-black on the finest level, the four
+    /// colours (colour, row parity) of the global smoother on coarse levels. Returns the samples
+    /// relaxed.
+    fn smooth(&mut self, sweeps: usize, finest: bool) -> u64 {
+        let a = self.act;
+        let groups: &[(usize, Option<usize>)] = if finest {
+            &[(0, None), (1, None)]
+        } else {
+            &[(0, Some(0)), (0, Some(1)), (1, Some(0)), (1, Some(1))]
+        };
+        for _ in 0..sweeps {
+            for &(colour, parity) in groups {
+                for j in a.j0..=a.j1 {
+                    if parity.is_some_and(|p| j % 2 != p) {
+                        continue;
+                    }
+                    let first = a.i0 + ((a.i0 + j + colour) & 1);
+                    for i in (first..=a.i1).step_by(2) {
+                        let x = self.idx(i, j);
+                        if !self.free[x] {
+                            continue;
+                        }
+                        let centre = self.stencil[x][4];
+                        let off = self.apply(&self.c, i, j) - centre * self.c[x];
+                        self.c[x] = (self.rho[x] - off) / centre;
+                    }
+                }
+            }
+        }
+        (sweeps * a.area()) as u64
+    }
+
+    /// `s = rho − A c` in the active window (zero at fixed samples); returns `‖s‖²`.
+    fn residual(&mut self) -> f64 {
+        let a = self.act;
+        let mut ss = 0.0;
+        for j in a.j0..=a.j1 {
+            for i in a.i0..=a.i1 {
+                let x = self.idx(i, j);
+                let v = if self.free[x] {
+                    self.rho[x] - self.apply(&self.c, i, j)
+                } else {
+                    0.0
+                };
+                self.s[x] = v;
+                ss += v * v;
+            }
+        }
+        ss
+    }
+
+    /// The composite residual `R − A D` at the active samples the finer window does not cover,
+    /// into `rho`; returns its squared norm.
+    fn outer_residual(&mut self) -> f64 {
+        let a = self.act;
+        let mut ss = 0.0;
+        for j in a.j0..=a.j1 {
+            for i in a.i0..=a.i1 {
+                let x = self.idx(i, j);
+                if self.inner[x] {
+                    continue;
+                }
+                let v = if self.free[x] {
+                    self.r[x] - self.apply(&self.d, i, j)
+                } else {
+                    0.0
+                };
+                self.rho[x] = v;
+                ss += v * v;
+            }
+        }
+        ss
+    }
+}
+
+/// `Pᵀ` of `field(fine)` (read in the fine active window only, zero elsewhere) at coarse sample
+/// `(ic, jc)`.
+fn restrict_at(fine_level: &Level, fine: &Win, field: &[f64], ic: usize, jc: usize) -> f64 {
+    let a = fine.act;
+    let mut sum = 0.0;
+    for dz in -1..=1isize {
+        for dx in -1..=1isize {
+            let (fi, fj) = ((2 * ic) as isize + dx, (2 * jc) as isize + dz);
+            if fi < a.i0 as isize || fi > a.i1 as isize || fj < a.j0 as isize || fj > a.j1 as isize
+            {
+                continue;
+            }
+            let (fi, fj) = (fi as usize, fj as usize);
+            let v = field[fine.idx(fi, fj)];
+            if v != 0.0 {
+                sum += interpolation_weight(fine_level, fi, fj, ic, jc) * v;
+            }
+        }
+    }
+    sum
+}
+
+/// `P` of the coarse correction at fine sample `(i, j)`.
+fn prolong_at(fine_level: &Level, coarse: &Win, i: usize, j: usize) -> f64 {
+    let mut sum = 0.0;
+    for cj in j / 2..=j.div_ceil(2) {
+        for ci in i / 2..=i.div_ceil(2) {
+            let v = coarse.c[coarse.idx(ci, cj)];
+            if v != 0.0 {
+                sum += interpolation_weight(fine_level, i, j, ci, cj) * v;
+            }
+        }
+    }
+    sum
+}
+
+/// Adds `P` of `coarse.c` to `fine.c` at the free samples of the fine window and ring.
+fn prolong_window(fine_level: &Level, fine: &mut Win, coarse: &Win) {
+    let e = fine.ext;
+    for j in e.j0..=e.j1 {
+        for i in e.i0..=e.i1 {
+            let x = fine.idx(i, j);
+            if fine.free[x] {
+                fine.c[x] += prolong_at(fine_level, coarse, i, j);
+            }
+        }
+    }
+}
+
+/// The windows of a change of the finest level: the active rectangles of levels `0..=k`, the
+/// last one full. `None` if the finest window is too large or there is a single level.
+fn windows(levels: &[Level], change: Rect) -> Option<Vec<Rect>> {
+    if levels.len() < 2 {
+        return None;
+    }
+    let g = levels[0].grid;
+    let act = change.dilate(1 + LOCAL_MARGIN, g.nx, g.nz);
+    if act.area() as f64 > LOCAL_MAX_FRACTION * g.len() as f64 {
+        return None;
+    }
+    let mut acts = vec![act];
+    for l in 1..levels.len() {
+        let (fg, cg) = (levels[l - 1].grid, levels[l].grid);
+        let full = Rect::full(cg.nx, cg.nz);
+        let a = acts[l - 1]
+            .dilate(1, fg.nx, fg.nz)
+            .coarsen()
+            .dilate(LOCAL_MARGIN, cg.nx, cg.nz);
+        if l + 1 == levels.len() || 4 * a.area() >= full.area() {
+            acts.push(full);
+            break;
+        }
+        acts.push(a);
+    }
+    Some(acts)
+}
+
+/// Runs local cycles for a change of the finest level inside `change`, then writes the composite
+/// correction to every finest sample. `levels[0]` holds the previous solution and the new
+/// right-hand side and mask. Returns `None` (nothing done) when the change is too large for a
+/// local re-solve. `tolerance_abs` is the tolerance times `‖b‖`.
+pub fn resolve(
+    levels: &mut [Level],
+    change: Rect,
+    o: &SolveOptions,
+    scratch: &mut Vec<f64>,
+    tolerance_abs: f64,
+) -> Option<LocalOutcome> {
+    let acts = windows(levels, change)?;
+    let k = acts.len() - 1;
+    let mut wins: Vec<Win> = (0..=k)
+        .map(|l| Win::new(&levels[l], acts[l], (l > 0).then(|| acts[l - 1])))
+        .collect();
+    {
+        let (l0, w0) = (&levels[0], &mut wins[0]);
+        for j in w0.ext.j0..=w0.ext.j1 {
+            for i in w0.ext.i0..=w0.ext.i1 {
+                let (c, s) = l0.split.locate(i, j);
+                let x = w0.idx(i, j);
+                w0.c[x] = l0.h[c][s];
+                w0.rho[x] = l0.rhs[c][s];
+            }
+        }
+    }
+    let target = LOCAL_TARGET * tolerance_abs;
+    let mut out = LocalOutcome {
+        cycles: 0,
+        relaxed: 0,
+    };
+    loop {
+        let mut est = wins[0].residual();
+        if out.cycles == 0 {
+            let w0 = &mut wins[0];
+            w0.r.clone_from(&w0.s);
+            for l in 1..=k {
+                let (a, b) = wins.split_at_mut(l);
+                let (fine, coarse) = (&a[l - 1], &mut b[0]);
+                let act = coarse.act;
+                for j in act.j0..=act.j1 {
+                    for i in act.i0..=act.i1 {
+                        let x = coarse.idx(i, j);
+                        if coarse.free[x] {
+                            coarse.r[x] = restrict_at(&levels[l - 1], fine, &fine.r, i, j);
+                        }
+                    }
+                }
+            }
+        }
+        let mut scale = 1.0;
+        for w in wins.iter_mut().skip(1) {
+            scale *= 0.25;
+            est += scale * w.outer_residual();
+        }
+        if est.sqrt() <= target || out.cycles == LOCAL_MAX_CYCLES {
+            break;
+        }
+        // Down: restricted residuals inside the finer windows, pre-smoothing in the windows.
+        for l in 1..=k {
+            let (a, b) = wins.split_at_mut(l);
+            let (fine, coarse) = (&a[l - 1], &mut b[0]);
+            let act = coarse.act;
+            for j in act.j0..=act.j1 {
+                for i in act.i0..=act.i1 {
+                    let x = coarse.idx(i, j);
+                    if coarse.inner[x] {
+                        coarse.rho[x] = if coarse.free[x] {
+                            restrict_at(&levels[l - 1], fine, &fine.s, i, j)
+                        } else {
+                            0.0
+                        };
+                    }
+                }
+            }
+            if l < k {
+                coarse.c.fill(0.0);
+                out.relaxed += coarse.smooth(o.pre_smooth, false);
+                coarse.residual();
+            }
+        }
+        // The full level: the ordinary cycle on its composite right-hand side.
+        {
+            let (lk, wk) = (&mut levels[k], &mut wins[k]);
+            for j in 0..lk.grid.nz {
+                for i in 0..lk.grid.nx {
+                    let (c, s) = lk.split.locate(i, j);
+                    let x = wk.idx(i, j);
+                    lk.rhs[c][s] = if wk.free[x] { wk.rho[x] } else { 0.0 };
+                }
+            }
+            lk.zero_h();
+        }
+        for _ in 0..gamma(o.cycle) {
+            cycle(levels, k, o, scratch, false);
+        }
+        {
+            let (lk, wk) = (&levels[k], &mut wins[k]);
+            for j in 0..lk.grid.nz {
+                for i in 0..lk.grid.nx {
+                    let (c, s) = lk.split.locate(i, j);
+                    let x = wk.idx(i, j);
+                    wk.c[x] = lk.h[c][s];
+                    wk.d[x] += wk.c[x];
+                }
+            }
+        }
+        // Up: prolongation into the windows and rings, post-smoothing, accumulation.
+        for l in (0..k).rev() {
+            let (a, b) = wins.split_at_mut(l + 1);
+            let (fine, coarse) = (&mut a[l], &b[0]);
+            prolong_window(&levels[l], fine, coarse);
+            if l > 0 {
+                out.relaxed += fine.smooth(o.post_smooth, false);
+                for x in 0..fine.c.len() {
+                    fine.d[x] += fine.c[x];
+                }
+            } else {
+                out.relaxed += fine.smooth(o.pre_smooth + o.post_smooth, true);
+            }
+        }
+        out.cycles += 1;
+    }
+    // Write back: every level's composite correction, interpolated down to the finest level.
+    {
+        let (lk, wk) = (&mut levels[k], &wins[k]);
+        lk.zero_h();
+        for j in 0..lk.grid.nz {
+            for i in 0..lk.grid.nx {
+                let (c, s) = lk.split.locate(i, j);
+                lk.h[c][s] = wk.d[wk.idx(i, j)];
+            }
+        }
+    }
+    for l in (0..k).rev() {
+        let (a, b) = levels.split_at_mut(l + 1);
+        let (fine, coarse) = (&mut a[l], &b[0]);
+        if l > 0 {
+            fine.zero_h();
+            prolong::<false>(coarse, fine, scratch);
+        } else {
+            prolong::<true>(coarse, fine, scratch);
+        }
+        let w = &wins[l];
+        let values = if l > 0 { &w.d } else { &w.c };
+        for j in w.ext.j0..=w.ext.j1 {
+            for i in w.ext.i0..=w.ext.i1 {
+                let x = w.idx(i, j);
+                if w.free[x] {
+                    let (c, s) = fine.split.locate(i, j);
+                    fine.h[c][s] = values[x];
+                }
+            }
+        }
+        // Smooth the interpolation residual next to the window (on coarse levels outside the
+        // window, where the correction's right-hand side is zero; on the finest level
+        // everywhere in the band, with `b`).
+        let g = fine.grid;
+        let band = w.act.dilate(LOCAL_BAND >> l.min(1), g.nx, g.nz);
+        let hole = (l > 0).then_some(w.ext);
+        out.relaxed += smooth_band(fine, band, hole, LOCAL_BAND_SWEEPS);
+    }
+    Some(out)
+}
+
+/// Gauss–Seidel sweeps of `level.h` in `rect` minus `hole`, sequentially, in the colour order
+/// of the global smoother (red-black with `b` on the finest level; four colours with a zero
+/// right-hand side on coarse levels, whose `h` holds the composite correction). Returns the
+/// samples relaxed.
+fn smooth_band(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: usize) -> u64 {
+    let split = level.split;
+    let st = split.stride;
+    let inside = |i: usize, j: usize| {
+        hole.is_some_and(|h| (h.i0..=h.i1).contains(&i) && (h.j0..=h.j1).contains(&j))
+    };
+    let groups: &[(usize, Option<usize>)] = if level.nine.is_none() {
+        &[(0, None), (1, None)]
+    } else {
+        &[(0, Some(0)), (0, Some(1)), (1, Some(0)), (1, Some(1))]
+    };
+    for _ in 0..sweeps {
+        for &(colour, parity) in groups {
+            let [h0, h1] = &mut level.h;
+            let (x, y) = if colour == 0 { (h0, &*h1) } else { (h1, &*h0) };
+            let (rhs, free) = (&level.rhs[colour], &level.free[colour]);
+            for j in rect.j0.max(1)..=rect.j1.min(split.nz - 2) {
+                if parity.is_some_and(|p| j % 2 != p) {
+                    continue;
+                }
+                let first = rect.i0 + ((rect.i0 + j + colour) & 1);
+                for i in (first..=rect.i1.min(split.nx - 2)).step_by(2) {
+                    let (_, k) = split.locate(i, j);
+                    if free[k] == 0 || inside(i, j) {
+                        continue;
+                    }
+                    let (_, l) = split.locate(i - 1, j);
+                    let (_, r) = split.locate(i + 1, j);
+                    match &level.nine {
+                        None => {
+                            let sum = (y[l] + y[r]) + (y[k - st] + y[k + st]);
+                            x[k] = (sum - rhs[k]) * 0.25;
+                        }
+                        Some(op) => {
+                            let s = op.stencil(colour, k, j);
+                            let off = ((s[entry(-1, 0)] * y[l] + s[entry(1, 0)] * y[r])
+                                + (s[entry(0, -1)] * y[k - st] + s[entry(0, 1)] * y[k + st]))
+                                + ((s[entry(-1, -1)] * x[l - st] + s[entry(1, -1)] * x[r - st])
+                                    + (s[entry(-1, 1)] * x[l + st] + s[entry(1, 1)] * x[r + st]));
+                            x[k] = -off / s[4];
+                        }
+                    }
+                }
+            }
+        }
+    }
+    (sweeps * rect.area()) as u64
+}
