@@ -47,7 +47,8 @@ pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 /// (`src/authoring` tools and solver, `src/subsurface` breaches) changes any tile's bits, so
 /// every cached result — in memory and on disk — is orphaned rather than served stale.
 ///
-/// 2: the thermal erosion brush adds its change instead of replacing the target gradient.
+/// 2: the thermal erosion brush adds its change instead of replacing the target gradient, and
+/// the Poisson solver loads its right-hand side without per-neighbour divisions.
 pub const TILE_CODE_VERSION: u32 = 2;
 
 /// The vertex spacing of a LOD, metres.
