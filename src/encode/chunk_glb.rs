@@ -12,9 +12,6 @@ use super::chunk::{ChunkInfo, CHUNK_FORMAT};
 use crate::volume::chunk::ChunkMesh;
 use serde_json::json;
 
-const GLB_MAGIC: u32 = 0x4654_6C67;
-const CHUNK_JSON: u32 = 0x4E4F_534A;
-const CHUNK_BIN: u32 = 0x004E_4942;
 const ARRAY_BUFFER: u32 = 34962;
 const ELEMENT_ARRAY_BUFFER: u32 = 34963;
 const FLOAT: u32 = 5126;
@@ -107,23 +104,5 @@ pub fn encode(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
         doc["buffers"] = json!([{ "byteLength": bin.len() }]);
     }
     doc["nodes"] = json!([node]);
-    let mut json_chunk = serde_json::to_vec(&doc).unwrap_or_default();
-    while !json_chunk.len().is_multiple_of(4) {
-        json_chunk.push(b' ');
-    }
-    let bin_len = if bin.is_empty() { 0 } else { 8 + bin.len() };
-    let total = 12 + 8 + json_chunk.len() + bin_len;
-    let mut out = Vec::with_capacity(total);
-    out.extend_from_slice(&GLB_MAGIC.to_le_bytes());
-    out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
-    out.extend_from_slice(&(json_chunk.len() as u32).to_le_bytes());
-    out.extend_from_slice(&CHUNK_JSON.to_le_bytes());
-    out.extend_from_slice(&json_chunk);
-    if !bin.is_empty() {
-        out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
-        out.extend_from_slice(&CHUNK_BIN.to_le_bytes());
-        out.extend_from_slice(&bin);
-    }
-    out
+    super::glb::container(&doc, &bin)
 }

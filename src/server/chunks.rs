@@ -17,8 +17,8 @@
 
 use super::error::{code, truncate, AppError};
 use super::params::{parse_coord, parse_format, parse_lod, parse_seed, split_extension};
-use super::routes::{CachedProduct, IMMUTABLE};
-use super::worlds::{authorize, LATEST_MAX_AGE_S};
+use super::routes::CachedProduct;
+use super::worlds::{authorize, product_headers};
 use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
 use crate::encode::{chunk_glb, Format};
@@ -33,7 +33,7 @@ use crate::volume::chunk::{
 };
 use crate::volume::mesh::QuadMesh;
 use axum::extract::{Path, RawQuery, State};
-use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::http::{HeaderMap, StatusCode};
 use axum::response::Response;
 use axum::routing::get;
 use axum::Router;
@@ -279,21 +279,6 @@ async fn world_chunk(
     let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
     let p = product(&st, inputs, plan, key, format).await?;
     let mut res = p.respond(&headers);
-    let cache = match (pinned.is_some(), meta.public) {
-        (true, true) => IMMUTABLE.to_string(),
-        (true, false) => "private, max-age=31536000, immutable".to_string(),
-        (false, true) => format!("public, max-age={LATEST_MAX_AGE_S}"),
-        (false, false) => format!("private, max-age={LATEST_MAX_AGE_S}"),
-    };
-    if let Ok(v) = HeaderValue::from_str(&cache) {
-        res.headers_mut().insert(header::CACHE_CONTROL, v);
-    }
-    if !meta.public {
-        res.headers_mut()
-            .insert(header::VARY, HeaderValue::from_static("Authorization"));
-    }
-    if let Ok(v) = HeaderValue::from_str(&version.to_string()) {
-        res.headers_mut().insert(super::worlds::VERSION_HEADER, v);
-    }
+    product_headers(&mut res, &meta, version, pinned.is_some());
     Ok(res)
 }

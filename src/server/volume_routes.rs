@@ -26,20 +26,20 @@
 //! pinned with `?v=N`, short-lived otherwise, like world chunks.
 
 use super::error::{code, truncate, AppError};
-use super::routes::{CachedProduct, IMMUTABLE};
+use super::routes::CachedProduct;
 use super::worlds::{
-    authorize, check_content_type, commit_edit, json_response, parse_if_match, query_param,
-    requested_version, set_version_headers, store_error, LATEST_MAX_AGE_S,
+    authorize, check_content_type, commit_edit, json_response, parse_if_match, product_headers,
+    query_param, requested_version, set_version_headers, store_error,
 };
 use super::AppState;
 use crate::encode::region_glb::{self, RegionInfo};
 use crate::scene::{Element, VolumeInput};
-use crate::store::{Role, WorldMeta};
+use crate::store::Role;
 use crate::volume::element::{VolumeSpec, MAX_VOLUME_TRIANGLES};
 use crate::volume::mesh_import::{glb_triangles, MAX_GLB_BYTES};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
-use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::http::{HeaderMap, StatusCode};
 use axum::response::Response;
 use axum::routing::{get, post};
 use axum::Router;
@@ -88,24 +88,6 @@ fn volume_input(inputs: &crate::scene::SceneInputs, vid: &str) -> Option<VolumeI
         .volumes_meeting([f64::MIN; 3], [f64::MAX; 3])
         .into_iter()
         .find(|v| v.spec.id == vid)
-}
-
-/// Caching headers of a product answer of world `meta` at `version`.
-fn product_headers(res: &mut Response, meta: &WorldMeta, version: u64, pinned: bool) {
-    let cache = match (pinned, meta.public) {
-        (true, true) => IMMUTABLE.to_string(),
-        (true, false) => "private, max-age=31536000, immutable".to_string(),
-        (false, true) => format!("public, max-age={LATEST_MAX_AGE_S}"),
-        (false, false) => format!("private, max-age={LATEST_MAX_AGE_S}"),
-    };
-    if let Ok(v) = HeaderValue::from_str(&cache) {
-        res.headers_mut().insert(header::CACHE_CONTROL, v);
-    }
-    if !meta.public {
-        res.headers_mut()
-            .insert(header::VARY, HeaderValue::from_static("Authorization"));
-    }
-    set_version_headers(res, version, false);
 }
 
 /// `GET /v1/worlds/{id}/volumes/{vid}/mesh.glb[?v=N]`.

@@ -832,7 +832,15 @@ async fn world_product(
 
 /// Caching headers of a world product answer.
 fn finish_product(p: &WorldProduct, mut res: Response) -> Response {
-    let cache = match (p.pinned, p.meta.public) {
+    product_headers(&mut res, &p.meta, p.version, p.pinned);
+    res
+}
+
+/// Caching headers of any product of world `meta` at `version` (tiles, chunks, region meshes):
+/// immutable when `pinned` by `?v=N`, short-lived otherwise; private and varying by
+/// `Authorization` unless the world is public; the version header.
+pub(super) fn product_headers(res: &mut Response, meta: &WorldMeta, version: u64, pinned: bool) {
+    let cache = match (pinned, meta.public) {
         (true, true) => IMMUTABLE.to_string(),
         (true, false) => "private, max-age=31536000, immutable".to_string(),
         (false, true) => format!("public, max-age={LATEST_MAX_AGE_S}"),
@@ -841,12 +849,11 @@ fn finish_product(p: &WorldProduct, mut res: Response) -> Response {
     if let Ok(v) = HeaderValue::from_str(&cache) {
         res.headers_mut().insert(header::CACHE_CONTROL, v);
     }
-    if !p.meta.public {
+    if !meta.public {
         res.headers_mut()
             .insert(header::VARY, HeaderValue::from_static("Authorization"));
     }
-    set_version_headers(&mut res, p.version, false);
-    res
+    set_version_headers(res, version, false);
 }
 
 async fn blocking<T: Send + 'static>(

@@ -33,9 +33,7 @@ pub const MAX_NODE_DEPTH: usize = 32;
 /// Most node visits in one scene traversal (a node reached twice counts twice).
 pub const MAX_NODE_VISITS: usize = 4096;
 
-const GLB_MAGIC: u32 = 0x4654_6C67;
-const CHUNK_JSON: u32 = 0x4E4F_534A;
-const CHUNK_BIN: u32 = 0x004E_4942;
+use crate::encode::glb::{CHUNK_BIN, CHUNK_JSON, GLB_MAGIC};
 
 /// Why a glb is refused.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -520,33 +518,8 @@ pub fn triangles_to_glb(triangles: &[[[f32; 3]; 3]], matrix: Option<&Mat4>) -> V
     write_glb(&doc, &bin)
 }
 
-/// Frames a JSON document and a binary chunk as a glb (both padded to 4 bytes: the JSON with
-/// spaces, the binary with zeros).
-pub fn write_glb(doc: &Value, bin: &[u8]) -> Vec<u8> {
-    let mut json = serde_json::to_vec(doc).unwrap_or_default();
-    while !json.len().is_multiple_of(4) {
-        json.push(b' ');
-    }
-    let mut bin = bin.to_vec();
-    while !bin.len().is_multiple_of(4) {
-        bin.push(0);
-    }
-    let bin_len = if bin.is_empty() { 0 } else { 8 + bin.len() };
-    let total = 12 + 8 + json.len() + bin_len;
-    let mut out = Vec::with_capacity(total);
-    out.extend_from_slice(&GLB_MAGIC.to_le_bytes());
-    out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
-    out.extend_from_slice(&(json.len() as u32).to_le_bytes());
-    out.extend_from_slice(&CHUNK_JSON.to_le_bytes());
-    out.extend_from_slice(&json);
-    if !bin.is_empty() {
-        out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
-        out.extend_from_slice(&CHUNK_BIN.to_le_bytes());
-        out.extend_from_slice(&bin);
-    }
-    out
-}
+/// Frames a JSON document and a binary chunk as a glb ([`crate::encode::glb::container`]).
+pub use crate::encode::glb::container as write_glb;
 
 #[cfg(test)]
 mod tests {
