@@ -279,24 +279,8 @@ async fn get(
     uri: &str,
     headers: &[(&str, &str)],
 ) -> (StatusCode, axum::http::HeaderMap, Vec<u8>) {
-    let mut req = Request::builder().method(Method::GET).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, *v);
-    }
-    let res = app
-        .clone()
-        .oneshot(req.body(Body::empty()).expect("request"))
-        .await
-        .expect("infallible");
-    let (status, headers) = (res.status(), res.headers().clone());
-    let body = res
-        .into_body()
-        .collect()
-        .await
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    (status, headers, body)
+    let r = common::oneshot::send(app, Method::GET, uri, headers, None).await;
+    (r.status, r.headers, r.body)
 }
 
 /// A layer `y` holding the ground at chunk column (0, 0), LOD `lod`.

@@ -1,16 +1,17 @@
 //! The HTTP contract of `api/openapi.yaml` and `api/tile_format_v1.md`, driven through
 //! `strata::server::app` with `tower::ServiceExt::oneshot` (no socket).
 
-use axum::body::Body;
-use axum::http::{header, HeaderMap, Method, Request, StatusCode};
+use axum::http::{header, Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::Value;
 use std::time::Duration;
 use strata::compute::Compute;
 use strata::server::{app, AppState, Limits};
 use strata::terrain::{WorldParams, WorldPlan};
-use tower::ServiceExt;
+
+mod common;
+
+use common::oneshot::Reply;
 
 const N: usize = 4225;
 
@@ -18,47 +19,8 @@ fn service() -> Router {
     app(AppState::new(Compute::cpu()))
 }
 
-struct Reply {
-    status: StatusCode,
-    headers: HeaderMap,
-    body: Vec<u8>,
-}
-
-impl Reply {
-    fn header(&self, name: &str) -> Option<&str> {
-        self.headers.get(name).and_then(|v| v.to_str().ok())
-    }
-
-    fn json(&self) -> Value {
-        serde_json::from_slice(&self.body)
-            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)))
-    }
-}
-
 async fn send(app: &Router, method: Method, uri: &str, headers: &[(&str, &str)]) -> Reply {
-    let mut req = Request::builder().method(method).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, *v);
-    }
-    let res = app
-        .clone()
-        .oneshot(req.body(Body::empty()).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let headers = res.headers().clone();
-    let body = res
-        .into_body()
-        .collect()
-        .await
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    Reply {
-        status,
-        headers,
-        body,
-    }
+    common::oneshot::send(app, method, uri, headers, None).await
 }
 
 async fn get(app: &Router, uri: &str) -> Reply {

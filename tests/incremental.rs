@@ -4,10 +4,8 @@
 //! `strata::server::app` with `tower::ServiceExt::oneshot`; stage runs are read from the cache's
 //! counters and from `/metrics`.
 
-use axum::body::Body;
-use axum::http::{Method, Request, StatusCode};
+use axum::http::{Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use std::collections::BTreeSet;
 use strata::cache::{Stage, StageCache};
@@ -17,7 +15,8 @@ use strata::server::routes::encode_tile;
 use strata::server::{app, AppState};
 use strata::terrain::tile::snap_edges;
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
-use tower::ServiceExt;
+
+mod common;
 
 async fn send(
     app: &Router,
@@ -26,24 +25,8 @@ async fn send(
     headers: &[(&str, &str)],
     body: Vec<u8>,
 ) -> (StatusCode, Vec<u8>) {
-    let mut req = Request::builder().method(method).uri(uri);
-    for (k, v) in headers {
-        req = req.header(*k, *v);
-    }
-    let res = app
-        .clone()
-        .oneshot(req.body(Body::from(body)).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let body = res
-        .into_body()
-        .collect()
-        .await
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    (status, body)
+    let r = common::oneshot::send(app, method, uri, headers, Some(&body)).await;
+    (r.status, r.body)
 }
 
 async fn get_ok(app: &Router, uri: &str) -> Vec<u8> {
