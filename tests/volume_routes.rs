@@ -132,7 +132,10 @@ fn solve(element: &Value) -> Vec<f32> {
     let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
     let e: Element = serde_json::from_value(element.clone()).expect("element");
     let spec = VolumeSpec::from_element(&e).expect("valid element");
-    solve_volume(&plan, &spec).expect("solved").fields.surface
+    solve_volume(&plan, &spec, &TileEdits::default())
+        .expect("solved")
+        .fields
+        .surface
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

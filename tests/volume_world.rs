@@ -5,6 +5,7 @@
 
 use serde_json::{json, Value};
 use std::sync::Arc;
+use strata::authoring::{solve_region, RegionSpec};
 use strata::edits::{synthesize, TileEdits};
 use strata::scene::{Element, Scene};
 use strata::subsurface::carve::mesh_world_chunk;
@@ -92,7 +93,7 @@ fn a_volume_element_puts_an_arch_into_the_chunks_and_leaves_the_rest() {
     let plan = plan();
     let ground = ground_at(&plan, 32, 24);
     let spec = VolumeSpec::from_element(&element(arch_element(ground))).expect("valid element");
-    let solved = Arc::new(solve_volume(&plan, &spec).expect("solved"));
+    let solved = Arc::new(solve_volume(&plan, &spec, &TileEdits::default()).expect("solved"));
     let volumes = vec![solved];
     let ys = ((ground - 12.0) as i64).div_euclid(32)..=((ground + 36.0) as i64).div_euclid(32);
     let mut with = Vec::new();
@@ -206,4 +207,47 @@ fn height_tiles_mark_the_vertices_a_volume_region_overrides() {
     let plain = strata::cache::decode_tile(&strata::cache::encode_tile(&hash, &bare), &hash)
         .expect("decoded");
     assert_eq!(plain, bare);
+}
+
+/// The height of the top of the solid in column `(x, z)` of a solved region (world metres): the
+/// highest grid sample there whose filtered distance is negative.
+fn top_of_solid(v: &SolvedVolume, x: f32, z: f32) -> f32 {
+    let g = &v.fields.grid;
+    let i = ((x - g.origin[0]) / g.spacing).round() as usize;
+    let k = ((z - g.origin[2]) / g.spacing).round() as usize;
+    (0..g.dims[1])
+        .rev()
+        .find(|&j| v.fields.surface[g.index(i, j, k)] < 0.0)
+        .map(|j| g.origin[1] + j as f32 * g.spacing)
+        .expect("solid in the column")
+}
+
+/// The ground a volume region's pipeline takes is the world's edited ground: an authored region
+/// raising a point inside the box raises the region's solid there, as it raises the tiles.
+#[test]
+fn the_volume_ground_takes_the_authored_regions_over_the_box() {
+    let plan = plan();
+    let spec = VolumeSpec::from_element(&element(arch_element(ground_at(&plan, 32, 24))))
+        .expect("valid element");
+    let (x, z) = (56.0f32, 8.0f32);
+    let base = ground_at(&plan, 56, 8);
+    let peak = base + 12.0;
+    let scene = Scene::from_value(&json!({"regions": [{
+        "id": "hill", "bbox": {"min": [32, -16], "max": [96, 48]}, "samples": 65,
+        "ops": [{"op": "elevation", "shape": {"point": [x, z]}, "elevation_m": peak,
+                 "radius_m": 4}]}]}))
+    .expect("scene");
+    let region = RegionSpec::from_element(&scene.regions[0]).expect("region");
+    let hill = Arc::new(solve_region(&plan, &region).expect("solved region"));
+    let edits = TileEdits {
+        displacements: vec![hill],
+        ..TileEdits::default()
+    };
+    let plain = solve_volume(&plan, &spec, &TileEdits::default()).expect("solved");
+    let raised = solve_volume(&plan, &spec, &edits).expect("solved");
+    let (before, after) = (top_of_solid(&plain, x, z), top_of_solid(&raised, x, z));
+    eprintln!("top of the solid at ({x}, {z}): {before} m without the hill, {after} m with it (ground {base} m, peak {peak} m)");
+    // One grid spacing (1 m) of sampling, plus the Gaussian filter's rounding of the peak.
+    assert!((before - base).abs() <= 2.0, "{before} vs ground {base}");
+    assert!((after - peak).abs() <= 2.0, "{after} vs peak {peak}");
 }

@@ -162,6 +162,8 @@ pub struct VolumeInput {
 pub struct StrataInput {
     /// The parsed element.
     pub spec: Arc<StrataSpec>,
+    /// Digest of the element (its canonical JSON).
+    pub digest: [u8; 32],
     bound: Arc<std::sync::OnceLock<(u64, Arc<Geology>)>>,
 }
 
@@ -184,7 +186,8 @@ impl StrataInput {
         }
     }
 
-    fn rect(&self) -> Rect {
+    /// The element's bbox.
+    pub fn rect(&self) -> Rect {
         Rect {
             min: self.spec.min,
             max: self.spec.max,
@@ -238,6 +241,7 @@ impl SceneInputs {
             .filter_map(|e| {
                 Some(StrataInput {
                     spec: Arc::new(StrataSpec::from_element(e).ok()?),
+                    digest: digest(e),
                     bound: Arc::default(),
                 })
             })
@@ -302,7 +306,11 @@ impl SceneInputs {
 
     /// The authored regions whose bbox meets what tile `key` reads, in document order.
     pub fn regions_touching(&self, key: TileKey) -> Vec<RegionInput> {
-        let reach = tile_reach(&self.world, key);
+        self.regions_meeting(&tile_reach(&self.world, key))
+    }
+
+    /// The authored regions whose bbox meets `rect`, in document order.
+    pub fn regions_meeting(&self, rect: &Rect) -> Vec<RegionInput> {
         self.regions
             .iter()
             .filter(|r| {
@@ -310,7 +318,7 @@ impl SceneInputs {
                     min: r.spec.min,
                     max: r.spec.max,
                 }
-                .intersects(&reach)
+                .intersects(rect)
             })
             .cloned()
             .collect()

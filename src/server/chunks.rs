@@ -169,7 +169,7 @@ async fn product(
         let (lo, hi) = chunk_box(key, spacing_m);
         let mut volumes = Vec::new();
         for v in inputs.volumes_meeting(lo, hi) {
-            if let Some(solved) = state.volumes.get(&plan, &v).await {
+            if let Some(solved) = state.volumes.get(&state.regions, &inputs, &plan, &v).await {
                 volumes.push(solved);
             }
         }

@@ -107,7 +107,11 @@ async fn mesh_glb(
     let seed = meta.seed;
     let product = st
         .limited(async move {
-            let solved = state.volumes.get(&plan, &volume).await.ok_or_else(|| {
+            let solved = state
+                .volumes
+                .get(&state.regions, &inputs, &plan, &volume)
+                .await
+                .ok_or_else(|| {
                 AppError::new(
                     StatusCode::UNPROCESSABLE_ENTITY,
                     code::INVALID_SCENE,

@@ -44,16 +44,25 @@
 //!
 //! # Deviations
 //!
-//! - The heightfield input is the procedural world (LOD 0) under the box; authored regions and
-//!   cave breaches over the box are not part of it (they are in `S_h`, so they show in the
-//!   blend band and outside).
+//! # The heightfield input
+//!
+//! The heightfield input is the world's LOD-0 ground under the box as tiles have it: the
+//! procedural heights plus the edits of the authored regions and the cave breaches of the
+//! `strata` elements meeting [`ground_rect`] ([`crate::edits::TileEdits::apply`]), so a region
+//! raised or a cave opened under the box shows inside it as outside. The server solves each
+//! region once per `(seed, digest of the element and of those edits' elements)`.
+//!
+//! # Deviations
+//!
 //! - Vertex materials of chunks stay the tile materials; the region's per-sample material is
 //!   not carried into chunks yet.
 
 use super::mesh_import::{glb_triangles, Mat4, MAX_GLB_BYTES};
 use super::pipeline::expand::ExpandParams;
 use super::pipeline::{self, Grid, Heightfield, InputMesh, PipelineParams, RegionFields};
-use crate::scene::Element;
+use crate::edits::TileEdits;
+use crate::scene::{Element, Rect};
+use crate::terrain::lattice::Window;
 use crate::terrain::WorldPlan;
 use serde::Deserialize;
 
@@ -395,13 +404,19 @@ pub struct SolvedVolume {
 pub fn solve_volume(
     plan: &WorldPlan,
     spec: &VolumeSpec,
+    edits: &TileEdits,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
-    let s = f64::from(plan.lods[0].spacing_m);
-    let gx0 = (spec.min[0] / s).floor() as i64 - 1;
-    let gz0 = (spec.min[1] / s).floor() as i64 - 1;
-    let w = ((spec.max[0] / s).ceil() as i64 + 1 - gx0 + 1) as usize;
-    let h = ((spec.max[1] / s).ceil() as i64 + 1 - gz0 + 1) as usize;
-    let field = crate::terrain::tile::field(plan, 0, gx0, gz0, w, h);
+    let window = ground_window(plan, spec);
+    let mut field =
+        crate::terrain::tile::field(plan, 0, window.gx0, window.gz0, window.w, window.h);
+    edits.apply(window, &mut field.heights);
+    let (s, gx0, gz0, w, h) = (
+        f64::from(window.spacing_m),
+        window.gx0,
+        window.gz0,
+        window.w,
+        window.h,
+    );
     let mut scene = spec.scene.clone();
     scene.heightfield = Some(Heightfield {
         origin: [(gx0 as f64 * s) as f32, (gz0 as f64 * s) as f32],
@@ -422,6 +437,35 @@ pub fn solve_volume(
         spec: spec.clone(),
         fields,
     })
+}
+
+/// The LOD-0 lattice rectangle of the ground under a volume region's box (one vertex beyond it
+/// on every side): the heightfield input of [`solve_volume`]. Its world rectangle,
+/// [`ground_rect`], is what selects the edits that input takes.
+pub fn ground_window(plan: &WorldPlan, spec: &VolumeSpec) -> Window {
+    let s = f64::from(plan.lods[0].spacing_m);
+    let gx0 = (spec.min[0] / s).floor() as i64 - 1;
+    let gz0 = (spec.min[1] / s).floor() as i64 - 1;
+    Window {
+        spacing_m: plan.lods[0].spacing_m,
+        gx0,
+        gz0,
+        w: ((spec.max[0] / s).ceil() as i64 + 1 - gx0 + 1) as usize,
+        h: ((spec.max[1] / s).ceil() as i64 + 1 - gz0 + 1) as usize,
+    }
+}
+
+/// The world rectangle of [`ground_window`], metres.
+pub fn ground_rect(plan: &WorldPlan, spec: &VolumeSpec) -> Rect {
+    let w = ground_window(plan, spec);
+    let s = f64::from(w.spacing_m);
+    Rect {
+        min: [w.gx0 as f64 * s, w.gz0 as f64 * s],
+        max: [
+            (w.gx0 + w.w as i64 - 1) as f64 * s,
+            (w.gz0 + w.h as i64 - 1) as f64 * s,
+        ],
+    }
 }
 
 impl SolvedVolume {
