@@ -61,33 +61,6 @@ fn require_chromium() {
     );
 }
 
-fn ensure_packages() {
-    let js = root().join("tests").join("js");
-    let modules = js.join("node_modules");
-    if modules.join("playwright-core").is_dir() && modules.join("pngjs").is_dir() {
-        return;
-    }
-    println!(
-        "installing tests/js packages: npm ci --prefix {}",
-        js.display()
-    );
-    let out = Command::new("npm")
-        .args(["ci", "--no-audit", "--no-fund", "--prefix"])
-        .arg(&js)
-        .output()
-        .unwrap_or_else(|e| {
-            panic!("`npm` could not be started ({e}); install npm (it ships with Node.js)")
-        });
-    assert!(
-        out.status.success(),
-        "`npm ci --prefix {}` failed ({}):\n{}\n{}",
-        js.display(),
-        out.status,
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
 fn path(p: &Path) -> &str {
     p.to_str().expect("UTF-8 path")
 }
@@ -126,7 +99,7 @@ fn run_node(script: &str, args: &[&str]) -> (bool, String) {
 fn viewer_streams_and_draws_terrain_in_headless_chromium() {
     require_node();
     require_chromium();
-    ensure_packages();
+    common::js::ensure_packages(&["playwright-core", "pngjs"]);
     let web = root().join("web").join("dist");
     assert!(
         web.join("index.html").is_file(),

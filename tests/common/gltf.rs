@@ -1,16 +1,10 @@
 //! The Khronos glTF validator (npm `gltf-validator`, driven by `tests/js/validate.mjs`) for the
-//! tests that write glb. Installs the validator with `npm ci --prefix tests/js` when
-//! `tests/js/node_modules` is missing. Without Node.js the calling test fails: it never skips.
+//! tests that write glb. Installs the validator with [`super::js::ensure_packages`]. Without
+//! Node.js the calling test fails: it never skips.
 
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-fn js_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests")
-        .join("js")
-}
 
 fn require_node() {
     match Command::new("node").arg("--version").output() {
@@ -27,34 +21,12 @@ fn require_node() {
     }
 }
 
-fn ensure_installed() {
-    let js = js_dir();
-    if js.join("node_modules").join("gltf-validator").is_dir() {
-        return;
-    }
-    let out = Command::new("npm")
-        .args(["ci", "--no-audit", "--no-fund", "--prefix"])
-        .arg(&js)
-        .output()
-        .unwrap_or_else(|e| {
-            panic!("`npm` could not be started ({e}); install npm (it ships with Node.js)")
-        });
-    assert!(
-        out.status.success(),
-        "`npm ci --prefix {}` failed ({}):\n{}\n{}",
-        js.display(),
-        out.status,
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
 /// Validates each `(name, glb bytes)` and returns the validator's reports in the same order
 /// (`errors`, `warnings`, `vertices`, `triangles`, …); the messages are printed. `tag` names the
 /// temporary directory. Panics if the validator cannot run or gives no report for a file.
 pub fn validate(tag: &str, files: &[(String, Vec<u8>)]) -> Vec<Value> {
     require_node();
-    ensure_installed();
+    super::js::ensure_packages(&["gltf-validator"]);
     let dir =
         Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("strata-{tag}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
@@ -67,7 +39,7 @@ pub fn validate(tag: &str, files: &[(String, Vec<u8>)]) -> Vec<Value> {
         })
         .collect();
     let out = Command::new("node")
-        .arg(js_dir().join("validate.mjs"))
+        .arg(super::js::js_dir().join("validate.mjs"))
         .args(&paths)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // Each test binary uses its own subset.
 
 pub mod gltf;
+pub mod js;
 pub mod oneshot;
 
 use std::ffi::OsStr;
