@@ -330,6 +330,58 @@ async fn bad_glb_is_refused_with_the_field_named() {
     assert_eq!(e.pointer, "/volumes/0/expand_curves/step_m");
 }
 
+/// Uploads without `If-Match` that race each other all land: none replaces another's mesh
+/// (the first upload creates the element's `meshes` list, so a patch built from a stale read
+/// would overwrite the list), and each answer names the index its mesh really has.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn concurrent_uploads_without_if_match_all_land_at_their_reported_index() {
+    let ground = ground_at(24, 24);
+    let app = app(AppState::new(Compute::cpu()));
+    let (id, token) = create(&app, json!({ "volumes": [arch_element(ground)] })).await;
+    let auth = format!("Bearer {token}");
+    let upload = |material: u16| {
+        let (app, auth, id) = (app.clone(), auth.clone(), id.clone());
+        let glb = triangles_to_glb(&unit_cube(), Some(&cube_placement(ground)));
+        async move {
+            let (s, _, b) = send(
+                &app,
+                Method::POST,
+                &format!("/v1/worlds/{id}/volumes/arch/meshes?material={material}"),
+                &[
+                    ("authorization", &auth),
+                    ("content-type", "model/gltf-binary"),
+                ],
+                glb,
+            )
+            .await;
+            assert_eq!(s, StatusCode::CREATED, "{}", String::from_utf8_lossy(&b));
+            (material, json_of(&b))
+        }
+    };
+    // Three contenders and three attempts each: every round commits at least one of them.
+    let tasks = [1, 2, 3].map(|m| tokio::spawn(upload(m)));
+    let mut answers = Vec::new();
+    for t in tasks {
+        answers.push(t.await.expect("upload task"));
+    }
+    let (_, _, body) = send(&app, Method::GET, &format!("/v1/worlds/{id}"), &[], vec![]).await;
+    let doc = json_of(&body);
+    assert_eq!(doc["version"], 4, "one version per upload");
+    let meshes = doc["scene"]["volumes"][0]["meshes"].clone();
+    assert_eq!(meshes.as_array().map(Vec::len), Some(3), "{meshes}");
+    let mut versions = Vec::new();
+    for (material, answer) in answers {
+        let k = answer["mesh"].as_u64().expect("mesh index") as usize;
+        assert_eq!(
+            meshes[k]["material"], material,
+            "upload {material} reported index {k}"
+        );
+        versions.push(answer["version"].as_u64().expect("version"));
+    }
+    versions.sort_unstable();
+    assert_eq!(versions, [2, 3, 4]);
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_region_mesh_glb_passes_the_khronos_validator() {
     let ground = ground_at(32, 24);

@@ -15,18 +15,18 @@
 //! (max(pixels) − 1)`, centred on the region's centre); the query places it otherwise. The
 //! scene stays the one source of truth: the import is an ordinary edit, in the edit log. With
 //! `If-Match` it applies only to that version (409 otherwise); without it, a concurrent edit is
-//! retried on the new head up to [`IMPORT_ATTEMPTS`] times.
+//! retried on the new head up to [`super::worlds::EDIT_ATTEMPTS`] times.
 
 use super::error::{code, truncate, AppError};
 use super::worlds::{
-    authorize, check_content_type, commit_edit, json_response, parse_if_match, query_param,
-    requested_version, store_error,
+    authorize, check_content_type, commit_on_head, json_response, parse_if_match, query_param,
+    requested_version,
 };
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
 use crate::authoring::Displacement;
-use crate::store::{Role, StoreError};
+use crate::store::Role;
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
@@ -206,38 +206,11 @@ async fn heightmap_in(
     let lo_m = number(q, "lo_m", None)?;
     let hi_m = number(q, "hi_m", None)?;
     let png_base64 = base64::engine::general_purpose::STANDARD.encode(&body);
-    // Without `If-Match` the paste goes on the latest version: a concurrent edit between reading
-    // the head and committing is retried on the new head, a few times.
-    let mut attempt = 0;
-    let (applied, ops) = loop {
-        attempt += 1;
-        let head = st.worlds.store.head(&id).await.map_err(store_error)?;
-        if let Some(expected) = expected {
-            if expected != head.meta.version {
-                return Err(store_error(StoreError::Conflict {
-                    expected,
-                    latest: head.meta.version,
-                }));
-            }
-        }
-        let (patch, ops) = import_patch(
-            &head.scene,
-            &id,
-            &rid,
-            head.meta.version,
-            q,
-            lo_m,
-            hi_m,
-            &png_base64,
-        )?;
-        match commit_edit(&st, &id, patch, Some(head.meta.version)).await {
-            Err(e)
-                if e.code == code::VERSION_CONFLICT
-                    && expected.is_none()
-                    && attempt < IMPORT_ATTEMPTS => {}
-            r => break (r?, ops),
-        }
-    };
+    // Without `If-Match` the paste goes on the latest version (retried on a concurrent edit).
+    let (applied, ops) = commit_on_head(&st, &id, expected, |scene, version| {
+        import_patch(scene, &id, &rid, version, q, lo_m, hi_m, &png_base64)
+    })
+    .await?;
     let mut res = json_response(
         StatusCode::OK,
         json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
@@ -249,9 +222,6 @@ async fn heightmap_in(
     );
     Ok(res)
 }
-
-/// Attempts of an unconditional import against concurrent edits.
-pub const IMPORT_ATTEMPTS: u32 = 3;
 
 /// The edit that appends the import's `copy_paste` operation to region `rid` of `scene` (the
 /// world's scene at `version`), and the new operation's index.

@@ -10,10 +10,12 @@
 //!
 //! **Edits go through the scene.** `PUT curves.json` and `POST meshes` are JSON Patches on the
 //! world's scene committed by the same path as `POST /v1/worlds/{id}/edits`
-//! ([`super::worlds::commit_edit`]): each makes one new version, honours `If-Match` (409 on a
-//! stale version), is announced to streams, and is validated like any edit. The patch starts
-//! with a `test` of `/volumes/{i}/id`, so an edit that moved the element between the read and
-//! the commit fails (422 `patch_failed`) instead of changing another element. An uploaded glb is
+//! ([`super::worlds::commit_on_head`]): each makes one new version, honours `If-Match` (409 on a
+//! stale version), is announced to streams, and is validated like any edit. The patch is built
+//! from the version it commits on (the element's index, the uploaded mesh's index), so it never
+//! applies to a scene it was not built from: without `If-Match`, a concurrent edit makes it
+//! rebuild on the new head (up to [`super::worlds::EDIT_ATTEMPTS`] times). The patch also starts
+//! with a `test` of `/volumes/{i}/id`, a second guard. An uploaded glb is
 //! stored in the element as a `{"glb_base64": …}` mesh entry (element docs,
 //! [`crate::volume::element`]): the scene stays the one source of truth, versions and exports
 //! carry it, and inline and uploaded meshes are solved by the same code. The cost is size: a glb
@@ -28,7 +30,7 @@
 use super::error::{code, truncate, AppError};
 use super::routes::CachedProduct;
 use super::worlds::{
-    authorize, check_content_type, commit_edit, json_response, parse_if_match, product_headers,
+    authorize, check_content_type, commit_on_head, json_response, parse_if_match, product_headers,
     query_param, requested_version, set_version_headers, store_error,
 };
 use super::AppState;
@@ -206,26 +208,27 @@ async fn put_curves(
             ))
         }
     };
-    let head = st.worlds.store.head(&id).await.map_err(store_error)?;
-    let (i, element) =
-        element_in(&head.scene, &vid).ok_or_else(|| no_volume(&id, &vid, head.meta.version))?;
-    if let Err((pointer, message)) = check_element(element, "curves", curves.clone()) {
-        let field = if pointer.starts_with("/curves") {
-            pointer
-        } else {
-            format!("/volumes/{i}{pointer}")
-        };
-        return Err(AppError::bad_request(
-            code::INVALID_SCENE,
-            field,
-            format!("the curves would be invalid: {message}"),
-        ));
-    }
-    let patch = patch(json!([
-        { "op": "test", "path": format!("/volumes/{i}/id"), "value": vid },
-        { "op": "add", "path": format!("/volumes/{i}/curves"), "value": curves },
-    ]))?;
-    let applied = commit_edit(&st, &id, patch, expected).await?;
+    let (applied, ()) = commit_on_head(&st, &id, expected, |scene, version| {
+        let (i, element) = element_in(scene, &vid).ok_or_else(|| no_volume(&id, &vid, version))?;
+        if let Err((pointer, message)) = check_element(element, "curves", curves.clone()) {
+            let field = if pointer.starts_with("/curves") {
+                pointer
+            } else {
+                format!("/volumes/{i}{pointer}")
+            };
+            return Err(AppError::bad_request(
+                code::INVALID_SCENE,
+                field,
+                format!("the curves would be invalid: {message}"),
+            ));
+        }
+        let patch = patch(json!([
+            { "op": "test", "path": format!("/volumes/{i}/id"), "value": vid },
+            { "op": "add", "path": format!("/volumes/{i}/curves"), "value": curves },
+        ]))?;
+        Ok((patch, ()))
+    })
+    .await?;
     let mut res = json_response(
         StatusCode::OK,
         json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
@@ -294,40 +297,42 @@ async fn upload_mesh(
     let triangles = glb_triangles(&body, None, MAX_VOLUME_TRIANGLES)
         .map_err(|e| AppError::bad_request(code::BAD_BODY, "body", format!("bad glb: {e}")))?
         .len();
-    let head = st.worlds.store.head(&id).await.map_err(store_error)?;
-    let (i, element) =
-        element_in(&head.scene, &vid).ok_or_else(|| no_volume(&id, &vid, head.meta.version))?;
     let entry = json!({
         "glb_base64": base64::engine::general_purpose::STANDARD.encode(&body),
         "alpha": alpha,
         "beta": beta,
         "material": material as u16,
     });
-    let mut meshes = element
-        .get("meshes")
-        .and_then(Value::as_array)
-        .cloned()
-        .unwrap_or_default();
-    let k = meshes.len();
-    let had_meshes = element.get("meshes").is_some();
-    meshes.push(entry.clone());
-    if let Err((pointer, message)) = check_element(element, "meshes", json!(meshes)) {
-        return Err(AppError::bad_request(
-            code::INVALID_SCENE,
-            format!("/volumes/{i}{pointer}"),
-            format!("the volume would be invalid: {message}"),
-        ));
-    }
-    let add = if had_meshes {
-        json!({ "op": "add", "path": format!("/volumes/{i}/meshes/-"), "value": entry })
-    } else {
-        json!({ "op": "add", "path": format!("/volumes/{i}/meshes"), "value": [entry] })
-    };
-    let patch = patch(json!([
-        { "op": "test", "path": format!("/volumes/{i}/id"), "value": vid },
-        add,
-    ]))?;
-    let applied = commit_edit(&st, &id, patch, expected).await?;
+    // The mesh's index and the patch are built from the version the patch commits on.
+    let (applied, k) = commit_on_head(&st, &id, expected, |scene, version| {
+        let (i, element) = element_in(scene, &vid).ok_or_else(|| no_volume(&id, &vid, version))?;
+        let mut meshes = element
+            .get("meshes")
+            .and_then(Value::as_array)
+            .cloned()
+            .unwrap_or_default();
+        let k = meshes.len();
+        let had_meshes = element.get("meshes").is_some();
+        meshes.push(entry.clone());
+        if let Err((pointer, message)) = check_element(element, "meshes", json!(meshes)) {
+            return Err(AppError::bad_request(
+                code::INVALID_SCENE,
+                format!("/volumes/{i}{pointer}"),
+                format!("the volume would be invalid: {message}"),
+            ));
+        }
+        let add = if had_meshes {
+            json!({ "op": "add", "path": format!("/volumes/{i}/meshes/-"), "value": entry })
+        } else {
+            json!({ "op": "add", "path": format!("/volumes/{i}/meshes"), "value": [entry] })
+        };
+        let patch = patch(json!([
+            { "op": "test", "path": format!("/volumes/{i}/id"), "value": vid },
+            add,
+        ]))?;
+        Ok((patch, k))
+    })
+    .await?;
     let mut res = json_response(
         StatusCode::CREATED,
         json!({ "id": id, "version": applied.version, "volume": vid, "mesh": k,

@@ -692,6 +692,45 @@ async fn edit(
     Ok(res)
 }
 
+/// Attempts of a read-modify-write edit made without `If-Match` ([`commit_on_head`]).
+pub const EDIT_ATTEMPTS: u32 = 3;
+
+/// Commits an edit that is built from the scene it applies to (an element's index, the length
+/// of a list it appends to): `build` gets the head's scene and version and returns the patch
+/// and what the answer reports. The patch is committed against exactly that version, so it can
+/// never apply to a scene it was not built from. With `If-Match` (`expected`) a stale version is
+/// 409 `version_conflict`; without it, a concurrent edit between the read and the commit makes
+/// it read the new head and build again, up to [`EDIT_ATTEMPTS`] times.
+pub(crate) async fn commit_on_head<T>(
+    st: &AppState,
+    id: &str,
+    expected: Option<u64>,
+    build: impl Fn(&Value, u64) -> Result<(json_patch::Patch, T), AppError>,
+) -> Result<(crate::store::EditApplied, T), AppError> {
+    let mut attempt = 0;
+    loop {
+        attempt += 1;
+        let head = st.worlds.store.head(id).await.map_err(store_error)?;
+        let version = head.meta.version;
+        if let Some(expected) = expected {
+            if expected != version {
+                return Err(store_error(StoreError::Conflict {
+                    expected,
+                    latest: version,
+                }));
+            }
+        }
+        let (patch, answer) = build(&head.scene, version)?;
+        match commit_edit(st, id, patch, Some(version)).await {
+            Err(e)
+                if e.code == code::VERSION_CONFLICT
+                    && expected.is_none()
+                    && attempt < EDIT_ATTEMPTS => {}
+            r => return Ok((r?, answer)),
+        }
+    }
+}
+
 /// Applies an edit the caller may make (checked by the caller), durably, then broadcasts it; the
 /// HTTP edit route and stream edits share it.
 pub(crate) async fn commit_edit(
@@ -1056,6 +1095,66 @@ mod tests {
             let e = parse_if_match(&h(bad)).expect_err(bad);
             assert_eq!(e.field.as_deref(), Some("If-Match"), "{bad}");
         }
+    }
+
+    /// A concurrent edit between reading the head and committing makes [`commit_on_head`] build
+    /// again on the new head (without `If-Match`), so both edits land; with `If-Match` it is 409.
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn commit_on_head_rebuilds_after_a_concurrent_edit() {
+        let st = AppState::new(crate::compute::Compute::cpu());
+        let scene = Scene::default().to_value();
+        let id = new_world_id().expect("id");
+        let token = new_token().expect("token");
+        st.worlds
+            .store
+            .create_world(NewWorld {
+                id: id.clone(),
+                seed: 1,
+                scene,
+                public: true,
+                admin_token: hash_token(&token),
+            })
+            .await
+            .expect("world");
+        let decal = |name: &str| -> json_patch::Patch {
+            serde_json::from_value(json!([{ "op": "add", "path": "/decals/-", "value":
+                { "id": name, "bbox": { "min": [0.0, 0.0], "max": [10.0, 10.0] } } }]))
+            .expect("patch")
+        };
+        let calls = std::sync::atomic::AtomicU32::new(0);
+        let build = |scene: &Value, version: u64| {
+            // On the first call another writer commits first: the patch built here is stale.
+            if calls.fetch_add(1, Ordering::SeqCst) == 0 {
+                tokio::task::block_in_place(|| {
+                    tokio::runtime::Handle::current().block_on(commit_edit(
+                        &st,
+                        &id,
+                        decal("other"),
+                        None,
+                    ))
+                })
+                .expect("the concurrent edit");
+            }
+            let seen = scene["decals"].as_array().map_or(0, Vec::len);
+            Ok((decal("mine"), (version, seen)))
+        };
+        let (applied, (built_on, seen)) = commit_on_head(&st, &id, None, &build)
+            .await
+            .expect("committed on the second attempt");
+        assert_eq!(
+            calls.load(Ordering::SeqCst),
+            2,
+            "built again after the conflict"
+        );
+        assert_eq!((built_on, applied.version), (2, 3));
+        assert_eq!(seen, 1, "the second build saw the concurrent edit");
+        // With If-Match on a stale version the edit is refused and nothing is built.
+        calls.store(1, Ordering::SeqCst);
+        let e = commit_on_head(&st, &id, Some(2), &build)
+            .await
+            .expect_err("stale If-Match");
+        assert_eq!(e.code, code::VERSION_CONFLICT);
+        assert_eq!(calls.load(Ordering::SeqCst), 1);
     }
 
     #[test]
