@@ -43,6 +43,7 @@
 //! exceed it.
 
 pub mod device;
+mod kit;
 pub mod layout;
 pub mod poisson;
 mod scopes;

@@ -23,6 +23,7 @@
 //! residuals of ~500 m heights are evaluated with `2⁻²⁴ · 500 m` rounding), not the CPU's `1e-6`
 //! on large grids; the heights then agree with the CPU's within a few millimetres.
 
+use super::kit::{bind_group, read_back, readback, upload, Binding, Program};
 use super::scopes::Scopes;
 use crate::terrain::poisson::level::Level;
 use crate::terrain::poisson::multigrid::{Cycle, SolveOptions, COARSEST_SWEEPS};
@@ -155,52 +156,14 @@ impl PoissonKernels {
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
         let scopes = Scopes::push(device);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("strata poisson.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(POISSON_WGSL.into()),
-        });
-        let entry = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let rw = wgpu::BufferBindingType::Storage { read_only: false };
-        let ro = wgpu::BufferBindingType::Storage { read_only: true };
-        let entries = [
-            entry(0, wgpu::BufferBindingType::Uniform),
-            entry(1, rw),
-            entry(2, rw),
-            entry(3, ro),
-            entry(4, rw),
-            entry(5, rw),
-            entry(6, rw),
-            entry(7, ro),
-            entry(8, ro),
-        ];
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("strata poisson bindings"),
-            entries: &entries,
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("strata poisson layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let pipeline = |name: &str| {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(name),
-                layout: Some(&pipeline_layout),
-                module: &module,
-                entry_point: Some(name),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        };
+        let (r, w) = (Binding::Read, Binding::ReadWrite);
+        let program = Program::new(
+            device,
+            "strata poisson.wgsl",
+            POISSON_WGSL,
+            &[Binding::Uniform, w, w, r, w, w, w, r, r],
+        );
+        let pipeline = |name: &str| program.pipeline(device, name);
         let kernels = Self {
             smooth_red: pipeline("smooth_red"),
             smooth_black: pipeline("smooth_black"),
@@ -213,7 +176,7 @@ impl PoissonKernels {
             restrict: pipeline("restrict_residual"),
             prolong: pipeline("prolong"),
             zero: pipeline("zero_h"),
-            layout,
+            layout: program.layout,
         };
         scopes.pop().context("compiling shaders/poisson.wgsl")?;
         Ok(kernels)
@@ -244,14 +207,7 @@ impl PoissonKernels {
         }
         let scopes = Scopes::push(device);
         let make = |label: &str, contents: &[u8], usage: wgpu::BufferUsages| {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: (contents.len() as u64).max(4).next_multiple_of(4),
-                usage: usage | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            queue.write_buffer(&buffer, 0, contents);
-            buffer
+            upload(device, queue, label, contents, usage)
         };
         let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC;
         let f32s = |a: &[Vec<f64>; 2]| -> Vec<f32> {
@@ -316,19 +272,7 @@ impl PoissonKernels {
                     freec,
                     &stencils[l],
                 ];
-                let entries: Vec<wgpu::BindGroupEntry> = list
-                    .iter()
-                    .enumerate()
-                    .map(|(b, buf)| wgpu::BindGroupEntry {
-                        binding: b as u32,
-                        resource: buf.as_entire_binding(),
-                    })
-                    .collect();
-                device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("strata poisson level"),
-                    layout: &self.layout,
-                    entries: &entries,
-                })
+                bind_group(device, &self.layout, "strata poisson level", &list)
             })
             .collect();
         scopes.pop().context("uploading the Poisson hierarchy")?;
@@ -471,40 +415,13 @@ impl PoissonKernels {
         let len = hier.params[level].len as usize;
         let size = (2 * len * 4) as u64;
         let scopes = Scopes::push(device);
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("poisson readback"),
-            size,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let readback = readback(device, "poisson readback", size);
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("strata poisson read"),
         });
         encoder.copy_buffer_to_buffer(src, 0, &readback, 0, size);
         let submission = queue.submit([encoder.finish()]);
-        let (tx, rx) = std::sync::mpsc::channel();
-        readback.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let polled = device.poll(wgpu::PollType::Wait {
-            submission_index: Some(submission),
-            timeout: Some(JOB_TIMEOUT),
-        });
-        let scoped = scopes.pop();
-        polled.map_err(|e| anyhow!("waiting for the device: {e}"))?;
-        scoped?;
-        match rx.try_recv() {
-            Ok(Ok(())) => {}
-            Ok(Err(e)) => bail!("mapping the result failed: {e}"),
-            Err(_) => bail!("the result was not mapped after the submission completed"),
-        }
-        let data: Vec<f32> = {
-            let view = readback
-                .slice(..)
-                .get_mapped_range()
-                .map_err(|e| anyhow!("reading the result: {e}"))?;
-            bytemuck::pod_collect_to_vec(&view)
-        };
+        let data: Vec<f32> = read_back(device, &readback, submission, Some(JOB_TIMEOUT), scopes)?;
         let (a, b) = data.split_at(len);
         Ok([a.to_vec(), b.to_vec()])
     }

@@ -7,6 +7,9 @@
 //! its submission with a timeout and checks the buffer mapping, and reports any failure as an
 //! `Err`, never as a panic.
 
+use super::kit::{
+    bind_group, dispatch_linear, read_back, readback, storage, upload, Binding, Program,
+};
 use super::layout::{GpuBiomeMap, GpuFractal, GpuParams};
 use super::scopes::Scopes;
 use crate::terrain::biome::BLOCK;
@@ -23,8 +26,6 @@ pub const TILE_WGSL: &str = include_str!("../../shaders/tile.wgsl");
 
 /// Invocations per workgroup of every entry point (`@workgroup_size(64)`).
 const WORKGROUP: u32 = 64;
-/// Most workgroups per dispatch dimension (WebGPU's default limit).
-const MAX_GROUPS: u32 = 65_535;
 /// Largest buffer a job may need (WebGPU's default `max_storage_buffer_binding_size`).
 pub const MAX_BUFFER_BYTES: u64 = 128 << 20;
 /// How long one job may wait for the device before it counts as lost.
@@ -132,58 +133,16 @@ impl TileKernels {
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
         let scopes = Scopes::push(device);
-        let source = tile_shader_source();
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("strata tile.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(source.into()),
-        });
-        let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let mut entries = vec![wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        }];
-        entries.extend([storage(1, true), storage(2, true)]);
-        entries.extend((3..=8).map(|b| storage(b, false)));
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("strata tile bindings"),
-            entries: &entries,
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("strata tile layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let pipeline = |entry: &str| {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(entry),
-                layout: Some(&pipeline_layout),
-                module: &module,
-                entry_point: Some(entry),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        };
+        let mut bindings = vec![Binding::Uniform, Binding::Read, Binding::Read];
+        bindings.extend([Binding::ReadWrite; 6]);
+        let program = Program::new(device, "strata tile.wgsl", &tile_shader_source(), &bindings);
+        let pipeline = |entry: &str| program.pipeline(device, entry);
         let kernels = Self {
             block_corners: pipeline("block_corners"),
             biome_ids: pipeline("biome_ids"),
             blur_h: pipeline("blur_h"),
             blur_v: pipeline("blur_v"),
-            layout,
+            layout: program.layout,
         };
         scopes.pop().context("compiling shaders/tile.wgsl")?;
         Ok(kernels)
@@ -257,25 +216,11 @@ impl TileKernels {
 
         let scopes = Scopes::push(device);
         let fractals: Vec<GpuFractal> = lp.fractals.iter().map(GpuFractal::from).collect();
-        // Buffers are filled with `write_buffer` rather than mapped at creation: on a lost device
-        // mapping panics inside wgpu, while a write is only an error the checks below catch.
         let init = |label: &str, contents: &[u8], usage: wgpu::BufferUsages| {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: (contents.len() as u64).max(4).next_multiple_of(4),
-                usage: usage | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            queue.write_buffer(&buffer, 0, contents);
-            buffer
+            upload(device, queue, label, contents, usage)
         };
         let scratch = |label: &str, words: u64, extra: wgpu::BufferUsages| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: words.max(1) * 4,
-                usage: wgpu::BufferUsages::STORAGE | extra,
-                mapped_at_creation: false,
-            })
+            storage(device, label, words * 4, extra)
         };
         let params_buf = init(
             "params",
@@ -309,36 +254,23 @@ impl TileKernels {
         let hdense = scratch("hdense", params.w as u64 * params.bh as u64 * k, none);
         let weights = scratch("weights", n * k, wgpu::BufferUsages::COPY_SRC);
         let heights = scratch("heights", n, wgpu::BufferUsages::COPY_SRC);
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("readback"),
-            size: (n * k + n + id_words) * 4,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let buffers = [
-            &params_buf,
-            &fractal_buf,
-            &kernel_buf,
-            &corners,
-            &ids,
-            &htag,
-            &hdense,
-            &weights,
-            &heights,
-        ];
-        let entries: Vec<wgpu::BindGroupEntry> = buffers
-            .iter()
-            .enumerate()
-            .map(|(b, buf)| wgpu::BindGroupEntry {
-                binding: b as u32,
-                resource: buf.as_entire_binding(),
-            })
-            .collect();
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("strata tile job"),
-            layout: &self.layout,
-            entries: &entries,
-        });
+        let readback = readback(device, "readback", (n * k + n + id_words) * 4);
+        let bind_group = bind_group(
+            device,
+            &self.layout,
+            "strata tile job",
+            &[
+                &params_buf,
+                &fractal_buf,
+                &kernel_buf,
+                &corners,
+                &ids,
+                &htag,
+                &hdense,
+                &weights,
+                &heights,
+            ],
+        );
 
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("strata field"),
@@ -357,9 +289,7 @@ impl TileKernels {
             });
             pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &bind_group, &[]);
-            let groups = invocations.div_ceil(WORKGROUP);
-            let x = groups.clamp(1, MAX_GROUPS);
-            pass.dispatch_workgroups(x, groups.div_ceil(x), 1);
+            dispatch_linear(&mut pass, invocations, WORKGROUP);
         }
         encoder.copy_buffer_to_buffer(&weights, 0, &readback, 0, n * k * 4);
         encoder.copy_buffer_to_buffer(&heights, 0, &readback, n * k * 4, n * 4);
@@ -367,32 +297,7 @@ impl TileKernels {
             encoder.copy_buffer_to_buffer(&ids, 0, &readback, (n * k + n) * 4, id_words * 4);
         }
         let submission = queue.submit([encoder.finish()]);
-
-        let (tx, rx) = std::sync::mpsc::channel();
-        readback.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let polled = device.poll(wgpu::PollType::Wait {
-            submission_index: Some(submission),
-            timeout,
-        });
-        // Pop the scopes before acting on anything else so they never leak into the next job.
-        let scoped = scopes.pop();
-        polled.map_err(|e| anyhow!("waiting for the device: {e}"))?;
-        scoped?;
-        match rx.try_recv() {
-            Ok(Ok(())) => {}
-            Ok(Err(e)) => bail!("mapping the result failed: {e}"),
-            Err(_) => bail!("the result was not mapped after the submission completed"),
-        }
-        let data: Vec<u32> = {
-            let view = readback
-                .slice(..)
-                .get_mapped_range()
-                .map_err(|e| anyhow!("reading the result: {e}"))?;
-            bytemuck::pod_collect_to_vec(&view)
-        };
-        readback.unmap();
+        let data: Vec<u32> = read_back(device, &readback, submission, timeout, scopes)?;
         let (nk, n) = ((n * k) as usize, n as usize);
         let float = |words: &[u32]| {
             words

@@ -16,8 +16,12 @@
 //! accepts 1e-5 cell units on offsets and 1e-5 on normal components (a few ULP of values of
 //! magnitude ≤ 1, far below anything visible) and reports how many are bit-identical.
 
+use super::kit::{
+    bind_group, dispatch_linear, read_back, readback, storage, upload, Binding, Program,
+};
+use super::scopes::Scopes;
 use crate::volume::mesh::{nets, MeshError, MeshOptions, QuadClass, QuadMesh, MAX_SAMPLES, NONE};
-use anyhow::{anyhow, bail};
+use anyhow::{bail, Context};
 use bytemuck::{Pod, Zeroable};
 use std::time::Duration;
 
@@ -25,8 +29,6 @@ use std::time::Duration;
 pub const VOLUME_MESH_WGSL: &str = include_str!("../../shaders/volume_mesh.wgsl");
 /// Invocations per workgroup (`@workgroup_size(64)`).
 const WORKGROUP: u32 = 64;
-/// Most workgroups per dispatch dimension.
-const MAX_GROUPS: u32 = 65_535;
 /// Largest per-cell output buffer (WebGPU's default storage binding limit).
 pub const MAX_BUFFER_BYTES: u64 = 128 << 20;
 
@@ -73,48 +75,17 @@ impl VolumeMeshKernel {
     /// # Errors
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
-        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("strata volume_mesh.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(VOLUME_MESH_WGSL.into()),
-        });
-        let entry = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let storage = |read_only| wgpu::BufferBindingType::Storage { read_only };
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("strata volume mesh bindings"),
-            entries: &[
-                entry(0, wgpu::BufferBindingType::Uniform),
-                entry(1, storage(true)),
-                entry(2, storage(false)),
-                entry(3, storage(false)),
-                entry(4, storage(false)),
-            ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("strata volume mesh layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some("mesh_cells"),
-            layout: Some(&pipeline_layout),
-            module: &module,
-            entry_point: Some("mesh_cells"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
-        if let Some(e) = pollster::block_on(scope.pop()) {
-            bail!("compiling volume_mesh.wgsl: {e}");
-        }
+        let scopes = Scopes::push(device);
+        let (r, w) = (Binding::Read, Binding::ReadWrite);
+        let program = Program::new(
+            device,
+            "strata volume_mesh.wgsl",
+            VOLUME_MESH_WGSL,
+            &[Binding::Uniform, r, w, w, w],
+        );
+        let pipeline = program.pipeline(device, "mesh_cells");
+        scopes.pop().context("compiling shaders/volume_mesh.wgsl")?;
+        let layout = program.layout;
         Ok(Self { layout, pipeline })
     }
 
@@ -163,57 +134,34 @@ impl VolumeMeshKernel {
             qmax_z: opts.quad_max[2],
             _pad1: 0,
         };
-        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let init = |label: &str, bytes: &[u8], usage: wgpu::BufferUsages| {
-            let b = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: (bytes.len() as u64).max(4).next_multiple_of(4),
-                usage: usage | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            queue.write_buffer(&b, 0, bytes);
-            b
-        };
-        let params_buf = init(
+        let scopes = Scopes::push(device);
+        let params_buf = upload(
+            device,
+            queue,
             "mesh params",
             bytemuck::bytes_of(&params),
             wgpu::BufferUsages::UNIFORM,
         );
-        let sdf_buf = init(
+        let sdf_buf = upload(
+            device,
+            queue,
             "sdf",
             bytemuck::cast_slice(sdf),
             wgpu::BufferUsages::STORAGE,
         );
-        let output = |label: &str, bytes: u64| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: bytes.max(4),
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-                mapped_at_creation: false,
-            })
-        };
+        let output =
+            |label: &str, bytes: u64| storage(device, label, bytes, wgpu::BufferUsages::COPY_SRC);
         let n = cells as u64;
         let vbuf = output("vertex_out", 16 * n);
         let nbuf = output("normal_out", 16 * n);
         let fbuf = output("flags_out", 4 * n);
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("mesh readback"),
-            size: 36 * n,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("strata volume mesh job"),
-            layout: &self.layout,
-            entries: &[&params_buf, &sdf_buf, &vbuf, &nbuf, &fbuf]
-                .iter()
-                .enumerate()
-                .map(|(i, b)| wgpu::BindGroupEntry {
-                    binding: i as u32,
-                    resource: b.as_entire_binding(),
-                })
-                .collect::<Vec<_>>(),
-        });
+        let readback = readback(device, "mesh readback", 36 * n);
+        let bind = bind_group(
+            device,
+            &self.layout,
+            "strata volume mesh job",
+            &[&params_buf, &sdf_buf, &vbuf, &nbuf, &fbuf],
+        );
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("strata volume mesh"),
         });
@@ -224,40 +172,13 @@ impl VolumeMeshKernel {
             });
             pass.set_pipeline(&self.pipeline);
             pass.set_bind_group(0, &bind, &[]);
-            let groups = (cells as u32).div_ceil(WORKGROUP);
-            let x = groups.clamp(1, MAX_GROUPS);
-            pass.dispatch_workgroups(x, groups.div_ceil(x), 1);
+            dispatch_linear(&mut pass, cells as u32, WORKGROUP);
         }
         encoder.copy_buffer_to_buffer(&vbuf, 0, &readback, 0, 16 * n);
         encoder.copy_buffer_to_buffer(&nbuf, 0, &readback, 16 * n, 16 * n);
         encoder.copy_buffer_to_buffer(&fbuf, 0, &readback, 32 * n, 4 * n);
         let submission = queue.submit([encoder.finish()]);
-        let (tx, rx) = std::sync::mpsc::channel();
-        readback.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        let polled = device.poll(wgpu::PollType::Wait {
-            submission_index: Some(submission),
-            timeout,
-        });
-        let scoped = pollster::block_on(scope.pop());
-        polled.map_err(|e| anyhow!("waiting for the device: {e}"))?;
-        if let Some(e) = scoped {
-            bail!("wgpu error: {e}");
-        }
-        match rx.try_recv() {
-            Ok(Ok(())) => {}
-            Ok(Err(e)) => bail!("mapping the result failed: {e}"),
-            Err(_) => bail!("the result was not mapped after the submission completed"),
-        }
-        let data: Vec<u32> = {
-            let view = readback
-                .slice(..)
-                .get_mapped_range()
-                .map_err(|e| anyhow!("reading the result: {e}"))?;
-            bytemuck::pod_collect_to_vec(&view)
-        };
-        readback.unmap();
+        let data: Vec<u32> = read_back(device, &readback, submission, timeout, scopes)?;
         let (verts, rest) = data.split_at(4 * cells);
         let (normals, flags) = rest.split_at(4 * cells);
         compact(opts, verts, normals, flags, out);
