@@ -49,6 +49,7 @@ pub mod poisson;
 mod scopes;
 pub mod tile;
 pub mod volume;
+pub mod volume_bitangent;
 pub mod volume_mesh;
 
 pub use device::{

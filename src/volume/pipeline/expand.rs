@@ -66,7 +66,10 @@
 //! - The first guidance pass is a whole `generate` run without expansion (its surface
 //!   propagation and filter are discarded): simple, about one extra pipeline run of cost. The
 //!   stage times `generate` returns are those of the final run; the expansion is not in them.
-//! - No WGSL twin yet: the stage is optional and off by default; its CPU reference is here.
+//! - The smooth bitangent field has a WGSL twin, `shaders/volume_bitangent.wgsl`
+//!   (`crate::gpu::volume_bitangent`, bit-identical on lavapipe in `tests/gpu_volume_bitangent.rs`).
+//!   The stepping has none: it follows one curve end at a time, a sequential walk of a few
+//!   hundred steps whose every step depends on the previous one.
 
 use super::curve::{ConstraintPoint, FeatureCurve, MAX_CONTROL_POINTS};
 use super::grid::{add, cross, dot, length, normalize, scale, sub, Grid};
