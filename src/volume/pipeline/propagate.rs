@@ -202,10 +202,14 @@ fn wavefront(
         .chunks_exact_mut(nx)
         .zip(pending.chunks_exact_mut(words))
     {
-        for (x, l) in row.iter_mut().enumerate() {
-            let bit = u32::from(*l > 0);
-            *l = 2 * *l + bit;
-            p[x / 64] |= u64::from(bit) << (x % 64);
+        for (chunk, word) in row.chunks_mut(64).zip(p.iter_mut()) {
+            let mut bits = 0u64;
+            for (b, l) in chunk.iter_mut().enumerate() {
+                let bit = u32::from(*l > 0);
+                *l = 2 * *l + bit;
+                bits |= u64::from(bit) << b;
+            }
+            *word = bits;
         }
     }
     let dir = |k: usize, m: usize, up: bool| if up { k } else { m - 1 - k };
@@ -387,6 +391,20 @@ pub fn propagate_material(dims: [usize; 3], omega_r: &[u8], material: &mut [u16]
         }
         let total = ((((c[0] + c[1]) + c[2]) + c[3]) + c[4]) + c[5];
         if total > 0.0 {
+            let first = m.iter().copied().find(|&k| k != NO_MATERIAL);
+            let first = first.unwrap_or(NO_MATERIAL);
+            if m.iter().all(|&k| k == NO_MATERIAL || k == first) {
+                // One material (the common case): its sum, accumulated as below, wins.
+                let mut w = 0.0f32;
+                for q in 0..6 {
+                    if m[q] == first {
+                        w += c[q];
+                    }
+                }
+                material[i] = first;
+                conf[i] = (w / total).clamp(0.0, 1.0);
+                return;
+            }
             // Each material's summed confidence (in neighbour order), the largest sum winning
             // and ties going to the smaller id.
             let mut best = (NO_MATERIAL, -1.0f32);

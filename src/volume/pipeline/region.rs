@@ -13,7 +13,7 @@
 
 use super::curve::FeatureCurve;
 use super::diffuse::{diffuse_normals, harmonic_fill, DiffuseParams};
-use super::filter::gaussian;
+use super::filter::gaussian_of;
 use super::grid::Grid;
 use super::propagate::{propagate_material, propagate_surface};
 use super::proxy::{curve_proxy, heightfield_proxy, mesh_proxy, Heightfield, InputMesh};
@@ -314,8 +314,7 @@ fn finish(
     run: Stopwatch,
 ) -> RegionFields {
     let sw = Stopwatch::start();
-    let mut surface = s.clone();
-    gaussian(grid.dims, &mut surface, params.gaussian_sigma);
+    let surface = gaussian_of(grid.dims, &s, params.gaussian_sigma);
     times.record(sw, |t| &mut t.filter_ms);
     times.record(run, |t| &mut t.total_ms);
     RegionFields {
