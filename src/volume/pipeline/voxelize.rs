@@ -143,39 +143,53 @@ pub fn cells_of(grid: &Grid, t: &ProxyTriangle, out: &mut Vec<usize>) {
 }
 
 /// Which of the `candidates` (sample indices) lie within `r` samples (Euclidean) of an
-/// `occupied` sample: the exact distance transform ([`squared_distance`]) restricted to the
-/// candidates' bounding box grown by `⌊r⌋ + 1` samples, which contains every occupied sample
-/// within `r` of a candidate, so the answer equals the whole grid's transform.
+/// `occupied` sample. Only candidates inside the occupied samples' bounding box grown by
+/// `g = ⌊r⌋ + 1` samples can be; for those, the exact distance transform
+/// ([`squared_distance`]) is computed on their bounding box grown by `g`, which contains every
+/// occupied sample within `r` of them, so the answer equals the whole grid's transform.
 fn in_dead_zone(grid: &Grid, occupied: &[u32], candidates: &[u32], r: f32) -> Vec<bool> {
-    let mut lo = grid.dims;
-    let mut hi = [0usize; 3];
-    for &c in candidates {
-        let p = grid.coords(c as usize);
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k] + 1);
+    let grow = r.floor() as usize + 1;
+    let bbox = |set: &mut dyn Iterator<Item = [usize; 3]>| {
+        let (mut lo, mut hi) = (grid.dims, [0usize; 3]);
+        for p in set {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k] + 1);
+            }
         }
-    }
-    if candidates.is_empty() || occupied.is_empty() {
+        let lo = lo.map(|l| l.saturating_sub(grow));
+        let hi = [0, 1, 2].map(|k| (hi[k] + grow).min(grid.dims[k]));
+        (lo, hi)
+    };
+    let inside = |p: [usize; 3], (lo, hi): ([usize; 3], [usize; 3])| {
+        (0..3).all(|k| p[k] >= lo[k] && p[k] < hi[k])
+    };
+    let near = bbox(&mut occupied.iter().map(|&o| grid.coords(o as usize)));
+    let mut relevant = candidates
+        .iter()
+        .map(|&c| grid.coords(c as usize))
+        .filter(|&p| inside(p, near))
+        .peekable();
+    if relevant.peek().is_none() {
         return vec![false; candidates.len()];
     }
-    let grow = r.floor() as usize + 1;
-    let lo = lo.map(|l| l.saturating_sub(grow));
-    let hi = [0, 1, 2].map(|k| (hi[k] + grow).min(grid.dims[k]));
+    let (lo, hi) = bbox(&mut relevant);
     let bd = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
     let local = |p: [usize; 3]| (p[0] - lo[0]) + bd[0] * ((p[1] - lo[1]) + bd[1] * (p[2] - lo[2]));
-    let inside = |p: [usize; 3]| (0..3).all(|k| p[k] >= lo[k] && p[k] < hi[k]);
     let mut set = vec![0u8; bd[0] * bd[1] * bd[2]];
     for &o in occupied {
         let p = grid.coords(o as usize);
-        if inside(p) {
+        if inside(p, (lo, hi)) {
             set[local(p)] = 1;
         }
     }
     let d2 = squared_distance(bd, &set);
     candidates
         .iter()
-        .map(|&c| d2[local(grid.coords(c as usize))] <= r * r)
+        .map(|&c| {
+            let p = grid.coords(c as usize);
+            inside(p, near) && d2[local(p)] <= r * r
+        })
         .collect()
 }
 
