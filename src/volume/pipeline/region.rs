@@ -360,9 +360,13 @@ pub fn generate(
 
     // The stages after the voxelization form two chains: material propagation (§4.4) needs
     // only the voxelization, surface propagation (§4.5) needs the normals, the noise diffusion
-    // (§4.4) only the voxelization. Each sequential wavefront runs on one worker beside a
-    // slab-parallel diffusion on the others: material beside the normal diffusion, surface
-    // beside the noise diffusion.
+    // (§4.4) only the voxelization. The critical path is voxelization → normal diffusion →
+    // surface propagation → filter; the material wavefront and the noise diffusion fill the
+    // cores beside it. Each sequential wavefront runs on one worker beside a slab-parallel
+    // diffusion whose slabs the other workers (and the wavefront's worker, once done) take:
+    // material beside the normal diffusion, surface beside the noise diffusion. On two cores
+    // this keeps both busy to the end of each pair; starting the noise diffusion earlier
+    // (beside the material) would leave the surface wavefront alone on one core.
     let (mat, n) = overlapped(
         &mut times,
         (|t| &mut t.material_ms, || material_stage(&grid, &v)),
