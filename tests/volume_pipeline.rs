@@ -940,7 +940,9 @@ fn material_reference(dims: [usize; 3], omega: &[u8], material: &mut [u16]) -> V
             let mut best = (NO_MATERIAL, -1.0f32);
             for k in 0..6 {
                 if m[k] != NO_MATERIAL {
-                    let w = (0..6).filter(|&q| m[q] == m[k]).fold(0.0f32, |w, q| w + c[q]);
+                    let w = (0..6)
+                        .filter(|&q| m[q] == m[k])
+                        .fold(0.0f32, |w, q| w + c[q]);
                     if w > best.1 || (w == best.1 && m[k] < best.0) {
                         best = (m[k], w);
                     }
@@ -961,7 +963,11 @@ fn sweeping_propagations_equal_the_breadth_first_order_bit_for_bit() {
     // several materials (ties and mixed borders), and random unit-ish normals.
     let hash = |i: usize, k: usize| ((i * 2654435761 + k * 40503) % 1009) as f32 / 1009.0;
     let mut mixed = false;
-    for (dims, modulus) in [([70usize, 9, 11], 97usize), ([5, 13, 7], 11), ([66, 5, 4], 3)] {
+    for (dims, modulus) in [
+        ([70usize, 9, 11], 97usize),
+        ([5, 13, 7], 11),
+        ([66, 5, 4], 3),
+    ] {
         let n = dims.iter().product::<usize>();
         let grid = Grid::new(dims, [0.0; 3], 0.5).expect("grid");
         let omega: Vec<u8> = (0..n)
@@ -981,7 +987,9 @@ fn sweeping_propagations_equal_the_breadth_first_order_bit_for_bit() {
         let conf_ref = material_reference(dims, &omega, &mut want);
         assert_eq!(got, want, "materials for {dims:?}");
         assert!(
-            conf.iter().zip(&conf_ref).all(|(a, b)| a.to_bits() == b.to_bits()),
+            conf.iter()
+                .zip(&conf_ref)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
             "confidences for {dims:?}"
         );
         mixed |= conf.iter().any(|&c| c < 1.0);

@@ -115,12 +115,18 @@ pub fn l1_layers(dims: [usize; 3], seeds: &[u8]) -> Vec<u32> {
     // depend on the split).
     par_slabs(&mut d, slice, |_, slab| {
         for sl in slab.chunks_exact_mut(slice) {
-            for row in sl.chunks_exact_mut(nx) {
-                for x in 1..nx {
-                    row[x] = row[x].min(row[x - 1].saturating_add(1));
+            // Column by column across all rows of the slice: the rows are independent, so
+            // consecutive updates do not wait on each other as a scan along one row does.
+            for x in 1..nx {
+                for y in 0..ny {
+                    let i = y * nx + x;
+                    sl[i] = sl[i].min(sl[i - 1].saturating_add(1));
                 }
-                for x in (0..nx - 1).rev() {
-                    row[x] = row[x].min(row[x + 1].saturating_add(1));
+            }
+            for x in (0..nx - 1).rev() {
+                for y in 0..ny {
+                    let i = y * nx + x;
+                    sl[i] = sl[i].min(sl[i + 1].saturating_add(1));
                 }
             }
             for y in 1..ny {
