@@ -25,20 +25,33 @@ pub fn kernel(sigma: f32) -> Vec<f32> {
 
 /// Filters `field` (grid `dims`) in place with the Gaussian of `sigma` samples.
 pub fn gaussian(dims: [usize; 3], field: &mut [f32], sigma: f32) {
+    if kernel(sigma).len() == 1 {
+        return;
+    }
+    let out = gaussian_of(dims, field, sigma);
+    field.copy_from_slice(&out);
+}
+
+/// The Gaussian of `sigma` samples of `field` (grid `dims`) as a new field, leaving `field`
+/// as it is (the same values as [`gaussian`] without its copies).
+pub fn gaussian_of(dims: [usize; 3], field: &[f32], sigma: f32) -> Vec<f32> {
     let k = kernel(sigma);
     if k.len() == 1 {
-        return;
+        return field.to_vec();
     }
     let r = (k.len() / 2) as i64;
     let [nx, ny, _] = dims;
     let slice = nx * ny;
+    // Every sample of both buffers is written by the passes below before it is read.
+    let mut out = vec![0.0f32; field.len()];
     let mut tmp = vec![0.0f32; field.len()];
-    // The pass along axis `a` reads `src` and writes `dst`.
+    // The pass along axis `a` reads `src` and writes `dst`: x field → out, y out → tmp,
+    // z tmp → out.
     for axis in 0..3 {
-        let (src, dst): (&[f32], &mut [f32]) = if axis % 2 == 0 {
-            (&*field, &mut tmp)
-        } else {
-            (&tmp, &mut *field)
+        let (src, dst): (&[f32], &mut [f32]) = match axis {
+            0 => (field, &mut out),
+            1 => (&out, &mut tmp),
+            _ => (&tmp, &mut out),
         };
         let n_axis = dims[axis] as i64;
         let stride = [1, nx, slice][axis];
@@ -81,6 +94,5 @@ pub fn gaussian(dims: [usize; 3], field: &mut [f32], sigma: f32) {
             }
         });
     }
-    // Three passes: the result is in `tmp`.
-    field.copy_from_slice(&tmp);
+    out
 }

@@ -13,7 +13,7 @@
 
 use super::curve::FeatureCurve;
 use super::diffuse::{diffuse_normals, harmonic_fill, DiffuseParams};
-use super::filter::gaussian;
+use super::filter::gaussian_of;
 use super::grid::Grid;
 use super::propagate::{propagate_material, propagate_surface};
 use super::proxy::{curve_proxy, heightfield_proxy, mesh_proxy, Heightfield, InputMesh};
@@ -314,8 +314,7 @@ fn finish(
     run: Stopwatch,
 ) -> RegionFields {
     let sw = Stopwatch::start();
-    let mut surface = s.clone();
-    gaussian(grid.dims, &mut surface, params.gaussian_sigma);
+    let surface = gaussian_of(grid.dims, &s, params.gaussian_sigma);
     times.record(sw, |t| &mut t.filter_ms);
     times.record(run, |t| &mut t.total_ms);
     RegionFields {
@@ -361,9 +360,13 @@ pub fn generate(
 
     // The stages after the voxelization form two chains: material propagation (§4.4) needs
     // only the voxelization, surface propagation (§4.5) needs the normals, the noise diffusion
-    // (§4.4) only the voxelization. Each sequential wavefront runs on one worker beside a
-    // slab-parallel diffusion on the others: material beside the normal diffusion, surface
-    // beside the noise diffusion.
+    // (§4.4) only the voxelization. The critical path is voxelization → normal diffusion →
+    // surface propagation → filter; the material wavefront and the noise diffusion fill the
+    // cores beside it. Each sequential wavefront runs on one worker beside a slab-parallel
+    // diffusion whose slabs the other workers (and the wavefront's worker, once done) take:
+    // material beside the normal diffusion, surface beside the noise diffusion. On two cores
+    // this keeps both busy to the end of each pair; starting the noise diffusion earlier
+    // (beside the material) would leave the surface wavefront alone on one core.
     let (mat, n) = overlapped(
         &mut times,
         (|t| &mut t.material_ms, || material_stage(&grid, &v)),

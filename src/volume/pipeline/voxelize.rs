@@ -28,7 +28,7 @@ use super::proxy::{ProxyTriangle, Side};
 use rayon::prelude::*;
 
 /// Triangles per parallel task of the gathering.
-const GATHER_CHUNK: usize = 512;
+const GATHER_CHUNK: usize = 64;
 
 /// The sparse fields after voxelization. Unconstrained samples hold zeros.
 #[derive(Clone, Debug)]
@@ -71,9 +71,27 @@ pub struct PassStats {
 pub const NO_MATERIAL: u16 = u16::MAX;
 
 /// Akenine-Möller's triangle–box overlap test: box centred at the origin with half side `h`,
-/// triangle already translated by minus the box centre.
+/// triangle already translated by minus the box centre. The separating axes are tried cheapest
+/// and most discriminating first (the box's faces, the triangle's plane, then the nine edge
+/// cross products); the result is their conjunction, so the order changes no answer.
+#[inline]
 fn tri_box(h: f32, v: [[f32; 3]; 3]) -> bool {
+    // The box's face normals.
+    for k in 0..3 {
+        let lo = v[0][k].min(v[1][k]).min(v[2][k]);
+        let hi = v[0][k].max(v[1][k]).max(v[2][k]);
+        if lo > h || hi < -h {
+            return false;
+        }
+    }
     let e = [sub(v[1], v[0]), sub(v[2], v[1]), sub(v[0], v[2])];
+    // The triangle's plane.
+    let n = super::grid::cross(e[0], e[1]);
+    let d = dot(n, v[0]);
+    let r = h * (n[0].abs() + n[1].abs() + n[2].abs());
+    if d.abs() > r {
+        return false;
+    }
     // Nine cross-product axes a × e_j for the unit axes a.
     for ej in &e {
         for axis in 0..3 {
@@ -91,25 +109,13 @@ fn tri_box(h: f32, v: [[f32; 3]; 3]) -> bool {
             }
         }
     }
-    // The box's face normals.
-    for k in 0..3 {
-        let lo = v[0][k].min(v[1][k]).min(v[2][k]);
-        let hi = v[0][k].max(v[1][k]).max(v[2][k]);
-        if lo > h || hi < -h {
-            return false;
-        }
-    }
-    // The triangle's plane.
-    let n = super::grid::cross(e[0], e[1]);
-    let d = dot(n, v[0]);
-    let r = h * (n[0].abs() + n[1].abs() + n[2].abs());
-    d.abs() <= r
+    true
 }
 
 /// Samples whose cells the triangle intersects, in index order.
 pub fn cells_of(grid: &Grid, t: &ProxyTriangle, out: &mut Vec<usize>) {
     out.clear();
-    let g: Vec<[f32; 3]> = t.v.iter().map(|p| grid.to_grid(*p)).collect();
+    let g = t.v.map(|p| grid.to_grid(p));
     let mut lo = [0usize; 3];
     let mut hi = [0usize; 3];
     for k in 0..3 {
@@ -136,12 +142,62 @@ pub fn cells_of(grid: &Grid, t: &ProxyTriangle, out: &mut Vec<usize>) {
     }
 }
 
+/// Which of the `candidates` (sample indices) lie within `r` samples (Euclidean) of an
+/// `occupied` sample. Only candidates inside the occupied samples' bounding box grown by
+/// `g = ⌊r⌋ + 1` samples can be; for those, the exact distance transform
+/// ([`squared_distance`]) is computed on their bounding box grown by `g`, which contains every
+/// occupied sample within `r` of them, so the answer equals the whole grid's transform.
+fn in_dead_zone(grid: &Grid, occupied: &[u32], candidates: &[u32], r: f32) -> Vec<bool> {
+    let grow = r.floor() as usize + 1;
+    let bbox = |set: &mut dyn Iterator<Item = [usize; 3]>| {
+        let (mut lo, mut hi) = (grid.dims, [0usize; 3]);
+        for p in set {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k] + 1);
+            }
+        }
+        let lo = lo.map(|l| l.saturating_sub(grow));
+        let hi = [0, 1, 2].map(|k| (hi[k] + grow).min(grid.dims[k]));
+        (lo, hi)
+    };
+    let inside = |p: [usize; 3], (lo, hi): ([usize; 3], [usize; 3])| {
+        (0..3).all(|k| p[k] >= lo[k] && p[k] < hi[k])
+    };
+    let near = bbox(&mut occupied.iter().map(|&o| grid.coords(o as usize)));
+    let mut relevant = candidates
+        .iter()
+        .map(|&c| grid.coords(c as usize))
+        .filter(|&p| inside(p, near))
+        .peekable();
+    if relevant.peek().is_none() {
+        return vec![false; candidates.len()];
+    }
+    let (lo, hi) = bbox(&mut relevant);
+    let bd = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
+    let local = |p: [usize; 3]| (p[0] - lo[0]) + bd[0] * ((p[1] - lo[1]) + bd[1] * (p[2] - lo[2]));
+    let mut set = vec![0u8; bd[0] * bd[1] * bd[2]];
+    for &o in occupied {
+        let p = grid.coords(o as usize);
+        if inside(p, (lo, hi)) {
+            set[local(p)] = 1;
+        }
+    }
+    let d2 = squared_distance(bd, &set);
+    candidates
+        .iter()
+        .map(|&c| {
+            let p = grid.coords(c as usize);
+            inside(p, near) && d2[local(p)] <= r * r
+        })
+        .collect()
+}
+
 /// Voxelizes `passes` (highest priority first) into `grid` with a dead zone of `dead_zone_m`
 /// metres around every earlier pass.
 pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> Voxelized {
     let n = grid.len();
     let r = (dead_zone_m.max(0.0) / grid.spacing).max(0.0);
-    let mut blocked = vec![0u8; n];
     let mut hits: Vec<(u32, u32, u32)> = Vec::new();
     let mut pass_stats = Vec::with_capacity(passes.len());
     for (p, tris) in passes.iter().enumerate() {
@@ -166,8 +222,18 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
                 out
             })
             .collect();
-        for (c, ti) in chunks.into_iter().flatten() {
-            if blocked[c as usize] != 0 {
+        let found: Vec<(u32, u32)> = chunks.into_iter().flatten().collect();
+        // Dead zone: a pair is dropped when its sample lies within r of a sample gathered by an
+        // earlier pass (exact Euclidean distance).
+        let blocked = if p > 0 && !hits.is_empty() {
+            let occupied: Vec<u32> = hits.iter().map(|h| h.0).collect();
+            let cand: Vec<u32> = found.iter().map(|f| f.0).collect();
+            in_dead_zone(grid, &occupied, &cand, r)
+        } else {
+            vec![false; found.len()]
+        };
+        for ((c, ti), b) in found.into_iter().zip(blocked) {
+            if b {
                 st.dropped += 1;
             } else {
                 st.gathered += 1;
@@ -175,19 +241,6 @@ pub fn voxelize(grid: &Grid, passes: &[&[ProxyTriangle]], dead_zone_m: f32) -> V
             }
         }
         pass_stats.push(st);
-        // A pass that gathered nothing leaves the dead zone as it was.
-        if p + 1 < passes.len() && st.gathered > 0 {
-            // Dead zone: every sample within r of a sample gathered so far (this pass or an
-            // earlier one), by the exact Euclidean distance transform.
-            let mut occupied = vec![0u8; n];
-            for &(c, _, _) in &hits {
-                occupied[c as usize] = 1;
-            }
-            let d2 = squared_distance(grid.dims, &occupied);
-            for (b, d) in blocked.iter_mut().zip(&d2) {
-                *b = u8::from(*d <= r * r);
-            }
-        }
     }
     // The keys are distinct, so the (parallel, unstable) sort is deterministic.
     hits.par_sort_unstable();
