@@ -948,9 +948,16 @@ fn multigrid_cycles_reduce_the_residual_steadily() {
     // were fixed as soon as one child was: 0.44–0.58). The bound leaves room for rounding
     // differences between platforms, not for a regression to the old factor.
     for q in &factors {
-        assert!(*q <= 0.3, "a V-cycle reduced the residual only by {q}: {factors:?}");
+        assert!(
+            *q <= 0.3,
+            "a V-cycle reduced the residual only by {q}: {factors:?}"
+        );
     }
     // The default solve is as close to the harmonic fill as before.
     let d = residual(DiffuseParams::default().vcycles);
-    assert!(d <= 0.3 * r[0], "default fill residual {d} vs cascade {}", r[0]);
+    assert!(
+        d <= 0.3 * r[0],
+        "default fill residual {d} vs cascade {}",
+        r[0]
+    );
 }
