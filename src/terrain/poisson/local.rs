@@ -77,6 +77,14 @@ pub const LOCAL_MAX_FRACTION: f64 = 0.125;
 pub const LOCAL_MAX_CYCLES: usize = 8;
 /// Local cycles stop when the estimated relative residual is at most this times the tolerance.
 pub const LOCAL_TARGET: f64 = 0.25;
+/// After the write-back, if the measured global relative residual is above the tolerance but at
+/// most this times it, the solver first runs red-black sweeps of the whole finest level (up to
+/// [`LOCAL_FINISH_SWEEPS`]) instead of global cycles: the interpolation residual of the
+/// write-back is concentrated along the coarse grid lines (kinks of the bilinear interpolation),
+/// which a sweep damps, at a fraction of a cycle's cost.
+pub const LOCAL_FINISH_RANGE: f64 = 4.0;
+/// The most finishing sweeps after a local re-solve (then global cycles take over if needed).
+pub const LOCAL_FINISH_SWEEPS: usize = 2;
 
 /// A rectangle of samples of one level, bounds included.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -407,6 +415,7 @@ pub fn resolve(
     scratch: &mut Vec<f64>,
     tolerance_abs: f64,
 ) -> Option<LocalOutcome> {
+    let t0 = std::time::Instant::now();
     let acts = windows(levels, change)?;
     let k = acts.len() - 1;
     let mut wins: Vec<Win> = (0..=k)
@@ -520,6 +529,8 @@ pub fn resolve(
         }
         out.cycles += 1;
     }
+    super::multigrid::tphase("local-cycles", t0);
+    let t0 = std::time::Instant::now();
     // Write back: every level's composite correction, interpolated down to the finest level.
     {
         let (lk, wk) = (&mut levels[k], &wins[k]);
@@ -557,8 +568,11 @@ pub fn resolve(
         let g = fine.grid;
         let band = w.act.dilate(LOCAL_BAND >> l.min(1), g.nx, g.nz);
         let hole = (l > 0).then_some(w.ext);
+        let t1 = std::time::Instant::now();
         out.relaxed += smooth_band(fine, band, hole, LOCAL_BAND_SWEEPS);
+        super::multigrid::tphase("band", t1);
     }
+    super::multigrid::tphase("writeback", t0);
     Some(out)
 }
 

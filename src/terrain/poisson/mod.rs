@@ -117,6 +117,7 @@ pub use multigrid::{
     Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, AUTO_SWITCH_FACTOR,
     DEFAULT_MAX_CYCLES, DEFAULT_TOLERANCE,
 };
+pub use local::Rect;
 pub use problem::Problem;
 
 /// A problem or option the solver rejects, naming the offending field.
