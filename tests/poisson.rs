@@ -716,7 +716,10 @@ fn resolve_in_a_damage_rectangle_equals_the_scanning_warm_solve_bit_for_bit() {
             .count();
         assert_eq!(differ, 0, "edit {step}: {differ} heights differ");
         let rel = true_relative_residual(&p, &hb);
-        assert!(rel <= DEFAULT_TOLERANCE, "edit {step}: true residual {rel:e}");
+        assert!(
+            rel <= DEFAULT_TOLERANCE,
+            "edit {step}: true residual {rel:e}"
+        );
     }
 }
 

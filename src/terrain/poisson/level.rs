@@ -99,7 +99,8 @@ impl Level {
                 let j = j0 + dj;
                 let fixed_row = &fixed[j * g.nx..(j + 1) * g.nx];
                 let inner_row = j > 0 && j + 1 < g.nz;
-                let flag = |i: usize| u8::from(inner_row & (i > 0) & (i + 1 < g.nx) & !fixed_row[i]);
+                let flag =
+                    |i: usize| u8::from(inner_row & (i > 0) & (i + 1 < g.nx) & !fixed_row[i]);
                 let mut span: Option<(usize, usize)> = None;
                 for (c, row) in [r0, r1].into_iter().enumerate() {
                     let s = Split::shift(c, j);

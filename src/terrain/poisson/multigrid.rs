@@ -262,7 +262,10 @@ impl Solver {
             s.update_mask(problem, 0, usize::MAX);
             s.has_solution = true;
             s.last_converged = false;
-            problem.load_tracked(&mut s.levels[0], &mut s.rhs_rows).0.sqrt()
+            problem
+                .load_tracked(&mut s.levels[0], &mut s.rhs_rows)
+                .0
+                .sqrt()
         };
         let norm = match &pool {
             Some(p) => p.install(|| run(self)),
@@ -289,9 +292,7 @@ impl Solver {
                 ),
             ));
         }
-        let t0 = std::time::Instant::now();
         problem.validate()?;
-        tphase("validate", t0);
         if let Start::From(h) = start {
             if h.len() != problem.grid.len() {
                 return Err(PoissonError::field(
@@ -359,13 +360,10 @@ impl Solver {
         if !self.has_solution || self.rhs_rows.len() != g.nz {
             return self.solve(problem, Start::Warm);
         }
-        let t0 = std::time::Instant::now();
         problem.validate_rows(damage.j0, damage.j1)?;
-        tphase("validate-rows", t0);
         let pool = self.pool.take();
         let run = |s: &mut Self| {
             let relaxed_before = s.relaxed();
-            let t0 = std::time::Instant::now();
             let mask_change = s.update_mask(problem, damage.j0, damage.j1);
             let (bb, load_change) = problem.load_rows(
                 &mut s.levels[0],
@@ -373,7 +371,6 @@ impl Solver {
                 damage.j0.saturating_sub(1),
                 damage.j1 + 1,
             );
-            tphase("load-rows", t0);
             #[cfg(debug_assertions)]
             {
                 let outside_mask = s.levels[0].set_fixed(problem.fixed);
@@ -435,12 +432,8 @@ impl Solver {
 
     fn run(&mut self, problem: &Problem, start: Start) -> SolveReport {
         let relaxed_before = self.relaxed();
-        let t0 = std::time::Instant::now();
         let mask_change = self.update_mask(problem, 0, usize::MAX);
-        tphase("mask", t0);
-        let t0 = std::time::Instant::now();
         let (bb, load_change) = problem.load_tracked(&mut self.levels[0], &mut self.rhs_rows);
-        tphase("load", t0);
         let change = match (mask_change, load_change) {
             (Some(a), Some(b)) => Some(a.union(b)),
             (a, b) => a.or(b),
@@ -505,7 +498,6 @@ impl Solver {
             self.full_multigrid();
         } else if let (true, Some(rect)) = (local_ok, change) {
             let o = self.options;
-            let t0 = std::time::Instant::now();
             let res = local::resolve(
                 &mut self.levels,
                 rect,
@@ -513,15 +505,12 @@ impl Solver {
                 &mut self.scratch,
                 o.tolerance * bnorm,
             );
-            tphase("local", t0);
             if let Some(out) = res {
                 local_cycles = out.cycles;
                 local_relaxed = out.relaxed;
             }
         }
-        let t0 = std::time::Instant::now();
         let (cycles, relative_residuals, finishing_sweeps) = self.cycles(bnorm, local_cycles > 0);
-        tphase("cycles", t0);
         let converged = relative_residuals
             .last()
             .is_some_and(|r| *r <= self.options.tolerance);
@@ -827,12 +816,5 @@ pub(crate) fn cycle(
         smooth_reverse(&mut a[l], o.post_smooth);
     } else {
         smooth(&mut a[l], o.post_smooth);
-    }
-}
-
-/// TEMPORARY phase timer.
-pub(crate) fn tphase(name: &str, t0: std::time::Instant) {
-    if std::env::var_os("STRATA_POISSON_PHASES").is_some() {
-        eprintln!("phase {name} {:.3} ms", t0.elapsed().as_secs_f64() * 1e3);
     }
 }

@@ -76,7 +76,11 @@ impl Problem<'_> {
         // Branch-free scans first (they vectorise); the searches that name the culprit run only
         // when a scan fails.
         for (name, values, from) in [
-            ("gx", &self.gx[j0 * (g.nx - 1)..(j1 + 1) * (g.nx - 1)], j0 * (g.nx - 1)),
+            (
+                "gx",
+                &self.gx[j0 * (g.nx - 1)..(j1 + 1) * (g.nx - 1)],
+                j0 * (g.nx - 1),
+            ),
             (
                 "gz",
                 &self.gz[zrows.start * g.nx..zrows.end * g.nx],
