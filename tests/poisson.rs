@@ -5,7 +5,8 @@
 
 use strata::terrain::poisson::gradient::extract_edges;
 use strata::terrain::poisson::{
-    reconstruct, Acceleration, Cycle, GridSpec, PoissonError, Problem, SolveOptions, Solver, Start,
+    reconstruct, Acceleration, Cycle, GridSpec, PoissonError, Problem, Rect, SolveOptions, Solver,
+    Start, DEFAULT_TOLERANCE,
 };
 
 /// An owned problem for the tests.
@@ -662,4 +663,115 @@ fn a_large_edit_falls_back_to_global_cycles() {
     assert!(warm.converged, "{warm:?}");
     assert_eq!(warm.local_cycles, 0, "{warm:?}");
     assert!(warm.cycles >= 1, "{warm:?}");
+}
+
+/// The bounds of [`brush`] at `(ci, cj)`: the samples owning the edges it edits.
+fn brush_bounds(ci: usize, cj: usize) -> Rect {
+    Rect {
+        i0: ci - 16,
+        j0: cj - 16,
+        i1: ci + 15,
+        j1: cj + 15,
+    }
+}
+
+#[test]
+fn resolve_in_a_damage_rectangle_equals_the_scanning_warm_solve_bit_for_bit() {
+    // Two solvers on the same converged 257² problem; then two edits in a row, each confined to
+    // a rectangle: a brush (right-hand side only), then a brush with a new fixed sample and a
+    // moved fixed height inside its bounds (mask and fixed values too). `resolve_in` with the
+    // bounds must give exactly what `solve(Start::Warm)` gives after scanning the whole grid:
+    // the same heights (bits), the same report.
+    let mut p = terrain(257);
+    add_constraints(&mut p);
+    let n = p.grid.nx;
+    let mut scan = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    let mut damaged = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    scan.solve(&p.problem(), Start::Cold).expect("cold");
+    damaged.solve(&p.problem(), Start::Cold).expect("cold");
+    let edits: [(usize, usize, bool); 3] = [(140, 70, false), (100, 200, true), (60, 40, true)];
+    for (step, (ci, cj, constrain)) in edits.into_iter().enumerate() {
+        brush(&mut p, ci, cj);
+        if constrain {
+            p.fixed[cj * n + ci] = true;
+            p.heights[cj * n + ci] = 431.25;
+            p.fixed[(cj + 5) * n + ci - 7] = true;
+            p.heights[(cj + 5) * n + ci - 7] = 402.0 + step as f32;
+        }
+        let a = scan.solve(&p.problem(), Start::Warm).expect("scan");
+        let b = damaged
+            .resolve_in(&p.problem(), brush_bounds(ci, cj))
+            .expect("resolve_in");
+        println!("edit {step}: {b:?}");
+        assert_eq!(a, b, "reports of edit {step}");
+        assert!(b.converged && b.local_cycles >= 1, "edit {step}: {b:?}");
+        let mut ha = vec![0.0f64; p.grid.len()];
+        let mut hb = vec![0.0f64; p.grid.len()];
+        scan.heights_f64_into(&mut ha).expect("heights");
+        damaged.heights_f64_into(&mut hb).expect("heights");
+        let differ = ha
+            .iter()
+            .zip(&hb)
+            .filter(|(x, y)| x.to_bits() != y.to_bits())
+            .count();
+        assert_eq!(differ, 0, "edit {step}: {differ} heights differ");
+        let rel = true_relative_residual(&p, &hb);
+        assert!(
+            rel <= DEFAULT_TOLERANCE,
+            "edit {step}: true residual {rel:e}"
+        );
+    }
+}
+
+#[test]
+fn resolve_in_rejects_a_rectangle_outside_the_grid_and_bad_values_inside_it() {
+    let mut p = terrain(65);
+    let mut solver = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    solver.solve(&p.problem(), Start::Cold).expect("cold");
+    let field = |e: PoissonError| match e {
+        PoissonError::Field { field, .. } => field,
+    };
+    for bad in [
+        Rect {
+            i0: 10,
+            j0: 10,
+            i1: 65,
+            j1: 20,
+        },
+        Rect {
+            i0: 10,
+            j0: 21,
+            i1: 20,
+            j1: 20,
+        },
+    ] {
+        let e = solver.resolve_in(&p.problem(), bad).expect_err("rejected");
+        assert_eq!(field(e), "damage", "{bad:?}");
+    }
+    p.gz[30 * 65 + 12] = f32::NAN;
+    let rect = Rect {
+        i0: 10,
+        j0: 25,
+        i1: 20,
+        j1: 35,
+    };
+    let e = solver.resolve_in(&p.problem(), rect).expect_err("NaN");
+    assert_eq!(field(e), "gz");
+}
+
+#[cfg(debug_assertions)]
+#[test]
+#[should_panic(expected = "changed outside the damage rectangle")]
+fn resolve_in_checks_its_contract_in_debug_builds() {
+    let mut p = terrain(65);
+    let mut solver = Solver::new(p.grid, SolveOptions::default()).expect("solver");
+    solver.solve(&p.problem(), Start::Cold).expect("cold");
+    p.gx[50 * 64 + 50] += 0.5;
+    let rect = Rect {
+        i0: 5,
+        j0: 5,
+        i1: 20,
+        j1: 20,
+    };
+    let _ = solver.resolve_in(&p.problem(), rect);
 }

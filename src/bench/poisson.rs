@@ -11,7 +11,12 @@
 //!   for the problem with only the border fixed (the FFT's problem);
 //! - the warm re-solve after a small brush edit (a Gaussian bump of slopes over a 32-sample disc),
 //!   as a percentage of the cold solve, with its local and global cycles and the samples it
-//!   relaxed (the localized re-solve of [`crate::terrain::poisson::local`]);
+//!   relaxed (the localized re-solve of [`crate::terrain::poisson::local`]). `ms_warm` times the
+//!   whole path a server takes: applying the brush to the gradient field, then
+//!   [`Solver::resolve_in`] with the brush's bounds (which validates, compares and reloads the
+//!   right-hand side only in those rows, re-solves and checks the true global residual);
+//!   `ms_warm_full_scan` is `solve(Start::Warm)` after the same edit (brush not timed), which
+//!   finds the change by scanning the whole grid;
 //! - the bytes of the hierarchy;
 //! - in the same run, `bench/poisson_peers.py`: PyAMG (smoothed aggregation, CG-accelerated, setup
 //!   and solve, same matrix, same tolerance) and a type-I DST solve (`scipy.fft.dstn`) of the
@@ -34,7 +39,7 @@
 use super::emit;
 use crate::cli::BenchArgs;
 use crate::terrain::poisson::gradient::extract_edges;
-use crate::terrain::poisson::{GridSpec, Problem, SolveOptions, SolveReport, Solver, Start};
+use crate::terrain::poisson::{GridSpec, Problem, Rect, SolveOptions, SolveReport, Solver, Start};
 use anyhow::Context;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -126,8 +131,10 @@ fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<Owned> {
     Ok(p)
 }
 
-/// The brush edit: a Gaussian bump of slopes over a disc of 32 samples' diameter.
-fn brush(p: &mut Owned, ci: usize, cj: usize) {
+/// The brush edit: a Gaussian bump of slopes over a disc of 32 samples' diameter. Returns the
+/// brush's bounds (the samples owning the edited edges), as a server would pass them to
+/// [`Solver::resolve_in`].
+fn brush(p: &mut Owned, ci: usize, cj: usize) -> Rect {
     let n = p.grid.nx;
     for j in cj - 16..cj + 16 {
         for i in ci - 16..ci + 16 {
@@ -138,6 +145,12 @@ fn brush(p: &mut Owned, ci: usize, cj: usize) {
                 p.gz[j * n + i] -= 0.25 * w;
             }
         }
+    }
+    Rect {
+        i0: ci - 16,
+        j0: cj - 16,
+        i1: ci + 15,
+        j1: cj + 15,
     }
 }
 
@@ -216,7 +229,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         json!({"bench":"poisson","cores":cores,"tolerance":1e-6}),
         format!("poisson: multigrid reconstruction to relative residual 1e-6, CPU path, {cores} threads; paper = Guérin et al. Table 1 (GTX 970)"),
     );
-    let python = match peer_python(args) {
+    let peers_off = std::env::var("STRATA_BENCH_POISSON_PEERS").is_ok_and(|v| v == "off");
+    let python = match if peers_off {
+        Err("STRATA_BENCH_POISSON_PEERS=off".to_string())
+    } else {
+        peer_python(args)
+    } {
         Ok(p) => Some(p),
         Err(why) => {
             emit(
@@ -251,23 +269,40 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         let (ms_border, cpu_border, border_report) = time_cold(&mut border_solver, &border, reps)?;
         drop(border_solver);
 
-        // Warm re-solve after a brush edit, from the converged solution of the unedited problem.
+        // Warm re-solve after a brush edit, from the converged solution of the unedited problem:
+        // the brush applied to the gradient field and `resolve_in` with its bounds, timed
+        // together (what a server does); and, for comparison, `solve(Start::Warm)`, which finds
+        // the change by scanning the whole grid (brush not timed).
         let original = (p.gx.clone(), p.gz.clone());
-        let (mut warm_times, mut warm_cpus) = (Vec::new(), Vec::new());
+        let (mut warm_times, mut warm_cpus, mut scan_times) = (Vec::new(), Vec::new(), Vec::new());
         let mut warm_report = None;
         for rep in 0..reps {
             (p.gx, p.gz) = original.clone();
             solver.solve(&p.problem(), Start::Cold)?;
-            brush(&mut p, n / 2 + 17 * rep, n / 3);
-            let (r, ms, cpu) = timed(|| solver.solve(&p.problem(), Start::Warm));
+            let (r, ms, cpu) = timed(|| {
+                let damage = brush(&mut p, n / 2 + 17 * rep, n / 3);
+                solver.resolve_in(&p.problem(), damage)
+            });
             warm_times.push(ms);
             warm_cpus.push(cpu);
             warm_report = Some(r?);
+            (p.gx, p.gz) = original.clone();
+            solver.solve(&p.problem(), Start::Cold)?;
+            brush(&mut p, n / 2 + 17 * rep, n / 3);
+            let (r, ms, _) = timed(|| solver.solve(&p.problem(), Start::Warm));
+            r?;
+            scan_times.push(ms);
         }
         let ms_warm = median(warm_times);
         let cpu_warm = median(warm_cpus);
+        let ms_warm_scan = median(scan_times);
         let warm_report = warm_report.context("at least one repetition")?;
         let warm_pct = 100.0 * ms_warm / ms_cold;
+        let warm_residual = warm_report
+            .relative_residuals
+            .last()
+            .copied()
+            .unwrap_or(f64::NAN);
         (p.gx, p.gz) = original;
         drop(solver);
 
@@ -308,6 +343,9 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             "ms_cold_border_only":ms_border,"cpu_ms_cold_border_only":cpu_border,
             "cycles_border_only":border_report.cycles,
             "bytes_hierarchy":bytes,"ms_warm":ms_warm,"cpu_ms_warm":cpu_warm,
+            "ms_warm_full_scan":ms_warm_scan,"relative_residual_warm":warm_residual,
+            "relative_residual_warm_after_local":warm_report.relative_residuals.first(),
+            "finishing_sweeps_warm":warm_report.finishing_sweeps,
             "cycles_warm":warm_report.cycles,"local_cycles_warm":warm_report.local_cycles,
             "samples_relaxed_warm":warm_report.samples_relaxed,"samples_relaxed_cold":report.samples_relaxed,
             "warm_pct":warm_pct,"target_warm_pct":TARGET_WARM_PCT,
@@ -367,10 +405,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             args,
             value,
             format!(
-                "  {n}²: cold {ms_cold:.1} ms (CPU {cpu_cold:.1} ms; paper {paper_ms} ms{target}), {} cycles to {residual:.1e}, median factor {factor_v:.3} per cycle, memory {:.1} MB (paper {paper_mb} MB)\n        cold right after a constraint change {ms_new_mask:.1} ms (mask and Galerkin operators rebuilt)\n        warm re-solve after a brush edit {ms_warm:.1} ms (CPU {cpu_warm:.1} ms), {} local + {} global cycles, {:.2} samples relaxed per grid sample (cold {:.1}) = {warm_pct:.0}% of cold (target ≤ 20%)\n        {pyamg_text}\n        {fft_text}",
+                "  {n}²: cold {ms_cold:.1} ms (CPU {cpu_cold:.1} ms; paper {paper_ms} ms{target}), {} cycles to {residual:.1e}, median factor {factor_v:.3} per cycle, memory {:.1} MB (paper {paper_mb} MB)\n        cold right after a constraint change {ms_new_mask:.1} ms (mask and Galerkin operators rebuilt)\n        warm re-solve after a brush edit (brush + resolve_in with its bounds) {ms_warm:.1} ms (CPU {cpu_warm:.1} ms), {} local cycles ({:.1e} after them) + {} finishing sweeps + {} global cycles to {warm_residual:.1e}, {:.2} samples relaxed per grid sample (cold {:.1}) = {warm_pct:.0}% of cold (target ≤ 20%); without the bounds (whole-grid change scan) {ms_warm_scan:.1} ms\n        {pyamg_text}\n        {fft_text}",
                 report.cycles,
                 bytes as f64 / 1e6,
                 warm_report.local_cycles,
+                warm_report.relative_residuals.first().copied().unwrap_or(f64::NAN),
+                warm_report.finishing_sweeps,
                 warm_report.cycles,
                 warm_report.samples_relaxed as f64 / (n * n) as f64,
                 report.samples_relaxed as f64 / (n * n) as f64,

@@ -74,41 +74,65 @@ impl Level {
     /// Sets the free mask from the row-major `fixed` flags (`nx · nz`; border samples stay fixed)
     /// and returns the rectangle of the samples whose flag changed, if any. Rows run in parallel.
     pub fn set_fixed(&mut self, fixed: &[bool]) -> Option<Rect> {
+        self.set_fixed_rows(fixed, 0, self.grid.nz - 1)
+    }
+
+    /// [`Self::set_fixed`] for rows `j0..=j1` only (clipped to the grid).
+    pub fn set_fixed_rows(&mut self, fixed: &[bool], j0: usize, j1: usize) -> Option<Rect> {
         let g = self.grid;
         let split = self.split;
         let st = split.stride;
+        let j1 = j1.min(g.nz - 1);
+        if j0 > j1 {
+            return None;
+        }
+        let span = j0 * st..(j1 + 1) * st;
         let [f0, f1] = &mut self.free;
-        let rows: Vec<Option<(usize, usize)>> = f0
+        let mut rows = vec![None::<(usize, usize)>; j1 + 1 - j0];
+        f0[span.clone()]
             .par_chunks_mut(st)
-            .zip(f1.par_chunks_mut(st))
+            .zip(f1[span].par_chunks_mut(st))
+            .zip(rows.par_iter_mut())
             .enumerate()
-            .map(|(j, (r0, r1))| {
-                let mut span: Option<(usize, usize)> = None;
+            .with_min_len(16)
+            .for_each(|(dj, ((r0, r1), out))| {
+                let j = j0 + dj;
                 let fixed_row = &fixed[j * g.nx..(j + 1) * g.nx];
-                let border_row = j == 0 || j + 1 == g.nz;
+                let inner_row = j > 0 && j + 1 < g.nz;
+                let flag =
+                    |i: usize| u8::from(inner_row & (i > 0) & (i + 1 < g.nx) & !fixed_row[i]);
+                let mut span: Option<(usize, usize)> = None;
                 for (c, row) in [r0, r1].into_iter().enumerate() {
                     let s = Split::shift(c, j);
-                    for (k, slot) in row.iter_mut().enumerate().take(split.count(c, j)) {
+                    let row = &mut row[..split.count(c, j)];
+                    // A branch-free comparison first; the changed columns are searched (and the
+                    // flags written) only when one differs.
+                    let same = row
+                        .iter()
+                        .enumerate()
+                        .fold(true, |ok, (k, &v)| ok & (v == flag(2 * k + s)));
+                    if same {
+                        continue;
+                    }
+                    for (k, slot) in row.iter_mut().enumerate() {
                         let i = 2 * k + s;
-                        let free = !border_row && i > 0 && i + 1 < g.nx && !fixed_row[i];
-                        let v = u8::from(free);
+                        let v = flag(i);
                         if *slot != v {
                             *slot = v;
                             span = Some(span.map_or((i, i), |(a, b)| (a.min(i), b.max(i))));
                         }
                     }
                 }
-                span
-            })
-            .collect();
+                *out = span;
+            });
         rows.iter()
             .enumerate()
-            .filter_map(|(j, s)| {
+            .filter_map(|(dj, s)| {
                 s.map(|(a, b)| Rect {
                     i0: a,
-                    j0: j,
+                    j0: j0 + dj,
                     i1: b,
-                    j1: j,
+                    j1: j0 + dj,
                 })
             })
             .reduce(Rect::union)

@@ -72,22 +72,31 @@
 //! what changed: the mask is compared while it is installed ([`level::Level::set_fixed`]), the
 //! right-hand side and the fixed heights while they are loaded ([`Problem::load_tracked`]), and
 //! only the coarse rows within reach of changed rows get new masks and Galerkin stencils
-//! ([`galerkin::coarsen_rows`], rows in parallel). If the previous solve converged and the
+//! ([`galerkin::coarsen_rows`], rows in parallel). A caller that knows where it edited (a brush
+//! knows its bounds) calls [`Solver::resolve_in`] with that rectangle instead: validation, mask
+//! comparison and loading then cover only the rows of the rectangle (and one row either side),
+//! and `‖b‖²` is the row-ordered sum of per-row partials the solver keeps, so the result is bit
+//! for bit that of the scanning warm solve (tested; debug builds check the caller's rectangle
+//! over the whole grid). If the previous solve converged and the
 //! changed samples fit in a small rectangle, [`local`] runs *local* cycles: fine levels work only
 //! in windows around the change (FAC-style composite correction), the first level whose window
 //! would cover a quarter of it and all coarser ones work globally; the composite correction is
 //! then interpolated to the whole grid and smoothed in a band around the window. The stopping
 //! rule is still the true global relative residual, measured over the whole grid after the local
-//! cycles; if it is above the tolerance, ordinary global cycles continue (large edits go to global
-//! cycles directly). [`SolveReport::local_cycles`] and [`SolveReport::samples_relaxed`] say what
-//! a solve did. Measured (`strata bench poisson`, brush of 32 samples, load average 1.3):
-//! 1025² and 2049² need 2 local cycles and no global one (0.26 and 0.08 samples relaxed per grid
-//! sample, against 14 for a cold solve); 513² needs 2 local cycles and one global cycle. The
-//! write-back leaves a global residual of about 1.5e-6 (513²) to 3e-6 (1025²) relative, from
-//! interpolating the far correction bilinearly, which a single global cycle removes at 513². The
-//! wall time is dominated by the full passes that remain (validation, mask comparison, loading
-//! the right-hand side, the write-back and the residual check): 40 % (513², 6.1 ms), 29 %
-//! (1025², 15.9 ms) and 32 % (2049², 74.5 ms) of a cold solve, above the 20 % target.
+//! cycles; if it is above the tolerance but within [`local::LOCAL_FINISH_RANGE`] times it, up to
+//! [`local::LOCAL_FINISH_SWEEPS`] red-black sweeps of the whole finest level follow (each
+//! followed by the measured residual), and if it is still above, ordinary global cycles continue
+//! (large edits go to global cycles directly). [`SolveReport::local_cycles`],
+//! [`SolveReport::finishing_sweeps`] and [`SolveReport::samples_relaxed`] say what a solve did.
+//! Measured (`strata bench poisson`, brush of 32 samples, brush + `resolve_in` timed together,
+//! release, 2 threads, load average 4.4–5.2 from other builds): 2 local cycles at every size, no
+//! global cycle; the residual after the write-back is within the tolerance at 1025², 2049² and
+//! 4097², and one finishing sweep takes 513² from 1.5e-6 to 6.7e-7. Warm over cold, wall (process
+//! CPU): 513² 16–19 % (18–22 %), 1025² 6–9 % (10 %), 2049² 6–7 % (7 %), 4097² 6 % (4 %); the
+//! scanning `solve(Start::Warm)` takes 3–4 times as long as `resolve_in`. What remains of the cost is the local
+//! cycles (sequential window kernels, about 1.3 ms whatever the grid), the write-back (one
+//! prolongation per level over the whole grid plus the band sweeps) and the global residual
+//! check.
 //!
 //! # Limits
 //! Sides `2^k + 1` from 3 to 8193 samples ([`MAX_SIDE`]); memory about 23 bytes per sample for
@@ -113,6 +122,7 @@ pub mod ops;
 pub mod problem;
 
 pub use grid::{GridSpec, MAX_SIDE, MIN_SIDE};
+pub use local::Rect;
 pub use multigrid::{
     Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, AUTO_SWITCH_FACTOR,
     DEFAULT_MAX_CYCLES, DEFAULT_TOLERANCE,

@@ -123,6 +123,12 @@ pub struct SolveReport {
     /// are estimates and are not listed in `relative_residuals`, whose first entry is then the
     /// measured global residual after them.
     pub local_cycles: usize,
+    /// Red-black sweeps of the whole finest level run after the local cycles, before any
+    /// global cycle, when the measured residual was above the tolerance but within
+    /// [`local::LOCAL_FINISH_RANGE`] times it (at most [`local::LOCAL_FINISH_SWEEPS`]); the
+    /// residual after each is listed in `relative_residuals` (so its length is
+    /// `1 + finishing_sweeps + cycles`).
+    pub finishing_sweeps: usize,
     /// Samples relaxed by the smoothers on all levels (each Gauss–Seidel sweep over a level or a
     /// window counts its samples): the work of the solve, independent of the machine.
     pub samples_relaxed: u64,
@@ -146,6 +152,9 @@ pub struct Solver {
     levels: Vec<Level>,
     krylov: Option<Krylov>,
     scratch: Vec<f64>,
+    /// Each finest row's contribution to `‖b‖²` for the loaded problem (`nz` values once a
+    /// problem is loaded), so that [`Self::resolve_in`] reloads only the damaged rows.
+    rhs_rows: Vec<f64>,
     has_solution: bool,
     /// True when the previous solve converged (the background residual of a local re-solve is
     /// within the tolerance).
@@ -193,6 +202,7 @@ impl Solver {
             levels,
             krylov: None,
             scratch: Vec::new(),
+            rhs_rows: Vec::new(),
             has_solution: false,
             last_converged: false,
             pool,
@@ -249,10 +259,13 @@ impl Solver {
         problem.validate()?;
         let pool = self.pool.take();
         let run = |s: &mut Self| {
-            s.update_mask(problem);
+            s.update_mask(problem, 0, usize::MAX);
             s.has_solution = true;
             s.last_converged = false;
-            problem.load(&mut s.levels[0]).sqrt()
+            problem
+                .load_tracked(&mut s.levels[0], &mut s.rhs_rows)
+                .0
+                .sqrt()
         };
         let norm = match &pool {
             Some(p) => p.install(|| run(self)),
@@ -307,6 +320,82 @@ impl Solver {
         Ok(report)
     }
 
+    /// A warm re-solve after an edit confined to `damage`, a rectangle of samples (bounds
+    /// included) that the caller knows, such as a brush's bounds: only the rows of `damage` (and
+    /// one row either side, whose right-hand side reads the edited edges and fixed heights) are
+    /// validated, compared and reloaded, instead of the whole grid. The result is bit for bit that
+    /// of [`Self::solve`] with [`Start::Warm`].
+    ///
+    /// Contract: compared with the problem of the solver's previous solve (or [`Self::load`]),
+    /// every x-edge `(i + ½, j)`, z-edge `(i, j + ½)`, fixed flag and height that differs belongs
+    /// to a sample `(i, j)` inside `damage`. Debug builds check it over the whole grid and panic
+    /// if it does not hold; release builds trust it. Without a previous problem this is
+    /// [`Self::solve`] with [`Start::Warm`].
+    ///
+    /// # Errors
+    /// As [`Self::solve`] (validation covers the damaged rows), and [`PoissonError::Field`] naming
+    /// `damage` if the rectangle is empty or leaves the grid.
+    pub fn resolve_in(
+        &mut self,
+        problem: &Problem,
+        damage: Rect,
+    ) -> Result<SolveReport, PoissonError> {
+        let g = self.grid();
+        if problem.grid != g {
+            return Err(PoissonError::field(
+                "grid",
+                format!("{:?} differs from the solver's {g:?}", problem.grid),
+            ));
+        }
+        if damage.i0 > damage.i1 || damage.j0 > damage.j1 || damage.i1 >= g.nx || damage.j1 >= g.nz
+        {
+            return Err(PoissonError::field(
+                "damage",
+                format!(
+                    "{damage:?} is empty or leaves the {}×{} grid (bounds are included)",
+                    g.nx, g.nz
+                ),
+            ));
+        }
+        if !self.has_solution || self.rhs_rows.len() != g.nz {
+            return self.solve(problem, Start::Warm);
+        }
+        problem.validate_rows(damage.j0, damage.j1)?;
+        let pool = self.pool.take();
+        let run = |s: &mut Self| {
+            let relaxed_before = s.relaxed();
+            let mask_change = s.update_mask(problem, damage.j0, damage.j1);
+            let (bb, load_change) = problem.load_rows(
+                &mut s.levels[0],
+                &mut s.rhs_rows,
+                damage.j0.saturating_sub(1),
+                damage.j1 + 1,
+            );
+            #[cfg(debug_assertions)]
+            {
+                let outside_mask = s.levels[0].set_fixed(problem.fixed);
+                let mut rows = Vec::new();
+                let (full, outside) = problem.load_tracked(&mut s.levels[0], &mut rows);
+                assert!(
+                    outside_mask.is_none() && outside.is_none() && full.to_bits() == bb.to_bits(),
+                    "resolve_in: the problem changed outside the damage rectangle {damage:?} \
+                     (mask {outside_mask:?}, values {outside:?})"
+                );
+            }
+            let change = match (mask_change, load_change) {
+                (Some(a), Some(b)) => Some(a.union(b)),
+                (a, b) => a.or(b),
+            };
+            s.finish(Start::Warm, bb, change, relaxed_before)
+        };
+        let report = match &pool {
+            Some(p) => p.install(|| run(self)),
+            None => run(self),
+        };
+        self.pool = pool;
+        Ok(report)
+    }
+
     /// The solution in metres, row-major `nx · nz`, rounded to `f32` (fixed samples are exactly
     /// the imposed heights).
     ///
@@ -343,13 +432,25 @@ impl Solver {
 
     fn run(&mut self, problem: &Problem, start: Start) -> SolveReport {
         let relaxed_before = self.relaxed();
-        let mask_change = self.update_mask(problem);
-        let (bb, load_change) = problem.load_tracked(&mut self.levels[0]);
-        let bnorm = bb.sqrt();
+        let mask_change = self.update_mask(problem, 0, usize::MAX);
+        let (bb, load_change) = problem.load_tracked(&mut self.levels[0], &mut self.rhs_rows);
         let change = match (mask_change, load_change) {
             (Some(a), Some(b)) => Some(a.union(b)),
             (a, b) => a.or(b),
         };
+        self.finish(start, bb, change, relaxed_before)
+    }
+
+    /// The solve after the problem is loaded: `bb = ‖b‖²`, `change` the rectangle of the finest
+    /// samples whose mask, right-hand side or fixed height changed.
+    fn finish(
+        &mut self,
+        start: Start,
+        bb: f64,
+        change: Option<Rect>,
+        relaxed_before: u64,
+    ) -> SolveReport {
+        let bnorm = bb.sqrt();
         let local_ok = matches!(start, Start::Warm) && self.has_solution && self.last_converged;
         let kind = match start {
             Start::Warm if self.has_solution => StartKind::Warm,
@@ -387,6 +488,7 @@ impl Solver {
                 converged: true,
                 rhs_norm: 0.0,
                 local_cycles: 0,
+                finishing_sweeps: 0,
                 samples_relaxed: 0,
             };
         }
@@ -396,18 +498,19 @@ impl Solver {
             self.full_multigrid();
         } else if let (true, Some(rect)) = (local_ok, change) {
             let o = self.options;
-            if let Some(out) = local::resolve(
+            let res = local::resolve(
                 &mut self.levels,
                 rect,
                 &o,
                 &mut self.scratch,
                 o.tolerance * bnorm,
-            ) {
+            );
+            if let Some(out) = res {
                 local_cycles = out.cycles;
                 local_relaxed = out.relaxed;
             }
         }
-        let (cycles, relative_residuals) = self.cycles(bnorm);
+        let (cycles, relative_residuals, finishing_sweeps) = self.cycles(bnorm, local_cycles > 0);
         let converged = relative_residuals
             .last()
             .is_some_and(|r| *r <= self.options.tolerance);
@@ -419,6 +522,7 @@ impl Solver {
             converged,
             rhs_norm: bnorm,
             local_cycles,
+            finishing_sweeps,
             samples_relaxed: self.relaxed() - relaxed_before + local_relaxed,
         }
     }
@@ -429,11 +533,11 @@ impl Solver {
             + self.krylov.as_ref().map_or(0, |k| k.zl.relaxed)
     }
 
-    /// Installs the problem's mask on the finest level and updates the coarse masks and
-    /// operators in the rows within reach of the samples that changed. Returns the rectangle of
-    /// the changed samples.
-    fn update_mask(&mut self, problem: &Problem) -> Option<Rect> {
-        let change = self.levels[0].set_fixed(problem.fixed)?;
+    /// Installs the problem's mask of rows `j0..=j1` on the finest level and updates the coarse
+    /// masks and operators in the rows within reach of the samples that changed. Returns the
+    /// rectangle of the changed samples.
+    fn update_mask(&mut self, problem: &Problem, j0: usize, j1: usize) -> Option<Rect> {
+        let change = self.levels[0].set_fixed_rows(problem.fixed, j0, j1)?;
         let (mut a, mut b) = (change.j0, change.j1);
         for l in 1..self.levels.len() {
             let (x, y) = self.levels.split_at_mut(l);
@@ -478,9 +582,38 @@ impl Solver {
         }
     }
 
-    /// Finest-level cycles until the tolerance or the cycle cap. Returns the cycle count and the
-    /// relative residual history.
-    fn cycles(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
+    /// Finest-level cycles until the tolerance or the cycle cap. Returns the cycle count, the
+    /// relative residual history and the finishing sweeps run first (only `after_local`: see
+    /// [`SolveReport::finishing_sweeps`]).
+    fn cycles(&mut self, bnorm: f64, after_local: bool) -> (usize, Vec<f64>, usize) {
+        let o = self.options;
+        let mut history = Vec::new();
+        let mut sweeps = 0;
+        if after_local && self.levels.len() > 1 {
+            loop {
+                let (a, b) = self.levels.split_at_mut(1);
+                let rel = residual_restrict(&a[0], &mut b[0]).sqrt() / bnorm;
+                history.push(rel);
+                if rel <= o.tolerance
+                    || rel > local::LOCAL_FINISH_RANGE * o.tolerance
+                    || sweeps == local::LOCAL_FINISH_SWEEPS
+                {
+                    break;
+                }
+                smooth(&mut a[0], 1);
+                sweeps += 1;
+            }
+            if history[history.len() - 1] <= o.tolerance {
+                return (0, history, sweeps);
+            }
+            history.pop();
+        }
+        let (done, tail) = self.cycles_from(bnorm);
+        history.extend(tail);
+        (done, history, sweeps)
+    }
+
+    fn cycles_from(&mut self, bnorm: f64) -> (usize, Vec<f64>) {
         let o = self.options;
         if o.acceleration == Acceleration::ConjugateGradient && self.levels.len() > 1 {
             return self.conjugate_gradients(bnorm, o.max_cycles);

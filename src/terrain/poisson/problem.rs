@@ -43,6 +43,16 @@ impl Problem<'_> {
     /// # Errors
     /// [`PoissonError::Field`] naming `gx`, `gz`, `fixed` or `heights`.
     pub fn validate(&self) -> Result<(), PoissonError> {
+        self.validate_rows(0, usize::MAX)
+    }
+
+    /// [`Self::validate`] for the values of rows `j0..=j1` only (clipped to the grid): the
+    /// x-edges and z-edges `(i, j + ½)` of those rows, and their fixed heights. The lengths are
+    /// always checked in full.
+    ///
+    /// # Errors
+    /// As [`Self::validate`].
+    pub fn validate_rows(&self, j0: usize, j1: usize) -> Result<(), PoissonError> {
         let g = self.grid;
         for (name, len, want) in [
             ("gx", self.gx.len(), g.x_edges()),
@@ -57,29 +67,46 @@ impl Problem<'_> {
                 ));
             }
         }
+        let j1 = j1.min(g.nz - 1);
+        if j0 > j1 {
+            return Ok(());
+        }
+        // z-edge row `j` joins rows `j` and `j + 1`; the last row has none.
+        let zrows = j0..(j1 + 1).min(g.nz - 1);
         // Branch-free scans first (they vectorise); the searches that name the culprit run only
         // when a scan fails.
-        for (name, values) in [("gx", self.gx), ("gz", self.gz)] {
+        for (name, values, from) in [
+            (
+                "gx",
+                &self.gx[j0 * (g.nx - 1)..(j1 + 1) * (g.nx - 1)],
+                j0 * (g.nx - 1),
+            ),
+            (
+                "gz",
+                &self.gz[zrows.start * g.nx..zrows.end * g.nx],
+                zrows.start * g.nx,
+            ),
+        ] {
             if !all_finite(values) {
                 let i = values.iter().position(|v| !v.is_finite()).unwrap_or(0);
                 return Err(PoissonError::field(
                     name,
-                    format!("value {} at index {i} is not finite", values[i]),
+                    format!("value {} at index {} is not finite", values[i], from + i),
                 ));
             }
         }
-        let fixed_ok = self
-            .fixed
+        let rows = j0 * g.nx..(j1 + 1) * g.nx;
+        let fixed_ok = self.fixed[rows.clone()]
             .iter()
-            .zip(self.heights)
+            .zip(&self.heights[rows])
             .fold(true, |ok, (&f, h)| ok & (!f | h.is_finite()));
-        let border_ok = all_finite(&self.heights[..g.nx])
-            && all_finite(&self.heights[g.len() - g.nx..])
-            && (0..g.nz).all(|j| {
+        let border_ok = (j0 > 0 || all_finite(&self.heights[..g.nx]))
+            && (j1 + 1 < g.nz || all_finite(&self.heights[g.len() - g.nx..]))
+            && (j0..=j1).all(|j| {
                 self.heights[j * g.nx].is_finite() && self.heights[j * g.nx + g.nx - 1].is_finite()
             });
         if !(fixed_ok && border_ok) {
-            for j in 0..g.nz {
+            for j in j0..=j1 {
                 for i in 0..g.nx {
                     let n = j * g.nx + i;
                     if (self.fixed[n] || g.is_border(i, j)) && !self.heights[n].is_finite() {
@@ -129,93 +156,128 @@ impl Problem<'_> {
     /// returns `‖b‖²`, the squared norm of the right-hand side of the reduced system over the free
     /// samples (fixed neighbours moved to the right: `b − Σ_fixed neighbours h`).
     pub fn load(&self, level: &mut Level) -> f64 {
-        self.load_tracked(level).0
+        let mut rows = Vec::new();
+        self.load_tracked(level, &mut rows).0
     }
 
     /// [`Self::load`], also returning the rectangle of the samples whose right-hand side (free
-    /// samples) or height (fixed samples) differs from what `level` held before, if any.
-    pub fn load_tracked(&self, level: &mut Level) -> (f64, Option<Rect>) {
-        let g = self.grid;
-        let (nx, nz) = (g.nx, g.nz);
+    /// samples) or height (fixed samples) differs from what `level` held before, if any. `rows`
+    /// receives the contribution of every row to `‖b‖²` (`nz` values, whose sum in row order is
+    /// the returned norm), so that [`Self::load_rows`] can update it later. Rows run in parallel.
+    pub fn load_tracked(&self, level: &mut Level, rows: &mut Vec<f64>) -> (f64, Option<Rect>) {
+        rows.clear();
+        rows.resize(self.grid.nz, 0.0);
+        self.load_rows(level, rows, 0, self.grid.nz - 1)
+    }
+
+    /// [`Self::load_tracked`] restricted to the rows `j0..=j1`: the right-hand side, the fixed
+    /// heights and the row contributions `rows[j]` (`nz` values, as [`Self::load_tracked`] left
+    /// them) of those rows only. If the other rows' inputs did not change since `rows` was
+    /// computed, the returned `(Σ rows, change)` is what [`Self::load_tracked`] would return, bit
+    /// for bit (the sum runs in row order either way).
+    pub fn load_rows(
+        &self,
+        level: &mut Level,
+        rows: &mut [f64],
+        j0: usize,
+        j1: usize,
+    ) -> (f64, Option<Rect>) {
         let st = level.split.stride;
-        let delta = g.spacing_m;
-        let band = (nz / (4 * rayon::current_num_threads().max(1))).max(8);
-        let mut partial = vec![(0.0f64, None::<(usize, usize)>); nz];
+        let j1 = j1.min(self.grid.nz - 1);
+        let span = j0 * st..(j1 + 1) * st;
         let [r0, r1] = &mut level.rhs;
         let [h0, h1] = &mut level.h;
-        let free = &level.free;
-        let me = *self;
-        r0.par_chunks_mut(band * st)
-            .zip(r1.par_chunks_mut(band * st))
-            .zip(h0.par_chunks_mut(band * st))
-            .zip(h1.par_chunks_mut(band * st))
-            .zip(partial.par_chunks_mut(band))
+        let free = [&level.free[0][span.clone()], &level.free[1][span.clone()]];
+        let mut spans = vec![None::<(usize, usize)>; j1 + 1 - j0];
+        r0[span.clone()]
+            .par_chunks_mut(st)
+            .zip(r1[span.clone()].par_chunks_mut(st))
+            .zip(h0[span.clone()].par_chunks_mut(st))
+            .zip(h1[span].par_chunks_mut(st))
+            .zip(rows[j0..=j1].par_iter_mut())
+            .zip(spans.par_iter_mut())
             .enumerate()
-            .for_each(|(b, ((((r0, r1), h0), h1), part))| {
-                for (dj, slot) in part.iter_mut().enumerate() {
-                    let j = b * band + dj;
-                    let mut ss = 0.0f64;
-                    let mut span: Option<(usize, usize)> = None;
-                    let mut note = |i: usize| {
-                        span = Some(
-                            span.map_or((i, i), |(a, b): (usize, usize)| (a.min(i), b.max(i))),
-                        );
-                    };
-                    for i in 0..nx {
-                        let n = j * nx + i;
-                        let (c, k) = ((i + j) & 1, dj * st + i / 2);
-                        let (rr, hh) = if c == 0 {
-                            (&mut *r0, &mut *h0)
-                        } else {
-                            (&mut *r1, &mut *h1)
-                        };
-                        if free[c][j * st + i / 2] == 0 {
-                            let v = f64::from(me.heights[n]);
-                            if rr[k] != 0.0 || hh[k] != v {
-                                note(i);
-                            }
-                            rr[k] = 0.0;
-                            hh[k] = v;
-                            continue;
-                        }
-                        let ex = n - j;
-                        let div = (f64::from(me.gx[ex]) - f64::from(me.gx[ex - 1]))
-                            + (f64::from(me.gz[n]) - f64::from(me.gz[n - nx]));
-                        let rhs = delta * div;
-                        if rr[k] != rhs {
-                            note(i);
-                        }
-                        rr[k] = rhs;
-                        let mut beff = rhs;
-                        for (m, border) in [
-                            (n - 1, i == 1),
-                            (n + 1, i + 2 == nx),
-                            (n - nx, j == 1),
-                            (n + nx, j + 2 == nz),
-                        ] {
-                            if border || me.fixed[m] {
-                                beff -= f64::from(me.heights[m]);
-                            }
-                        }
-                        ss += beff * beff;
-                    }
-                    *slot = (ss, span);
-                }
+            .with_min_len(8)
+            .for_each(|(dj, (((((r0, r1), h0), h1), ss), span))| {
+                let f = [
+                    &free[0][dj * st..(dj + 1) * st],
+                    &free[1][dj * st..(dj + 1) * st],
+                ];
+                (*ss, *span) = self.load_row(j0 + dj, [r0, r1], [h0, h1], f);
             });
-        let norm = partial.iter().map(|p| p.0).sum();
-        let change = partial
+        let change = spans
             .iter()
             .enumerate()
-            .filter_map(|(j, p)| {
-                p.1.map(|(a, b)| Rect {
+            .filter_map(|(dj, p)| {
+                p.map(|(a, b)| Rect {
                     i0: a,
-                    j0: j,
+                    j0: j0 + dj,
                     i1: b,
-                    j1: j,
+                    j1: j0 + dj,
                 })
             })
             .reduce(Rect::union);
-        (norm, change)
+        (rows.iter().sum(), change)
+    }
+
+    /// Loads row `j` (its two colour rows of the right-hand side, unknowns and mask); returns its
+    /// contribution to `‖b‖²` and the columns that changed.
+    fn load_row(
+        &self,
+        j: usize,
+        rhs: [&mut [f64]; 2],
+        h: [&mut [f64]; 2],
+        free: [&[u8]; 2],
+    ) -> (f64, Option<(usize, usize)>) {
+        let g = self.grid;
+        let (nx, nz) = (g.nx, g.nz);
+        let delta = g.spacing_m;
+        let [r0, r1] = rhs;
+        let [h0, h1] = h;
+        let mut ss = 0.0f64;
+        let mut span: Option<(usize, usize)> = None;
+        let mut note = |i: usize| {
+            span = Some(span.map_or((i, i), |(a, b): (usize, usize)| (a.min(i), b.max(i))));
+        };
+        for i in 0..nx {
+            let n = j * nx + i;
+            let (c, k) = ((i + j) & 1, i / 2);
+            let (rr, hh) = if c == 0 {
+                (&mut *r0, &mut *h0)
+            } else {
+                (&mut *r1, &mut *h1)
+            };
+            if free[c][k] == 0 {
+                let v = f64::from(self.heights[n]);
+                if rr[k] != 0.0 || hh[k] != v {
+                    note(i);
+                }
+                rr[k] = 0.0;
+                hh[k] = v;
+                continue;
+            }
+            let ex = n - j;
+            let div = (f64::from(self.gx[ex]) - f64::from(self.gx[ex - 1]))
+                + (f64::from(self.gz[n]) - f64::from(self.gz[n - nx]));
+            let rhs = delta * div;
+            if rr[k] != rhs {
+                note(i);
+            }
+            rr[k] = rhs;
+            let mut beff = rhs;
+            for (m, border) in [
+                (n - 1, i == 1),
+                (n + 1, i + 2 == nx),
+                (n - nx, j == 1),
+                (n + nx, j + 2 == nz),
+            ] {
+                if border || self.fixed[m] {
+                    beff -= f64::from(self.heights[m]);
+                }
+            }
+            ss += beff * beff;
+        }
+        (ss, span)
     }
 }
 
