@@ -49,7 +49,10 @@ pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 ///
 /// 2: the thermal erosion brush adds its change instead of replacing the target gradient, and
 /// the Poisson solver loads its right-hand side without per-neighbour divisions.
-pub const TILE_CODE_VERSION: u32 = 2;
+/// 3: a warm Poisson re-solve between a region's operations may end with finishing sweeps
+/// instead of a global cycle, and volume regions' harmonic fill runs on a Galerkin hierarchy
+/// (the volume overrides tiles mark can move).
+pub const TILE_CODE_VERSION: u32 = 3;
 
 /// The vertex spacing of a LOD, metres.
 fn spacing_m(world: &WorldParams, lod: u32) -> f64 {
