@@ -22,9 +22,10 @@
 //! device's `max_storage_buffer_binding_size` (128 MiB by default: 8 Mi samples, e.g.
 //! 256 × 128 × 256); larger grids are an error, not a panic.
 
+use super::kit::{read_back, readback, upload};
 use super::scopes::Scopes;
 use crate::volume::pipeline::grid::Grid;
-use anyhow::{anyhow, bail, Context};
+use anyhow::{bail, Context};
 
 const WORKGROUP: u32 = 64;
 const MAX_GROUPS: u32 = 65_535;
@@ -169,67 +170,10 @@ fn pipeline(
     })
 }
 
-fn buffer(
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    label: &str,
-    contents: &[u8],
-    usage: wgpu::BufferUsages,
-) -> wgpu::Buffer {
-    let b = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some(label),
-        size: (contents.len() as u64).max(4).next_multiple_of(4),
-        usage: usage | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    queue.write_buffer(&b, 0, contents);
-    b
-}
-
 fn groups(n: u32) -> (u32, u32) {
     let g = n.div_ceil(WORKGROUP);
     let x = g.clamp(1, MAX_GROUPS);
     (x, g.div_ceil(x))
-}
-
-/// Copies `src` into a mappable buffer, submits `encoder`, waits and returns the bytes.
-fn read_back(
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    mut encoder: wgpu::CommandEncoder,
-    src: &wgpu::Buffer,
-    bytes: u64,
-) -> anyhow::Result<Vec<u8>> {
-    let readback = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("volume readback"),
-        size: bytes,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    encoder.copy_buffer_to_buffer(src, 0, &readback, 0, bytes);
-    let submission = queue.submit([encoder.finish()]);
-    let (tx, rx) = std::sync::mpsc::channel();
-    readback.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    device
-        .poll(wgpu::PollType::Wait {
-            submission_index: Some(submission),
-            timeout: None,
-        })
-        .map_err(|e| anyhow!("waiting for the device: {e}"))?;
-    match rx.try_recv() {
-        Ok(Ok(())) => {}
-        Ok(Err(e)) => bail!("mapping the result failed: {e}"),
-        Err(_) => bail!("the result was not mapped after the submission completed"),
-    }
-    let data = readback
-        .slice(..)
-        .get_mapped_range()
-        .map_err(|e| anyhow!("reading the result: {e}"))?
-        .to_vec();
-    readback.unmap();
-    Ok(data)
 }
 
 fn check_grid(device: &wgpu::Device, dims: [usize; 3], chans: &[Vec<f32>]) -> anyhow::Result<u32> {
@@ -285,28 +229,28 @@ pub fn diffuse_on_device(
     }
     let fixed: Vec<u32> = input.fixed.iter().map(|&f| u32::from(f != 0)).collect();
     let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC;
-    let ubuf = buffer(
+    let ubuf = upload(
         device,
         queue,
         "diffuse params",
         bytemuck::bytes_of(&params),
         wgpu::BufferUsages::UNIFORM,
     );
-    let a = buffer(
+    let a = upload(
         device,
         queue,
         "diffuse a",
         bytemuck::cast_slice(&packed),
         storage,
     );
-    let b = buffer(
+    let b = upload(
         device,
         queue,
         "diffuse b",
         bytemuck::cast_slice(&packed),
         storage,
     );
-    let fbuf = buffer(
+    let fbuf = upload(
         device,
         queue,
         "fixed",
@@ -356,11 +300,11 @@ pub fn diffuse_on_device(
     } else {
         &b
     };
-    let bytes = read_back(device, queue, encoder, result, u64::from(n) * 16);
-    scopes
-        .pop()
+    let out = readback(device, "volume diffuse readback", u64::from(n) * 16);
+    encoder.copy_buffer_to_buffer(result, 0, &out, 0, u64::from(n) * 16);
+    let submission = queue.submit([encoder.finish()]);
+    let data: Vec<f32> = read_back(device, &out, submission, None, scopes)
         .context("running shaders/volume_diffuse.wgsl")?;
-    let data: Vec<f32> = bytemuck::pod_collect_to_vec(&bytes?);
     Ok((0..m)
         .map(|c| (0..n as usize).map(|i| data[4 * i + c]).collect())
         .collect())
@@ -416,28 +360,28 @@ pub fn propagate_on_device(
         .map(|&o| if o != 0 { 0 } else { u32::MAX })
         .collect();
     let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC;
-    let ubuf = buffer(
+    let ubuf = upload(
         device,
         queue,
         "propagate params",
         &uniforms,
         wgpu::BufferUsages::UNIFORM,
     );
-    let nbuf = buffer(
+    let nbuf = upload(
         device,
         queue,
         "normal",
         bytemuck::cast_slice(&packed),
         wgpu::BufferUsages::STORAGE,
     );
-    let lbuf = buffer(
+    let lbuf = upload(
         device,
         queue,
         "layer",
         bytemuck::cast_slice(&layers),
         storage,
     );
-    let sbuf = buffer(
+    let sbuf = upload(
         device,
         queue,
         "surface",
@@ -484,21 +428,12 @@ pub fn propagate_on_device(
         pass.dispatch_workgroups(gx, gy, 1);
     }
     // Both results in one readback: layers, then S.
-    let both = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("propagate result"),
-        size: u64::from(n) * 8,
-        usage: wgpu::BufferUsages::STORAGE
-            | wgpu::BufferUsages::COPY_SRC
-            | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
+    let both = readback(device, "volume propagate readback", u64::from(n) * 8);
     encoder.copy_buffer_to_buffer(&lbuf, 0, &both, 0, u64::from(n) * 4);
     encoder.copy_buffer_to_buffer(&sbuf, 0, &both, u64::from(n) * 4, u64::from(n) * 4);
-    let bytes = read_back(device, queue, encoder, &both, u64::from(n) * 8);
-    scopes
-        .pop()
+    let submission = queue.submit([encoder.finish()]);
+    let words: Vec<u32> = read_back(device, &both, submission, None, scopes)
         .context("running shaders/volume_propagate.wgsl")?;
-    let words: Vec<u32> = bytemuck::pod_collect_to_vec(&bytes?);
     let (l, s) = words.split_at(n as usize);
     Ok((s.iter().map(|&b| f32::from_bits(b)).collect(), l.to_vec()))
 }
