@@ -125,17 +125,7 @@ impl Level {
                 }
                 *out = span;
             });
-        rows.iter()
-            .enumerate()
-            .filter_map(|(dj, s)| {
-                s.map(|(a, b)| Rect {
-                    i0: a,
-                    j0: j0 + dj,
-                    i1: b,
-                    j1: j0 + dj,
-                })
-            })
-            .reduce(Rect::union)
+        Rect::of_row_spans(j0, &rows)
     }
 
     /// True if sample `(i, j)` is free.

@@ -115,6 +115,23 @@ impl Rect {
         }
     }
 
+    /// The smallest rectangle holding the spans `(i0, i1)` of rows `j0, j0 + 1, …` (`None`: the
+    /// row holds nothing), or `None` when no row does.
+    pub fn of_row_spans(j0: usize, spans: &[Option<(usize, usize)>]) -> Option<Self> {
+        spans
+            .iter()
+            .enumerate()
+            .filter_map(|(dj, s)| {
+                s.map(|(i0, i1)| Self {
+                    i0,
+                    j0: j0 + dj,
+                    i1,
+                    j1: j0 + dj,
+                })
+            })
+            .reduce(Self::union)
+    }
+
     /// The smallest rectangle holding both.
     pub fn union(self, o: Self) -> Self {
         Self {

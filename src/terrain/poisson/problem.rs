@@ -205,18 +205,7 @@ impl Problem<'_> {
                 ];
                 (*ss, *span) = self.load_row(j0 + dj, [r0, r1], [h0, h1], f);
             });
-        let change = spans
-            .iter()
-            .enumerate()
-            .filter_map(|(dj, p)| {
-                p.map(|(a, b)| Rect {
-                    i0: a,
-                    j0: j0 + dj,
-                    i1: b,
-                    j1: j0 + dj,
-                })
-            })
-            .reduce(Rect::union);
+        let change = Rect::of_row_spans(j0, &spans);
         (rows.iter().sum(), change)
     }
 
