@@ -1,10 +1,8 @@
 //! Export jobs over HTTP (`POST /v1/worlds/{id}/exports`, `/v1/jobs/{job}…`), driven through
 //! `strata::server::app` with `tower::ServiceExt::oneshot`; archives go to a temporary directory.
 
-use axum::body::Body;
-use axum::http::{HeaderMap, Method, Request, StatusCode};
+use axum::http::{Method, StatusCode};
 use axum::Router;
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use std::time::Duration;
 use strata::compute::Compute;
@@ -12,49 +10,15 @@ use strata::export::{self, tar::read_members, ExportSpec, Product, Shard};
 use strata::server::jobs::{JobLimits, Status};
 use strata::server::{app, AppState};
 use strata::terrain::{WorldParams, WorldPlan};
-use tower::ServiceExt;
 
 /// Longest wait for one export job of these tests.
 const JOB_TIMEOUT: Duration = Duration::from_secs(300);
 
-struct Reply {
-    status: StatusCode,
-    headers: HeaderMap,
-    body: Vec<u8>,
-}
+mod common;
+use common::oneshot::Reply;
 
-impl Reply {
-    fn header(&self, name: &str) -> Option<&str> {
-        self.headers.get(name).and_then(|v| v.to_str().ok())
-    }
-
-    fn json(&self) -> Value {
-        serde_json::from_slice(&self.body)
-            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)))
-    }
-
-    fn ok(&self, status: StatusCode) -> &Self {
-        assert_eq!(
-            self.status,
-            status,
-            "{}",
-            String::from_utf8_lossy(&self.body)
-        );
-        self
-    }
-
-    /// Asserts a JSON error with this status, code and (if given) field.
-    fn error(&self, status: StatusCode, code: &str, field: Option<&str>) {
-        self.ok(status);
-        let e = &self.json()["error"];
-        assert_eq!(e["code"], code, "{e}");
-        if let Some(f) = field {
-            assert_eq!(e["field"], f, "{e}");
-        }
-        assert!(e["message"].as_str().is_some_and(|m| !m.is_empty()));
-    }
-}
-
+/// One request with an optional bearer token and JSON body; the whole exchange must end within
+/// [`JOB_TIMEOUT`].
 async fn send(
     app: &Router,
     method: Method,
@@ -62,34 +26,19 @@ async fn send(
     token: Option<&str>,
     body: Option<&[u8]>,
 ) -> Reply {
-    let mut req = Request::builder().method(method).uri(uri);
+    let mut headers = Vec::new();
     if let Some(t) = token {
-        req = req.header("authorization", format!("Bearer {t}"));
+        headers.push(("authorization", format!("Bearer {t}")));
     }
     if body.is_some() {
-        req = req.header("content-type", "application/json");
+        headers.push(("content-type", "application/json".to_string()));
     }
-    let body = body
-        .map(|b| Body::from(b.to_vec()))
-        .unwrap_or_else(Body::empty);
-    let res = app
-        .clone()
-        .oneshot(req.body(body).expect("request"))
-        .await
-        .expect("infallible");
-    let status = res.status();
-    let headers = res.headers().clone();
-    let body = tokio::time::timeout(JOB_TIMEOUT, res.into_body().collect())
-        .await
-        .expect("the body ends in time")
-        .expect("body")
-        .to_bytes()
-        .to_vec();
-    Reply {
-        status,
-        headers,
-        body,
-    }
+    tokio::time::timeout(
+        JOB_TIMEOUT,
+        common::oneshot::send(app, method, uri, &headers, body),
+    )
+    .await
+    .expect("the reply ends in time")
 }
 
 async fn get(app: &Router, uri: &str, token: Option<&str>) -> Reply {
@@ -108,7 +57,7 @@ fn service(dir: &std::path::Path) -> Router {
 /// A world made from a bare seed (private): its id and admin token.
 async fn world(app: &Router, seed: u64) -> (String, String) {
     let r = post(app, "/v1/worlds", None, &json!({ "seed": seed })).await;
-    let v = r.ok(StatusCode::CREATED).json();
+    let v = r.status_is(StatusCode::CREATED).json();
     (
         v["id"].as_str().expect("id").to_string(),
         v["tokens"]["admin"].as_str().expect("token").to_string(),
@@ -118,7 +67,7 @@ async fn world(app: &Router, seed: u64) -> (String, String) {
 /// Starts an export; the 202 answer.
 async fn start(app: &Router, id: &str, token: Option<&str>, body: &Value) -> Value {
     let r = post(app, &format!("/v1/worlds/{id}/exports"), token, body).await;
-    let v = r.ok(StatusCode::ACCEPTED).json();
+    let v = r.status_is(StatusCode::ACCEPTED).json();
     let job = v["job"].as_str().expect("job id");
     assert_eq!(v["status_url"], format!("/v1/jobs/{job}"));
     assert_eq!(v["events_url"], format!("/v1/jobs/{job}/events"));
@@ -131,7 +80,10 @@ async fn start(app: &Router, id: &str, token: Option<&str>, body: &Value) -> Val
 async fn wait(app: &Router, status_url: &str, token: Option<&str>) -> Value {
     let deadline = tokio::time::Instant::now() + JOB_TIMEOUT;
     loop {
-        let v = get(app, status_url, token).await.ok(StatusCode::OK).json();
+        let v = get(app, status_url, token)
+            .await
+            .status_is(StatusCode::OK)
+            .json();
         if v["status"] == "done" || v["status"] == "failed" {
             return v;
         }
@@ -187,13 +139,18 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
         {"op": "add", "path": "/regions/-", "value": {"id": "peak",
          "bbox": {"min": [0.0, 0.0], "max": [200.0, 200.0]}, "samples": 65,
          "ops": [{"op": "elevation", "shape": {"point": [100.0, 100.0]}, "elevation_m": 500.0, "radius_m": 8.0}]}}]);
-    let req = Request::post(format!("/v1/worlds/{id}/edits"))
-        .header("authorization", format!("Bearer {admin}"))
-        .header("content-type", "application/json-patch+json")
-        .body(Body::from(patch.to_string()))
-        .expect("request");
-    let res = app.clone().oneshot(req).await.expect("infallible");
-    assert_eq!(res.status(), StatusCode::OK);
+    common::oneshot::send(
+        &app,
+        Method::POST,
+        &format!("/v1/worlds/{id}/edits"),
+        &[
+            ("authorization", format!("Bearer {admin}")),
+            ("content-type", "application/json-patch+json".to_string()),
+        ],
+        Some(patch.to_string().as_bytes()),
+    )
+    .await
+    .ok();
 
     let region = [-1i64, 0, 2, 2];
     let started = start(
@@ -212,7 +169,7 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
     // Follow the job over SSE to the end.
     let events_url = started["events_url"].as_str().expect("url");
     let r = get(&app, events_url, tok).await;
-    r.ok(StatusCode::OK);
+    r.status_is(StatusCode::OK);
     assert!(r
         .header("content-type")
         .is_some_and(|t| t.starts_with("text/event-stream")));
@@ -231,13 +188,19 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
     assert!(rest.iter().all(|(_, d)| d["total"] == 6));
 
     // A late client gets the current state first, then the end.
-    let late = sse(&get(&app, events_url, tok).await.ok(StatusCode::OK).body);
+    let late = sse(&get(&app, events_url, tok)
+        .await
+        .status_is(StatusCode::OK)
+        .body);
     let names: Vec<&str> = late.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(names, ["progress", "done"], "{late:?}");
     assert_eq!(late[0].1, json!({"status": "done", "done": 6, "total": 6}));
 
     let status_url = started["status_url"].as_str().expect("url");
-    let v = get(&app, status_url, tok).await.ok(StatusCode::OK).json();
+    let v = get(&app, status_url, tok)
+        .await
+        .status_is(StatusCode::OK)
+        .json();
     assert_eq!(
         v,
         json!({"id": started["job"], "world": id, "version": 2, "shard": "1/1",
@@ -246,7 +209,7 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
     );
 
     let r = get(&app, started["download_url"].as_str().expect("url"), tok).await;
-    r.ok(StatusCode::OK);
+    r.status_is(StatusCode::OK);
     assert_eq!(r.header("content-type"), Some("application/x-tar"));
     assert!(r
         .header("content-disposition")
@@ -265,10 +228,10 @@ async fn export_job_follows_over_sse_and_matches_the_http_api() {
     for (name, bytes) in &members[..members.len() - 1] {
         let url = format!("/v1/worlds/{id}/{name}?v=2");
         let served = get(&app, &url, tok).await;
-        served.ok(StatusCode::OK);
+        served.status_is(StatusCode::OK);
         assert!(served.body == *bytes, "{name} differs from GET {url}");
         let v1 = get(&app, &format!("/v1/worlds/{id}/{name}?v=1"), tok).await;
-        differs_from_v1 |= v1.ok(StatusCode::OK).body != *bytes;
+        differs_from_v1 |= v1.status_is(StatusCode::OK).body != *bytes;
     }
     assert!(
         differs_from_v1,
@@ -307,7 +270,7 @@ async fn three_shard_jobs_equal_the_whole_job_and_the_cli() {
         let v = wait(&app, j["status_url"].as_str().expect("url"), tok).await;
         assert_eq!(v["status"], "done", "{v}");
         let r = get(&app, j["download_url"].as_str().expect("url"), tok).await;
-        archives.push(r.ok(StatusCode::OK).body.clone());
+        archives.push(r.status_is(StatusCode::OK).body.clone());
     }
     let whole = read_members(&archives[0]).expect("tar");
     assert_eq!(whole.len(), 12 * 3 + 1);
@@ -508,7 +471,7 @@ async fn a_private_worlds_exports_need_a_token() {
         &json!({"role": "read"}),
     )
     .await;
-    let reader = r.ok(StatusCode::CREATED).json()["token"]
+    let reader = r.status_is(StatusCode::CREATED).json()["token"]
         .as_str()
         .expect("token")
         .to_string();
@@ -543,7 +506,9 @@ async fn a_private_worlds_exports_need_a_token() {
         get(&app, url, Some(&other_admin))
             .await
             .error(StatusCode::FORBIDDEN, "forbidden", None);
-        get(&app, url, Some(&reader)).await.ok(StatusCode::OK);
+        get(&app, url, Some(&reader))
+            .await
+            .status_is(StatusCode::OK);
     }
     // Once the world is public, anyone may follow and download its jobs.
     post(
@@ -553,10 +518,12 @@ async fn a_private_worlds_exports_need_a_token() {
         &json!({"public": true}),
     )
     .await
-    .ok(StatusCode::OK);
+    .status_is(StatusCode::OK);
     let r = get(&app, job["download_url"].as_str().expect("url"), None).await;
     assert_eq!(
-        read_members(&r.ok(StatusCode::OK).body).expect("tar").len(),
+        read_members(&r.status_is(StatusCode::OK).body)
+            .expect("tar")
+            .len(),
         2
     );
 }

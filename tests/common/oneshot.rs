@@ -35,14 +35,15 @@ impl Reply {
         self.status_is(StatusCode::OK);
     }
 
-    /// Asserts the status, showing the body if it differs.
-    pub fn status_is(&self, status: StatusCode) {
+    /// Asserts the status, showing the body if it differs; returns the reply for chaining.
+    pub fn status_is(&self, status: StatusCode) -> &Self {
         assert_eq!(
             self.status,
             status,
             "{}",
             String::from_utf8_lossy(&self.body)
         );
+        self
     }
 
     /// Asserts a JSON error with this status and code, a non-empty message and, if given, this
