@@ -23,7 +23,8 @@
 //!   border-only problem. The problem goes to the script through a temporary file (format in the
 //!   script's docstring). Without `pyamg` and `scipy` importable by `python3`, the benchmark
 //!   creates a venv at `target/bench-venv` and `pip install`s them (and says so); if that fails,
-//!   it prints that the peers are unavailable and why.
+//!   it prints that the peers are unavailable and why. `STRATA_BENCH_POISSON_PEERS=off` skips them
+//!   (for quick runs of our own figures).
 //!
 //! Times are wall-clock medians (`ms_*`); next to them `cpu_ms_*` is the process CPU time of the
 //! same solves (all threads, so up to `cores ×` the wall time), which stays meaningful when other
