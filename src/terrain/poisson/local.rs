@@ -66,7 +66,7 @@ use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
 use super::grid::Split;
 use super::level::Level;
 use super::multigrid::{cycle, gamma, SolveOptions};
-use super::ops::prolong;
+use super::ops::{prolong, smooth_nine_span};
 
 /// Margin of every level's window around the finer window, in that level's samples.
 pub const LOCAL_MARGIN: usize = 8;
@@ -592,76 +592,46 @@ pub fn resolve(
     Some(out)
 }
 
-/// Gauss–Seidel sweeps of `level.h` in `rect` minus `hole`, sequentially, in the colour order
-/// of the global smoother (red-black with `b` on the finest level; four colours with a zero
-/// right-hand side on coarse levels, whose `h` holds the composite correction). Returns the
-/// samples relaxed.
+/// Gauss–Seidel sweeps of `level.h` in `rect` minus `hole`, in the colour order of the global
+/// smoother: red-black with `b` on the finest level (which has no hole); on coarse levels, whose
+/// `h` holds the composite correction, four colours (colour, row parity) with a zero right-hand
+/// side. Returns the samples relaxed.
 fn smooth_band(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: usize) -> u64 {
-    let split = level.split;
-    let st = split.stride;
-    let inside = |i: usize, j: usize| {
-        hole.is_some_and(|h| (h.i0..=h.i1).contains(&i) && (h.j0..=h.j1).contains(&j))
-    };
-    let groups: &[(usize, Option<usize>)] = if level.nine.is_none() {
-        &[(0, None), (1, None)]
-    } else {
-        &[(0, Some(0)), (0, Some(1)), (1, Some(0)), (1, Some(1))]
-    };
-    if level.nine.is_none() && hole.is_none() {
+    if level.nine.is_none() {
+        debug_assert!(hole.is_none(), "the finest level's band has no hole");
         smooth_band_five(level, rect, sweeps);
-        return (sweeps * rect.area()) as u64;
+    } else {
+        smooth_band_nine(level, rect, hole, sweeps);
+    }
+    (sweeps * rect.area()) as u64
+}
+
+/// [`smooth_band`] on a coarse (9-point) level: each row of the band is relaxed in at most two
+/// spans, left and right of the hole, by the vectorised [`smooth_nine_span`].
+fn smooth_band_nine(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: usize) {
+    let split = level.split;
+    let (i_lo, i_hi) = (rect.i0.max(1), rect.i1.min(split.nx - 2));
+    let (j_lo, j_hi) = (rect.j0.max(1), rect.j1.min(split.nz - 2));
+    if i_lo > i_hi || j_lo > j_hi {
+        return;
     }
     for _ in 0..sweeps {
-        for &(colour, parity) in groups {
-            let [h0, h1] = &mut level.h;
-            let (x, y) = if colour == 0 { (h0, &*h1) } else { (h1, &*h0) };
-            let (rhs, free) = (&level.rhs[colour], &level.free[colour]);
-            for j in rect.j0.max(1)..=rect.j1.min(split.nz - 2) {
-                if parity.is_some_and(|p| j % 2 != p) {
-                    continue;
-                }
-                let first = rect.i0 + ((rect.i0 + j + colour) & 1);
-                // The row's special stencils of this colour, sorted by slot (see
-                // [`super::galerkin::NinePoint::special`]), walked with a cursor.
-                let run = level.nine.as_ref().map_or(&[][..], |op| {
-                    let row = op.row(j);
-                    let a = row.partition_point(|s| s.colour < colour);
-                    let b = row.partition_point(|s| s.colour <= colour);
-                    &row[a..b]
-                });
-                let mut cursor = 0;
-                for i in (first..=rect.i1.min(split.nx - 2)).step_by(2) {
-                    let (_, k) = split.locate(i, j);
-                    if free[k] == 0 || inside(i, j) {
-                        continue;
-                    }
-                    let (_, l) = split.locate(i - 1, j);
-                    let (_, r) = split.locate(i + 1, j);
-                    match &level.nine {
-                        None => {
-                            let sum = (y[l] + y[r]) + (y[k - st] + y[k + st]);
-                            x[k] = (sum - rhs[k]) * 0.25;
+        for (colour, parity) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            for j in (j_lo..=j_hi).filter(|j| j % 2 == parity) {
+                match hole.filter(|h| (h.j0..=h.j1).contains(&j)) {
+                    Some(h) => {
+                        if h.i0 > i_lo {
+                            smooth_nine_span(level, colour, j, i_lo, (h.i0 - 1).min(i_hi), false);
                         }
-                        Some(op) => {
-                            while cursor < run.len() && run[cursor].slot < k {
-                                cursor += 1;
-                            }
-                            let s = match run.get(cursor) {
-                                Some(sp) if sp.slot == k => &sp.stencil,
-                                _ => &op.default,
-                            };
-                            let off = ((s[entry(-1, 0)] * y[l] + s[entry(1, 0)] * y[r])
-                                + (s[entry(0, -1)] * y[k - st] + s[entry(0, 1)] * y[k + st]))
-                                + ((s[entry(-1, -1)] * x[l - st] + s[entry(1, -1)] * x[r - st])
-                                    + (s[entry(-1, 1)] * x[l + st] + s[entry(1, 1)] * x[r + st]));
-                            x[k] = -off / s[4];
+                        if h.i1 < i_hi {
+                            smooth_nine_span(level, colour, j, (h.i1 + 1).max(i_lo), i_hi, false);
                         }
                     }
+                    None => smooth_nine_span(level, colour, j, i_lo, i_hi, false),
                 }
             }
         }
     }
-    (sweeps * rect.area()) as u64
 }
 
 /// [`smooth_band`] on the finest level without a hole: red-black half-sweeps over contiguous

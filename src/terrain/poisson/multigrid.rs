@@ -6,8 +6,8 @@ use super::grid::{GridSpec, Split};
 use super::level::Level;
 use super::local::{self, Rect};
 use super::ops::{
-    apply_operator, dot, prolong, residual, residual_restrict, restrict_rhs, smooth,
-    smooth_reverse, update_direction, update_solution,
+    apply_operator, dot, prolong, residual, residual_norm2, residual_restrict, restrict_rhs,
+    smooth, smooth_reverse, update_direction, update_solution,
 };
 use super::problem::Problem;
 use super::PoissonError;
@@ -591,8 +591,7 @@ impl Solver {
         let mut sweeps = 0;
         if after_local && self.levels.len() > 1 {
             loop {
-                let (a, b) = self.levels.split_at_mut(1);
-                let rel = residual_restrict(&a[0], &mut b[0]).sqrt() / bnorm;
+                let rel = residual_norm2(&self.levels[0]).sqrt() / bnorm;
                 history.push(rel);
                 if rel <= o.tolerance
                     || rel > local::LOCAL_FINISH_RANGE * o.tolerance
@@ -600,7 +599,7 @@ impl Solver {
                 {
                     break;
                 }
-                smooth(&mut a[0], 1);
+                smooth(&mut self.levels[0], 1);
                 sweeps += 1;
             }
             if history[history.len() - 1] <= o.tolerance {

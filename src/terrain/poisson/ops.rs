@@ -158,25 +158,44 @@ fn neighbours<'a>(
     up: &'a [f64],
     down: &'a [f64],
 ) -> (usize, usize, Neighbours<'a>) {
-    let st = split.stride;
-    let (k0, k1, s) = interior(split, c, j);
-    let (a, b) = (k0 + s - 1, k0 + s);
-    let n = k1 - k0;
-    let yc = &other[j * st..(j + 1) * st];
+    let (k0, k1, _) = interior(split, c, j);
     (
         k0,
         k1,
-        [
-            &up[a..a + n],
-            &other[(j - 1) * st + k0..(j - 1) * st + k1],
-            &up[b..b + n],
-            &yc[a..a + n],
-            &yc[b..b + n],
-            &down[a..a + n],
-            &other[(j + 1) * st + k0..(j + 1) * st + k1],
-            &down[b..b + n],
-        ],
+        neighbours_of_slots(split, c, j, k0, k1, other, up, down),
     )
+}
+
+/// Neighbour slices of the slots `k0..k1` of colour `c` in row `j` (interior samples only): the
+/// sample of slot `k` is column `2k + s`, `s` the row's shift, so its left and right neighbours
+/// are slots `k + s − 1` and `k + s` of the other colour's row and of this colour's rows `j ∓ 1`.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+fn neighbours_of_slots<'a>(
+    split: &Split,
+    c: usize,
+    j: usize,
+    k0: usize,
+    k1: usize,
+    other: &'a [f64],
+    up: &'a [f64],
+    down: &'a [f64],
+) -> Neighbours<'a> {
+    let st = split.stride;
+    let s = Split::shift(c, j);
+    let (a, b) = (k0 + s - 1, k0 + s);
+    let n = k1 - k0;
+    let yc = &other[j * st..(j + 1) * st];
+    [
+        &up[a..a + n],
+        &other[(j - 1) * st + k0..(j - 1) * st + k1],
+        &up[b..b + n],
+        &yc[a..a + n],
+        &yc[b..b + n],
+        &down[a..a + n],
+        &other[(j + 1) * st + k0..(j + 1) * st + k1],
+        &down[b..b + n],
+    ]
 }
 
 /// `Σ` of the off-centre stencil terms at position `k` of the neighbour slices, in the order the
@@ -236,6 +255,55 @@ pub fn smooth_nine(level: &mut Level, c: usize, p: usize) {
         mine.par_iter_mut().with_min_len(band).for_each(work);
     } else {
         mine.iter_mut().for_each(work);
+    }
+}
+
+/// The Gauss–Seidel update of [`smooth_nine`] restricted to the free samples of colour `c` in
+/// row `j` with columns `i_lo..=i_hi` of a coarse (9-point) level, all interior (`1 ≤ i_lo`,
+/// `i_hi ≤ nx − 2`, `1 ≤ j ≤ nz − 2`); with `rhs` false the right-hand side is taken as zero
+/// (the composite correction of [`super::local`]). The updates of one colour in rows of one
+/// parity are independent, so spans may be relaxed in any order.
+pub fn smooth_nine_span(
+    level: &mut Level,
+    c: usize,
+    j: usize,
+    i_lo: usize,
+    i_hi: usize,
+    rhs: bool,
+) {
+    let split = level.split;
+    let st = split.stride;
+    debug_assert!(i_lo >= 1 && i_hi + 2 <= split.nx && j >= 1 && j + 2 <= split.nz);
+    let Some(op) = level.nine.as_ref() else {
+        return;
+    };
+    let s = Split::shift(c, j);
+    // Slots `k` with `i_lo ≤ 2k + s ≤ i_hi`.
+    let (k0, k1) = ((i_lo + 1 - s) / 2, (i_hi - s) / 2 + 1);
+    if k0 >= k1 {
+        return;
+    }
+    let [h0, h1] = &mut level.h;
+    let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
+    let (above, rest) = x.split_at_mut(j * st);
+    let (row, below) = rest.split_at_mut(st);
+    let nb = neighbours_of_slots(&split, c, j, k0, k1, y, &above[(j - 1) * st..], below);
+    let xr = &mut row[k0..k1];
+    let br = &level.rhs[c][j * st + k0..j * st + k1];
+    let fr = &level.free[c][j * st + k0..j * st + k1];
+    let b = |k: usize| if rhs { br[k] } else { 0.0 };
+    let (sd, inv) = (&op.default, op.inv_default);
+    for k in 0..xr.len() {
+        let v = (b(k) - off_centre(sd, &nb, k)) * inv;
+        xr[k] = if fr[k] != 0 { v } else { xr[k] };
+    }
+    for sp in op.row(j) {
+        if sp.colour == c && (j * st + k0..j * st + k1).contains(&sp.slot) {
+            let k = sp.slot - j * st - k0;
+            if fr[k] != 0 {
+                xr[k] = (b(k) - off_centre(&sp.stencil, &nb, k)) * sp.inv_centre;
+            }
+        }
     }
 }
 
@@ -475,6 +543,33 @@ fn residual_of_row(level: &Level, j: usize, out: &mut [Vec<f64>; 2]) -> f64 {
         ss += sum_squares(&o[k0..k1]);
     }
     ss
+}
+
+/// The squared Euclidean norm of the residual `b − A h` (the value [`residual`] returns, summed
+/// in the same order) without storing the residual.
+pub fn residual_norm2(level: &Level) -> f64 {
+    let split = level.split;
+    let st = split.stride;
+    let band = band_rows(split.nz);
+    let mut partial = vec![0.0f64; split.nz];
+    let work = |b: usize, part: &mut [f64]| {
+        let mut rows = [vec![0.0; st], vec![0.0; st]];
+        for (dj, p) in part.iter_mut().enumerate() {
+            *p = residual_of_row(level, b * band + dj, &mut rows);
+        }
+    };
+    if parallel(&split) {
+        partial
+            .par_chunks_mut(band)
+            .enumerate()
+            .for_each(|(b, p)| work(b, p));
+    } else {
+        partial
+            .chunks_mut(band)
+            .enumerate()
+            .for_each(|(b, p)| work(b, p));
+    }
+    partial.iter().sum()
 }
 
 /// The residual `b − A h` of every sample (zero at fixed ones) into two colour arrays, and its
@@ -834,6 +929,73 @@ mod tests {
         prolong::<true>(&coarse, &mut fine, &mut scratch);
         assert_eq!(fine.value(3, 5), 2.0 * (2.0 * 1.5 + 3.0 * 2.5 + 1.5 * 2.5));
         assert_eq!(fine.value(0, 0), 0.0, "border samples are fixed");
+    }
+
+    /// A 9-point level with special stencils (level 1 below a 33² grid with a few fixed
+    /// samples), with arbitrary heights and right-hand side.
+    fn coarse_level_with_specials() -> Level {
+        let g = GridSpec::new(33, 33, 1.0).expect("grid");
+        let mut free = vec![true; 33 * 33];
+        for (i, j) in [(9, 13), (16, 20), (17, 20), (18, 21), (3, 8), (24, 8)] {
+            free[j * 33 + i] = false;
+        }
+        let mut l = Level::with_mask(g, &free).coarsen().expect("level 1");
+        assert!(!l.nine.as_ref().expect("nine").special.is_empty());
+        for j in 0..l.grid.nz {
+            for i in 0..l.grid.nx {
+                let (c, k) = l.split.locate(i, j);
+                l.h[c][k] = ((i * 7 + j * 3) % 5) as f64;
+                l.rhs[c][k] = ((i * 3 + j * 5) % 7) as f64 - 3.0;
+            }
+        }
+        l
+    }
+
+    #[test]
+    fn span_updates_equal_the_nine_point_half_sweep_and_leave_other_samples() {
+        for (c, p) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            let mut whole = coarse_level_with_specials();
+            let mut spans = coarse_level_with_specials();
+            smooth_nine(&mut whole, c, p);
+            let (nx, nz) = (spans.grid.nx, spans.grid.nz);
+            for j in (1..nz - 1).filter(|j| j % 2 == p) {
+                // Two spans with a gap of columns 5..=7, relaxed right one first.
+                smooth_nine_span(&mut spans, c, j, 8, nx - 2, true);
+                smooth_nine_span(&mut spans, c, j, 1, 4, true);
+            }
+            for j in 0..nz {
+                for i in 0..nx {
+                    let (cc, k) = spans.split.locate(i, j);
+                    let before = coarse_level_with_specials().h[cc][k];
+                    if (5..=7).contains(&i) {
+                        assert_eq!(spans.h[cc][k], before, "({i}, {j}) is in the gap");
+                    } else {
+                        assert_eq!(spans.h[cc][k], whole.h[cc][k], "({i}, {j}), {c} {p}");
+                    }
+                }
+            }
+        }
+        // With a zero right-hand side the update is that of `b = 0`.
+        let mut zero_b = coarse_level_with_specials();
+        let mut no_rhs = coarse_level_with_specials();
+        for b in &mut zero_b.rhs {
+            b.fill(0.0);
+        }
+        smooth_nine(&mut zero_b, 1, 1);
+        let (nx, nz) = (no_rhs.grid.nx, no_rhs.grid.nz);
+        for j in (1..nz - 1).filter(|j| j % 2 == 1) {
+            smooth_nine_span(&mut no_rhs, 1, j, 1, nx - 2, false);
+        }
+        assert_eq!(zero_b.h, no_rhs.h);
+    }
+
+    #[test]
+    fn the_residual_norm_equals_that_of_the_stored_residual() {
+        let l = coarse_level_with_specials();
+        let mut r = [vec![0.0; l.split.len()], vec![0.0; l.split.len()]];
+        let ss = residual(&l, &mut r);
+        assert!(ss > 1.0);
+        assert_eq!(residual_norm2(&l).to_bits(), ss.to_bits());
     }
 
     #[test]
