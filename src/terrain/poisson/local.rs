@@ -67,6 +67,7 @@ use super::grid::Split;
 use super::level::Level;
 use super::multigrid::{cycle, gamma, SolveOptions};
 use super::ops::{prolong, smooth_nine_span};
+use rayon::prelude::*;
 
 /// Margin of every level's window around the finer window, in that level's samples.
 pub const LOCAL_MARGIN: usize = 8;
@@ -210,6 +211,36 @@ struct Win {
     d: Vec<f64>,
     /// The restriction `R_l` of the initial residual.
     r: Vec<f64>,
+    /// True on the finest level, whose operator is the 5-point Laplacian everywhere.
+    five: bool,
+    /// `Pᵀ` from the finer window, precomputed: one entry per free active sample whose
+    /// restriction reads the finer level's active window ([`link`]).
+    restr: Vec<Restriction>,
+    /// `P` from the coarser window, precomputed: one entry per free sample of the window and
+    /// its ring ([`link`]).
+    prol: Vec<Prolongation>,
+}
+
+/// The taps of `Pᵀ` at one coarse window sample: the fine samples of its 3 × 3 neighbourhood
+/// in the finer active window (index in the finer window, interpolation weight), in the order
+/// row by row, zero weights where a sample is outside the finer window or blocked.
+struct Restriction {
+    at: usize,
+    inner: bool,
+    taps: [(usize, f64); 9],
+}
+
+/// The taps of `P` at one fine window sample: its one, two or four coarse samples (index in the
+/// coarser window, interpolation weight), row by row, padded with zero weights.
+struct Prolongation {
+    at: usize,
+    taps: [(usize, f64); 4],
+}
+
+/// `Σ w · v[i]` over the taps, in their order.
+#[inline]
+fn tap_sum<const N: usize>(taps: &[(usize, f64); N], v: &[f64]) -> f64 {
+    taps.iter().fold(0.0, |sum, &(i, w)| sum + w * v[i])
 }
 
 impl Win {
@@ -221,13 +252,20 @@ impl Win {
             act,
             ext,
             free: vec![false; n],
-            stencil: vec![FIVE_POINT; n],
+            stencil: if level.nine.is_some() {
+                vec![FIVE_POINT; n]
+            } else {
+                Vec::new()
+            },
             inner: vec![false; n],
             c: vec![0.0; n],
             rho: vec![0.0; n],
             s: vec![0.0; n],
             d: vec![0.0; n],
             r: vec![0.0; n],
+            five: level.nine.is_none(),
+            restr: Vec::new(),
+            prol: Vec::new(),
         };
         for j in ext.j0..=ext.j1 {
             let row = level.nine.as_ref().map(|op| (op.default, op.row(j)));
@@ -260,18 +298,36 @@ impl Win {
         (j - self.ext.j0) * self.ext.width() + (i - self.ext.i0)
     }
 
-    /// `(A v)(i, j)` with this level's stencil.
+    /// The off-centre terms of `(A v)(i, j)` with this level's stencil (on the finest level the
+    /// four edge neighbours, `(w + e) + (u + d)`, the order of the global kernels).
     #[inline]
-    fn apply(&self, v: &[f64], i: usize, j: usize) -> f64 {
-        let st = &self.stencil[self.idx(i, j)];
+    fn off_centre(&self, v: &[f64], x: usize) -> f64 {
         let w = self.ext.width();
-        let x = self.idx(i, j);
         let (up, down) = (x - w, x + w);
+        if self.five {
+            return (v[x - 1] + v[x + 1]) + (v[up] + v[down]);
+        }
+        let st = &self.stencil[x];
         ((st[entry(-1, 0)] * v[x - 1] + st[entry(1, 0)] * v[x + 1])
             + (st[entry(0, -1)] * v[up] + st[entry(0, 1)] * v[down]))
             + ((st[entry(-1, -1)] * v[up - 1] + st[entry(1, -1)] * v[up + 1])
                 + (st[entry(-1, 1)] * v[down - 1] + st[entry(1, 1)] * v[down + 1]))
-            + st[4] * v[x]
+    }
+
+    /// The centre weight of the stencil at window index `x`.
+    #[inline]
+    fn centre(&self, x: usize) -> f64 {
+        if self.five {
+            -4.0
+        } else {
+            self.stencil[x][4]
+        }
+    }
+
+    /// `(A v)` at window index `x`.
+    #[inline]
+    fn apply(&self, v: &[f64], x: usize) -> f64 {
+        self.off_centre(v, x) + self.centre(x) * v[x]
     }
 
     /// Gauss–Seidel sweeps on `c` in the active window: red-black on the finest level, the four
@@ -291,14 +347,13 @@ impl Win {
                         continue;
                     }
                     let first = a.i0 + ((a.i0 + j + colour) & 1);
-                    for i in (first..=a.i1).step_by(2) {
-                        let x = self.idx(i, j);
-                        if !self.free[x] {
-                            continue;
+                    let mut x = self.idx(first, j);
+                    for _ in (first..=a.i1).step_by(2) {
+                        if self.free[x] {
+                            self.c[x] =
+                                (self.rho[x] - self.off_centre(&self.c, x)) / self.centre(x);
                         }
-                        let centre = self.stencil[x][4];
-                        let off = self.apply(&self.c, i, j) - centre * self.c[x];
-                        self.c[x] = (self.rho[x] - off) / centre;
+                        x += 2;
                     }
                 }
             }
@@ -314,7 +369,7 @@ impl Win {
             for i in a.i0..=a.i1 {
                 let x = self.idx(i, j);
                 let v = if self.free[x] {
-                    self.rho[x] - self.apply(&self.c, i, j)
+                    self.rho[x] - self.apply(&self.c, x)
                 } else {
                     0.0
                 };
@@ -337,7 +392,7 @@ impl Win {
                     continue;
                 }
                 let v = if self.free[x] {
-                    self.r[x] - self.apply(&self.d, i, j)
+                    self.r[x] - self.apply(&self.d, x)
                 } else {
                     0.0
                 };
@@ -349,52 +404,69 @@ impl Win {
     }
 }
 
-/// `Pᵀ` of `field(fine)` (read in the fine active window only, zero elsewhere) at coarse sample
-/// `(ic, jc)`.
-fn restrict_at(fine_level: &Level, fine: &Win, field: &[f64], ic: usize, jc: usize) -> f64 {
-    let a = fine.act;
-    let mut sum = 0.0;
-    for dz in -1..=1isize {
-        for dx in -1..=1isize {
-            let (fi, fj) = ((2 * ic) as isize + dx, (2 * jc) as isize + dz);
-            if fi < a.i0 as isize || fi > a.i1 as isize || fj < a.j0 as isize || fj > a.j1 as isize
-            {
-                continue;
-            }
-            let (fi, fj) = (fi as usize, fj as usize);
-            let v = field[fine.idx(fi, fj)];
-            if v != 0.0 {
-                sum += interpolation_weight(fine_level, fi, fj, ic, jc) * v;
-            }
-        }
-    }
-    sum
-}
-
-/// `P` of the coarse correction at fine sample `(i, j)`.
-fn prolong_at(fine_level: &Level, coarse: &Win, i: usize, j: usize) -> f64 {
-    let mut sum = 0.0;
-    for cj in j / 2..=j.div_ceil(2) {
-        for ci in i / 2..=i.div_ceil(2) {
-            let v = coarse.c[coarse.idx(ci, cj)];
-            if v != 0.0 {
-                sum += interpolation_weight(fine_level, i, j, ci, cj) * v;
-            }
-        }
-    }
-    sum
-}
-
-/// Adds `P` of `coarse.c` to `fine.c` at the free samples of the fine window and ring.
-fn prolong_window(fine_level: &Level, fine: &mut Win, coarse: &Win) {
+/// Precomputes the transfers between the windows of levels `l` (`fine`, on `fine_level`) and
+/// `l + 1` (`coarse`): `P` of the coarse window at the free samples of the fine window and ring
+/// (which the coarse active window covers), and its transpose `Pᵀ` of the fine active window at
+/// the coarse samples it reaches. (Fixed fine samples are left out of `Pᵀ`: the fields restricted
+/// are residuals, zero there.)
+fn link(fine_level: &Level, fine: &mut Win, coarse: &mut Win) {
     let e = fine.ext;
     for j in e.j0..=e.j1 {
         for i in e.i0..=e.i1 {
             let x = fine.idx(i, j);
-            if fine.free[x] {
-                fine.c[x] += prolong_at(fine_level, coarse, i, j);
+            if !fine.free[x] {
+                continue;
             }
+            let mut taps = [(0, 0.0); 4];
+            let mut t = 0;
+            for cj in j / 2..=j.div_ceil(2) {
+                for ci in i / 2..=i.div_ceil(2) {
+                    taps[t] = (
+                        coarse.idx(ci, cj),
+                        interpolation_weight(fine_level, i, j, ci, cj),
+                    );
+                    t += 1;
+                }
+            }
+            fine.prol.push(Prolongation { at: x, taps });
         }
+    }
+    // The transpose, scattered from the taps of the fine active samples: the tap of fine sample
+    // `(2 ic + dx, 2 jc + dz)` is entry `(dz + 1) · 3 + dx + 1` of coarse sample `(ic, jc)`.
+    let a = fine.act;
+    let mut entry_of = vec![usize::MAX; coarse.c.len()];
+    for p in &fine.prol {
+        let (i, j) = (e.i0 + p.at % e.width(), e.j0 + p.at / e.width());
+        if i < a.i0 || i > a.i1 || j < a.j0 || j > a.j1 {
+            continue;
+        }
+        for &(cx, w) in &p.taps {
+            if w == 0.0 {
+                continue;
+            }
+            let cw = coarse.ext.width();
+            let (ic, jc) = (coarse.ext.i0 + cx % cw, coarse.ext.j0 + cx / cw);
+            if !coarse.free[cx] {
+                continue;
+            }
+            if entry_of[cx] == usize::MAX {
+                entry_of[cx] = coarse.restr.len();
+                coarse.restr.push(Restriction {
+                    at: cx,
+                    inner: coarse.inner[cx],
+                    taps: [(0, 0.0); 9],
+                });
+            }
+            let t = (j + 1 - 2 * jc) * 3 + (i + 1 - 2 * ic);
+            coarse.restr[entry_of[cx]].taps[t] = (p.at, w);
+        }
+    }
+}
+
+/// Adds `P` of `coarse.c` to `fine.c` at the free samples of the fine window and ring.
+fn prolong_window(fine: &mut Win, coarse: &Win) {
+    for p in &fine.prol {
+        fine.c[p.at] += tap_sum(&p.taps, &coarse.c);
     }
 }
 
@@ -442,6 +514,10 @@ pub fn resolve(
     let mut wins: Vec<Win> = (0..=k)
         .map(|l| Win::new(&levels[l], acts[l], (l > 0).then(|| acts[l - 1])))
         .collect();
+    for l in 0..k {
+        let (a, b) = wins.split_at_mut(l + 1);
+        link(&levels[l], &mut a[l], &mut b[0]);
+    }
     {
         let (l0, w0) = (&levels[0], &mut wins[0]);
         for j in w0.ext.j0..=w0.ext.j1 {
@@ -466,14 +542,8 @@ pub fn resolve(
             for l in 1..=k {
                 let (a, b) = wins.split_at_mut(l);
                 let (fine, coarse) = (&a[l - 1], &mut b[0]);
-                let act = coarse.act;
-                for j in act.j0..=act.j1 {
-                    for i in act.i0..=act.i1 {
-                        let x = coarse.idx(i, j);
-                        if coarse.free[x] {
-                            coarse.r[x] = restrict_at(&levels[l - 1], fine, &fine.r, i, j);
-                        }
-                    }
+                for t in &coarse.restr {
+                    coarse.r[t.at] = tap_sum(&t.taps, &fine.r);
                 }
             }
         }
@@ -489,18 +559,10 @@ pub fn resolve(
         for l in 1..=k {
             let (a, b) = wins.split_at_mut(l);
             let (fine, coarse) = (&a[l - 1], &mut b[0]);
-            let act = coarse.act;
-            for j in act.j0..=act.j1 {
-                for i in act.i0..=act.i1 {
-                    let x = coarse.idx(i, j);
-                    if coarse.inner[x] {
-                        coarse.rho[x] = if coarse.free[x] {
-                            restrict_at(&levels[l - 1], fine, &fine.s, i, j)
-                        } else {
-                            0.0
-                        };
-                    }
-                }
+            // Every free inner sample has taps (its centre is in the finer window); the fixed
+            // ones keep `rho = 0`.
+            for t in coarse.restr.iter().filter(|t| t.inner) {
+                coarse.rho[t.at] = tap_sum(&t.taps, &fine.s);
             }
             if l < k {
                 coarse.c.fill(0.0);
@@ -538,7 +600,7 @@ pub fn resolve(
         for l in (0..k).rev() {
             let (a, b) = wins.split_at_mut(l + 1);
             let (fine, coarse) = (&mut a[l], &b[0]);
-            prolong_window(&levels[l], fine, coarse);
+            prolong_window(fine, coarse);
             if l > 0 {
                 out.relaxed += fine.smooth(o.post_smooth, false);
                 for x in 0..fine.c.len() {
@@ -634,6 +696,9 @@ fn smooth_band_nine(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: u
     }
 }
 
+/// Rows of the finest level's band per parallel task.
+const BAND_ROWS_PER_TASK: usize = 32;
+
 /// [`smooth_band`] on the finest level without a hole: red-black half-sweeps over contiguous
 /// slot ranges of each colour row (the same expression as the global smoother, so it
 /// vectorises; within a colour the updates are independent, so the order does not matter).
@@ -650,15 +715,17 @@ fn smooth_band_five(level: &mut Level, rect: Rect, sweeps: usize) {
             let [h0, h1] = &mut level.h;
             let (x, y) = if colour == 0 { (h0, &*h1) } else { (h1, &*h0) };
             let (rhs, free) = (&level.rhs[colour], &level.free[colour]);
-            for j in j_lo..=j_hi {
+            let rows = &mut x[j_lo * st..(j_hi + 1) * st];
+            let row = |(dj, xrow): (usize, &mut [f64])| {
+                let j = j_lo + dj;
                 let s = Split::shift(colour, j);
                 // Slots `k` with `i_lo ≤ 2k + s ≤ i_hi`.
                 let (k0, k1) = ((i_lo + 1 - s) / 2, (i_hi - s) / 2);
                 if k0 > k1 {
-                    continue;
+                    return;
                 }
                 let (a, b) = (j * st + k0, j * st + k1 + 1);
-                let xs = &mut x[a..b];
+                let xs = &mut xrow[k0..=k1];
                 let (l, r) = (&y[a + s - 1..b + s - 1], &y[a + s..b + s]);
                 let (u, d) = (&y[a - st..b - st], &y[a + st..b + st]);
                 let (bs, fs) = (&rhs[a..b], &free[a..b]);
@@ -666,7 +733,12 @@ fn smooth_band_five(level: &mut Level, rect: Rect, sweeps: usize) {
                     let v = ((l[k] + r[k]) + (u[k] + d[k]) - bs[k]) * 0.25;
                     xs[k] = if fs[k] != 0 { v } else { xs[k] };
                 }
-            }
+            };
+            // The rows of one colour are independent (each reads only the other colour).
+            rows.par_chunks_mut(st)
+                .enumerate()
+                .with_min_len(BAND_ROWS_PER_TASK)
+                .for_each(row);
         }
     }
 }
