@@ -552,7 +552,7 @@ fn true_relative_residual(p: &Owned, h: &[f64]) -> f64 {
 fn a_warm_re_solve_after_a_local_edit_works_in_a_window() {
     // 513² terrain with a point, a curve and a disc; a converged solve, then a brush edit of
     // 32 samples. At a tolerance of 1e-5 the local cycles alone reach it (the window estimate
-    // and the write-back leave about 1.5e-6 of global residual, measured), so the re-solve runs
+    // and the write-back leave under 1e-6 of global residual, measured), so the re-solve runs
     // no global cycle.
     let mut p = terrain(513);
     add_constraints(&mut p);
@@ -575,10 +575,12 @@ fn a_warm_re_solve_after_a_local_edit_works_in_a_window() {
         assert!(warm.converged, "{warm:?}");
         assert!(warm.local_cycles >= 1, "no local cycles: {warm:?}");
         assert_eq!(warm.cycles, 0, "global cycles were needed: {warm:?}");
-        // The work stayed in windows (and the band around the finest one): below one sweep of
-        // the grid and a tenth of the cold solve's, which relaxed every sample many times.
+        // The work stayed in windows and the bands around them: below one and a half sweeps of
+        // the grid (the finest band, 128 samples around the brush's window, covers about a third
+        // of a 513² grid and gets two sweeps) and a tenth of the cold solve's, which relaxed every
+        // sample many times.
         assert!(
-            warm.samples_relaxed < n && warm.samples_relaxed < cold.samples_relaxed / 10,
+            warm.samples_relaxed < 3 * n / 2 && warm.samples_relaxed < cold.samples_relaxed / 10,
             "warm relaxed {} samples ({} per grid sample)",
             warm.samples_relaxed,
             warm.samples_relaxed as f64 / n as f64

@@ -52,7 +52,9 @@ pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 /// 3: a warm Poisson re-solve between a region's operations may end with finishing sweeps
 /// instead of a global cycle, and volume regions' harmonic fill runs on a Galerkin hierarchy
 /// (the volume overrides tiles mark can move).
-pub const TILE_CODE_VERSION: u32 = 3;
+/// 4: the local Poisson re-solve smooths a wider band after its write-back and rounds its window
+/// sweeps differently (warm re-solves between a region's operations change in the last bits).
+pub const TILE_CODE_VERSION: u32 = 4;
 
 /// The vertex spacing of a LOD, metres.
 fn spacing_m(world: &WorldParams, lod: u32) -> f64 {

@@ -43,11 +43,16 @@
 //! the write-back smooths a band around each level's window: [`LOCAL_BAND`] samples around the
 //! finest window (two red-black sweeps with `b`), half that around coarser windows (two four-colour
 //! sweeps of the correction outside the window, where its right-hand side is zero). Measured on a
-//! 32-sample brush (`strata bench poisson`), the global relative residual after the write-back,
-//! the previous solve's residual (5–8e-7) included, is 1.5e-6 at 513², 6.9e-7 at 1025² and 8.3e-7
-//! at 2049². (Wider bands, larger margins, more sweeps, FAC injection of the fine correction
-//! into the coarse one under the window, and full-level smoothing of the coarse corrections each
-//! moved it by less than 25 % in our trials.)
+//! 32-sample brush at five positions (`strata bench poisson`), the global relative residual after
+//! the write-back, the previous solve's residual (5–8e-7) included, is 5.5–7.0e-7 at 513² and
+//! 6.4–6.6e-7 at 1025², under the tolerance, so no finishing sweep runs. With a band of 96 (48 on
+//! coarse levels) it was up to 1.5e-6 at 513², and two of the five positions needed a finishing
+//! sweep of the whole grid, which costs more than the wider band. (Larger margins, FAC injection
+//! of the fine correction into the coarse one under the window, and full-level smoothing of the
+//! coarse corrections each moved it by less than 25 % in our trials.)
+//!
+//! The windows' transfers are precomputed once per re-solve ([`link`]: `P` at every free window
+//! sample and its transpose), and their buffers are kept between re-solves ([`LocalScratch`]).
 //!
 //! Local cycles run until an estimate of the global residual, `‖r_window‖² + Σ_l ‖ρ_l‖² / 4^l`
 //! (`ρ_l` the composite residual of level `l` outside the finer window; a coarse residual value
@@ -57,12 +62,13 @@
 //! true global relative residual `‖b − A h‖ / ‖b‖`; if it is above the tolerance but within
 //! [`LOCAL_FINISH_RANGE`] times it, up to [`LOCAL_FINISH_SWEEPS`] red-black sweeps of the whole
 //! finest level follow (the interpolation residual is high-frequency across the coarse grid lines,
-//! which a sweep damps: measured at 513², one sweep takes 1.5e-6 to 6.7e-7, for the cost of a
+//! which a sweep damps: at 513² with a 96-sample band, one sweep took 1.5e-6 to 6.7e-7, for the cost of a
 //! fraction of a global cycle), and if it is still above, global cycles continue from there. The
-//! window kernels are sequential and the full levels use the deterministic kernels, so results do
-//! not depend on the thread count.
+//! window kernels are sequential, the band sweeps update samples of one colour (and row parity)
+//! that do not depend on each other, and the full levels use the deterministic kernels, so results
+//! do not depend on the thread count.
 
-use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
+use super::galerkin::{entry, interpolation_weight};
 use super::grid::Split;
 use super::level::Level;
 use super::multigrid::{cycle, gamma, SolveOptions};
@@ -74,7 +80,7 @@ pub const LOCAL_MARGIN: usize = 8;
 /// Width of the band around the finest window smoothed after the write-back, in finest samples:
 /// bilinear interpolation of the far correction leaves a residual proportional to its second
 /// derivatives, largest next to the window.
-pub const LOCAL_BAND: usize = 96;
+pub const LOCAL_BAND: usize = 128;
 /// Red-black sweeps over the band.
 pub const LOCAL_BAND_SWEEPS: usize = 2;
 /// The largest share of the finest grid the finest window may cover for a local re-solve.
@@ -183,6 +189,43 @@ impl Rect {
     }
 }
 
+/// Buffers of the windows, kept by the solver between local re-solves so that a re-solve
+/// reuses them instead of allocating.
+#[derive(Default)]
+pub struct LocalScratch {
+    wins: Vec<Win>,
+}
+
+impl std::fmt::Debug for LocalScratch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LocalScratch")
+            .field("windows", &self.wins.len())
+            .field("bytes", &self.bytes())
+            .finish()
+    }
+}
+
+impl LocalScratch {
+    /// Bytes held.
+    pub fn bytes(&self) -> usize {
+        self.wins
+            .iter()
+            .map(|w| {
+                8 * (w.c.capacity()
+                    + w.rho.capacity()
+                    + w.s.capacity()
+                    + w.d.capacity()
+                    + w.r.capacity())
+                    + w.free.capacity()
+                    + w.inner.capacity()
+                    + std::mem::size_of::<[f64; 9]>() * w.stencil.capacity()
+                    + std::mem::size_of::<Restriction>() * w.restr.capacity()
+                    + std::mem::size_of::<Prolongation>() * w.prol.capacity()
+            })
+            .sum()
+    }
+}
+
 /// What a local re-solve did.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LocalOutcome {
@@ -244,53 +287,71 @@ fn tap_sum<const N: usize>(taps: &[(usize, f64); N], v: &[f64]) -> f64 {
 }
 
 impl Win {
-    fn new(level: &Level, act: Rect, finer: Option<Rect>) -> Self {
+    /// A window of no samples, to be [`Win::reset`].
+    fn empty() -> Self {
+        Self {
+            act: Rect::point(0, 0),
+            ext: Rect::point(0, 0),
+            free: Vec::new(),
+            stencil: Vec::new(),
+            inner: Vec::new(),
+            c: Vec::new(),
+            rho: Vec::new(),
+            s: Vec::new(),
+            d: Vec::new(),
+            r: Vec::new(),
+            five: true,
+            restr: Vec::new(),
+            prol: Vec::new(),
+        }
+    }
+
+    /// Makes this the window `act` of `level` (`finer`: the finer level's active window), reusing
+    /// the buffers: zero fields, the mask and the stencils read from the level, no transfers.
+    fn reset(&mut self, level: &Level, act: Rect, finer: Option<Rect>) {
         let g = level.grid;
         let ext = act.dilate(1, g.nx, g.nz);
         let n = ext.area();
-        let mut w = Self {
-            act,
-            ext,
-            free: vec![false; n],
-            stencil: if level.nine.is_some() {
-                vec![FIVE_POINT; n]
-            } else {
-                Vec::new()
-            },
-            inner: vec![false; n],
-            c: vec![0.0; n],
-            rho: vec![0.0; n],
-            s: vec![0.0; n],
-            d: vec![0.0; n],
-            r: vec![0.0; n],
-            five: level.nine.is_none(),
-            restr: Vec::new(),
-            prol: Vec::new(),
-        };
+        (self.act, self.ext, self.five) = (act, ext, level.nine.is_none());
+        for v in [
+            &mut self.c,
+            &mut self.rho,
+            &mut self.s,
+            &mut self.d,
+            &mut self.r,
+        ] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        for v in [&mut self.free, &mut self.inner] {
+            v.clear();
+            v.resize(n, false);
+        }
+        self.stencil.clear();
+        if let Some(op) = &level.nine {
+            self.stencil.resize(n, op.default);
+        }
+        self.restr.clear();
+        self.prol.clear();
         for j in ext.j0..=ext.j1 {
-            let row = level.nine.as_ref().map(|op| (op.default, op.row(j)));
             for i in ext.i0..=ext.i1 {
-                let x = w.idx(i, j);
+                let x = self.idx(i, j);
                 let (c, k) = level.split.locate(i, j);
-                w.free[x] = level.free[c][k] != 0;
-                if let Some((default, _)) = row {
-                    w.stencil[x] = default;
-                }
-                w.inner[x] = finer
+                self.free[x] = level.free[c][k] != 0;
+                self.inner[x] = finer
                     .is_some_and(|f| 2 * i > f.i0 && 2 * i < f.i1 && 2 * j > f.j0 && 2 * j < f.j1);
             }
-            if let Some((_, specials)) = row {
-                for sp in specials {
+            if let Some(op) = &level.nine {
+                for sp in op.row(j) {
                     let i = 2 * (sp.slot - j * level.split.stride)
                         + super::grid::Split::shift(sp.colour, j);
                     if (ext.i0..=ext.i1).contains(&i) {
-                        let x = w.idx(i, j);
-                        w.stencil[x] = sp.stencil;
+                        let x = self.idx(i, j);
+                        self.stencil[x] = sp.stencil;
                     }
                 }
             }
         }
-        w
     }
 
     #[inline]
@@ -410,55 +471,54 @@ impl Win {
 /// the coarse samples it reaches. (Fixed fine samples are left out of `Pᵀ`: the fields restricted
 /// are residuals, zero there.)
 fn link(fine_level: &Level, fine: &mut Win, coarse: &mut Win) {
-    let e = fine.ext;
+    let (e, a) = (fine.ext, fine.act);
+    fine.prol.reserve(e.area());
+    // `entry_of[x]`: the index in `coarse.restr` of coarse window sample `x`, if any.
+    let mut entry_of = vec![usize::MAX; coarse.c.len()];
     for j in e.j0..=e.j1 {
         for i in e.i0..=e.i1 {
             let x = fine.idx(i, j);
             if !fine.free[x] {
                 continue;
             }
-            let mut taps = [(0, 0.0); 4];
-            let mut t = 0;
-            for cj in j / 2..=j.div_ceil(2) {
-                for ci in i / 2..=i.div_ceil(2) {
-                    taps[t] = (
-                        coarse.idx(ci, cj),
-                        interpolation_weight(fine_level, i, j, ci, cj),
-                    );
-                    t += 1;
-                }
-            }
+            // The coarse samples `(i / 2 + di, j / 2 + dj)` with their bilinear weights; only an
+            // odd-odd sample can have a blocked corner.
+            let (ci, cj) = (i / 2, j / 2);
+            let w = |di: usize, dj: usize| interpolation_weight(fine_level, i, j, ci + di, cj + dj);
+            let near: [(usize, usize, f64); 4] = match (i % 2, j % 2) {
+                (0, 0) => [(0, 0, 1.0), (0, 0, 0.0), (0, 0, 0.0), (0, 0, 0.0)],
+                (1, 0) => [(0, 0, 0.5), (1, 0, 0.5), (0, 0, 0.0), (0, 0, 0.0)],
+                (0, _) => [(0, 0, 0.5), (0, 1, 0.5), (0, 0, 0.0), (0, 0, 0.0)],
+                _ => [
+                    (0, 0, w(0, 0)),
+                    (1, 0, w(1, 0)),
+                    (0, 1, w(0, 1)),
+                    (1, 1, w(1, 1)),
+                ],
+            };
+            let taps = near.map(|(di, dj, w)| (coarse.idx(ci + di, cj + dj), w));
             fine.prol.push(Prolongation { at: x, taps });
-        }
-    }
-    // The transpose, scattered from the taps of the fine active samples: the tap of fine sample
-    // `(2 ic + dx, 2 jc + dz)` is entry `(dz + 1) · 3 + dx + 1` of coarse sample `(ic, jc)`.
-    let a = fine.act;
-    let mut entry_of = vec![usize::MAX; coarse.c.len()];
-    for p in &fine.prol {
-        let (i, j) = (e.i0 + p.at % e.width(), e.j0 + p.at / e.width());
-        if i < a.i0 || i > a.i1 || j < a.j0 || j > a.j1 {
-            continue;
-        }
-        for &(cx, w) in &p.taps {
-            if w == 0.0 {
+            if i < a.i0 || i > a.i1 || j < a.j0 || j > a.j1 {
                 continue;
             }
-            let cw = coarse.ext.width();
-            let (ic, jc) = (coarse.ext.i0 + cx % cw, coarse.ext.j0 + cx / cw);
-            if !coarse.free[cx] {
-                continue;
+            // The transpose: the tap of fine sample `(2 ic + dx, 2 jc + dz)` is entry
+            // `(dz + 1) · 3 + dx + 1` of coarse sample `(ic, jc)`.
+            for (&(di, dj, w), &(cx, _)) in near.iter().zip(&taps) {
+                if w == 0.0 || !coarse.free[cx] {
+                    continue;
+                }
+                if entry_of[cx] == usize::MAX {
+                    entry_of[cx] = coarse.restr.len();
+                    coarse.restr.push(Restriction {
+                        at: cx,
+                        inner: coarse.inner[cx],
+                        taps: [(0, 0.0); 9],
+                    });
+                }
+                let (ic, jc) = (ci + di, cj + dj);
+                let t = (j + 1 - 2 * jc) * 3 + (i + 1 - 2 * ic);
+                coarse.restr[entry_of[cx]].taps[t] = (x, w);
             }
-            if entry_of[cx] == usize::MAX {
-                entry_of[cx] = coarse.restr.len();
-                coarse.restr.push(Restriction {
-                    at: cx,
-                    inner: coarse.inner[cx],
-                    taps: [(0, 0.0); 9],
-                });
-            }
-            let t = (j + 1 - 2 * jc) * 3 + (i + 1 - 2 * ic);
-            coarse.restr[entry_of[cx]].taps[t] = (p.at, w);
         }
     }
 }
@@ -501,19 +561,25 @@ fn windows(levels: &[Level], change: Rect) -> Option<Vec<Rect>> {
 /// Runs local cycles for a change of the finest level inside `change`, then writes the composite
 /// correction to every finest sample. `levels[0]` holds the previous solution and the new
 /// right-hand side and mask. Returns `None` (nothing done) when the change is too large for a
-/// local re-solve. `tolerance_abs` is the tolerance times `‖b‖`.
+/// local re-solve. `tolerance_abs` is the tolerance times `‖b‖`; `cache` holds the window
+/// buffers between calls.
 pub fn resolve(
     levels: &mut [Level],
     change: Rect,
     o: &SolveOptions,
     scratch: &mut Vec<f64>,
+    cache: &mut LocalScratch,
     tolerance_abs: f64,
 ) -> Option<LocalOutcome> {
     let acts = windows(levels, change)?;
     let k = acts.len() - 1;
-    let mut wins: Vec<Win> = (0..=k)
-        .map(|l| Win::new(&levels[l], acts[l], (l > 0).then(|| acts[l - 1])))
-        .collect();
+    if cache.wins.len() <= k {
+        cache.wins.resize_with(k + 1, Win::empty);
+    }
+    let wins = &mut cache.wins[..=k];
+    for (l, w) in wins.iter_mut().enumerate() {
+        w.reset(&levels[l], acts[l], (l > 0).then(|| acts[l - 1]));
+    }
     for l in 0..k {
         let (a, b) = wins.split_at_mut(l + 1);
         link(&levels[l], &mut a[l], &mut b[0]);

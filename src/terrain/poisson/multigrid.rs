@@ -152,6 +152,8 @@ pub struct Solver {
     levels: Vec<Level>,
     krylov: Option<Krylov>,
     scratch: Vec<f64>,
+    /// The window buffers of [`local::resolve`].
+    windows: local::LocalScratch,
     /// Each finest row's contribution to `‖b‖²` for the loaded problem (`nz` values once a
     /// problem is loaded), so that [`Self::resolve_in`] reloads only the damaged rows.
     rhs_rows: Vec<f64>,
@@ -202,6 +204,7 @@ impl Solver {
             levels,
             krylov: None,
             scratch: Vec::new(),
+            windows: local::LocalScratch::default(),
             rhs_rows: Vec::new(),
             has_solution: false,
             last_converged: false,
@@ -224,11 +227,12 @@ impl Solver {
         &self.options
     }
 
-    /// Bytes held by the hierarchy (unknowns, right-hand sides and masks of every level, and the
-    /// prolongation scratch).
+    /// Bytes held by the hierarchy (unknowns, right-hand sides and masks of every level, the
+    /// prolongation scratch and the windows of the last local re-solve).
     pub fn hierarchy_bytes(&self) -> usize {
         self.levels.iter().map(Level::bytes).sum::<usize>()
             + self.scratch.capacity() * std::mem::size_of::<f64>()
+            + self.windows.bytes()
             + self.krylov.as_ref().map_or(0, |k| {
                 k.zl.bytes() + 4 * k.zl.split.len() * std::mem::size_of::<f64>()
             })
@@ -503,6 +507,7 @@ impl Solver {
                 rect,
                 &o,
                 &mut self.scratch,
+                &mut self.windows,
                 o.tolerance * bnorm,
             );
             if let Some(out) = res {
