@@ -6,7 +6,8 @@
 // over up to four channels packed in a vec4 per sample, with homogeneous Neumann borders (a
 // missing neighbour is the sample itself), constrained samples (`fixed != 0`) kept, and either
 // c ≡ 1 (`mode == 0`, Laplace) or Perona–Malik c = 1 / (1 + q²), q = |N_a − N_b|² · (1/4k)
-// (`mode == 1`, the three channels xyz). The operations are the CPU's, in the CPU's order.
+// (`mode == 1`, the three channels xyz, the update `fma(acc, 1/6, v)`). The operations are the
+// CPU's, in the CPU's order.
 //
 // `Params` is `gpu::volume::GpuDiffuseParams` on the CPU, field for field.
 
@@ -27,9 +28,10 @@ struct Params {
 @group(0) @binding(2) var<storage, read> fixed: array<u32>;
 @group(0) @binding(3) var<storage, read_write> dst: array<vec4<f32>>;
 
+// As the CPU's `coefficient`: |d|² and 1 + q² each with fused multiply-adds.
 fn coef(d: vec4<f32>) -> f32 {
-    let q = (d.x * d.x + d.y * d.y + d.z * d.z) * p.qk;
-    return 1.0 / (1.0 + q * q);
+    let q = fma(d.z, d.z, fma(d.y, d.y, d.x * d.x)) * p.qk;
+    return 1.0 / fma(q, q, 1.0);
 }
 
 @compute @workgroup_size(64)
@@ -60,7 +62,6 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     if (y > 0u) { d = src[i - p.nx]; }
     if (z + 1u < p.nz) { no = src[i + sl]; }
     if (z > 0u) { so = src[i - sl]; }
-    var acc: vec4<f32>;
     if (p.mode == 1u) {
         let ce = coef(e - v);
         let cw = coef(w - v);
@@ -68,9 +69,10 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         let cd = coef(d - v);
         let cn = coef(no - v);
         let cs = coef(so - v);
-        acc = ce * (e - v) + cw * (w - v) + cu * (u - v) + cd * (d - v) + cn * (no - v) + cs * (so - v);
+        let acc = ce * (e - v) + cw * (w - v) + cu * (u - v) + cd * (d - v) + cn * (no - v) + cs * (so - v);
+        dst[i] = fma(acc, vec4<f32>(1.0 / 6.0), v);
     } else {
-        acc = (e - v) + (w - v) + (u - v) + (d - v) + (no - v) + (so - v);
+        let acc = (e - v) + (w - v) + (u - v) + (d - v) + (no - v) + (so - v);
+        dst[i] = v + acc * (1.0 / 6.0);
     }
-    dst[i] = v + acc * (1.0 / 6.0);
 }

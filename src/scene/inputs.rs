@@ -53,7 +53,8 @@ pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 /// instead of a global cycle, and volume regions' harmonic fill runs on a Galerkin hierarchy
 /// (the volume overrides tiles mark can move).
 /// 4: the local Poisson re-solve smooths a wider band after its write-back and rounds its window
-/// sweeps differently (warm re-solves between a region's operations change in the last bits).
+/// sweeps differently (warm re-solves between a region's operations change in the last bits), and
+/// the Perona–Malik sweep of volume regions uses fused multiply-adds.
 pub const TILE_CODE_VERSION: u32 = 4;
 
 /// The vertex spacing of a LOD, metres.

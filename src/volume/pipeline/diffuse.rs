@@ -46,12 +46,17 @@
 //! (one exact IEEE division per edge, no reciprocal approximation, so results agree across CPU
 //! vendors) and added to one endpoint and subtracted from the other; the x fluxes of a row, the
 //! y fluxes of the previous row and the z fluxes of the previous slice live in small scratch rows,
-//! and the three channels are fused in one loop that vectorises (x86-64-v3: 8 lanes). Since
-//! `c·(w − v) = −(c·(v − w))` exactly and the terms are summed in the formula's order, the sweep
-//! is bit-identical to evaluating the six coefficients of the formula per sample, so
-//! `shaders/volume_diffuse.wgsl` (the GPU twin of [`sweep`], which does exactly that) and the
-//! bricked sweeps ([`super::brick`]) compute the same numbers. Loops keep fixed samples by a
-//! branch-free blend.
+//! and the three channels are fused in one loop that vectorises. `|d|²`, `1 + q²` and the update
+//! `v + ⅙·acc` are fused multiply-adds. Since `c·(w − v) = −(c·(v − w))` exactly and the terms
+//! are summed in the formula's order, the sweep is bit-identical to evaluating the six
+//! coefficients of the formula per sample, so `shaders/volume_diffuse.wgsl` (the GPU twin of
+//! [`sweep`], which does exactly that, within the GPU's division accuracy) and the bricked sweeps
+//! ([`super::brick`]) compute the same numbers. Loops keep fixed samples by a branch-free blend.
+//!
+//! The sweep is compute-bound (three exact divisions per sample). The build targets x86-64-v3
+//! (8 lanes); on a CPU with AVX-512 the slab kernel runs a copy compiled for 16 lanes
+//! (`pm_slab_wide`, chosen at run time). Both perform the same IEEE operations on every sample,
+//! so their results are bit-identical (tested); only the speed differs.
 
 use super::grid::par_slabs_multi;
 pub use super::multigrid::harmonic_fill;
@@ -318,10 +323,19 @@ pub(crate) fn laplace_sweep(
     });
 }
 
+/// The Perona–Malik coefficient `g(|d|²/4) = 1 / (1 + q²)`, `q = |d|² · qk` (`qk = 1/(4k)`) of
+/// an edge whose endpoints differ by `d`, with fused multiply-adds: `|d|² = d₂² + (d₁² + d₀²)`
+/// and `1 + q²` each rounded once. `d` and `−d` give the same coefficient, bit for bit.
+#[inline(always)]
+fn coefficient(d0: f32, d1: f32, d2: f32, qk: f32) -> f32 {
+    let q = d2.mul_add(d2, d1.mul_add(d1, d0 * d0)) * qk;
+    1.0 / q.mul_add(q, 1.0)
+}
+
 /// The Perona–Malik fluxes `g(|b − a|²/4)·(b_ch − a_ch)` of the edges between the rows `a` and
 /// `b` (three channels each, `qk = 1/(4k)`) into `o0`, `o1`, `o2`. The outputs are separate
 /// parameters so that they are known not to alias the inputs and the loop vectorises.
-#[inline(never)]
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn edge_fluxes(
     a: [&[f32]; 3],
@@ -339,8 +353,7 @@ fn edge_fluxes(
         let d0 = b0[x] - a0[x];
         let d1 = b1[x] - a1[x];
         let d2 = b2[x] - a2[x];
-        let q = (d0 * d0 + d1 * d1 + d2 * d2) * qk;
-        let c = 1.0 / (1.0 + q * q);
+        let c = coefficient(d0, d1, d2, qk);
         o0[x] = c * d0;
         o1[x] = c * d1;
         o2[x] = c * d2;
@@ -357,7 +370,7 @@ fn edge_fluxes(
 /// which is the per-direction formula of the module docs term for term and in its order
 /// (`c_w (w − v) = −c_w (v − w)` exactly). Every input and output is a separate parameter so
 /// that the loop vectorises without alias checks.
-#[inline(never)]
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn pm_row(
     c0: &[f32],
@@ -396,20 +409,18 @@ fn pm_row(
     for i in 0..m {
         let (v0, v1, v2) = (c0[i], c1[i], c2[i]);
         let (a0, a1, a2) = (u0[i] - v0, u1[i] - v1, u2[i] - v2);
-        let qa = (a0 * a0 + a1 * a1 + a2 * a2) * qk;
-        let ca = 1.0 / (1.0 + qa * qa);
+        let ca = coefficient(a0, a1, a2, qk);
         let (b0, b1, b2) = (n0[i] - v0, n1[i] - v1, n2[i] - v2);
-        let qb = (b0 * b0 + b1 * b1 + b2 * b2) * qk;
-        let cb = 1.0 / (1.0 + qb * qb);
+        let cb = coefficient(b0, b1, b2, qk);
         let (fu0, fu1, fu2) = (ca * a0, ca * a1, ca * a2);
         let (fn0, fn1, fn2) = (cb * b0, cb * b1, cb * b2);
         let acc0 = e0[i] - w0[i] + fu0 - d0[i] + fn0 - s0[i];
         let acc1 = e1[i] - w1[i] + fu1 - d1[i] + fn1 - s1[i];
         let acc2 = e2[i] - w2[i] + fu2 - d2[i] + fn2 - s2[i];
         let f = fixed[i];
-        o0[i] = keep_fixed(f, v0, v0 + acc0 * (1.0 / 6.0));
-        o1[i] = keep_fixed(f, v1, v1 + acc1 * (1.0 / 6.0));
-        o2[i] = keep_fixed(f, v2, v2 + acc2 * (1.0 / 6.0));
+        o0[i] = keep_fixed(f, v0, acc0.mul_add(1.0 / 6.0, v0));
+        o1[i] = keep_fixed(f, v1, acc1.mul_add(1.0 / 6.0, v1));
+        o2[i] = keep_fixed(f, v2, acc2.mul_add(1.0 / 6.0, v2));
         (d0[i], d1[i], d2[i]) = (fu0, fu1, fu2);
         (s0[i], s1[i], s2[i]) = (fn0, fn1, fn2);
     }
@@ -427,6 +438,64 @@ fn pm_row(
 /// arithmetic per sample is exactly that of the per-direction formula in the module docs
 /// ([`pm_row`]), so the result does not depend on the slab partition.
 fn pm_slab(
+    dims: [usize; 3],
+    src: [&[f32]; 3],
+    fixed: &[u8],
+    qk: f32,
+    z0: usize,
+    out: &mut [&mut [f32]],
+) {
+    #[cfg(target_arch = "x86_64")]
+    if wide_vectors() {
+        // SAFETY: the CPU has the AVX-512 subsets `pm_slab_wide` is compiled for (checked at
+        // run time by `wide_vectors`).
+        unsafe { pm_slab_wide(dims, src, fixed, qk, z0, out) };
+        return;
+    }
+    pm_slab_narrow(dims, src, fixed, qk, z0, out);
+}
+
+/// True when the CPU has AVX-512 F, VL, BW and DQ.
+#[cfg(target_arch = "x86_64")]
+fn wide_vectors() -> bool {
+    std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512vl")
+        && std::arch::is_x86_feature_detected!("avx512bw")
+        && std::arch::is_x86_feature_detected!("avx512dq")
+}
+
+/// [`pm_slab_body`] compiled for AVX-512 (16 lanes). The arithmetic is the same IEEE operations
+/// per sample as [`pm_slab_narrow`], so the results are bit-identical; only the vector width
+/// differs.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq")]
+#[inline(never)]
+fn pm_slab_wide(
+    dims: [usize; 3],
+    src: [&[f32]; 3],
+    fixed: &[u8],
+    qk: f32,
+    z0: usize,
+    out: &mut [&mut [f32]],
+) {
+    pm_slab_body(dims, src, fixed, qk, z0, out);
+}
+
+/// [`pm_slab_body`] for the build's target (x86-64-v3: 8 lanes).
+#[inline(never)]
+fn pm_slab_narrow(
+    dims: [usize; 3],
+    src: [&[f32]; 3],
+    fixed: &[u8],
+    qk: f32,
+    z0: usize,
+    out: &mut [&mut [f32]],
+) {
+    pm_slab_body(dims, src, fixed, qk, z0, out);
+}
+
+#[inline(always)]
+fn pm_slab_body(
     dims: [usize; 3],
     src: [&[f32]; 3],
     fixed: &[u8],
@@ -632,4 +701,71 @@ pub fn diffuse_normals(
     normalize_field(n, fixed);
     sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp);
     normalize_field(n, fixed);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Near-unit normals with differences around `4k`, where the coefficients vary most, and a
+    /// few fixed samples.
+    fn field(dims: [usize; 3]) -> (Vec<Vec<f32>>, Vec<u8>) {
+        let n = dims.iter().product::<usize>();
+        let hash = |i: usize, c: usize| {
+            let h = (i as u32 ^ (c as u32).wrapping_mul(0x9e37_79b9)).wrapping_mul(0x85eb_ca6b);
+            ((h ^ (h >> 13)).wrapping_mul(0xc2b2_ae35) >> 8) as f32 / (1u32 << 24) as f32
+        };
+        let chans = (0..3)
+            .map(|c| {
+                (0..n)
+                    .map(|i| [0.3, 0.9, 0.3][c] + 0.06 * (hash(i, c) - 0.5))
+                    .collect()
+            })
+            .collect();
+        let fixed = (0..n).map(|i| u8::from(i % 13 == 0)).collect();
+        (chans, fixed)
+    }
+
+    #[test]
+    fn the_wide_and_narrow_perona_malik_kernels_agree_bit_for_bit() {
+        // Row lengths that leave every remainder of the 8- and 16-lane loops.
+        for dims in [[37, 5, 4], [48, 3, 3], [17, 4, 2]] {
+            let (chans, fixed) = field(dims);
+            let src = [&chans[0][..], &chans[1][..], &chans[2][..]];
+            let n = chans[0].len();
+            let run = |wide: bool| {
+                let mut out: Vec<Vec<f32>> = (0..3).map(|_| vec![0.0f32; n]).collect();
+                let mut o: Vec<&mut [f32]> = out.iter_mut().map(|c| c.as_mut_slice()).collect();
+                #[cfg(target_arch = "x86_64")]
+                if wide {
+                    // SAFETY: only called when the CPU has the features (checked below).
+                    unsafe { pm_slab_wide(dims, src, &fixed, 25.0, 0, &mut o) };
+                    return out;
+                }
+                assert!(!wide, "no wide kernel on this architecture");
+                pm_slab_narrow(dims, src, &fixed, 25.0, 0, &mut o);
+                out
+            };
+            let narrow = run(false);
+            assert!(
+                narrow[0].iter().zip(&chans[0]).any(|(a, b)| a != b),
+                "the sweep moved values"
+            );
+            #[cfg(target_arch = "x86_64")]
+            if wide_vectors() {
+                let wide = run(true);
+                for c in 0..3 {
+                    for i in 0..n {
+                        assert_eq!(
+                            wide[c][i].to_bits(),
+                            narrow[c][i].to_bits(),
+                            "channel {c} sample {i} of {dims:?}"
+                        );
+                    }
+                }
+                continue;
+            }
+            println!("this CPU has no AVX-512: only the narrow kernel runs here");
+        }
+    }
 }
