@@ -68,7 +68,7 @@
 //! that do not depend on each other, and the full levels use the deterministic kernels, so results
 //! do not depend on the thread count.
 
-use super::galerkin::{entry, interpolation_weight};
+use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
 use super::grid::Split;
 use super::level::Level;
 use super::multigrid::{cycle, gamma, SolveOptions};
@@ -218,7 +218,8 @@ impl LocalScratch {
                     + w.r.capacity())
                     + w.free.capacity()
                     + w.inner.capacity()
-                    + std::mem::size_of::<[f64; 9]>() * w.stencil.capacity()
+                    + std::mem::size_of::<u32>() * w.special_of.capacity()
+                    + std::mem::size_of::<[f64; 9]>() * w.specials.capacity()
                     + std::mem::size_of::<Restriction>() * w.restr.capacity()
                     + std::mem::size_of::<Prolongation>() * w.prol.capacity()
             })
@@ -240,8 +241,12 @@ struct Win {
     act: Rect,
     ext: Rect,
     free: Vec<bool>,
-    /// The operator's stencil at each sample (5-point on the finest level).
-    stencil: Vec<[f64; 9]>,
+    /// The level's default stencil (coarse levels; the finest level is 5-point, see `five`).
+    default: [f64; 9],
+    /// Per sample: 0 for the default stencil, else `1 +` its index in `specials`.
+    special_of: Vec<u32>,
+    /// The special stencils of the window's samples (next to constraints).
+    specials: Vec<[f64; 9]>,
     /// True where the finer level's window covers the restriction of this sample.
     inner: Vec<bool>,
     /// This cycle's correction (on the finest level: the heights).
@@ -293,7 +298,9 @@ impl Win {
             act: Rect::point(0, 0),
             ext: Rect::point(0, 0),
             free: Vec::new(),
-            stencil: Vec::new(),
+            default: FIVE_POINT,
+            special_of: Vec::new(),
+            specials: Vec::new(),
             inner: Vec::new(),
             c: Vec::new(),
             rho: Vec::new(),
@@ -327,10 +334,10 @@ impl Win {
             v.clear();
             v.resize(n, false);
         }
-        self.stencil.clear();
-        if let Some(op) = &level.nine {
-            self.stencil.resize(n, op.default);
-        }
+        self.special_of.clear();
+        self.special_of.resize(n, 0);
+        self.specials.clear();
+        self.default = level.nine.as_ref().map_or(FIVE_POINT, |op| op.default);
         self.restr.clear();
         self.prol.clear();
         for j in ext.j0..=ext.j1 {
@@ -347,7 +354,8 @@ impl Win {
                         + super::grid::Split::shift(sp.colour, j);
                     if (ext.i0..=ext.i1).contains(&i) {
                         let x = self.idx(i, j);
-                        self.stencil[x] = sp.stencil;
+                        self.specials.push(sp.stencil);
+                        self.special_of[x] = self.specials.len() as u32;
                     }
                 }
             }
@@ -368,11 +376,20 @@ impl Win {
         if self.five {
             return (v[x - 1] + v[x + 1]) + (v[up] + v[down]);
         }
-        let st = &self.stencil[x];
+        let st = self.stencil(x);
         ((st[entry(-1, 0)] * v[x - 1] + st[entry(1, 0)] * v[x + 1])
             + (st[entry(0, -1)] * v[up] + st[entry(0, 1)] * v[down]))
             + ((st[entry(-1, -1)] * v[up - 1] + st[entry(1, -1)] * v[up + 1])
                 + (st[entry(-1, 1)] * v[down - 1] + st[entry(1, 1)] * v[down + 1]))
+    }
+
+    /// The stencil at window index `x` (coarse levels).
+    #[inline]
+    fn stencil(&self, x: usize) -> &[f64; 9] {
+        match self.special_of[x] {
+            0 => &self.default,
+            k => &self.specials[k as usize - 1],
+        }
     }
 
     /// The centre weight of the stencil at window index `x`.
@@ -381,7 +398,7 @@ impl Win {
         if self.five {
             -4.0
         } else {
-            self.stencil[x][4]
+            self.stencil(x)[4]
         }
     }
 
