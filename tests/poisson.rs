@@ -576,11 +576,11 @@ fn a_warm_re_solve_after_a_local_edit_works_in_a_window() {
         assert!(warm.local_cycles >= 1, "no local cycles: {warm:?}");
         assert_eq!(warm.cycles, 0, "global cycles were needed: {warm:?}");
         // The work stayed in windows and the bands around them: below one and a half sweeps of
-        // the grid (the finest band, 128 samples around the brush's window, covers about a third
-        // of a 513² grid and gets two sweeps) and a tenth of the cold solve's, which relaxed every
-        // sample many times.
+        // the grid (the finest band, 160 samples around the brush's window, covers about half of
+        // a 513² grid and gets two sweeps) and an eighth of the cold solve's, which relaxed every
+        // sample more than ten times.
         assert!(
-            warm.samples_relaxed < 3 * n / 2 && warm.samples_relaxed < cold.samples_relaxed / 10,
+            warm.samples_relaxed < 3 * n / 2 && warm.samples_relaxed < cold.samples_relaxed / 8,
             "warm relaxed {} samples ({} per grid sample)",
             warm.samples_relaxed,
             warm.samples_relaxed as f64 / n as f64

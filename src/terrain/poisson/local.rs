@@ -41,15 +41,16 @@
 //! Bilinear interpolation of the far correction leaves a residual proportional to its second
 //! derivatives (a smooth field interpolated bilinearly has kinks along the coarse grid lines), so
 //! the write-back smooths a band around each level's window: [`LOCAL_BAND`] samples around the
-//! finest window (two red-black sweeps with `b`), half that around coarser windows (two four-colour
-//! sweeps of the correction outside the window, where its right-hand side is zero). Measured on a
-//! 32-sample brush at five positions (`strata bench poisson`), the global relative residual after
-//! the write-back, the previous solve's residual (5–8e-7) included, is 5.5–7.0e-7 at 513² and
-//! 6.4–6.6e-7 at 1025², under the tolerance, so no finishing sweep runs. With a band of 96 (48 on
-//! coarse levels) it was up to 1.5e-6 at 513², and two of the five positions needed a finishing
-//! sweep of the whole grid, which costs more than the wider band. (Larger margins, FAC injection
-//! of the fine correction into the coarse one under the window, and full-level smoothing of the
-//! coarse corrections each moved it by less than 25 % in our trials.)
+//! finest window (two red-black sweeps with `b`) and [`LOCAL_COARSE_BAND`] samples of level 1
+//! around its window, halving per coarser level (one four-colour sweep of the correction outside
+//! the window, where its right-hand side is zero). Measured on a 32-sample brush at nine positions
+//! (`strata bench poisson`), the global relative residual after the write-back, the previous
+//! solve's residual (5–8e-7) included, is 5.0–8.6e-7 at 513², 5.6–7.4e-7 at 1025² and 8.3e-7 at
+//! 2049², under the tolerance, so no finishing sweep runs. With bands of 96 and 48 samples (two
+//! sweeps on every level) it reached 1.5e-6 at 513², and a third of the positions needed a
+//! finishing sweep of the whole grid, which costs more than the wider bands. (Larger margins,
+//! FAC injection of the fine correction into the coarse one under the window, and full-level
+//! smoothing of the coarse corrections each moved it by less than 25 % in our trials.)
 //!
 //! The windows' transfers are precomputed once per re-solve ([`link`]: `P` at every free window
 //! sample and its transpose), and their buffers are kept between re-solves ([`LocalScratch`]).
@@ -80,9 +81,14 @@ pub const LOCAL_MARGIN: usize = 8;
 /// Width of the band around the finest window smoothed after the write-back, in finest samples:
 /// bilinear interpolation of the far correction leaves a residual proportional to its second
 /// derivatives, largest next to the window.
-pub const LOCAL_BAND: usize = 128;
-/// Red-black sweeps over the band.
+pub const LOCAL_BAND: usize = 160;
+/// Red-black sweeps over the finest band.
 pub const LOCAL_BAND_SWEEPS: usize = 2;
+/// Width of the band around the window of level 1, in its samples; it halves on every coarser
+/// level (the same width in finest samples, where the correction is smoother).
+pub const LOCAL_COARSE_BAND: usize = 96;
+/// Four-colour sweeps over each coarse band.
+pub const LOCAL_COARSE_BAND_SWEEPS: usize = 1;
 /// The largest share of the finest grid the finest window may cover for a local re-solve.
 pub const LOCAL_MAX_FRACTION: f64 = 0.125;
 /// The most local cycles of one re-solve (then global cycles take over if needed).
@@ -730,9 +736,13 @@ pub fn resolve(
         // window, where the correction's right-hand side is zero; on the finest level
         // everywhere in the band, with `b`).
         let g = fine.grid;
-        let band = w.act.dilate(LOCAL_BAND >> l.min(1), g.nx, g.nz);
+        let (width, sweeps) = match l {
+            0 => (LOCAL_BAND, LOCAL_BAND_SWEEPS),
+            _ => (LOCAL_COARSE_BAND >> (l - 1), LOCAL_COARSE_BAND_SWEEPS),
+        };
+        let band = w.act.dilate(width, g.nx, g.nz);
         let hole = (l > 0).then_some(w.ext);
-        out.relaxed += smooth_band(fine, band, hole, LOCAL_BAND_SWEEPS);
+        out.relaxed += smooth_band(fine, band, hole, sweeps);
     }
     Some(out)
 }
