@@ -73,7 +73,7 @@ use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
 use super::grid::Split;
 use super::level::Level;
 use super::multigrid::{cycle, gamma, SolveOptions};
-use super::ops::{prolong, smooth_nine_span};
+use super::ops::{prolong, smooth_nine_spans};
 use rayon::prelude::*;
 
 /// Margin of every level's window around the finer window, in that level's samples.
@@ -762,7 +762,7 @@ fn smooth_band(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: usize)
 }
 
 /// [`smooth_band`] on a coarse (9-point) level: each row of the band is relaxed in at most two
-/// spans, left and right of the hole, by the vectorised [`smooth_nine_span`].
+/// spans, left and right of the hole, by the vectorised [`smooth_nine_spans`].
 fn smooth_band_nine(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: usize) {
     let split = level.split;
     let (i_lo, i_hi) = (rect.i0.max(1), rect.i1.min(split.nx - 2));
@@ -770,21 +770,17 @@ fn smooth_band_nine(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: u
     if i_lo > i_hi || j_lo > j_hi {
         return;
     }
+    // Each row of the band in at most two spans, left and right of the hole.
+    let spans = |j: usize| match hole.filter(|h| (h.j0..=h.j1).contains(&j)) {
+        Some(h) => [
+            (h.i0 > i_lo).then(|| (i_lo, (h.i0 - 1).min(i_hi))),
+            (h.i1 < i_hi).then(|| ((h.i1 + 1).max(i_lo), i_hi)),
+        ],
+        None => [Some((i_lo, i_hi)), None],
+    };
     for _ in 0..sweeps {
         for (colour, parity) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
-            for j in (j_lo..=j_hi).filter(|j| j % 2 == parity) {
-                match hole.filter(|h| (h.j0..=h.j1).contains(&j)) {
-                    Some(h) => {
-                        if h.i0 > i_lo {
-                            smooth_nine_span(level, colour, j, i_lo, (h.i0 - 1).min(i_hi), false);
-                        }
-                        if h.i1 < i_hi {
-                            smooth_nine_span(level, colour, j, (h.i1 + 1).max(i_lo), i_hi, false);
-                        }
-                    }
-                    None => smooth_nine_span(level, colour, j, i_lo, i_hi, false),
-                }
-            }
+            smooth_nine_spans(level, colour, parity, j_lo..=j_hi, spans, false);
         }
     }
 }

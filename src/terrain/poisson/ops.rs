@@ -259,51 +259,74 @@ pub fn smooth_nine(level: &mut Level, c: usize, p: usize) {
 }
 
 /// The Gauss–Seidel update of [`smooth_nine`] restricted to the free samples of colour `c` in
-/// row `j` with columns `i_lo..=i_hi` of a coarse (9-point) level, all interior (`1 ≤ i_lo`,
-/// `i_hi ≤ nx − 2`, `1 ≤ j ≤ nz − 2`); with `rhs` false the right-hand side is taken as zero
-/// (the composite correction of [`super::local`]). The updates of one colour in rows of one
-/// parity are independent, so spans may be relaxed in any order.
-pub fn smooth_nine_span(
+/// the rows `j` of parity `p` in `rows` and, in each, the column spans `spans(j)` (at most two;
+/// `None` for none) of a coarse (9-point) level, all interior (`1 ≤ i`, `i ≤ nx − 2`,
+/// `1 ≤ j ≤ nz − 2`); with `rhs` false the right-hand side is taken as zero (the composite
+/// correction of [`super::local`]). The rows written are disjoint from every row read, so rows
+/// run in parallel on large levels; the result does not depend on it.
+pub fn smooth_nine_spans(
     level: &mut Level,
     c: usize,
-    j: usize,
-    i_lo: usize,
-    i_hi: usize,
+    p: usize,
+    rows: std::ops::RangeInclusive<usize>,
+    spans: impl Fn(usize) -> [Option<(usize, usize)>; 2] + Sync,
     rhs: bool,
 ) {
     let split = level.split;
     let st = split.stride;
-    debug_assert!(i_lo >= 1 && i_hi + 2 <= split.nx && j >= 1 && j + 2 <= split.nz);
+    let nz = split.nz;
     let Some(op) = level.nine.as_ref() else {
         return;
     };
-    let s = Split::shift(c, j);
-    // Slots `k` with `i_lo ≤ 2k + s ≤ i_hi`.
-    let (k0, k1) = ((i_lo + 1 - s) / 2, (i_hi - s) / 2 + 1);
-    if k0 >= k1 {
-        return;
-    }
+    debug_assert!(*rows.start() >= 1 && *rows.end() + 2 <= nz);
     let [h0, h1] = &mut level.h;
     let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
-    let (above, rest) = x.split_at_mut(j * st);
-    let (row, below) = rest.split_at_mut(st);
-    let nb = neighbours_of_slots(&split, c, j, k0, k1, y, &above[(j - 1) * st..], below);
-    let xr = &mut row[k0..k1];
-    let br = &level.rhs[c][j * st + k0..j * st + k1];
-    let fr = &level.free[c][j * st + k0..j * st + k1];
-    let b = |k: usize| if rhs { br[k] } else { 0.0 };
-    let (sd, inv) = (&op.default, op.inv_default);
-    for k in 0..xr.len() {
-        let v = (b(k) - off_centre(sd, &nb, k)) * inv;
-        xr[k] = if fr[k] != 0 { v } else { xr[k] };
+    let (b, f) = (&level.rhs[c], &level.free[c]);
+    let mut mine: Vec<(usize, &mut [f64])> = Vec::with_capacity(nz / 2 + 1);
+    let mut same: Vec<&[f64]> = Vec::with_capacity(nz);
+    for (j, row) in x.chunks_mut(st).enumerate() {
+        if j % 2 == p && rows.contains(&j) {
+            mine.push((j, row));
+            same.push(&[]);
+        } else {
+            same.push(row);
+        }
     }
-    for sp in op.row(j) {
-        if sp.colour == c && (j * st + k0..j * st + k1).contains(&sp.slot) {
-            let k = sp.slot - j * st - k0;
-            if fr[k] != 0 {
-                xr[k] = (b(k) - off_centre(&sp.stencil, &nb, k)) * sp.inv_centre;
+    let work = |(j, xrow): &mut (usize, &mut [f64])| {
+        let j = *j;
+        let s = Split::shift(c, j);
+        for (i_lo, i_hi) in spans(j).into_iter().flatten() {
+            debug_assert!(i_lo >= 1 && i_hi + 2 <= split.nx);
+            // Slots `k` with `i_lo ≤ 2k + s ≤ i_hi`.
+            let (k0, k1) = ((i_lo + 1 - s) / 2, (i_hi - s) / 2 + 1);
+            if k0 >= k1 {
+                continue;
+            }
+            let nb = neighbours_of_slots(&split, c, j, k0, k1, y, same[j - 1], same[j + 1]);
+            let xr = &mut xrow[k0..k1];
+            let br = &b[j * st + k0..j * st + k1];
+            let fr = &f[j * st + k0..j * st + k1];
+            let bk = |k: usize| if rhs { br[k] } else { 0.0 };
+            let (sd, inv) = (&op.default, op.inv_default);
+            for k in 0..xr.len() {
+                let v = (bk(k) - off_centre(sd, &nb, k)) * inv;
+                xr[k] = if fr[k] != 0 { v } else { xr[k] };
+            }
+            for sp in op.row(j) {
+                if sp.colour == c && (j * st + k0..j * st + k1).contains(&sp.slot) {
+                    let k = sp.slot - j * st - k0;
+                    if fr[k] != 0 {
+                        xr[k] = (bk(k) - off_centre(&sp.stencil, &nb, k)) * sp.inv_centre;
+                    }
+                }
             }
         }
+    };
+    let band = band_rows(mine.len());
+    if parallel(&split) {
+        mine.par_iter_mut().with_min_len(band).for_each(work);
+    } else {
+        mine.iter_mut().for_each(work);
     }
 }
 
@@ -958,11 +981,15 @@ mod tests {
             let mut spans = coarse_level_with_specials();
             smooth_nine(&mut whole, c, p);
             let (nx, nz) = (spans.grid.nx, spans.grid.nz);
-            for j in (1..nz - 1).filter(|j| j % 2 == p) {
-                // Two spans with a gap of columns 5..=7, relaxed right one first.
-                smooth_nine_span(&mut spans, c, j, 8, nx - 2, true);
-                smooth_nine_span(&mut spans, c, j, 1, 4, true);
-            }
+            // Two spans with a gap of columns 5..=7, the right one first.
+            smooth_nine_spans(
+                &mut spans,
+                c,
+                p,
+                1..=nz - 2,
+                |_| [Some((8, nx - 2)), Some((1, 4))],
+                true,
+            );
             for j in 0..nz {
                 for i in 0..nx {
                     let (cc, k) = spans.split.locate(i, j);
@@ -983,9 +1010,14 @@ mod tests {
         }
         smooth_nine(&mut zero_b, 1, 1);
         let (nx, nz) = (no_rhs.grid.nx, no_rhs.grid.nz);
-        for j in (1..nz - 1).filter(|j| j % 2 == 1) {
-            smooth_nine_span(&mut no_rhs, 1, j, 1, nx - 2, false);
-        }
+        smooth_nine_spans(
+            &mut no_rhs,
+            1,
+            1,
+            1..=nz - 2,
+            |_| [Some((1, nx - 2)), None],
+            false,
+        );
         assert_eq!(zero_b.h, no_rhs.h);
     }
 
