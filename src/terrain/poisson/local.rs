@@ -600,9 +600,9 @@ pub fn resolve(
         cache.wins.resize_with(k + 1, Win::empty);
     }
     let wins = &mut cache.wins[..=k];
-    for (l, w) in wins.iter_mut().enumerate() {
-        w.reset(&levels[l], acts[l], (l > 0).then(|| acts[l - 1]));
-    }
+    wins.par_iter_mut()
+        .enumerate()
+        .for_each(|(l, w)| w.reset(&levels[l], acts[l], (l > 0).then(|| acts[l - 1])));
     for l in 0..k {
         let (a, b) = wins.split_at_mut(l + 1);
         link(&levels[l], &mut a[l], &mut b[0]);
