@@ -207,6 +207,30 @@ fn off_centre(s: &[f64; 9], nb: &Neighbours, k: usize) -> f64 {
         + ((s[0] * uw[k] + s[2] * ue[k]) + (s[6] * dw[k] + s[8] * de[k]))
 }
 
+/// The rows `j` of parity `p` in `rows` of a colour array (row length `st`) as mutable slices
+/// with their index, and every row as a shared slice (empty for the mutable ones): a half-sweep
+/// writes the former and reads the neighbouring rows of the latter.
+#[allow(clippy::type_complexity)]
+fn split_rows(
+    x: &mut [f64],
+    st: usize,
+    p: usize,
+    rows: std::ops::RangeInclusive<usize>,
+) -> (Vec<(usize, &mut [f64])>, Vec<&[f64]>) {
+    let nz = x.len() / st;
+    let mut mine = Vec::with_capacity(nz / 2 + 1);
+    let mut same: Vec<&[f64]> = Vec::with_capacity(nz);
+    for (j, row) in x.chunks_mut(st).enumerate() {
+        if j % 2 == p && rows.contains(&j) {
+            mine.push((j, row));
+            same.push(&[]);
+        } else {
+            same.push(row);
+        }
+    }
+    (mine, same)
+}
+
 /// One Gauss–Seidel pass over the free samples of colour `c` in the rows of parity `p` of a
 /// coarse (9-point) level: `h ← (b − Σ) / s_c`. The rows written are disjoint from every row
 /// read, so rows run in parallel.
@@ -222,16 +246,7 @@ pub fn smooth_nine(level: &mut Level, c: usize, p: usize) {
     let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
     let b = &level.rhs[c];
     let f = &level.free[c];
-    let mut mine: Vec<(usize, &mut [f64])> = Vec::with_capacity(nz / 2 + 1);
-    let mut same: Vec<&[f64]> = Vec::with_capacity(nz);
-    for (j, row) in x.chunks_mut(st).enumerate() {
-        if j % 2 == p && j > 0 && j + 1 < nz {
-            mine.push((j, row));
-            same.push(&[]);
-        } else {
-            same.push(row);
-        }
-    }
+    let (mut mine, same) = split_rows(x, st, p, 1..=nz - 2);
     let work = |(j, xrow): &mut (usize, &mut [f64])| {
         let j = *j;
         let (k0, k1, nb) = neighbours(&split, c, j, y, same[j - 1], same[j + 1]);
@@ -282,16 +297,7 @@ pub fn smooth_nine_spans(
     let [h0, h1] = &mut level.h;
     let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
     let (b, f) = (&level.rhs[c], &level.free[c]);
-    let mut mine: Vec<(usize, &mut [f64])> = Vec::with_capacity(nz / 2 + 1);
-    let mut same: Vec<&[f64]> = Vec::with_capacity(nz);
-    for (j, row) in x.chunks_mut(st).enumerate() {
-        if j % 2 == p && rows.contains(&j) {
-            mine.push((j, row));
-            same.push(&[]);
-        } else {
-            same.push(row);
-        }
-    }
+    let (mut mine, same) = split_rows(x, st, p, rows);
     let work = |(j, xrow): &mut (usize, &mut [f64])| {
         let j = *j;
         let s = Split::shift(c, j);

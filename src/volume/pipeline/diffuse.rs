@@ -274,9 +274,13 @@ pub fn sweep(
     match pm {
         Some(k) => {
             let src = [src[0], src[1], src[2]];
-            par_slabs_multi(outs, dims[0] * dims[1], |z0, out| {
-                pm_slab(dims, src, fixed, 0.25 / k, z0, out);
-            });
+            let inputs = PmInputs {
+                dims,
+                src,
+                fixed,
+                qk: 0.25 / k,
+            };
+            par_slabs_multi(outs, dims[0] * dims[1], |z0, out| pm_slab(inputs, z0, out));
         }
         None => laplace_sweep(dims, src, None, fixed, 1.0 / 6.0, outs),
     }
@@ -437,22 +441,25 @@ fn pm_row(
 /// exactly as the slab below computes them). A missing (Neumann) neighbour has flux 0. The
 /// arithmetic per sample is exactly that of the per-direction formula in the module docs
 /// ([`pm_row`]), so the result does not depend on the slab partition.
-fn pm_slab(
-    dims: [usize; 3],
-    src: [&[f32]; 3],
-    fixed: &[u8],
-    qk: f32,
-    z0: usize,
-    out: &mut [&mut [f32]],
-) {
+fn pm_slab(inputs: PmInputs, z0: usize, out: &mut [&mut [f32]]) {
     #[cfg(target_arch = "x86_64")]
     if wide_vectors() {
         // SAFETY: the CPU has the AVX-512 subsets `pm_slab_wide` is compiled for (checked at
         // run time by `wide_vectors`).
-        unsafe { pm_slab_wide(dims, src, fixed, qk, z0, out) };
+        unsafe { pm_slab_wide(inputs, z0, out) };
         return;
     }
-    pm_slab_narrow(dims, src, fixed, qk, z0, out);
+    pm_slab_narrow(inputs, z0, out);
+}
+
+/// The read-only inputs of a Perona–Malik sweep: grid, the three channels, the constraint mask
+/// and `qk = 1/(4k)`.
+#[derive(Clone, Copy)]
+struct PmInputs<'a> {
+    dims: [usize; 3],
+    src: [&'a [f32]; 3],
+    fixed: &'a [u8],
+    qk: f32,
 }
 
 /// True when the CPU has AVX-512 F, VL, BW and DQ.
@@ -470,39 +477,24 @@ fn wide_vectors() -> bool {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq")]
 #[inline(never)]
-fn pm_slab_wide(
-    dims: [usize; 3],
-    src: [&[f32]; 3],
-    fixed: &[u8],
-    qk: f32,
-    z0: usize,
-    out: &mut [&mut [f32]],
-) {
-    pm_slab_body(dims, src, fixed, qk, z0, out);
+fn pm_slab_wide(inputs: PmInputs, z0: usize, out: &mut [&mut [f32]]) {
+    pm_slab_body(inputs, z0, out);
 }
 
 /// [`pm_slab_body`] for the build's target (x86-64-v3: 8 lanes).
 #[inline(never)]
-fn pm_slab_narrow(
-    dims: [usize; 3],
-    src: [&[f32]; 3],
-    fixed: &[u8],
-    qk: f32,
-    z0: usize,
-    out: &mut [&mut [f32]],
-) {
-    pm_slab_body(dims, src, fixed, qk, z0, out);
+fn pm_slab_narrow(inputs: PmInputs, z0: usize, out: &mut [&mut [f32]]) {
+    pm_slab_body(inputs, z0, out);
 }
 
 #[inline(always)]
-fn pm_slab_body(
-    dims: [usize; 3],
-    src: [&[f32]; 3],
-    fixed: &[u8],
-    qk: f32,
-    z0: usize,
-    out: &mut [&mut [f32]],
-) {
+fn pm_slab_body(inputs: PmInputs, z0: usize, out: &mut [&mut [f32]]) {
+    let PmInputs {
+        dims,
+        src,
+        fixed,
+        qk,
+    } = inputs;
     let [nx, ny, _] = dims;
     let slice = nx * ny;
     let nzs = out[0].len() / slice;
@@ -731,7 +723,12 @@ mod tests {
         // Row lengths that leave every remainder of the 8- and 16-lane loops.
         for dims in [[37, 5, 4], [48, 3, 3], [17, 4, 2]] {
             let (chans, fixed) = field(dims);
-            let src = [&chans[0][..], &chans[1][..], &chans[2][..]];
+            let inputs = PmInputs {
+                dims,
+                src: [&chans[0][..], &chans[1][..], &chans[2][..]],
+                fixed: &fixed,
+                qk: 25.0,
+            };
             let n = chans[0].len();
             let run = |wide: bool| {
                 let mut out: Vec<Vec<f32>> = (0..3).map(|_| vec![0.0f32; n]).collect();
@@ -739,11 +736,11 @@ mod tests {
                 #[cfg(target_arch = "x86_64")]
                 if wide {
                     // SAFETY: only called when the CPU has the features (checked below).
-                    unsafe { pm_slab_wide(dims, src, &fixed, 25.0, 0, &mut o) };
+                    unsafe { pm_slab_wide(inputs, 0, &mut o) };
                     return out;
                 }
                 assert!(!wide, "no wide kernel on this architecture");
-                pm_slab_narrow(dims, src, &fixed, 25.0, 0, &mut o);
+                pm_slab_narrow(inputs, 0, &mut o);
                 out
             };
             let narrow = run(false);
