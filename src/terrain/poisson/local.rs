@@ -780,7 +780,7 @@ fn smooth_band_nine(level: &mut Level, rect: Rect, hole: Option<Rect>, sweeps: u
     };
     for _ in 0..sweeps {
         for (colour, parity) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
-            smooth_nine_spans(level, colour, parity, j_lo..=j_hi, spans, false);
+            smooth_nine_spans::<false>(level, colour, parity, j_lo..=j_hi, spans);
         }
     }
 }

@@ -235,57 +235,22 @@ fn split_rows(
 /// coarse (9-point) level: `h ← (b − Σ) / s_c`. The rows written are disjoint from every row
 /// read, so rows run in parallel.
 pub fn smooth_nine(level: &mut Level, c: usize, p: usize) {
-    let split = level.split;
-    let st = split.stride;
-    let nz = split.nz;
-    let par = parallel(&split);
-    let Some(op) = level.nine.as_ref() else {
-        return;
-    };
-    let [h0, h1] = &mut level.h;
-    let (x, y) = if c == 0 { (h0, &*h1) } else { (h1, &*h0) };
-    let b = &level.rhs[c];
-    let f = &level.free[c];
-    let (mut mine, same) = split_rows(x, st, p, 1..=nz - 2);
-    let work = |(j, xrow): &mut (usize, &mut [f64])| {
-        let j = *j;
-        let (k0, k1, nb) = neighbours(&split, c, j, y, same[j - 1], same[j + 1]);
-        let xr = &mut xrow[k0..k1];
-        let br = &b[j * st + k0..j * st + k1];
-        let fr = &f[j * st + k0..j * st + k1];
-        let (sd, inv) = (&op.default, op.inv_default);
-        for k in 0..xr.len() {
-            let v = (br[k] - off_centre(sd, &nb, k)) * inv;
-            xr[k] = if fr[k] != 0 { v } else { xr[k] };
-        }
-        for sp in op.row(j) {
-            if sp.colour == c {
-                let k = sp.slot - j * st - k0;
-                xr[k] = (br[k] - off_centre(&sp.stencil, &nb, k)) * sp.inv_centre;
-            }
-        }
-    };
-    let band = band_rows(nz / 2 + 1);
-    if par {
-        mine.par_iter_mut().with_min_len(band).for_each(work);
-    } else {
-        mine.iter_mut().for_each(work);
-    }
+    let (nx, nz) = (level.split.nx, level.split.nz);
+    smooth_nine_spans::<true>(level, c, p, 1..=nz - 2, |_| [Some((1, nx - 2)), None]);
 }
 
 /// The Gauss–Seidel update of [`smooth_nine`] restricted to the free samples of colour `c` in
 /// the rows `j` of parity `p` in `rows` and, in each, the column spans `spans(j)` (at most two;
 /// `None` for none) of a coarse (9-point) level, all interior (`1 ≤ i`, `i ≤ nx − 2`,
-/// `1 ≤ j ≤ nz − 2`); with `rhs` false the right-hand side is taken as zero (the composite
+/// `1 ≤ j ≤ nz − 2`); with `RHS` false the right-hand side is taken as zero (the composite
 /// correction of [`super::local`]). The rows written are disjoint from every row read, so rows
 /// run in parallel on large levels; the result does not depend on it.
-pub fn smooth_nine_spans(
+pub fn smooth_nine_spans<const RHS: bool>(
     level: &mut Level,
     c: usize,
     p: usize,
     rows: std::ops::RangeInclusive<usize>,
     spans: impl Fn(usize) -> [Option<(usize, usize)>; 2] + Sync,
-    rhs: bool,
 ) {
     let split = level.split;
     let st = split.stride;
@@ -312,7 +277,7 @@ pub fn smooth_nine_spans(
             let xr = &mut xrow[k0..k1];
             let br = &b[j * st + k0..j * st + k1];
             let fr = &f[j * st + k0..j * st + k1];
-            let bk = |k: usize| if rhs { br[k] } else { 0.0 };
+            let bk = |k: usize| if RHS { br[k] } else { 0.0 };
             let (sd, inv) = (&op.default, op.inv_default);
             for k in 0..xr.len() {
                 let v = (bk(k) - off_centre(sd, &nb, k)) * inv;
@@ -988,14 +953,9 @@ mod tests {
             smooth_nine(&mut whole, c, p);
             let (nx, nz) = (spans.grid.nx, spans.grid.nz);
             // Two spans with a gap of columns 5..=7, the right one first.
-            smooth_nine_spans(
-                &mut spans,
-                c,
-                p,
-                1..=nz - 2,
-                |_| [Some((8, nx - 2)), Some((1, 4))],
-                true,
-            );
+            smooth_nine_spans::<true>(&mut spans, c, p, 1..=nz - 2, |_| {
+                [Some((8, nx - 2)), Some((1, 4))]
+            });
             for j in 0..nz {
                 for i in 0..nx {
                     let (cc, k) = spans.split.locate(i, j);
@@ -1016,14 +976,7 @@ mod tests {
         }
         smooth_nine(&mut zero_b, 1, 1);
         let (nx, nz) = (no_rhs.grid.nx, no_rhs.grid.nz);
-        smooth_nine_spans(
-            &mut no_rhs,
-            1,
-            1,
-            1..=nz - 2,
-            |_| [Some((1, nx - 2)), None],
-            false,
-        );
+        smooth_nine_spans::<false>(&mut no_rhs, 1, 1, 1..=nz - 2, |_| [Some((1, nx - 2)), None]);
         assert_eq!(zero_b.h, no_rhs.h);
     }
 
