@@ -4,8 +4,9 @@
 //! the same signed distance grids in the same run. Target: ours ≥ 1.0× theirs in cells per second.
 //!
 //! Grids: a noisy sphere and a terrain-like heightfield SDF with an overhang term, at 64³ and
-//! 128³ samples. Each figure is the median of repeated runs after a warm-up, with the output
-//! buffers reused (both libraries keep their allocations between calls).
+//! 128³ samples. After a warm-up, the two meshers run alternately, one run of each per
+//! repetition, with the output buffers reused (both libraries keep their allocations between
+//! calls). The times are medians; the ratio is the median of the per-repetition ratios.
 
 use super::super::emit;
 use crate::cli::BenchArgs;
@@ -52,17 +53,38 @@ fn sample(n: usize, f: impl Fn(f32, f32, f32) -> f32) -> Vec<f32> {
     out
 }
 
-fn median_ms(runs: usize, mut f: impl FnMut()) -> f64 {
-    f();
-    let mut t: Vec<f64> = (0..runs)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
+/// Times `ours` and `theirs` in alternating order, one run of each per repetition, after one
+/// warm-up run of each. Returns the median times in milliseconds and the median of the
+/// per-repetition ratios `theirs ÷ ours`: the machine's speed changes from moment to moment, and
+/// a ratio of two runs taken back to back is steadier than a ratio of two separate medians.
+fn paired_ms(runs: usize, mut ours: impl FnMut(), mut theirs: impl FnMut()) -> (f64, f64, f64) {
+    let time = |f: &mut dyn FnMut()| {
+        let s = Instant::now();
+        f();
+        s.elapsed().as_secs_f64() * 1e3
+    };
+    ours();
+    theirs();
+    let mut a = Vec::with_capacity(runs);
+    let mut b = Vec::with_capacity(runs);
+    let mut r = Vec::with_capacity(runs);
+    for rep in 0..runs {
+        let (o, t) = if rep % 2 == 0 {
+            let o = time(&mut ours);
+            (o, time(&mut theirs))
+        } else {
+            let t = time(&mut theirs);
+            (time(&mut ours), t)
+        };
+        a.push(o);
+        b.push(t);
+        r.push(t / o);
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    (median(a), median(b), median(r))
 }
 
 /// Runs the meshing benchmark.
@@ -76,18 +98,21 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             let dims = [n; 3];
             let opts = MeshOptions::new(dims, 1.0);
             let mut ours = QuadMesh::default();
-            let runs = if n <= 64 { 41 } else { 15 };
-            let ours_ms = median_ms(runs, || {
-                if let Err(e) = surface_nets(&sdf, SampleAttributes::default(), &opts, &mut ours) {
-                    panic!("benchmark grid is valid: {e}");
-                }
-            });
+            let runs = if n <= 64 { 61 } else { 21 };
             let shape = RuntimeShape::<u32, 3>::new([n as u32; 3]);
             let mut buf = SurfaceNetsBuffer::default();
             let max = [n as u32 - 1; 3];
-            let theirs_ms = median_ms(runs, || {
-                fast_surface_nets::surface_nets(&sdf, &shape, [0; 3], max, &mut buf);
-            });
+            let (ours_ms, theirs_ms, ratio) = paired_ms(
+                runs,
+                || {
+                    if let Err(e) =
+                        surface_nets(&sdf, SampleAttributes::default(), &opts, &mut ours)
+                    {
+                        panic!("benchmark grid is valid: {e}");
+                    }
+                },
+                || fast_surface_nets::surface_nets(&sdf, &shape, [0; 3], max, &mut buf),
+            );
             // Quads differ only at the grid border, where `fast-surface-nets` emits fewer.
             anyhow::ensure!(
                 buf.positions.len() == ours.vertex_count(),
@@ -96,7 +121,6 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
                 buf.positions.len()
             );
             let cells = ((n - 1) * (n - 1) * (n - 1)) as f64;
-            let ratio = theirs_ms / ours_ms;
             emit(
                 args,
                 json!({"bench":"volume","figure":"mesh","sdf":name,"grid":[n,n,n],
