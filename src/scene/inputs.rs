@@ -55,7 +55,9 @@ pub const INPUTS_DOMAIN: &[u8] = b"strata.tile-inputs\0";
 /// 4: the local Poisson re-solve smooths a wider band after its write-back and rounds its window
 /// sweeps differently (warm re-solves between a region's operations change in the last bits), and
 /// the Perona–Malik sweep of volume regions uses fused multiply-adds.
-pub const TILE_CODE_VERSION: u32 = 4;
+/// 5: the local Poisson re-solve stops its cycles at 0.4 of the tolerance instead of 0.25 (warm
+/// re-solves between a region's operations may run one cycle fewer).
+pub const TILE_CODE_VERSION: u32 = 5;
 
 /// The vertex spacing of a LOD, metres.
 fn spacing_m(world: &WorldParams, lod: u32) -> f64 {
