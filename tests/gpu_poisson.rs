@@ -22,12 +22,11 @@
 use strata::cli::BackendChoice;
 use strata::gpu::poisson::{GpuField, GpuPoissonParams, Op, PoissonKernels, POISSON_WGSL};
 use strata::gpu::request_device;
-use strata::terrain::poisson::gradient::extract_edges;
 use strata::terrain::poisson::level::Level;
 use strata::terrain::poisson::ops::{
     prolong, residual, residual_restrict, smooth_colour, smooth_nine,
 };
-use strata::terrain::poisson::{Acceleration, GridSpec, Problem, SolveOptions, Solver, Start};
+use strata::terrain::poisson::{Acceleration, GridSpec, OwnedProblem, SolveOptions, Solver, Start};
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
     match pollster::block_on(request_device(BackendChoice::Gpu)) {
@@ -40,30 +39,10 @@ fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
     }
 }
 
-struct Owned {
-    grid: GridSpec,
-    gx: Vec<f32>,
-    gz: Vec<f32>,
-    fixed: Vec<bool>,
-    heights: Vec<f32>,
-}
-
-impl Owned {
-    fn problem(&self) -> Problem<'_> {
-        Problem {
-            grid: self.grid,
-            gx: &self.gx,
-            gz: &self.gz,
-            fixed: &self.fixed,
-            heights: &self.heights,
-        }
-    }
-}
-
 /// A terrain-like problem; with `constrained`, a fixed point and a fixed diagonal curve.
-fn terrain(n: usize, constrained: bool) -> Owned {
+fn terrain(n: usize, constrained: bool) -> OwnedProblem {
     let grid = GridSpec::new(n, n, 2.0).expect("grid");
-    let mut heights: Vec<f32> = (0..n * n)
+    let heights: Vec<f32> = (0..n * n)
         .map(|k| {
             let (x, z) = ((k % n) as f64 * 2.0, (k / n) as f64 * 2.0);
             (450.0
@@ -71,27 +50,14 @@ fn terrain(n: usize, constrained: bool) -> Owned {
                 + 4.0 * (x / 6.1 + z / 9.3).sin()) as f32
         })
         .collect();
-    let mut gx = vec![0.0; grid.x_edges()];
-    let mut gz = vec![0.0; grid.z_edges()];
-    extract_edges(grid, &heights, &mut gx, &mut gz);
-    let mut fixed = vec![false; n * n];
-    let mut fix = |i: usize, j: usize, v: f32| {
-        fixed[j * n + i] = true;
-        heights[j * n + i] = v;
-    };
+    let mut p = OwnedProblem::from_heights(grid, heights);
     if constrained {
-        fix(n / 3, n / 4, 400.0);
+        p.fix(n / 3, n / 4, 400.0);
         for t in 0..n / 2 {
-            fix(n / 4 + t, n / 2 + t / 2, 470.0);
+            p.fix(n / 4 + t, n / 2 + t / 2, 470.0);
         }
     }
-    Owned {
-        grid,
-        gx,
-        gz,
-        fixed,
-        heights,
-    }
+    p
 }
 
 /// Rounds every value of a level to `f32`, so the CPU (f64) and the device (f32) read the same

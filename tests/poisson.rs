@@ -3,32 +3,10 @@
 //! constraints beating conflicting gradients (the paper's Fig. 16), warm starts, determinism
 //! across thread counts, and input validation.
 
-use strata::terrain::poisson::gradient::extract_edges;
 use strata::terrain::poisson::{
-    reconstruct, Acceleration, Cycle, GridSpec, PoissonError, Problem, Rect, SolveOptions, Solver,
-    Start, DEFAULT_TOLERANCE,
+    reconstruct, Acceleration, Cycle, GridSpec, OwnedProblem, PoissonError, Problem, Rect,
+    SolveOptions, Solver, Start, DEFAULT_TOLERANCE,
 };
-
-/// An owned problem for the tests.
-struct Owned {
-    grid: GridSpec,
-    gx: Vec<f32>,
-    gz: Vec<f32>,
-    fixed: Vec<bool>,
-    heights: Vec<f32>,
-}
-
-impl Owned {
-    fn problem(&self) -> Problem<'_> {
-        Problem {
-            grid: self.grid,
-            gx: &self.gx,
-            gz: &self.gz,
-            fixed: &self.fixed,
-            heights: &self.heights,
-        }
-    }
-}
 
 /// `h = sin(3x + 0.4) cos(2z − 0.3) + 0.3 x² z` and its gradient.
 fn exact(x: f64, z: f64) -> (f64, f64, f64) {
@@ -42,7 +20,7 @@ fn exact(x: f64, z: f64) -> (f64, f64, f64) {
 
 /// The manufactured problem on `[0, 2] × [0, 1]` with `nz` rows: analytic slopes at the edge
 /// midpoints, analytic heights on the border.
-fn manufactured(nz: usize) -> Owned {
+fn manufactured(nz: usize) -> OwnedProblem {
     let nx = 2 * (nz - 1) + 1;
     let d = 1.0 / (nz - 1) as f64;
     let grid = GridSpec::new(nx, nz, d).expect("grid");
@@ -61,7 +39,7 @@ fn manufactured(nz: usize) -> Owned {
     let heights = (0..nx * nz)
         .map(|n| exact((n % nx) as f64 * d, (n / nx) as f64 * d).0 as f32)
         .collect();
-    Owned {
+    OwnedProblem {
         grid,
         gx,
         gz,
@@ -71,7 +49,7 @@ fn manufactured(nz: usize) -> Owned {
 }
 
 /// A terrain-like field: a few hundred metres of relief from a sum of waves, 2 m spacing.
-fn terrain(n: usize) -> Owned {
+fn terrain(n: usize) -> OwnedProblem {
     let grid = GridSpec::new(n, n, 2.0).expect("grid");
     let h: Vec<f32> = (0..n * n)
         .map(|k| {
@@ -83,34 +61,21 @@ fn terrain(n: usize) -> Owned {
                 + 0.002 * x * z) as f32
         })
         .collect();
-    let mut gx = vec![0.0; grid.x_edges()];
-    let mut gz = vec![0.0; grid.z_edges()];
-    extract_edges(grid, &h, &mut gx, &mut gz);
-    Owned {
-        grid,
-        gx,
-        gz,
-        fixed: vec![false; n * n],
-        heights: h,
-    }
+    OwnedProblem::from_heights(grid, h)
 }
 
 /// Fixes a point, a diagonal curve and a disc at heights that conflict with the gradients.
-fn add_constraints(p: &mut Owned) {
+fn add_constraints(p: &mut OwnedProblem) {
     let n = p.grid.nx;
-    let mut fix = |i: usize, j: usize, v: f32| {
-        p.fixed[j * n + i] = true;
-        p.heights[j * n + i] = v;
-    };
-    fix(n / 3, n / 5, 250.0);
+    p.fix(n / 3, n / 5, 250.0);
     for t in 0..n / 2 {
-        fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
+        p.fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
     }
     let (ci, cj, r) = (3 * n / 4, 3 * n / 4, n / 16);
     for j in cj - r..=cj + r {
         for i in ci - r..=ci + r {
             if (i.abs_diff(ci).pow(2) + j.abs_diff(cj).pow(2)) <= r * r {
-                fix(i, j, 555.5);
+                p.fix(i, j, 555.5);
             }
         }
     }
@@ -260,7 +225,7 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
 }
 
 /// Per-cycle factors of plain cycles to 1e-11 (printed).
-fn plain_factors(p: &Owned, cycle: Cycle, label: &str) -> Vec<f64> {
+fn plain_factors(p: &OwnedProblem, cycle: Cycle, label: &str) -> Vec<f64> {
     let opts = SolveOptions {
         tolerance: 1e-11,
         cycle,
@@ -379,7 +344,7 @@ fn reconstruction_of_extracted_gradients_returns_the_heights() {
 }
 
 /// A small brush edit: a Gaussian bump of slopes over a 32-sample disc.
-fn brush(p: &mut Owned, ci: usize, cj: usize) {
+fn brush(p: &mut OwnedProblem, ci: usize, cj: usize) {
     let n = p.grid.nx;
     for j in cj - 16..cj + 16 {
         for i in ci - 16..ci + 16 {
@@ -519,7 +484,7 @@ fn bad_input_names_the_field() {
 
 /// `‖b − A h‖₂ / ‖b‖₂` of the heights `h` for `p`, computed here from the problem alone (the
 /// reduced system over the free samples, fixed neighbours moved to the right).
-fn true_relative_residual(p: &Owned, h: &[f64]) -> f64 {
+fn true_relative_residual(p: &OwnedProblem, h: &[f64]) -> f64 {
     let g = p.grid;
     let n = g.nx;
     let rhs = p.problem().rhs_natural();

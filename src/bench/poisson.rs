@@ -43,8 +43,9 @@
 
 use super::emit;
 use crate::cli::BenchArgs;
-use crate::terrain::poisson::gradient::extract_edges;
-use crate::terrain::poisson::{GridSpec, Problem, Rect, SolveOptions, SolveReport, Solver, Start};
+use crate::terrain::poisson::{
+    GridSpec, OwnedProblem, Rect, SolveOptions, SolveReport, Solver, Start,
+};
 use anyhow::Context;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -71,30 +72,9 @@ const PAPER: [(usize, f64, f64); 4] = [
     (4097, 1180.0, 448.0),
 ];
 
-/// An owned problem.
-struct Owned {
-    grid: GridSpec,
-    gx: Vec<f32>,
-    gz: Vec<f32>,
-    fixed: Vec<bool>,
-    heights: Vec<f32>,
-}
-
-impl Owned {
-    fn problem(&self) -> Problem<'_> {
-        Problem {
-            grid: self.grid,
-            gx: &self.gx,
-            gz: &self.gz,
-            fixed: &self.fixed,
-            heights: &self.heights,
-        }
-    }
-}
-
 /// The benchmark's terrain: waves of 300 m, 60 m, 10 m wavelengths on a 400 m plateau, 2 m
 /// spacing; constrained with a point, a curve and a disc at heights that disagree with it.
-fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<Owned> {
+fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<OwnedProblem> {
     let grid = GridSpec::new(n, n, 2.0)?;
     let heights: Vec<f32> = (0..n * n)
         .map(|k| {
@@ -105,30 +85,17 @@ fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<Owned> {
                 + 6.0 * (x / 9.7).cos() * (z / 13.1).sin()) as f32
         })
         .collect();
-    let mut gx = vec![0.0; grid.x_edges()];
-    let mut gz = vec![0.0; grid.z_edges()];
-    extract_edges(grid, &heights, &mut gx, &mut gz);
-    let mut p = Owned {
-        grid,
-        gx,
-        gz,
-        fixed: vec![false; n * n],
-        heights,
-    };
+    let mut p = OwnedProblem::from_heights(grid, heights);
     if constrained {
-        let mut fix = |i: usize, j: usize, v: f32| {
-            p.fixed[j * n + i] = true;
-            p.heights[j * n + i] = v;
-        };
-        fix(n / 3, n / 5, 250.0);
+        p.fix(n / 3, n / 5, 250.0);
         for t in 0..n / 2 {
-            fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
+            p.fix(n / 4 + t / 2, n / 2 + t / 3, 380.0 + t as f32 * 0.1);
         }
         let (c, r) = (3 * n / 4, n / 16);
         for j in c - r..=c + r {
             for i in c - r..=c + r {
                 if i.abs_diff(c).pow(2) + j.abs_diff(c).pow(2) <= r * r {
-                    fix(i, j, 555.5);
+                    p.fix(i, j, 555.5);
                 }
             }
         }
@@ -139,7 +106,7 @@ fn bench_problem(n: usize, constrained: bool) -> anyhow::Result<Owned> {
 /// The brush edit: a Gaussian bump of slopes over a disc of 32 samples' diameter. Returns the
 /// brush's bounds (the samples owning the edited edges), as a server would pass them to
 /// [`Solver::resolve_in`].
-fn brush(p: &mut Owned, ci: usize, cj: usize) -> Rect {
+fn brush(p: &mut OwnedProblem, ci: usize, cj: usize) -> Rect {
     let n = p.grid.nx;
     for j in cj - 16..cj + 16 {
         for i in ci - 16..ci + 16 {
@@ -190,7 +157,7 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
 /// report.
 fn time_cold(
     solver: &mut Solver,
-    p: &Owned,
+    p: &OwnedProblem,
     reps: usize,
 ) -> anyhow::Result<(f64, f64, SolveReport)> {
     solver.solve(&p.problem(), Start::Cold)?;
@@ -436,7 +403,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
 
 /// Writes the problem for the peers script: `POIS`, `u32 nx`, `u32 nz`, `f64 spacing`,
 /// `f64 rhs[n]`, `u8 fixed[n]`, `f64 values[n]` (little-endian, row-major).
-fn write_problem(path: &Path, p: &Owned) -> anyhow::Result<()> {
+fn write_problem(path: &Path, p: &OwnedProblem) -> anyhow::Result<()> {
     let g = p.grid;
     let prob = p.problem();
     let rhs = prob.rhs_natural();
@@ -457,7 +424,11 @@ fn write_problem(path: &Path, p: &Owned) -> anyhow::Result<()> {
     std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))
 }
 
-fn run_peers(python: &Path, p: &Owned, skip_pyamg: bool) -> anyhow::Result<serde_json::Value> {
+fn run_peers(
+    python: &Path,
+    p: &OwnedProblem,
+    skip_pyamg: bool,
+) -> anyhow::Result<serde_json::Value> {
     let dir = std::env::temp_dir().join(format!("strata-poisson-{}", std::process::id()));
     std::fs::create_dir_all(&dir)?;
     let file = dir.join(format!("problem-{}.bin", p.grid.nx));

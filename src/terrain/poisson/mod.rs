@@ -127,7 +127,7 @@ pub use multigrid::{
     Acceleration, Cycle, SolveOptions, SolveReport, Solver, Start, StartKind, AUTO_SWITCH_FACTOR,
     DEFAULT_MAX_CYCLES, DEFAULT_TOLERANCE,
 };
-pub use problem::Problem;
+pub use problem::{OwnedProblem, Problem};
 
 /// A problem or option the solver rejects, naming the offending field.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

@@ -37,6 +37,66 @@ pub struct Problem<'a> {
     pub heights: &'a [f32],
 }
 
+/// A problem that owns its fields, for callers that build one (benchmarks, tests, tools).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OwnedProblem {
+    /// Grid (sides `2^k + 1`, spacing in metres).
+    pub grid: GridSpec,
+    /// Target slopes `∂h/∂x` on the x-edges, m/m (layout of [`Problem::gx`]).
+    pub gx: Vec<f32>,
+    /// Target slopes `∂h/∂z` on the z-edges, m/m (layout of [`Problem::gz`]).
+    pub gz: Vec<f32>,
+    /// True where the height is fixed, `nx · nz` row-major.
+    pub fixed: Vec<bool>,
+    /// Heights in metres, `nx · nz` row-major (read at the fixed samples and the border).
+    pub heights: Vec<f32>,
+}
+
+impl OwnedProblem {
+    /// The problem whose solution is `heights` (`nx · nz`, metres): their forward-difference
+    /// slopes ([`super::gradient::extract_edges`]) with only the border fixed.
+    ///
+    /// # Panics
+    /// If `heights` does not have one value per sample (a programming error of the caller).
+    pub fn from_heights(grid: GridSpec, heights: Vec<f32>) -> Self {
+        let mut gx = vec![0.0; grid.x_edges()];
+        let mut gz = vec![0.0; grid.z_edges()];
+        super::gradient::extract_edges(grid, &heights, &mut gx, &mut gz);
+        Self {
+            grid,
+            gx,
+            gz,
+            fixed: vec![false; grid.len()],
+            heights,
+        }
+    }
+
+    /// Fixes sample `(i, j)` at `height_m` metres (a hard Dirichlet constraint).
+    ///
+    /// # Panics
+    /// If `(i, j)` is outside the grid.
+    pub fn fix(&mut self, i: usize, j: usize, height_m: f32) {
+        assert!(
+            i < self.grid.nx && j < self.grid.nz,
+            "({i}, {j}) is outside the grid"
+        );
+        let n = j * self.grid.nx + i;
+        self.fixed[n] = true;
+        self.heights[n] = height_m;
+    }
+
+    /// The borrowed view the solver takes.
+    pub fn problem(&self) -> Problem<'_> {
+        Problem {
+            grid: self.grid,
+            gx: &self.gx,
+            gz: &self.gz,
+            fixed: &self.fixed,
+            heights: &self.heights,
+        }
+    }
+}
+
 impl Problem<'_> {
     /// Checks the lengths and that every value the solver reads is finite.
     ///
