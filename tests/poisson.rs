@@ -133,38 +133,13 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
         ("513² terrain, V", 513, Cycle::V),
         ("257² terrain, W", 257, Cycle::W),
     ] {
-        let p = terrain(n);
         let opts = SolveOptions {
             tolerance: 1e-11,
             cycle,
             ..SolveOptions::default()
         };
-        let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
-        let f = report.factors();
-        println!(
-            "{label}, border only: {} cycles, residuals {:?}, factors {:?}",
-            report.cycles,
-            report
-                .relative_residuals
-                .iter()
-                .map(|r| format!("{r:.2e}"))
-                .collect::<Vec<_>>(),
-            f.iter().map(|r| format!("{r:.3}")).collect::<Vec<_>>()
-        );
-        assert!(report.converged, "{label}: {report:?}");
-        assert!(f.len() >= 3, "{label}: too few cycles to judge: {f:?}");
-        for (k, x) in f.iter().enumerate() {
-            assert!(
-                *x < 0.2,
-                "{label}: cycle {} reduced the residual by only {x:.3}",
-                k + 1
-            );
-        }
-        let tail = &f[1..];
-        let (lo, hi) = tail
-            .iter()
-            .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)));
-        assert!(hi - lo < 0.05, "{label}: factors not steady: {f:?}");
+        let f = cycle_factors(&terrain(n), opts, &format!("{label}, border only"));
+        assert_steady(&f, label);
     }
     // With interior constraints (a point, a curve and a painted disc at conflicting heights) the
     // Galerkin coarse operators keep plain W-cycles steady at the border-only rate.
@@ -175,18 +150,7 @@ fn each_cycle_reduces_the_residual_by_a_steady_factor() {
         let mut p = terrain(n);
         add_constraints(&mut p);
         let f = plain_factors(&p, Cycle::W, label);
-        for (k, x) in f.iter().enumerate() {
-            assert!(
-                *x < STEADY_BOUND,
-                "{label}: cycle {} reduced the residual by only {x:.3}",
-                k + 1
-            );
-        }
-        let (lo, hi) = spread(&f[1..]);
-        assert!(
-            hi - lo < STEADY_SPREAD,
-            "{label}: factors not steady: {f:?}"
-        );
+        assert_steady(&f, label);
     }
     // Plain V-cycles with the same constraints: fast at first, then steady at a slower rate set
     // by the isolated fixed point (the coarse levels cannot shape its logarithmic dip; the
@@ -232,10 +196,16 @@ fn plain_factors(p: &OwnedProblem, cycle: Cycle, label: &str) -> Vec<f64> {
         acceleration: Acceleration::None,
         ..SolveOptions::default()
     };
+    cycle_factors(p, opts, &format!("{label}, plain cycles"))
+}
+
+/// Solves with `opts`, prints the residuals and per-cycle factors under `label`, checks that the
+/// solve converged with at least three factors to judge and returns the factors.
+fn cycle_factors(p: &OwnedProblem, opts: SolveOptions, label: &str) -> Vec<f64> {
     let (_, report) = reconstruct(&p.problem(), opts).expect("solve");
     let f = report.factors();
     println!(
-        "{label}, plain cycles: {} cycles, residuals {:?}, factors {:?}",
+        "{label}: {} cycles, residuals {:?}, factors {:?}",
         report.cycles,
         report
             .relative_residuals
@@ -249,13 +219,30 @@ fn plain_factors(p: &OwnedProblem, cycle: Cycle, label: &str) -> Vec<f64> {
     f
 }
 
+/// Every factor is below [`STEADY_BOUND`], and after the first they spread by less than
+/// [`STEADY_SPREAD`].
+fn assert_steady(f: &[f64], label: &str) {
+    for (k, x) in f.iter().enumerate() {
+        assert!(
+            *x < STEADY_BOUND,
+            "{label}: cycle {} reduced the residual by only {x:.3}",
+            k + 1
+        );
+    }
+    let (lo, hi) = spread(&f[1..]);
+    assert!(
+        hi - lo < STEADY_SPREAD,
+        "{label}: factors not steady: {f:?}"
+    );
+}
+
 /// `(min, max)` of the factors.
 fn spread(f: &[f64]) -> (f64, f64) {
     f.iter()
         .fold((f64::MAX, 0.0f64), |(a, b), x| (a.min(*x), b.max(*x)))
 }
 
-/// Largest per-cycle factor accepted with interior constraints.
+/// Largest per-cycle factor accepted.
 const STEADY_BOUND: f64 = 0.2;
 /// Largest spread of the per-cycle factors after the first one.
 const STEADY_SPREAD: f64 = 0.05;
