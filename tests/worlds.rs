@@ -836,40 +836,28 @@ async fn bad_input_names_the_field() {
     // World creation.
     let mut scene = Scene::default().to_value();
     scene["world"]["biomes"][2]["generator"]["hurst"] = json!(5);
-    post_json(
-        &app,
-        "/v1/worlds",
-        None,
-        &json!({"seed": 1, "scene": scene}),
-    )
-    .await
-    .error(
-        StatusCode::BAD_REQUEST,
-        "invalid_scene",
-        Some("/scene/world/biomes/2/generator/hurst"),
-    );
-    post_json(&app, "/v1/worlds", None, &json!({"seed": "x1"}))
-        .await
-        .error(StatusCode::BAD_REQUEST, "bad_seed", Some("/seed"));
-    post_json(
-        &app,
-        "/v1/worlds",
-        None,
-        &json!({"seed": 1, "colour": "red"}),
-    )
-    .await
-    .error(StatusCode::BAD_REQUEST, "bad_body", None);
-    post_json(&app, "/v1/worlds", None, &json!({"scene": {}}))
-        .await
-        .error(StatusCode::BAD_REQUEST, "bad_body", Some("body"));
-    post_json(
-        &app,
-        "/v1/worlds",
-        None,
-        &json!({"seed": 1, "public": "yes"}),
-    )
-    .await
-    .error(StatusCode::BAD_REQUEST, "bad_body", Some("/public"));
+    let bad_bodies = [
+        (
+            json!({"seed": 1, "scene": scene}),
+            "invalid_scene",
+            Some("/scene/world/biomes/2/generator/hurst"),
+        ),
+        (json!({"seed": "x1"}), "bad_seed", Some("/seed")),
+        (json!({"seed": 1, "colour": "red"}), "bad_body", None),
+        (json!({"scene": {}}), "bad_body", Some("body")),
+        (
+            json!({"seed": 1, "public": "yes"}),
+            "bad_body",
+            Some("/public"),
+        ),
+    ];
+    for (body, code, field) in bad_bodies {
+        post_json(&app, "/v1/worlds", None, &body).await.error(
+            StatusCode::BAD_REQUEST,
+            code,
+            field,
+        );
+    }
     send(
         &app,
         Method::POST,
