@@ -338,30 +338,37 @@ async fn bare_seed_world_serves_the_seed_products_with_version_caching() {
         .body
     );
 
-    get(
-        &app,
-        &format!("/v1/worlds/{}/tiles/1/-2/3.bin?v=2", w.id),
-        None,
-    )
-    .await
-    .error(StatusCode::NOT_FOUND, "version_not_found", Some("v"));
-    get(
-        &app,
-        &format!("/v1/worlds/{}/tiles/1/-2/3.bin?v=x", w.id),
-        None,
-    )
-    .await
-    .error(StatusCode::BAD_REQUEST, "bad_version", Some("v"));
-    get(&app, &format!("/v1/worlds/{}/tiles/13/0/0.bin", w.id), None)
-        .await
-        .error(StatusCode::BAD_REQUEST, "lod_out_of_range", Some("lod"));
-    get(
-        &app,
-        &format!("/v1/worlds/{}/scatter/0/0/0.bin", w.id),
-        None,
-    )
-    .await
-    .error(StatusCode::BAD_REQUEST, "unknown_format", Some("format"));
+    let refused = [
+        (
+            "tiles/1/-2/3.bin?v=2",
+            StatusCode::NOT_FOUND,
+            "version_not_found",
+            "v",
+        ),
+        (
+            "tiles/1/-2/3.bin?v=x",
+            StatusCode::BAD_REQUEST,
+            "bad_version",
+            "v",
+        ),
+        (
+            "tiles/13/0/0.bin",
+            StatusCode::BAD_REQUEST,
+            "lod_out_of_range",
+            "lod",
+        ),
+        (
+            "scatter/0/0/0.bin",
+            StatusCode::BAD_REQUEST,
+            "unknown_format",
+            "format",
+        ),
+    ];
+    for (path, status, code, field) in refused {
+        get(&app, &format!("/v1/worlds/{}/{path}", w.id), None)
+            .await
+            .error(status, code, Some(field));
+    }
 }
 
 /// A scene whose world differs from the default, so its products are not the seed's.
