@@ -68,12 +68,7 @@ struct World {
 
 async fn create(app: &Router, token: Option<&str>, body: Value) -> World {
     let r = post_json(app, "/v1/worlds", token, &body).await;
-    assert_eq!(
-        r.status,
-        StatusCode::CREATED,
-        "{}",
-        String::from_utf8_lossy(&r.body)
-    );
+    r.status_is(StatusCode::CREATED);
     let v = r.json();
     assert_eq!(v["version"], 1);
     let id = v["id"].as_str().expect("id").to_string();
@@ -125,12 +120,7 @@ async fn create_edit_read_and_versions() {
     assert_eq!(r.header("etag"), Some("\"1\""));
 
     let r = edit(&app, &w.id, tok, Some("1"), &add_region("hill", 100.0)).await;
-    assert_eq!(
-        r.status,
-        StatusCode::OK,
-        "{}",
-        String::from_utf8_lossy(&r.body)
-    );
+    r.ok();
     assert_eq!(r.json()["version"], 2);
     assert_eq!(
         r.json()["dirty"],
@@ -218,23 +208,13 @@ async fn region_stats_read_the_authored_heights() {
     let base = format!("/v1/worlds/{}/regions/peak/stats", w.id);
 
     let r = get(&app, &format!("{base}?point=64,64"), tok).await;
-    assert_eq!(
-        r.status,
-        StatusCode::OK,
-        "{}",
-        String::from_utf8_lossy(&r.body)
-    );
+    r.ok();
     let s = &r.json()["stats"];
     let e = s["elevation_mean_m"].as_f64().expect("elevation");
     assert!((e - 333.0).abs() < 1e-3, "elevation at the constraint {e}");
     // Around the peak the slopes are real numbers of degrees, steepest at least the mean.
     let r = get(&app, &format!("{base}?rect=40,40;90,90&v=2"), tok).await;
-    assert_eq!(
-        r.status,
-        StatusCode::OK,
-        "{}",
-        String::from_utf8_lossy(&r.body)
-    );
+    r.ok();
     let s = &r.json()["stats"];
     let (mean, steep) = (
         s["mean_slope_deg"].as_f64().expect("mean"),
