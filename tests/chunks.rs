@@ -12,9 +12,7 @@ use std::collections::{HashMap, HashSet};
 use strata::compute::Compute;
 use strata::server::{app, AppState};
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
-use strata::volume::chunk::{
-    gather_columns, mesh_chunk, tiles_needed, ChunkKey, ChunkMesh, TileColumns,
-};
+use strata::volume::chunk::{mesh_chunk, tiles_needed, ChunkKey, ChunkMesh};
 use strata::volume::mesh::{QuadMesh, NONE};
 use tower::ServiceExt;
 
@@ -42,19 +40,7 @@ impl World {
             let plan = &self.plan;
             self.tiles.entry(tk).or_insert_with(|| synthesize(plan, tk));
         }
-        let views: Vec<TileColumns<'_>> = needed
-            .iter()
-            .map(|&(x, z)| {
-                let t = &self.tiles[&TileKey { lod: key.lod, x, z }];
-                TileColumns {
-                    tile: (x, z),
-                    heights: &t.heights,
-                    normals: &t.normals,
-                    materials: &t.materials,
-                }
-            })
-            .collect();
-        let cols = gather_columns(key, &views).expect("tiles present");
+        let cols = common::columns::columns(key, &self.tiles);
         let s = self.plan.lods[key.lod as usize].spacing_m;
         mesh_chunk(key, s, &cols, &mut QuadMesh::default()).expect("mesh")
     }

@@ -15,9 +15,7 @@ use strata::subsurface::carve::mesh_world_chunk;
 use strata::subsurface::world::carved_at;
 use strata::subsurface::{ElementKind, Geology, StrataSpec, SubsurfaceConfig};
 use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
-use strata::volume::chunk::{
-    gather_columns, tiles_needed, ChunkKey, ChunkMesh, TileColumns, NO_GEOLOGY,
-};
+use strata::volume::chunk::{tiles_needed, ChunkKey, ChunkMesh, NO_GEOLOGY};
 use strata::volume::mesh::QuadMesh;
 
 mod common;
@@ -78,19 +76,7 @@ impl World {
         for &(x, z) in &needed {
             self.tile(TileKey { lod: key.lod, x, z });
         }
-        let views: Vec<TileColumns<'_>> = needed
-            .iter()
-            .map(|&(x, z)| {
-                let t = &self.tiles[&TileKey { lod: key.lod, x, z }];
-                TileColumns {
-                    tile: (x, z),
-                    heights: &t.heights,
-                    normals: &t.normals,
-                    materials: &t.materials,
-                }
-            })
-            .collect();
-        let cols = gather_columns(key, &views).expect("tiles present");
+        let cols = common::columns::columns(key, &self.tiles);
         let s = self.plan.lods[key.lod as usize].spacing_m;
         mesh_world_chunk(
             key,

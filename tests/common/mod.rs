@@ -3,6 +3,7 @@
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
+pub mod columns;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
