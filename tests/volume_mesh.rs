@@ -10,6 +10,8 @@ use strata::volume::mesh::{
     surface_nets, MeshOptions, QuadClass, QuadMesh, SampleAttributes, NONE, UV_TRANSFORMS,
 };
 
+mod common;
+
 fn grid(dims: [usize; 3], f: impl Fn(f32, f32, f32) -> f32) -> Vec<f32> {
     let mut out = Vec::with_capacity(dims[0] * dims[1] * dims[2]);
     for z in 0..dims[2] {
@@ -72,34 +74,9 @@ fn topology(m: &QuadMesh) -> (i64, i64, i64, usize) {
             "edge {a}-{b} is a boundary edge: the mesh is not watertight"
         );
     }
-    let edges = directed.len() / 2;
-    // Components by union-find over the quads' vertices.
-    let mut parent: Vec<usize> = (0..m.vertex_count()).collect();
-    fn find(p: &mut [usize], mut i: usize) -> usize {
-        while p[i] != i {
-            p[i] = p[p[i]];
-            i = p[i];
-        }
-        i
-    }
-    for q in &m.quads {
-        for k in 1..4 {
-            let (a, b) = (
-                find(&mut parent, q[0] as usize),
-                find(&mut parent, q[k] as usize),
-            );
-            parent[a] = b;
-        }
-    }
-    let roots: HashSet<usize> = (0..m.vertex_count())
-        .map(|i| find(&mut parent, i))
-        .collect();
-    (
-        m.vertex_count() as i64,
-        edges as i64,
-        m.quad_count() as i64,
-        roots.len(),
-    )
+    let counts = common::topology::counts(m);
+    assert_eq!(counts.1 as usize, directed.len() / 2, "undirected edges");
+    counts
 }
 
 #[test]

@@ -17,6 +17,8 @@ use strata::volume::pipeline::{
     generate, regenerate, scenes, Grid, PipelineError, PipelineParams, Scene,
 };
 
+mod common;
+
 fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
@@ -826,43 +828,6 @@ fn padded(f: &strata::volume::pipeline::RegionFields) -> ([usize; 3], Vec<f32>) 
     (d, out)
 }
 
-/// Vertices, undirected edges, quads and connected components of a quad mesh.
-fn mesh_topology(m: &strata::volume::mesh::QuadMesh) -> (i64, i64, i64, usize) {
-    let mut edges = std::collections::BTreeSet::new();
-    for q in &m.quads {
-        for k in 0..4 {
-            let (a, b) = (q[k], q[(k + 1) % 4]);
-            edges.insert((a.min(b), a.max(b)));
-        }
-    }
-    let mut parent: Vec<usize> = (0..m.vertex_count()).collect();
-    fn find(p: &mut [usize], mut i: usize) -> usize {
-        while p[i] != i {
-            p[i] = p[p[i]];
-            i = p[i];
-        }
-        i
-    }
-    for q in &m.quads {
-        for k in 1..4 {
-            let (a, b) = (
-                find(&mut parent, q[0] as usize),
-                find(&mut parent, q[k] as usize),
-            );
-            parent[a] = b;
-        }
-    }
-    let roots: std::collections::BTreeSet<usize> = (0..m.vertex_count())
-        .map(|i| find(&mut parent, i))
-        .collect();
-    (
-        m.vertex_count() as i64,
-        edges.len() as i64,
-        m.quad_count() as i64,
-        roots.len(),
-    )
-}
-
 #[test]
 fn arch_mesh_has_genus_one() {
     use strata::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
@@ -877,7 +842,7 @@ fn arch_mesh_has_genus_one() {
         &mut m,
     )
     .expect("mesh");
-    let (v, e, q, comps) = mesh_topology(&m);
+    let (v, e, q, comps) = common::topology::counts(&m);
     eprintln!(
         "arch mesh: V={v} E={e} F={q}, {comps} component(s), χ = {}",
         v - e + q

@@ -15,7 +15,6 @@ use strata::server::{app, AppState};
 use strata::terrain::{TileKey, WorldParams, WorldPlan};
 use strata::volume::element::{solve_volume, VolumeSpec};
 use strata::volume::mesh_import::{triangles_to_glb, write_glb, Mat4, IDENTITY};
-use strata::volume::pipeline::scenes;
 
 mod common;
 
@@ -64,21 +63,6 @@ fn ground_at(x: i64, z: i64) -> f32 {
     let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
     let t = synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 }, &TileEdits::default());
     t.heights[(z * 65 + x) as usize]
-}
-
-/// The arch element of `tests/volume_world.rs`, standing on the ground at the box centre.
-fn arch_element(ground: f32) -> Value {
-    let (_, scene, _) = scenes::arch([64, 32, 48]);
-    let mut curves = serde_json::to_value(&scene.curves).expect("curves");
-    for c in curves.as_array_mut().expect("array") {
-        for p in c["control_points"].as_array_mut().expect("points") {
-            let y = p[1].as_f64().expect("y");
-            p[1] = json!(y - 4.0 + f64::from(ground));
-        }
-    }
-    json!({"id": "arch", "bbox": {"min": [0, 0], "max": [64, 48]},
-           "y_m": [ground - 12.0, ground + 36.0], "spacing_m": 1.0, "dead_zone_m": 6.0,
-           "curves": curves})
 }
 
 /// The unit cube `[-1, 1]³` as 12 triangles, counter-clockwise seen from outside.
@@ -337,7 +321,11 @@ async fn bad_glb_is_refused_with_the_field_named() {
 async fn concurrent_uploads_without_if_match_all_land_at_their_reported_index() {
     let ground = ground_at(24, 24);
     let app = app(AppState::new(Compute::cpu()));
-    let (id, token) = create(&app, json!({ "volumes": [arch_element(ground)] })).await;
+    let (id, token) = create(
+        &app,
+        json!({ "volumes": [common::arch::arch_element(ground)] }),
+    )
+    .await;
     let auth = format!("Bearer {token}");
     let upload = |material: u16| {
         let (app, auth, id) = (app.clone(), auth.clone(), id.clone());
@@ -386,7 +374,11 @@ async fn concurrent_uploads_without_if_match_all_land_at_their_reported_index() 
 async fn the_region_mesh_glb_passes_the_khronos_validator() {
     let ground = ground_at(32, 24);
     let app = app(AppState::new(Compute::cpu()));
-    let (id, _) = create(&app, json!({ "volumes": [arch_element(ground)] })).await;
+    let (id, _) = create(
+        &app,
+        json!({ "volumes": [common::arch::arch_element(ground)] }),
+    )
+    .await;
     let uri = format!("/v1/worlds/{id}/volumes/arch/mesh.glb?v=1");
     let (s, h, glb) = send(&app, Method::GET, &uri, &[], vec![]).await;
     assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&glb));
@@ -430,7 +422,7 @@ async fn the_region_mesh_glb_passes_the_khronos_validator() {
 async fn curves_round_trip_as_json_through_versioned_edits() {
     let ground = ground_at(32, 24);
     let app = app(AppState::new(Compute::cpu()));
-    let element = arch_element(ground);
+    let element = common::arch::arch_element(ground);
     let (id, token) = create(&app, json!({ "volumes": [element.clone()] })).await;
     let auth = format!("Bearer {token}");
     let uri = format!("/v1/worlds/{id}/volumes/arch/curves.json");
@@ -512,7 +504,7 @@ async fn curves_round_trip_as_json_through_versioned_edits() {
 #[test]
 fn expand_curves_in_the_element_runs_the_expansion_stage() {
     let ground = ground_at(32, 24);
-    let plain = arch_element(ground);
+    let plain = common::arch::arch_element(ground);
     let mut expanded = plain.clone();
     expanded["expand_curves"] = json!({ "step_m": 0.5, "spacing_m": 2.0, "min_distance_m": 3.0 });
     let (a, b) = (solve(&plain), solve(&expanded));

@@ -10,10 +10,11 @@ use strata::edits::{synthesize, TileEdits};
 use strata::scene::{Element, Scene};
 use strata::subsurface::carve::mesh_world_chunk;
 use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
-use strata::volume::chunk::{gather_columns, tiles_needed, ChunkKey, ChunkMesh, TileColumns};
+use strata::volume::chunk::{tiles_needed, ChunkKey, ChunkMesh};
 use strata::volume::element::{solve_volume, SolvedVolume, VolumeSpec};
 use strata::volume::mesh::{QuadClass, QuadMesh};
-use strata::volume::pipeline::scenes;
+
+mod common;
 
 const SEED: u64 = 7;
 
@@ -32,34 +33,10 @@ fn tiles(plan: &WorldPlan, key: ChunkKey) -> Vec<(TileKey, Tile)> {
 }
 
 fn chunk(plan: &WorldPlan, key: ChunkKey, volumes: &[Arc<SolvedVolume>]) -> ChunkMesh {
-    let t = tiles(plan, key);
-    let views: Vec<TileColumns<'_>> = t
-        .iter()
-        .map(|(k, t)| TileColumns {
-            tile: (k.x, k.z),
-            heights: &t.heights,
-            normals: &t.normals,
-            materials: &t.materials,
-        })
-        .collect();
-    let cols = gather_columns(key, &views).expect("tiles present");
+    let tiles = tiles(plan, key).into_iter().collect();
+    let cols = common::columns::columns(key, &tiles);
     let s = plan.lods[key.lod as usize].spacing_m;
     mesh_world_chunk(key, s, &cols, volumes, &[], &mut QuadMesh::default()).expect("mesh")
-}
-
-/// The arch scene's curves lifted so their feet stand on the world's ground at the box centre.
-fn arch_element(ground: f32) -> Value {
-    let (_, scene, _) = scenes::arch([64, 32, 48]);
-    let mut curves = serde_json::to_value(&scene.curves).expect("curves");
-    for c in curves.as_array_mut().expect("array") {
-        for p in c["control_points"].as_array_mut().expect("points") {
-            let y = p[1].as_f64().expect("y");
-            p[1] = json!(y - 4.0 + f64::from(ground));
-        }
-    }
-    json!({"id": "arch", "bbox": {"min": [0, 0], "max": [64, 48]},
-           "y_m": [ground - 12.0, ground + 36.0], "spacing_m": 1.0, "dead_zone_m": 6.0,
-           "curves": curves})
 }
 
 fn ground_at(plan: &WorldPlan, x: i64, z: i64) -> f32 {
@@ -92,7 +69,8 @@ fn crossings(meshes: &[ChunkMesh], gx: i64, gz: i64) -> usize {
 fn a_volume_element_puts_an_arch_into_the_chunks_and_leaves_the_rest() {
     let plan = plan();
     let ground = ground_at(&plan, 32, 24);
-    let spec = VolumeSpec::from_element(&element(arch_element(ground))).expect("valid element");
+    let spec = VolumeSpec::from_element(&element(common::arch::arch_element(ground)))
+        .expect("valid element");
     let solved = Arc::new(solve_volume(&plan, &spec, &TileEdits::default()).expect("solved"));
     let volumes = vec![solved];
     let ys = ((ground - 12.0) as i64).div_euclid(32)..=((ground + 36.0) as i64).div_euclid(32);
@@ -131,7 +109,7 @@ fn a_volume_element_puts_an_arch_into_the_chunks_and_leaves_the_rest() {
 #[test]
 fn volume_elements_are_validated_with_the_field_named() {
     let plan = plan();
-    let good = arch_element(ground_at(&plan, 32, 24));
+    let good = common::arch::arch_element(ground_at(&plan, 32, 24));
     let scene = |v: Value| Scene::from_value(&json!({ "volumes": [v] }));
     scene(good.clone()).expect("the arch element is valid");
     let mut bad = good.clone();
@@ -155,7 +133,9 @@ fn volume_elements_are_validated_with_the_field_named() {
 fn height_tiles_mark_the_vertices_a_volume_region_overrides() {
     let plan = plan();
     let ground = ground_at(&plan, 32, 24);
-    let spec = Arc::new(VolumeSpec::from_element(&element(arch_element(ground))).expect("valid"));
+    let spec = Arc::new(
+        VolumeSpec::from_element(&element(common::arch::arch_element(ground))).expect("valid"),
+    );
     let edits = TileEdits {
         volumes: vec![spec.clone()],
         ..TileEdits::default()
@@ -227,8 +207,10 @@ fn top_of_solid(v: &SolvedVolume, x: f32, z: f32) -> f32 {
 #[test]
 fn the_volume_ground_takes_the_authored_regions_over_the_box() {
     let plan = plan();
-    let spec = VolumeSpec::from_element(&element(arch_element(ground_at(&plan, 32, 24))))
-        .expect("valid element");
+    let spec = VolumeSpec::from_element(&element(common::arch::arch_element(ground_at(
+        &plan, 32, 24,
+    ))))
+    .expect("valid element");
     let (x, z) = (56.0f32, 8.0f32);
     let base = ground_at(&plan, 56, 8);
     let peak = base + 12.0;

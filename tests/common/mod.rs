@@ -3,10 +3,12 @@
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
+pub mod arch;
 pub mod columns;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
+pub mod topology;
 
 use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};
