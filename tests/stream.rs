@@ -275,7 +275,7 @@ async fn create_world(base: &str, public: bool) -> (String, String) {
     )
 }
 
-/// A minimal HTTP/1.1 request over TCP: status and body text.
+/// A minimal HTTP/1.1 request over TCP ([`strata::bench::http::http`]): status and body text.
 async fn raw_http(
     addr: &str,
     method: &str,
@@ -283,31 +283,10 @@ async fn raw_http(
     headers: &[(&str, &str)],
     body: &str,
 ) -> (u16, String) {
-    use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut s = tokio::net::TcpStream::connect(addr).await.expect("connect");
-    let mut req = format!(
-        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n",
-        body.len()
-    );
-    for (k, v) in headers {
-        req.push_str(&format!("{k}: {v}\r\n"));
-    }
-    req.push_str("\r\n");
-    req.push_str(body);
-    s.write_all(req.as_bytes()).await.expect("send");
-    let mut raw = Vec::new();
-    s.read_to_end(&mut raw).await.expect("read");
-    let text = String::from_utf8_lossy(&raw).to_string();
-    let status = text
-        .split_whitespace()
-        .nth(1)
-        .and_then(|c| c.parse().ok())
-        .expect("status");
-    let body = text
-        .split_once("\r\n\r\n")
-        .map(|(_, b)| b.to_string())
-        .unwrap_or_default();
-    (status, body)
+    let (status, body) = strata::bench::http::http(addr, method, path, headers, body)
+        .await
+        .expect("HTTP exchange");
+    (status, String::from_utf8_lossy(&body).into_owned())
 }
 
 /// Reads until `idle`, returning the frames and control messages seen.

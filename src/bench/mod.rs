@@ -8,6 +8,7 @@
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`].
 
+pub mod http;
 pub mod poisson;
 pub mod serve;
 pub mod strata;

@@ -10,6 +10,7 @@
 //! and `nginx` are separate processes (`apt-get install wrk nginx-light`).
 
 use super::emit;
+use super::http::{http, http_get};
 use crate::cli::BenchArgs;
 use crate::compute::Compute;
 use crate::server::{app, AppState};
@@ -211,44 +212,6 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         ),
     );
     Ok(())
-}
-
-async fn http_get(addr: &str, path: &str) -> anyhow::Result<(u16, Vec<u8>)> {
-    http(addr, "GET", path, &[], "").await
-}
-
-async fn http(
-    addr: &str,
-    method: &str,
-    path: &str,
-    headers: &[(&str, &str)],
-    body: &str,
-) -> anyhow::Result<(u16, Vec<u8>)> {
-    use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut s = tokio::net::TcpStream::connect(addr).await?;
-    let mut req = format!(
-        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n",
-        body.len()
-    );
-    for (k, v) in headers {
-        req.push_str(&format!("{k}: {v}\r\n"));
-    }
-    req.push_str("\r\n");
-    req.push_str(body);
-    s.write_all(req.as_bytes()).await?;
-    let mut raw = Vec::new();
-    s.read_to_end(&mut raw).await?;
-    let split = raw
-        .windows(4)
-        .position(|w| w == b"\r\n\r\n")
-        .context("no header end")?;
-    let head = String::from_utf8_lossy(&raw[..split]);
-    let status = head
-        .split_whitespace()
-        .nth(1)
-        .and_then(|c| c.parse().ok())
-        .context("no status")?;
-    Ok((status, raw[split + 4..].to_vec()))
 }
 
 /// Latencies (ms, sorted) from each edit's acknowledgement to each subscriber's `invalidate`.
