@@ -238,6 +238,32 @@ impl Solver {
             })
     }
 
+    /// Refuses a problem on another grid, naming the field `grid`.
+    fn check_grid(&self, problem: &Problem) -> Result<(), PoissonError> {
+        if problem.grid == self.grid() {
+            return Ok(());
+        }
+        Err(PoissonError::field(
+            "grid",
+            format!(
+                "{:?} differs from the solver's {:?}",
+                problem.grid,
+                self.grid()
+            ),
+        ))
+    }
+
+    /// Runs `work` on the solver's own thread pool if it has one, else on rayon's global pool.
+    fn on_pool<T: Send>(&mut self, work: impl FnOnce(&mut Self) -> T + Send) -> T {
+        let pool = self.pool.take();
+        let out = match &pool {
+            Some(p) => p.install(|| work(self)),
+            None => work(self),
+        };
+        self.pool = pool;
+        out
+    }
+
     /// The hierarchy, finest level first (for diagnostics and the WGSL twin).
     pub fn levels(&self) -> &[Level] {
         &self.levels
@@ -250,19 +276,9 @@ impl Solver {
     /// # Errors
     /// As [`Self::solve`].
     pub fn load(&mut self, problem: &Problem) -> Result<f64, PoissonError> {
-        if problem.grid != self.grid() {
-            return Err(PoissonError::field(
-                "grid",
-                format!(
-                    "{:?} differs from the solver's {:?}",
-                    problem.grid,
-                    self.grid()
-                ),
-            ));
-        }
+        self.check_grid(problem)?;
         problem.validate()?;
-        let pool = self.pool.take();
-        let run = |s: &mut Self| {
+        Ok(self.on_pool(|s| {
             s.update_mask(problem, 0, usize::MAX);
             s.has_solution = true;
             s.last_converged = false;
@@ -270,13 +286,7 @@ impl Solver {
                 .load_tracked(&mut s.levels[0], &mut s.rhs_rows)
                 .0
                 .sqrt()
-        };
-        let norm = match &pool {
-            Some(p) => p.install(|| run(self)),
-            None => run(self),
-        };
-        self.pool = pool;
-        Ok(norm)
+        }))
     }
 
     /// Solves `problem` from `start`; the solution stays in the solver (read it with
@@ -286,16 +296,7 @@ impl Solver {
     /// [`PoissonError::Field`] if the problem is invalid ([`Problem::validate`]), its grid is not
     /// the solver's (`grid`), or `start` heights have the wrong length or non-finite values.
     pub fn solve(&mut self, problem: &Problem, start: Start) -> Result<SolveReport, PoissonError> {
-        if problem.grid != self.grid() {
-            return Err(PoissonError::field(
-                "grid",
-                format!(
-                    "{:?} differs from the solver's {:?}",
-                    problem.grid,
-                    self.grid()
-                ),
-            ));
-        }
+        self.check_grid(problem)?;
         problem.validate()?;
         if let Start::From(h) = start {
             if h.len() != problem.grid.len() {
@@ -315,13 +316,7 @@ impl Solver {
                 ));
             }
         }
-        let pool = self.pool.take();
-        let report = match &pool {
-            Some(p) => p.install(|| self.run(problem, start)),
-            None => self.run(problem, start),
-        };
-        self.pool = pool;
-        Ok(report)
+        Ok(self.on_pool(|s| s.run(problem, start)))
     }
 
     /// A warm re-solve after an edit confined to `damage`, a rectangle of samples (bounds
@@ -344,13 +339,8 @@ impl Solver {
         problem: &Problem,
         damage: Rect,
     ) -> Result<SolveReport, PoissonError> {
+        self.check_grid(problem)?;
         let g = self.grid();
-        if problem.grid != g {
-            return Err(PoissonError::field(
-                "grid",
-                format!("{:?} differs from the solver's {g:?}", problem.grid),
-            ));
-        }
         if damage.i0 > damage.i1 || damage.j0 > damage.j1 || damage.i1 >= g.nx || damage.j1 >= g.nz
         {
             return Err(PoissonError::field(
@@ -365,8 +355,7 @@ impl Solver {
             return self.solve(problem, Start::Warm);
         }
         problem.validate_rows(damage.j0, damage.j1)?;
-        let pool = self.pool.take();
-        let run = |s: &mut Self| {
+        Ok(self.on_pool(|s| {
             let relaxed_before = s.relaxed();
             let mask_change = s.update_mask(problem, damage.j0, damage.j1);
             let (bb, load_change) = problem.load_rows(
@@ -391,13 +380,7 @@ impl Solver {
                 (a, b) => a.or(b),
             };
             s.finish(Start::Warm, bb, change, relaxed_before)
-        };
-        let report = match &pool {
-            Some(p) => p.install(|| run(self)),
-            None => run(self),
-        };
-        self.pool = pool;
-        Ok(report)
+        }))
     }
 
     /// The solution in metres, row-major `nx · nz`, rounded to `f32` (fixed samples are exactly
