@@ -1,5 +1,7 @@
-//! Helpers shared by the integration tests: the real `strata` binary ([`start`]) and requests to
-//! the router in-process ([`oneshot`]).
+//! Helpers shared by the integration tests: the real `strata` binary ([`start`]), requests to
+//! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
+//! quad mesh's Euler counts ([`topology`]), the arch volume element ([`arch`]), the Khronos glTF
+//! validator ([`gltf`]) and the Node packages of the browser tests ([`js`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
