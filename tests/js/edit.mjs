@@ -7,18 +7,16 @@
 // takes a second screenshot. Fails unless the picture changed around the click (mean luminance
 // difference above EDITED_MIN in a box there) and not far from it (below FAR_MAX in patches
 // at the left and right edges, hundreds of metres outside the edit's region).
-import { chromium } from "playwright-core";
+import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { dirname, join } from "node:path";
+import { mkdirSync, writeFileSync } from "node:fs";
+import { dirname } from "node:path";
 
 const [addr, beforePath, afterPath] = process.argv.slice(2);
 if (!addr || !beforePath || !afterPath) {
   console.error("usage: node edit.mjs <host:port> <before.png> <after.png>");
   process.exit(2);
 }
-const CHROMIUM = process.env.STRATA_CHROMIUM ?? "/usr/bin/chromium";
 const W = 1280;
 const H = 720;
 const EDITED_MIN = 2.0; // mean |Δ luminance| in the box around the click, 0…255
@@ -40,24 +38,7 @@ console.log(`world ${world.id}: ${url}`);
 
 const failures = [];
 const consoleErrors = [];
-const userDataDir = mkdtempSync(join(tmpdir(), "strata-chromium-"));
-const browser = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: CHROMIUM,
-  headless: true,
-  viewport: { width: W, height: H },
-  args: [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-  ],
-});
+const { browser, close } = await launch(W, H);
 
 function luminance(png) {
   const img = PNG.sync.read(png);
@@ -126,8 +107,7 @@ try {
   if (farLeft > FAR_MAX || farRight > FAR_MAX)
     failures.push(`far from the edit the picture changed (${farLeft.toFixed(2)}, ${farRight.toFixed(2)} > ${FAR_MAX})`);
 } finally {
-  await browser.close();
-  rmSync(userDataDir, { recursive: true, force: true });
+  await close();
 }
 if (consoleErrors.length) failures.push(`console errors:\n  ${consoleErrors.join("\n  ")}`);
 if (failures.length) {

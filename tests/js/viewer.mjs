@@ -4,48 +4,24 @@
 // Fails (exit 1) unless: the page has a WebGL2 context, at least MIN_TILES tiles arrive, no console
 // errors, no page errors, no errors shown by the viewer, and the screenshot is not blank (pixel
 // variance above a threshold, and both sky and terrain present).
-import { chromium } from "playwright-core";
+import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
-import { copyFileSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { dirname, join } from "node:path";
+import { copyFileSync, mkdirSync } from "node:fs";
+import { dirname } from "node:path";
 
 const [url, shot, ...copies] = process.argv.slice(2);
 if (!url || !shot) {
   console.error("usage: node viewer.mjs <url> <screenshot.png> [copy.png …]");
   process.exit(2);
 }
-const CHROMIUM = process.env.STRATA_CHROMIUM ?? "/usr/bin/chromium";
 const MIN_TILES = 50;
 const TILE_TIMEOUT_MS = 45_000;
 const MIN_VARIANCE = 150; // per-channel luminance variance over the image, 0…65025
 
-if (!existsSync(CHROMIUM)) {
-  console.error(`${CHROMIUM} is missing: install Debian's chromium (apt-get install -y chromium)`);
-  process.exit(1);
-}
 
 const failures = [];
 const consoleErrors = [];
-const userDataDir = mkdtempSync(join(tmpdir(), "strata-chromium-"));
-// A fresh profile each run (playwright passes it as --user-data-dir).
-const browser = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: CHROMIUM,
-  headless: true,
-  viewport: { width: 1280, height: 720 },
-  args: [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-  ],
-});
+const { browser, close } = await launch(1280, 720);
 try {
   const page = browser.pages()[0] ?? (await browser.newPage());
   page.on("console", (m) => {
@@ -139,8 +115,7 @@ try {
     failures.push(`idle with ${after.held} meshes held for a view of ${after.viewTiles} tiles`);
   if (after.errors.length) failures.push(`the viewer shows errors: ${after.errors.join(" | ")}`);
 } finally {
-  await browser.close();
-  rmSync(userDataDir, { recursive: true, force: true });
+  await close();
 }
 if (consoleErrors.length) failures.push(`console errors:\n  ${consoleErrors.join("\n  ")}`);
 if (failures.length) {
