@@ -70,12 +70,7 @@ pub fn lattice_cell(x: f32, z: f32, seed: u32) -> ([f32; 4], f32, f32) {
     let tx = x - fx;
     let tz = z - fz;
     let [h00, h10, h01, h11] = corner_hashes(fx as i32 as u32, fz as i32 as u32, seed);
-    let corners = [
-        gaussian(h00),
-        gaussian(h10),
-        gaussian(h01),
-        gaussian(h11),
-    ];
+    let corners = [gaussian(h00), gaussian(h10), gaussian(h01), gaussian(h11)];
     (corners, tx, tz)
 }
 

@@ -300,7 +300,8 @@ mod tests {
             let weights: Vec<f32> = (0..n * 4)
                 .map(|i| if i % 4 == b { 1.0 } else { 0.0 })
                 .collect();
-            let fast = batch_matching_per_vertex(&p, &heights, &ny, &weights, &format!("biome {b}"));
+            let fast =
+                batch_matching_per_vertex(&p, &heights, &ny, &weights, &format!("biome {b}"));
             seen.extend(fast);
         }
         // The inputs must reach every branch: water, beach, ground, rock and snow.
