@@ -37,15 +37,7 @@ impl Canvas {
         let n = self.grid.n;
         let h = self.grid.spacing_m;
         let talus = talus_deg.to_radians().tan() * h;
-        let weight: Vec<f64> = (0..n * n)
-            .map(|v| {
-                if self.fixed[v] {
-                    0.0
-                } else {
-                    falloff(dist(self.grid.position(v % n, v / n), center), radius)
-                }
-            })
-            .collect();
+        let weight = self.brush_weights(center, radius);
         let mut heights: Vec<f64> = (0..n * n)
             .map(|v| f64::from(self.base[v]) + f64::from(current[v]))
             .collect();

@@ -159,24 +159,10 @@ pub fn edge_line(
 mod tests {
     use super::*;
     use crate::authoring::spec_tools::resolve_elevations;
-    use crate::authoring::RegionGrid;
 
     /// A canvas over a bumpy field, 33 × 33 at 1 m.
     fn canvas() -> Canvas {
-        let n = 33;
-        let grid = RegionGrid {
-            origin: [0.0, 0.0],
-            spacing_m: 1.0,
-            n,
-            max: [32.0, 32.0],
-        };
-        let base = (0..n * n)
-            .map(|v| {
-                let (x, z) = ((v % n) as f64, (v / n) as f64);
-                (3.0 * (0.3 * x).sin() * (0.2 * z).cos()) as f32
-            })
-            .collect();
-        Canvas::new(grid, base)
+        Canvas::unit_grid(33, |x, z| (3.0 * (0.3 * x).sin() * (0.2 * z).cos()) as f32)
     }
 
     #[test]

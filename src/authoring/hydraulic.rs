@@ -31,7 +31,7 @@
 //!   its steps, leaving the brush or the grid) drops what it carries on the last movable cell it
 //!   crossed, so the total height is conserved to rounding.
 
-use super::raster::{dist, falloff, Canvas};
+use super::raster::Canvas;
 use crate::terrain::hash::{hash2, stream, unit};
 
 /// Hash purpose of the droplet seeds.
@@ -232,15 +232,7 @@ impl Canvas {
     ) -> (Vec<f64>, Vec<u32>) {
         let n = self.grid.n;
         let h = self.grid.spacing_m;
-        let weight: Vec<f64> = (0..n * n)
-            .map(|v| {
-                if self.fixed[v] {
-                    0.0
-                } else {
-                    falloff(dist(self.grid.position(v % n, v / n), center), radius)
-                }
-            })
-            .collect();
+        let weight = self.brush_weights(center, radius);
         let before: Vec<f64> = (0..n * n)
             .map(|v| (f64::from(self.base[v]) + f64::from(current[v])) / h)
             .collect();
@@ -284,6 +276,7 @@ pub fn droplet_seed(world_seed: u64, seed: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::authoring::raster::falloff;
 
     /// A valley: a plane tilted toward +z with a shallow V across x and hashed roughness, in
     /// cells, 65 × 65.

@@ -97,6 +97,39 @@ impl Canvas {
         }
     }
 
+    /// The weight of an elevation brush centred on `center` (world `[x, z]`, metres) with radius
+    /// `radius` (metres) at every sample, in sample order: the C² [`falloff`] of the sample's
+    /// distance to the centre, and 0 at fixed samples, which a brush never moves.
+    pub(super) fn brush_weights(&self, center: [f64; 2], radius: f64) -> Vec<f64> {
+        let n = self.grid.n;
+        (0..n * n)
+            .map(|v| {
+                if self.fixed[v] {
+                    0.0
+                } else {
+                    falloff(dist(self.grid.position(v % n, v / n), center), radius)
+                }
+            })
+            .collect()
+    }
+
+    /// For tests: an unedited canvas ([`Canvas::new`]) of `n × n` samples 1 m apart from the world
+    /// origin, over the procedural heights `base(x, z)` (metres) at each sample's world `x` and
+    /// `z` (metres).
+    #[cfg(test)]
+    pub(super) fn unit_grid(n: usize, base: impl Fn(f64, f64) -> f32) -> Self {
+        let grid = RegionGrid {
+            origin: [0.0, 0.0],
+            spacing_m: 1.0,
+            n,
+            max: [(n - 1) as f64, (n - 1) as f64],
+        };
+        let base = (0..n * n)
+            .map(|v| base((v % n) as f64, (v / n) as f64))
+            .collect();
+        Self::new(grid, base)
+    }
+
     pub(super) fn fix(&mut self, v: usize, height_m: f64) {
         if self.frozen[v] || !self.grid.is_interior(v % self.grid.n, v / self.grid.n) {
             return;

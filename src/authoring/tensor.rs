@@ -134,21 +134,10 @@ fn scaled(m: [[f64; 2]; 2], k: f64) -> [[f64; 2]; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::authoring::RegionGrid;
 
     /// A canvas over the tilted plane `h = 0.2·x + 0.1·z`.
     fn plane_canvas() -> Canvas {
-        let n = 33;
-        let grid = RegionGrid {
-            origin: [0.0, 0.0],
-            spacing_m: 1.0,
-            n,
-            max: [32.0, 32.0],
-        };
-        let base = (0..n * n)
-            .map(|v| (0.2 * (v % n) as f64 + 0.1 * (v / n) as f64) as f32)
-            .collect();
-        Canvas::new(grid, base)
+        Canvas::unit_grid(33, |x, z| (0.2 * x + 0.1 * z) as f32)
     }
 
     /// The target gradient of the heights at the edges next to sample (16, 16).

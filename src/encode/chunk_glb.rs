@@ -9,6 +9,7 @@
 //! without a mesh (glTF forbids empty accessors).
 
 use super::chunk::{ChunkInfo, CHUNK_FORMAT};
+use super::glb::{bounds, push_f32s};
 use crate::volume::chunk::ChunkMesh;
 use serde_json::json;
 
@@ -68,21 +69,10 @@ pub fn encode(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
         }
         nrm.extend(skirt_nrm);
         let idx = triangles(m);
-        let mut min = [f32::INFINITY; 3];
-        let mut max = [f32::NEG_INFINITY; 3];
-        for p in &pos {
-            for c in 0..3 {
-                min[c] = min[c].min(p[c]);
-                max[c] = max[c].max(p[c]);
-            }
-        }
-        for x in pos.iter().flatten() {
-            bin.extend_from_slice(&x.to_le_bytes());
-        }
+        let (min, max) = bounds(&pos);
+        push_f32s(&mut bin, pos.iter().flatten());
         let nrm_start = bin.len();
-        for x in nrm.iter().flatten() {
-            bin.extend_from_slice(&x.to_le_bytes());
-        }
+        push_f32s(&mut bin, nrm.iter().flatten());
         let idx_start = bin.len();
         for i in &idx {
             bin.extend_from_slice(&i.to_le_bytes());

@@ -116,10 +116,27 @@ pub fn vertices(tile: &Tile) -> Vertices {
     }
 }
 
-fn push_f32s<'a>(bin: &mut Vec<u8>, values: impl IntoIterator<Item = &'a f32>) {
+/// Appends `values` to `bin` as little-endian `f32`s.
+pub(super) fn push_f32s<'a>(bin: &mut Vec<u8>, values: impl IntoIterator<Item = &'a f32>) {
     for x in values {
         bin.extend_from_slice(&x.to_le_bytes());
     }
+}
+
+/// The axis-aligned bounds `(min, max)` of `positions` per coordinate, in their units (glTF's
+/// `POSITION` accessor needs them). The points are visited in order, so the result is the same as
+/// any loop of `f32::min` and `f32::max` over them in that order; empty input gives
+/// `([∞; 3], [−∞; 3])`.
+pub(super) fn bounds(positions: &[[f32; 3]]) -> ([f32; 3], [f32; 3]) {
+    let mut min = [f32::INFINITY; 3];
+    let mut max = [f32::NEG_INFINITY; 3];
+    for p in positions {
+        for c in 0..3 {
+            min[c] = min[c].min(p[c]);
+            max[c] = max[c].max(p[c]);
+        }
+    }
+    (min, max)
 }
 
 /// Encodes a tile as glTF 2.0 binary.
@@ -130,14 +147,7 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
         uvs: uv,
     } = vertices(tile);
     let idx = triangles();
-    let mut min = [f32::INFINITY; 3];
-    let mut max = [f32::NEG_INFINITY; 3];
-    for p in &pos {
-        for c in 0..3 {
-            min[c] = min[c].min(p[c]);
-            max[c] = max[c].max(p[c]);
-        }
-    }
+    let (min, max) = bounds(&pos);
 
     let mut bin = Vec::new();
     let mut views = Vec::new();

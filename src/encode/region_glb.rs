@@ -125,13 +125,7 @@ pub fn encode(v: &SolvedVolume, info: RegionInfo) -> Result<Vec<u8>, ExportError
     });
     let mut bin = Vec::new();
     if m.quad_count() > 0 {
-        let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-        for p in &m.positions {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (lo, hi) = super::glb::bounds(&m.positions);
         let mut views = Vec::new();
         let mut push =
             |bin: &mut Vec<u8>, values: &mut dyn Iterator<Item = [u8; 4]>, target: u32| {

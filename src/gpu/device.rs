@@ -10,7 +10,7 @@
 //! From then on [`GpuHandle::field`] returns `Err` at once, and `crate::compute::Compute` computes
 //! on the CPU.
 
-use super::tile::{TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
+use super::tile::{FieldJob, TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
 use crate::cli::BackendChoice;
 use crate::compute::AdapterInfo;
 use crate::terrain::tile::Field;
@@ -34,11 +34,7 @@ const STORAGE_BUFFERS: u32 = 8;
 enum Job {
     Field {
         plan: Arc<WorldPlan>,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
+        job: FieldJob,
         started: oneshot::Sender<()>,
         reply: oneshot::Sender<anyhow::Result<Field>>,
     },
@@ -116,11 +112,7 @@ impl GpuHandle {
         let (reply_tx, reply_rx) = oneshot::channel();
         let job = Job::Field {
             plan,
-            lod,
-            gx0,
-            gz0,
-            w,
-            h,
+            job: FieldJob::new(lod, gx0, gz0, w, h),
             started: started_tx,
             reply: reply_tx,
         };
@@ -372,11 +364,7 @@ fn device_thread(
         match job {
             Job::Field {
                 plan,
-                lod,
-                gx0,
-                gz0,
-                w,
-                h,
+                job,
                 started,
                 reply,
             } => {
@@ -386,7 +374,9 @@ fn device_thread(
                     continue;
                 }
                 let run = catch_unwind(AssertUnwindSafe(|| {
-                    kernels.field(&device, &queue, &plan, lod, gx0, gz0, w, h, Some(timeout))
+                    kernels
+                        .run(&device, &queue, &plan, job, Some(timeout), false)
+                        .map(|(field, _)| field)
                 }));
                 let result = match run {
                     Ok(result) => result,

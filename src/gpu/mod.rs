@@ -56,7 +56,7 @@ pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, GpuHandle,
 };
 pub use tile::{
-    field_on_device, field_params, tile_shader_source, TileKernels, DEFAULT_JOB_TIMEOUT,
+    field_on_device, field_params, tile_shader_source, FieldJob, TileKernels, DEFAULT_JOB_TIMEOUT,
 };
 
 #[cfg(test)]

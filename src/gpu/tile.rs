@@ -36,6 +36,34 @@ pub fn tile_shader_source() -> String {
     format!("{COMMON_WGSL}\n{TILE_WGSL}")
 }
 
+/// One field job: the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of LOD `lod`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FieldJob {
+    /// Level of detail: an index into `WorldPlan::lods`.
+    pub lod: u32,
+    /// Lattice x of the first sample (lattice units of the LOD).
+    pub gx0: i64,
+    /// Lattice z of the first sample (lattice units of the LOD).
+    pub gz0: i64,
+    /// Samples per row (along x).
+    pub w: usize,
+    /// Rows (along z).
+    pub h: usize,
+}
+
+impl FieldJob {
+    /// The job of the `w × h` samples from lattice point `(gx0, gz0)` of LOD `lod`.
+    pub fn new(lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Self {
+        Self {
+            lod,
+            gx0,
+            gz0,
+            w,
+            h,
+        }
+    }
+}
+
 /// Geometry and constants of one field job, as uploaded to `Params`.
 ///
 /// # Errors
@@ -168,7 +196,8 @@ impl TileKernels {
         h: usize,
         timeout: Option<Duration>,
     ) -> anyhow::Result<Field> {
-        self.run(device, queue, plan, lod, gx0, gz0, w, h, timeout, false)
+        let job = FieldJob::new(lod, gx0, gz0, w, h);
+        self.run(device, queue, plan, job, timeout, false)
             .map(|(f, _)| f)
     }
 
@@ -191,28 +220,29 @@ impl TileKernels {
         h: usize,
         timeout: Option<Duration>,
     ) -> anyhow::Result<(Field, Vec<u8>)> {
-        let (f, ids) = self.run(device, queue, plan, lod, gx0, gz0, w, h, timeout, true)?;
+        let job = FieldJob::new(lod, gx0, gz0, w, h);
+        let (f, ids) = self.run(device, queue, plan, job, timeout, true)?;
         Ok((f, ids.unwrap_or_default()))
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn run(
+    /// The field of `job` as [`Self::field`] computes it, and with `want_ids` also the biome ids
+    /// of its biome grid as [`Self::field_with_ids`] returns them (`None` without).
+    ///
+    /// # Errors
+    /// As [`Self::field`].
+    pub(super) fn run(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         plan: &WorldPlan,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
+        job: FieldJob,
         timeout: Option<Duration>,
         want_ids: bool,
     ) -> anyhow::Result<(Field, Option<Vec<u8>>)> {
-        let params = field_params(plan, lod, gx0, gz0, w, h)?;
-        let lp = &plan.lods[lod as usize];
+        let params = field_params(plan, job.lod, job.gx0, job.gz0, job.w, job.h)?;
+        let lp = &plan.lods[job.lod as usize];
         let k = params.k as u64;
-        let n = (w * h) as u64;
+        let n = (job.w * job.h) as u64;
 
         let scopes = Scopes::push(device);
         let fractals: Vec<GpuFractal> = lp.fractals.iter().map(GpuFractal::from).collect();
@@ -306,8 +336,8 @@ impl TileKernels {
                 .collect::<Vec<f32>>()
         };
         let field = Field {
-            w,
-            h,
+            w: job.w,
+            h: job.h,
             heights: float(&data[nk..nk + n]),
             weights: float(&data[..nk]),
         };

@@ -470,9 +470,12 @@ impl Chunk {
         &self.limits[s..s + self.counts[c] as usize]
     }
 
-    /// Composition of voxel `(i, j, k)` of the chunk (local coordinates): the limit's when a limit
-    /// is at that height, otherwise linear interpolation between the limits below and above.
-    pub fn voxel(&self, i: u32, j: u32, k: u32) -> Composition {
+    /// The limits of column `(i, k)` around voxel height `j`. `hi` is the column's first limit at
+    /// or above `j` (its last limit when none is). The result is `(hi, None)` when `hi` is at
+    /// height `j` or is the column's first limit; otherwise it is `(hi, Some((lo, f)))` with `lo`
+    /// the limit before `hi` and `f = (j − lo.y) / (hi.y − lo.y)` the fraction of the way from
+    /// `lo` to `hi` (above 1 when `j` lies above the column's last limit).
+    fn bracket(&self, i: u32, j: u32, k: u32) -> (Limit, Option<(Limit, f32)>) {
         let col = self.column(i, k);
         let above = col
             .iter()
@@ -480,39 +483,40 @@ impl Chunk {
             .unwrap_or(col.len() - 1);
         let hi = col[above];
         if u32::from(hi.y) == j || above == 0 {
-            return materials(
-                &self.palette,
-                &[(hi.mix.lo, 1.0 - hi.mix.t), (hi.mix.hi, hi.mix.t)],
-            );
+            return (hi, None);
         }
         let lo = col[above - 1];
         let f = (j - u32::from(lo.y)) as f32 / (u32::from(hi.y) - u32::from(lo.y)) as f32;
-        materials(
-            &self.palette,
-            &[
-                (lo.mix.lo, (1.0 - lo.mix.t) * (1.0 - f)),
-                (lo.mix.hi, lo.mix.t * (1.0 - f)),
-                (hi.mix.lo, (1.0 - hi.mix.t) * f),
-                (hi.mix.hi, hi.mix.t * f),
-            ],
-        )
+        (hi, Some((lo, f)))
+    }
+
+    /// Composition of voxel `(i, j, k)` of the chunk (local coordinates): the limit's when a limit
+    /// is at that height, otherwise linear interpolation between the limits below and above.
+    pub fn voxel(&self, i: u32, j: u32, k: u32) -> Composition {
+        match self.bracket(i, j, k) {
+            (hi, None) => materials(
+                &self.palette,
+                &[(hi.mix.lo, 1.0 - hi.mix.t), (hi.mix.hi, hi.mix.t)],
+            ),
+            (hi, Some((lo, f))) => materials(
+                &self.palette,
+                &[
+                    (lo.mix.lo, (1.0 - lo.mix.t) * (1.0 - f)),
+                    (lo.mix.hi, lo.mix.t * (1.0 - f)),
+                    (hi.mix.lo, (1.0 - hi.mix.t) * f),
+                    (hi.mix.hi, hi.mix.t * f),
+                ],
+            ),
+        }
     }
 
     /// Material flow of voxel `(i, j, k)`: the limit's, or linear interpolation between the limits
     /// below and above.
     pub fn flow(&self, i: u32, j: u32, k: u32) -> [f32; 3] {
-        let col = self.column(i, k);
-        let above = col
-            .iter()
-            .position(|l| u32::from(l.y) >= j)
-            .unwrap_or(col.len() - 1);
-        let hi = col[above];
-        if u32::from(hi.y) == j || above == 0 {
-            return hi.flow;
+        match self.bracket(i, j, k) {
+            (hi, None) => hi.flow,
+            (hi, Some((lo, f))) => [0, 1, 2].map(|c| lo.flow[c] * (1.0 - f) + hi.flow[c] * f),
         }
-        let lo = col[above - 1];
-        let f = (j - u32::from(lo.y)) as f32 / (u32::from(hi.y) - u32::from(lo.y)) as f32;
-        [0, 1, 2].map(|c| lo.flow[c] * (1.0 - f) + hi.flow[c] * f)
     }
 
     /// Voxels in the chunk.

@@ -3,8 +3,7 @@
 
 use super::config::{Range, SubsurfaceConfig};
 use crate::terrain::hash::{hash2, mix32, stream, unit};
-use crate::terrain::hash::{PRIME_X, PRIME_Z};
-use crate::terrain::noise::{fade, gaussian, lattice_hash};
+use crate::terrain::noise::{fade, lattice_cell};
 
 /// Stream purposes of the subsurface (disjoint from `terrain::hash::purpose`).
 pub mod purpose {
@@ -550,19 +549,7 @@ impl SubsurfacePlan {
 /// `terrain::noise::lattice` (same operations, same bits) with its partial derivatives in
 /// lattice units.
 pub fn lattice_grad(x: f32, z: f32, seed: u32) -> (f32, f32, f32) {
-    let fx = x.floor();
-    let fz = z.floor();
-    let tx = x - fx;
-    let tz = z - fz;
-    let hx0 = (fx as i32 as u32).wrapping_mul(PRIME_X);
-    let hx1 = hx0.wrapping_add(PRIME_X);
-    let hz = (fz as i32 as u32).wrapping_mul(PRIME_Z);
-    let hz0 = hz ^ seed;
-    let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
-    let v00 = gaussian(lattice_hash(hx0 ^ hz0));
-    let v10 = gaussian(lattice_hash(hx1 ^ hz0));
-    let v01 = gaussian(lattice_hash(hx0 ^ hz1));
-    let v11 = gaussian(lattice_hash(hx1 ^ hz1));
+    let ([v00, v10, v01, v11], tx, tz) = lattice_cell(x, z, seed);
     let u = fade(tx);
     let v = fade(tz);
     let a = v00 + (v10 - v00) * u;

@@ -32,8 +32,7 @@
 //! vectorises it; [`fbm_batch`] picks an AVX-512 or AVX2 build of the same code at run time. No
 //! fused multiply-add is used (Rust never contracts `a * b + c`), so all builds give the same bits.
 
-use super::hash::{PRIME_X, PRIME_Z};
-use super::noise::{fade, lattice_hash};
+use super::noise::{corner_hashes, fade, interpolate};
 
 /// Most octaves a generator may have.
 pub const MAX_OCTAVES: usize = 16;
@@ -374,22 +373,14 @@ fn lattice_lanes(xs: &[f32; LANES], zs: &[f32; LANES], seed: u32, out: &mut [f32
         let fz = zs[l].floor();
         let tx = xs[l] - fx;
         let tz = zs[l] - fz;
-        let ix = lattice_index(fx);
-        let iz = lattice_index(fz);
-        let hx0 = ix.wrapping_mul(PRIME_X);
-        let hx1 = hx0.wrapping_add(PRIME_X);
-        let hz = iz.wrapping_mul(PRIME_Z);
-        let hz0 = hz ^ seed;
-        let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
-        let v00 = gaussian_fast(lattice_hash(hx0 ^ hz0));
-        let v10 = gaussian_fast(lattice_hash(hx1 ^ hz0));
-        let v01 = gaussian_fast(lattice_hash(hx0 ^ hz1));
-        let v11 = gaussian_fast(lattice_hash(hx1 ^ hz1));
-        let u = fade(tx);
-        let v = fade(tz);
-        let a = v00 + (v10 - v00) * u;
-        let b = v01 + (v11 - v01) * u;
-        out[l] = a + (b - a) * v;
+        let [h00, h10, h01, h11] = corner_hashes(lattice_index(fx), lattice_index(fz), seed);
+        let corners = [
+            gaussian_fast(h00),
+            gaussian_fast(h10),
+            gaussian_fast(h01),
+            gaussian_fast(h11),
+        ];
+        out[l] = interpolate(corners, fade(tx), fade(tz));
     }
 }
 

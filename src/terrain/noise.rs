@@ -41,27 +41,54 @@ pub fn fade(t: f32) -> f32 {
     t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
 }
 
-/// The auxiliary function at a point in lattice units, for one stream seed.
+/// The lattice hashes of the four corners of the cell whose lowest corner is the lattice point
+/// `(ix, iz)` (the integer coordinates as two's-complement `u32`), for one stream seed, in the
+/// order `[(ix, iz), (ix + 1, iz), (ix, iz + 1), (ix + 1, iz + 1)]`: `lattice_hash(i·PRIME_X ^
+/// j·PRIME_Z ^ seed)` with wrapping arithmetic, as `shaders/common.wgsl` computes them.
 #[inline(always)]
-pub fn lattice(x: f32, z: f32, seed: u32) -> f32 {
+pub fn corner_hashes(ix: u32, iz: u32, seed: u32) -> [u32; 4] {
+    let hx0 = ix.wrapping_mul(PRIME_X);
+    let hx1 = hx0.wrapping_add(PRIME_X);
+    let hz = iz.wrapping_mul(PRIME_Z);
+    let hz0 = hz ^ seed;
+    let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
+    [
+        lattice_hash(hx0 ^ hz0),
+        lattice_hash(hx1 ^ hz0),
+        lattice_hash(hx0 ^ hz1),
+        lattice_hash(hx1 ^ hz1),
+    ]
+}
+
+/// The cell of the lattice around the point `(x, z)` (lattice units) for one stream seed: the
+/// N(0,1) values at its four corners (in the order of [`corner_hashes`]) and the point's offsets
+/// `(tx, tz)` in `[0, 1)` from the cell's lowest corner.
+#[inline(always)]
+pub fn lattice_cell(x: f32, z: f32, seed: u32) -> ([f32; 4], f32, f32) {
     let fx = x.floor();
     let fz = z.floor();
     let tx = x - fx;
     let tz = z - fz;
-    let hx0 = (fx as i32 as u32).wrapping_mul(PRIME_X);
-    let hx1 = hx0.wrapping_add(PRIME_X);
-    let hz = (fz as i32 as u32).wrapping_mul(PRIME_Z);
-    let hz0 = hz ^ seed;
-    let hz1 = hz.wrapping_add(PRIME_Z) ^ seed;
-    let v00 = gaussian(lattice_hash(hx0 ^ hz0));
-    let v10 = gaussian(lattice_hash(hx1 ^ hz0));
-    let v01 = gaussian(lattice_hash(hx0 ^ hz1));
-    let v11 = gaussian(lattice_hash(hx1 ^ hz1));
-    let u = fade(tx);
-    let v = fade(tz);
+    let [h00, h10, h01, h11] = corner_hashes(fx as i32 as u32, fz as i32 as u32, seed);
+    let corners = [gaussian(h00), gaussian(h10), gaussian(h01), gaussian(h11)];
+    (corners, tx, tz)
+}
+
+/// Interpolates a cell's corner values `[v00, v10, v01, v11]` (order of [`corner_hashes`]) with
+/// the fade weights `u = fade(tx)` along x and `v = fade(tz)` along z: first along x on both
+/// z edges, then along z, in that order of operations (the shader's).
+#[inline(always)]
+pub fn interpolate([v00, v10, v01, v11]: [f32; 4], u: f32, v: f32) -> f32 {
     let a = v00 + (v10 - v00) * u;
     let b = v01 + (v11 - v01) * u;
     a + (b - a) * v
+}
+
+/// The auxiliary function at a point in lattice units, for one stream seed.
+#[inline(always)]
+pub fn lattice(x: f32, z: f32, seed: u32) -> f32 {
+    let (corners, tx, tz) = lattice_cell(x, z, seed);
+    interpolate(corners, fade(tx), fade(tz))
 }
 
 #[cfg(test)]

@@ -265,6 +265,29 @@ mod tests {
         assert_eq!(proto_texture(&p, &high), material::SNOW);
     }
 
+    /// Materials of [`proto_texture_batch`] over the vertices (four biome weights each), after
+    /// asserting that each equals [`proto_texture`] of that vertex alone; `case` names the inputs
+    /// in the failure message.
+    fn batch_matching_per_vertex(
+        p: &TexturePlan,
+        heights: &[f32],
+        ny: &[f32],
+        weights: &[f32],
+        case: &str,
+    ) -> Vec<u8> {
+        let mut out = vec![0u8; heights.len()];
+        proto_texture_batch(p, heights, ny, weights, &mut out);
+        for v in 0..heights.len() {
+            let s = Surface {
+                height_m: heights[v],
+                normal_y: ny[v],
+                weights: &weights[v * 4..v * 4 + 4],
+            };
+            assert_eq!(out[v], proto_texture(p, &s), "{case}: vertex {v}");
+        }
+        out
+    }
+
     #[test]
     fn single_biome_path_equals_the_general_one() {
         let params = WorldParams::default();
@@ -277,16 +300,8 @@ mod tests {
             let weights: Vec<f32> = (0..n * 4)
                 .map(|i| if i % 4 == b { 1.0 } else { 0.0 })
                 .collect();
-            let mut fast = vec![0u8; n];
-            proto_texture_batch(&p, &heights, &ny, &weights, &mut fast);
-            for v in 0..n {
-                let s = Surface {
-                    height_m: heights[v],
-                    normal_y: ny[v],
-                    weights: &weights[v * 4..v * 4 + 4],
-                };
-                assert_eq!(fast[v], proto_texture(&p, &s), "biome {b} vertex {v}");
-            }
+            let fast =
+                batch_matching_per_vertex(&p, &heights, &ny, &weights, &format!("biome {b}"));
             seen.extend(fast);
         }
         // The inputs must reach every branch: water, beach, ground, rock and snow.
@@ -302,15 +317,6 @@ mod tests {
         let weights: Vec<f32> = (0..n * 4)
             .map(|i| if i % 4 == (i / 40) % 4 { 0.7 } else { 0.1 })
             .collect();
-        let mut out = vec![0u8; n];
-        proto_texture_batch(&p, &heights, &ny, &weights, &mut out);
-        for v in 0..n {
-            let s = Surface {
-                height_m: heights[v],
-                normal_y: ny[v],
-                weights: &weights[v * 4..v * 4 + 4],
-            };
-            assert_eq!(out[v], proto_texture(&p, &s), "vertex {v}");
-        }
+        batch_matching_per_vertex(&p, &heights, &ny, &weights, "mixed weights");
     }
 }

@@ -116,9 +116,12 @@ impl Bricked {
         )
     }
 
-    /// Fills every halo sample of the channels selected by `pick`: from the owning neighbour
-    /// brick, or (on the region's border) from the brick's own border sample.
-    pub fn exchange<T: Copy>(&mut self, pick: impl Fn(&mut Brick) -> &mut Vec<Vec<T>>) {
+    /// Calls `copy(self, bi, p, oi, op)` for every halo sample of every brick, bricks in order and
+    /// samples x fastest: halo sample `p` (padded index) of brick `bi` takes its value from
+    /// sample `op` of brick `oi`, the owner of the region sample it mirrors — the neighbour
+    /// brick's, or (on the region's border, where the coordinate is clamped onto the region) the
+    /// brick's own border sample.
+    fn for_each_halo(&mut self, mut copy: impl FnMut(&mut Self, usize, usize, usize, usize)) {
         let dims = self.dims;
         for bi in 0..self.bricks.len() {
             let (lo, padded) = (self.bricks[bi].lo, self.bricks[bi].padded);
@@ -135,15 +138,23 @@ impl Bricked {
                         });
                         let (oi, op) = self.owner(g);
                         let p = self.bricks[bi].pidx(x, y, z);
-                        let m = pick(&mut self.bricks[oi]).len();
-                        for ch in 0..m {
-                            let v = pick(&mut self.bricks[oi])[ch][op];
-                            pick(&mut self.bricks[bi])[ch][p] = v;
-                        }
+                        copy(self, bi, p, oi, op);
                     }
                 }
             }
         }
+    }
+
+    /// Fills every halo sample of the channels selected by `pick`: from the owning neighbour
+    /// brick, or (on the region's border) from the brick's own border sample.
+    pub fn exchange<T: Copy>(&mut self, pick: impl Fn(&mut Brick) -> &mut Vec<Vec<T>>) {
+        self.for_each_halo(|s, bi, p, oi, op| {
+            let m = pick(&mut s.bricks[oi]).len();
+            for ch in 0..m {
+                let v = pick(&mut s.bricks[oi])[ch][op];
+                pick(&mut s.bricks[bi])[ch][p] = v;
+            }
+        });
     }
 
     /// `n` Jacobi sweeps (Laplace or Perona–Malik, as [`super::diffuse::sweep`]) brick by brick,
@@ -294,25 +305,9 @@ struct LayerBricks<'a> {
 
 impl LayerBricks<'_> {
     fn exchange_layers(&mut self) {
-        let dims = self.inner.dims;
-        for bi in 0..self.inner.bricks.len() {
-            let (lo, padded) = (self.inner.bricks[bi].lo, self.inner.bricks[bi].padded);
-            for z in 0..padded[2] {
-                for y in 0..padded[1] {
-                    for x in 0..padded[0] {
-                        let c = [x, y, z];
-                        if (0..3).all(|k| c[k] >= 1 && c[k] + 1 < padded[k]) {
-                            continue;
-                        }
-                        let g = [0, 1, 2].map(|k| {
-                            (lo[k] as i64 + c[k] as i64 - 1).clamp(0, dims[k] as i64 - 1) as usize
-                        });
-                        let (oi, op) = self.inner.owner(g);
-                        let p = self.inner.bricks[bi].pidx(x, y, z);
-                        self.layers[bi][0][p] = self.layers[oi][0][op];
-                    }
-                }
-            }
-        }
+        let layers = &mut *self.layers;
+        self.inner.for_each_halo(|_, bi, p, oi, op| {
+            layers[bi][0][p] = layers[oi][0][op];
+        });
     }
 }

@@ -147,32 +147,29 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
-/// CPU time of the whole process (every thread), milliseconds.
-pub fn process_cpu_ms() -> f64 {
+/// The reading of the CPU-time clock `clock` (`CLOCK_PROCESS_CPUTIME_ID` or
+/// `CLOCK_THREAD_CPUTIME_ID`), milliseconds; 0 when the clock cannot be read.
+fn cpu_clock_ms(clock: libc::clockid_t) -> f64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
         tv_nsec: 0,
     };
     // SAFETY: `ts` is a valid, writable timespec; the call only writes it.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
+    let rc = unsafe { libc::clock_gettime(clock, &mut ts) };
     if rc != 0 {
         return 0.0;
     }
     ts.tv_sec as f64 * 1e3 + ts.tv_nsec as f64 * 1e-6
 }
 
+/// CPU time of the whole process (every thread), milliseconds.
+pub fn process_cpu_ms() -> f64 {
+    cpu_clock_ms(libc::CLOCK_PROCESS_CPUTIME_ID)
+}
+
 /// CPU time of the calling thread, milliseconds.
 fn thread_cpu_ms() -> f64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; the call only writes it.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    if rc != 0 {
-        return 0.0;
-    }
-    ts.tv_sec as f64 * 1e3 + ts.tv_nsec as f64 * 1e-6
+    cpu_clock_ms(libc::CLOCK_THREAD_CPUTIME_ID)
 }
 
 /// Runs `f` and returns its result with its wall-clock and thread CPU milliseconds.
