@@ -13,7 +13,7 @@ use crate::edits::TileEdits;
 use crate::terrain::lattice::Window;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
-use crate::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
+use crate::terrain::{FieldJob, Tile, TileKey, WorldPlan, TILE_VERTS};
 use serde::Serialize;
 use std::sync::Arc;
 
@@ -77,28 +77,16 @@ impl Compute {
     }
 
     /// Heights and weights of a lattice rectangle.
-    pub async fn field(
-        &self,
-        plan: Arc<WorldPlan>,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
-    ) -> Field {
+    pub async fn field(&self, plan: Arc<WorldPlan>, job: FieldJob) -> Field {
         if let Some(g) = &self.gpu {
             if !g.is_lost() {
-                match g.field(plan.clone(), lod, gx0, gz0, w, h).await {
+                match g.field(plan.clone(), job).await {
                     Ok(f) => return f,
                     Err(e) => tracing::warn!("GPU job failed, falling back to the CPU: {e}"),
                 }
             }
         }
-        match tokio::task::spawn_blocking(move || {
-            crate::terrain::tile::field(&plan, lod, gx0, gz0, w, h)
-        })
-        .await
-        {
+        match tokio::task::spawn_blocking(move || crate::terrain::tile::field(&plan, job)).await {
             Ok(f) => f,
             Err(e) => std::panic::resume_unwind(e.into_panic()),
         }
@@ -151,7 +139,9 @@ impl Compute {
         let n = TILE_VERTS + 2;
         let started = std::time::Instant::now();
         let (gx0, gz0) = (key.x * 64 - 1, key.z * 64 - 1);
-        let mut f = self.field(plan.clone(), key.lod, gx0, gz0, n, n).await;
+        let mut f = self
+            .field(plan.clone(), FieldJob::new(key.lod, gx0, gz0, n, n))
+            .await;
         let spacing = |lod: u32| plan.lods[lod as usize].spacing_m;
         let window = |lod: u32, gx0, gz0, w, h| Window {
             spacing_m: spacing(lod),
@@ -167,7 +157,9 @@ impl Compute {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
                 let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 let started = std::time::Instant::now();
-                let mut strip = self.field(plan.clone(), lod, gx0, gz0, w, h).await;
+                let mut strip = self
+                    .field(plan.clone(), FieldJob::new(lod, gx0, gz0, w, h))
+                    .await;
                 edits.apply(window(lod, gx0, gz0, w, h), &mut strip.heights);
                 strips.push((*edge, strip));
                 count(Stage::Snap, started);

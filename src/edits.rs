@@ -13,7 +13,7 @@ use crate::subsurface::world::breach_lattice;
 use crate::subsurface::Geology;
 use crate::terrain::lattice::Window;
 use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
-use crate::terrain::tile::{field, finish};
+use crate::terrain::tile::{field, finish, FieldJob};
 use crate::terrain::{Tile, TileKey, WorldPlan};
 use crate::volume::element::VolumeSpec;
 use std::sync::Arc;
@@ -80,7 +80,7 @@ impl TileEdits {
 pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
     let n = TILE_VERTS + 2;
     let (gx0, gz0) = (key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1);
-    let mut f = field(plan, key.lod, gx0, gz0, n, n);
+    let mut f = field(plan, FieldJob::new(key.lod, gx0, gz0, n, n));
     let window = Window {
         spacing_m: plan.lods[key.lod as usize].spacing_m,
         gx0,

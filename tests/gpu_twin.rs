@@ -18,8 +18,7 @@ use std::sync::Arc;
 use strata::cli::BackendChoice;
 use strata::compute::Compute;
 use strata::gpu::{request_device, TileKernels};
-use strata::terrain::biome::biome_grid;
-use strata::terrain::tile::{field, Field};
+use strata::terrain::tile::{field, job_biome_ids, Field, FieldJob};
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
 
 const SEED: u64 = 7;
@@ -68,7 +67,7 @@ fn border_tile(plan: &WorldPlan, lod: u32, x_start: i64, z: i64) -> TileKey {
         if probes.iter().all(|b| *b == probes[0]) {
             continue;
         }
-        let f = field(plan, lod, gx - 1, gz - 1, 67, 67);
+        let f = field(plan, FieldJob::new(lod, gx - 1, gz - 1, 67, 67));
         if f.weights.iter().any(|w| *w > 0.0 && *w < 1.0) {
             return TileKey { lod, x, z };
         }
@@ -96,11 +95,12 @@ fn compare(
     (gx0, gz0, w, h): (i64, i64, usize, usize),
 ) -> Report {
     let t = std::time::Instant::now();
-    let cpu: Field = field(plan, lod, gx0, gz0, w, h);
+    let job = FieldJob::new(lod, gx0, gz0, w, h);
+    let cpu: Field = field(plan, job);
     let cpu_ms = t.elapsed().as_secs_f64() * 1e3;
     let t = std::time::Instant::now();
     let (gpu, gpu_ids) = kernels
-        .field_with_ids(device, queue, plan, lod, gx0, gz0, w, h, None)
+        .field_with_ids(device, queue, plan, job, None)
         .unwrap_or_else(|e| panic!("GPU field at LOD {lod} ({gx0}, {gz0}) {w}×{h}: {e:#}"));
     let gpu_ms = t.elapsed().as_secs_f64() * 1e3;
     assert_eq!((gpu.w, gpu.h), (w, h));
@@ -108,19 +108,8 @@ fn compare(
     assert_eq!(gpu.weights.len(), cpu.weights.len());
 
     let lp = &plan.lods[lod as usize];
-    let k = plan.biome_count();
-    let r = lp.kernel.len() / 2;
-    let (bw, bh) = (w + 2 * r, h + 2 * r);
-    let mut cpu_ids = vec![0u8; bw * bh];
-    biome_grid(
-        &plan.biome_map,
-        lp.spacing_m,
-        gx0 - r as i64,
-        gz0 - r as i64,
-        bw,
-        bh,
-        &mut cpu_ids,
-    );
+    let (k, r) = (plan.biome_count(), lp.kernel.len() / 2);
+    let (cpu_ids, bw, bh) = job_biome_ids(plan, job);
     assert_eq!(gpu_ids.len(), cpu_ids.len());
     let bad: Vec<(usize, usize)> = (0..bw * bh)
         .filter(|&s| gpu_ids[s] != cpu_ids[s])
@@ -262,7 +251,7 @@ fn gpu_field_matches_cpu_on_sample_tiles() {
         mismatches += rep.id_mismatches;
         max_dw = max_dw.max(rep.max_dw);
         max_dh = max_dh.max(rep.max_dh);
-        let cpu = field(&plan, lod, rect.0, rect.1, rect.2, rect.3);
+        let cpu = field(&plan, FieldJob::new(lod, rect.0, rect.1, rect.2, rect.3));
         blended += usize::from(cpu.weights.iter().any(|w| *w > 0.0 && *w < 1.0));
     }
     println!(
@@ -301,10 +290,22 @@ fn a_destroyed_device_gives_an_error_not_a_panic() {
     let (_, device, queue) = software_device();
     let kernels = TileKernels::new(&device).expect("kernels compile");
     assert!(kernels
-        .field(&device, &queue, &plan, 0, -1, -1, 67, 67, None)
+        .field(
+            &device,
+            &queue,
+            &plan,
+            FieldJob::new(0, -1, -1, 67, 67),
+            None
+        )
         .is_ok());
     device.destroy();
-    let r = kernels.field(&device, &queue, &plan, 0, -1, -1, 67, 67, None);
+    let r = kernels.field(
+        &device,
+        &queue,
+        &plan,
+        FieldJob::new(0, -1, -1, 67, 67),
+        None,
+    );
     assert!(r.is_err(), "a job on a destroyed device must fail");
     println!(
         "job on a destroyed device: {:#}",
@@ -357,10 +358,10 @@ async fn device_loss_falls_back_to_the_cpu() {
     };
     let (gx0, gz0, w, h) = tile_rect(key);
     let f = handle
-        .field(plan.clone(), 0, gx0, gz0, w, h)
+        .field(plan.clone(), FieldJob::new(0, gx0, gz0, w, h))
         .await
         .expect("GPU field before the loss");
-    let cpu = field(&plan, 0, gx0, gz0, w, h);
+    let cpu = field(&plan, FieldJob::new(0, gx0, gz0, w, h));
     let dh = f
         .heights
         .iter()
@@ -385,7 +386,10 @@ async fn device_loss_falls_back_to_the_cpu() {
     let info = compute.info();
     assert!(info.device_lost);
     assert_eq!(info.backend, "cpu");
-    assert!(handle.field(plan.clone(), 0, gx0, gz0, w, h).await.is_err());
+    assert!(handle
+        .field(plan.clone(), FieldJob::new(0, gx0, gz0, w, h))
+        .await
+        .is_err());
 }
 
 /// Probe of the point functions of `common.wgsl` (hash, lattice noise, one biome's fractal, the

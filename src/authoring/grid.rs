@@ -2,7 +2,7 @@
 
 use super::spec::RegionSpec;
 use crate::terrain::plan::MAX_LOD;
-use crate::terrain::tile::field;
+use crate::terrain::tile::{field, FieldJob};
 use crate::terrain::WorldPlan;
 
 /// The square sample grid of a region: `n × n` samples from `origin`, `spacing_m` apart; the
@@ -96,7 +96,7 @@ impl Procedural {
             lod += 1;
         }
         let (step, gx0, gz0, w, h) = rect(lod);
-        let f = field(plan, lod, gx0, gz0, w, h);
+        let f = field(plan, FieldJob::new(lod, gx0, gz0, w, h));
         let at = |i: i64, j: i64| {
             let i = i.clamp(0, w as i64 - 1) as usize;
             let j = j.clamp(0, h as i64 - 1) as usize;

@@ -10,10 +10,10 @@
 //! From then on [`GpuHandle::field`] returns `Err` at once, and `crate::compute::Compute` computes
 //! on the CPU.
 
-use super::tile::{FieldJob, TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
+use super::tile::{TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
 use crate::cli::BackendChoice;
 use crate::compute::AdapterInfo;
-use crate::terrain::tile::Field;
+use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
 use anyhow::{anyhow, bail};
 use std::fmt;
@@ -95,24 +95,16 @@ impl GpuHandle {
     /// [`super::tile::field_params`]; this does not mark the device lost); otherwise if the job
     /// fails on the device or takes longer than the job timeout once started, which marks the
     /// device lost.
-    pub async fn field(
-        &self,
-        plan: Arc<WorldPlan>,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
-    ) -> anyhow::Result<Field> {
+    pub async fn field(&self, plan: Arc<WorldPlan>, job: FieldJob) -> anyhow::Result<Field> {
         if self.is_lost() {
             bail!("GPU device lost");
         }
-        super::tile::field_params(&plan, lod, gx0, gz0, w, h)?;
+        super::tile::field_params(&plan, job)?;
         let (started_tx, mut started_rx) = oneshot::channel();
         let (reply_tx, reply_rx) = oneshot::channel();
         let job = Job::Field {
             plan,
-            job: FieldJob::new(lod, gx0, gz0, w, h),
+            job,
             started: started_tx,
             reply: reply_tx,
         };

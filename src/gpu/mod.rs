@@ -56,13 +56,14 @@ pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, GpuHandle,
 };
 pub use tile::{
-    field_on_device, field_params, tile_shader_source, FieldJob, TileKernels, DEFAULT_JOB_TIMEOUT,
+    field_on_device, field_params, tile_shader_source, TileKernels, DEFAULT_JOB_TIMEOUT,
 };
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::cli::BackendChoice;
+    use crate::terrain::FieldJob;
     use wgpu::{Backend, DeviceType};
 
     #[test]
@@ -119,7 +120,7 @@ mod tests {
     fn params_cover_the_blur_margin_and_the_blocks() {
         let plan = crate::terrain::WorldPlan::new(3, crate::terrain::WorldParams::default())
             .expect("plan");
-        let p = field_params(&plan, 0, -65, 63, 67, 67).expect("params");
+        let p = field_params(&plan, FieldJob::new(0, -65, 63, 67, 67)).expect("params");
         let r = (plan.lods[0].kernel.len() / 2) as i32;
         assert_eq!(
             (p.bgx0, p.bgz0, p.bw, p.bh),
@@ -130,8 +131,8 @@ mod tests {
             p.cw as i32,
             (p.bgx0 + p.bw as i32 - 1).div_euclid(8) - p.bx0 + 2
         );
-        assert!(field_params(&plan, 0, i64::from(i32::MAX), 0, 67, 67).is_err());
-        assert!(field_params(&plan, 13, 0, 0, 67, 67).is_err());
-        assert!(field_params(&plan, 0, 0, 0, 0, 67).is_err());
+        assert!(field_params(&plan, FieldJob::new(0, i64::from(i32::MAX), 0, 67, 67)).is_err());
+        assert!(field_params(&plan, FieldJob::new(13, 0, 0, 67, 67)).is_err());
+        assert!(field_params(&plan, FieldJob::new(0, 0, 0, 0, 67)).is_err());
     }
 }

@@ -13,7 +13,7 @@ use super::kit::{
 use super::layout::{GpuBiomeMap, GpuFractal, GpuParams};
 use super::scopes::Scopes;
 use crate::terrain::biome::BLOCK;
-use crate::terrain::tile::Field;
+use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::world::MAX_BIOMES;
 use crate::terrain::WorldPlan;
 use anyhow::{anyhow, bail, Context};
@@ -36,34 +36,6 @@ pub fn tile_shader_source() -> String {
     format!("{COMMON_WGSL}\n{TILE_WGSL}")
 }
 
-/// One field job: the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of LOD `lod`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct FieldJob {
-    /// Level of detail: an index into `WorldPlan::lods`.
-    pub lod: u32,
-    /// Lattice x of the first sample (lattice units of the LOD).
-    pub gx0: i64,
-    /// Lattice z of the first sample (lattice units of the LOD).
-    pub gz0: i64,
-    /// Samples per row (along x).
-    pub w: usize,
-    /// Rows (along z).
-    pub h: usize,
-}
-
-impl FieldJob {
-    /// The job of the `w × h` samples from lattice point `(gx0, gz0)` of LOD `lod`.
-    pub fn new(lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Self {
-        Self {
-            lod,
-            gx0,
-            gz0,
-            w,
-            h,
-        }
-    }
-}
-
 /// Geometry and constants of one field job, as uploaded to `Params`.
 ///
 /// # Errors
@@ -71,14 +43,14 @@ impl FieldJob {
 /// [`MAX_BIOMES`] biomes, or a lattice index of the job (including the blur margin and the block
 /// corners) does not fit in `i32`: within the supported world (`plan::WORLD_LIMIT_CELLS`) it always
 /// does.
-pub fn field_params(
-    plan: &WorldPlan,
-    lod: u32,
-    gx0: i64,
-    gz0: i64,
-    w: usize,
-    h: usize,
-) -> anyhow::Result<GpuParams> {
+pub fn field_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuParams> {
+    let FieldJob {
+        lod,
+        gx0,
+        gz0,
+        w,
+        h,
+    } = job;
     let lp = plan
         .lods
         .get(lod as usize)
@@ -189,14 +161,9 @@ impl TileKernels {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         plan: &WorldPlan,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
+        job: FieldJob,
         timeout: Option<Duration>,
     ) -> anyhow::Result<Field> {
-        let job = FieldJob::new(lod, gx0, gz0, w, h);
         self.run(device, queue, plan, job, timeout, false)
             .map(|(f, _)| f)
     }
@@ -213,14 +180,9 @@ impl TileKernels {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         plan: &WorldPlan,
-        lod: u32,
-        gx0: i64,
-        gz0: i64,
-        w: usize,
-        h: usize,
+        job: FieldJob,
         timeout: Option<Duration>,
     ) -> anyhow::Result<(Field, Vec<u8>)> {
-        let job = FieldJob::new(lod, gx0, gz0, w, h);
         let (f, ids) = self.run(device, queue, plan, job, timeout, true)?;
         Ok((f, ids.unwrap_or_default()))
     }
@@ -239,7 +201,7 @@ impl TileKernels {
         timeout: Option<Duration>,
         want_ids: bool,
     ) -> anyhow::Result<(Field, Option<Vec<u8>>)> {
-        let params = field_params(plan, job.lod, job.gx0, job.gz0, job.w, job.h)?;
+        let params = field_params(plan, job)?;
         let lp = &plan.lods[job.lod as usize];
         let k = params.k as u64;
         let n = (job.w * job.h) as u64;
@@ -356,11 +318,7 @@ pub fn field_on_device(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
     plan: &WorldPlan,
-    lod: u32,
-    gx0: i64,
-    gz0: i64,
-    w: usize,
-    h: usize,
+    job: FieldJob,
 ) -> anyhow::Result<Field> {
-    TileKernels::new(device)?.field(device, queue, plan, lod, gx0, gz0, w, h, None)
+    TileKernels::new(device)?.field(device, queue, plan, job, None)
 }

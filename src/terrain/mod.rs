@@ -18,5 +18,5 @@ pub mod tile;
 pub mod world;
 
 pub use plan::{WorldPlan, MAX_LOD, MIN_LOD, TILE_VERTEX_COUNT, TILE_VERTS};
-pub use tile::{synthesize, Tile, TileKey};
+pub use tile::{synthesize, FieldJob, Tile, TileKey};
 pub use world::WorldParams;

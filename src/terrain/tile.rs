@@ -45,22 +45,67 @@ pub struct Field {
     pub weights: Vec<f32>,
 }
 
-/// Synthesises heights and weights of the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`.
-pub fn field(plan: &WorldPlan, lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Field {
-    let lp = &plan.lods[lod as usize];
-    let k = plan.biome_count();
+/// One field job: the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of LOD `lod`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FieldJob {
+    /// Level of detail: an index into `WorldPlan::lods`.
+    pub lod: u32,
+    /// Lattice x of the first sample (lattice units of the LOD).
+    pub gx0: i64,
+    /// Lattice z of the first sample (lattice units of the LOD).
+    pub gz0: i64,
+    /// Samples per row (along x).
+    pub w: usize,
+    /// Rows (along z).
+    pub h: usize,
+}
+
+impl FieldJob {
+    /// The job of the `w × h` samples from lattice point `(gx0, gz0)` of LOD `lod`.
+    pub fn new(lod: u32, gx0: i64, gz0: i64, w: usize, h: usize) -> Self {
+        Self {
+            lod,
+            gx0,
+            gz0,
+            w,
+            h,
+        }
+    }
+}
+
+/// The biome ids of a job's biome grid: its rectangle grown by the blur radius
+/// `r = kernel.len() / 2` on every side, `(w + 2r) × (h + 2r)` row-major, with that width and
+/// height ([`biome_grid`] over the grid).
+pub fn job_biome_ids(plan: &WorldPlan, job: FieldJob) -> (Vec<u8>, usize, usize) {
+    let lp = &plan.lods[job.lod as usize];
     let r = lp.kernel.len() / 2;
-    let (bw, bh) = (w + 2 * r, h + 2 * r);
+    let (bw, bh) = (job.w + 2 * r, job.h + 2 * r);
     let mut ids = vec![0u8; bw * bh];
     biome_grid(
         &plan.biome_map,
         lp.spacing_m,
-        gx0 - r as i64,
-        gz0 - r as i64,
+        job.gx0 - r as i64,
+        job.gz0 - r as i64,
         bw,
         bh,
         &mut ids,
     );
+    (ids, bw, bh)
+}
+
+/// Synthesises heights and weights of the job's lattice samples: the CPU reference of the
+/// field (the WGSL twin is `gpu::TileKernels::field`).
+pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
+    let FieldJob {
+        lod,
+        gx0,
+        gz0,
+        w,
+        h,
+    } = job;
+    let lp = &plan.lods[lod as usize];
+    let k = plan.biome_count();
+    let (ids, bw, bh) = job_biome_ids(plan, job);
     let mut weights = vec![0.0f32; w * h * k];
     let single = blur_weights(&ids, bw, bh, &lp.kernel, k, &mut weights);
 
@@ -156,11 +201,13 @@ pub fn synthesize(plan: &WorldPlan, key: TileKey) -> Tile {
     let n = TILE_VERTS + 2;
     let f = field(
         plan,
-        key.lod,
-        key.x * TILE_QUADS - 1,
-        key.z * TILE_QUADS - 1,
-        n,
-        n,
+        FieldJob::new(
+            key.lod,
+            key.x * TILE_QUADS - 1,
+            key.z * TILE_QUADS - 1,
+            n,
+            n,
+        ),
     );
     finish(plan, key, &f)
 }
@@ -307,7 +354,7 @@ pub fn snap_edges(plan: &WorldPlan, tile: &mut Tile, coarser: [bool; 4]) {
     }
     for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
         let (lod, gx0, gz0, w, h) = snap_strip(tile.key, *edge);
-        let coarse = field(plan, lod, gx0, gz0, w, h);
+        let coarse = field(plan, FieldJob::new(lod, gx0, gz0, w, h));
         apply_snap(tile, *edge, &coarse.heights);
     }
 }

@@ -407,8 +407,10 @@ pub fn solve_volume(
     edits: &TileEdits,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
     let window = ground_window(plan, spec);
-    let mut field =
-        crate::terrain::tile::field(plan, 0, window.gx0, window.gz0, window.w, window.h);
+    let mut field = crate::terrain::tile::field(
+        plan,
+        crate::terrain::FieldJob::new(0, window.gx0, window.gz0, window.w, window.h),
+    );
     edits.apply(window, &mut field.heights);
     let (s, gx0, gz0, w, h) = (
         f64::from(window.spacing_m),
