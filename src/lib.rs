@@ -12,6 +12,7 @@ pub mod bench;
 pub mod cache;
 pub mod cli;
 pub mod compute;
+pub mod cpu_time;
 pub mod edits;
 pub mod encode;
 pub mod export;

@@ -26,22 +26,6 @@ pub const TARGET_MS_PER_TILE: f64 = 0.2;
 /// Target of issue 2: our fBm throughput over fastnoise-lite's.
 pub const TARGET_FBM_RATIO: f64 = 3.0;
 
-/// CPU time this thread has used, seconds: unlike wall time it leaves out the time the thread
-/// waited for a core, so it stays meaningful on a shared machine (it still includes the slowdown
-/// from cache and memory contention).
-pub fn thread_cpu_seconds() -> f64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; the clock id is a constant the kernel knows.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}
-
 /// Runs a benchmark by name.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match args.name.as_str() {
@@ -117,11 +101,11 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
     let mut one = 0.0f64;
     let mut cpu = 0.0f64;
     for k in &keys {
-        let c0 = thread_cpu_seconds();
+        let c0 = crate::cpu_time::thread_ms() / 1e3;
         let t0 = Instant::now();
         let t = black_box(synthesize(&plan, *k));
         let dt = t0.elapsed().as_secs_f64();
-        cpu += thread_cpu_seconds() - c0;
+        cpu += crate::cpu_time::thread_ms() / 1e3 - c0;
         one += dt;
         if t.weights.iter().any(|w| *w > 0.0 && *w < 1.0) {
             border += 1;

@@ -131,25 +131,11 @@ fn median(mut v: Vec<f64>) -> f64 {
     v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-/// CPU time of the whole process (all threads), seconds.
-fn process_cpu_seconds() -> f64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; the clock id is a constant the kernel knows.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-}
-
 /// Wall and process CPU milliseconds of `f`.
 fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
-    let (t, c) = (Instant::now(), process_cpu_seconds());
+    let (t, c) = (Instant::now(), crate::cpu_time::process_ms());
     let out = f();
-    let cpu = (process_cpu_seconds() - c) * 1e3;
+    let cpu = crate::cpu_time::process_ms() - c;
     (out, t.elapsed().as_secs_f64() * 1e3, cpu)
 }
 

@@ -147,36 +147,11 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
-/// The reading of the CPU-time clock `clock` (`CLOCK_PROCESS_CPUTIME_ID` or
-/// `CLOCK_THREAD_CPUTIME_ID`), milliseconds; 0 when the clock cannot be read.
-fn cpu_clock_ms(clock: libc::clockid_t) -> f64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; the call only writes it.
-    let rc = unsafe { libc::clock_gettime(clock, &mut ts) };
-    if rc != 0 {
-        return 0.0;
-    }
-    ts.tv_sec as f64 * 1e3 + ts.tv_nsec as f64 * 1e-6
-}
-
-/// CPU time of the whole process (every thread), milliseconds.
-pub fn process_cpu_ms() -> f64 {
-    cpu_clock_ms(libc::CLOCK_PROCESS_CPUTIME_ID)
-}
-
-/// CPU time of the calling thread, milliseconds.
-fn thread_cpu_ms() -> f64 {
-    cpu_clock_ms(libc::CLOCK_THREAD_CPUTIME_ID)
-}
-
 /// Runs `f` and returns its result with its wall-clock and thread CPU milliseconds.
 fn timed_on_thread<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
-    let (w, c) = (Instant::now(), thread_cpu_ms());
+    let (w, c) = (Instant::now(), crate::cpu_time::thread_ms());
     let r = f();
-    (r, ms(w), thread_cpu_ms() - c)
+    (r, ms(w), crate::cpu_time::thread_ms() - c)
 }
 
 /// Wall-clock and process CPU time since a start.
@@ -190,13 +165,13 @@ impl Stopwatch {
     fn start() -> Self {
         Self {
             wall: Instant::now(),
-            cpu: process_cpu_ms(),
+            cpu: crate::cpu_time::process_ms(),
         }
     }
 
     /// `(wall ms, cpu ms)` since the start.
     fn lap(&self) -> (f64, f64) {
-        (ms(self.wall), process_cpu_ms() - self.cpu)
+        (ms(self.wall), crate::cpu_time::process_ms() - self.cpu)
     }
 }
 
