@@ -20,10 +20,10 @@
 use super::error::{code, truncate, AppError};
 use super::worlds::{
     authorize, check_content_type, commit_on_head, json_response, parse_if_match, query_param,
-    requested_version,
+    readable_version, set_version_headers,
 };
 use super::AppState;
-use crate::authoring::exchange::{export_gradient_map, export_png16};
+use crate::authoring::exchange::{export_gradient_map, export_png16, ExchangeError};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
 use crate::authoring::Displacement;
 use crate::store::Role;
@@ -84,8 +84,7 @@ async fn solved(
     rid: &str,
     query: Option<&str>,
 ) -> Result<(Arc<Displacement>, u64), AppError> {
-    let (meta, _) = authorize(st, headers, id, Role::Read).await?;
-    let version = requested_version(&meta, query)?;
+    let (meta, version) = readable_version(st, headers, id, query).await?;
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     let region = inputs
         .region(rid)
@@ -119,10 +118,8 @@ fn png_response(bytes: Vec<u8>, version: u64, extra: &[(&'static str, String)]) 
         header::CACHE_CONTROL,
         HeaderValue::from_static("private, no-cache"),
     );
-    h.insert(
-        HeaderName::from_static(super::worlds::VERSION_HEADER),
-        HeaderValue::from(version),
-    );
+    set_version_headers(&mut res, version, false);
+    let h = res.headers_mut();
     for (k, v) in extra {
         if let Ok(v) = HeaderValue::from_str(v) {
             h.insert(HeaderName::from_static(k), v);
@@ -139,6 +136,29 @@ async fn blocking<T: Send + 'static>(
         .map_err(|_| AppError::internal("image encoding failed"))
 }
 
+/// A PNG and the extra headers that describe it (header name, value).
+type EncodedPng = (Vec<u8>, Vec<(&'static str, String)>);
+
+/// Answers a PNG export of region `rid` of world `id` at the query's `v` (default: latest): the
+/// region is solved after checking read access, `encode` turns it into the PNG and its extra
+/// headers on the blocking pool, and the answer is [`png_response`]. An encoding failure is 500
+/// `internal` with the message `"{what}: {error}"`.
+async fn region_png(
+    st: &AppState,
+    headers: &HeaderMap,
+    id: &str,
+    rid: &str,
+    query: Option<&str>,
+    what: &'static str,
+    encode: fn(&Displacement) -> Result<EncodedPng, ExchangeError>,
+) -> Result<Response, AppError> {
+    let (region, version) = solved(st, headers, id, rid, query).await?;
+    let (bytes, extra) = blocking(move || encode(&region))
+        .await?
+        .map_err(|e| AppError::internal(format!("{what}: {e}")))?;
+    Ok(png_response(bytes, version, &extra))
+}
+
 /// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]`.
 async fn heightmap_out(
     State(st): State<AppState>,
@@ -146,18 +166,25 @@ async fn heightmap_out(
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
-    let png = blocking(move || export_png16(&region))
-        .await?
-        .map_err(|e| AppError::internal(format!("heightmap encoding: {e}")))?;
-    Ok(png_response(
-        png.bytes,
-        version,
-        &[
+    let encode = |region: &Displacement| -> Result<EncodedPng, ExchangeError> {
+        let png = export_png16(region)?;
+        let extra = vec![
             (LO_HEADER, png.lo_m.to_string()),
             (HI_HEADER, png.hi_m.to_string()),
-        ],
-    ))
+        ];
+        Ok((png.bytes, extra))
+    };
+    let query = query.as_deref();
+    region_png(
+        &st,
+        &headers,
+        &id,
+        &rid,
+        query,
+        "heightmap encoding",
+        encode,
+    )
+    .await
 }
 
 /// `GET /v1/worlds/{id}/regions/{rid}/gradients.png[?v=N]`.
@@ -167,15 +194,21 @@ async fn gradients_out(
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
-    let png = blocking(move || export_gradient_map(&region))
-        .await?
-        .map_err(|e| AppError::internal(format!("gradient map encoding: {e}")))?;
-    Ok(png_response(
-        png.bytes,
-        version,
-        &[(GRADIENT_M_HEADER, png.m.to_string())],
-    ))
+    let encode = |region: &Displacement| -> Result<EncodedPng, ExchangeError> {
+        let png = export_gradient_map(region)?;
+        Ok((png.bytes, vec![(GRADIENT_M_HEADER, png.m.to_string())]))
+    };
+    let query = query.as_deref();
+    region_png(
+        &st,
+        &headers,
+        &id,
+        &rid,
+        query,
+        "gradient map encoding",
+        encode,
+    )
+    .await
 }
 
 /// `POST /v1/worlds/{id}/regions/{rid}/heightmap.png?lo_m=&hi_m=[…]`: appends a copy-paste of
@@ -216,10 +249,7 @@ async fn heightmap_in(
         json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
         "no-store",
     );
-    res.headers_mut().insert(
-        HeaderName::from_static(super::worlds::VERSION_HEADER),
-        HeaderValue::from(applied.version),
-    );
+    set_version_headers(&mut res, applied.version, false);
     Ok(res)
 }
 

@@ -128,9 +128,17 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
     Ok(res)
 }
 
-type Segments = Result<Path<(String, String, String, String)>, PathRejection>;
+/// The four path segments of a product route (`{seed|id}/{lod}/{x}/{z_ext}`), or why axum could
+/// not extract them.
+pub(super) type Segments = PathSegments<(String, String, String, String)>;
 
-fn segments(path: Segments) -> Result<(String, String, String, String), AppError> {
+/// Path segments `T` of a route, or why axum could not extract them.
+pub(super) type PathSegments<T> = Result<Path<T>, PathRejection>;
+
+/// Unwraps the path segments of a route. When axum could not extract them (for example,
+/// percent-encoding that is not UTF-8), the answer is 400 `bad_path` with the rejection in the
+/// message, instead of axum's plain-text rejection.
+pub(super) fn segments<T>(path: PathSegments<T>) -> Result<T, AppError> {
     match path {
         Ok(Path(s)) => Ok(s),
         Err(e) => Err(AppError::new(
@@ -194,7 +202,9 @@ async fn scatter(
     Ok(product.respond(&headers))
 }
 
-async fn blocking<T: Send + 'static>(
+/// Runs the encoding `f` on the blocking thread pool. If the task panics or is cancelled, the
+/// failure is logged and the answer is 500 `internal` ("encoding failed").
+pub(super) async fn blocking<T: Send + 'static>(
     f: impl FnOnce() -> T + Send + 'static,
 ) -> Result<T, AppError> {
     tokio::task::spawn_blocking(f).await.map_err(|e| {
