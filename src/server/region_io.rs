@@ -50,11 +50,11 @@ pub(super) fn routes() -> Router<AppState> {
     Router::new()
         .route(
             "/v1/worlds/{id}/regions/{rid}/heightmap.png",
-            get(heightmap_out).post(heightmap_in),
+            get(region_png::<HeightmapPng>).post(heightmap_in),
         )
         .route(
             "/v1/worlds/{id}/regions/{rid}/gradients.png",
-            get(gradients_out),
+            get(region_png::<GradientsPng>),
         )
 }
 
@@ -139,76 +139,55 @@ async fn blocking<T: Send + 'static>(
 /// A PNG and the extra headers that describe it (header name, value).
 type EncodedPng = (Vec<u8>, Vec<(&'static str, String)>);
 
-/// Answers a PNG export of region `rid` of world `id` at the query's `v` (default: latest): the
-/// region is solved after checking read access, `encode` turns it into the PNG and its extra
-/// headers on the blocking pool, and the answer is [`png_response`]. An encoding failure is 500
-/// `internal` with the message `"{what}: {error}"`.
-async fn region_png(
-    st: &AppState,
-    headers: &HeaderMap,
-    id: &str,
-    rid: &str,
-    query: Option<&str>,
-    what: &'static str,
-    encode: fn(&Displacement) -> Result<EncodedPng, ExchangeError>,
-) -> Result<Response, AppError> {
-    let (region, version) = solved(st, headers, id, rid, query).await?;
-    let (bytes, extra) = blocking(move || encode(&region))
-        .await?
-        .map_err(|e| AppError::internal(format!("{what}: {e}")))?;
-    Ok(png_response(bytes, version, &extra))
+/// A PNG export of an authored region: its encoder, and what a failure of it is called.
+trait RegionPng: 'static {
+    /// Names the encoding in the message of the 500 `internal` answer when it fails.
+    const WHAT: &'static str;
+    /// Encodes the solved region as a PNG and the extra headers that describe it.
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError>;
 }
 
-/// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]`.
-async fn heightmap_out(
-    State(st): State<AppState>,
-    Path((id, rid)): Path<(String, String)>,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let encode = |region: &Displacement| -> Result<EncodedPng, ExchangeError> {
+/// `heightmap.png`: the 16-bit heights, their range in [`LO_HEADER`] and [`HI_HEADER`].
+struct HeightmapPng;
+
+impl RegionPng for HeightmapPng {
+    const WHAT: &'static str = "heightmap encoding";
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError> {
         let png = export_png16(region)?;
         let extra = vec![
             (LO_HEADER, png.lo_m.to_string()),
             (HI_HEADER, png.hi_m.to_string()),
         ];
         Ok((png.bytes, extra))
-    };
-    let query = query.as_deref();
-    region_png(
-        &st,
-        &headers,
-        &id,
-        &rid,
-        query,
-        "heightmap encoding",
-        encode,
-    )
-    .await
+    }
 }
 
-/// `GET /v1/worlds/{id}/regions/{rid}/gradients.png[?v=N]`.
-async fn gradients_out(
+/// `gradients.png`: the gradient map, its `m` in [`GRADIENT_M_HEADER`].
+struct GradientsPng;
+
+impl RegionPng for GradientsPng {
+    const WHAT: &'static str = "gradient map encoding";
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError> {
+        let png = export_gradient_map(region)?;
+        Ok((png.bytes, vec![(GRADIENT_M_HEADER, png.m.to_string())]))
+    }
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]` (with `P` = [`HeightmapPng`]) and
+/// `…/gradients.png[?v=N]` (with [`GradientsPng`]): the region is solved after checking read
+/// access, `P` encodes it on the blocking pool, and the answer is [`png_response`]. An encoding
+/// failure is 500 `internal` with the message `"{P::WHAT}: {error}"`.
+async fn region_png<P: RegionPng>(
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let encode = |region: &Displacement| -> Result<EncodedPng, ExchangeError> {
-        let png = export_gradient_map(region)?;
-        Ok((png.bytes, vec![(GRADIENT_M_HEADER, png.m.to_string())]))
-    };
-    let query = query.as_deref();
-    region_png(
-        &st,
-        &headers,
-        &id,
-        &rid,
-        query,
-        "gradient map encoding",
-        encode,
-    )
-    .await
+    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
+    let (bytes, extra) = blocking(move || P::encode(&region))
+        .await?
+        .map_err(|e| AppError::internal(format!("{}: {e}", P::WHAT)))?;
+    Ok(png_response(bytes, version, &extra))
 }
 
 /// `POST /v1/worlds/{id}/regions/{rid}/heightmap.png?lo_m=&hi_m=[…]`: appends a copy-paste of
