@@ -27,9 +27,9 @@ use super::error::{code, truncate, AppError};
 use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
 };
-use super::routes::{blocking, segments, Product, Segments, IMMUTABLE};
+use super::routes::{check_scatter_format, scatter_product, segments, Segments, IMMUTABLE};
 use super::AppState;
-use crate::encode::{self, Format};
+use crate::encode::Format;
 use crate::scene::{Dirty, Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
@@ -928,25 +928,14 @@ async fn scatter(
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
-    if p.format != Format::Json {
-        return Err(AppError::bad_request(
-            code::UNKNOWN_FORMAT,
-            "format",
-            "scatter is only available as .json",
-        ));
-    }
+    check_scatter_format(p.format)?;
     let (state, plan, inputs, key) = (st.clone(), p.plan.clone(), p.inputs.clone(), p.key);
     let product = st
         .limited(async move {
             let tile = state
                 .tile_with_inputs(&inputs, plan.clone(), key, [false; 4])
                 .await;
-            let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
-            Ok(Product {
-                body,
-                content_type: Format::Json.content_type(),
-                extra: Vec::new(),
-            })
+            scatter_product(plan, tile).await
         })
         .await?;
     Ok(finish_product(&p, product.respond(&headers)))
