@@ -17,7 +17,7 @@
 
 use super::error::{code, truncate, AppError};
 use super::params::{parse_coord, parse_format, parse_lod, parse_seed, split_extension};
-use super::routes::CachedProduct;
+use super::routes::{segments, CachedProduct, PathSegments};
 use super::worlds::{authorize, product_headers};
 use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
@@ -32,7 +32,7 @@ use crate::volume::chunk::{
     MAX_CHUNK_LOD,
 };
 use crate::volume::mesh::QuadMesh;
-use axum::extract::{Path, RawQuery, State};
+use axum::extract::{RawQuery, State};
 use axum::http::{HeaderMap, StatusCode};
 use axum::response::Response;
 use axum::routing::get;
@@ -52,18 +52,8 @@ pub fn routes() -> Router<AppState> {
         )
 }
 
-type Segments =
-    Result<Path<(String, String, String, String, String)>, axum::extract::rejection::PathRejection>;
-
-fn segments(path: Segments) -> Result<(String, String, String, String, String), AppError> {
-    path.map(|Path(s)| s).map_err(|e| {
-        AppError::new(
-            StatusCode::BAD_REQUEST,
-            code::BAD_PATH,
-            format!("invalid path: {e}"),
-        )
-    })
-}
+/// The five path segments of a chunk route (`{seed|id}/{lod}/{x}/{y}/{z_ext}`).
+type Segments = PathSegments<(String, String, String, String, String)>;
 
 /// Parses `lod`, `x`, `y`, `z.ext` and checks the chunk limits against `plan`.
 fn parse_chunk(

@@ -23,7 +23,7 @@
 
 use super::error::{code, AppError};
 use super::jobs::{valid_job_id, Job, Progress, Status, SubmitError};
-use super::worlds::{authorize, check_content_type, json_response, parse_body, store_error};
+use super::worlds::{authorize, authorized_body, json_response, store_error};
 use super::AppState;
 use crate::export::{ExportSpec, Product, Shard};
 use crate::store::{Role, StoreError};
@@ -106,9 +106,8 @@ async fn create(
     headers: HeaderMap,
     body: Bytes,
 ) -> Result<Response, AppError> {
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
-    check_content_type(&headers, "application/json", false)?;
-    let req: ExportBody = parse_body(&body)?;
+    let (meta, req): (_, ExportBody) =
+        authorized_body(&st, &headers, &id, Role::Read, &body).await?;
     let version = match req.v {
         None => meta.version,
         Some(0) => {

@@ -23,7 +23,7 @@ use axum::http::{header, HeaderValue};
 use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 use std::collections::BTreeMap;
-use std::fmt::Write;
+use std::fmt::{Display, Write};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
@@ -57,6 +57,33 @@ pub struct Metrics {
 
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// Writes a metric family's `# HELP` and `# TYPE` lines.
+fn family_header(out: &mut String, name: &str, kind: &str, help: &str) {
+    let _ = writeln!(out, "# HELP {name} {help}\n# TYPE {name} {kind}");
+}
+
+/// Writes a metric family with one sample and no labels: its `# HELP` and `# TYPE` lines, then
+/// `name value`.
+fn single(out: &mut String, name: &str, kind: &str, help: &str, value: impl Display) {
+    family_header(out, name, kind, help);
+    let _ = writeln!(out, "{name} {value}");
+}
+
+/// Writes a metric family with one label: its `# HELP` and `# TYPE` lines, then one sample
+/// `name{label="value"} sample` per row, in the order given. The label values are written as
+/// they are, so they must be plain words that need no escaping.
+fn labelled<L: Display, V: Display>(
+    out: &mut String,
+    (name, kind, help): (&str, &str, &str),
+    label: &str,
+    rows: impl IntoIterator<Item = (L, V)>,
+) {
+    family_header(out, name, kind, help);
+    for (value, sample) in rows {
+        let _ = writeln!(out, "{name}{{{label}=\"{value}\"}} {sample}");
+    }
 }
 
 fn escape(v: &str) -> String {
@@ -123,25 +150,23 @@ impl Metrics {
                 h.count
             );
         }
-        out.push_str("# HELP strata_edits_total Scene edits by result.\n");
-        out.push_str("# TYPE strata_edits_total counter\n");
-        for (result, c) in [
-            ("applied", &self.edits_applied),
-            ("conflict", &self.edits_conflict),
-            ("refused", &self.edits_refused),
-        ] {
-            let _ = writeln!(
-                out,
-                "strata_edits_total{{result=\"{result}\"}} {}",
-                c.load(Ordering::Relaxed)
-            );
-        }
-        out.push_str("# HELP strata_worlds_created_total Worlds created.\n");
-        out.push_str("# TYPE strata_worlds_created_total counter\n");
-        let _ = writeln!(
-            out,
-            "strata_worlds_created_total {}",
-            self.worlds_created.load(Ordering::Relaxed)
+        labelled(
+            &mut out,
+            ("strata_edits_total", "counter", "Scene edits by result."),
+            "result",
+            [
+                ("applied", &self.edits_applied),
+                ("conflict", &self.edits_conflict),
+                ("refused", &self.edits_refused),
+            ]
+            .map(|(result, c)| (result, c.load(Ordering::Relaxed))),
+        );
+        single(
+            &mut out,
+            "strata_worlds_created_total",
+            "counter",
+            "Worlds created.",
+            self.worlds_created.load(Ordering::Relaxed),
         );
         out.push_str(extra);
         out
@@ -169,35 +194,41 @@ pub async fn track(State(m): State<Arc<Metrics>>, req: Request, next: Next) -> R
 
 /// The stage cache's lines.
 fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
-    out.push_str("# HELP strata_stage_cache_hits_total Tiles found in the stage cache, by tier.\n");
-    out.push_str("# TYPE strata_stage_cache_hits_total counter\n");
-    for (tier, n) in [
-        ("memory", s.hits),
-        ("disk", s.disk_hits),
-        ("inflight", s.joined),
-    ] {
-        let _ = writeln!(out, "strata_stage_cache_hits_total{{tier=\"{tier}\"}} {n}");
-    }
-    out.push_str("# HELP strata_stage_runs_total Stage runs of tile synthesis, by stage.\n");
-    out.push_str("# TYPE strata_stage_runs_total counter\n");
-    for stage in crate::cache::Stage::ALL {
-        let _ = writeln!(
-            out,
-            "strata_stage_runs_total{{stage=\"{}\"}} {}",
-            stage.name(),
-            s.runs_of(stage)
-        );
-    }
-    out.push_str("# HELP strata_stage_seconds_total Time spent in each stage of tile synthesis.\n");
-    out.push_str("# TYPE strata_stage_seconds_total counter\n");
-    for stage in crate::cache::Stage::ALL {
-        let _ = writeln!(
-            out,
-            "strata_stage_seconds_total{{stage=\"{}\"}} {:.6}",
-            stage.name(),
-            s.seconds_of(stage)
-        );
-    }
+    use crate::cache::Stage;
+    labelled(
+        out,
+        (
+            "strata_stage_cache_hits_total",
+            "counter",
+            "Tiles found in the stage cache, by tier.",
+        ),
+        "tier",
+        [
+            ("memory", s.hits),
+            ("disk", s.disk_hits),
+            ("inflight", s.joined),
+        ],
+    );
+    labelled(
+        out,
+        (
+            "strata_stage_runs_total",
+            "counter",
+            "Stage runs of tile synthesis, by stage.",
+        ),
+        "stage",
+        Stage::ALL.map(|stage| (stage.name(), s.runs_of(stage))),
+    );
+    labelled(
+        out,
+        (
+            "strata_stage_seconds_total",
+            "counter",
+            "Time spent in each stage of tile synthesis.",
+        ),
+        "stage",
+        Stage::ALL.map(|stage| (stage.name(), format!("{:.6}", s.seconds_of(stage)))),
+    );
     for (name, kind, help, v) in [
         (
             "strata_stage_cache_misses_total",
@@ -242,9 +273,7 @@ fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
             s.entries,
         ),
     ] {
-        let _ = writeln!(out, "# HELP {name} {help}");
-        let _ = writeln!(out, "# TYPE {name} {kind}");
-        let _ = writeln!(out, "{name} {v}");
+        single(out, name, kind, help, v);
     }
 }
 
@@ -309,10 +338,7 @@ fn service_gauges(out: &mut String, st: &AppState) {
         ),
     ];
     for (name, kind, help, value) in lines {
-        let _ = writeln!(
-            out,
-            "# HELP {name} {help}\n# TYPE {name} {kind}\n{name} {value}"
-        );
+        single(out, name, kind, help, value);
     }
 }
 
@@ -321,29 +347,33 @@ pub async fn render(State(st): State<AppState>) -> Response {
     let (seed_hits, seed_misses) = st.plans.stats();
     let (world_hits, world_misses) = st.worlds.plan_stats();
     let mut extra = String::new();
-    extra.push_str("# HELP strata_plan_cache_hits_total World plans found in the cache.\n");
-    extra.push_str("# TYPE strata_plan_cache_hits_total counter\n");
-    let _ = writeln!(
-        extra,
-        "strata_plan_cache_hits_total{{cache=\"seeds\"}} {seed_hits}"
+    labelled(
+        &mut extra,
+        (
+            "strata_plan_cache_hits_total",
+            "counter",
+            "World plans found in the cache.",
+        ),
+        "cache",
+        [("seeds", seed_hits), ("worlds", world_hits)],
     );
-    let _ = writeln!(
-        extra,
-        "strata_plan_cache_hits_total{{cache=\"worlds\"}} {world_hits}"
+    labelled(
+        &mut extra,
+        (
+            "strata_plan_cache_misses_total",
+            "counter",
+            "World plans built.",
+        ),
+        "cache",
+        [("seeds", seed_misses), ("worlds", world_misses)],
     );
-    extra.push_str("# HELP strata_plan_cache_misses_total World plans built.\n");
-    extra.push_str("# TYPE strata_plan_cache_misses_total counter\n");
-    let _ = writeln!(
-        extra,
-        "strata_plan_cache_misses_total{{cache=\"seeds\"}} {seed_misses}"
+    single(
+        &mut extra,
+        "strata_edit_subscribers",
+        "gauge",
+        "Receivers of the in-process edit broadcast.",
+        st.worlds.subscribers(),
     );
-    let _ = writeln!(
-        extra,
-        "strata_plan_cache_misses_total{{cache=\"worlds\"}} {world_misses}"
-    );
-    extra.push_str("# HELP strata_edit_subscribers Receivers of the in-process edit broadcast.\n");
-    extra.push_str("# TYPE strata_edit_subscribers gauge\n");
-    let _ = writeln!(extra, "strata_edit_subscribers {}", st.worlds.subscribers());
     stage_cache(&mut extra, &st.cache.stats());
     service_gauges(&mut extra, &st);
     let mut res = st.metrics.render(&extra).into_response();
@@ -376,6 +406,41 @@ mod tests {
         assert!(t.contains(
             "strata_http_request_duration_seconds_bucket{route=\"/v1/x/{id}\",le=\"+Inf\"} 2"
         ));
-        assert!(t.contains("strata_edits_total{result=\"applied\"} 2"));
+        assert!(t.contains(concat!(
+            "# HELP strata_edits_total Scene edits by result.\n",
+            "# TYPE strata_edits_total counter\n",
+            "strata_edits_total{result=\"applied\"} 2\n",
+            "strata_edits_total{result=\"conflict\"} 0\n",
+            "strata_edits_total{result=\"refused\"} 0\n",
+            "# HELP strata_worlds_created_total Worlds created.\n",
+            "# TYPE strata_worlds_created_total counter\n",
+            "strata_worlds_created_total 0\n",
+        )));
+    }
+
+    /// The family writers give the exact text format: `# HELP`, `# TYPE`, then the samples, one
+    /// line each, in the order given.
+    #[test]
+    fn family_writers() {
+        let mut out = String::new();
+        labelled(
+            &mut out,
+            ("x_total", "counter", "Xs by kind."),
+            "kind",
+            [("a", 1), ("b", 2)],
+        );
+        single(&mut out, "y", "gauge", "Ys.", 3.5);
+        assert_eq!(
+            out,
+            concat!(
+                "# HELP x_total Xs by kind.\n",
+                "# TYPE x_total counter\n",
+                "x_total{kind=\"a\"} 1\n",
+                "x_total{kind=\"b\"} 2\n",
+                "# HELP y Ys.\n",
+                "# TYPE y gauge\n",
+                "y 3.5\n",
+            )
+        );
     }
 }

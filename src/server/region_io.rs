@@ -20,10 +20,10 @@
 use super::error::{code, truncate, AppError};
 use super::worlds::{
     authorize, check_content_type, commit_on_head, json_response, parse_if_match, query_param,
-    requested_version,
+    readable_version, set_version_headers,
 };
 use super::AppState;
-use crate::authoring::exchange::{export_gradient_map, export_png16};
+use crate::authoring::exchange::{export_gradient_map, export_png16, ExchangeError};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
 use crate::authoring::Displacement;
 use crate::store::Role;
@@ -50,11 +50,11 @@ pub(super) fn routes() -> Router<AppState> {
     Router::new()
         .route(
             "/v1/worlds/{id}/regions/{rid}/heightmap.png",
-            get(heightmap_out).post(heightmap_in),
+            get(region_png::<HeightmapPng>).post(heightmap_in),
         )
         .route(
             "/v1/worlds/{id}/regions/{rid}/gradients.png",
-            get(gradients_out),
+            get(region_png::<GradientsPng>),
         )
 }
 
@@ -84,8 +84,7 @@ async fn solved(
     rid: &str,
     query: Option<&str>,
 ) -> Result<(Arc<Displacement>, u64), AppError> {
-    let (meta, _) = authorize(st, headers, id, Role::Read).await?;
-    let version = requested_version(&meta, query)?;
+    let (meta, version) = readable_version(st, headers, id, query).await?;
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     let region = inputs
         .region(rid)
@@ -119,10 +118,8 @@ fn png_response(bytes: Vec<u8>, version: u64, extra: &[(&'static str, String)]) 
         header::CACHE_CONTROL,
         HeaderValue::from_static("private, no-cache"),
     );
-    h.insert(
-        HeaderName::from_static(super::worlds::VERSION_HEADER),
-        HeaderValue::from(version),
-    );
+    set_version_headers(&mut res, version, false);
+    let h = res.headers_mut();
     for (k, v) in extra {
         if let Ok(v) = HeaderValue::from_str(v) {
             h.insert(HeaderName::from_static(k), v);
@@ -139,43 +136,58 @@ async fn blocking<T: Send + 'static>(
         .map_err(|_| AppError::internal("image encoding failed"))
 }
 
-/// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]`.
-async fn heightmap_out(
-    State(st): State<AppState>,
-    Path((id, rid)): Path<(String, String)>,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
-    let png = blocking(move || export_png16(&region))
-        .await?
-        .map_err(|e| AppError::internal(format!("heightmap encoding: {e}")))?;
-    Ok(png_response(
-        png.bytes,
-        version,
-        &[
-            (LO_HEADER, png.lo_m.to_string()),
-            (HI_HEADER, png.hi_m.to_string()),
-        ],
-    ))
+/// A PNG and the extra headers that describe it (header name, value).
+type EncodedPng = (Vec<u8>, Vec<(&'static str, String)>);
+
+/// A PNG export of an authored region: its encoder, and what a failure of it is called.
+trait RegionPng: 'static {
+    /// Names the encoding in the message of the 500 `internal` answer when it fails.
+    const WHAT: &'static str;
+    /// Encodes the solved region as a PNG and the extra headers that describe it.
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError>;
 }
 
-/// `GET /v1/worlds/{id}/regions/{rid}/gradients.png[?v=N]`.
-async fn gradients_out(
+/// `heightmap.png`: the 16-bit heights, their range in [`LO_HEADER`] and [`HI_HEADER`].
+struct HeightmapPng;
+
+impl RegionPng for HeightmapPng {
+    const WHAT: &'static str = "heightmap encoding";
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError> {
+        let png = export_png16(region)?;
+        let extra = vec![
+            (LO_HEADER, png.lo_m.to_string()),
+            (HI_HEADER, png.hi_m.to_string()),
+        ];
+        Ok((png.bytes, extra))
+    }
+}
+
+/// `gradients.png`: the gradient map, its `m` in [`GRADIENT_M_HEADER`].
+struct GradientsPng;
+
+impl RegionPng for GradientsPng {
+    const WHAT: &'static str = "gradient map encoding";
+    fn encode(region: &Displacement) -> Result<EncodedPng, ExchangeError> {
+        let png = export_gradient_map(region)?;
+        Ok((png.bytes, vec![(GRADIENT_M_HEADER, png.m.to_string())]))
+    }
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/heightmap.png[?v=N]` (with `P` = [`HeightmapPng`]) and
+/// `…/gradients.png[?v=N]` (with [`GradientsPng`]): the region is solved after checking read
+/// access, `P` encodes it on the blocking pool, and the answer is [`png_response`]. An encoding
+/// failure is 500 `internal` with the message `"{P::WHAT}: {error}"`.
+async fn region_png<P: RegionPng>(
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
     let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
-    let png = blocking(move || export_gradient_map(&region))
+    let (bytes, extra) = blocking(move || P::encode(&region))
         .await?
-        .map_err(|e| AppError::internal(format!("gradient map encoding: {e}")))?;
-    Ok(png_response(
-        png.bytes,
-        version,
-        &[(GRADIENT_M_HEADER, png.m.to_string())],
-    ))
+        .map_err(|e| AppError::internal(format!("{}: {e}", P::WHAT)))?;
+    Ok(png_response(bytes, version, &extra))
 }
 
 /// `POST /v1/worlds/{id}/regions/{rid}/heightmap.png?lo_m=&hi_m=[…]`: appends a copy-paste of
@@ -216,10 +228,7 @@ async fn heightmap_in(
         json!({ "id": id, "version": applied.version, "region": rid, "op": ops }),
         "no-store",
     );
-    res.headers_mut().insert(
-        HeaderName::from_static(super::worlds::VERSION_HEADER),
-        HeaderValue::from(applied.version),
-    );
+    set_version_headers(&mut res, applied.version, false);
     Ok(res)
 }
 

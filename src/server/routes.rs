@@ -15,6 +15,7 @@ use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::{Json, Router};
 use serde_json::json;
+use std::sync::Arc;
 use tower_http::compression::predicate::{Predicate, SizeAbove};
 use tower_http::compression::CompressionLayer;
 use tower_http::services::ServeDir;
@@ -128,9 +129,17 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
     Ok(res)
 }
 
-type Segments = Result<Path<(String, String, String, String)>, PathRejection>;
+/// The four path segments of a product route (`{seed|id}/{lod}/{x}/{z_ext}`), or why axum could
+/// not extract them.
+pub(super) type Segments = PathSegments<(String, String, String, String)>;
 
-fn segments(path: Segments) -> Result<(String, String, String, String), AppError> {
+/// Path segments `T` of a route, or why axum could not extract them.
+pub(super) type PathSegments<T> = Result<Path<T>, PathRejection>;
+
+/// Unwraps the path segments of a route. When axum could not extract them (for example,
+/// percent-encoding that is not UTF-8), the answer is 400 `bad_path` with the rejection in the
+/// message, instead of axum's plain-text rejection.
+pub(super) fn segments<T>(path: PathSegments<T>) -> Result<T, AppError> {
     match path {
         Ok(Path(s)) => Ok(s),
         Err(e) => Err(AppError::new(
@@ -168,13 +177,7 @@ async fn scatter(
 ) -> Result<Response, AppError> {
     let (seed, lod, x, z_ext) = segments(path)?;
     let req = parse_product(&seed, &lod, &x, &z_ext)?;
-    if req.format != Format::Json {
-        return Err(AppError::bad_request(
-            code::UNKNOWN_FORMAT,
-            "format",
-            "scatter is only available as .json",
-        ));
-    }
+    check_scatter_format(req.format)?;
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
     let state = st.clone();
@@ -183,17 +186,40 @@ async fn scatter(
             let tile = state
                 .cached_tile(None, plan.clone(), req.key, [false; 4])
                 .await?;
-            let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
-            Ok(Product {
-                body,
-                content_type: Format::Json.content_type(),
-                extra: Vec::new(),
-            })
+            scatter_product(plan, tile).await
         })
         .await?;
     Ok(product.respond(&headers))
 }
 
+/// Refuses a scatter request for any format but JSON: 400 `unknown_format` naming `format`.
+pub(super) fn check_scatter_format(format: Format) -> Result<(), AppError> {
+    if format == Format::Json {
+        return Ok(());
+    }
+    Err(AppError::bad_request(
+        code::UNKNOWN_FORMAT,
+        "format",
+        "scatter is only available as .json",
+    ))
+}
+
+/// Encodes the scatter points of `tile` (of the world `plan`) as a JSON product, on the
+/// blocking pool.
+pub(super) async fn scatter_product(
+    plan: Arc<WorldPlan>,
+    tile: Arc<Tile>,
+) -> Result<Product, AppError> {
+    let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
+    Ok(Product {
+        body,
+        content_type: Format::Json.content_type(),
+        extra: Vec::new(),
+    })
+}
+
+/// Runs the encoding `f` on the blocking thread pool. If the task panics or is cancelled, the
+/// failure is logged and the answer is 500 `internal` ("encoding failed").
 async fn blocking<T: Send + 'static>(
     f: impl FnOnce() -> T + Send + 'static,
 ) -> Result<T, AppError> {

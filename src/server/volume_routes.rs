@@ -30,8 +30,8 @@
 use super::error::{code, truncate, AppError};
 use super::routes::CachedProduct;
 use super::worlds::{
-    authorize, check_content_type, commit_on_head, json_response, parse_if_match, product_headers,
-    query_param, requested_version, set_version_headers, store_error,
+    authorize, check_content_type, commit_on_head, edit_answer, json_response, parse_if_match,
+    product_headers, query_param, readable_version, set_version_headers, store_error,
 };
 use super::AppState;
 use crate::encode::region_glb::{self, RegionInfo};
@@ -99,9 +99,8 @@ async fn mesh_glb(
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     let query = query.as_deref();
-    let version = requested_version(&meta, query)?;
+    let (meta, version) = readable_version(&st, &headers, &id, query).await?;
     let pinned = query_param(query, "v").is_some();
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     let volume = volume_input(&inputs, &vid).ok_or_else(|| no_volume(&id, &vid, version))?;
@@ -152,8 +151,7 @@ async fn get_curves(
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
-    let version = requested_version(&meta, query.as_deref())?;
+    let (meta, version) = readable_version(&st, &headers, &id, query.as_deref()).await?;
     let scene = st
         .worlds
         .store
@@ -229,13 +227,7 @@ async fn put_curves(
         Ok((patch, ()))
     })
     .await?;
-    let mut res = json_response(
-        StatusCode::OK,
-        json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
-        "no-store",
-    );
-    set_version_headers(&mut res, applied.version, true);
-    Ok(res)
+    Ok(edit_answer(&id, &applied))
 }
 
 fn patch(v: Value) -> Result<json_patch::Patch, AppError> {

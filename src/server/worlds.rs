@@ -27,9 +27,9 @@ use super::error::{code, truncate, AppError};
 use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
 };
-use super::routes::{Product, IMMUTABLE};
+use super::routes::{check_scatter_format, scatter_product, segments, Segments, IMMUTABLE};
 use super::AppState;
-use crate::encode::{self, Format};
+use crate::encode::Format;
 use crate::scene::{Dirty, Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
@@ -342,6 +342,21 @@ pub(crate) async fn authorize(
     let meta = w.store.meta(id).await.map_err(store_error)?;
     who.require(&meta, need)?;
     Ok((meta, who))
+}
+
+/// Checks that the caller has `need` on world `id` and that the body is JSON (a missing
+/// `Content-Type` is accepted), then parses the body as [`parse_body`] does. Returns the world
+/// and the parsed body; the checks run in that order, so the first failing one is answered.
+pub(super) async fn authorized_body<T: serde::de::DeserializeOwned>(
+    st: &AppState,
+    headers: &HeaderMap,
+    id: &str,
+    need: Role,
+    body: &[u8],
+) -> Result<(WorldMeta, T), AppError> {
+    let (meta, _) = authorize(st, headers, id, need).await?;
+    check_content_type(headers, "application/json", false)?;
+    Ok((meta, parse_body(body)?))
 }
 
 /// Refuses a body whose `Content-Type` is present and not `want` (parameters ignored); with
@@ -683,13 +698,20 @@ async fn edit(
     let expected = parse_if_match(&headers).map_err(refused)?;
     let patch: json_patch::Patch = parse_body(&body).map_err(refused)?;
     let applied = commit_edit(&st, &id, patch, expected).await?;
+    Ok(edit_answer(&id, &applied))
+}
+
+/// The answer to an edit of world `id` that was committed as `applied`: 200 with
+/// `{id, version, dirty}`, `Cache-Control: no-store`, and the new version in the version header
+/// and the `ETag`.
+pub(super) fn edit_answer(id: &str, applied: &crate::store::EditApplied) -> Response {
     let mut res = json_response(
         StatusCode::OK,
         json!({ "id": id, "version": applied.version, "dirty": applied.dirty }),
         "no-store",
     );
     set_version_headers(&mut res, applied.version, true);
-    Ok(res)
+    res
 }
 
 /// Attempts of a read-modify-write edit made without `If-Match` ([`commit_on_head`]).
@@ -775,9 +797,7 @@ async fn mint_token(
     headers: HeaderMap,
     body: Bytes,
 ) -> Result<Response, AppError> {
-    authorize(&st, &headers, &id, Role::Admin).await?;
-    check_content_type(&headers, "application/json", false)?;
-    let req: TokenBody = parse_body(&body)?;
+    let (_, req): (_, TokenBody) = authorized_body(&st, &headers, &id, Role::Admin, &body).await?;
     let token = new_token().map_err(store_error)?;
     st.worlds
         .store
@@ -805,9 +825,7 @@ async fn set_access(
     headers: HeaderMap,
     body: Bytes,
 ) -> Result<Response, AppError> {
-    authorize(&st, &headers, &id, Role::Admin).await?;
-    check_content_type(&headers, "application/json", false)?;
-    let req: AccessBody = parse_body(&body)?;
+    let (_, req): (_, AccessBody) = authorized_body(&st, &headers, &id, Role::Admin, &body).await?;
     let meta = st
         .worlds
         .store
@@ -845,16 +863,8 @@ async fn world_product(
     let (z, ext) = split_extension(&z_ext);
     let z = parse_coord(z, "z")?;
     let format = parse_format(ext)?;
-    let (version, pinned) = match query_param(query, "v") {
-        None => (meta.version, false),
-        Some(v) => (parse_version(v, "v")?, true),
-    };
-    if version > meta.version {
-        return Err(store_error(StoreError::VersionNotFound {
-            version,
-            latest: meta.version,
-        }));
-    }
+    let version = requested_version(&meta, query)?;
+    let pinned = query_param(query, "v").is_some();
     let key = TileKey { lod, x, z };
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     check_bounds(&plan, key)?;
@@ -895,28 +905,6 @@ pub(super) fn product_headers(res: &mut Response, meta: &WorldMeta, version: u64
     set_version_headers(res, version, false);
 }
 
-async fn blocking<T: Send + 'static>(
-    f: impl FnOnce() -> T + Send + 'static,
-) -> Result<T, AppError> {
-    tokio::task::spawn_blocking(f).await.map_err(|e| {
-        tracing::error!("encoding failed: {e}");
-        AppError::internal("encoding failed")
-    })
-}
-
-type Segments =
-    Result<Path<(String, String, String, String)>, axum::extract::rejection::PathRejection>;
-
-fn segments(path: Segments) -> Result<(String, String, String, String), AppError> {
-    path.map(|Path(s)| s).map_err(|e| {
-        AppError::new(
-            StatusCode::BAD_REQUEST,
-            code::BAD_PATH,
-            format!("invalid path: {e}"),
-        )
-    })
-}
-
 /// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=n,e,s,w]`.
 async fn tile(
     State(st): State<AppState>,
@@ -940,25 +928,14 @@ async fn scatter(
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
-    if p.format != Format::Json {
-        return Err(AppError::bad_request(
-            code::UNKNOWN_FORMAT,
-            "format",
-            "scatter is only available as .json",
-        ));
-    }
+    check_scatter_format(p.format)?;
     let (state, plan, inputs, key) = (st.clone(), p.plan.clone(), p.inputs.clone(), p.key);
     let product = st
         .limited(async move {
             let tile = state
                 .tile_with_inputs(&inputs, plan.clone(), key, [false; 4])
                 .await;
-            let body = blocking(move || encode::scatter::encode(&plan, &tile)).await?;
-            Ok(Product {
-                body,
-                content_type: Format::Json.content_type(),
-                extra: Vec::new(),
-            })
+            scatter_product(plan, tile).await
         })
         .await?;
     Ok(finish_product(&p, product.respond(&headers)))
@@ -1006,6 +983,19 @@ pub(crate) fn requested_version(meta: &WorldMeta, query: Option<&str>) -> Result
     Ok(version)
 }
 
+/// Checks that the caller may read world `id`, then returns the world and the version the
+/// request names with `?v=N` (the latest without), checked as [`requested_version`] does.
+pub(super) async fn readable_version(
+    st: &AppState,
+    headers: &HeaderMap,
+    id: &str,
+    query: Option<&str>,
+) -> Result<(WorldMeta, u64), AppError> {
+    let (meta, _) = authorize(st, headers, id, Role::Read).await?;
+    let version = requested_version(&meta, query)?;
+    Ok((meta, version))
+}
+
 /// `GET /v1/worlds/{id}/regions/{rid}/stats?point=x,z | polyline=x,z;x,z;… |
 /// rect=x0,z0;x1,z1 [&v=N]`: elevation (min, mean, max, metres) and mean and steepest slope
 /// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
@@ -1017,9 +1007,8 @@ async fn region_stats(
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
     use crate::authoring::stats::{stats, StatsShape};
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     let query = query.as_deref();
-    let version = requested_version(&meta, query)?;
+    let (meta, version) = readable_version(&st, &headers, &id, query).await?;
     let shape = match (
         query_param(query, "point"),
         query_param(query, "polyline"),
