@@ -448,13 +448,29 @@ async fn world_chunks_are_served() {
         "{}",
         String::from_utf8_lossy(&body)
     );
-    let (s, _, _) = get(
-        &app,
-        &format!("/v1/worlds/{id}/chunks/1/0/{y}/0.json?v=x"),
-        &[],
-    )
-    .await;
-    assert_eq!(s, StatusCode::BAD_REQUEST);
+    let e: serde_json::Value = serde_json::from_slice(&body).expect("JSON error");
+    assert_eq!(
+        (e["error"]["code"].as_str(), e["error"]["field"].as_str()),
+        (Some("version_not_found"), Some("v")),
+        "{e}"
+    );
+    // The version query is refused as on the tile routes: not a number, zero, or more than 19
+    // digits (leading zeros included).
+    for bad in ["x", "0", "00000000000000000001", ""] {
+        let (s, _, body) = get(
+            &app,
+            &format!("/v1/worlds/{id}/chunks/1/0/{y}/0.json?v={bad}"),
+            &[],
+        )
+        .await;
+        assert_eq!(s, StatusCode::BAD_REQUEST, "v={bad}");
+        let e: serde_json::Value = serde_json::from_slice(&body).expect("JSON error");
+        assert_eq!(
+            (e["error"]["code"].as_str(), e["error"]["field"].as_str()),
+            (Some("bad_version"), Some("v")),
+            "v={bad}: {e}"
+        );
+    }
     let (s, _, _) = get(&app, "/v1/worlds/nope/chunks/1/0/0/0.json", &[]).await;
     assert_eq!(s, StatusCode::NOT_FOUND);
 }

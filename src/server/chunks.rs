@@ -15,10 +15,10 @@
 //! content-hash `ETag`; seed chunks are immutable, world chunks follow the world tiles' caching
 //! (immutable when pinned with `?v=N`, short-lived otherwise).
 
-use super::error::{code, truncate, AppError};
+use super::error::{code, AppError};
 use super::params::{parse_coord, parse_format, parse_lod, parse_seed, split_extension};
 use super::routes::{segments, CachedProduct, PathSegments};
-use super::worlds::{authorize, product_headers};
+use super::worlds::{authorize, product_headers, query_param, requested_version};
 use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
 use crate::encode::{chunk_glb, Format};
@@ -33,7 +33,7 @@ use crate::volume::chunk::{
 };
 use crate::volume::mesh::QuadMesh;
 use axum::extract::{RawQuery, State};
-use axum::http::{HeaderMap, StatusCode};
+use axum::http::HeaderMap;
 use axum::response::Response;
 use axum::routing::get;
 use axum::Router;
@@ -218,30 +218,6 @@ async fn seed_chunk(
     Ok(p.respond(&headers))
 }
 
-/// `?v=N`: a version number, at least 1.
-fn parse_version_query(query: Option<&str>) -> Result<Option<u64>, AppError> {
-    let Some(v) = query
-        .unwrap_or("")
-        .split('&')
-        .filter_map(|p| p.split_once('=').or(Some((p, ""))))
-        .find(|(k, _)| *k == "v")
-        .map(|(_, v)| v)
-    else {
-        return Ok(None);
-    };
-    match v.parse::<u64>() {
-        Ok(n) if n >= 1 && v.bytes().all(|b| b.is_ascii_digit()) => Ok(Some(n)),
-        _ => Err(AppError::bad_request(
-            code::BAD_VERSION,
-            "v",
-            format!(
-                "v must be a version number (a positive integer), got {:?}",
-                truncate(v, 40)
-            ),
-        )),
-    }
-}
-
 /// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`.
 async fn world_chunk(
     State(st): State<AppState>,
@@ -252,23 +228,13 @@ async fn world_chunk(
     let (id, lod, x, y, z_ext) = segments(path)?;
     let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     parse_chunk(None, &lod, &x, &y, &z_ext)?;
-    let pinned = parse_version_query(query.as_deref())?;
-    let version = pinned.unwrap_or(meta.version);
-    if version > meta.version {
-        return Err(AppError::new(
-            StatusCode::NOT_FOUND,
-            code::VERSION_NOT_FOUND,
-            format!(
-                "world {id} has no version {version}; the latest is {}",
-                meta.version
-            ),
-        )
-        .with_field("v"));
-    }
+    // `?v=N` is read and refused exactly as on the other product routes.
+    let version = requested_version(&meta, query.as_deref())?;
+    let pinned = query_param(query.as_deref(), "v").is_some();
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
     let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
     let p = product(&st, inputs, plan, key, format).await?;
     let mut res = p.respond(&headers);
-    product_headers(&mut res, &meta, version, pinned.is_some());
+    product_headers(&mut res, &meta, version, pinned);
     Ok(res)
 }
