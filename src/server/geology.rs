@@ -172,9 +172,7 @@ impl Ground {
 
 fn json_ok(body: Value, version: u64) -> Response {
     let mut res = (StatusCode::OK, axum::Json(body)).into_response();
-    if let Ok(v) = HeaderValue::from_str(&version.to_string()) {
-        res.headers_mut().insert(super::worlds::VERSION_HEADER, v);
-    }
+    super::worlds::set_version_headers(&mut res, version, false);
     res.headers_mut()
         .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
     res
