@@ -247,7 +247,7 @@ async fn region_stats_read_the_authored_heights() {
         tok,
     )
     .await
-    .error(StatusCode::NOT_FOUND, "not_found", None);
+    .error(StatusCode::NOT_FOUND, "not_found", Some("rid"));
     get(&app, &format!("{base}?point=64,64&v=9"), tok)
         .await
         .error(StatusCode::NOT_FOUND, "version_not_found", None);

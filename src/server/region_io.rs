@@ -97,7 +97,8 @@ async fn solved(
     Ok((solved, version))
 }
 
-fn no_region(id: &str, rid: &str, version: u64) -> AppError {
+/// 404 `not_found` naming `rid`: world `id` has no region `rid` at `version`.
+pub(super) fn no_region(id: &str, rid: &str, version: u64) -> AppError {
     AppError::new(
         StatusCode::NOT_FOUND,
         code::NOT_FOUND,

@@ -23,7 +23,7 @@
 //! [`AppState::subscribe_edits`]) after they are committed.
 
 use super::access::{caller, Caller};
-use super::error::{code, truncate, AppError};
+use super::error::{code, AppError};
 use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
 };
@@ -1038,16 +1038,9 @@ async fn region_stats(
         }
     };
     let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let region = inputs.region(&rid).ok_or_else(|| {
-        AppError::new(
-            StatusCode::NOT_FOUND,
-            code::NOT_FOUND,
-            format!(
-                "world {id} has no region {:?} at version {version}",
-                truncate(&rid, 128)
-            ),
-        )
-    })?;
+    let region = inputs
+        .region(&rid)
+        .ok_or_else(|| super::region_io::no_region(&id, &rid, version))?;
     let solved = st
         .regions
         .get(&plan, region)
