@@ -10,10 +10,9 @@
 
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::edits::TileEdits;
-use crate::terrain::lattice::Window;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
-use crate::terrain::{FieldJob, Tile, TileKey, WorldPlan, TILE_VERTS};
+use crate::terrain::{FieldJob, Tile, TileKey, WorldPlan};
 use serde::Serialize;
 use std::sync::Arc;
 
@@ -136,36 +135,23 @@ impl Compute {
                 c.record_run(stage, since.elapsed());
             }
         };
-        let n = TILE_VERTS + 2;
         let started = std::time::Instant::now();
-        let (gx0, gz0) = (key.x * 64 - 1, key.z * 64 - 1);
-        let mut f = self
-            .field(plan.clone(), FieldJob::new(key.lod, gx0, gz0, n, n))
-            .await;
-        let spacing = |lod: u32| plan.lods[lod as usize].spacing_m;
-        let window = |lod: u32, gx0, gz0, w, h| Window {
-            spacing_m: spacing(lod),
-            gx0,
-            gz0,
-            w,
-            h,
-        };
-        edits.apply(window(key.lod, gx0, gz0, n, n), &mut f.heights);
+        let job = FieldJob::with_margin(key);
+        let mut f = self.field(plan.clone(), job).await;
+        edits.apply(job.window(&plan), &mut f.heights);
         count(Stage::Field, started);
         let mut strips = Vec::new();
         if key.lod < MAX_LOD {
             for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
-                let (lod, gx0, gz0, w, h) = snap_strip(key, *edge);
                 let started = std::time::Instant::now();
-                let mut strip = self
-                    .field(plan.clone(), FieldJob::new(lod, gx0, gz0, w, h))
-                    .await;
-                edits.apply(window(lod, gx0, gz0, w, h), &mut strip.heights);
+                let job = snap_strip(key, *edge);
+                let mut strip = self.field(plan.clone(), job).await;
+                edits.apply(job.window(&plan), &mut strip.heights);
                 strips.push((*edge, strip));
                 count(Stage::Snap, started);
             }
         }
-        let job = move || {
+        let finish_tile = move || {
             let mut t = finish(&plan, key, &f);
             for (edge, strip) in &strips {
                 apply_snap(&mut t, *edge, &strip.heights);
@@ -174,7 +160,7 @@ impl Compute {
             t
         };
         let started = std::time::Instant::now();
-        let t = match tokio::task::spawn_blocking(job).await {
+        let t = match tokio::task::spawn_blocking(finish_tile).await {
             Ok(t) => t,
             Err(e) => std::panic::resume_unwind(e.into_panic()),
         };

@@ -12,7 +12,7 @@ use crate::authoring::Displacement;
 use crate::subsurface::world::breach_lattice;
 use crate::subsurface::Geology;
 use crate::terrain::lattice::Window;
-use crate::terrain::plan::{TILE_QUADS, TILE_VERTS};
+use crate::terrain::plan::TILE_VERTS;
 use crate::terrain::tile::{field, finish, FieldJob};
 use crate::terrain::{Tile, TileKey, WorldPlan};
 use crate::volume::element::VolumeSpec;
@@ -78,17 +78,9 @@ impl TileEdits {
 /// Synthesises tile `key` of the world `plan` with `edits` (the CPU path of the tile routes, for
 /// batch exports): the field with its margin, the edits, then normals, materials and skirts.
 pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
-    let n = TILE_VERTS + 2;
-    let (gx0, gz0) = (key.x * TILE_QUADS - 1, key.z * TILE_QUADS - 1);
-    let mut f = field(plan, FieldJob::new(key.lod, gx0, gz0, n, n));
-    let window = Window {
-        spacing_m: plan.lods[key.lod as usize].spacing_m,
-        gx0,
-        gz0,
-        w: n,
-        h: n,
-    };
-    edits.apply(window, &mut f.heights);
+    let job = FieldJob::with_margin(key);
+    let mut f = field(plan, job);
+    edits.apply(job.window(plan), &mut f.heights);
     let mut t = finish(plan, key, &f);
     edits.mark(&mut t);
     t

@@ -26,6 +26,12 @@ pub const TARGET_MS_PER_TILE: f64 = 0.2;
 /// Target of issue 2: our fBm throughput over fastnoise-lite's.
 pub const TARGET_FBM_RATIO: f64 = 3.0;
 
+/// The median of `v` (the upper one of an even count); NaN when `v` is empty.
+pub(crate) fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 /// Runs a benchmark by name.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     match args.name.as_str() {
@@ -99,20 +105,20 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
     // Each tile is timed alone (wall and thread CPU time), so telling border tiles apart and
     // freeing the tile stay out of the figures.
     let mut one = 0.0f64;
-    let mut cpu = 0.0f64;
+    let mut cpu_ms = 0.0f64;
     for k in &keys {
-        let c0 = crate::cpu_time::thread_ms() / 1e3;
+        let c0 = crate::cpu_time::thread_ms();
         let t0 = Instant::now();
         let t = black_box(synthesize(&plan, *k));
         let dt = t0.elapsed().as_secs_f64();
-        cpu += crate::cpu_time::thread_ms() / 1e3 - c0;
+        cpu_ms += crate::cpu_time::thread_ms() - c0;
         one += dt;
         if t.weights.iter().any(|w| *w > 0.0 && *w < 1.0) {
             border += 1;
             border_s += dt;
         }
     }
-    let cpu_ms_per_tile = cpu * 1e3 / keys.len() as f64;
+    let cpu_ms_per_tile = cpu_ms / keys.len() as f64;
     let ms_per_tile = one * 1e3 / keys.len() as f64;
     let interior_ms = (one - border_s) * 1e3 / (keys.len() - border).max(1) as f64;
     let border_ms = border_s * 1e3 / border.max(1) as f64;

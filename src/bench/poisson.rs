@@ -41,7 +41,7 @@
 //! two times of a ratio see the same machine conditions (this machine is shared, and its speed
 //! changes from second to second). `ms_cold_paired` is the median of those cold solves.
 
-use super::emit;
+use super::{emit, median};
 use crate::cli::BenchArgs;
 use crate::terrain::poisson::{
     GridSpec, OwnedProblem, Rect, SolveOptions, SolveReport, Solver, Start,
@@ -124,11 +124,6 @@ fn brush(p: &mut OwnedProblem, ci: usize, cj: usize) -> Rect {
         i1: ci + 15,
         j1: cj + 15,
     }
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
 /// Wall and process CPU milliseconds of `f`.

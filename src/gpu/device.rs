@@ -366,9 +366,7 @@ fn device_thread(
                     continue;
                 }
                 let run = catch_unwind(AssertUnwindSafe(|| {
-                    kernels
-                        .run(&device, &queue, &plan, job, Some(timeout), false)
-                        .map(|(field, _)| field)
+                    kernels.field(&device, &queue, &plan, job, Some(timeout))
                 }));
                 let result = match run {
                     Ok(result) => result,

@@ -192,7 +192,7 @@ impl TileKernels {
     ///
     /// # Errors
     /// As [`Self::field`].
-    pub(super) fn run(
+    fn run(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,

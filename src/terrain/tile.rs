@@ -18,6 +18,7 @@
 use super::biome::biome_grid;
 use super::blur::blur_weights;
 use super::fractal::fbm_batch;
+use super::lattice::Window;
 use super::plan::{WorldPlan, TILE_QUADS, TILE_VERTEX_COUNT, TILE_VERTS};
 use super::texture::proto_texture_batch;
 
@@ -69,6 +70,31 @@ impl FieldJob {
             gz0,
             w,
             h,
+        }
+    }
+
+    /// The job of tile `key`'s vertices with a one-sample margin on every side (the margin gives
+    /// the normals their central differences): `TILE_VERTS + 2` square from lattice point
+    /// `(64·x − 1, 64·z − 1)`.
+    pub fn with_margin(key: TileKey) -> Self {
+        let n = TILE_VERTS + 2;
+        Self::new(
+            key.lod,
+            key.x * TILE_QUADS - 1,
+            key.z * TILE_QUADS - 1,
+            n,
+            n,
+        )
+    }
+
+    /// The job's rectangle of the world lattice of `plan` (for the edits applied to its heights).
+    pub fn window(self, plan: &WorldPlan) -> Window {
+        Window {
+            spacing_m: plan.lods[self.lod as usize].spacing_m,
+            gx0: self.gx0,
+            gz0: self.gz0,
+            w: self.w,
+            h: self.h,
         }
     }
 }
@@ -198,17 +224,7 @@ impl Tile {
 
 /// Synthesises one tile on the CPU (the reference implementation).
 pub fn synthesize(plan: &WorldPlan, key: TileKey) -> Tile {
-    let n = TILE_VERTS + 2;
-    let f = field(
-        plan,
-        FieldJob::new(
-            key.lod,
-            key.x * TILE_QUADS - 1,
-            key.z * TILE_QUADS - 1,
-            n,
-            n,
-        ),
-    );
+    let f = field(plan, FieldJob::with_margin(key));
     finish(plan, key, &f)
 }
 
@@ -316,9 +332,9 @@ impl Edge {
     }
 }
 
-/// The rectangle of the next coarser LOD's lattice that an edge snaps to:
-/// `(lod, gx0, gz0, w, h)`, 33 samples along the edge.
-pub fn snap_strip(key: TileKey, edge: Edge) -> (u32, i64, i64, usize, usize) {
+/// The rectangle of the next coarser LOD's lattice that an edge snaps to, 33 samples along the
+/// edge.
+pub fn snap_strip(key: TileKey, edge: Edge) -> FieldJob {
     // Global lattice index of the edge's first vertex at this LOD; both are even because a tile
     // spans 64 quads, so they lie on the coarser lattice.
     let (gx0, gz0, along_x) = match edge {
@@ -329,7 +345,7 @@ pub fn snap_strip(key: TileKey, edge: Edge) -> (u32, i64, i64, usize, usize) {
     };
     let half = TILE_VERTS / 2 + 1;
     let (w, h) = if along_x { (half, 1) } else { (1, half) };
-    (key.lod + 1, gx0 / 2, gz0 / 2, w, h)
+    FieldJob::new(key.lod + 1, gx0 / 2, gz0 / 2, w, h)
 }
 
 /// Replaces an edge by the coarser lattice's heights `coarse` (33 values from [`snap_strip`]):
@@ -353,8 +369,7 @@ pub fn snap_edges(plan: &WorldPlan, tile: &mut Tile, coarser: [bool; 4]) {
         return;
     }
     for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
-        let (lod, gx0, gz0, w, h) = snap_strip(tile.key, *edge);
-        let coarse = field(plan, FieldJob::new(lod, gx0, gz0, w, h));
+        let coarse = field(plan, snap_strip(tile.key, *edge));
         apply_snap(tile, *edge, &coarse.heights);
     }
 }

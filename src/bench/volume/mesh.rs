@@ -8,7 +8,7 @@
 //! repetition, with the output buffers reused (both libraries keep their allocations between
 //! calls). The times are medians; the ratio is the median of the per-repetition ratios.
 
-use super::super::emit;
+use super::super::{emit, median};
 use crate::cli::BenchArgs;
 use crate::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
 use fast_surface_nets::ndshape::RuntimeShape;
@@ -80,10 +80,6 @@ fn paired_ms(runs: usize, mut ours: impl FnMut(), mut theirs: impl FnMut()) -> (
         b.push(t);
         r.push(t / o);
     }
-    let median = |mut v: Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
     (median(a), median(b), median(r))
 }
 

@@ -63,11 +63,11 @@
 //! true global relative residual `‖b − A h‖ / ‖b‖`; if it is above the tolerance but within
 //! [`LOCAL_FINISH_RANGE`] times it, up to [`LOCAL_FINISH_SWEEPS`] red-black sweeps of the whole
 //! finest level follow (the interpolation residual is high-frequency across the coarse grid lines,
-//! which a sweep damps: at 513² with a 96-sample band, one sweep took 1.5e-6 to 6.7e-7, for the cost of a
-//! fraction of a global cycle), and if it is still above, global cycles continue from there. The
-//! window kernels are sequential, the band sweeps update samples of one colour (and row parity)
-//! that do not depend on each other, and the full levels use the deterministic kernels, so results
-//! do not depend on the thread count.
+//! which a sweep damps: at 513² with a 96-sample band, one sweep took 1.5e-6 to 6.7e-7, for the
+//! cost of a fraction of a global cycle), and if it is still above, global cycles continue from
+//! there. The window kernels are sequential, the band sweeps update samples of one colour (and
+//! row parity) that do not depend on each other, and the full levels use the deterministic
+//! kernels, so results do not depend on the thread count.
 
 use super::galerkin::{entry, interpolation_weight, FIVE_POINT};
 use super::grid::Split;
