@@ -28,6 +28,10 @@ const BYTE_SUM_MEAN: i32 = 510;
 /// `1 / sqrt(4 · (256² − 1) / 12)`: scales the byte sum to unit variance.
 pub const INV_BYTE_SUM_STD: f32 = 0.006_765_875;
 
+/// Largest magnitude of a lattice value (and so of `S` between lattice points, which interpolates
+/// with weights in [0, 1]): the byte sum's extreme 510 from its mean, scaled.
+pub const LATTICE_MAX: f32 = 510.0 * INV_BYTE_SUM_STD;
+
 /// Approximately N(0,1) value of a lattice hash.
 #[inline(always)]
 pub fn gaussian(h: u32) -> f32 {

@@ -97,6 +97,31 @@ impl WorldPlan {
         self.params.biomes.len()
     }
 
+    /// Bound on how far a vertex's height at `lod` may differ from its height at LOD 0, metres:
+    /// the largest amplitude the §4.1 octave count drops at that spacing, over the biomes (the
+    /// fractional octave counted by its missing part). An octave's amplitude is its weight times
+    /// the generator's amplitude times the largest lattice value, [`noise::LATTICE_MAX`]. The
+    /// biome weights are the same at every LOD for generators that compute them on a fixed
+    /// lattice; for the classic generator the blur adds the difference of the biomes' fields
+    /// where its kernel changes, which this bound does not cover.
+    pub fn lod_error_bound_m(&self, lod: u32) -> f32 {
+        let lod = lod.min(MAX_LOD) as usize;
+        let mut worst = 0.0f64;
+        for (fine, coarse) in self.lods[0].fractals.iter().zip(&self.lods[lod].fractals) {
+            let dropped: f64 = fine
+                .octaves
+                .iter()
+                .enumerate()
+                .map(|(k, o)| {
+                    let kept = coarse.octaves.get(k).map_or(0.0, |c| c.amp as f64);
+                    (o.amp as f64 - kept).max(0.0)
+                })
+                .sum();
+            worst = worst.max(dropped * fine.amplitude_m as f64);
+        }
+        (worst * super::noise::LATTICE_MAX as f64) as f32
+    }
+
     /// Largest tile coordinate magnitude at a LOD that stays inside the supported world.
     pub fn max_tile_coord(&self, lod: u32) -> i64 {
         let tile_cells = TILE_QUADS as f64 * (1u64 << lod) as f64;

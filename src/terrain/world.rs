@@ -144,7 +144,16 @@ fn kinds(list: &[(&str, f32, f32)]) -> Vec<ScatterKind> {
 }
 
 impl Default for WorldParams {
+    /// The world of bare seeds and new worlds.
     fn default() -> Self {
+        Self::classic()
+    }
+}
+
+impl WorldParams {
+    /// The first wave's world (the `classic` generator): four biomes ordered from pole to equator,
+    /// each its own warped multifractal, Voronoi cells of 512 m.
+    pub fn classic() -> Self {
         let biome = |name: &str, generator, ground: &str, snow_line_m, scatter| Biome {
             name: name.into(),
             generator,
