@@ -131,6 +131,13 @@ impl BiomeMapPlan {
 
     /// Algorithms 1 and 2: the biome of a winning seed.
     pub fn biome_of(&self, n: &Nearest) -> u8 {
+        let value = self.value_of(n);
+        ((value * self.count as f32) as u32).min(self.count - 1) as u8
+    }
+
+    /// Algorithms 1 and 2: the Voronoi value of a winning seed in `[0, 1]`, clamped to the
+    /// latitude band when latitude applies (0 towards the pole, 1 towards the equator).
+    pub fn value_of(&self, n: &Nearest) -> f32 {
         let fx = n.pos.0.floor();
         let fz = n.pos.1.floor();
         let mut value = unit(hash2(fx as i32, fz as i32, self.seeds.value));
@@ -146,7 +153,7 @@ impl BiomeMapPlan {
                 .clamp(grad - self.dispersion, grad + self.dispersion)
                 .clamp(0.0, 1.0);
         }
-        ((value * self.count as f32) as u32).min(self.count - 1) as u8
+        value
     }
 
     /// The biome at a point in metres.

@@ -351,7 +351,7 @@ pub fn inv_sqrt(x: f32) -> f32 {
 /// the clamp never changes a value.
 #[inline(always)]
 #[allow(clippy::manual_clamp)] // `clamp` keeps NaN; `max` then `min` maps it to a number.
-fn lattice_index(f: f32) -> u32 {
+pub fn lattice_index(f: f32) -> u32 {
     let c = f.max(-1_073_741_824.0).min(1_073_741_824.0);
     // SAFETY: `c` is finite and within i32 range after the clamp.
     unsafe { c.to_int_unchecked::<i32>() as u32 }
@@ -359,7 +359,7 @@ fn lattice_index(f: f32) -> u32 {
 
 /// Sum of the four bytes of a hash, computed two bytes at a time (same value as the byte sum).
 #[inline(always)]
-fn gaussian_fast(h: u32) -> f32 {
+pub fn gaussian_fast(h: u32) -> f32 {
     let pairs = (h & 0x00ff_00ff) + ((h >> 8) & 0x00ff_00ff);
     let sum = (pairs & 0xffff) + (pairs >> 16);
     (sum as i32 - 510) as f32 * super::noise::INV_BYTE_SUM_STD

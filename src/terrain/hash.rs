@@ -56,6 +56,8 @@ pub mod purpose {
     pub const VORONOI: u32 = 2;
     /// Scatter candidates.
     pub const SCATTER: u32 = 3;
+    /// Octaves of the `earth-1` generator (`index` = the octave's number in its plan).
+    pub const EARTH: u32 = 4;
 }
 
 #[cfg(test)]

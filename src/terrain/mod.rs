@@ -6,6 +6,7 @@
 
 pub mod biome;
 pub mod blur;
+pub mod earth;
 pub mod fractal;
 pub mod hash;
 pub mod lattice;
@@ -19,4 +20,4 @@ pub mod world;
 
 pub use plan::{WorldPlan, MAX_LOD, MIN_LOD, TILE_VERTEX_COUNT, TILE_VERTS};
 pub use tile::{synthesize, FieldJob, Tile, TileKey};
-pub use world::WorldParams;
+pub use world::{Generator, WorldParams};

@@ -7,10 +7,11 @@
 
 use super::biome::BiomeMapPlan;
 use super::blur::kernel_for;
+use super::earth::EarthPlan;
 use super::fractal::{FractalPlan, MAX_OCTAVES};
 use super::hash::{purpose, stream};
 use super::texture::TexturePlan;
-use super::world::{ParamError, WorldParams};
+use super::world::{Generator, ParamError, WorldParams};
 
 /// Finest LOD.
 pub const MIN_LOD: u32 = 0;
@@ -31,9 +32,10 @@ pub const WORLD_LIMIT_CELLS: f64 = 1_048_576.0;
 pub struct LodPlan {
     /// Vertex spacing, metres.
     pub spacing_m: f32,
-    /// Biome blur kernel, `2r + 1` taps.
+    /// Biome blur kernel, `2r + 1` taps (classic; `[1]` with `earth-1`, whose blur runs on its
+    /// climate lattice).
     pub kernel: Vec<f32>,
-    /// Height generator of each biome.
+    /// Height generator of each biome (classic; empty with `earth-1`).
     pub fractals: Vec<FractalPlan>,
 }
 
@@ -50,6 +52,8 @@ pub struct WorldPlan {
     pub lods: Vec<LodPlan>,
     /// Proto-texturing constants.
     pub texture: TexturePlan,
+    /// The `earth-1` kernels' constants; `None` for a classic world.
+    pub earth: Option<EarthPlan>,
 }
 
 impl WorldPlan {
@@ -57,38 +61,46 @@ impl WorldPlan {
     pub fn new(seed: u64, params: WorldParams) -> Result<Self, ParamError> {
         params.validate()?;
         let biome_map = BiomeMapPlan::new(&params.layout, params.biomes.len(), seed);
+        let classic = params.generator == Generator::Classic;
         let lods = (MIN_LOD..=MAX_LOD)
             .map(|lod| {
                 let spacing = params.cell_m as f64 * (1u64 << lod) as f64;
                 let fractals = params
                     .biomes
                     .iter()
-                    .map(|biome| {
+                    .filter_map(|b| b.generator.as_ref())
+                    .map(|generator| {
                         // Octave `k` of every biome reads the same lattice: where biomes share a
                         // scale their low octaves coincide, so mountains continue across biome
                         // borders and the blur only hides differences of amplitude and roughness.
                         let seeds: Vec<u32> = (0..MAX_OCTAVES as u32)
                             .map(|k| {
-                                stream(seed, purpose::OCTAVE, k + biome.generator.first_octave)
+                                stream(seed, purpose::OCTAVE, k + generator.first_octave)
                             })
                             .collect();
-                        FractalPlan::new(&biome.generator, &params.warp, spacing, &seeds)
+                        FractalPlan::new(generator, &params.warp, spacing, &seeds)
                     })
                     .collect();
                 LodPlan {
                     spacing_m: spacing as f32,
-                    kernel: kernel_for(params.layout.blur_radius_m, spacing as f32),
+                    kernel: if classic {
+                        kernel_for(params.layout.blur_radius_m, spacing as f32)
+                    } else {
+                        vec![1.0]
+                    },
                     fractals,
                 }
             })
             .collect();
         let texture = TexturePlan::new(&params);
+        let earth = (!classic).then(|| EarthPlan::new(seed, &params, biome_map));
         Ok(Self {
             seed,
             params,
             biome_map,
             lods,
             texture,
+            earth,
         })
     }
 
@@ -97,7 +109,8 @@ impl WorldPlan {
         self.params.biomes.len()
     }
 
-    /// Bound on how far a vertex's height at `lod` may differ from its height at LOD 0, metres:
+    /// Bound on how far a vertex's height at `lod` may differ from its height at LOD 0, metres.
+    /// With `earth-1`, [`super::earth::EarthLod::bound_m`]. Classic:
     /// the largest amplitude the §4.1 octave count drops at that spacing, over the biomes (the
     /// fractional octave counted by its missing part). An octave's amplitude is its weight times
     /// the generator's amplitude times the largest lattice value, [`noise::LATTICE_MAX`]. The
@@ -106,6 +119,9 @@ impl WorldPlan {
     /// where its kernel changes, which this bound does not cover.
     pub fn lod_error_bound_m(&self, lod: u32) -> f32 {
         let lod = lod.min(MAX_LOD) as usize;
+        if let Some(e) = &self.earth {
+            return e.lods[lod].bound_m;
+        }
         let mut worst = 0.0f64;
         for (fine, coarse) in self.lods[0].fractals.iter().zip(&self.lods[lod].fractals) {
             let dropped: f64 = fine

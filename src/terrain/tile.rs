@@ -120,8 +120,12 @@ pub fn job_biome_ids(plan: &WorldPlan, job: FieldJob) -> (Vec<u8>, usize, usize)
 }
 
 /// Synthesises heights and weights of the job's lattice samples: the CPU reference of the
-/// field (the WGSL twin is `gpu::TileKernels::field`).
+/// field (the WGSL twin is `gpu::TileKernels::field`). An `earth-1` world's field is
+/// [`super::earth::field`].
 pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
+    if let Some(earth) = &plan.earth {
+        return super::earth::field(earth, plan.lods[job.lod as usize].spacing_m, job);
+    }
     let FieldJob {
         lod,
         gx0,

@@ -4,6 +4,7 @@
 //! is the default scene's world: four biomes ordered from pole to equator, the paper's warping
 //! constants and a 64 m biome blur (129 samples at LOD 0; `strata bench tiles` uses the paper's 35).
 
+use super::earth::{BiomeRelief, EarthParams};
 use super::fractal::{FractalParams, WarpParams};
 use serde::{Deserialize, Serialize};
 
@@ -45,8 +46,12 @@ pub struct ScatterKind {
 pub struct Biome {
     /// Unique name.
     pub name: String,
-    /// Height generator of this biome.
-    pub generator: FractalParams,
+    /// Height generator of this biome (the `classic` generator; absent with `earth-1`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub generator: Option<FractalParams>,
+    /// Character of the relief in this biome (`earth-1`; absent means erosion and roughness 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub relief: Option<BiomeRelief>,
     /// Material of flat ground below the snow line, one of [`MATERIALS`].
     pub ground: String,
     /// Height above which the ground is snow, metres.
@@ -97,10 +102,37 @@ pub struct ScatterParams {
     pub spacing_m: f32,
 }
 
+/// Which world function a world uses. Stored scenes name theirs, so a world keeps its bytes when
+/// the default changes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Generator {
+    /// The first wave's world: one warped multifractal per Voronoi biome, blended by a blur of
+    /// the biome map. A world document without `generator` is classic.
+    #[default]
+    #[serde(rename = "classic")]
+    Classic,
+    /// Continents, mountain belts, relief and gully layers, climate biomes ([`super::earth`]).
+    #[serde(rename = "earth-1")]
+    Earth1,
+}
+
+impl Generator {
+    /// Whether this is the classic generator (which documents leave unnamed).
+    pub fn is_classic(&self) -> bool {
+        *self == Generator::Classic
+    }
+}
+
 /// Everything the procedural world function depends on besides the seed.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WorldParams {
+    /// The world function; `"classic"` when absent (every world stored before `earth-1`).
+    #[serde(default, skip_serializing_if = "Generator::is_classic")]
+    pub generator: Generator,
+    /// Settings of the `earth-1` generator; required with it, absent with `classic`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub earth: Option<EarthParams>,
     /// LOD-0 vertex spacing, metres.
     pub cell_m: f32,
     /// Water level, metres.
@@ -120,8 +152,8 @@ pub struct WorldParams {
 /// Most biomes a world may have.
 pub const MAX_BIOMES: usize = 8;
 
-fn gen(base_m: f32, amplitude_m: f32, scale_m: f32, hurst: f32) -> FractalParams {
-    FractalParams {
+fn gen(base_m: f32, amplitude_m: f32, scale_m: f32, hurst: f32) -> Option<FractalParams> {
+    Some(FractalParams {
         base_m,
         amplitude_m,
         scale_m,
@@ -130,7 +162,7 @@ fn gen(base_m: f32, amplitude_m: f32, scale_m: f32, hurst: f32) -> FractalParams
         first_octave: 0,
         octaves: 8,
         warp: true,
-    }
+    })
 }
 
 fn kinds(list: &[(&str, f32, f32)]) -> Vec<ScatterKind> {
@@ -144,9 +176,113 @@ fn kinds(list: &[(&str, f32, f32)]) -> Vec<ScatterKind> {
 }
 
 impl Default for WorldParams {
-    /// The world of bare seeds and new worlds.
+    /// The world of bare seeds and new worlds: [`WorldParams::earth`].
     fn default() -> Self {
-        Self::classic()
+        Self::earth()
+    }
+}
+
+impl WorldParams {
+    /// The `earth-1` world: continents, mountain belts, eroded relief and six climate biomes
+    /// from pole to equator on Voronoi cells of 32 km, a pole-to-equator range of 2 048 km with
+    /// the origin at mid-latitude, and an 8 km blur on the climate lattice.
+    pub fn earth() -> Self {
+        let biome = |name: &str, ground: &str, snow_line_m, erosion, roughness, scatter| Biome {
+            name: name.into(),
+            generator: None,
+            relief: Some(BiomeRelief { erosion, roughness }),
+            ground: ground.into(),
+            snow_line_m,
+            scatter,
+        };
+        Self {
+            generator: Generator::Earth1,
+            earth: Some(EarthParams::default()),
+            cell_m: 1.0,
+            sea_level_m: 0.0,
+            warp: WarpParams::default(),
+            layout: BiomeLayout {
+                cell_size_m: 32_000.0,
+                latitude: true,
+                latitude_speed_cells: 64.0,
+                dispersion: true,
+                dispersion_d: 0.12,
+                blur_radius_m: 8192.0,
+            },
+            biomes: vec![
+                biome(
+                    "ice",
+                    "snow",
+                    -1e9,
+                    0.6,
+                    0.7,
+                    kinds(&[("ice_boulder", 0.01, 30.0), ("seal", 0.002, 10.0)]),
+                ),
+                biome(
+                    "tundra",
+                    "dirt",
+                    600.0,
+                    0.8,
+                    0.9,
+                    kinds(&[
+                        ("lichen_rock", 0.03, 35.0),
+                        ("shrub", 0.08, 30.0),
+                        ("reindeer", 0.003, 20.0),
+                    ]),
+                ),
+                biome(
+                    "taiga",
+                    "grass",
+                    1600.0,
+                    1.0,
+                    1.0,
+                    kinds(&[
+                        ("pine", 0.12, 30.0),
+                        ("boulder", 0.01, 40.0),
+                        ("elk", 0.003, 20.0),
+                    ]),
+                ),
+                biome(
+                    "temperate",
+                    "grass",
+                    2600.0,
+                    1.1,
+                    1.0,
+                    kinds(&[
+                        ("oak", 0.05, 25.0),
+                        ("bush", 0.10, 30.0),
+                        ("deer", 0.004, 20.0),
+                    ]),
+                ),
+                biome(
+                    "steppe",
+                    "dirt",
+                    3800.0,
+                    0.9,
+                    0.8,
+                    kinds(&[("shrub", 0.05, 30.0), ("horse", 0.002, 15.0)]),
+                ),
+                biome(
+                    "desert",
+                    "sand",
+                    5200.0,
+                    0.7,
+                    0.6,
+                    kinds(&[
+                        ("cactus", 0.02, 20.0),
+                        ("dry_rock", 0.01, 40.0),
+                        ("camel", 0.002, 15.0),
+                    ]),
+                ),
+            ],
+            texturing: Texturing {
+                rock_slope_deg: 38.0,
+                rock_blend_deg: 8.0,
+                beach_height_m: 2.0,
+                height_blend_m: 6.0,
+            },
+            scatter: ScatterParams { spacing_m: 4.0 },
+        }
     }
 }
 
@@ -157,11 +293,14 @@ impl WorldParams {
         let biome = |name: &str, generator, ground: &str, snow_line_m, scatter| Biome {
             name: name.into(),
             generator,
+            relief: None,
             ground: ground.into(),
             snow_line_m,
             scatter,
         };
         Self {
+            generator: Generator::Classic,
+            earth: None,
             cell_m: 1.0,
             sea_level_m: 0.0,
             warp: WarpParams::default(),
@@ -247,6 +386,50 @@ fn check(ok: bool, field: impl Into<String>, message: &str) -> Result<(), ParamE
     }
 }
 
+/// Checks a classic biome generator; `f` turns a field name into the biome's path.
+fn check_fractal(
+    g: &FractalParams,
+    cell_m: f32,
+    f: &dyn Fn(&str) -> String,
+) -> Result<(), ParamError> {
+        check(
+            g.base_m.is_finite() && g.base_m.abs() <= 10_000.0,
+            f("generator.base_m"),
+            "must be in [-10000, 10000]",
+        )?;
+        check(
+            g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0,
+            f("generator.amplitude_m"),
+            "must be in (0, 5000]",
+        )?;
+        check(
+            g.scale_m.is_finite() && g.scale_m >= 4.0 * cell_m && g.scale_m <= 1.0e6,
+            f("generator.scale_m"),
+            "must be in [4 vertex spacings, 1e6]",
+        )?;
+        check(
+            g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity),
+            f("generator.lacunarity"),
+            "must be in [1.1, 4]",
+        )?;
+        check(
+            g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0,
+            f("generator.hurst"),
+            "must be in (0.05, 1]",
+        )?;
+        check(
+            g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES,
+            f("generator.octaves"),
+            "must be in [1, 16]",
+        )?;
+        check(
+            g.first_octave <= 8,
+            f("generator.first_octave"),
+            "must be in [0, 8]",
+        )?;
+    Ok(())
+}
+
 impl WorldParams {
     /// Checks every limit; the server calls this before accepting a scene.
     pub fn validate(&self) -> Result<(), ParamError> {
@@ -296,11 +479,35 @@ impl WorldParams {
             "layout.dispersion_d",
             "must be in [0, 1]",
         )?;
-        check(
-            l.blur_radius_m.is_finite() && (0.0..=64.0 * self.cell_m).contains(&l.blur_radius_m),
-            "layout.blur_radius_m",
-            "must be in [0, 64 vertex spacings]",
-        )?;
+        match self.generator {
+            // The classic blur runs on each LOD's vertex lattice: at most 129 taps at LOD 0.
+            Generator::Classic => check(
+                l.blur_radius_m.is_finite()
+                    && (0.0..=64.0 * self.cell_m).contains(&l.blur_radius_m),
+                "layout.blur_radius_m",
+                "must be in [0, 64 vertex spacings]",
+            )?,
+            // The earth-1 blur runs on the 2 km climate lattice: at most 33 taps.
+            Generator::Earth1 => check(
+                l.blur_radius_m.is_finite() && (0.0..=32_768.0).contains(&l.blur_radius_m),
+                "layout.blur_radius_m",
+                "must be in [0, 32768] with the earth-1 generator",
+            )?,
+        }
+        match (&self.generator, &self.earth) {
+            (Generator::Classic, Some(_)) => check(
+                false,
+                "earth",
+                "applies to the earth-1 generator only; remove it or set generator to earth-1",
+            )?,
+            (Generator::Earth1, None) => check(
+                false,
+                "earth",
+                "is required with the earth-1 generator",
+            )?,
+            (Generator::Earth1, Some(e)) => e.validate(self.cell_m)?,
+            (Generator::Classic, None) => {}
+        }
         check(
             !self.biomes.is_empty() && self.biomes.len() <= MAX_BIOMES,
             "biomes",
@@ -318,42 +525,28 @@ impl WorldParams {
                 f("ground"),
                 "must name a material",
             )?;
-            let g = &b.generator;
-            check(
-                g.base_m.is_finite() && g.base_m.abs() <= 10_000.0,
-                f("generator.base_m"),
-                "must be in [-10000, 10000]",
-            )?;
-            check(
-                g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0,
-                f("generator.amplitude_m"),
-                "must be in (0, 5000]",
-            )?;
-            check(
-                g.scale_m.is_finite() && g.scale_m >= 4.0 * self.cell_m && g.scale_m <= 1.0e6,
-                f("generator.scale_m"),
-                "must be in [4 vertex spacings, 1e6]",
-            )?;
-            check(
-                g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity),
-                f("generator.lacunarity"),
-                "must be in [1.1, 4]",
-            )?;
-            check(
-                g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0,
-                f("generator.hurst"),
-                "must be in (0.05, 1]",
-            )?;
-            check(
-                g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES,
-                f("generator.octaves"),
-                "must be in [1, 16]",
-            )?;
-            check(
-                g.first_octave <= 8,
-                f("generator.first_octave"),
-                "must be in [0, 8]",
-            )?;
+            if let Some(r) = &b.relief {
+                check(
+                    self.generator == Generator::Earth1,
+                    f("relief"),
+                    "applies to the earth-1 generator only",
+                )?;
+                r.validate(&format!("biomes[{i}]"))?;
+            }
+            match (&self.generator, &b.generator) {
+                (Generator::Classic, Some(g)) => check_fractal(g, self.cell_m, &f)?,
+                (Generator::Earth1, None) => {}
+                (Generator::Classic, None) => check(
+                    false,
+                    f("generator"),
+                    "is required with the classic generator",
+                )?,
+                (Generator::Earth1, Some(_)) => check(
+                    false,
+                    f("generator"),
+                    "applies to the classic generator only",
+                )?,
+            }
             let mut total = 0.0;
             for (k, s) in b.scatter.iter().enumerate() {
                 check(

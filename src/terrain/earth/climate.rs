@@ -1,0 +1,119 @@
+//! Climate-driven biome weights of `earth-1`, the same at every LOD.
+//!
+//! Choroś & Topolski's extended Voronoi (Algorithms 1 and 2: latitude speed `S`, dispersion `d`,
+//! [`crate::terrain::biome`]) is evaluated at the nodes of a world-anchored lattice of
+//! [`NODE_SPACING_M`], read at `z + latitude_offset_m` so the origin lies at mid-latitude, and
+//! made colder with altitude: the Voronoi value (0 at the pole, 1 at the equator) falls by
+//! `e / lapse_m` where `e ≥ 0` is the large-scale elevation at the node (continent and mean
+//! mountain relief, [`super::macro_elevation_batch`]). The node's biome is `⌊value · K⌋`.
+//!
+//! The one-hot node biomes are blurred on the node lattice with a Gaussian of radius
+//! `blur_radius_m` (`σ = radius / 3`, [`crate::terrain::blur`]) and each vertex takes the
+//! bilinear interpolation of the four nodes around it. The node lattice is fixed in world
+//! metres, so a world point gets the same weights at every LOD and in every tile (its node cell
+//! and offsets are computed in `f64` from the vertex's lattice index), and the weights change
+//! smoothly over kilometres, so no LOD sees a biome step that another does not.
+
+use super::super::biome::BiomeMapPlan;
+use super::super::blur::{blur_weights, kernel};
+use super::super::tile::FieldJob;
+use super::EarthPlan;
+
+/// Spacing of the climate lattice, metres.
+pub const NODE_SPACING_M: f64 = 2048.0;
+
+/// Climate constants of a world.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClimatePlan {
+    /// The Voronoi map of Algorithms 1–2 (cell size, latitude speed, dispersion).
+    pub map: BiomeMapPlan,
+    /// Added to `z` before the map is read, metres.
+    pub latitude_offset_m: f32,
+    /// Elevation that makes the climate one pole-to-equator range colder, metres.
+    pub lapse_m: f32,
+    /// Blur kernel on the node lattice, `2r + 1` taps.
+    pub kernel: Vec<f32>,
+    /// Number of biomes `K`.
+    pub count: usize,
+}
+
+impl ClimatePlan {
+    /// The climate of a layout with `count` biomes.
+    pub fn new(
+        map: BiomeMapPlan,
+        blur_radius_m: f32,
+        latitude_offset_m: f32,
+        lapse_m: f32,
+        count: usize,
+    ) -> Self {
+        let r = (blur_radius_m as f64 / NODE_SPACING_M).round() as usize;
+        let sigma = (blur_radius_m as f64 / 3.0 / NODE_SPACING_M).max(1e-3) as f32;
+        Self {
+            map,
+            latitude_offset_m,
+            lapse_m,
+            kernel: kernel(r, sigma),
+            count,
+        }
+    }
+}
+
+/// The biomes of climate nodes at world positions `(xs[n], zs[n])` (metres, node multiples).
+fn node_biomes(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [u8]) {
+    let c = &plan.climate;
+    let mut elevation = vec![0.0f32; xs.len()];
+    super::macro_elevation_batch(plan, xs, zs, &mut elevation);
+    for (n, id) in out.iter_mut().enumerate() {
+        let nearest = c.map.nearest(xs[n], zs[n] + c.latitude_offset_m);
+        let warmth = c.map.value_of(&nearest);
+        let v = (warmth - elevation[n].max(0.0) / c.lapse_m).clamp(0.0, 1.0);
+        *id = ((v * c.count as f32) as usize).min(c.count - 1) as u8;
+    }
+}
+
+/// Biome weights of a job's samples, `out[v · K + b]`, vertex-major like `Field::weights`.
+pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
+    let k = plan.climate.count;
+    let r = plan.climate.kernel.len() / 2;
+    let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
+    let (i0, j0) = (node(job.gx0).floor() as i64, node(job.gz0).floor() as i64);
+    let i1 = node(job.gx0 + job.w as i64 - 1).floor() as i64 + 1;
+    let j1 = node(job.gz0 + job.h as i64 - 1).floor() as i64 + 1;
+    // Node ids with the blur margin, then blurred weights of nodes i0..=i1, j0..=j1.
+    let (bw, bh) = ((i1 - i0 + 1) as usize + 2 * r, (j1 - j0 + 1) as usize + 2 * r);
+    let at = |g: i64| (g as f64 * NODE_SPACING_M) as f32;
+    let (mut xs, mut zs) = (Vec::with_capacity(bw * bh), Vec::with_capacity(bw * bh));
+    for j in 0..bh as i64 {
+        for i in 0..bw as i64 {
+            xs.push(at(i0 - r as i64 + i));
+            zs.push(at(j0 - r as i64 + j));
+        }
+    }
+    let mut ids = vec![0u8; bw * bh];
+    node_biomes(plan, &xs, &zs, &mut ids);
+    let (nw, nh) = (bw - 2 * r, bh - 2 * r);
+    let mut nodes = vec![0.0f32; nw * nh * k];
+    blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut nodes);
+    let mut out = vec![0.0f32; job.w * job.h * k];
+    for j in 0..job.h {
+        let zf = node(job.gz0 + j as i64);
+        let nj = zf.floor();
+        let tz = (zf - nj) as f32;
+        let rj = (nj as i64 - j0) as usize;
+        for i in 0..job.w {
+            let xf = node(job.gx0 + i as i64);
+            let ni = xf.floor();
+            let tx = (xf - ni) as f32;
+            let ri = (ni as i64 - i0) as usize;
+            let at = |di: usize, dj: usize| ((rj + dj) * nw + ri + di) * k;
+            let (a, b, c, d) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+            let v = (j * job.w + i) * k;
+            for bi in 0..k {
+                let top = nodes[a + bi] + (nodes[b + bi] - nodes[a + bi]) * tx;
+                let bottom = nodes[c + bi] + (nodes[d + bi] - nodes[c + bi]) * tx;
+                out[v + bi] = top + (bottom - top) * tz;
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,319 @@
+//! The `earth-1` height function, evaluated for [`LANES`] samples side by side.
+//!
+//! Every loop runs over fixed-length lane arrays with no branches that depend on a lane, so LLVM
+//! vectorises it; the scalar reference is the same code with one lane in use. No fused
+//! multiply-add is used (Rust never contracts `a * b + c`), so every build gives the same bits.
+//! The WGSL twin `shaders/earth.wgsl` performs the same operations in the same order.
+//!
+//! The function, for a sample at world position `p` (metres) with climate weights giving the
+//! erosion strength `E` and roughness `R`:
+//!
+//! ```text
+//! w     = A_w · (Σ_k n_k(p) over two streams)             bounded warp of the macro fields
+//! c     = Σ_k g_c^k · n_k(p + w) + bias + origin(p)        continent value, coast at c = 0
+//! m     = Σ_k ½^k · n_k(p + w)                             belt noise; belts where |m| is small
+//! belt  = (1 − smoothstep(0, width, √(m² + ε))) · land(c)
+//! hills = smoothstep(−0.2, 0.8, Σ_k ½^k · n_k(p))
+//! A     = land·(A_m·belt + A_h·hills·(1 − belt) + A_p) + (1 − land)·A_s     relief amplitude
+//! h     = e(c) + Σ_layers A · a_i · layer_i(p, G)
+//! ```
+//!
+//! `e(c)` places plains, shelf, slope and abyss; `G` is the gradient of the layers summed so far.
+//! A *relief* layer is one octave of gradient noise `n` (rotated by its own angle so no lattice
+//! direction is preferred), mixed between smooth `n` and ridged `(1 − |n|)²` by the belt mask,
+//! damped by `1 / (1 + k_d |G|²)` (steep slopes get less detail, as erosion leaves them). A
+//! *gully* layer is the erosion filter: stripes whose crests and troughs run along `G`, i.e.
+//! downhill (see [`gullies`]), faded out where the slope is small so peaks and valley floors keep
+//! their shape; because each gully octave steers by the gradient that includes the previous
+//! ones, gullies branch off the flanks of larger ones.
+
+use super::super::fractal::{gaussian_fast, inv_sqrt, lattice_index};
+use super::super::hash::mix32;
+use super::super::noise::{corner_hashes, fade};
+use super::trig::sincos_turns;
+use super::{EarthPlan, LayerKind, MacroPlan, NoiseOctave};
+
+/// Samples evaluated together.
+pub const LANES: usize = 64;
+
+type L = [f32; LANES];
+
+/// Derivative of the quintic fade.
+#[inline(always)]
+fn dfade(t: f32) -> f32 {
+    let u = t * (t - 1.0);
+    30.0 * u * u
+}
+
+#[inline(always)]
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Octave coordinates: the world position rotated by the octave's angle, scaled by its
+/// frequency and offset.
+#[inline(always)]
+fn octave_coords(o: &NoiseOctave, xs: &L, zs: &L, qx: &mut L, qz: &mut L) {
+    for l in 0..LANES {
+        qx[l] = (o.cos * xs[l] - o.sin * zs[l]) * o.freq + o.ox;
+        qz[l] = (o.sin * xs[l] + o.cos * zs[l]) * o.freq + o.oz;
+    }
+}
+
+/// Value noise at lattice coordinates, no derivative.
+#[inline(always)]
+fn value(qx: &L, qz: &L, seed: u32, out: &mut L) {
+    for l in 0..LANES {
+        let fx = qx[l].floor();
+        let fz = qz[l].floor();
+        let u = fade(qx[l] - fx);
+        let v = fade(qz[l] - fz);
+        let [h00, h10, h01, h11] = corner_hashes(lattice_index(fx), lattice_index(fz), seed);
+        let a = gaussian_fast(h00);
+        let b = gaussian_fast(h10);
+        let c = gaussian_fast(h01);
+        let d = gaussian_fast(h11);
+        let k1 = b - a;
+        let k2 = c - a;
+        let k3 = a - b - c + d;
+        out[l] = a + k1 * u + k2 * v + k3 * u * v;
+    }
+}
+
+/// Scales gradient noise (at most `√2 / 2` in magnitude, about 0.7) to about `[−1, 1]`.
+pub const GRADIENT_SCALE: f32 = 1.4;
+
+/// The unit gradient of a corner hash: the two 16-bit halves as a vector, normalised.
+#[inline(always)]
+fn corner_gradient(h: u32) -> (f32, f32) {
+    let gx = (h & 0xffff) as f32 - 32767.5;
+    let gz = (h >> 16) as f32 - 32767.5;
+    let inv = inv_sqrt(gx * gx + gz * gz);
+    (gx * inv, gz * inv)
+}
+
+/// Gradient (Perlin) noise times [`GRADIENT_SCALE`] and its derivative with respect to the
+/// lattice coordinates: each corner carries a hashed unit gradient, blended with the quintic
+/// fade. Zero at lattice points, less blocky than value noise, its zero set forms the connected
+/// network of lines that ridged octaves turn into crests.
+#[inline(always)]
+fn gradient_d(qx: &L, qz: &L, seed: u32, out: &mut L, dx: &mut L, dz: &mut L) {
+    for l in 0..LANES {
+        let fx = qx[l].floor();
+        let fz = qz[l].floor();
+        let tx = qx[l] - fx;
+        let tz = qz[l] - fz;
+        let u = fade(tx);
+        let v = fade(tz);
+        let du = dfade(tx);
+        let dv = dfade(tz);
+        let [h00, h10, h01, h11] = corner_hashes(lattice_index(fx), lattice_index(fz), seed);
+        let (ax, az) = corner_gradient(h00);
+        let (bx, bz) = corner_gradient(h10);
+        let (cx, cz) = corner_gradient(h01);
+        let (ex, ez) = corner_gradient(h11);
+        let va = ax * tx + az * tz;
+        let vb = bx * (tx - 1.0) + bz * tz;
+        let vc = cx * tx + cz * (tz - 1.0);
+        let vd = ex * (tx - 1.0) + ez * (tz - 1.0);
+        let k1 = vb - va;
+        let k2 = vc - va;
+        let k3 = va - vb - vc + vd;
+        out[l] = (va + k1 * u + k2 * v + k3 * u * v) * GRADIENT_SCALE;
+        let gx = ax + (bx - ax) * u + (cx - ax) * v + (ax - bx - cx + ex) * u * v;
+        let gz = az + (bz - az) * u + (cz - az) * v + (az - bz - cz + ez) * u * v;
+        dx[l] = (gx + du * (k1 + k3 * v)) * GRADIENT_SCALE;
+        dz[l] = (gz + dv * (k2 + k3 * u)) * GRADIENT_SCALE;
+    }
+}
+
+/// `Σ amp · n(octave coords)` over a list of octaves, added to `acc`.
+#[inline(always)]
+fn fbm_into(octaves: &[NoiseOctave], xs: &L, zs: &L, acc: &mut L) {
+    let mut qx = [0.0; LANES];
+    let mut qz = [0.0; LANES];
+    let mut n = [0.0; LANES];
+    for o in octaves {
+        octave_coords(o, xs, zs, &mut qx, &mut qz);
+        value(&qx, &qz, o.seed, &mut n);
+        for l in 0..LANES {
+            acc[l] += o.amp * n[l];
+        }
+    }
+}
+
+/// The large-scale fields of a batch: continent elevation `e(c)`, relief amplitude `A` and ridge
+/// mix `ρ`. Independent of the LOD.
+#[inline(always)]
+pub(super) fn macro_fields(m: &MacroPlan, xs: &L, zs: &L, elev: &mut L, amp: &mut L, ridge: &mut L) {
+    let mut wx = [0.0; LANES];
+    let mut wz = [0.0; LANES];
+    fbm_into(&m.warp_x, xs, zs, &mut wx);
+    fbm_into(&m.warp_z, xs, zs, &mut wz);
+    let mut px = [0.0; LANES];
+    let mut pz = [0.0; LANES];
+    for l in 0..LANES {
+        px[l] = xs[l] + wx[l];
+        pz[l] = zs[l] + wz[l];
+    }
+    let mut c = [0.0; LANES];
+    fbm_into(&m.continent, &px, &pz, &mut c);
+    let mut b = [0.0; LANES];
+    fbm_into(&m.belt, &px, &pz, &mut b);
+    let mut hl = [0.0; LANES];
+    fbm_into(&m.hills, xs, zs, &mut hl);
+    for l in 0..LANES {
+        // The origin's land bias: a rational bump, 1 at the origin, ¼ at two radii.
+        let r2 = (xs[l] * xs[l] + zs[l] * zs[l]) * m.inv_origin_r2;
+        let cv = c[l] + m.land_bias + m.origin_land / (1.0 + r2);
+        let land = smoothstep(-0.06, 0.02, cv);
+        let belt_abs = (b[l] * b[l] + 1e-4).sqrt();
+        let belt = (1.0 - smoothstep(0.0, m.belt_width, belt_abs)) * smoothstep(-0.1, 0.15, cv);
+        let hills = smoothstep(-0.2, 0.8, hl[l]);
+        amp[l] = land
+            * (m.mountain_relief_m * belt
+                + m.hill_relief_m * hills * (1.0 - belt)
+                + m.plain_relief_m)
+            + (1.0 - land) * m.seafloor_relief_m;
+        ridge[l] = smoothstep(0.05, 0.5, belt).max(0.35 * hills);
+        elev[l] = m.interior_height_m * smoothstep(0.0, 0.9, cv) + 40.0
+            - 240.0 * smoothstep(0.0, -0.05, cv)
+            - (m.ocean_depth_m - 200.0) * smoothstep(-0.05, -0.3, cv);
+    }
+}
+
+/// Damping of the finer layers by the slope so far: `1 / (1 + k_d |G|²)`.
+const DAMPING: f32 = 1.5;
+/// `ε²` of the smooth absolute value of ridged octaves.
+const RIDGE_EPS2: f32 = 0.12 * 0.12;
+/// Slope (rise over run) at which gullies reach their full depth; below it they fade in.
+const GULLY_SLOPE: f32 = 0.35;
+
+/// One erosion-filter octave: returns the stripe value in `[−1, 1]` and its gradient (per metre)
+/// for stripes whose crests run along `(gx, gz)`.
+///
+/// The four corners of the sample's cell each carry a wave `cos 2π(d·t' + φ_c)` through the
+/// sample, where `d` is the offset from the corner in cells, `t'` the unit vector across the
+/// slope (in the octave's rotated frame) and `φ_c` a hashed phase; their phasors are blended with
+/// the bilinear fade weights and normalised, so the stripes keep unit amplitude and bend
+/// smoothly as the slope direction turns. The gradient is the stripe's own (the change of the
+/// weights and of the direction is neglected, as in the point-evaluable filters this follows).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn gullies(
+    o: &NoiseOctave,
+    xs: &L,
+    zs: &L,
+    gx: &L,
+    gz: &L,
+    out: &mut L,
+    dx: &mut L,
+    dz: &mut L,
+) {
+    let mut qx = [0.0; LANES];
+    let mut qz = [0.0; LANES];
+    octave_coords(o, xs, zs, &mut qx, &mut qz);
+    let k = std::f32::consts::TAU * o.freq;
+    for l in 0..LANES {
+        // Across-slope unit vector t = perp(G) / |G|, world frame, then rotated into the octave's.
+        let g2 = gx[l] * gx[l] + gz[l] * gz[l];
+        let inv = inv_sqrt(g2 + 1e-12);
+        let tx = -gz[l] * inv;
+        let tz = gx[l] * inv;
+        let rx = o.cos * tx - o.sin * tz;
+        let rz = o.sin * tx + o.cos * tz;
+        let fx = qx[l].floor();
+        let fz = qz[l].floor();
+        let ux = qx[l] - fx;
+        let uz = qz[l] - fz;
+        let wu = fade(ux);
+        let wv = fade(uz);
+        let [h00, h10, h01, h11] = corner_hashes(lattice_index(fx), lattice_index(fz), o.seed);
+        let phase = |h: u32| (mix32(h) >> 8) as f32 * (1.0 / 16_777_216.0);
+        let (s00, c00) = sincos_turns(ux * rx + uz * rz + phase(h00));
+        let (s10, c10) = sincos_turns((ux - 1.0) * rx + uz * rz + phase(h10));
+        let (s01, c01) = sincos_turns(ux * rx + (uz - 1.0) * rz + phase(h01));
+        let (s11, c11) = sincos_turns((ux - 1.0) * rx + (uz - 1.0) * rz + phase(h11));
+        let ca = c00 + (c10 - c00) * wu;
+        let cb = c01 + (c11 - c01) * wu;
+        let sa = s00 + (s10 - s00) * wu;
+        let sb = s01 + (s11 - s01) * wu;
+        let c = ca + (cb - ca) * wv;
+        let s = sa + (sb - sa) * wv;
+        let n = inv_sqrt(c * c + s * s + 1e-6);
+        out[l] = c * n;
+        // d/dp cos(θ) = −sin(θ) · 2π · freq · t (world frame).
+        let ds = -s * n * k;
+        dx[l] = ds * tx;
+        dz[l] = ds * tz;
+    }
+}
+
+/// Heights (metres) of a batch at one LOD: `erosion[l]` and `rough[l]` are the climate's
+/// erosion strength and roughness at each sample.
+pub(super) fn heights(
+    plan: &EarthPlan,
+    lod: usize,
+    xs: &L,
+    zs: &L,
+    erosion: &L,
+    rough: &L,
+    out: &mut L,
+) {
+    let mut elev = [0.0; LANES];
+    let mut amp = [0.0; LANES];
+    let mut ridge = [0.0; LANES];
+    macro_fields(&plan.macro_plan, xs, zs, &mut elev, &mut amp, &mut ridge);
+    let mut h = [0.0f32; LANES];
+    let mut gx = [0.0f32; LANES];
+    let mut gz = [0.0f32; LANES];
+    let mut qx = [0.0; LANES];
+    let mut qz = [0.0; LANES];
+    let mut n = [0.0; LANES];
+    let mut dx = [0.0; LANES];
+    let mut dz = [0.0; LANES];
+    for layer in &plan.lods[lod].layers {
+        let o = &layer.octave;
+        match layer.kind {
+            LayerKind::Relief { fine, ridged } => {
+                octave_coords(o, xs, zs, &mut qx, &mut qz);
+                gradient_d(&qx, &qz, o.seed, &mut n, &mut dx, &mut dz);
+                for l in 0..LANES {
+                    // Lattice derivative → world: d/dp = freq · Rᵀ · d/dq.
+                    let wdx = (o.cos * dx[l] + o.sin * dz[l]) * o.freq;
+                    let wdz = (o.cos * dz[l] - o.sin * dx[l]) * o.freq;
+                    // Ridged: t = 1 − |n|_ε with a smooth absolute value, so crests are rounded
+                    // over about ε of the octave's wavelength instead of one-sample creases.
+                    let an = (n[l] * n[l] + RIDGE_EPS2).sqrt();
+                    let t = (1.0 - an).max(0.0);
+                    let dan = n[l] / an;
+                    let r = if ridged { ridge[l] } else { 0.0 };
+                    // (1 − ρ)·n + ρ·2(t² − 0.4), and its derivative.
+                    let sig = (1.0 - r) * n[l] + r * 2.0 * (t * t - 0.4);
+                    let dsig = (1.0 - r) - r * 4.0 * t * dan;
+                    let damp = 1.0 / (1.0 + DAMPING * (gx[l] * gx[l] + gz[l] * gz[l]));
+                    let rough_l = if fine { rough[l] } else { 1.0 };
+                    let a = amp[l] * layer.amp * damp * rough_l;
+                    h[l] += a * sig;
+                    gx[l] += a * dsig * wdx;
+                    gz[l] += a * dsig * wdz;
+                }
+            }
+            LayerKind::Gully => {
+                gullies(o, xs, zs, &gx, &gz, &mut n, &mut dx, &mut dz);
+                for l in 0..LANES {
+                    let slope = (gx[l] * gx[l] + gz[l] * gz[l]).sqrt();
+                    let fadein = smoothstep(0.0, GULLY_SLOPE, slope);
+                    let a = amp[l] * layer.amp * erosion[l] * fadein;
+                    h[l] += a * n[l];
+                    gx[l] += a * dx[l];
+                    gz[l] += a * dz[l];
+                }
+            }
+        }
+    }
+    for l in 0..LANES {
+        out[l] = elev[l] + h[l];
+    }
+}

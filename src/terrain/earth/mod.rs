@@ -1,0 +1,384 @@
+//! The `earth-1` generator: a world that reads as Earth from continents to the metre.
+//!
+//! Sources: Schneider et al., *Real-time rendering of infinite landscapes on the GPU* (value-noise
+//! multifractals, §2.2 domain warping, §4.1 LOD octave counts), Choroś & Topolski (the extended
+//! Voronoi biome map with latitude and dispersion), Musgrave's ridged multifractal, Quílez's
+//! derivative-damped fBm, and the point-evaluable erosion filters of Clay John (2018), Felix
+//! Westin (2023) and Rune Skovbo Johansen (2026), whose phasor-blended stripe noise the gully
+//! layers follow (our own formulation, see [`kernel`]).
+//!
+//! Scales, largest first (defaults of [`EarthParams`]):
+//! - **continents** (~1 400 km lattice, nine octaves down to 5 km, rotated per octave and warped
+//!   by a bounded field): ocean floor at −4.2 km, shelf, coast, plains rising inland to 650 m; the
+//!   origin is biased onto land;
+//! - **mountain belts** (600 km lattice): sinuous bands where a belt noise crosses zero, with
+//!   3.6 km of ridged relief; hill country (550 m) and plains (90 m) elsewhere;
+//! - **relief layers**: up to 16 octaves from 24 km wavelength, each rotated by its own angle,
+//!   ridged in belts, damped by the slope accumulated so far;
+//! - **gully layers** (the erosion filter): five octaves from a 3 km lattice, interleaved with
+//!   the relief octaves of similar amplitude;
+//! - **climate** ([`climate`]): biome weights on a 2 km world lattice, colder with altitude.
+//!
+//! **LOD rule (§4.1, generalised).** Every layer has a reference amplitude `a_i · A_max`. At a
+//! vertex spacing `δ` it gets the weight `w_i = clamp(ln(a_i A_max / δ) / ln(1/q), 0, 1)`, where
+//! `q` is its series' amplitude ratio (the paper's `λ − k`), then `w_i = min(w_i, w_{i−1})` so the
+//! kept layers are a prefix of the evaluation order. The macro fields (continents, belts, hills,
+//! warp) and the climate are evaluated in full at every LOD. Hence a vertex's height at LOD `k`
+//! differs from LOD 0 only through the layers LOD `k` drops or weights less, and by at most
+//! [`EarthLod::bound_m`] = `Σ_i (w_i⁰ − w_i^k) · a_i · A_max · S_i`, with `S_i` the layer's largest
+//! value times the largest erosion or roughness factor.
+//!
+//! Seams: every value is a function of the vertex's world position (its lattice index times the
+//! spacing, exact in `f32`), so neighbouring tiles share edge vertices bit for bit, as with the
+//! classic generator.
+
+pub mod climate;
+mod kernel;
+pub mod params;
+pub mod trig;
+
+pub use kernel::LANES;
+pub use params::{BiomeRelief, EarthParams};
+
+use super::biome::BiomeMapPlan;
+use super::hash::{purpose, stream, unit};
+use super::plan::MAX_LOD;
+use super::tile::{Field, FieldJob};
+use super::world::WorldParams;
+
+/// Most relief octaves a world may ask for.
+pub const MAX_RELIEF_OCTAVES: usize = 20;
+/// Most gully octaves a world may ask for.
+pub const MAX_GULLY_OCTAVES: usize = 8;
+
+/// Depth of a gully layer relative to the relief amplitude, at the coarsest gully octave.
+const GULLY_DEPTH: f32 = 0.12;
+/// Relief octaves mixed towards ridged in mountain belts.
+pub const RIDGED_OCTAVES: usize = 3;
+/// Sum of the relief octaves' reference amplitudes is about `RELIEF_NORM / (1 − gain)`.
+const RELIEF_NORM: f32 = 0.55;
+/// Largest magnitude of a relief layer's signal: smooth gradient noise is a convex blend of
+/// corner values `g · d` with `|d| ≤ √2`, times [`kernel::GRADIENT_SCALE`]; ridged is at most
+/// `2 · 0.6`.
+const RELIEF_SIGNAL_MAX: f32 = std::f32::consts::SQRT_2 * kernel::GRADIENT_SCALE;
+
+/// One octave of a noise: rotation, frequency, offset and amplitude.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NoiseOctave {
+    /// Lattice cells per metre.
+    pub freq: f32,
+    /// Weight of the octave (metres for the warp, plain numbers elsewhere).
+    pub amp: f32,
+    /// Stream seed of the octave's lattice.
+    pub seed: u32,
+    /// Cosine of the octave's rotation.
+    pub cos: f32,
+    /// Sine of the octave's rotation.
+    pub sin: f32,
+    /// Offset of the octave's lattice, cells.
+    pub ox: f32,
+    /// Offset of the octave's lattice, cells.
+    pub oz: f32,
+}
+
+/// The LOD-independent fields: warp, continents, belts, hills.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MacroPlan {
+    /// Warp of the macro fields along x (amplitudes in metres).
+    pub warp_x: Vec<NoiseOctave>,
+    /// Warp along z.
+    pub warp_z: Vec<NoiseOctave>,
+    /// Continent octaves.
+    pub continent: Vec<NoiseOctave>,
+    /// Belt octaves.
+    pub belt: Vec<NoiseOctave>,
+    /// Hill-country octaves.
+    pub hills: Vec<NoiseOctave>,
+    /// `EarthParams::land_bias`.
+    pub land_bias: f32,
+    /// `EarthParams::origin_land`.
+    pub origin_land: f32,
+    /// `1 / origin_land_radius_m²`.
+    pub inv_origin_r2: f32,
+    /// `EarthParams::belt_width`.
+    pub belt_width: f32,
+    /// Relief of mountains, metres.
+    pub mountain_relief_m: f32,
+    /// Relief of hills, metres.
+    pub hill_relief_m: f32,
+    /// Relief of plains, metres.
+    pub plain_relief_m: f32,
+    /// Relief of the sea floor, metres.
+    pub seafloor_relief_m: f32,
+    /// Height of the interior plains, metres.
+    pub interior_height_m: f32,
+    /// Depth of the abyss, metres.
+    pub ocean_depth_m: f32,
+}
+
+/// What a layer adds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LayerKind {
+    /// One relief octave; `fine` ones (wavelength at most the coarsest gully spacing) are scaled
+    /// by the biome's roughness.
+    Relief {
+        /// Scaled by the roughness.
+        fine: bool,
+        /// Mixed towards ridged by the belt mask (the first [`RIDGED_OCTAVES`]).
+        ridged: bool,
+    },
+    /// One erosion-filter octave.
+    Gully,
+}
+
+/// One layer of the height sum at one LOD.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layer {
+    /// Relief or gully.
+    pub kind: LayerKind,
+    /// Its noise; `octave.amp` is unused.
+    pub octave: NoiseOctave,
+    /// Reference amplitude relative to the local relief `A`, times the LOD weight.
+    pub amp: f32,
+}
+
+/// The layers of one LOD.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EarthLod {
+    /// Layers in evaluation order (the last may be partial).
+    pub layers: Vec<Layer>,
+    /// Largest difference of a vertex's height from LOD 0, metres (module docs).
+    pub bound_m: f32,
+}
+
+/// Everything the `earth-1` kernels read, built once per world.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EarthPlan {
+    /// LOD-independent fields.
+    pub macro_plan: MacroPlan,
+    /// Per LOD, index = LOD.
+    pub lods: Vec<EarthLod>,
+    /// Biome weights.
+    pub climate: climate::ClimatePlan,
+    /// Erosion strength of each biome (the world's times the biome's).
+    pub erosion: Vec<f32>,
+    /// Roughness of each biome.
+    pub roughness: Vec<f32>,
+}
+
+fn octaves(
+    seed: u64,
+    index: u32,
+    count: usize,
+    wavelength_m: f64,
+    amp0: f64,
+    gain: f64,
+) -> Vec<NoiseOctave> {
+    (0..count)
+        .map(|k| octave(seed, index + k as u32, wavelength_m / (1u64 << k) as f64, amp0 * libm::pow(gain, k as f64)))
+        .collect()
+}
+
+/// Octave `index` of the world's `earth-1` streams: its own rotation (a golden-angle sequence
+/// plus a hashed turn) and lattice offset, so no two octaves share lattice directions or points.
+fn octave(seed: u64, index: u32, wavelength_m: f64, amp: f64) -> NoiseOctave {
+    let h = stream(seed, purpose::EARTH, index);
+    let angle = index as f64 * 2.399_963_229_728_653 + unit(h) as f64 * std::f64::consts::TAU;
+    NoiseOctave {
+        freq: (1.0 / wavelength_m) as f32,
+        amp: amp as f32,
+        seed: h,
+        cos: libm::cos(angle) as f32,
+        sin: libm::sin(angle) as f32,
+        ox: unit(h.rotate_left(11)) * 256.0,
+        oz: unit(h.rotate_left(23)) * 256.0,
+    }
+}
+
+impl EarthPlan {
+    /// The plan of an `earth-1` world (`params.earth` must be set; `WorldParams::validate`
+    /// checks it).
+    pub fn new(seed: u64, params: &WorldParams, map: BiomeMapPlan) -> Self {
+        let e = params.earth.clone().unwrap_or_default();
+        let warp_len = e.continent_scale_m as f64 / 3.0;
+        // Bounded warp: displacement 0.12 of its own wavelength, so the stretch it causes stays
+        // below about 1.4 (no marble streaks), and it only moves the macro fields.
+        let macro_plan = MacroPlan {
+            warp_x: octaves(seed, 0, 2, warp_len, 0.12 * warp_len, 0.5),
+            warp_z: octaves(seed, 2, 2, warp_len, 0.12 * warp_len, 0.5),
+            continent: octaves(seed, 4, 9, e.continent_scale_m as f64, 0.5, 0.55),
+            belt: octaves(seed, 13, 3, e.belt_scale_m as f64, 0.6, 0.5),
+            hills: octaves(seed, 16, 2, 150_000.0, 0.8, 0.5),
+            land_bias: e.land_bias,
+            origin_land: e.origin_land,
+            inv_origin_r2: (1.0 / (e.origin_land_radius_m as f64).powi(2)) as f32,
+            belt_width: e.belt_width,
+            mountain_relief_m: e.mountain_relief_m,
+            hill_relief_m: e.hill_relief_m,
+            plain_relief_m: e.plain_relief_m,
+            seafloor_relief_m: e.seafloor_relief_m,
+            interior_height_m: e.interior_height_m,
+            ocean_depth_m: e.ocean_depth_m,
+        };
+        let relief = |b: &super::world::Biome| b.relief.clone().unwrap_or_default();
+        let erosion: Vec<f32> = params
+            .biomes
+            .iter()
+            .map(|b| e.erosion * relief(b).erosion)
+            .collect();
+        let roughness: Vec<f32> = params.biomes.iter().map(|b| relief(b).roughness).collect();
+        let max_erosion = erosion.iter().fold(0.0f32, |a, &b| a.max(b));
+        let max_rough = roughness.iter().fold(1.0f32, |a, &b| a.max(b));
+
+        // The layers in evaluation order, each with its reference amplitude, the amplitude ratio
+        // of its series and its largest signal.
+        let mut all: Vec<(Layer, f64, f64)> = Vec::new();
+        let mut amp = RELIEF_NORM as f64;
+        for k in 0..e.octaves as usize {
+            let wavelength = e.ridge_scale_m as f64 / (1u64 << k) as f64;
+            let o = octave(seed, 100 + k as u32, wavelength, 0.0);
+            let fine = wavelength <= e.gully_scale_m as f64;
+            // Hillslopes: below `detail_scale_m` the spectrum falls faster (`detail_gain`).
+            let gain = if wavelength < e.detail_scale_m as f64 {
+                e.detail_gain
+            } else {
+                e.gain
+            } as f64;
+            if k > 0 {
+                amp *= gain;
+            }
+            let smax = RELIEF_SIGNAL_MAX as f64 * if fine { max_rough as f64 } else { 1.0 };
+            let layer = Layer {
+                kind: LayerKind::Relief {
+                    fine,
+                    ridged: k < RIDGED_OCTAVES,
+                },
+                octave: o,
+                amp: amp as f32,
+            };
+            all.push((layer, 1.0 / gain, smax));
+        }
+        for g in 0..e.gully_octaves as usize {
+            let cell = e.gully_scale_m as f64 / (1u64 << g) as f64;
+            let o = octave(seed, 200 + g as u32, cell, 0.0);
+            let amp = GULLY_DEPTH as f64 * libm::pow(0.5, g as f64);
+            let layer = Layer {
+                kind: LayerKind::Gully,
+                octave: o,
+                amp: amp as f32,
+            };
+            all.push((layer, 2.0, max_erosion as f64));
+        }
+        // Interleave by reference amplitude (stable: relief first at equal amplitude).
+        all.sort_by(|a, b| b.0.amp.total_cmp(&a.0.amp));
+        let a_max = ((e.mountain_relief_m.max(e.hill_relief_m) + e.plain_relief_m)
+            .max(e.seafloor_relief_m)) as f64;
+        let weights_at = |spacing: f64| -> Vec<f64> {
+            let mut prev = 1.0f64;
+            all.iter()
+                .map(|(l, ratio, _)| {
+                    let w = (libm::log(l.amp as f64 * a_max / spacing) / libm::log(*ratio))
+                        .clamp(0.0, 1.0);
+                    prev = prev.min(w);
+                    prev
+                })
+                .collect()
+        };
+        let w0 = weights_at(params.cell_m as f64);
+        let lods = (0..=MAX_LOD)
+            .map(|lod| {
+                let spacing = params.cell_m as f64 * (1u64 << lod) as f64;
+                let w = weights_at(spacing);
+                let mut bound = 0.0f64;
+                let mut layers = Vec::new();
+                for (i, (layer, _, smax)) in all.iter().enumerate() {
+                    bound += (w0[i] - w[i]).max(0.0) * layer.amp as f64 * a_max * smax;
+                    if w[i] > 0.0 {
+                        layers.push(Layer {
+                            amp: (layer.amp as f64 * w[i]) as f32,
+                            ..*layer
+                        });
+                    }
+                }
+                EarthLod {
+                    layers,
+                    bound_m: bound as f32,
+                }
+            })
+            .collect();
+        let climate = climate::ClimatePlan::new(
+            map,
+            params.layout.blur_radius_m,
+            e.latitude_offset_m,
+            e.lapse_m,
+            params.biomes.len(),
+        );
+        Self {
+            macro_plan,
+            lods,
+            climate,
+            erosion,
+            roughness,
+        }
+    }
+}
+
+/// Large-scale elevation (continent and mean mountain relief, metres) at world positions, for
+/// the climate: `e(c) + 0.33 · A · ρ`.
+pub fn macro_elevation_batch(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
+    let mut x = [0.0f32; LANES];
+    let mut z = [0.0f32; LANES];
+    let (mut e, mut a, mut r) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+    for start in (0..xs.len()).step_by(LANES) {
+        let n = (xs.len() - start).min(LANES);
+        x[..n].copy_from_slice(&xs[start..start + n]);
+        z[..n].copy_from_slice(&zs[start..start + n]);
+        kernel::macro_fields(&plan.macro_plan, &x, &z, &mut e, &mut a, &mut r);
+        for l in 0..n {
+            out[start + l] = e[l] + 0.33 * a[l] * r[l];
+        }
+    }
+}
+
+/// Heights and biome weights of a job's lattice samples: the CPU reference of `earth-1` (the
+/// WGSL twin is `shaders/earth.wgsl`).
+pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
+    let FieldJob {
+        lod,
+        gx0,
+        gz0,
+        w,
+        h,
+    } = job;
+    let k = plan.climate.count;
+    let weights = climate::weights(plan, spacing_m, job);
+    let n = w * h;
+    let mut heights = vec![0.0f32; n];
+    let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
+    let (mut ero, mut rough, mut out) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+    for start in (0..n).step_by(LANES) {
+        let m = (n - start).min(LANES);
+        for l in 0..m {
+            let v = start + l;
+            let (i, j) = ((v % w) as i64, (v / w) as i64);
+            x[l] = (gx0 + i) as f32 * spacing_m;
+            z[l] = (gz0 + j) as f32 * spacing_m;
+            let wv = &weights[v * k..(v + 1) * k];
+            let (mut e, mut r) = (0.0f32, 0.0f32);
+            for b in 0..k {
+                e += wv[b] * plan.erosion[b];
+                r += wv[b] * plan.roughness[b];
+            }
+            ero[l] = e;
+            rough[l] = r;
+        }
+        kernel::heights(plan, lod as usize, &x, &z, &ero, &rough, &mut out);
+        heights[start..start + m].copy_from_slice(&out[..m]);
+    }
+    Field {
+        w,
+        h,
+        heights,
+        weights,
+    }
+}

@@ -1,0 +1,236 @@
+//! Settings of the `earth-1` generator (scene units: metres and plain numbers) and their limits.
+
+use super::super::world::ParamError;
+use serde::{Deserialize, Serialize};
+
+/// The tectonic and climatic structure of an `earth-1` world. Every length is in metres.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EarthParams {
+    /// Lattice spacing of the first continent octave, metres: continents and oceans are about
+    /// this wide.
+    pub continent_scale_m: f32,
+    /// Added to the continent value before the coast is placed at 0: more land when positive,
+    /// in [-1, 1].
+    pub land_bias: f32,
+    /// Extra continent value at the origin, fading with the square of the distance over
+    /// `origin_land_radius_m`: keeps the place where players start on land (0 turns it off).
+    pub origin_land: f32,
+    /// Radius of the origin's land bias, metres.
+    pub origin_land_radius_m: f32,
+    /// Depth of the abyssal ocean floor below sea level, metres.
+    pub ocean_depth_m: f32,
+    /// Height of inland plains far from the coast above sea level, metres.
+    pub interior_height_m: f32,
+    /// Lattice spacing of the mountain-belt pattern, metres (belts are a fraction of it wide).
+    pub belt_scale_m: f32,
+    /// Half-width of a belt in units of the belt noise (larger: wider belts), in (0, 1].
+    pub belt_width: f32,
+    /// Relief of the highest mountain belts, metres.
+    pub mountain_relief_m: f32,
+    /// Relief of hill country, metres.
+    pub hill_relief_m: f32,
+    /// Relief of plains, metres.
+    pub plain_relief_m: f32,
+    /// Relief of the ocean floor, metres.
+    pub seafloor_relief_m: f32,
+    /// Wavelength of the largest ridges, metres; each further octave halves it.
+    pub ridge_scale_m: f32,
+    /// Height octaves at the finest LOD (the §4.1 rule drops the ones a coarser spacing cannot
+    /// resolve), in [1, 20].
+    pub octaves: u32,
+    /// Ratio of the amplitudes of successive height octaves, in (0, 1).
+    pub gain: f32,
+    /// Wavelength below which octaves fall off by `detail_gain` instead (hillslopes are
+    /// smoother than the self-similar extrapolation of the large relief), metres.
+    pub detail_scale_m: f32,
+    /// Ratio of the amplitudes of successive octaves below `detail_scale_m`, in (0, 1).
+    pub detail_gain: f32,
+    /// Erosion filter: strength (0 turns it off), in [0, 2].
+    pub erosion: f32,
+    /// Erosion filter: spacing of the coarsest gully lattice, metres.
+    pub gully_scale_m: f32,
+    /// Erosion filter: gully octaves, each half the spacing of the previous, in [0, 8].
+    pub gully_octaves: u32,
+    /// Latitude of the origin as a distance from the pole, metres: the Voronoi map of
+    /// Choroś & Topolski is read at `z + latitude_offset_m`, so the origin sits this far towards
+    /// the equator.
+    pub latitude_offset_m: f32,
+    /// Height at which the climate is one biome colder, metres (the temperature lapse, in units
+    /// of the pole-to-equator range: 6 000 m means a 2 km mountain is a third of the way to the
+    /// pole).
+    pub lapse_m: f32,
+}
+
+impl Default for EarthParams {
+    fn default() -> Self {
+        Self {
+            continent_scale_m: 1_400_000.0,
+            land_bias: 0.05,
+            origin_land: 0.45,
+            origin_land_radius_m: 350_000.0,
+            ocean_depth_m: 4200.0,
+            interior_height_m: 650.0,
+            belt_scale_m: 400_000.0,
+            belt_width: 0.25,
+            mountain_relief_m: 3300.0,
+            hill_relief_m: 700.0,
+            plain_relief_m: 150.0,
+            seafloor_relief_m: 250.0,
+            ridge_scale_m: 24_000.0,
+            octaves: 16,
+            gain: 0.5,
+            detail_scale_m: 700.0,
+            detail_gain: 0.4,
+            erosion: 1.0,
+            gully_scale_m: 8000.0,
+            gully_octaves: 6,
+            latitude_offset_m: 1_024_000.0,
+            lapse_m: 6000.0,
+        }
+    }
+}
+
+/// Per-biome character of an `earth-1` world's relief.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BiomeRelief {
+    /// Multiplies the erosion filter's strength in this biome, in [0, 2].
+    pub erosion: f32,
+    /// Multiplies the amplitude of the octaves finer than the gullies, in [0, 2].
+    pub roughness: f32,
+}
+
+impl Default for BiomeRelief {
+    fn default() -> Self {
+        Self {
+            erosion: 1.0,
+            roughness: 1.0,
+        }
+    }
+}
+
+fn check(ok: bool, field: &str, message: &str) -> Result<(), ParamError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ParamError {
+            field: format!("earth.{field}"),
+            message: message.into(),
+        })
+    }
+}
+
+fn within(v: f32, lo: f32, hi: f32) -> bool {
+    v.is_finite() && (lo..=hi).contains(&v)
+}
+
+impl EarthParams {
+    /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
+    pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
+        let m = "must be in";
+        check(
+            within(self.continent_scale_m, 10_000.0, 1.0e8),
+            "continent_scale_m",
+            &format!("{m} [1e4, 1e8]"),
+        )?;
+        check(
+            within(self.land_bias, -1.0, 1.0),
+            "land_bias",
+            &format!("{m} [-1, 1]"),
+        )?;
+        check(
+            within(self.origin_land, 0.0, 2.0),
+            "origin_land",
+            &format!("{m} [0, 2]"),
+        )?;
+        check(
+            within(self.origin_land_radius_m, 1.0, 1.0e8),
+            "origin_land_radius_m",
+            &format!("{m} [1, 1e8]"),
+        )?;
+        for (name, v) in [
+            ("ocean_depth_m", self.ocean_depth_m),
+            ("interior_height_m", self.interior_height_m),
+            ("mountain_relief_m", self.mountain_relief_m),
+            ("hill_relief_m", self.hill_relief_m),
+            ("plain_relief_m", self.plain_relief_m),
+            ("seafloor_relief_m", self.seafloor_relief_m),
+        ] {
+            check(within(v, 0.0, 10_000.0), name, &format!("{m} [0, 10000]"))?;
+        }
+        check(
+            within(self.belt_scale_m, 10_000.0, 1.0e8),
+            "belt_scale_m",
+            &format!("{m} [1e4, 1e8]"),
+        )?;
+        check(
+            self.belt_width.is_finite() && self.belt_width > 0.0 && self.belt_width <= 1.0,
+            "belt_width",
+            &format!("{m} (0, 1]"),
+        )?;
+        check(
+            within(self.ridge_scale_m, 64.0 * cell_m, 1.0e6),
+            "ridge_scale_m",
+            &format!("{m} [64 vertex spacings, 1e6]"),
+        )?;
+        check(
+            (1..=super::MAX_RELIEF_OCTAVES as u32).contains(&self.octaves),
+            "octaves",
+            &format!("{m} [1, {}]", super::MAX_RELIEF_OCTAVES),
+        )?;
+        for (name, v) in [("gain", self.gain), ("detail_gain", self.detail_gain)] {
+            check(
+                v.is_finite() && v > 0.0 && v < 1.0,
+                name,
+                &format!("{m} (0, 1)"),
+            )?;
+        }
+        check(
+            within(self.detail_scale_m, 0.0, 1.0e6),
+            "detail_scale_m",
+            &format!("{m} [0, 1e6]"),
+        )?;
+        check(
+            within(self.erosion, 0.0, 2.0),
+            "erosion",
+            &format!("{m} [0, 2]"),
+        )?;
+        check(
+            within(self.gully_scale_m, 16.0 * cell_m, 1.0e6),
+            "gully_scale_m",
+            &format!("{m} [16 vertex spacings, 1e6]"),
+        )?;
+        check(
+            self.gully_octaves as usize <= super::MAX_GULLY_OCTAVES,
+            "gully_octaves",
+            &format!("{m} [0, {}]", super::MAX_GULLY_OCTAVES),
+        )?;
+        check(
+            within(self.latitude_offset_m, -1.0e8, 1.0e8),
+            "latitude_offset_m",
+            &format!("{m} [-1e8, 1e8]"),
+        )?;
+        check(
+            within(self.lapse_m, 100.0, 1.0e6),
+            "lapse_m",
+            &format!("{m} [100, 1e6]"),
+        )?;
+        Ok(())
+    }
+}
+
+impl BiomeRelief {
+    /// Checks the limits; `field` is the biome's path (`biomes[2]`).
+    pub fn validate(&self, field: &str) -> Result<(), ParamError> {
+        for (name, v) in [("erosion", self.erosion), ("roughness", self.roughness)] {
+            if !within(v, 0.0, 2.0) {
+                return Err(ParamError {
+                    field: format!("{field}.relief.{name}"),
+                    message: "must be in [0, 2]".into(),
+                });
+            }
+        }
+        Ok(())
+    }
+}
