@@ -14,6 +14,7 @@ pub mod cli;
 pub mod compute;
 pub mod cpu_time;
 pub mod edits;
+pub mod element;
 pub mod encode;
 pub mod export;
 pub mod gpu;
