@@ -17,6 +17,7 @@ pub mod edits;
 pub mod element;
 pub mod encode;
 pub mod export;
+pub mod glb;
 pub mod gpu;
 pub mod scene;
 pub mod server;
