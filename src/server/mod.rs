@@ -42,6 +42,7 @@ pub mod region_io;
 pub mod regions;
 pub mod routes;
 pub mod solved;
+pub mod stream_routes;
 pub mod volume_routes;
 pub mod volumes;
 pub mod worlds;
