@@ -1,8 +1,11 @@
-//! Command-line interface.
+//! Command-line interface: the `strata` command and its subcommands. Each subcommand's options
+//! belong to the module that runs it ([`ServeArgs`] to `server`, [`BenchArgs`] to `bench`,
+//! [`ExportArgs`] to `export`), so no module imports this one; only `src/main.rs` does.
 
-use clap::{Parser, Subcommand, ValueEnum};
-use std::net::SocketAddr;
-use std::path::PathBuf;
+use crate::bench::BenchArgs;
+use crate::export::cli::ExportArgs;
+use crate::server::ServeArgs;
+use clap::{Parser, Subcommand};
 
 /// strata: a terrain-generation server.
 #[derive(Debug, Parser)]
@@ -22,87 +25,6 @@ pub enum Command {
     Bench(BenchArgs),
     /// Export a region to a tar archive locally, optionally one shard of N.
     Export(ExportArgs),
-}
-
-/// `strata export` options.
-#[derive(Debug, clap::Args)]
-pub struct ExportArgs {
-    /// World seed.
-    #[arg(long)]
-    pub seed: u64,
-    /// World settings as JSON (a `WorldParams` document); the default world without it.
-    #[arg(long)]
-    pub world: Option<PathBuf>,
-    /// Level of detail.
-    #[arg(long, default_value_t = 0)]
-    pub lod: u32,
-    /// Tile rectangle `x0,z0,x1,z1` (x1 and z1 exclusive).
-    #[arg(long, value_delimiter = ',', num_args = 4)]
-    pub region: Vec<i64>,
-    /// Products: `tiles`, `scatter`.
-    #[arg(long, value_delimiter = ',', default_value = "tiles")]
-    pub products: Vec<String>,
-    /// Tile formats: `json`, `bin`, `png`, `glb`.
-    #[arg(long, value_delimiter = ',', default_value = "bin")]
-    pub formats: Vec<String>,
-    /// Shard `i/N` (1-based); the default is the whole export.
-    #[arg(long)]
-    pub shard: Option<String>,
-    /// Output archive.
-    #[arg(long, short)]
-    pub out: PathBuf,
-    /// Worker threads (default: all cores).
-    #[arg(long)]
-    pub threads: Option<usize>,
-}
-
-/// Which compute backend to use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum BackendChoice {
-    /// A hardware GPU if there is one, else the CPU path.
-    Auto,
-    /// The CPU reference path only.
-    Cpu,
-    /// A wgpu device, software adapters (lavapipe, llvmpipe) included; fails without one.
-    Gpu,
-}
-
-/// `strata serve` options.
-#[derive(Debug, clap::Args)]
-pub struct ServeArgs {
-    /// Address to listen on.
-    #[arg(long, default_value = "127.0.0.1:8080")]
-    pub addr: SocketAddr,
-    /// Data directory (scene store, caches).
-    #[arg(long, default_value = "data")]
-    pub data: PathBuf,
-    /// Compute backend.
-    #[arg(long, value_enum, default_value_t = BackendChoice::Auto)]
-    pub backend: BackendChoice,
-    /// Directory of the browser viewer served at `/`.
-    #[arg(long, default_value = "web/dist")]
-    pub web: PathBuf,
-    /// Server admin token: may create worlds and acts as admin of every world. Read from
-    /// `STRATA_ADMIN_TOKEN` when not given. Without one, anyone may create worlds.
-    #[arg(long)]
-    pub admin_token: Option<crate::server::access::Secret>,
-    /// Directory of the disk tier of the stage cache (finished tiles by input hash); memory
-    /// only without it.
-    #[arg(long)]
-    pub cache_dir: Option<PathBuf>,
-}
-
-/// `strata bench` options.
-#[derive(Debug, clap::Args)]
-pub struct BenchArgs {
-    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson` or `volume`.
-    pub name: String,
-    /// Print one JSON object per line instead of a table.
-    #[arg(long)]
-    pub json: bool,
-    /// Tiles to synthesise per core.
-    #[arg(long, default_value_t = 200)]
-    pub tiles: usize,
 }
 
 /// Runs a parsed command line.

@@ -10,6 +10,7 @@
 
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::edits::TileEdits;
+pub use crate::gpu::AdapterInfo;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
 use crate::terrain::{FieldJob, Tile, TileKey, WorldPlan};
@@ -25,17 +26,6 @@ pub struct BackendInfo {
     pub adapter: Option<AdapterInfo>,
     /// Whether the GPU device was lost and work fell back to the CPU.
     pub device_lost: bool,
-}
-
-/// The wgpu adapter in use.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct AdapterInfo {
-    /// Adapter name, e.g. `"llvmpipe (LLVM 15.0.6, 256 bits)"`.
-    pub name: String,
-    /// Graphics API, e.g. `"Vulkan"`.
-    pub backend: String,
-    /// `"DiscreteGpu"`, `"IntegratedGpu"`, `"VirtualGpu"`, `"Cpu"` or `"Other"`.
-    pub device_type: String,
 }
 
 /// Handle to the compute backends; cheap to clone.

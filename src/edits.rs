@@ -15,7 +15,7 @@ use crate::terrain::lattice::Window;
 use crate::terrain::plan::TILE_VERTS;
 use crate::terrain::tile::{field, finish, FieldJob};
 use crate::terrain::{Tile, TileKey, WorldPlan};
-use crate::volume::element::VolumeSpec;
+use crate::volume::element::{GroundEdits, VolumeSpec};
 use std::sync::Arc;
 
 /// What a tile applies on top of the procedural field.
@@ -72,6 +72,13 @@ impl TileEdits {
         if marks.contains(&1) {
             tile.volume_override = marks;
         }
+    }
+}
+
+/// The ground under a volume region is the ground tiles have.
+impl GroundEdits for TileEdits {
+    fn apply(&self, window: Window, heights: &mut [f32]) {
+        TileEdits::apply(self, window, heights);
     }
 }
 

@@ -19,9 +19,9 @@
 //!   a few millimetres on a 129² grid (observed 1.3 mm, relative residual 6e-7); we allow 2 cm
 //!   and a relative residual (recomputed on the CPU in `f64`) of 1e-5.
 
-use strata::cli::BackendChoice;
 use strata::gpu::poisson::{GpuField, GpuPoissonParams, Op, PoissonKernels, POISSON_WGSL};
 use strata::gpu::request_device;
+use strata::gpu::BackendChoice;
 use strata::terrain::poisson::level::Level;
 use strata::terrain::poisson::ops::{
     prolong, residual, residual_restrict, smooth_colour, smooth_nine,

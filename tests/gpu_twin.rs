@@ -15,8 +15,8 @@
 //! show it anywhere, and these tests should notice.
 
 use std::sync::Arc;
-use strata::cli::BackendChoice;
 use strata::compute::Compute;
+use strata::gpu::BackendChoice;
 use strata::gpu::{request_device, TileKernels};
 use strata::terrain::tile::{field, job_biome_ids, Field, FieldJob};
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};

@@ -6,12 +6,12 @@
 #![allow(clippy::needless_range_loop)]
 
 use std::mem::{offset_of, size_of};
-use strata::cli::BackendChoice;
 use strata::gpu::request_device;
 use strata::gpu::volume::{
     diffuse_on_device, propagate_on_device, DiffuseInput, GpuDiffuseParams, GpuPropagateParams,
     PropagateInput, DIFFUSE_WGSL, PROPAGATE_WGSL,
 };
+use strata::gpu::BackendChoice;
 use strata::volume::pipeline::diffuse::{sweeps, K_PERONA_MALIK};
 use strata::volume::pipeline::propagate::propagate_surface;
 use strata::volume::pipeline::{generate, scenes};

@@ -11,9 +11,9 @@
 //! those flips may be at most 0.1 % of the samples. The test prints how many samples are
 //! bit-identical.
 
-use strata::cli::BackendChoice;
 use strata::gpu::request_device;
 use strata::gpu::volume_bitangent::smooth_bitangents_on_device;
+use strata::gpu::BackendChoice;
 use strata::volume::pipeline::expand::{smooth_bitangents, BITANGENT_SWEEPS};
 use strata::volume::pipeline::{generate, scenes};
 

@@ -7,9 +7,9 @@
 //! components within 1e-5, the room WGSL leaves for fused multiply-adds and 2.5-ULP `/` and
 //! `sqrt` on values of magnitude ≤ 1. The test prints how many values are bit-identical.
 
-use strata::cli::BackendChoice;
 use strata::gpu::request_device;
 use strata::gpu::volume_mesh::VolumeMeshKernel;
+use strata::gpu::BackendChoice;
 use strata::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
 
 const OFFSET_TOL: f32 = 1e-5;

@@ -360,7 +360,7 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
-    use crate::scene::Scene;
+    use crate::element::Element;
     use crate::terrain::WorldParams;
     use serde_json::json;
 
@@ -369,11 +369,11 @@ pub(super) mod tests {
     }
 
     pub(crate) fn spec(samples: usize, ops: serde_json::Value) -> RegionSpec {
-        let scene = Scene::from_value(&json!({"regions": [{
+        let element: Element = serde_json::from_value(json!({
             "id": "r", "bbox": {"min": [1000, 2000], "max": [1128, 2128]},
-            "samples": samples, "ops": ops}]}))
-        .expect("scene");
-        RegionSpec::from_element(&scene.regions[0]).expect("spec")
+            "samples": samples, "ops": ops}))
+        .expect("element");
+        RegionSpec::from_element(&element).expect("spec")
     }
 
     pub(crate) fn height(r: &Displacement, i: usize, j: usize) -> f64 {

@@ -140,7 +140,7 @@ pub struct Heightmap {
 }
 
 fn position(pointer: &str, p: [f64; 2]) -> Result<(), SpecError> {
-    let big = crate::scene::MAX_COORD_M;
+    let big = crate::element::MAX_COORD_M;
     finite_in(format!("{pointer}/0"), p[0], -big, big)?;
     finite_in(format!("{pointer}/1"), p[1], -big, big)
 }

@@ -528,12 +528,13 @@ fn an_oversized_inline_heightmap_is_refused_before_decoding() {
     let png = super::exchange::encode_png16(2050, 2, &vec![1.0; 4100]).expect("png");
     let map = json!({"png_base64": base64::engine::general_purpose::STANDARD.encode(&png.bytes),
         "lo_m": 0, "hi_m": 1, "spacing_m": 1});
-    let scene = crate::scene::Scene::from_value(&json!({"regions": [{
+    let element: crate::element::Element = serde_json::from_value(json!({
         "id": "r", "bbox": {"min": [0, 0], "max": [64, 64]}, "samples": 33,
         "ops": [{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 1],
-                 "target": [32, 32], "heightmap": map}]}]}));
-    let e = scene.expect_err("refused");
-    assert_eq!(e.pointer, "/regions/0/ops/0/heightmap/png_base64", "{e}");
+                 "target": [32, 32], "heightmap": map}]}))
+    .expect("element");
+    let e = super::RegionSpec::from_element(&element).expect_err("refused");
+    assert_eq!(e.pointer, "/ops/0/heightmap/png_base64", "{e}");
     assert!(e.message.contains("2049"), "{e}");
 }
 

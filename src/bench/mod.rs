@@ -8,15 +8,16 @@
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`].
 
+mod args;
 pub mod http;
 pub mod poisson;
 pub mod serve;
 pub mod strata;
 pub mod volume;
 
-use crate::cli::BenchArgs;
 use crate::terrain::fractal::fbm_batch;
 use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+pub use args::BenchArgs;
 use serde_json::json;
 use std::hint::black_box;
 use std::time::Instant;

@@ -42,7 +42,7 @@
 //! changes from second to second). `ms_cold_paired` is the median of those cold solves.
 
 use super::{emit, median};
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::terrain::poisson::{
     GridSpec, OwnedProblem, Rect, SolveOptions, SolveReport, Solver, Start,
 };

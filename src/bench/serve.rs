@@ -11,7 +11,7 @@
 
 use super::emit;
 use super::http::{http, http_get};
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::compute::Compute;
 use crate::server::{app, AppState};
 use anyhow::{bail, Context};

@@ -4,7 +4,7 @@
 //! (paper: 84,376 limits for 125,000 voxels).
 
 use super::emit;
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::subsurface::plan::ElementKind;
 use crate::subsurface::{ChunkKey, SubsurfaceConfig, SubsurfacePlan, PRESETS};
 use serde_json::json;

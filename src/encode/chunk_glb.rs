@@ -94,5 +94,5 @@ pub fn encode(info: &ChunkInfo, m: &ChunkMesh) -> Vec<u8> {
         doc["buffers"] = json!([{ "byteLength": bin.len() }]);
     }
     doc["nodes"] = json!([node]);
-    super::glb::container(&doc, &bin)
+    crate::glb::container(&doc, &bin)
 }

@@ -1,11 +1,43 @@
 //! `strata export`: the export of the jobs API, run locally with a progress bar.
 
 use super::{write_archive, ExportSpec, Product, Shard};
-use crate::cli::ExportArgs;
 use crate::terrain::{WorldParams, WorldPlan};
 use anyhow::{bail, Context};
 use std::io::{BufWriter, IsTerminal, Write};
+use std::path::PathBuf;
 use std::time::Instant;
+
+/// `strata export` options.
+#[derive(Debug, clap::Args)]
+pub struct ExportArgs {
+    /// World seed.
+    #[arg(long)]
+    pub seed: u64,
+    /// World settings as JSON (a `WorldParams` document); the default world without it.
+    #[arg(long)]
+    pub world: Option<PathBuf>,
+    /// Level of detail.
+    #[arg(long, default_value_t = 0)]
+    pub lod: u32,
+    /// Tile rectangle `x0,z0,x1,z1` (x1 and z1 exclusive).
+    #[arg(long, value_delimiter = ',', num_args = 4)]
+    pub region: Vec<i64>,
+    /// Products: `tiles`, `scatter`.
+    #[arg(long, value_delimiter = ',', default_value = "tiles")]
+    pub products: Vec<String>,
+    /// Tile formats: `json`, `bin`, `png`, `glb`.
+    #[arg(long, value_delimiter = ',', default_value = "bin")]
+    pub formats: Vec<String>,
+    /// Shard `i/N` (1-based); the default is the whole export.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Output archive.
+    #[arg(long, short)]
+    pub out: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
 
 /// Runs `strata export`.
 pub fn run(args: &ExportArgs) -> anyhow::Result<()> {

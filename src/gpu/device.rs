@@ -11,17 +11,39 @@
 //! on the CPU.
 
 use super::tile::{TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
-use crate::cli::BackendChoice;
-use crate::compute::AdapterInfo;
 use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
 use anyhow::{anyhow, bail};
+use clap::ValueEnum;
+use serde::Serialize;
 use std::fmt;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::sync::{mpsc, oneshot};
+
+/// Which compute backend to use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum BackendChoice {
+    /// A hardware GPU if there is one, else the CPU path.
+    Auto,
+    /// The CPU reference path only.
+    Cpu,
+    /// A wgpu device, software adapters (lavapipe, llvmpipe) included; fails without one.
+    Gpu,
+}
+
+/// The wgpu adapter in use.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct AdapterInfo {
+    /// Adapter name, e.g. `"llvmpipe (LLVM 15.0.6, 256 bits)"`.
+    pub name: String,
+    /// Graphics API, e.g. `"Vulkan"`.
+    pub backend: String,
+    /// `"DiscreteGpu"`, `"IntegratedGpu"`, `"VirtualGpu"`, `"Cpu"` or `"Other"`.
+    pub device_type: String,
+}
 
 /// Jobs that may wait in the channel before senders wait for room.
 const QUEUE_DEPTH: usize = 32;

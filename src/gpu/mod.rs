@@ -53,7 +53,8 @@ pub mod volume_bitangent;
 pub mod volume_mesh;
 
 pub use device::{
-    adapter_info_of, adapter_rank, open, open_with_timeout, request_device, GpuHandle,
+    adapter_info_of, adapter_rank, open, open_with_timeout, request_device, AdapterInfo,
+    BackendChoice, GpuHandle,
 };
 pub use tile::{
     field_on_device, field_params, tile_shader_source, TileKernels, DEFAULT_JOB_TIMEOUT,
@@ -62,7 +63,6 @@ pub use tile::{
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::BackendChoice;
     use crate::terrain::FieldJob;
     use wgpu::{Backend, DeviceType};
 

@@ -1,29 +1,8 @@
 //! What an edit changed: the dirty region between two scenes.
 
-use super::{Element, Scene};
+use super::{Element, Rect, Scene};
 use serde::{Deserialize, Serialize};
 use std::collections::{HashMap, HashSet};
-
-/// An axis-aligned rectangle on the ground plane, metres (`[x, z]` corners, inclusive).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Rect {
-    /// `[x, z]` of the west-north corner.
-    pub min: [f64; 2],
-    /// `[x, z]` of the east-south corner.
-    pub max: [f64; 2],
-}
-
-impl Rect {
-    /// Whether the two closed rectangles share a point.
-    pub fn intersects(&self, other: &Rect) -> bool {
-        (0..2).all(|a| self.min[a] <= other.max[a] && other.min[a] <= self.max[a])
-    }
-
-    /// Whether `other` lies inside `self`.
-    pub fn contains(&self, other: &Rect) -> bool {
-        (0..2).all(|a| self.min[a] <= other.min[a] && other.max[a] <= self.max[a])
-    }
-}
 
 /// The part of the world whose products an edit may have changed.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

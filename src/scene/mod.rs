@@ -14,7 +14,9 @@
 mod dirty;
 mod inputs;
 
-pub use dirty::{dirty_region, Dirty, Rect};
+pub(crate) use crate::element::path_pointer;
+pub use crate::element::{escape_token, BBox, Element, Rect, MAX_COORD_M, MAX_ID_LEN};
+pub use dirty::{dirty_region, Dirty};
 pub use inputs::{
     canonical_json, margin_m, tile_footprint, tile_inputs, tile_reach, RegionInput, SceneInputs,
     StrataInput, VolumeInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
@@ -27,43 +29,6 @@ use serde_json::Value;
 
 /// The element arrays of a scene, in document order.
 pub const ELEMENT_KINDS: [&str; 5] = ["regions", "volumes", "strata", "materials", "decals"];
-/// Longest element id, bytes.
-pub const MAX_ID_LEN: usize = 128;
-/// Largest coordinate magnitude of a bounding box, metres.
-pub const MAX_COORD_M: f64 = 1.0e9;
-
-/// An axis-aligned world-space rectangle on the ground plane, metres: `x` east, `z` south.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BBox {
-    /// `[x, z]` of the west-north corner.
-    pub min: [f64; 2],
-    /// `[x, z]` of the east-south corner.
-    pub max: [f64; 2],
-}
-
-impl BBox {
-    /// As a [`Rect`].
-    pub fn rect(&self) -> Rect {
-        Rect {
-            min: self.min,
-            max: self.max,
-        }
-    }
-}
-
-/// One scene element. Only `id` and `bbox` are interpreted here.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Element {
-    /// Unique within its array; `[A-Za-z0-9._:-]`, 1 to [`MAX_ID_LEN`] bytes.
-    pub id: String,
-    /// Where the element has an effect.
-    pub bbox: BBox,
-    /// Every other field, kept verbatim.
-    #[serde(flatten)]
-    pub rest: serde_json::Map<String, Value>,
-}
-
 /// A scene document.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -108,11 +73,6 @@ impl SceneError {
     }
 }
 
-/// Escapes one reference token of a JSON pointer (`~` → `~0`, `/` → `~1`).
-pub fn escape_token(token: &str) -> String {
-    token.replace('~', "~0").replace('/', "~1")
-}
-
 /// Converts a [`ParamError`] field (`biomes[2].generator.hurst`) into a JSON pointer below
 /// `prefix` (`/world/biomes/2/generator/hurst`).
 pub fn param_pointer(prefix: &str, field: &str) -> String {
@@ -129,29 +89,6 @@ pub fn param_pointer(prefix: &str, field: &str) -> String {
             out.push('/');
             out.push_str(&escape_token(&inner[..close]));
             rest = inner.get(close + 1..).unwrap_or("");
-        }
-    }
-    out
-}
-
-pub(crate) fn path_pointer(path: &serde_path_to_error::Path) -> String {
-    use serde_path_to_error::Segment;
-    let mut out = String::new();
-    for seg in path.iter() {
-        match seg {
-            Segment::Seq { index } => {
-                out.push('/');
-                out.push_str(&index.to_string());
-            }
-            Segment::Map { key } => {
-                out.push('/');
-                out.push_str(&escape_token(key));
-            }
-            Segment::Enum { variant } => {
-                out.push('/');
-                out.push_str(&escape_token(variant));
-            }
-            Segment::Unknown => {}
         }
     }
     out
@@ -319,6 +256,14 @@ mod tests {
             Scene::from_value(&json!([])).expect_err("array").pointer,
             ""
         );
+    }
+
+    #[test]
+    fn scenes_refuse_bad_regions_naming_the_field() {
+        let bad = json!({"regions": [{"id": "a", "bbox": {"min": [0, 0], "max": [9, 9]},
+            "ops": [{"op": "freeze", "center": [0, 0], "radius_m": "wide"}]}]});
+        let e = Scene::from_value(&bad).expect_err("refused");
+        assert!(e.pointer.starts_with("/regions/0/ops/0"), "{e}");
     }
 
     #[test]

@@ -28,6 +28,7 @@
 //! run no stage.
 
 pub mod access;
+pub mod args;
 pub mod bodies;
 pub mod chunks;
 pub mod error;
@@ -41,14 +42,15 @@ pub mod region_io;
 pub mod regions;
 pub mod routes;
 pub mod solved;
+pub mod stream_routes;
 pub mod volume_routes;
 pub mod volumes;
 pub mod worlds;
 
+pub use args::ServeArgs;
 pub use error::AppError;
 
 use crate::cache::StageCache;
-use crate::cli::ServeArgs;
 use crate::compute::Compute;
 use crate::scene::SceneInputs;
 use crate::terrain::{Tile, TileKey, WorldParams, WorldPlan};
@@ -364,7 +366,7 @@ pub fn app(state: AppState) -> axum::Router {
 /// Opens the compute backend the command line asks for: a GPU device task when
 /// [`crate::gpu::open`] yields one (`auto` with a hardware adapter, `gpu` with any adapter), else
 /// the CPU path. With `--backend gpu` and no usable adapter this fails, so the server does not start.
-async fn open_compute(choice: crate::cli::BackendChoice) -> anyhow::Result<Compute> {
+async fn open_compute(choice: crate::gpu::BackendChoice) -> anyhow::Result<Compute> {
     Ok(match crate::gpu::open(choice).await? {
         Some(gpu) => Compute::with_gpu(gpu),
         None => Compute::cpu(),

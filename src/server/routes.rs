@@ -46,7 +46,7 @@ pub fn router(state: AppState) -> Router {
         .merge(super::chunks::routes())
         .merge(super::volume_routes::routes())
         .merge(super::geology::routes())
-        .merge(crate::stream::routes::router())
+        .merge(super::stream_routes::router())
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {
         Some(dir) => {

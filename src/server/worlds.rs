@@ -30,7 +30,7 @@ use super::params::{
 use super::routes::{check_scatter_format, scatter_product, segments, Segments, IMMUTABLE};
 use super::AppState;
 use crate::encode::Format;
-use crate::scene::{Dirty, Scene, SceneInputs};
+use crate::scene::{Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
     StoreError, TokenHash, WorldMeta,
@@ -42,7 +42,7 @@ use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::{Json, Router};
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use serde_json::{json, Value};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
@@ -60,15 +60,7 @@ pub const VERSION_HEADER: &str = "x-strata-version";
 pub const JSON_PATCH: &str = "application/json-patch+json";
 
 /// An accepted edit, as broadcast to the streaming side.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct EditEvent {
-    /// World id.
-    pub world: String,
-    /// The version the edit made.
-    pub version: u64,
-    /// What it changed.
-    pub dirty: Dirty,
-}
+pub use crate::stream::session::EditEvent;
 
 /// The world-related state of an [`AppState`].
 #[derive(Debug)]

@@ -15,10 +15,11 @@ use super::protocol::{ClientMessage, ServerMessage, TileFrame};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use crate::encode::Format;
 use crate::scene::Dirty;
-use crate::server::{AppError, AppState};
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
 use futures::{SinkExt, StreamExt};
+use serde::Serialize;
+use std::borrow::Cow;
 use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
 use std::time::Duration;
@@ -60,20 +61,60 @@ impl Drop for SessionGuard {
     }
 }
 
-/// What a stream shows: a bare seed or a stored world.
+/// An accepted edit, as broadcast to the streaming side (the server sends one after each edit
+/// commit).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EditEvent {
+    /// World id.
+    pub world: String,
+    /// The version the edit made.
+    pub version: u64,
+    /// What it changed.
+    pub dirty: Dirty,
+}
+
+/// Why a request of a stream failed: the code, message and field of the API's one error shape
+/// (the server's `AppError` converts into it), sent to the client as an `error` message.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StreamError {
+    /// Stable error code.
+    pub code: &'static str,
+    /// Human-readable explanation.
+    pub message: String,
+    /// The offending parameter or JSON pointer, if one is to blame.
+    pub field: Option<Cow<'static, str>>,
+}
+
+/// What a stream shows: a bare seed or a stored world. The server implements it for both.
 #[async_trait::async_trait]
 pub trait StreamSource: Send + Sync {
     /// The current version and its plan.
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), AppError>;
+    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError>;
     /// The plan of a version.
-    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, AppError>;
+    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, StreamError>;
     /// The world id whose edit events concern this stream, if any.
     fn world(&self) -> Option<&str>;
+    /// A new receiver of the edit events, for a stream of a stored world; `None` for a bare seed.
+    fn subscribe_edits(&self) -> Option<broadcast::Receiver<EditEvent>>;
     /// Applies an edit sent on the socket; returns the new version.
-    async fn edit(&self, patch: serde_json::Value, if_match: Option<u64>) -> Result<u64, AppError>;
+    async fn edit(
+        &self,
+        patch: serde_json::Value,
+        if_match: Option<u64>,
+    ) -> Result<u64, StreamError>;
+    /// The encoded tile `key` with `seams` of `version` (whose plan is `plan`) in `format`: a
+    /// tile frame's payload.
+    async fn tile(
+        &self,
+        version: u64,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+        format: Format,
+    ) -> Result<Vec<u8>, StreamError>;
 }
 
-fn error_message(e: &AppError, id: Option<String>) -> ServerMessage {
+fn error_message(e: &StreamError, id: Option<String>) -> ServerMessage {
     ServerMessage::Error {
         code: e.code.to_string(),
         message: e.message.clone(),
@@ -82,8 +123,12 @@ fn error_message(e: &AppError, id: Option<String>) -> ServerMessage {
     }
 }
 
-fn refused(code: &'static str, field: &'static str, message: impl Into<String>) -> AppError {
-    AppError::bad_request(code, field, message)
+fn refused(code: &'static str, field: &'static str, message: impl Into<String>) -> StreamError {
+    StreamError {
+        code,
+        message: message.into(),
+        field: Some(field.into()),
+    }
 }
 
 fn text(msg: &ServerMessage) -> Message {
@@ -91,7 +136,7 @@ fn text(msg: &ServerMessage) -> Message {
 }
 
 /// Runs a session until the client leaves or is dropped.
-pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSource>) {
+pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
     STATS
         .sessions
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -123,7 +168,7 @@ pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSourc
         }
         let _ = sink.close().await;
     });
-    let mut edits = source.world().map(|_| state.subscribe_edits());
+    let mut edits = source.subscribe_edits();
     let (mut version, mut plan) = match source.current().await {
         Ok(v) => v,
         Err(e) => {
@@ -250,16 +295,7 @@ pub async fn run(socket: WebSocket, state: AppState, source: Arc<dyn StreamSourc
             permit = tx.reserve(), if !pending.is_empty() => {
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
-                let (p, s) = (plan.clone(), state.clone());
-                let world = source.world().map(|id| (id.to_owned(), version));
-                let job = async move {
-                    let world = world.as_ref().map(|(id, v)| (id.as_str(), *v));
-                    let inputs = s.inputs_for(world, &p).await?;
-                    // Through the body cache: clients streaming the same area share encodings.
-                    let product = s.tile_product(&inputs, p, t.key, t.seams, format).await?;
-                    Ok::<_, AppError>(product.body.to_vec())
-                };
-                match job.await {
+                match source.tile(version, plan.clone(), t.key, t.seams, format).await {
                     Ok(payload) => {
                         permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
                         held.insert(t.key, version);
@@ -292,7 +328,7 @@ fn view_of(
     rings: &[u32],
     format: Option<&str>,
     cell_m: f64,
-) -> Result<(Vec<ViewTile>, Format), AppError> {
+) -> Result<(Vec<ViewTile>, Format), StreamError> {
     let limit = crate::terrain::plan::WORLD_LIMIT_CELLS * cell_m;
     for (name, v) in [("x", x), ("z", z)] {
         if !v.is_finite() || v.abs() > limit {

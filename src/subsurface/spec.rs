@@ -13,7 +13,7 @@
 //! inside the element's `bbox` (so no cave is cut by a bbox edge).
 
 use super::config::SubsurfaceConfig;
-use crate::scene::Element;
+use crate::element::Element;
 use serde::Deserialize;
 
 /// Smallest voxel side, metres.
@@ -85,8 +85,12 @@ impl StrataSpec {
     /// [`StrataError`] naming the offending field.
     pub fn from_element(e: &Element) -> Result<StrataSpec, StrataError> {
         let value = serde_json::Value::Object(e.rest.clone());
-        let f: Fields = serde_path_to_error::deserialize(&value)
-            .map_err(|x| err(crate::scene::path_pointer(x.path()), x.inner().to_string()))?;
+        let f: Fields = serde_path_to_error::deserialize(&value).map_err(|x| {
+            err(
+                crate::element::path_pointer(x.path()),
+                x.inner().to_string(),
+            )
+        })?;
         let config = match (f.preset, f.config) {
             (Some(_), Some(_)) => {
                 return Err(err("/config", "give either preset or config, not both"));

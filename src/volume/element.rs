@@ -48,7 +48,8 @@
 //!
 //! The heightfield input is the world's LOD-0 ground under the box as tiles have it: the
 //! procedural heights plus the edits of the authored regions and the cave breaches of the
-//! `strata` elements meeting [`ground_rect`] ([`crate::edits::TileEdits::apply`]), so a region
+//! `strata` elements meeting [`ground_rect`] ([`GroundEdits`], which `crate::edits::TileEdits`
+//! implements), so a region
 //! raised or a cave opened under the box shows inside it as outside. The server solves each
 //! region once per `(seed, digest of the element and of those edits' elements)`.
 //!
@@ -60,11 +61,17 @@
 use super::mesh_import::{glb_triangles, Mat4, MAX_GLB_BYTES};
 use super::pipeline::expand::ExpandParams;
 use super::pipeline::{self, Grid, Heightfield, InputMesh, PipelineParams, RegionFields};
-use crate::edits::TileEdits;
-use crate::scene::{Element, Rect};
+use crate::element::{Element, Rect};
 use crate::terrain::lattice::Window;
 use crate::terrain::WorldPlan;
 use serde::Deserialize;
+
+/// What the ground under a volume region takes on top of the procedural heights: the edits a
+/// height tile applies (`crate::edits::TileEdits`, which implements this trait one layer up).
+pub trait GroundEdits {
+    /// Applies the edits to the heights of a lattice `window` (row-major).
+    fn apply(&self, window: Window, heights: &mut [f32]);
+}
 
 /// Most samples of a volume region's grid.
 pub const MAX_VOLUME_SAMPLES: usize = 1 << 22;
@@ -281,8 +288,12 @@ impl VolumeSpec {
     /// [`VolumeError`] naming the offending field.
     pub fn from_element(e: &Element) -> Result<VolumeSpec, VolumeError> {
         let value = serde_json::Value::Object(e.rest.clone());
-        let f: Fields = serde_path_to_error::deserialize(&value)
-            .map_err(|x| err(crate::scene::path_pointer(x.path()), x.inner().to_string()))?;
+        let f: Fields = serde_path_to_error::deserialize(&value).map_err(|x| {
+            err(
+                crate::element::path_pointer(x.path()),
+                x.inner().to_string(),
+            )
+        })?;
         let (lo, hi) = SPACING_RANGE_M;
         if !(f.spacing_m.is_finite() && (lo..=hi).contains(&f.spacing_m)) {
             return Err(err("/spacing_m", format!("must be in [{lo}, {hi}] metres")));
@@ -404,7 +415,7 @@ pub struct SolvedVolume {
 pub fn solve_volume(
     plan: &WorldPlan,
     spec: &VolumeSpec,
-    edits: &TileEdits,
+    edits: &dyn GroundEdits,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
     let window = ground_window(plan, spec);
     let mut field = crate::terrain::tile::field(

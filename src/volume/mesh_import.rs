@@ -33,7 +33,7 @@ pub const MAX_NODE_DEPTH: usize = 32;
 /// Most node visits in one scene traversal (a node reached twice counts twice).
 pub const MAX_NODE_VISITS: usize = 4096;
 
-use crate::encode::glb::{CHUNK_BIN, CHUNK_JSON, GLB_MAGIC};
+use crate::glb::{CHUNK_BIN, CHUNK_JSON, GLB_MAGIC};
 
 /// Why a glb is refused.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -518,8 +518,8 @@ pub fn triangles_to_glb(triangles: &[[[f32; 3]; 3]], matrix: Option<&Mat4>) -> V
     write_glb(&doc, &bin)
 }
 
-/// Frames a JSON document and a binary chunk as a glb ([`crate::encode::glb::container`]).
-pub use crate::encode::glb::container as write_glb;
+/// Frames a JSON document and a binary chunk as a glb ([`crate::glb::container`]).
+pub use crate::glb::container as write_glb;
 
 #[cfg(test)]
 mod tests {

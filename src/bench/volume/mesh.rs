@@ -9,7 +9,7 @@
 //! calls). The times are medians; the ratio is the median of the per-repetition ratios.
 
 use super::super::{emit, median};
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
 use fast_surface_nets::ndshape::RuntimeShape;
 use fast_surface_nets::SurfaceNetsBuffer;

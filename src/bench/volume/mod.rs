@@ -4,7 +4,7 @@
 pub mod mesh;
 pub mod pipeline;
 
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 
 /// Runs both parts of the volume benchmark; a failing part is reported and the other still runs.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {

@@ -17,7 +17,7 @@
 //! of its repetitions, so that both see the same machine conditions.
 
 use crate::bench::emit;
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::volume::pipeline::diffuse::{sweep, K_PERONA_MALIK};
 use crate::volume::pipeline::grid::{par_slabs, threads};
 use crate::volume::pipeline::{generate, scenes, RegionFields};

@@ -1,8 +1,11 @@
-//! The stream endpoints.
+//! The stream endpoints: `/v1/seeds/{seed}/stream` and `/v1/worlds/{id}/stream` run a
+//! [`crate::stream::session`] on a source backed by the server's state (plans, edits, the tile
+//! products through the stage and body caches).
 
-use super::session::{run, StreamSource};
-use crate::server::{AppError, AppState};
-use crate::terrain::WorldPlan;
+use super::{AppError, AppState};
+use crate::encode::Format;
+use crate::stream::session::{run, EditEvent, StreamError, StreamSource, MAX_MESSAGE_BYTES};
+use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::{Path, State, WebSocketUpgrade};
 use axum::response::Response;
 use std::sync::Arc;
@@ -12,6 +15,33 @@ pub fn router() -> axum::Router<AppState> {
     axum::Router::new()
         .route("/v1/seeds/{seed}/stream", axum::routing::get(seed_stream))
         .route("/v1/worlds/{id}/stream", axum::routing::get(world_stream))
+}
+
+impl From<AppError> for StreamError {
+    fn from(e: AppError) -> Self {
+        StreamError {
+            code: e.code,
+            message: e.message,
+            field: e.field,
+        }
+    }
+}
+
+/// The payload of a tile frame: tile `key` of `world` at a version (or of the bare seed when
+/// `None`), through the body cache, so clients streaming the same area share encodings.
+async fn tile_payload(
+    state: &AppState,
+    world: Option<(&str, u64)>,
+    plan: Arc<WorldPlan>,
+    key: TileKey,
+    seams: [bool; 4],
+    format: Format,
+) -> Result<Vec<u8>, StreamError> {
+    let inputs = state.inputs_for(world, &plan).await?;
+    let product = state
+        .tile_product(&inputs, plan, key, seams, format)
+        .await?;
+    Ok(product.body.to_vec())
 }
 
 /// A stored world: the latest version, its edit events, edits by callers with the edit role.
@@ -37,22 +67,42 @@ impl WorldSource {
 
 #[async_trait::async_trait]
 impl StreamSource for WorldSource {
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), AppError> {
+    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError> {
         let meta = self.meta().await?;
         let plan = self.state.worlds.plan(&meta, meta.version).await?;
         Ok((meta.version, plan))
     }
 
-    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, AppError> {
+    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, StreamError> {
         let meta = self.meta().await?;
-        self.state.worlds.plan(&meta, version).await
+        Ok(self.state.worlds.plan(&meta, version).await?)
     }
 
     fn world(&self) -> Option<&str> {
         Some(&self.id)
     }
 
-    async fn edit(&self, patch: serde_json::Value, if_match: Option<u64>) -> Result<u64, AppError> {
+    fn subscribe_edits(&self) -> Option<tokio::sync::broadcast::Receiver<EditEvent>> {
+        Some(self.state.subscribe_edits())
+    }
+
+    async fn tile(
+        &self,
+        version: u64,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+        format: Format,
+    ) -> Result<Vec<u8>, StreamError> {
+        let world = Some((self.id.as_str(), version));
+        tile_payload(&self.state, world, plan, key, seams, format).await
+    }
+
+    async fn edit(
+        &self,
+        patch: serde_json::Value,
+        if_match: Option<u64>,
+    ) -> Result<u64, StreamError> {
         let meta = self.meta().await?;
         self.caller.require(&meta, crate::store::Role::Edit)?;
         let patch: json_patch::Patch = serde_json::from_value(patch).map_err(|e| {
@@ -100,28 +150,25 @@ async fn world_stream(
     }
     let (_, caller) =
         crate::server::worlds::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
-    let source: Arc<dyn StreamSource> = Arc::new(WorldSource {
-        state: state.clone(),
-        id,
-        caller,
-    });
+    let source: Arc<dyn StreamSource> = Arc::new(WorldSource { state, id, caller });
     Ok(ws
-        .max_message_size(super::session::MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, state, source)))
+        .max_message_size(MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| run(socket, source)))
 }
 
 /// A bare seed: version 1 forever, no edits.
 struct SeedSource {
+    state: AppState,
     plan: Arc<WorldPlan>,
 }
 
 #[async_trait::async_trait]
 impl StreamSource for SeedSource {
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), AppError> {
+    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError> {
         Ok((1, self.plan.clone()))
     }
 
-    async fn plan_at(&self, _version: u64) -> Result<Arc<WorldPlan>, AppError> {
+    async fn plan_at(&self, _version: u64) -> Result<Arc<WorldPlan>, StreamError> {
         Ok(self.plan.clone())
     }
 
@@ -129,16 +176,32 @@ impl StreamSource for SeedSource {
         None
     }
 
+    fn subscribe_edits(&self) -> Option<tokio::sync::broadcast::Receiver<EditEvent>> {
+        None
+    }
+
+    async fn tile(
+        &self,
+        _version: u64,
+        plan: Arc<WorldPlan>,
+        key: TileKey,
+        seams: [bool; 4],
+        format: Format,
+    ) -> Result<Vec<u8>, StreamError> {
+        tile_payload(&self.state, None, plan, key, seams, format).await
+    }
+
     async fn edit(
         &self,
         _patch: serde_json::Value,
         _if_match: Option<u64>,
-    ) -> Result<u64, AppError> {
+    ) -> Result<u64, StreamError> {
         Err(AppError::new(
             axum::http::StatusCode::FORBIDDEN,
             "read_only",
             "a bare seed has no scene to edit; create a world (POST /v1/worlds) and stream it",
-        ))
+        )
+        .into())
     }
 }
 
@@ -155,8 +218,8 @@ async fn seed_stream(
         )
     })?;
     let plan = state.plan(seed).await?;
-    let source: Arc<dyn StreamSource> = Arc::new(SeedSource { plan });
+    let source: Arc<dyn StreamSource> = Arc::new(SeedSource { state, plan });
     Ok(ws
-        .max_message_size(super::session::MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, state, source)))
+        .max_message_size(MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| run(socket, source)))
 }

@@ -1,0 +1,14 @@
+//! `strata bench` options.
+
+/// `strata bench` options.
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson` or `volume`.
+    pub name: String,
+    /// Print one JSON object per line instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Tiles to synthesise per core.
+    #[arg(long, default_value_t = 200)]
+    pub tiles: usize,
+}
