@@ -13,9 +13,9 @@
 //! c     = Σ_k g_c^k · n_k(p + w) + bias + origin(p)        continent value, coast at c = 0
 //! m     = Σ_k ½^k · n_k(p + w)                             belt noise; belts where |m| is small
 //! belt  = (1 − smoothstep(0, width, √(m² + ε))) · land(c)
-//! hills = smoothstep(−0.2, 0.8, Σ_k ½^k · n_k(p))
+//! hills = smoothstep(−0.5, 0.5, Σ_k ½^k · n_k(p))
 //! A     = land·(A_m·belt + A_h·hills·(1 − belt) + A_p) + (1 − land)·A_s     relief amplitude
-//! h     = e(c) + Σ_layers A · a_i · layer_i(p, G)
+//! h     = e(c) + 0.45·A_m·belt·land + Σ_layers A · a_i · layer_i(p, G)
 //! ```
 //!
 //! `e(c)` places plains, shelf, slope and abyss; `G` is the gradient of the layers summed so far.
@@ -167,28 +167,55 @@ pub(super) fn macro_fields(m: &MacroPlan, xs: &L, zs: &L, elev: &mut L, amp: &mu
         // The origin's land bias: a rational bump, 1 at the origin, ¼ at two radii.
         let r2 = (xs[l] * xs[l] + zs[l] * zs[l]) * m.inv_origin_r2;
         let cv = c[l] + m.land_bias + m.origin_land / (1.0 + r2);
-        let land = smoothstep(-0.06, 0.02, cv);
-        let belt_abs = (b[l] * b[l] + 1e-4).sqrt();
-        let belt = (1.0 - smoothstep(0.0, m.belt_width, belt_abs)) * smoothstep(-0.1, 0.15, cv);
-        let hills = smoothstep(-0.2, 0.8, hl[l]);
+        let land = smoothstep(LAND_EDGE.0, LAND_EDGE.1, cv);
+        let belt_abs = (b[l] * b[l] + BELT_EPS2).sqrt();
+        let belt = (1.0 - smoothstep(0.0, m.belt_width, belt_abs))
+            * smoothstep(BELT_LAND.0, BELT_LAND.1, cv);
+        let hills = smoothstep(HILLS_EDGE.0, HILLS_EDGE.1, hl[l]);
         amp[l] = land
             * (m.mountain_relief_m * belt
                 + m.hill_relief_m * hills * (1.0 - belt)
                 + m.plain_relief_m)
             + (1.0 - land) * m.seafloor_relief_m;
-        ridge[l] = smoothstep(0.05, 0.5, belt).max(0.35 * hills);
-        elev[l] = m.interior_height_m * smoothstep(0.0, 0.9, cv) + 40.0
-            - 240.0 * smoothstep(0.0, -0.05, cv)
-            - (m.ocean_depth_m - 200.0) * smoothstep(-0.05, -0.3, cv);
+        ridge[l] = smoothstep(RIDGE_EDGE.0, RIDGE_EDGE.1, belt).max(HILL_RIDGE * hills);
+        elev[l] = m.interior_height_m * smoothstep(0.0, INTERIOR_C, cv) + COAST_M
+            - (COAST_M - SHELF_M) * smoothstep(0.0, SHELF_C, cv)
+            - (m.ocean_depth_m + SHELF_M) * smoothstep(SHELF_C, ABYSS_C, cv)
+            + UPLIFT * m.mountain_relief_m * belt * land;
     }
 }
 
+/// Continent values over which land fades in (the relief amplitude's land mask).
+pub const LAND_EDGE: (f32, f32) = (-0.06, 0.02);
+/// `ε²` of the smooth `|m|` of the belt noise.
+pub const BELT_EPS2: f32 = 1e-4;
+/// Continent values over which belts fade in (few mountains out at sea).
+pub const BELT_LAND: (f32, f32) = (-0.1, 0.15);
+/// Hill-noise values over which hill country fades in.
+pub const HILLS_EDGE: (f32, f32) = (-0.5, 0.5);
+/// Belt mask values over which ridged octaves take over.
+pub const RIDGE_EDGE: (f32, f32) = (0.05, 0.5);
+/// Ridge mix of hill country.
+pub const HILL_RIDGE: f32 = 0.35;
+/// Plains at the coast, metres above sea level.
+pub const COAST_M: f32 = 60.0;
+/// Continent value where the plains reach the interior height.
+pub const INTERIOR_C: f32 = 0.9;
+/// The shelf edge: depth (metres below sea level, negative) and continent value.
+pub const SHELF_M: f32 = -200.0;
+/// Continent value of the shelf edge.
+pub const SHELF_C: f32 = -0.05;
+/// Continent value where the abyss begins.
+pub const ABYSS_C: f32 = -0.3;
+/// Uplift of mountain belts, in units of their relief: valleys stay above the plains.
+pub const UPLIFT: f32 = 0.45;
+
 /// Damping of the finer layers by the slope so far: `1 / (1 + k_d |G|²)`.
-const DAMPING: f32 = 1.5;
+pub const DAMPING: f32 = 2.0;
 /// `ε²` of the smooth absolute value of ridged octaves.
-const RIDGE_EPS2: f32 = 0.12 * 0.12;
+pub const RIDGE_EPS2: f32 = 0.12 * 0.12;
 /// Slope (rise over run) at which gullies reach their full depth; below it they fade in.
-const GULLY_SLOPE: f32 = 0.35;
+pub const GULLY_SLOPE: f32 = 0.35;
 
 /// One erosion-filter octave: returns the stripe value in `[−1, 1]` and its gradient (per metre)
 /// for stripes whose crests run along `(gx, gz)`.
