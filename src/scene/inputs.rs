@@ -18,8 +18,8 @@
 //! and keeps a version's [`SceneInputs`] small.
 //!
 //! **The margin.** An element is part of a tile's inputs when its `bbox` meets the tile's
-//! footprint grown on every side by [`margin_m`] = the biome blur radius + 2 vertex spacings of
-//! the tile's LOD. That bounds how far from its footprint a tile reads the world: the 67×67 field
+//! footprint grown on every side by [`margin_m`] = 2 vertex spacings of the tile's LOD, plus the
+//! biome blur radius with the classic generator. That bounds how far from its footprint a tile reads the world: the 67×67 field
 //! reaches one vertex spacing beyond the footprint plus the blur kernel's half-width
 //! (`round(radius / spacing)` spacings, at most radius + spacing / 2); the seam strips lie on the
 //! tile's edges at the next coarser LOD and reach the kernel's half-width there (at most
@@ -34,7 +34,7 @@
 use super::{Element, Rect, Scene};
 use crate::authoring::RegionSpec;
 use crate::subsurface::{Geology, StrataSpec};
-use crate::terrain::{TileKey, WorldParams};
+use crate::terrain::{Generator, TileKey, WorldParams};
 use crate::volume::element::VolumeSpec;
 use serde_json::Value;
 use std::sync::Arc;
@@ -64,10 +64,16 @@ fn spacing_m(world: &WorldParams, lod: u32) -> f64 {
     world.cell_m as f64 * (1u64 << lod.min(62)) as f64
 }
 
-/// How far beyond its footprint a tile at `lod` reads the world, metres: the biome blur radius
-/// plus two vertex spacings of that LOD.
+/// How far beyond its footprint a tile at `lod` reads the world, metres: two vertex spacings of
+/// that LOD, plus the biome blur radius with the classic generator (whose blur reads the biome
+/// map of the tile's own lattice). The `earth-1` blur reads only the procedural climate lattice,
+/// which no scene element changes, so it adds nothing.
 pub fn margin_m(world: &WorldParams, lod: u32) -> f64 {
-    world.layout.blur_radius_m as f64 + 2.0 * spacing_m(world, lod)
+    let blur = match world.generator {
+        Generator::Classic => world.layout.blur_radius_m as f64,
+        Generator::Earth1 => 0.0,
+    };
+    blur + 2.0 * spacing_m(world, lod)
 }
 
 /// The closed world-space square a tile covers: `[x·64·δ, (x+1)·64·δ] × [z·64·δ, (z+1)·64·δ]`
@@ -426,8 +432,16 @@ mod tests {
     }
 
     #[test]
-    fn reach_is_footprint_plus_blur_radius_and_two_spacings() {
+    fn earth_reach_is_footprint_plus_two_spacings() {
         let w = WorldParams::default();
+        assert_eq!(w.generator, Generator::Earth1);
+        assert_eq!(margin_m(&w, 0), 2.0 * w.cell_m as f64);
+        assert_eq!(margin_m(&w, 5), 64.0 * w.cell_m as f64);
+    }
+
+    #[test]
+    fn reach_is_footprint_plus_blur_radius_and_two_spacings() {
+        let w = WorldParams::classic();
         let f = tile_footprint(&w, KEY);
         let size = 64.0 * w.cell_m as f64;
         assert_eq!(f.min, [size, size]);
@@ -470,10 +484,15 @@ mod tests {
         }
         // Every kind of world setting.
         type Edit = fn(&mut WorldParams);
-        let edits: [(&str, Edit); 5] = [
+        let edits: [(&str, Edit); 6] = [
             ("sea level", |w| w.sea_level_m += 1.0),
             ("blur radius", |w| w.layout.blur_radius_m += 1.0),
-            ("hurst", |w| w.biomes[0].generator.hurst *= 0.9),
+            ("generator", |w| w.generator = Generator::Classic),
+            ("erosion", |w| {
+                if let Some(e) = w.earth.as_mut() {
+                    e.erosion *= 0.9
+                }
+            }),
             ("biome name", |w| w.biomes[1].name.push('x')),
             ("texturing", |w| w.texturing.rock_slope_deg += 1.0),
         ];

@@ -198,7 +198,7 @@ pub const RIDGE_EDGE: (f32, f32) = (0.05, 0.5);
 /// Ridge mix of hill country.
 pub const HILL_RIDGE: f32 = 0.35;
 /// Plains at the coast, metres above sea level.
-pub const COAST_M: f32 = 60.0;
+pub const COAST_M: f32 = 80.0;
 /// Continent value where the plains reach the interior height.
 pub const INTERIOR_C: f32 = 0.9;
 /// The shelf edge: depth (metres below sea level, negative) and continent value.
@@ -214,7 +214,8 @@ pub const UPLIFT: f32 = 0.45;
 pub const DAMPING: f32 = 2.0;
 /// `ε²` of the smooth absolute value of ridged octaves.
 pub const RIDGE_EPS2: f32 = 0.12 * 0.12;
-/// Slope (rise over run) at which gullies reach their full depth; below it they fade in.
+/// Slope (rise over run) at which gullies reach their full depth where the relief is the
+/// largest (proportionally less where it is smaller); below it they fade in.
 pub const GULLY_SLOPE: f32 = 0.35;
 
 /// One erosion-filter octave: returns the stripe value in `[−1, 1]` and its gradient (per metre)
@@ -330,8 +331,10 @@ pub(super) fn heights(
             LayerKind::Gully => {
                 gullies(o, xs, zs, &gx, &gz, &mut n, &mut dx, &mut dz);
                 for l in 0..LANES {
+                    // The slope relative to the local relief: plains get valleys on their
+                    // gentle slopes as mountains do on their steep ones.
                     let slope = (gx[l] * gx[l] + gz[l] * gz[l]).sqrt();
-                    let fadein = smoothstep(0.0, GULLY_SLOPE, slope);
+                    let fadein = smoothstep(0.0, GULLY_SLOPE * amp[l] * plan.inv_relief_max, slope);
                     let a = amp[l] * layer.amp * erosion[l] * fadein;
                     h[l] += a * n[l];
                     gx[l] += a * dx[l];

@@ -19,10 +19,12 @@
 //!   the relief octaves of similar amplitude;
 //! - **climate** ([`climate`]): biome weights on a 2 km world lattice, colder with altitude.
 //!
-//! **LOD rule (§4.1, generalised).** Every layer has a reference amplitude `a_i · A_max`. At a
-//! vertex spacing `δ` it gets the weight `w_i = clamp(ln(a_i A_max / δ) / ln(1/q), 0, 1)`, where
-//! `q` is its series' amplitude ratio (the paper's `λ − k`), then `w_i = min(w_i, w_{i−1})` so the
-//! kept layers are a prefix of the evaluation order. The macro fields (continents, belts, hills,
+//! **LOD rule (§4.1, generalised).** Every layer has a reference amplitude `a_i · A_max` and a
+//! wavelength `L_i`. At a vertex spacing `δ` it gets the weight
+//! `w_i = clamp(min(ln(8 a_i A_max / δ) / ln(1/q), log₂(L_i / 2δ)), 0, 1)`, where `q` is its
+//! series' amplitude ratio (the paper's `λ − k`, with amplitudes counted down to an eighth of the
+//! spacing, and no wave shorter than two spacings), then `w_i = min(w_i, w_{i−1})` so the kept
+//! layers are a prefix of the evaluation order. The macro fields (continents, belts, hills,
 //! warp) and the climate are evaluated in full at every LOD. Hence a vertex's height at LOD `k`
 //! differs from LOD 0 only through the layers LOD `k` drops or weights less, and by at most
 //! [`EarthLod::bound_m`] = `Σ_i (w_i⁰ − w_i^k) · a_i · A_max · S_i`, with `S_i` the layer's largest
@@ -53,6 +55,11 @@ pub const MAX_GULLY_OCTAVES: usize = 8;
 
 /// Depth of a gully layer relative to the relief amplitude, at the coarsest gully octave.
 const GULLY_DEPTH: f32 = 0.12;
+/// A layer is kept in full while its amplitude is at least `1 / LOD_AMPLITUDE` of the vertex
+/// spacing (§4.1 keeps octaves down to the spacing itself; low, long waves such as gullies stay
+/// visible well below it).
+const LOD_AMPLITUDE: f64 = 8.0;
+
 /// Relief octaves mixed towards ridged in mountain belts.
 pub const RIDGED_OCTAVES: usize = 3;
 /// Sum of the relief octaves' reference amplitudes is about `RELIEF_NORM / (1 − gain)`.
@@ -164,6 +171,8 @@ pub struct EarthPlan {
     pub erosion: Vec<f32>,
     /// Roughness of each biome.
     pub roughness: Vec<f32>,
+    /// `1 / A_max`: the inverse of the largest relief amplitude, 1/metres.
+    pub inv_relief_max: f32,
 }
 
 fn octaves(
@@ -277,8 +286,10 @@ impl EarthPlan {
             let mut prev = 1.0f64;
             all.iter()
                 .map(|(l, ratio, _)| {
-                    let w = (libm::log(l.amp as f64 * a_max / spacing) / libm::log(*ratio))
-                        .clamp(0.0, 1.0);
+                    let by_amp = libm::log(LOD_AMPLITUDE * l.amp as f64 * a_max / spacing)
+                        / libm::log(*ratio);
+                    let by_len = libm::log2(1.0 / (l.octave.freq as f64 * 2.0 * spacing));
+                    let w = by_amp.min(by_len).clamp(0.0, 1.0);
                     prev = prev.min(w);
                     prev
                 })
@@ -319,6 +330,7 @@ impl EarthPlan {
             climate,
             erosion,
             roughness,
+            inv_relief_max: (1.0 / a_max) as f32,
         }
     }
 }
