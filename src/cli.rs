@@ -95,7 +95,7 @@ pub struct ServeArgs {
 /// `strata bench` options.
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
-    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson` or `volume`.
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume` or `realism`.
     pub name: String,
     /// Print one JSON object per line instead of a table.
     #[arg(long)]
