@@ -360,7 +360,7 @@ mod tests {
     fn parses_npy_v1_int16() {
         let header = "{'descr': '<i2', 'fortran_order': False, 'shape': (2, 3), }";
         let mut header = header.to_string();
-        while (10 + header.len() + 1) % 64 != 0 {
+        while !(10 + header.len() + 1).is_multiple_of(64) {
             header.push(' ');
         }
         header.push('\n');
