@@ -7,7 +7,7 @@
 //! percentile, the fraction of land in closed depressions deeper than 2 m after a priority-flood
 //! fill, peaks and pits per km², the power-spectrum slope, the hypsometric curve and integral,
 //! the gradient-direction anisotropy, the biome-border curvature ratio and the LOD-consistency
-//! ratio ([`sample::lod_consistency`], with 12 × 12 LOD-0 sample tiles per grid). Next to ours
+//! ratio ([`sample::lod_consistency`], LOD-0 tiles sampled to compare ≥ 2000 vertices a grid). Next to ours
 //! stand the real DEMs of [`dem`]: at 64 m the Jacksboro DEM at its native 92.5 m, at 512 m the
 //! same block-averaged to 512 m; at 8 m there is no real DEM here, and the output says so. The
 //! DEMs' own table lists them at their native spacing and at 512 m where they are large enough
@@ -18,8 +18,8 @@
 //! each world: the 32.8 km block (one LOD-9 tile) with the largest
 //! p5–p95 relief among the 64 of the origin's 512 m area, leaving out the four around the
 //! origin. Then, at every LOD 0–8, the biome-border curvature ratio pooled over 4 × 4 tiles at
-//! each area's centre, and the worst of the areas' LOD-consistency ratios there (6 × 6 LOD-0
-//! sample tiles each).
+//! each area's centre, and the worst of the areas' LOD-consistency ratios there (≥ 1000
+//! vertices each).
 //!
 //! The targets of the "done when" are printed next to the figures with ✓/✗; they are
 //! reported, not asserted: for mountain areas at 64–90 m spacing a median slope of 8–25° and a
@@ -77,10 +77,11 @@ pub const AREA_LODS: [u32; 3] = [3, 6, 9];
 const AREA_TILES: usize = 8;
 /// Tiles per side of the per-LOD border grids.
 const BORDER_TILES: usize = 4;
-/// LOD-0 sample tiles per side for an area's LOD-consistency check.
-const AREA_LOD_SAMPLES: usize = 12;
-/// LOD-0 sample tiles per side for the per-LOD check.
-const BORDER_LOD_SAMPLES: usize = 6;
+/// Vertices an area's LOD-consistency check compares (at least; LOD-0 tiles are sampled for
+/// them).
+const AREA_LOD_VERTICES: usize = 2000;
+/// Vertices each area's per-LOD check compares.
+const BORDER_LOD_VERTICES: usize = 1000;
 /// A DEM is block-averaged to 512 m when that leaves at least this many samples a side.
 const MIN_SIDE: usize = 32;
 
@@ -521,7 +522,7 @@ fn run_world(
             let spacing = g.spacing_m;
             let f = figures(g, sea);
             let border = border_curvature(g, &s.border);
-            let lodc = lod_consistency(&plan, &s, AREA_LOD_SAMPLES);
+            let lodc = lod_consistency(&plan, &s, AREA_LOD_VERTICES);
             if which == "default" {
                 write_png(
                     args,
@@ -645,7 +646,7 @@ fn run_world(
                 n,
             );
             pooled.add(&border_curvature(&s.grid, &s.border));
-            if let Some(c) = lod_consistency(&plan, &s, BORDER_LOD_SAMPLES) {
+            if let Some(c) = lod_consistency(&plan, &s, BORDER_LOD_VERTICES) {
                 if worst.is_none_or(|w| c.p99_ratio > w.p99_ratio || c.p99_ratio.is_nan()) {
                     worst = Some(c);
                 }

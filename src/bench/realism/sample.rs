@@ -8,7 +8,8 @@
 //!
 //! **LOD-consistency ratio** ([`lod_consistency`]): a vertex of LOD `k` at global lattice index
 //! `(I, J)` is the LOD-0 vertex `(I·2^k, J·2^k)`. For a grid at LOD `k ≥ 1`, LOD-0 tiles are
-//! synthesised at `n × n` evenly spread grid positions (not whole LOD-0 areas), every grid vertex
+//! synthesised at `n × n` evenly spread grid positions (not whole LOD-0 areas; `n` chosen for a
+//! wanted number of compared vertices), every grid vertex
 //! that falls on one of them is compared, and the figure is the 99th percentile (nearest rank) of
 //! `|h_k − h_0|` over those vertices divided by [`WorldPlan::lod_error_bound_m`]`(k)` (a
 //! dimensionless ratio; ≤ 1 means the bound holds for 99 % of vertices).
@@ -113,11 +114,18 @@ pub struct LodCheck {
     pub tiles: usize,
 }
 
-/// The LOD-consistency check of `s` with `n × n` LOD-0 sample tiles; `None` at LOD 0.
-pub fn lod_consistency(plan: &WorldPlan, s: &Sampled, n: usize) -> Option<LodCheck> {
+/// The LOD-consistency check of `s` with `n × n` LOD-0 sample tiles, `n` the smallest that
+/// compares about `min_vertices` vertices (a LOD-0 tile holds `(64 / 2^k)²` vertices of LOD
+/// `k`, at least one); `None` at LOD 0.
+pub fn lod_consistency(plan: &WorldPlan, s: &Sampled, min_vertices: usize) -> Option<LodCheck> {
     if s.lod == 0 {
         return None;
     }
+    let per_tile = (Q >> s.lod.min(6)).pow(2);
+    let n = (min_vertices as f64 / per_tile as f64)
+        .sqrt()
+        .ceil()
+        .clamp(2.0, s.grid.w.min(s.grid.h) as f64) as usize;
     let step = 1i64 << s.lod;
     let (gi0, gj0) = (s.tx0 * Q as i64, s.tz0 * Q as i64);
     let (w, h) = (s.grid.w as i64, s.grid.h as i64);
@@ -233,7 +241,7 @@ mod tests {
                 tx0: -1,
                 tz0: -1,
             };
-            let c = lod_consistency(&plan, &s, 4).expect("LOD 1");
+            let c = lod_consistency(&plan, &s, 16 * 32 * 32).expect("LOD 1");
             assert!(c.vertices > 100, "{c:?}");
             if offset == 0 {
                 assert_eq!(c.max_diff_m, 0.0, "{c:?}");
