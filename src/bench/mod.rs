@@ -6,11 +6,13 @@
 //! figure is one JSON object per line, units in the key names.
 //!
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
-//! subsurface) in [`strata`].
+//! subsurface) in [`strata`]; `strata bench realism` (issue 17, the world against real DEMs) in
+//! [`realism`].
 
 mod args;
 pub mod http;
 pub mod poisson;
+pub mod realism;
 pub mod serve;
 pub mod strata;
 pub mod volume;
@@ -41,8 +43,9 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "strata" => strata::run(args),
         "poisson" => poisson::run(args),
         "volume" => volume::run(args),
+        "realism" => realism::run(args),
         other => anyhow::bail!(
-            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume"
+            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism"
         ),
     }
 }

@@ -1,0 +1,108 @@
+//! Hillshade images of a [`Grid`].
+//!
+//! The standard (Horn 1981) hillshade: slope and aspect from Horn's 3×3 weighted differences,
+//! light from azimuth 315° (north-west) at 45° altitude, no vertical exaggeration,
+//! `255 · (cos z cos s + sin z sin s cos(a − aspect))` clamped to 0–255, edge cells repeating
+//! their neighbours. Land is grey; cells at or below the sea level are tinted blue (their shade
+//! times (0.35, 0.55, 0.9) plus a constant (10, 30, 70)). Written as an 8-bit RGB PNG with the
+//! `png` crate, one pixel per sample, row 0 north.
+
+use super::metrics::Grid;
+use anyhow::Context;
+use std::path::Path;
+
+/// Shade `0..=255` of each cell.
+pub fn shade(g: &Grid) -> Vec<u8> {
+    let (w, h) = (g.w as i64, g.h as i64);
+    let at =
+        |i: i64, j: i64| g.heights[(j.clamp(0, h - 1) * w + i.clamp(0, w - 1)) as usize] as f64;
+    let zenith = 45f64.to_radians();
+    // Azimuth 315° (compass, clockwise from north) in the mathematical convention.
+    let azimuth = (360.0f64 - 315.0 + 90.0).to_radians();
+    let mut out = Vec::with_capacity(g.heights.len());
+    for j in 0..h {
+        for i in 0..w {
+            let (a, b, c) = (at(i - 1, j - 1), at(i, j - 1), at(i + 1, j - 1));
+            let (d, f) = (at(i - 1, j), at(i + 1, j));
+            let (gg, hh, ii) = (at(i - 1, j + 1), at(i, j + 1), at(i + 1, j + 1));
+            // dz/dx east, dz/dy south (row order), as in the usual ESRI formulation.
+            let dzdx = ((c + 2.0 * f + ii) - (a + 2.0 * d + gg)) / (8.0 * g.spacing_m);
+            let dzdy = ((gg + 2.0 * hh + ii) - (a + 2.0 * b + c)) / (8.0 * g.spacing_m);
+            let slope = dzdx.hypot(dzdy).atan();
+            let aspect = if dzdx != 0.0 {
+                let mut asp = dzdy.atan2(-dzdx);
+                if asp < 0.0 {
+                    asp += std::f64::consts::TAU;
+                }
+                asp
+            } else if dzdy > 0.0 {
+                std::f64::consts::FRAC_PI_2
+            } else if dzdy < 0.0 {
+                std::f64::consts::TAU - std::f64::consts::FRAC_PI_2
+            } else {
+                0.0
+            };
+            let v = 255.0
+                * (zenith.cos() * slope.cos()
+                    + zenith.sin() * slope.sin() * (azimuth - aspect).cos());
+            out.push(v.clamp(0.0, 255.0) as u8);
+        }
+    }
+    out
+}
+
+/// RGB pixels: grey land, blue-tinted sea.
+pub fn rgb(g: &Grid, sea_level_m: f64) -> Vec<u8> {
+    let shades = shade(g);
+    let mut out = Vec::with_capacity(shades.len() * 3);
+    for (s, z) in shades.iter().zip(&g.heights) {
+        let s = *s as f64;
+        if (*z as f64) <= sea_level_m {
+            out.extend([
+                (10.0 + 0.35 * s) as u8,
+                (30.0 + 0.55 * s) as u8,
+                (70.0 + 0.7 * s).min(255.0) as u8,
+            ]);
+        } else {
+            out.extend([s as u8; 3]);
+        }
+    }
+    out
+}
+
+/// Writes the hillshade of `g` to `path` (creating its folder).
+pub fn write_png(path: &Path, g: &Grid, sea_level_m: f64) -> anyhow::Result<()> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let mut bytes = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut bytes, g.w as u32, g.h as u32);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.set_compression(png::Compression::High);
+        let mut writer = enc.write_header()?;
+        writer.write_image_data(&rgb(g, sea_level_m))?;
+        writer.finish()?;
+    }
+    std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flat_is_cos_45_and_slopes_facing_the_light_are_brighter() {
+        let flat = Grid::from_fn(8, 8, 10.0, |_, _| 5.0);
+        assert!(shade(&flat).iter().all(|s| *s == 180));
+        // Rising to the south-east (x east, z south) faces the north-west light; falling to the
+        // south-east faces away from it.
+        let toward = Grid::from_fn(8, 8, 10.0, |x, z| 0.5 * (x + z));
+        let away = Grid::from_fn(8, 8, 10.0, |x, z| -0.5 * (x + z));
+        assert!(shade(&away)[27] < 150, "{}", shade(&away)[27]);
+        assert!(shade(&toward)[27] > 220, "{}", shade(&toward)[27]);
+        let sea = rgb(&flat, 10.0);
+        assert!(sea[2] > sea[0]);
+    }
+}
