@@ -43,7 +43,7 @@ pub mod metrics;
 pub mod sample;
 
 use super::emit;
-use crate::cli::BenchArgs;
+use crate::bench::BenchArgs;
 use crate::terrain::{WorldParams, WorldPlan};
 use dem::Dem;
 use metrics::{
