@@ -5,8 +5,18 @@ use strata::terrain::scatter::scatter;
 use strata::terrain::tile::{snap_edges, Edge};
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan, TILE_VERTS};
 
+/// The classic world (the first wave's generator, which stored worlds keep).
 fn plan(seed: u64) -> WorldPlan {
-    WorldPlan::new(seed, WorldParams::default()).expect("default world is valid")
+    WorldPlan::new(seed, WorldParams::classic()).expect("classic world is valid")
+}
+
+/// Both generators' worlds: the default `earth-1` and the classic one. The seam, determinism and
+/// weight properties hold for each.
+fn plans(seed: u64) -> [WorldPlan; 2] {
+    [
+        WorldPlan::new(seed, WorldParams::default()).expect("default world is valid"),
+        plan(seed),
+    ]
 }
 
 fn edge_values(t: &Tile, e: Edge) -> Vec<(u32, [u32; 3], Vec<u32>, u8)> {
@@ -29,8 +39,14 @@ fn edge_values(t: &Tile, e: Edge) -> Vec<(u32, [u32; 3], Vec<u32>, u8)> {
 
 #[test]
 fn same_lod_neighbours_share_edges_bit_for_bit() {
-    let p = plan(1234);
-    for lod in 0..=4u32 {
+    for p in plans(1234) {
+        same_lod_edges(&p);
+    }
+}
+
+fn same_lod_edges(p: &WorldPlan) {
+    let p = p.clone();
+    for lod in [0u32, 1, 2, 3, 4, 7, 10] {
         for (x, z) in [(-1i64, -1i64), (0, 0), (-3, 2), (5, -7)] {
             let a = synthesize(&p, TileKey { lod, x, z });
             let east = synthesize(&p, TileKey { lod, x: x + 1, z });
@@ -51,22 +67,28 @@ fn same_lod_neighbours_share_edges_bit_for_bit() {
 
 #[test]
 fn edges_match_where_biomes_blend() {
-    // Find a tile whose vertices blend biomes, then check all four of its neighbours.
-    let p = plan(77);
+    // Classic biome cells are 512 m (LOD 0 finds a border), earth-1 cells 32 km (LOD 6 does).
+    let [earth, classic] = plans(77);
+    edges_match_where_blended(&classic, 0);
+    edges_match_where_blended(&earth, 6);
+}
+
+/// Finds a tile whose vertices blend biomes, then checks two of its neighbours.
+fn edges_match_where_blended(p: &WorldPlan, lod: u32) {
     let blended = (0..400)
         .map(|i| TileKey {
-            lod: 0,
+            lod,
             x: i % 20 - 10,
             z: i / 20 - 10,
         })
         .find(|k| {
-            synthesize(&p, *k)
+            synthesize(p, *k)
                 .weights
                 .iter()
                 .any(|w| *w > 0.05 && *w < 0.95)
         })
         .expect("a tile on a biome border within 20×20 tiles");
-    let t = synthesize(&p, blended);
+    let t = synthesize(p, blended);
     let e = synthesize(
         &p,
         TileKey {
@@ -87,12 +109,17 @@ fn edges_match_where_biomes_blend() {
 
 #[test]
 fn seams_snap_to_the_coarser_neighbour_watertight() {
-    let p = plan(99);
-    for lod in 0..=3u32 {
+    for p in plans(99) {
+        seams_snap(&p);
+    }
+}
+
+fn seams_snap(p: &WorldPlan) {
+    for lod in [0u32, 1, 2, 3, 8] {
         for (x, z) in [(-1i64, -2i64), (1, 3), (-4, -4)] {
             let key = TileKey { lod, x, z };
-            let mut t = synthesize(&p, key);
-            snap_edges(&p, &mut t, [true; 4]);
+            let mut t = synthesize(p, key);
+            snap_edges(p, &mut t, [true; 4]);
             // The coarser tile containing each edge's world positions.
             for edge in Edge::ALL {
                 for s in 0..TILE_VERTS {
@@ -103,7 +130,7 @@ fn seams_snap_to_the_coarser_neighbour_watertight() {
                         assert!(gx % 2 == 0 && gz % 2 == 0);
                         let (cx, cz) = ((gx / 2).div_euclid(64), (gz / 2).div_euclid(64));
                         let c = synthesize(
-                            &p,
+                            p,
                             TileKey {
                                 lod: lod + 1,
                                 x: cx,
@@ -162,10 +189,15 @@ fn tiles_are_identical_across_thread_counts() {
 
 #[test]
 fn weights_are_in_unit_range_and_sum_to_one() {
-    let p = plan(31);
+    for p in plans(31) {
+        weights_sum_to_one(&p);
+    }
+}
+
+fn weights_sum_to_one(p: &WorldPlan) {
     for i in 0..40 {
         let t = synthesize(
-            &p,
+            p,
             TileKey {
                 lod: (i % 5) as u32,
                 x: i * 3 - 60,
@@ -173,7 +205,8 @@ fn weights_are_in_unit_range_and_sum_to_one() {
             },
         );
         for v in 0..t.heights.len() {
-            let w = &t.weights[v * 4..v * 4 + 4];
+            let k = t.biome_count;
+            let w = &t.weights[v * k..(v + 1) * k];
             assert!(w.iter().all(|x| (0.0..=1.0).contains(x)), "{w:?}");
             // 1e-5: the weights are divided by their f32 sum, which leaves a rounding error of a
             // few ulp per channel.
@@ -186,7 +219,7 @@ fn weights_are_in_unit_range_and_sum_to_one() {
 #[test]
 fn latitude_puts_arctic_toward_the_pole_and_desert_toward_the_equator() {
     let p = plan(8);
-    let params = WorldParams::default();
+    let params = WorldParams::classic();
     let cell = params.layout.cell_size_m as f64;
     let speed = params.layout.latitude_speed_cells as f64;
     // Mean arctic (0) and desert (3) weights over a row of LOD-4 tiles at a given world z.
@@ -220,7 +253,8 @@ fn latitude_puts_arctic_toward_the_pole_and_desert_toward_the_equator() {
 #[test]
 fn coarser_lods_sum_fewer_octaves() {
     let p = plan(3);
-    let g = &WorldParams::default().biomes[2].generator;
+    let classic = WorldParams::classic();
+    let g = classic.biomes[2].generator.as_ref().expect("a classic biome generator");
     // Effective octave count: each octave's amplitude over its full `r^{-kH}` (1 for a whole
     // octave, the fraction for the blended last one).
     let counts: Vec<f32> = (0..=6)

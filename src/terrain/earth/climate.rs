@@ -111,7 +111,8 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
             for bi in 0..k {
                 let top = nodes[a + bi] + (nodes[b + bi] - nodes[a + bi]) * tx;
                 let bottom = nodes[c + bi] + (nodes[d + bi] - nodes[c + bi]) * tx;
-                out[v + bi] = top + (bottom - top) * tz;
+                // Clamped: a lerp of values in [0, 1] can round a last bit above 1.
+                out[v + bi] = (top + (bottom - top) * tz).clamp(0.0, 1.0);
             }
         }
     }

@@ -211,7 +211,7 @@ pub const ABYSS_C: f32 = -0.3;
 pub const UPLIFT: f32 = 0.45;
 
 /// Damping of the finer layers by the slope so far: `1 / (1 + k_d |G|²)`.
-pub const DAMPING: f32 = 2.0;
+pub const DAMPING: f32 = 5.0;
 /// `ε²` of the smooth absolute value of ridged octaves.
 pub const RIDGE_EPS2: f32 = 0.12 * 0.12;
 /// Slope (rise over run) at which gullies reach their full depth where the relief is the
@@ -344,6 +344,15 @@ pub(super) fn heights(
         }
     }
     for l in 0..LANES {
-        out[l] = elev[l] + h[l];
+        // Valley floors: below the base level the relief is compressed towards a floor at
+        // `−VALLEY_FLOOR · A` (`f(r) = r / (1 − r / s)`, C¹ and 1-Lipschitz), as sediment fills
+        // basins; closed hollows keep at most a fraction of their depth.
+        let s = VALLEY_FLOOR * amp[l] + 1e-3;
+        let r = h[l];
+        let floor = r / (1.0 - r / s);
+        out[l] = elev[l] + if r < 0.0 { floor } else { r };
     }
 }
+
+/// Depth of the valley floors below the base level, in units of the local relief.
+pub const VALLEY_FLOOR: f32 = 0.04;

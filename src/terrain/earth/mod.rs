@@ -54,7 +54,7 @@ pub const MAX_RELIEF_OCTAVES: usize = 20;
 pub const MAX_GULLY_OCTAVES: usize = 8;
 
 /// Depth of a gully layer relative to the relief amplitude, at the coarsest gully octave.
-const GULLY_DEPTH: f32 = 0.12;
+const GULLY_DEPTH: f32 = 0.09;
 /// A layer is kept in full while its amplitude is at least `1 / LOD_AMPLITUDE` of the vertex
 /// spacing (§4.1 keeps octaves down to the spacing itself; low, long waves such as gullies stay
 /// visible well below it).
