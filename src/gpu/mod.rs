@@ -118,7 +118,7 @@ mod tests {
 
     #[test]
     fn params_cover_the_blur_margin_and_the_blocks() {
-        let plan = crate::terrain::WorldPlan::new(3, crate::terrain::WorldParams::default())
+        let plan = crate::terrain::WorldPlan::new(3, crate::terrain::WorldParams::classic())
             .expect("plan");
         let p = field_params(&plan, FieldJob::new(0, -65, 63, 67, 67)).expect("params");
         let r = (plan.lods[0].kernel.len() / 2) as i32;
