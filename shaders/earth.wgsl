@@ -52,8 +52,9 @@ struct EarthParams {
     seafloor_relief_m: f32,
     interior_height_m: f32,
     ocean_depth_m: f32,
-    _pad0: u32,
-    _pad1: u32,
+    // `earth::EarthPlan::inv_relief_max`.
+    inv_relief_max: f32,
+    _pad: u32,
 }
 
 // `earth::NoiseOctave`.
@@ -345,7 +346,9 @@ fn earth_heights(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
         } else {
             let nd = gullies(o, x, z, vec2<f32>(gx, gz));
             let slope = sqrt0(rn(gx * gx) + rn(gz * gz));
-            let fadein = smoothstep_rn(0.0, GULLY_SLOPE, slope);
+            // The slope relative to the local relief.
+            let full = rn(rn(GULLY_SLOPE * amp) * params.inv_relief_max);
+            let fadein = smoothstep_rn(0.0, full, slope);
             let a = rn(rn(rn(amp * layer.amp) * erosion) * fadein);
             h += rn(a * nd.x);
             gx += rn(a * nd.y);

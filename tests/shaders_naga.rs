@@ -297,7 +297,8 @@ fn earth_structs_match_the_wgsl_layout() {
             plain_relief_m,
             seafloor_relief_m,
             interior_height_m,
-            ocean_depth_m
+            ocean_depth_m,
+            inv_relief_max
         ]
     );
 }

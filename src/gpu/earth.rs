@@ -159,8 +159,8 @@ pub fn earth_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuEarthP
         seafloor_relief_m: m.seafloor_relief_m,
         interior_height_m: m.interior_height_m,
         ocean_depth_m: m.ocean_depth_m,
-        _pad0: 0,
-        _pad1: 0,
+        inv_relief_max: earth.inv_relief_max,
+        _pad: 0,
     })
 }
 

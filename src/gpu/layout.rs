@@ -290,8 +290,8 @@ pub struct GpuEarthParams {
     pub interior_height_m: f32,
     /// `MacroPlan::ocean_depth_m`.
     pub ocean_depth_m: f32,
+    /// `EarthPlan::inv_relief_max`.
+    pub inv_relief_max: f32,
     /// Padding to a multiple of 16 bytes.
-    pub _pad0: u32,
-    /// Padding.
-    pub _pad1: u32,
+    pub _pad: u32,
 }
