@@ -23,8 +23,10 @@ use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
 
 const SEED: u64 = 7;
 
+/// The classic world: the tile kernels are its twin (`earth-1`, the default, has its own:
+/// `tests/gpu_earth.rs`).
 fn plan() -> WorldPlan {
-    WorldPlan::new(SEED, WorldParams::default()).expect("default world")
+    WorldPlan::new(SEED, WorldParams::classic()).expect("classic world")
 }
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
@@ -552,7 +554,7 @@ fn probe_points() -> Vec<[f32; 2]> {
         .collect()
 }
 
-/// The default world, the same with the paper's literal rotation about the origin, and the same
+/// The classic world, the same with the paper's literal rotation about the origin, and the same
 /// without warping: the three branches of the fractal.
 fn world_variants() -> Vec<(&'static str, WorldPlan)> {
     let literal = WorldParams {
@@ -560,14 +562,16 @@ fn world_variants() -> Vec<(&'static str, WorldPlan)> {
             about_origin: true,
             ..Default::default()
         },
-        ..WorldParams::default()
+        ..WorldParams::classic()
     };
-    let mut unwarped = WorldParams::default();
+    let mut unwarped = WorldParams::classic();
     for b in &mut unwarped.biomes {
-        b.generator.warp = false;
+        if let Some(g) = &mut b.generator {
+            g.warp = false;
+        }
     }
     vec![
-        ("default", plan()),
+        ("classic", plan()),
         (
             "about_origin",
             WorldPlan::new(SEED, literal).expect("literal warp world"),

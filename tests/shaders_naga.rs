@@ -4,11 +4,17 @@
 //! A shader that builds on others names them on a `// requires: a.wgsl, b.wgsl` line; the test
 //! prepends those files (recursively) before validating, as the crate does at load time. New
 //! files are covered automatically because the test enumerates the directory.
+//!
+//! A shader whose constants the host generates names the generator on a `// preamble: path()`
+//! line (`earth.wgsl`: `strata::gpu::earth::constants_wgsl()`); the test validates the source the
+//! crate loads for it, and checks that naga reads every generated constant as the Rust `f32`.
 
 use std::collections::BTreeMap;
 use std::mem::{offset_of, size_of};
 use std::path::{Path, PathBuf};
-use strata::gpu::layout::{GpuBiomeMap, GpuFractal, GpuOctave, GpuParams};
+use strata::gpu::layout::{
+    GpuBiomeMap, GpuEarthLayer, GpuEarthOctave, GpuEarthParams, GpuFractal, GpuOctave, GpuParams,
+};
 
 fn shader_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders")
@@ -85,7 +91,21 @@ fn every_shader_parses_and_validates() {
         "no .wgsl files in {}",
         shader_dir().display()
     );
-    for name in files.keys() {
+    for (name, text) in &files {
+        if let Some(generator) = text
+            .lines()
+            .find_map(|l| l.trim().strip_prefix("// preamble:"))
+        {
+            let source = match (name.as_str(), generator.trim()) {
+                ("earth.wgsl", "strata::gpu::earth::constants_wgsl()") => {
+                    strata::gpu::earth_shader_source()
+                }
+                other => panic!("{name}: no host source known for preamble {other:?}"),
+            };
+            validate(&format!("{} + {name}", generator.trim()), &source);
+            println!("ok: {} + {name}", generator.trim());
+            continue;
+        }
         let mut order = Vec::new();
         compose(name, &files, &mut order, &mut Vec::new());
         let source = order
@@ -202,6 +222,83 @@ fn host_structs_match_the_wgsl_layout() {
             spacing,
             rounding_key,
             map
+        ]
+    );
+}
+
+#[test]
+fn the_earth_source_has_its_entry_point_and_the_rust_constants() {
+    let source = strata::gpu::earth_shader_source();
+    let module = validate("gpu::earth_shader_source()", &source);
+    assert!(
+        module
+            .entry_points
+            .iter()
+            .any(|e| e.name == "earth_heights"),
+        "entry point earth_heights missing"
+    );
+    for (name, value) in strata::gpu::earth::constants() {
+        let (_, c) = module
+            .constants
+            .iter()
+            .find(|(_, c)| c.name.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("constant {name} missing from the earth source"));
+        match module.global_expressions[c.init] {
+            naga::Expression::Literal(naga::Literal::F32(v)) => {
+                assert_eq!(
+                    v.to_bits(),
+                    value.to_bits(),
+                    "{name}: naga reads {v}, Rust has {value}"
+                )
+            }
+            ref e => panic!("{name} is not an f32 literal: {e:?}"),
+        }
+    }
+}
+
+#[test]
+fn earth_structs_match_the_wgsl_layout() {
+    let module = validate("earth", &strata::gpu::earth_shader_source());
+    check_layout!(
+        &module,
+        "EarthOctave",
+        GpuEarthOctave,
+        [freq, amp, seed, cos, sin, ox, oz]
+    );
+    check_layout!(
+        &module,
+        "EarthLayer",
+        GpuEarthLayer,
+        [kind, fine, ridged, amp, octave]
+    );
+    check_layout!(
+        &module,
+        "EarthParams",
+        GpuEarthParams,
+        [
+            gx0,
+            gz0,
+            w,
+            h,
+            spacing,
+            rounding_key,
+            layer_count,
+            warp_x_count,
+            warp_z_count,
+            continent_count,
+            belt_count,
+            hills_count,
+            land_bias,
+            origin_land,
+            inv_origin_r2,
+            belt_width,
+            mountain_relief_m,
+            hill_relief_m,
+            plain_relief_m,
+            seafloor_relief_m,
+            interior_height_m,
+            ocean_depth_m,
+            inv_relief_max
         ]
     );
 }

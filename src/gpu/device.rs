@@ -10,6 +10,7 @@
 //! From then on [`GpuHandle::field`] returns `Err` at once, and `crate::compute::Compute` computes
 //! on the CPU.
 
+use super::earth::EarthKernels;
 use super::tile::{TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
 use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
@@ -110,18 +111,19 @@ impl GpuHandle {
         self.timeout
     }
 
-    /// Computes a field on the device (see [`TileKernels::field`]).
+    /// Computes a field on the device: [`EarthKernels::field`] for an `earth-1` world,
+    /// [`TileKernels::field`] for a classic one.
     ///
     /// # Errors
     /// At once if the device is lost or the job is out of range (see
-    /// [`super::tile::field_params`]; this does not mark the device lost); otherwise if the job
-    /// fails on the device or takes longer than the job timeout once started, which marks the
-    /// device lost.
+    /// [`super::earth::earth_params`] and [`super::tile::field_params`]; this does not mark the
+    /// device lost); otherwise if the job fails on the device or takes longer than the job
+    /// timeout once started, which marks the device lost.
     pub async fn field(&self, plan: Arc<WorldPlan>, job: FieldJob) -> anyhow::Result<Field> {
         if self.is_lost() {
             bail!("GPU device lost");
         }
-        super::tile::field_params(&plan, job)?;
+        check_job(&plan, job)?;
         let (started_tx, mut started_rx) = oneshot::channel();
         let (reply_tx, reply_rx) = oneshot::channel();
         let job = Job::Field {
@@ -173,6 +175,16 @@ impl GpuHandle {
         if self.tx.try_send(Job::Destroy).is_err() {
             self.mark_lost();
         }
+    }
+}
+
+/// Whether the kernels of `plan`'s generator can run `job` ([`super::earth::earth_params`] or
+/// [`super::tile::field_params`]).
+fn check_job(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<()> {
+    if plan.earth.is_some() {
+        super::earth::earth_params(plan, job).map(|_| ())
+    } else {
+        super::tile::field_params(plan, job).map(|_| ())
     }
 }
 
@@ -335,12 +347,12 @@ fn device_thread(
     let opened = pollster::block_on(request_device(choice)).and_then(|opened| {
         opened
             .map(|(adapter, device, queue)| {
-                let kernels = TileKernels::new(&device)?;
+                let kernels = (TileKernels::new(&device)?, EarthKernels::new(&device)?);
                 Ok((adapter_info_of(&adapter.get_info()), device, queue, kernels))
             })
             .transpose()
     });
-    let (info, device, queue, kernels) = match opened {
+    let (info, device, queue, (kernels, earth_kernels)) = match opened {
         Ok(Some(opened)) => opened,
         Ok(None) => {
             let _ = ready.send(Ok(None));
@@ -388,7 +400,11 @@ fn device_thread(
                     continue;
                 }
                 let run = catch_unwind(AssertUnwindSafe(|| {
-                    kernels.field(&device, &queue, &plan, job, Some(timeout))
+                    if plan.earth.is_some() {
+                        earth_kernels.field(&device, &queue, &plan, job, Some(timeout))
+                    } else {
+                        kernels.field(&device, &queue, &plan, job, Some(timeout))
+                    }
                 }));
                 let result = match run {
                     Ok(result) => result,

@@ -1,4 +1,5 @@
-//! Host-side images of the WGSL structs of `shaders/common.wgsl` and `shaders/tile.wgsl`.
+//! Host-side images of the WGSL structs of `shaders/common.wgsl`, `shaders/tile.wgsl` and
+//! `shaders/earth.wgsl`.
 //!
 //! Each struct is `#[repr(C)]`, [`bytemuck::Pod`] and matches its WGSL struct field for field
 //! (offsets are checked against the offsets naga computes, by `tests/shaders_naga.rs`). Only 4-byte
@@ -8,6 +9,7 @@
 //! arithmetic in `f64`), never recomputed.
 
 use crate::terrain::biome::BiomeMapPlan;
+use crate::terrain::earth::{Layer, LayerKind, NoiseOctave};
 use crate::terrain::fractal::{FractalPlan, MAX_OCTAVES};
 use bytemuck::{Pod, Zeroable};
 
@@ -168,4 +170,128 @@ pub struct GpuParams {
     pub rounding_key: u32,
     /// Biome map constants.
     pub map: GpuBiomeMap,
+}
+
+/// WGSL `EarthOctave` of `earth.wgsl` (`terrain::earth::NoiseOctave`, padded to 32 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuEarthOctave {
+    /// Lattice cells per metre.
+    pub freq: f32,
+    /// Weight of the octave.
+    pub amp: f32,
+    /// Stream seed of the octave's lattice.
+    pub seed: u32,
+    /// Cosine of the octave's rotation.
+    pub cos: f32,
+    /// Sine of the octave's rotation.
+    pub sin: f32,
+    /// Lattice offset, cells.
+    pub ox: f32,
+    /// Lattice offset, cells.
+    pub oz: f32,
+    /// Padding to 32 bytes.
+    pub _pad: u32,
+}
+
+impl From<&NoiseOctave> for GpuEarthOctave {
+    fn from(o: &NoiseOctave) -> Self {
+        Self {
+            freq: o.freq,
+            amp: o.amp,
+            seed: o.seed,
+            cos: o.cos,
+            sin: o.sin,
+            ox: o.ox,
+            oz: o.oz,
+            _pad: 0,
+        }
+    }
+}
+
+/// WGSL `EarthLayer` of `earth.wgsl` (`terrain::earth::Layer`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuEarthLayer {
+    /// 0: relief, 1: gully.
+    pub kind: u32,
+    /// 1 if a relief layer is scaled by the roughness.
+    pub fine: u32,
+    /// 1 if a relief layer is mixed towards ridged by the ridge mix.
+    pub ridged: u32,
+    /// Amplitude relative to the local relief, times the LOD weight.
+    pub amp: f32,
+    /// The layer's noise (`amp` unused).
+    pub octave: GpuEarthOctave,
+}
+
+impl From<&Layer> for GpuEarthLayer {
+    fn from(l: &Layer) -> Self {
+        let (kind, fine, ridged) = match l.kind {
+            LayerKind::Relief { fine, ridged } => (0, fine as u32, ridged as u32),
+            LayerKind::Gully => (1, 0, 0),
+        };
+        Self {
+            kind,
+            fine,
+            ridged,
+            amp: l.amp,
+            octave: GpuEarthOctave::from(&l.octave),
+        }
+    }
+}
+
+/// WGSL `EarthParams` of `earth.wgsl` (a uniform buffer, 96 bytes): the rectangle, the counts
+/// of the macro octaves and layers, and the scalars of `terrain::earth::MacroPlan`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuEarthParams {
+    /// Output rectangle origin, lattice index.
+    pub gx0: i32,
+    /// Output rectangle origin, lattice index.
+    pub gz0: i32,
+    /// Output columns.
+    pub w: u32,
+    /// Output rows.
+    pub h: u32,
+    /// Vertex spacing, metres.
+    pub spacing: f32,
+    /// Always 0: the runtime zero of the rounding barrier `rn` in `common.wgsl`.
+    pub rounding_key: u32,
+    /// Layers of the LOD.
+    pub layer_count: u32,
+    /// Warp-x octaves (first in the octave buffer).
+    pub warp_x_count: u32,
+    /// Warp-z octaves.
+    pub warp_z_count: u32,
+    /// Continent octaves.
+    pub continent_count: u32,
+    /// Belt octaves.
+    pub belt_count: u32,
+    /// Hill-country octaves.
+    pub hills_count: u32,
+    /// `MacroPlan::land_bias`.
+    pub land_bias: f32,
+    /// `MacroPlan::origin_land`.
+    pub origin_land: f32,
+    /// `MacroPlan::inv_origin_r2`.
+    pub inv_origin_r2: f32,
+    /// `MacroPlan::belt_width`.
+    pub belt_width: f32,
+    /// `MacroPlan::mountain_relief_m`.
+    pub mountain_relief_m: f32,
+    /// `MacroPlan::hill_relief_m`.
+    pub hill_relief_m: f32,
+    /// `MacroPlan::plain_relief_m`.
+    pub plain_relief_m: f32,
+    /// `MacroPlan::seafloor_relief_m`.
+    pub seafloor_relief_m: f32,
+    /// `MacroPlan::interior_height_m`.
+    pub interior_height_m: f32,
+    /// `MacroPlan::ocean_depth_m`.
+    pub ocean_depth_m: f32,
+    /// `EarthPlan::inv_relief_max`.
+    pub inv_relief_max: f32,
+    /// Padding to a multiple of 16 bytes.
+    pub _pad: u32,
 }

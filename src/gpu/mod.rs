@@ -8,7 +8,12 @@
 //!   of Infinite Landscapes on GPUs* (VMV 2006; Eq. 1 and §2.2), and Algorithms 1 and 2 of the
 //!   extended Voronoi biome map of Choroś & Topolski (*Procedural generation of biomes*);
 //! - `shaders/tile.wgsl` runs [`crate::terrain::tile::field`] in four dispatches: block corners of
-//!   the biome grid's corner shortcut, biome ids, horizontal blur, vertical blur plus heights.
+//!   the biome grid's corner shortcut, biome ids, horizontal blur, vertical blur plus heights;
+//! - `shaders/earth.wgsl` ([`earth`]) computes the heights of an `earth-1` world
+//!   ([`crate::terrain::earth::field`]) from its macro octaves and the LOD's layers, one
+//!   invocation per sample, with the same rounding barriers and correctly rounded `/` and `sqrt`;
+//!   its biome weights (the climate) are computed on the CPU, and so are the per-sample erosion
+//!   and roughness the kernel reads. [`GpuHandle::field`] routes each world to its kernels.
 //!
 //! All transcendental constants (octave frequencies and amplitudes, warp constants, scales, blur
 //! taps) are taken from [`crate::terrain::WorldPlan`] and uploaded ([`layout`]); the GPU evaluates
@@ -43,6 +48,7 @@
 //! exceed it.
 
 pub mod device;
+pub mod earth;
 mod kit;
 pub mod layout;
 pub mod poisson;
@@ -56,6 +62,7 @@ pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, AdapterInfo,
     BackendChoice, GpuHandle,
 };
+pub use earth::{earth_field_on_device, earth_shader_source, EarthKernels};
 pub use tile::{
     field_on_device, field_params, tile_shader_source, TileKernels, DEFAULT_JOB_TIMEOUT,
 };
@@ -118,7 +125,7 @@ mod tests {
 
     #[test]
     fn params_cover_the_blur_margin_and_the_blocks() {
-        let plan = crate::terrain::WorldPlan::new(3, crate::terrain::WorldParams::default())
+        let plan = crate::terrain::WorldPlan::new(3, crate::terrain::WorldParams::classic())
             .expect("plan");
         let p = field_params(&plan, FieldJob::new(0, -65, 63, 67, 67)).expect("params");
         let r = (plan.lods[0].kernel.len() / 2) as i32;

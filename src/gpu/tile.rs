@@ -39,7 +39,8 @@ pub fn tile_shader_source() -> String {
 /// Geometry and constants of one field job, as uploaded to `Params`.
 ///
 /// # Errors
-/// If the LOD does not exist, the rectangle is empty or too large, the world has more than
+/// If the world is `earth-1` (its field runs on [`super::earth::EarthKernels`]), the LOD does
+/// not exist, the rectangle is empty or too large, the world has more than
 /// [`MAX_BIOMES`] biomes, or a lattice index of the job (including the blur margin and the block
 /// corners) does not fit in `i32`: within the supported world (`plan::WORLD_LIMIT_CELLS`) it always
 /// does.
@@ -51,6 +52,9 @@ pub fn field_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuParams
         w,
         h,
     } = job;
+    if plan.earth.is_some() {
+        bail!("an earth-1 world: its field runs on the earth kernels, not the tile kernels");
+    }
     let lp = plan
         .lods
         .get(lod as usize)

@@ -35,7 +35,7 @@
 //! classic generator.
 
 pub mod climate;
-mod kernel;
+pub(crate) mod kernel;
 pub mod params;
 pub mod trig;
 
