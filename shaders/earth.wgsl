@@ -355,5 +355,11 @@ fn earth_heights(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
             gz += rn(a * nd.z);
         }
     }
-    heights[idx] = elev + h;
+    // Valley floors: `f(r) = r / (1 − r / s)` below the base level (`kernel::heights`).
+    let s = rn(VALLEY_FLOOR * amp) + 1e-3;
+    var relief_h = h;
+    if (h < 0.0) {
+        relief_h = div_rn(h, 1.0 - div_rn(h, s));
+    }
+    heights[idx] = elev + relief_h;
 }

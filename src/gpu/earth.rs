@@ -61,6 +61,7 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("SHELF_C", k::SHELF_C),
         ("ABYSS_C", k::ABYSS_C),
         ("UPLIFT", k::UPLIFT),
+        ("VALLEY_FLOOR", k::VALLEY_FLOOR),
         // `kernel::gullies`: `inv_sqrt(g2 + 1e-12)` and `inv_sqrt(c² + s² + 1e-6)`.
         ("GULLY_G_EPS", 1e-12),
         ("GULLY_N_EPS", 1e-6),

@@ -377,9 +377,9 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
             z[l] = (gz0 + j) as f32 * spacing_m;
             let wv = &weights[v * k..(v + 1) * k];
             let (mut e, mut r) = (0.0f32, 0.0f32);
-            for b in 0..k {
-                e += wv[b] * plan.erosion[b];
-                r += wv[b] * plan.roughness[b];
+            for ((w, eb), rb) in wv.iter().zip(&plan.erosion).zip(&plan.roughness) {
+                e += w * eb;
+                r += w * rb;
             }
             ero[l] = e;
             rough[l] = r;
