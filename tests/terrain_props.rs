@@ -90,14 +90,14 @@ fn edges_match_where_blended(p: &WorldPlan, lod: u32) {
         .expect("a tile on a biome border within 20×20 tiles");
     let t = synthesize(p, blended);
     let e = synthesize(
-        &p,
+        p,
         TileKey {
             x: blended.x + 1,
             ..blended
         },
     );
     let n = synthesize(
-        &p,
+        p,
         TileKey {
             z: blended.z - 1,
             ..blended
@@ -254,7 +254,10 @@ fn latitude_puts_arctic_toward_the_pole_and_desert_toward_the_equator() {
 fn coarser_lods_sum_fewer_octaves() {
     let p = plan(3);
     let classic = WorldParams::classic();
-    let g = classic.biomes[2].generator.as_ref().expect("a classic biome generator");
+    let g = classic.biomes[2]
+        .generator
+        .as_ref()
+        .expect("a classic biome generator");
     // Effective octave count: each octave's amplitude over its full `r^{-kH}` (1 for a whole
     // octave, the fraction for the blended last one).
     let counts: Vec<f32> = (0..=6)

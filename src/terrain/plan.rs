@@ -74,9 +74,7 @@ impl WorldPlan {
                         // scale their low octaves coincide, so mountains continue across biome
                         // borders and the blur only hides differences of amplitude and roughness.
                         let seeds: Vec<u32> = (0..MAX_OCTAVES as u32)
-                            .map(|k| {
-                                stream(seed, purpose::OCTAVE, k + generator.first_octave)
-                            })
+                            .map(|k| stream(seed, purpose::OCTAVE, k + generator.first_octave))
                             .collect();
                         FractalPlan::new(generator, &params.warp, spacing, &seeds)
                     })

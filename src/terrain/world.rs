@@ -392,41 +392,41 @@ fn check_fractal(
     cell_m: f32,
     f: &dyn Fn(&str) -> String,
 ) -> Result<(), ParamError> {
-        check(
-            g.base_m.is_finite() && g.base_m.abs() <= 10_000.0,
-            f("generator.base_m"),
-            "must be in [-10000, 10000]",
-        )?;
-        check(
-            g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0,
-            f("generator.amplitude_m"),
-            "must be in (0, 5000]",
-        )?;
-        check(
-            g.scale_m.is_finite() && g.scale_m >= 4.0 * cell_m && g.scale_m <= 1.0e6,
-            f("generator.scale_m"),
-            "must be in [4 vertex spacings, 1e6]",
-        )?;
-        check(
-            g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity),
-            f("generator.lacunarity"),
-            "must be in [1.1, 4]",
-        )?;
-        check(
-            g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0,
-            f("generator.hurst"),
-            "must be in (0.05, 1]",
-        )?;
-        check(
-            g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES,
-            f("generator.octaves"),
-            "must be in [1, 16]",
-        )?;
-        check(
-            g.first_octave <= 8,
-            f("generator.first_octave"),
-            "must be in [0, 8]",
-        )?;
+    check(
+        g.base_m.is_finite() && g.base_m.abs() <= 10_000.0,
+        f("generator.base_m"),
+        "must be in [-10000, 10000]",
+    )?;
+    check(
+        g.amplitude_m.is_finite() && g.amplitude_m > 0.0 && g.amplitude_m <= 5_000.0,
+        f("generator.amplitude_m"),
+        "must be in (0, 5000]",
+    )?;
+    check(
+        g.scale_m.is_finite() && g.scale_m >= 4.0 * cell_m && g.scale_m <= 1.0e6,
+        f("generator.scale_m"),
+        "must be in [4 vertex spacings, 1e6]",
+    )?;
+    check(
+        g.lacunarity.is_finite() && (1.1..=4.0).contains(&g.lacunarity),
+        f("generator.lacunarity"),
+        "must be in [1.1, 4]",
+    )?;
+    check(
+        g.hurst.is_finite() && g.hurst > 0.05 && g.hurst <= 1.0,
+        f("generator.hurst"),
+        "must be in (0.05, 1]",
+    )?;
+    check(
+        g.octaves >= 1 && g.octaves as usize <= super::fractal::MAX_OCTAVES,
+        f("generator.octaves"),
+        "must be in [1, 16]",
+    )?;
+    check(
+        g.first_octave <= 8,
+        f("generator.first_octave"),
+        "must be in [0, 8]",
+    )?;
     Ok(())
 }
 
@@ -500,11 +500,9 @@ impl WorldParams {
                 "earth",
                 "applies to the earth-1 generator only; remove it or set generator to earth-1",
             )?,
-            (Generator::Earth1, None) => check(
-                false,
-                "earth",
-                "is required with the earth-1 generator",
-            )?,
+            (Generator::Earth1, None) => {
+                check(false, "earth", "is required with the earth-1 generator")?
+            }
             (Generator::Earth1, Some(e)) => e.validate(self.cell_m)?,
             (Generator::Classic, None) => {}
         }

@@ -80,7 +80,10 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
     let i1 = node(job.gx0 + job.w as i64 - 1).floor() as i64 + 1;
     let j1 = node(job.gz0 + job.h as i64 - 1).floor() as i64 + 1;
     // Node ids with the blur margin, then blurred weights of nodes i0..=i1, j0..=j1.
-    let (bw, bh) = ((i1 - i0 + 1) as usize + 2 * r, (j1 - j0 + 1) as usize + 2 * r);
+    let (bw, bh) = (
+        (i1 - i0 + 1) as usize + 2 * r,
+        (j1 - j0 + 1) as usize + 2 * r,
+    );
     let at = |g: i64| (g as f64 * NODE_SPACING_M) as f32;
     let (mut xs, mut zs) = (Vec::with_capacity(bw * bh), Vec::with_capacity(bw * bh));
     for j in 0..bh as i64 {

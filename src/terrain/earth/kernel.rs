@@ -146,7 +146,14 @@ fn fbm_into(octaves: &[NoiseOctave], xs: &L, zs: &L, acc: &mut L) {
 /// The large-scale fields of a batch: continent elevation `e(c)`, relief amplitude `A` and ridge
 /// mix `ρ`. Independent of the LOD.
 #[inline(always)]
-pub(super) fn macro_fields(m: &MacroPlan, xs: &L, zs: &L, elev: &mut L, amp: &mut L, ridge: &mut L) {
+pub(super) fn macro_fields(
+    m: &MacroPlan,
+    xs: &L,
+    zs: &L,
+    elev: &mut L,
+    amp: &mut L,
+    ridge: &mut L,
+) {
     let mut wx = [0.0; LANES];
     let mut wz = [0.0; LANES];
     fbm_into(&m.warp_x, xs, zs, &mut wx);
@@ -229,16 +236,7 @@ pub const GULLY_SLOPE: f32 = 0.35;
 /// weights and of the direction is neglected, as in the point-evaluable filters this follows).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn gullies(
-    o: &NoiseOctave,
-    xs: &L,
-    zs: &L,
-    gx: &L,
-    gz: &L,
-    out: &mut L,
-    dx: &mut L,
-    dz: &mut L,
-) {
+fn gullies(o: &NoiseOctave, xs: &L, zs: &L, gx: &L, gz: &L, out: &mut L, dx: &mut L, dz: &mut L) {
     let mut qx = [0.0; LANES];
     let mut qz = [0.0; LANES];
     octave_coords(o, xs, zs, &mut qx, &mut qz);

@@ -184,7 +184,14 @@ fn octaves(
     gain: f64,
 ) -> Vec<NoiseOctave> {
     (0..count)
-        .map(|k| octave(seed, index + k as u32, wavelength_m / (1u64 << k) as f64, amp0 * libm::pow(gain, k as f64)))
+        .map(|k| {
+            octave(
+                seed,
+                index + k as u32,
+                wavelength_m / (1u64 << k) as f64,
+                amp0 * libm::pow(gain, k as f64),
+            )
+        })
         .collect()
 }
 
