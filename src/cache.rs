@@ -627,7 +627,7 @@ mod tests {
     use crate::terrain::{synthesize, WorldParams, WorldPlan};
 
     fn tile(x: i64) -> Tile {
-        let plan = WorldPlan::new(3, WorldParams::default()).expect("plan");
+        let plan = WorldPlan::new(3, WorldParams::classic()).expect("plan");
         synthesize(&plan, TileKey { lod: 2, x, z: -1 })
     }
 

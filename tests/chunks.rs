@@ -269,11 +269,12 @@ async fn get(
     (r.status, r.headers, r.body)
 }
 
-/// A layer `y` holding the ground at chunk column (0, 0), LOD `lod`.
+/// A layer `y` holding the ground at the centre of chunk column (0, 0), LOD `lod`.
 fn ground_layer(lod: u32) -> i64 {
-    let mut w = World::new();
-    let r = w.layers(lod, 0, 0);
-    (r.start() + r.end()) / 2
+    let w = World::new();
+    let t = synthesize(&w.plan, TileKey { lod, x: 0, z: 0 });
+    let s = w.plan.lods[lod as usize].spacing_m;
+    (t.heights[16 * 65 + 16] / (32.0 * s)).floor() as i64
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

@@ -98,7 +98,7 @@ fn acknowledged_edits_survive_sigkill() {
             ("Content-Type", "application/json-patch+json"),
             ("If-Match", "1"),
         ],
-        br#"[{"op":"replace","path":"/world/warp/lever","value":0.5}]"#,
+        br#"[{"op":"replace","path":"/world/earth/erosion","value":0.5}]"#,
     )
     .expect("settings edit");
     assert_eq!(status, 200, "{}", String::from_utf8_lossy(&body));

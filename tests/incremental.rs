@@ -105,7 +105,7 @@ fn touched(keys: &[TileKey], min: [f64; 2], max: [f64; 2]) -> BTreeSet<TileKey> 
     let w = WorldParams::default();
     let spacing = w.cell_m as f64;
     let size = 64.0 * spacing;
-    let margin = w.layout.blur_radius_m as f64 + 2.0 * spacing;
+    let margin = strata::scene::margin_m(&w, 0);
     keys.iter()
         .copied()
         .filter(|k| {
@@ -194,29 +194,29 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         (16, 16, 16)
     );
 
-    // A region covering a 1 m square inside tile (1, 1): the tiles whose footprint plus margin
-    // meets it run again, the rest are hits.
-    let (min, max) = ([99.0, 99.0], [100.0, 100.0]);
+    // A region covering a 1.5 m square at the corner of tiles (1, 1) to (2, 2): the tiles whose
+    // footprint plus margin meets it run again, the rest are hits.
+    let (min, max) = ([127.0, 127.0], [128.5, 128.5]);
     let v2 = edit(
         &app,
         &id,
         &token,
         json!([{ "op": "add", "path": "/regions/-",
                  "value": { "id": "hill", "bbox": { "min": min, "max": max },
-                            "ops": [{ "op": "amplify", "center": [99.5, 99.5],
+                            "ops": [{ "op": "amplify", "center": [127.75, 127.75],
                                       "radius_m": 1, "factor": 1 }] } }]),
     )
     .await;
     assert_eq!(v2, 2);
     let expect = touched(&keys, min, max);
-    // The margin (blur radius 64 m + 2 m at LOD 0) is wider than a tile, so the square is in
-    // reach of three tiles along each axis: (0..=2)², and not of column or row 3.
+    // The earth-1 margin is two vertex spacings (2 m at LOD 0): the square is in reach of the
+    // four tiles around the corner, (1..=2)², and of no other.
     assert_eq!(
         expect,
-        (0..=2)
-            .flat_map(|x| (0..=2).map(move |z| TileKey { lod: 0, x, z }))
+        (1..=2)
+            .flat_map(|x| (1..=2).map(move |z| TileKey { lod: 0, x, z }))
             .collect(),
-        "the margin rule as documented (blur radius 64 m + 2 m at LOD 0)"
+        "the margin rule as documented (2 spacings at LOD 0)"
     );
     let (ran, bodies) = request_block(&app, &state, &id, &keys, v2).await;
     assert_eq!(
@@ -231,8 +231,9 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     let (ran, _) = request_block(&app, &state, &id, &keys, 1).await;
     assert!(ran.is_empty(), "version 1 re-ran {ran:?}");
 
-    // A region near the block's north-west corner touches only tile (0, 0) of the block.
-    let (min, max) = ([-30.0, -30.0], [-20.0, -20.0]);
+    // A region just outside the block's north-west corner, within the margin of tile (0, 0),
+    // touches only that tile of the block.
+    let (min, max) = ([-3.0, -3.0], [-1.0, -1.0]);
     let v3 = edit(
         &app,
         &id,
@@ -261,7 +262,7 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     assert!(ran.is_empty(), "a far edit re-ran {ran:?}");
 
     // Changing the first region's other fields touches the tiles its box reaches.
-    let hill = touched(&keys, [99.0, 99.0], [100.0, 100.0]);
+    let hill = touched(&keys, [127.0, 127.0], [128.5, 128.5]);
     let v5 = edit(
         &app,
         &id,
@@ -284,7 +285,7 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
     )
     .await;
     let (ran, bodies) = request_block(&app, &state, &id, &keys, v6).await;
-    let corner = touched(&keys, [-30.0, -30.0], [-20.0, -20.0]);
+    let corner = touched(&keys, [-3.0, -3.0], [-1.0, -1.0]);
     let new_inputs: BTreeSet<TileKey> = hill.intersection(&corner).copied().collect();
     assert_eq!(
         ran, new_inputs,
@@ -297,7 +298,7 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         &app,
         &id,
         &token,
-        json!([{ "op": "replace", "path": "/world/sea_level_m", "value": 25.0 }]),
+        json!([{ "op": "replace", "path": "/world/earth/plain_relief_m", "value": 120.0 }]),
     )
     .await;
     let before = field_runs(&state);

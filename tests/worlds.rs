@@ -355,7 +355,7 @@ async fn bare_seed_world_serves_the_seed_products_with_version_caching() {
 fn custom_scene() -> Value {
     let mut s = Scene::default().to_value();
     s["world"]["sea_level_m"] = json!(12.5);
-    s["world"]["biomes"][1]["generator"]["hurst"] = json!(0.7);
+    s["world"]["earth"]["gain"] = json!(0.45);
     s
 }
 
@@ -372,8 +372,8 @@ async fn versioned_tiles_are_identical_after_reopening_the_store() {
         )
         .await;
         let tok = Some(w.admin.as_str());
-        let patch = json!([{"op": "replace", "path": "/world/biomes/0/generator/amplitude_m",
-                            "value": 300.0}]);
+        let patch = json!([{"op": "replace", "path": "/world/earth/mountain_relief_m",
+                            "value": 3000.0}]);
         assert_eq!(
             edit(&app, &w.id, tok, None, &patch).await.status,
             StatusCode::OK
@@ -400,8 +400,8 @@ async fn versioned_tiles_are_identical_after_reopening_the_store() {
     let v = get(&app, &format!("/v1/worlds/{id}"), tok).await.json();
     assert_eq!(v["version"], 2);
     assert_eq!(
-        v["scene"]["world"]["biomes"][0]["generator"]["amplitude_m"],
-        300.0
+        v["scene"]["world"]["earth"]["mountain_relief_m"],
+        3000.0
     );
     let mut after = Vec::new();
     for v in [1, 2] {
@@ -781,11 +781,11 @@ async fn bad_input_names_the_field() {
     edit(&app, &w.id, Some(tok), None, &failed_test)
         .await
         .error(StatusCode::UNPROCESSABLE_ENTITY, "patch_failed", Some("/0"));
-    let hurst = json!([{"op": "replace", "path": "/world/biomes/2/generator/hurst", "value": 5}]);
-    edit(&app, &w.id, Some(tok), None, &hurst).await.error(
+    let gain = json!([{"op": "replace", "path": "/world/earth/gain", "value": 5}]);
+    edit(&app, &w.id, Some(tok), None, &gain).await.error(
         StatusCode::BAD_REQUEST,
         "invalid_scene",
-        Some("/world/biomes/2/generator/hurst"),
+        Some("/world/earth/gain"),
     );
     let typed = json!([{"op": "replace", "path": "/world/cell_m", "value": "one"}]);
     edit(&app, &w.id, Some(tok), None, &typed).await.error(
@@ -822,12 +822,12 @@ async fn bad_input_names_the_field() {
 
     // World creation.
     let mut scene = Scene::default().to_value();
-    scene["world"]["biomes"][2]["generator"]["hurst"] = json!(5);
+    scene["world"]["earth"]["gain"] = json!(5);
     let bad_bodies = [
         (
             json!({"seed": 1, "scene": scene}),
             "invalid_scene",
-            Some("/scene/world/biomes/2/generator/hurst"),
+            Some("/scene/world/earth/gain"),
         ),
         (json!({"seed": "x1"}), "bad_seed", Some("/seed")),
         (json!({"seed": 1, "colour": "red"}), "bad_body", None),
@@ -1120,9 +1120,10 @@ fn scene_schema_describes_what_the_server_accepts() {
         v
     };
     for (doc, pointer) in [
+        (bad("/world/earth/gain", json!(5.0)), "/world/earth/gain"),
         (
-            bad("/world/biomes/2/generator/hurst", json!(5.0)),
-            "/world/biomes/2/generator/hurst",
+            bad("/world/biomes/2/relief/erosion", json!(3.0)),
+            "/world/biomes/2/relief/erosion",
         ),
         (bad("/world/cell_m", json!(0.0)), "/world/cell_m"),
         (
@@ -1130,8 +1131,8 @@ fn scene_schema_describes_what_the_server_accepts() {
             "/world/biomes/0/ground",
         ),
         (
-            bad("/world/biomes/0/generator/octaves", json!(17)),
-            "/world/biomes/0/generator/octaves",
+            bad("/world/earth/octaves", json!(21)),
+            "/world/earth/octaves",
         ),
         (
             bad("/world/layout/dispersion_d", json!(1.5)),

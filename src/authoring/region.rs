@@ -365,7 +365,7 @@ pub(super) mod tests {
     use serde_json::json;
 
     pub(crate) fn plan() -> WorldPlan {
-        WorldPlan::new(11, WorldParams::default()).expect("plan")
+        WorldPlan::new(11, WorldParams::classic()).expect("plan")
     }
 
     pub(crate) fn spec(samples: usize, ops: serde_json::Value) -> RegionSpec {

@@ -226,14 +226,26 @@ mod tests {
     #[test]
     fn errors_are_pointers() {
         let mut v = Scene::default().to_value();
+        v["world"]["earth"]["gain"] = json!(5.0);
+        let e = Scene::from_value(&v).expect_err("gain");
+        assert_eq!(e.pointer, "/world/earth/gain");
+
+        let mut v = Scene::default().to_value();
+        v["world"]["biomes"][2]["relief"]["erosion"] = json!(3.0);
+        let e = Scene::from_value(&v).expect_err("erosion");
+        assert_eq!(e.pointer, "/world/biomes/2/relief/erosion");
+
+        let mut v = Scene::default().to_value();
+        v["world"]["earth"]["octaves"] = json!("many");
+        let e = Scene::from_value(&v).expect_err("type");
+        assert_eq!(e.pointer, "/world/earth/octaves");
+
+        // A classic world's biome generators, likewise.
+        let mut v = Scene::default().to_value();
+        v["world"] = serde_json::to_value(WorldParams::classic()).expect("classic");
         v["world"]["biomes"][2]["generator"]["hurst"] = json!(5.0);
         let e = Scene::from_value(&v).expect_err("hurst");
         assert_eq!(e.pointer, "/world/biomes/2/generator/hurst");
-
-        let mut v = Scene::default().to_value();
-        v["world"]["biomes"][1]["generator"]["octaves"] = json!("many");
-        let e = Scene::from_value(&v).expect_err("type");
-        assert_eq!(e.pointer, "/world/biomes/1/generator/octaves");
 
         let v = json!({"regions": [{"id": "a", "bbox": {"min": [0, 0], "max": [1, 1]}},
                                    {"id": "a", "bbox": {"min": [0, 0], "max": [1, 1]}}]});

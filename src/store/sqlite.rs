@@ -656,9 +656,9 @@ mod tests {
             Err(StoreError::Patch { operation: 1, .. })
         ));
         let invalid = patch(json!([{"op": "replace",
-            "path": "/world/biomes/2/generator/hurst", "value": 5}]));
+            "path": "/world/earth/gain", "value": 5}]));
         match store.apply_edit(&id, invalid, None).await {
-            Err(StoreError::Invalid(e)) => assert_eq!(e.pointer, "/world/biomes/2/generator/hurst"),
+            Err(StoreError::Invalid(e)) => assert_eq!(e.pointer, "/world/earth/gain"),
             other => panic!("{other:?}"),
         }
         let head = store.head(&id).await.expect("head");

@@ -371,7 +371,7 @@ mod tests {
     use crate::terrain::world::WorldParams;
 
     fn plan() -> BiomeMapPlan {
-        let w = WorldParams::default();
+        let w = WorldParams::classic();
         BiomeMapPlan::new(&w.layout, w.biomes.len(), 42)
     }
 
@@ -439,7 +439,7 @@ mod tests {
 
     #[test]
     fn without_dispersion_biomes_are_latitude_bands() {
-        let w = WorldParams::default();
+        let w = WorldParams::classic();
         let mut layout = w.layout.clone();
         layout.dispersion = false;
         let p = BiomeMapPlan::new(&layout, 4, 9);

@@ -235,7 +235,7 @@ mod tests {
 
     #[test]
     fn steep_slopes_are_rock_and_water_is_seabed() {
-        let p = TexturePlan::new(&WorldParams::default());
+        let p = TexturePlan::new(&WorldParams::classic());
         let grass = [0.0, 0.0, 1.0, 0.0];
         let flat = Surface {
             height_m: 30.0,
@@ -290,7 +290,7 @@ mod tests {
 
     #[test]
     fn single_biome_path_equals_the_general_one() {
-        let params = WorldParams::default();
+        let params = WorldParams::classic();
         let p = TexturePlan::new(&params);
         let n = 400;
         let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.3 - 60.0).collect();
@@ -310,7 +310,7 @@ mod tests {
 
     #[test]
     fn batch_equals_per_vertex() {
-        let p = TexturePlan::new(&WorldParams::default());
+        let p = TexturePlan::new(&WorldParams::classic());
         let n = 300;
         let heights: Vec<f32> = (0..n).map(|i| i as f32 * 1.7 - 40.0).collect();
         let ny: Vec<f32> = (0..n).map(|i| 0.4 + (i % 13) as f32 * 0.05).collect();
