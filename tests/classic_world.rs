@@ -75,8 +75,5 @@ fn new_scenes_name_the_earth_generator_and_classic_scenes_name_none() {
     assert!(v["world"].get("generator").is_none(), "{}", v["world"]);
     assert!(v["world"].get("earth").is_none());
     let parsed = strata::scene::Scene::from_value(&v).expect("a classic scene is valid");
-    assert_eq!(
-        parsed.world.generator,
-        strata::terrain::Generator::Classic
-    );
+    assert_eq!(parsed.world.generator, strata::terrain::Generator::Classic);
 }

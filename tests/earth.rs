@@ -13,7 +13,11 @@ fn plan() -> WorldPlan {
 /// a function of the sample's world position, so this is the tile vertex's value).
 fn sample(p: &WorldPlan, lod: u32, gx: i64, gz: i64) -> (f32, Vec<f32>) {
     let e = p.earth.as_ref().expect("an earth-1 plan");
-    let f = earth::field(e, p.lods[lod as usize].spacing_m, FieldJob::new(lod, gx, gz, 1, 1));
+    let f = earth::field(
+        e,
+        p.lods[lod as usize].spacing_m,
+        FieldJob::new(lod, gx, gz, 1, 1),
+    );
     (f.heights[0], f.weights)
 }
 
@@ -22,12 +26,20 @@ fn a_vertex_moves_between_lods_by_at_most_the_stated_bound() {
     let p = plan();
     // World points on every LOD's lattice: mountains near (110 km, 0), plains at the origin,
     // the far east and negative coordinates.
-    let centres: [(i64, i64); 4] = [(110_592, 0), (0, 0), (620_544, 309_248), (-120_832, -40_960)];
+    let centres: [(i64, i64); 4] = [
+        (110_592, 0),
+        (0, 0),
+        (620_544, 309_248),
+        (-120_832, -40_960),
+    ];
     let mut worst = 0.0f32;
     for lod in [1u32, 3, 6, 9, 12] {
         let step = 1i64 << lod;
         let bound = p.lod_error_bound_m(lod);
-        assert!(bound.is_finite() && bound >= 0.0, "bound {bound} at LOD {lod}");
+        assert!(
+            bound.is_finite() && bound >= 0.0,
+            "bound {bound} at LOD {lod}"
+        );
         for (cx, cz) in centres {
             for k in 0..25i64 {
                 // Lattice points of LOD `lod` spread over ~40 samples of it.
@@ -82,7 +94,11 @@ fn the_region_around_the_origin_has_peaks_lowlands_and_deep_ocean() {
     // about a fifth).
     assert!(median_land < 600.0, "median land height {median_land} m");
     let high = land.iter().filter(|h| **h > 1500.0).count() as f64 / land.len() as f64;
-    assert!(high < 0.25, "{:.1} % of the land above 1 500 m", high * 100.0);
+    assert!(
+        high < 0.25,
+        "{:.1} % of the land above 1 500 m",
+        high * 100.0
+    );
     assert!((0.3..0.9).contains(&frac_land), "land fraction {frac_land}");
 }
 

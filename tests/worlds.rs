@@ -399,10 +399,7 @@ async fn versioned_tiles_are_identical_after_reopening_the_store() {
     let tok = Some(token.as_str());
     let v = get(&app, &format!("/v1/worlds/{id}"), tok).await.json();
     assert_eq!(v["version"], 2);
-    assert_eq!(
-        v["scene"]["world"]["earth"]["mountain_relief_m"],
-        3000.0
-    );
+    assert_eq!(v["scene"]["world"]["earth"]["mountain_relief_m"], 3000.0);
     let mut after = Vec::new();
     for v in [1, 2] {
         for p in paths {

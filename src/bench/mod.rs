@@ -2,7 +2,9 @@
 //!
 //! `strata bench tiles` (issue 2) synthesises LOD-0 tiles of the default world (four biomes, a
 //! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
-//! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process. With `--json` each
+//! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process; then (issue 17)
+//! `earth-1` tiles of the default world at LOD 0 against fastnoise-lite's time for 4 225
+//! samples, and coarse LODs against LOD 0. With `--json` each
 //! figure is one JSON object per line, units in the key names.
 //!
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
@@ -28,6 +30,21 @@ use std::time::Instant;
 pub const TARGET_MS_PER_TILE: f64 = 0.2;
 /// Target of issue 2: our fBm throughput over fastnoise-lite's.
 pub const TARGET_FBM_RATIO: f64 = 3.0;
+/// Target of issue 17: an `earth-1` LOD-0 tile over fastnoise-lite's time for 4 225 samples of
+/// 8-octave fBm, measured in the same run.
+pub const TARGET_EARTH_RATIO: f64 = 1.5;
+
+/// Milliseconds per tile of `keys`, one core, each tile timed alone.
+fn ms_per_tile(plan: &WorldPlan, keys: &[TileKey]) -> f64 {
+    for k in keys.iter().take(4) {
+        black_box(synthesize(plan, *k));
+    }
+    let start = Instant::now();
+    for k in keys {
+        black_box(synthesize(plan, *k));
+    }
+    start.elapsed().as_secs_f64() * 1e3 / keys.len() as f64
+}
 
 /// The median of `v` (the upper one of an even count); NaN when `v` is empty.
 pub(crate) fn median(mut v: Vec<f64>) -> f64 {
@@ -74,9 +91,9 @@ fn bench_keys(n: usize) -> Vec<TileKey> {
         .collect()
 }
 
-/// The world of issue 2's benchmark: the default biomes with a 35-sample blur kernel at LOD 0.
+/// The world of issue 2's benchmark: the classic biomes with a 35-sample blur kernel at LOD 0.
 pub fn bench_world() -> WorldParams {
-    let mut params = WorldParams::default();
+    let mut params = WorldParams::classic();
     params.layout.blur_radius_m = 17.0 * params.cell_m;
     params
 }
@@ -189,6 +206,8 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
     let theirs = n as f64 / start.elapsed().as_secs_f64();
     black_box(acc);
     let ratio = ours / theirs;
+    let fnl_tile_ms = 4225.0 / theirs * 1e3;
+    earth_tiles(args, fnl_tile_ms)?;
     emit(
         args,
         json!({"bench":"tiles","figure":"fbm","octaves":fractal.octaves.len(),"warped":fractal.warp.is_some(),
@@ -201,5 +220,48 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
             theirs / 1e6
         ),
     );
+    Ok(())
+}
+
+/// Issue 17's cost figures: `earth-1` tiles at LOD 0 (the same strip of keys as issue 2's, plus
+/// a strip in the mountains) against fastnoise-lite's time for one tile's worth of 8-octave fBm,
+/// and coarse LODs against LOD 0.
+fn earth_tiles(args: &BenchArgs, fnl_tile_ms: f64) -> anyhow::Result<()> {
+    let plan = WorldPlan::new(7, WorldParams::default())?;
+    let n = args.tiles.max(16);
+    let strip = |lod: u32, x0: i64, z0: i64| -> Vec<TileKey> {
+        (0..n as i64)
+            .map(|i| TileKey {
+                lod,
+                x: x0 + (i % 16) * 3,
+                z: z0 + (i / 16) * 3,
+            })
+            .collect()
+    };
+    let lod0 = ms_per_tile(&plan, &strip(0, -40, 20));
+    // Mountains around (110 km, 0) at LOD 0: tile 1 720 is at x = 110 km.
+    let mountains = ms_per_tile(&plan, &strip(0, 1700, -20));
+    let ratio = lod0.max(mountains) / fnl_tile_ms;
+    emit(
+        args,
+        json!({"bench":"tiles","figure":"earth_lod0","ms_per_tile":lod0,"ms_per_mountain_tile":mountains,
+               "fastnoise_lite_ms_per_4225_samples":fnl_tile_ms,"ratio":ratio,
+               "target_ratio":TARGET_EARTH_RATIO,"meets_target":ratio <= TARGET_EARTH_RATIO}),
+        format!(
+            "  earth-1, one core: {lod0:.3} ms per LOD-0 tile, {mountains:.3} ms in the mountains; fastnoise-lite 4225 8-octave samples {fnl_tile_ms:.3} ms: ratio {ratio:.2} (target ≤ {TARGET_EARTH_RATIO})"
+        ),
+    );
+    for lod in [3u32, 6, 9, 12] {
+        let ms = ms_per_tile(&plan, &strip(lod, -8, -8));
+        emit(
+            args,
+            json!({"bench":"tiles","figure":"earth_lod","lod":lod,"ms_per_tile":ms,
+                   "ratio_to_lod0":ms / lod0,"meets_target":ms <= lod0 * 1.05}),
+            format!(
+                "  earth-1 LOD {lod}: {ms:.3} ms per tile, {:.2} × LOD 0 (target ≤ 1)",
+                ms / lod0
+            ),
+        );
+    }
     Ok(())
 }
