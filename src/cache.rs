@@ -21,7 +21,7 @@
 //!   file that fails either check is deleted and counted as an error. The disk tier is not
 //!   bounded: delete the directory (or any files in it) at any time. Files named by an old
 //!   [`crate::scene::TILE_CODE_VERSION`] are never read again.
-//! - compute: [`crate::compute::Compute::tile_cached`] runs the stages (`field`, `snap` strips,
+//! - compute: `compute::Compute::tile_cached` runs the stages (`field`, `snap` strips,
 //!   `finish`), counting each run here, and the result enters memory and disk.
 //!
 //! Concurrent requests for the same missing hash share one computation (the others wait for it

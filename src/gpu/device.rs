@@ -7,7 +7,7 @@
 //! Loss detection: the device-lost callback, an error caught by a job's error scopes, an
 //! uncaptured error, a failed mapping, a panic inside wgpu, a submission that does not finish
 //! within the job timeout, or a reply that does not arrive within it all set the shared lost flag.
-//! From then on [`GpuHandle::field`] returns `Err` at once, and `crate::compute::Compute` computes
+//! From then on [`GpuHandle::field`] returns `Err` at once, and `compute::Compute` computes
 //! on the CPU.
 
 use super::earth::EarthKernels;

@@ -1,4 +1,4 @@
-//! The input hash of a tile: what the stage cache ([`crate::cache`]) keys a tile by.
+//! The input hash of a tile: what the stage cache (`cache`) keys a tile by.
 //!
 //! A tile's input hash is blake3 over a canonical encoding of everything the tile depends on, in
 //! this order (integers little-endian):

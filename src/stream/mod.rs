@@ -4,7 +4,7 @@
 //! [`protocol`] defines messages and frames, [`session`] runs one client on a
 //! [`session::StreamSource`]. The endpoints that mount `/v1/seeds/{seed}/stream` and
 //! `/v1/worlds/{id}/stream` and implement the sources on the server's state are
-//! `crate::server::stream_routes`, one layer up.
+//! `server::stream_routes`, one layer up.
 
 pub mod protocol;
 pub mod session;

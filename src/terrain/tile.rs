@@ -210,7 +210,7 @@ pub struct Tile {
     /// Depth of the skirts hanging from the four edges, metres.
     pub skirt_depth_m: f32,
     /// 1 where a volume region's box holds the vertex's ground, so volume chunks, not this
-    /// heightfield, give the surface there (issue 5); empty when no vertex is (`crate::edits`).
+    /// heightfield, give the surface there (issue 5); empty when no vertex is (`edits`).
     pub volume_override: Vec<u8>,
 }
 

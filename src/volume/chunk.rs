@@ -17,7 +17,7 @@
 //! to the tilted surface plane (better than `y − h` on slopes, same zero set and sign). `h`, `n_y`
 //! and the material come from the world's height tiles of the same LOD (vertex `(i, j)` of tile
 //! `(tx, tz)` is column `(64·tx + i, 64·tz + j)`), so chunks follow the world's edits exactly as
-//! tiles do. Caves of the world's `strata` elements carve it ([`crate::subsurface::carve`]);
+//! tiles do. Caves of the world's `strata` elements carve it (`subsurface::carve`);
 //! volume regions will replace `S` inside their boxes later.
 //!
 //! # The 1-cell padding rule (same-LOD seams)
@@ -219,7 +219,7 @@ pub struct ChunkMesh {
     /// How far skirts hang below their boundary edge, metres.
     pub skirt_depth_m: f32,
     /// Subsurface material id per vertex (the `strata` element's material found half a voxel
-    /// inside the solid, [`crate::subsurface::carve`]), [`NO_GEOLOGY`] where no element is in
+    /// inside the solid, `subsurface::carve`), [`NO_GEOLOGY`] where no element is in
     /// force; empty when none touches the chunk.
     pub geology: Vec<u32>,
 }
@@ -241,7 +241,7 @@ pub fn mesh_chunk(
 }
 
 /// Meshes a chunk's padded grid as [`chunk_sdf`] lays it out (34³ values, negative inside the
-/// solid), e.g. after caves carved it ([`crate::subsurface::carve`]).
+/// solid), e.g. after caves carved it (`subsurface::carve`).
 pub fn mesh_sdf(
     key: ChunkKey,
     spacing_m: f32,

@@ -48,7 +48,7 @@
 //!
 //! The heightfield input is the world's LOD-0 ground under the box as tiles have it: the
 //! procedural heights plus the edits of the authored regions and the cave breaches of the
-//! `strata` elements meeting [`ground_rect`] ([`GroundEdits`], which `crate::edits::TileEdits`
+//! `strata` elements meeting [`ground_rect`] ([`GroundEdits`], which `edits::TileEdits`
 //! implements), so a region
 //! raised or a cave opened under the box shows inside it as outside. The server solves each
 //! region once per `(seed, digest of the element and of those edits' elements)`.
@@ -67,7 +67,7 @@ use crate::terrain::WorldPlan;
 use serde::Deserialize;
 
 /// What the ground under a volume region takes on top of the procedural heights: the edits a
-/// height tile applies (`crate::edits::TileEdits`, which implements this trait one layer up).
+/// height tile applies (`edits::TileEdits`, which implements this trait one layer up).
 pub trait GroundEdits {
     /// Applies the edits to the heights of a lattice `window` (row-major).
     fn apply(&self, window: Window, heights: &mut [f32]);

@@ -26,7 +26,7 @@
 use serde_json::Value;
 
 /// Largest glb accepted, bytes (decoded). With base64's 4/3 it keeps one mesh well inside a
-/// scene's size limit (`crate::store::MAX_SCENE_BYTES`).
+/// scene's size limit (`store::MAX_SCENE_BYTES`).
 pub const MAX_GLB_BYTES: usize = 512 * 1024;
 /// Deepest node hierarchy followed.
 pub const MAX_NODE_DEPTH: usize = 32;

@@ -67,7 +67,7 @@
 //!   propagation and filter are discarded): simple, about one extra pipeline run of cost. The
 //!   stage times `generate` returns are those of the final run; the expansion is not in them.
 //! - The smooth bitangent field has a WGSL twin, `shaders/volume_bitangent.wgsl`
-//!   (`crate::gpu::volume_bitangent`, bit-identical on lavapipe in `tests/gpu_volume_bitangent.rs`).
+//!   (`gpu::volume_bitangent`, bit-identical on lavapipe in `tests/gpu_volume_bitangent.rs`).
 //!   The stepping has none: it follows one curve end at a time, a sequential walk of a few
 //!   hundred steps whose every step depends on the previous one.
 

@@ -25,7 +25,7 @@
 //! run first by [`region::generate`] when [`PipelineParams::expand`] is set.
 //!
 //! `shaders/volume_diffuse.wgsl` and `shaders/volume_propagate.wgsl` are the GPU twins of the
-//! diffusion sweep and the surface propagation (`crate::gpu::volume`).
+//! diffusion sweep and the surface propagation (`gpu::volume`).
 
 // Grid code indexes several parallel arrays by one sample index; index loops read clearer here.
 #![allow(clippy::needless_range_loop)]
