@@ -183,8 +183,7 @@ fn fbm_into(first: u32, count: u32, x: f32, z: f32, acc0: f32) -> f32 {
 fn corner_gradient(h: u32) -> vec2<f32> {
     let gx = f32(h & 0xffffu) - 32767.5;
     let gz = f32(h >> 16u) - 32767.5;
-    let inv = inv_sqrt(rn(gx * gx) + rn(gz * gz));
-    return vec2<f32>(rn(gx * inv), rn(gz * inv));
+    return vec2<f32>(rn(gx * (1.0 / 32767.5)), rn(gz * (1.0 / 32767.5)));
 }
 
 // `kernel::gradient_d`: gradient noise times GRADIENT_SCALE and its lattice derivative, as

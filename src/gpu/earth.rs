@@ -2,7 +2,7 @@
 //!
 //! [`EarthKernels`] holds the compute pipeline of `shaders/earth.wgsl`, one invocation per sample:
 //! the macro fields, the LOD's relief layers and gully layers of `terrain::earth::kernel`. The
-//! biome weights (the climate: `earth::climate::weights`, a Voronoi map on a 2 km lattice with an
+//! biome weights (the climate: `earth::climate::weights`, a Voronoi map on a 4 km lattice with an
 //! elevation lapse and a blur) stay on the CPU: the host computes them, derives each sample's
 //! erosion strength and roughness from them exactly as `earth::field` does, and uploads those two
 //! numbers per sample; the returned field's weights are the CPU's, bit for bit.

@@ -487,7 +487,7 @@ impl WorldParams {
                 "layout.blur_radius_m",
                 "must be in [0, 64 vertex spacings]",
             )?,
-            // The earth-1 blur runs on the 2 km climate lattice: at most 33 taps.
+            // The earth-1 blur runs on the 4 km climate lattice: at most 17 taps.
             Generator::Earth1 => check(
                 l.blur_radius_m.is_finite() && (0.0..=32_768.0).contains(&l.blur_radius_m),
                 "layout.blur_radius_m",

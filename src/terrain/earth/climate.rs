@@ -2,7 +2,7 @@
 //!
 //! Choroś & Topolski's extended Voronoi (Algorithms 1 and 2: latitude speed `S`, dispersion `d`,
 //! [`crate::terrain::biome`]) is evaluated at the nodes of a world-anchored lattice of
-//! [`NODE_SPACING_M`], read at `z + latitude_offset_m` so the origin lies at mid-latitude, and
+//! [`NODE_SPACING_M`] (4 km), read at `z + latitude_offset_m` so the origin lies at mid-latitude, and
 //! made colder with altitude: the Voronoi value (0 at the pole, 1 at the equator) falls by
 //! `e / lapse_m` where `e ≥ 0` is the large-scale elevation at the node (continent and mean
 //! mountain relief, [`super::macro_elevation_batch`]). The node's biome is `⌊value · K⌋`.
@@ -20,7 +20,7 @@ use super::super::tile::FieldJob;
 use super::EarthPlan;
 
 /// Spacing of the climate lattice, metres.
-pub const NODE_SPACING_M: f64 = 2048.0;
+pub const NODE_SPACING_M: f64 = 4096.0;
 
 /// Climate constants of a world.
 #[derive(Clone, Debug, PartialEq)]

@@ -81,20 +81,22 @@ fn value(qx: &L, qz: &L, seed: u32, out: &mut L) {
     }
 }
 
-/// Scales gradient noise (at most `√2 / 2` in magnitude, about 0.7) to about `[−1, 1]`.
-pub const GRADIENT_SCALE: f32 = 1.4;
+/// Scales gradient noise to about `[−1, 1]` (its corner gradients have components uniform in
+/// `[−1, 1]`, mean square length ⅔).
+pub const GRADIENT_SCALE: f32 = 1.7;
 
-/// The unit gradient of a corner hash: the two 16-bit halves as a vector, normalised.
+/// The gradient of a corner hash: the two 16-bit halves as a vector with components in
+/// `[−1, 1]`. Not normalised (that would cost a reciprocal square root per corner); the square's
+/// diagonal bias averages out over the octaves, each rotated by its own angle.
 #[inline(always)]
 fn corner_gradient(h: u32) -> (f32, f32) {
     let gx = (h & 0xffff) as f32 - 32767.5;
     let gz = (h >> 16) as f32 - 32767.5;
-    let inv = inv_sqrt(gx * gx + gz * gz);
-    (gx * inv, gz * inv)
+    (gx * (1.0 / 32767.5), gz * (1.0 / 32767.5))
 }
 
 /// Gradient (Perlin) noise times [`GRADIENT_SCALE`] and its derivative with respect to the
-/// lattice coordinates: each corner carries a hashed unit gradient, blended with the quintic
+/// lattice coordinates: each corner carries a hashed gradient, blended with the quintic
 /// fade. Zero at lattice points, less blocky than value noise, its zero set forms the connected
 /// network of lines that ridged octaves turn into crests.
 #[inline(always)]

@@ -17,13 +17,14 @@
 //!   ridged in belts, damped by the slope accumulated so far;
 //! - **gully layers** (the erosion filter): five octaves from a 3 km lattice, interleaved with
 //!   the relief octaves of similar amplitude;
-//! - **climate** ([`climate`]): biome weights on a 2 km world lattice, colder with altitude.
+//! - **climate** ([`climate`]): biome weights on a 4 km world lattice, colder with altitude.
 //!
 //! **LOD rule (§4.1, generalised).** Every layer has a reference amplitude `a_i · A_max` and a
 //! wavelength `L_i`. At a vertex spacing `δ` it gets the weight
-//! `w_i = clamp(min(ln(8 a_i A_max / δ) / ln(1/q), log₂(L_i / 2δ)), 0, 1)`, where `q` is its
-//! series' amplitude ratio (the paper's `λ − k`, with amplitudes counted down to an eighth of the
-//! spacing, and no wave shorter than two spacings), then `w_i = min(w_i, w_{i−1})` so the kept
+//! `w_i = clamp(min(ln(f a_i A_max / δ) / ln(1/q), log₂(L_i / 2δ)), 0, 1)`, where `q` is its
+//! series' amplitude ratio (the paper's `λ − k`; `f` = 4 for relief layers (§4.1 has 1) and 8 for
+//! gully layers, whose long low waves stay visible below the spacing; no wave shorter than two
+//! spacings), then `w_i = min(w_i, w_{i−1})` so the kept
 //! layers are a prefix of the evaluation order. The macro fields (continents, belts, hills,
 //! warp) and the climate are evaluated in full at every LOD. Hence a vertex's height at LOD `k`
 //! differs from LOD 0 only through the layers LOD `k` drops or weights less, and by at most
@@ -55,19 +56,21 @@ pub const MAX_GULLY_OCTAVES: usize = 8;
 
 /// Depth of a gully layer relative to the relief amplitude, at the coarsest gully octave.
 const GULLY_DEPTH: f32 = 0.09;
-/// A layer is kept in full while its amplitude is at least `1 / LOD_AMPLITUDE` of the vertex
-/// spacing (§4.1 keeps octaves down to the spacing itself; low, long waves such as gullies stay
-/// visible well below it).
-const LOD_AMPLITUDE: f64 = 8.0;
+/// A relief layer is kept in full while its amplitude is at least a quarter of the vertex
+/// spacing (§4.1 keeps it down to the spacing; a quarter keeps the ridges of coarse tiles sharp).
+const RELIEF_LOD_AMPLITUDE: f64 = 4.0;
+/// A gully layer is kept in full while its amplitude is at least an eighth of the spacing: its
+/// waves are long and low, and stay visible well below the §4.1 limit.
+const GULLY_LOD_AMPLITUDE: f64 = 8.0;
 
 /// Relief octaves mixed towards ridged in mountain belts.
 pub const RIDGED_OCTAVES: usize = 3;
 /// Sum of the relief octaves' reference amplitudes is about `RELIEF_NORM / (1 − gain)`.
 const RELIEF_NORM: f32 = 0.55;
 /// Largest magnitude of a relief layer's signal: smooth gradient noise is a convex blend of
-/// corner values `g · d` with `|d| ≤ √2`, times [`kernel::GRADIENT_SCALE`]; ridged is at most
-/// `2 · 0.6`.
-const RELIEF_SIGNAL_MAX: f32 = std::f32::consts::SQRT_2 * kernel::GRADIENT_SCALE;
+/// corner values `g · d` with `|g|, |d| ≤ √2`, times [`kernel::GRADIENT_SCALE`]; ridged is at
+/// most `2 · 0.6`.
+const RELIEF_SIGNAL_MAX: f32 = 2.0 * kernel::GRADIENT_SCALE;
 
 /// One octave of a noise: rotation, frequency, offset and amplitude.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -248,7 +251,7 @@ impl EarthPlan {
 
         // The layers in evaluation order, each with its reference amplitude, the amplitude ratio
         // of its series and its largest signal.
-        let mut all: Vec<(Layer, f64, f64)> = Vec::new();
+        let mut all: Vec<(Layer, f64, f64, f64)> = Vec::new();
         let mut amp = RELIEF_NORM as f64;
         for k in 0..e.octaves as usize {
             let wavelength = e.ridge_scale_m as f64 / (1u64 << k) as f64;
@@ -272,7 +275,7 @@ impl EarthPlan {
                 octave: o,
                 amp: amp as f32,
             };
-            all.push((layer, 1.0 / gain, smax));
+            all.push((layer, 1.0 / gain, smax, RELIEF_LOD_AMPLITUDE));
         }
         for g in 0..e.gully_octaves as usize {
             let cell = e.gully_scale_m as f64 / (1u64 << g) as f64;
@@ -283,7 +286,7 @@ impl EarthPlan {
                 octave: o,
                 amp: amp as f32,
             };
-            all.push((layer, 2.0, max_erosion as f64));
+            all.push((layer, 2.0, max_erosion as f64, GULLY_LOD_AMPLITUDE));
         }
         // Interleave by reference amplitude (stable: relief first at equal amplitude).
         all.sort_by(|a, b| b.0.amp.total_cmp(&a.0.amp));
@@ -292,9 +295,9 @@ impl EarthPlan {
         let weights_at = |spacing: f64| -> Vec<f64> {
             let mut prev = 1.0f64;
             all.iter()
-                .map(|(l, ratio, _)| {
-                    let by_amp = libm::log(LOD_AMPLITUDE * l.amp as f64 * a_max / spacing)
-                        / libm::log(*ratio);
+                .map(|(l, ratio, _, factor)| {
+                    let by_amp =
+                        libm::log(factor * l.amp as f64 * a_max / spacing) / libm::log(*ratio);
                     let by_len = libm::log2(1.0 / (l.octave.freq as f64 * 2.0 * spacing));
                     let w = by_amp.min(by_len).clamp(0.0, 1.0);
                     prev = prev.min(w);
@@ -309,7 +312,7 @@ impl EarthPlan {
                 let w = weights_at(spacing);
                 let mut bound = 0.0f64;
                 let mut layers = Vec::new();
-                for (i, (layer, _, smax)) in all.iter().enumerate() {
+                for (i, (layer, _, smax, _)) in all.iter().enumerate() {
                     bound += (w0[i] - w[i]).max(0.0) * layer.amp as f64 * a_max * smax;
                     if w[i] > 0.0 {
                         layers.push(Layer {
