@@ -159,32 +159,32 @@ fn seams_snap(p: &WorldPlan) {
 
 #[test]
 fn tiles_are_identical_across_thread_counts() {
-    let p = plan(5);
-    let keys: Vec<TileKey> = (0..12)
-        .map(|i| TileKey {
-            lod: (i % 3) as u32,
-            x: i - 6,
-            z: 3 - i,
-        })
-        .collect();
-    let serial: Vec<Tile> = keys.iter().map(|k| synthesize(&p, *k)).collect();
-    let parallel: Vec<Tile> = std::thread::scope(|s| {
-        let handles: Vec<_> = keys
-            .iter()
-            .rev()
-            .map(|k| s.spawn(|| synthesize(&p, *k)))
+    // The same tiles, synthesised in parallel on rayon pools of 1, 2 and 7 threads (so the work
+    // is split and interleaved differently), in reverse order, equal the serial run; a fresh
+    // plan (as after a restart) gives the same tiles.
+    use rayon::prelude::*;
+    for p in plans(5) {
+        let keys: Vec<TileKey> = (0..24)
+            .map(|i| TileKey {
+                lod: (i % 4) as u32 * 2,
+                x: i - 12,
+                z: 5 - i,
+            })
             .collect();
-        let mut v: Vec<Tile> = handles
-            .into_iter()
-            .map(|h| h.join().expect("thread"))
-            .collect();
-        v.reverse();
-        v
-    });
-    assert_eq!(serial, parallel);
-    // A fresh plan (as after a restart) gives the same tiles.
-    let again = plan(5);
-    assert_eq!(serial[3], synthesize(&again, keys[3]));
+        let serial: Vec<Tile> = keys.iter().map(|k| synthesize(&p, *k)).collect();
+        for threads in [1, 2, 7] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a thread pool");
+            let mut parallel: Vec<Tile> =
+                pool.install(|| keys.par_iter().rev().map(|k| synthesize(&p, *k)).collect());
+            parallel.reverse();
+            assert!(serial == parallel, "{threads} threads changed a tile");
+        }
+        let again = WorldPlan::new(5, p.params.clone()).expect("plan");
+        assert_eq!(serial[3], synthesize(&again, keys[3]));
+    }
 }
 
 #[test]
