@@ -229,6 +229,13 @@ fn a_bad_sketch_is_refused_naming_the_field() {
     huge["regions"][0]["bbox"]["max"][0] = json!(300_000.0);
     assert_eq!(refused(huge).pointer, "/regions/0/bbox/max/0");
 
+    // The README's example.
+    let readme = json!({"regions": [{"id": "continent",
+        "bbox": {"min": [-16000, -16000], "max": [16000, 16000]}, "samples": 257,
+        "ops": [{"op": "sketch", "png_base64": "iVBORw0KGgoAAAANSUhEUgAAAAQAAAAEEAAAAADcCh3hAAAALElEQVR42mNgYPBTOK3w/z8DA0PsgVcJpxUY5B1KDU4rzHEASpQa9CwoNQAA3DMMWSByqQoAAAAASUVORK5CYII=",
+                 "min_m": -2000, "max_m": 3000, "blend_m": 2000}]}]});
+    Scene::from_value(&readme).expect("the README's sketch is accepted");
+
     // A classic world takes a sketch too: its low-pass is the world's own.
     let mut classic = scene(good.clone());
     classic["world"] = serde_json::to_value(WorldParams::classic()).expect("classic");
