@@ -107,6 +107,78 @@ fn low_pass(tiles: &[Tile], sketch: &[f32]) -> (Vec<f64>, Vec<f64>) {
     (got, want)
 }
 
+/// Block means of the tiles' heights over every sketch pixel (the vertices nearest its centre).
+fn block_means(tiles: &[Tile]) -> Vec<f64> {
+    let pixel = 2.0 * HALF / (PX - 1) as f64;
+    let (mut sum, mut count) = (vec![0.0f64; PX * PX], vec![0usize; PX * PX]);
+    for t in tiles {
+        let s = f64::from(t.spacing_m);
+        for (v, h) in t.heights.iter().enumerate() {
+            let x = t.origin_x_m() + (v % TILE_VERTS) as f64 * s;
+            let z = t.origin_z_m() + (v / TILE_VERTS) as f64 * s;
+            let (i, j) = (((x + HALF) / pixel).round(), ((z + HALF) / pixel).round());
+            if (0.0..PX as f64).contains(&i) && (0.0..PX as f64).contains(&j) {
+                let p = j as usize * PX + i as usize;
+                sum[p] += f64::from(*h);
+                count[p] += 1;
+            }
+        }
+    }
+    sum.iter().zip(&count).map(|(s, c)| s / *c as f64).collect()
+}
+
+/// RMS of the tiles' heights about `large` (pixel-centre values, bilinear between them) over
+/// the full-weight pixels: the detail on top of the large shape.
+fn detail_rms(tiles: &[Tile], large: &[f64]) -> f64 {
+    let pixel = 2.0 * HALF / (PX - 1) as f64;
+    let lo = BLEND_M + pixel;
+    let (mut sq, mut n) = (0.0, 0usize);
+    for t in tiles {
+        let s = f64::from(t.spacing_m);
+        for (v, h) in t.heights.iter().enumerate() {
+            let x = t.origin_x_m() + (v % TILE_VERTS) as f64 * s;
+            let z = t.origin_z_m() + (v / TILE_VERTS) as f64 * s;
+            if x.abs() > HALF - lo || z.abs() > HALF - lo {
+                continue;
+            }
+            let (u, w) = ((x + HALF) / pixel, (z + HALF) / pixel);
+            let (i, j) = (u.floor() as usize, w.floor() as usize);
+            let (fu, fw) = (u - i as f64, w - j as f64);
+            let at = |i: usize, j: usize| large[j * PX + i];
+            let top = at(i, j) * (1.0 - fu) + at(i + 1, j) * fu;
+            let bottom = at(i, j + 1) * (1.0 - fu) + at(i + 1, j + 1) * fu;
+            sq += (f64::from(*h) - (top * (1.0 - fw) + bottom * fw)).powi(2);
+            n += 1;
+        }
+    }
+    (sq / n as f64).sqrt()
+}
+
+/// RMS of the tiles' discrete Laplacian at the vertices over the full-weight pixels: the
+/// finest detail (relief, gullies, the erosion filter's channels).
+fn laplacian_rms(tiles: &[Tile]) -> f64 {
+    let lo = BLEND_M + 2.0 * HALF / (PX - 1) as f64;
+    let (mut sq, mut n) = (0.0, 0usize);
+    for t in tiles {
+        let s = f64::from(t.spacing_m);
+        for j in 1..TILE_VERTS - 1 {
+            for i in 1..TILE_VERTS - 1 {
+                let x = t.origin_x_m() + i as f64 * s;
+                let z = t.origin_z_m() + j as f64 * s;
+                if x.abs() > HALF - lo || z.abs() > HALF - lo {
+                    continue;
+                }
+                let v = j * TILE_VERTS + i;
+                let h = |v: usize| f64::from(t.heights[v]);
+                let lap = h(v - 1) + h(v + 1) + h(v - TILE_VERTS) + h(v + TILE_VERTS) - 4.0 * h(v);
+                sq += lap * lap;
+                n += 1;
+            }
+        }
+    }
+    (sq / n as f64).sqrt()
+}
+
 #[test]
 fn the_low_pass_of_the_tiles_follows_the_sketch_and_tiles_meet_across_its_edge() {
     let plan = WorldPlan::new(SEED, WorldParams::earth()).expect("plan");
@@ -135,18 +207,27 @@ fn the_low_pass_of_the_tiles_follows_the_sketch_and_tiles_meet_across_its_edge()
         got.len()
     );
     assert!(r >= 0.95, "correlation {r:.4} < 0.95");
-    // The detail stays: the sketched tiles are not the smooth sketch (the relief is there).
-    let detail: f64 = tiles
-        .iter()
-        .map(|t| {
-            t.heights
-                .windows(2)
-                .map(|w| f64::from((w[1] - w[0]).abs()))
-                .sum::<f64>()
-        })
-        .sum();
-    assert!(detail > 0.0);
-
+    // The detail stays. At the vertices (64 m) the relief is the world's: the displacement is
+    // smooth there.
+    let (with, without) = (laplacian_rms(&tiles), laplacian_rms(&plain));
+    println!("vertex Laplacian RMS: {with:.2} m sketched, {without:.2} m unsketched");
+    assert!(
+        (0.9..1.1).contains(&(with / without)),
+        "Laplacian RMS {with:.2} m against the world's {without:.2} m"
+    );
+    // About the large shape (the sketch; the world's own block means), the relief between the
+    // vertex and the pixel scale: the sketch replaces the world's box mean at the pixel scale,
+    // so relief at wavelengths near a pixel (about 0.5 km) goes with the large shape.
+    let sketch: Vec<f64> = h.iter().map(|v| f64::from(*v)).collect();
+    let (with, without) = (
+        detail_rms(&tiles, &sketch),
+        detail_rms(&plain, &block_means(&plain)),
+    );
+    println!("relief about the large shape: RMS {with:.1} m sketched, {without:.1} m unsketched");
+    assert!(
+        (0.5..1.5).contains(&(with / without)),
+        "relief RMS {with:.1} m against the world's {without:.1} m"
+    );
     // Neighbouring tiles share their edge vertices bit for bit, across the bbox edge too.
     let n = range.clone().count();
     let last = TILE_VERTS - 1;
