@@ -1,16 +1,18 @@
 //! The coarse sketch (issue 17 item 9, done-when 7 first half): a region's `sketch` operation
 //! shapes the world through the tile path (`solve_region`, then `edits::synthesize`), tiles
 //! outside it are untouched and tiles meet bit for bit across its edge; a bad sketch is refused
-//! naming the field.
+//! naming the field; the server's own tile path serves the sketched world.
 
 use base64::Engine;
 use serde_json::{json, Value};
 use std::sync::Arc;
 use strata::authoring::exchange::encode_png16;
 use strata::authoring::{solve_region, RegionSpec};
+use strata::compute::Compute;
 use strata::edits::{synthesize, TileEdits};
 use strata::element::Element;
-use strata::scene::Scene;
+use strata::scene::{Scene, SceneInputs};
+use strata::server::AppState;
 use strata::terrain::plan::TILE_VERTS;
 use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
 
@@ -323,4 +325,28 @@ fn a_bad_sketch_is_refused_naming_the_field() {
     Scene::from_value(&classic).expect("a classic world's sketch is accepted");
     let plan = WorldPlan::new(SEED, WorldParams::classic()).expect("plan");
     solve_region(&plan, &spec(good)).expect("solved on a classic world");
+}
+
+#[tokio::test]
+async fn the_server_path_serves_the_sketched_world() {
+    // The same sketch as a scene's region, through the server's own tile path (region cache,
+    // stage cache, compute): the low-pass follows the sketch there too.
+    let h = sketch_heights();
+    let scene = Scene::from_value(&json!({"regions": [region(sketch_op(&h))]})).expect("scene");
+    let state = AppState::new(Compute::cpu());
+    let plan = Arc::new(WorldPlan::new(SEED, scene.world.clone()).expect("plan"));
+    let inputs = Arc::new(SceneInputs::new(&scene));
+    let mut tiles = Vec::new();
+    for z in -4..4 {
+        for x in -4..4 {
+            let t = state
+                .tile_with_inputs(&inputs, plan.clone(), key(x, z), [false; 4])
+                .await;
+            tiles.push(Tile::clone(&t));
+        }
+    }
+    let (got, want) = low_pass(&tiles, &h);
+    let r = pearson(&got, &want);
+    println!("server tiles: Pearson r = {r:.4}");
+    assert!(r >= 0.95, "correlation {r:.4} < 0.95");
 }
