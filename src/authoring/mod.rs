@@ -44,6 +44,8 @@
 //!   two-pass regularisation.
 //! - [`spec_tools`]: the parameter types and limits of the fitting and import tools.
 //! - [`stats`]: readouts (elevation, slope) over a point, polyline or rectangle.
+//! - [`sketch`]: issue 17's coarse sketch, a PNG16 base height field replacing the large-scale
+//!   elevation over the bbox.
 //! - [`exchange`]: PNG16 heightmaps and the §3 two-channel gradient-map encoding, in and out.
 
 pub mod erosion;
@@ -56,6 +58,7 @@ pub mod nearest;
 pub mod paste;
 pub mod raster;
 pub mod region;
+pub mod sketch;
 pub mod spec;
 pub mod spec_tools;
 pub mod stats;

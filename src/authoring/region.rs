@@ -5,6 +5,7 @@ use super::grid::{Procedural, RegionGrid};
 use super::hydraulic::{droplet_seed, Droplets};
 use super::paste::{PasteSource, Placement, Warp};
 use super::raster::Canvas;
+use super::sketch::decode;
 use super::spec::{Op, RegionSpec, Shape};
 use super::spec_tools::resolve_elevations;
 use super::tensor::orientation;
@@ -333,6 +334,19 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                     first = false;
                 }
                 canvas.regularize(&current);
+            }
+            Op::Sketch {
+                png_base64,
+                min_m,
+                max_m,
+                blend_m,
+            } => {
+                let source_err = |message: String| RegionError::Source {
+                    op: index,
+                    message: format!("sketch: {message}"),
+                };
+                let img = decode(png_base64, *min_m, *max_m).map_err(source_err)?;
+                canvas.sketch(plan, &img, *blend_m);
             }
         }
         solved = matches!(op, Op::Freeze { .. });

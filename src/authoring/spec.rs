@@ -371,6 +371,20 @@ pub enum Op {
     /// Dirichlet constraints are dropped (frozen samples stay), as they are now part of the
     /// gradient field. Later operations edit that field.
     Regularize {},
+    /// The coarse sketch ([`super::sketch`]): a PNG16 base height field over the whole `bbox`
+    /// (corner pixels on its corners) replacing the world's large-scale elevation there, tapered
+    /// to the world's over `blend_m` inside the bbox edge; the world's detail stays (soft).
+    Sketch {
+        /// A 16-bit greyscale PNG of 2 to 1025 pixels a side, base64 (standard, padded).
+        png_base64: String,
+        /// Elevation of value 0, metres.
+        min_m: f64,
+        /// Elevation of value 65535, metres.
+        max_m: f64,
+        /// Width of the taper inside the bbox edge, metres.
+        #[serde(default)]
+        blend_m: f64,
+    },
 }
 
 fn default_warp_wavelength() -> f64 {
@@ -805,6 +819,17 @@ impl RegionSpec {
                     detail,
                 } => validate_network(&at(""), nodes, edges, *detail)?,
                 Op::Regularize {} => {}
+                Op::Sketch {
+                    png_base64,
+                    min_m,
+                    max_m,
+                    blend_m,
+                } => super::sketch::validate(
+                    &at(""),
+                    (png_base64, *min_m, *max_m, *blend_m),
+                    self.min,
+                    self.max,
+                )?,
             }
         }
         Ok(())
