@@ -206,8 +206,7 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
     let theirs = n as f64 / start.elapsed().as_secs_f64();
     black_box(acc);
     let ratio = ours / theirs;
-    let fnl_tile_ms = 4225.0 / theirs * 1e3;
-    earth_tiles(args, fnl_tile_ms)?;
+    earth_tiles(args)?;
     emit(
         args,
         json!({"bench":"tiles","figure":"fbm","octaves":fractal.octaves.len(),"warped":fractal.warp.is_some(),
@@ -226,7 +225,7 @@ fn tiles(args: &BenchArgs) -> anyhow::Result<()> {
 /// Issue 17's cost figures: `earth-1` tiles at LOD 0 (the same strip of keys as issue 2's, plus
 /// a strip in the mountains) against fastnoise-lite's time for one tile's worth of 8-octave fBm,
 /// and coarse LODs against LOD 0.
-fn earth_tiles(args: &BenchArgs, fnl_tile_ms: f64) -> anyhow::Result<()> {
+fn earth_tiles(args: &BenchArgs) -> anyhow::Result<()> {
     let plan = WorldPlan::new(7, WorldParams::default())?;
     let n = args.tiles.max(16);
     let strip = |lod: u32, x0: i64, z0: i64| -> Vec<TileKey> {
@@ -238,17 +237,44 @@ fn earth_tiles(args: &BenchArgs, fnl_tile_ms: f64) -> anyhow::Result<()> {
             })
             .collect()
     };
-    let lod0 = ms_per_tile(&plan, &strip(0, -40, 20));
-    // Mountains around (110 km, 0) at LOD 0: tile 1 720 is at x = 110 km.
-    let mountains = ms_per_tile(&plan, &strip(0, 1700, -20));
-    let ratio = lod0.max(mountains) / fnl_tile_ms;
+    // The machine is shared and noisy: earth tiles and fastnoise-lite's 4 225 samples are timed
+    // in alternation, five rounds, and the ratio is the median of the rounds' ratios.
+    let (plains, peaks) = (strip(0, -40, 20), strip(0, 1700, -20));
+    let mut fnl = fastnoise_lite::FastNoiseLite::with_seed(7);
+    fnl.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
+    fnl.set_fractal_type(Some(fastnoise_lite::FractalType::FBm));
+    fnl.set_fractal_octaves(Some(8));
+    fnl.set_frequency(Some(1.0 / 1200.0));
+    let fnl_ms = |rounds: usize| {
+        let start = Instant::now();
+        let mut acc = 0.0f32;
+        for r in 0..rounds {
+            for i in 0..4225 {
+                acc += fnl.get_noise_2d((i % 65) as f32 * 0.75 + r as f32, (i / 65) as f32 * 0.75);
+            }
+        }
+        black_box(acc);
+        start.elapsed().as_secs_f64() * 1e3 / rounds as f64
+    };
+    let (mut ratios, mut lod0s, mut peak_ms, mut fnls) = (vec![], vec![], vec![], vec![]);
+    for _ in 0..5 {
+        let a = ms_per_tile(&plan, &plains);
+        let b = ms_per_tile(&plan, &peaks);
+        let f = fnl_ms(n);
+        ratios.push(a.max(b) / f);
+        lod0s.push(a);
+        peak_ms.push(b);
+        fnls.push(f);
+    }
+    let (lod0, mountains, fnl_tile_ms) = (median(lod0s), median(peak_ms), median(fnls));
+    let ratio = median(ratios);
     emit(
         args,
         json!({"bench":"tiles","figure":"earth_lod0","ms_per_tile":lod0,"ms_per_mountain_tile":mountains,
                "fastnoise_lite_ms_per_4225_samples":fnl_tile_ms,"ratio":ratio,
                "target_ratio":TARGET_EARTH_RATIO,"meets_target":ratio <= TARGET_EARTH_RATIO}),
         format!(
-            "  earth-1, one core: {lod0:.3} ms per LOD-0 tile, {mountains:.3} ms in the mountains; fastnoise-lite 4225 8-octave samples {fnl_tile_ms:.3} ms: ratio {ratio:.2} (target ≤ {TARGET_EARTH_RATIO})"
+            "  earth-1, one core: {lod0:.3} ms per LOD-0 tile, {mountains:.3} ms in the mountains; fastnoise-lite 4225 8-octave samples {fnl_tile_ms:.3} ms: ratio {ratio:.2}, median of 5 alternating rounds (target ≤ {TARGET_EARTH_RATIO})"
         ),
     );
     for lod in [3u32, 6, 9, 12] {

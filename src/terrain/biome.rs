@@ -156,6 +156,30 @@ impl BiomeMapPlan {
         value
     }
 
+    /// Algorithm 1 for many points (metres): the same winners as [`Self::nearest`], with the
+    /// seed positions of the points' bounding box hashed once when it is small enough.
+    pub fn nearest_batch(&self, xs: &[f32], zs: &[f32]) -> Vec<Nearest> {
+        let fold = |v: &[f32], f: fn(f32, f32) -> f32, init| v.iter().copied().fold(init, f);
+        let (x0, x1) = (
+            fold(xs, f32::min, f32::INFINITY),
+            fold(xs, f32::max, f32::NEG_INFINITY),
+        );
+        let (z0, z1) = (
+            fold(zs, f32::min, f32::INFINITY),
+            fold(zs, f32::max, f32::NEG_INFINITY),
+        );
+        let cache = (x0 <= x1 && z0 <= z1)
+            .then(|| SeedCache::new(self, x0, z0, x1, z1))
+            .flatten();
+        xs.iter()
+            .zip(zs)
+            .map(|(&x, &z)| match &cache {
+                Some(c) => c.nearest(self, x, z),
+                None => self.nearest(x, z),
+            })
+            .collect()
+    }
+
     /// The biome at a point in metres.
     pub fn biome_at(&self, x_m: f32, z_m: f32) -> u8 {
         self.biome_of(&self.nearest(x_m, z_m))

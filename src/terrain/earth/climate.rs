@@ -63,9 +63,10 @@ fn node_biomes(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [u8]) {
     let c = &plan.climate;
     let mut elevation = vec![0.0f32; xs.len()];
     super::macro_elevation_batch(plan, xs, zs, &mut elevation);
+    let shifted: Vec<f32> = zs.iter().map(|z| z + c.latitude_offset_m).collect();
+    let nearest = c.map.nearest_batch(xs, &shifted);
     for (n, id) in out.iter_mut().enumerate() {
-        let nearest = c.map.nearest(xs[n], zs[n] + c.latitude_offset_m);
-        let warmth = c.map.value_of(&nearest);
+        let warmth = c.map.value_of(&nearest[n]);
         let v = (warmth - elevation[n].max(0.0) / c.lapse_m).clamp(0.0, 1.0);
         *id = ((v * c.count as f32) as usize).min(c.count - 1) as u8;
     }
