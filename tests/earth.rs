@@ -124,3 +124,38 @@ fn the_erosion_filter_carves_the_mountains_and_nothing_else_changes() {
         .count();
     assert!(moved > a.heights.len() / 2, "{moved} samples carved");
 }
+
+#[test]
+fn snow_lies_lower_on_north_facing_slopes() {
+    // Mountain tiles around (110 km, 0) at LOD 6, textured with and without the snow line's
+    // aspect-and-noise shift: north-facing vertices (normal z < −0.2, the shift lowers their snow
+    // line) only gain snow, south-facing ones (z > 0.2) only lose it, and both change somewhere.
+    use strata::terrain::texture::proto_texture_batch;
+    use strata::terrain::world::material;
+    use strata::terrain::{synthesize, TileKey};
+    let p = plan();
+    let e = p.earth.as_ref().expect("an earth-1 plan");
+    let (mut gained, mut lost) = (0usize, 0usize);
+    for x in 16..36 {
+        for z in -6..6 {
+            let t = synthesize(&p, TileKey { lod: 6, x, z });
+            let ny: Vec<f32> = t.normals.iter().map(|n| n[1]).collect();
+            let shift = earth::snow_shift(e, t.key, t.spacing_m, &t.normals);
+            let mut plain = vec![0u8; t.heights.len()];
+            proto_texture_batch(&p.texture, &t.heights, &ny, &t.weights, &[], &mut plain);
+            for v in 0..t.heights.len() {
+                let (was, is) = (plain[v] == material::SNOW, t.materials[v] == material::SNOW);
+                let nz = t.normals[v][2];
+                if nz < -0.2 && shift[v] < 0.0 {
+                    assert!(is || !was, "a north-facing vertex lost its snow");
+                    gained += (is && !was) as usize;
+                }
+                if nz > 0.2 && shift[v] > 0.0 {
+                    assert!(was || !is, "a south-facing vertex gained snow");
+                    lost += (was && !is) as usize;
+                }
+            }
+        }
+    }
+    assert!(gained > 50 && lost > 50, "gained {gained}, lost {lost}");
+}

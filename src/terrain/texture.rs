@@ -106,7 +106,8 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
 const BLOCK: usize = 64;
 
 /// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`. `weights` is
-/// vertex-major with `k` biomes.
+/// vertex-major with `k` biomes; `snow_shift` (metres per vertex, or empty for none) moves each
+/// vertex's snow line, as `earth-1` does by aspect and noise.
 ///
 /// Works in blocks of [`BLOCK`] vertices: the biome-weighted snow line, the four smooth steps and
 /// `rest` as fixed-length rows, then one compare-and-select row per material in id order, so every
@@ -118,12 +119,17 @@ pub fn proto_texture_batch(
     heights: &[f32],
     normal_y: &[f32],
     weights: &[f32],
+    snow_shift: &[f32],
     out: &mut [u8],
 ) {
     let k = plan.ground.len();
     let n = heights.len();
     assert!(
-        normal_y.len() == n && out.len() == n && weights.len() == n * k && k <= MAX_BIOMES,
+        normal_y.len() == n
+            && out.len() == n
+            && weights.len() == n * k
+            && (snow_shift.is_empty() || snow_shift.len() == n)
+            && k <= MAX_BIOMES,
         "proto_texture_batch: sizes"
     );
     // A tile inside one biome (weights exactly one-hot everywhere): `0 + 1·x` is `x` and `0·x`
@@ -162,6 +168,12 @@ pub fn proto_texture_batch(
                         line[v] += wt[b][v] * l;
                     }
                 }
+            }
+        }
+        if !snow_shift.is_empty() {
+            let shift = &snow_shift[blk * BLOCK..blk * BLOCK + len];
+            for (l, d) in line.iter_mut().zip(shift) {
+                *l += d;
             }
         }
         let mut wet = [0.0f32; BLOCK];
@@ -276,7 +288,7 @@ mod tests {
         case: &str,
     ) -> Vec<u8> {
         let mut out = vec![0u8; heights.len()];
-        proto_texture_batch(p, heights, ny, weights, &mut out);
+        proto_texture_batch(p, heights, ny, weights, &[], &mut out);
         for v in 0..heights.len() {
             let s = Surface {
                 height_m: heights[v],

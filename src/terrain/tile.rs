@@ -269,7 +269,18 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         }
     }
     let mut materials = vec![0u8; TILE_VERTEX_COUNT];
-    proto_texture_batch(&plan.texture, &heights, &normal_y, &weights, &mut materials);
+    let snow_shift = match &plan.earth {
+        Some(e) => super::earth::snow_shift(e, key, spacing, &normals),
+        None => Vec::new(),
+    };
+    proto_texture_batch(
+        &plan.texture,
+        &heights,
+        &normal_y,
+        &weights,
+        &snow_shift,
+        &mut materials,
+    );
     let water_depth = heights
         .iter()
         .map(|h| (plan.params.sea_level_m - h).max(0.0))

@@ -176,6 +176,8 @@ pub struct EarthPlan {
     pub roughness: Vec<f32>,
     /// `1 / A_max`: the inverse of the largest relief amplitude, 1/metres.
     pub inv_relief_max: f32,
+    /// Stream seed of the snow line's noise.
+    pub snow_seed: u32,
 }
 
 fn octaves(
@@ -341,8 +343,44 @@ impl EarthPlan {
             erosion,
             roughness,
             inv_relief_max: (1.0 / a_max) as f32,
+            snow_seed: stream(seed, purpose::EARTH, 300),
         }
     }
+}
+
+/// How far north-facing slopes pull the snow line down (and south-facing ones push it up), per
+/// unit of the normal's horizontal z component, metres.
+pub const SNOW_ASPECT_M: f32 = 350.0;
+/// Amplitude of the snow line's noise, metres (value noise on a 300 m lattice).
+pub const SNOW_NOISE_M: f32 = 120.0;
+/// Lattice spacing of the snow line's noise, metres.
+const SNOW_NOISE_SCALE_M: f32 = 300.0;
+
+/// Per-vertex shift of the snow line (metres) of tile `key`: lower on slopes facing north
+/// (−z, where the normal's z component is negative) and higher facing south, by
+/// [`SNOW_ASPECT_M`] times that component, plus value noise of [`SNOW_NOISE_M`] so the snow
+/// edge is ragged. A function of the vertex's world position and normal, so tiles agree on
+/// shared vertices. (Steep slopes already shed snow: rock wins over snow in the texturing.)
+pub fn snow_shift(
+    plan: &EarthPlan,
+    key: super::tile::TileKey,
+    spacing_m: f32,
+    normals: &[[f32; 3]],
+) -> Vec<f32> {
+    let n = super::plan::TILE_VERTS;
+    let seed = plan.snow_seed;
+    normals
+        .iter()
+        .enumerate()
+        .map(|(v, nrm)| {
+            let gx = key.x * super::plan::TILE_QUADS + (v % n) as i64;
+            let gz = key.z * super::plan::TILE_QUADS + (v / n) as i64;
+            let x = gx as f32 * spacing_m / SNOW_NOISE_SCALE_M;
+            let z = gz as f32 * spacing_m / SNOW_NOISE_SCALE_M;
+            let noise = super::noise::lattice(x, z, seed);
+            SNOW_ASPECT_M * nrm[2] + SNOW_NOISE_M * noise
+        })
+        .collect()
 }
 
 /// Large-scale elevation (continent and mean mountain relief, metres) at world positions, for

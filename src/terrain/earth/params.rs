@@ -57,7 +57,7 @@ pub struct EarthParams {
     /// the equator.
     pub latitude_offset_m: f32,
     /// Height at which the climate is one biome colder, metres (the temperature lapse, in units
-    /// of the pole-to-equator range: 6 000 m means a 2 km mountain is a third of the way to the
+    /// of the pole-to-equator range: 10 000 m means a 2 km mountain is a fifth of the way to the
     /// pole).
     pub lapse_m: f32,
 }
@@ -86,7 +86,7 @@ impl Default for EarthParams {
             gully_scale_m: 8000.0,
             gully_octaves: 6,
             latitude_offset_m: 1_024_000.0,
-            lapse_m: 6000.0,
+            lapse_m: 10_000.0,
         }
     }
 }
