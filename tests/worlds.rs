@@ -1070,7 +1070,9 @@ fn scene_schema_describes_what_the_server_accepts() {
     full["regions"] = json!([{"id": "regions-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "samples": 65, "ops": [{"op": "elevation", "shape": {"point": [0.0, 1.0]}, "elevation_m": 3.0, "radius_m": 1.0},
             {"op": "sketch", "png_base64": "iVBORw0KGgoAAAANSUhEUgAAAAQAAAAEEAAAAADcCh3hAAAALElEQVR42mNgYPBTOK3w/z8DA0PsgVcJpxUY5B1KDU4rzHEASpQa9CwoNQAA3DMMWSByqQoAAAAASUVORK5CYII=",
-             "min_m": -20.0, "max_m": 30.0, "blend_m": 1.0}]}]);
+             "min_m": -20.0, "max_m": 30.0, "blend_m": 1.0},
+            {"op": "basis", "png_base64": "iVBORw0KGgoAAAANSUhEUgAAAAQAAAAECAAAAACMmsGiAAAAEElEQVR42mP438BQz4BKAABTxAf5l+Fu2QAAAABJRU5ErkJggg==",
+             "period_m": 4.0, "amplitude_m": 1.0, "weight": 0.5, "blend_m": 0.5}]}]);
     // So are volume regions (issue 5): the vertical extent, grid spacing and primitives.
     full["volumes"] = json!([{"id": "volumes-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "y_m": [0.0, 8.0], "spacing_m": 1.0, "dead_zone_m": 2.0, "curves": [], "meshes": [],

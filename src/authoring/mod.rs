@@ -46,8 +46,11 @@
 //! - [`stats`]: readouts (elevation, slope) over a point, polyline or rectangle.
 //! - [`sketch`]: issue 17's coarse sketch, a PNG16 base height field replacing the large-scale
 //!   elevation over the bbox.
+//! - [`basis`]: Schneider §3 basis functions, tileable greyscale images replacing the noise
+//!   lattice in the relief texture below their period, composed by convex weights.
 //! - [`exchange`]: PNG16 heightmaps and the §3 two-channel gradient-map encoding, in and out.
 
+pub mod basis;
 pub mod erosion;
 pub mod exchange;
 pub mod fitting;

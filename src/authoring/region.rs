@@ -1,6 +1,7 @@
 //! Solving a region: rasterise its operations, reconstruct the displacement, and apply it to
 //! lattice heights.
 
+use super::basis::{self, BasisOp};
 use super::grid::{Procedural, RegionGrid};
 use super::hydraulic::{droplet_seed, Droplets};
 use super::paste::{PasteSource, Placement, Warp};
@@ -106,6 +107,7 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
             Ok(report.cycles)
         };
     let mut first = true;
+    let mut basis_total: Option<Vec<f64>> = None;
     for (index, op) in spec.ops.iter().enumerate() {
         match op {
             Op::Elevation {
@@ -347,6 +349,17 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
                 };
                 let img = decode(png_base64, *min_m, *max_m).map_err(source_err)?;
                 canvas.sketch(plan, &img, *blend_m);
+            }
+            Op::Basis { .. } => {
+                let b = BasisOp::of(op).expect("a basis op");
+                let img = basis::decode(b.png_base64).map_err(|message| RegionError::Source {
+                    op: index,
+                    message: format!("basis: {message}"),
+                })?;
+                let total = basis_total.get_or_insert_with(|| {
+                    basis::total_weight(&spec.ops, &grid).expect("a basis op")
+                });
+                canvas.basis(plan, &img, &b, total);
             }
         }
         solved = matches!(op, Op::Freeze { .. });

@@ -109,7 +109,7 @@ pub fn validate(
 }
 
 /// The smoothstep taper at `p`: 0 on the bbox edge, 1 from `blend_m` inside it.
-fn taper(p: [f64; 2], min: [f64; 2], max: [f64; 2], blend_m: f64) -> f64 {
+pub(super) fn taper(p: [f64; 2], min: [f64; 2], max: [f64; 2], blend_m: f64) -> f64 {
     let inside = (p[0] - min[0])
         .min(max[0] - p[0])
         .min(p[1] - min[1])
@@ -150,7 +150,7 @@ impl Sketch {
 /// The world's heights averaged over a sketch pixel's footprint, at world positions: a
 /// summed-area table of one LOD's lattice over the bbox (the finest with at most
 /// [`MAX_LATTICE_SAMPLES`] samples, and no finer than an eighth of a pixel).
-struct LowPass {
+pub(super) struct LowPass {
     step: f64,
     gx0: i64,
     gz0: i64,
@@ -163,7 +163,7 @@ struct LowPass {
 }
 
 impl LowPass {
-    fn new(plan: &WorldPlan, min: [f64; 2], max: [f64; 2], pixel: [f64; 2]) -> Self {
+    pub(super) fn new(plan: &WorldPlan, min: [f64; 2], max: [f64; 2], pixel: [f64; 2]) -> Self {
         let half = [0.5 * pixel[0], 0.5 * pixel[1]];
         let rect = |lod: u32| {
             let step = f64::from(plan.lods[lod as usize].spacing_m);
@@ -206,7 +206,7 @@ impl LowPass {
     }
 
     /// The mean of the lattice samples within the pixel footprint centred on `p`.
-    fn at(&self, p: [f64; 2]) -> f64 {
+    pub(super) fn at(&self, p: [f64; 2]) -> f64 {
         let range = |c: f64, half: f64, g0: i64, size: usize| {
             let lo = ((c - half) / self.step).ceil() as i64 - g0;
             let hi = ((c + half) / self.step).floor() as i64 - g0;
@@ -245,7 +245,13 @@ impl Canvas {
                 w * (sketch.at(p, g.origin, g.max) - low.at(p))
             })
             .collect();
-        let inv = 1.0 / g.spacing_m;
+        self.add_target_gradient(&target);
+    }
+
+    /// Adds the gradient of `target` (heights at the samples, row-major) to the target gradient.
+    pub(super) fn add_target_gradient(&mut self, target: &[f64]) {
+        let n = self.grid.n;
+        let inv = 1.0 / self.grid.spacing_m;
         for j in 0..n {
             for i in 0..n - 1 {
                 let a = j * n + i;

@@ -385,6 +385,29 @@ pub enum Op {
         #[serde(default)]
         blend_m: f64,
     },
+    /// A basis function ([`super::basis`], Schneider §3): a tileable 8- or 16-bit greyscale
+    /// image, tiled with period `period_m` over world position and scaled to zero mean and RMS
+    /// `amplitude_m`, replacing the world's relief texture below the period with convex weight
+    /// `weight` (tapered over `blend_m` inside the bbox edge; several in a region are
+    /// renormalised to sum to at most 1, the noise keeping the rest) (soft).
+    Basis {
+        /// An 8- or 16-bit greyscale PNG of 2 to 1024 pixels a side, base64 (standard, padded).
+        png_base64: String,
+        /// Period of the tiling, metres, at least 4 region sample spacings.
+        period_m: f64,
+        /// RMS of the image's texture, metres.
+        amplitude_m: f64,
+        /// Weight of the image against the world's texture, `0..=1`.
+        #[serde(default = "default_weight")]
+        weight: f64,
+        /// Width of the taper inside the bbox edge, metres.
+        #[serde(default)]
+        blend_m: f64,
+    },
+}
+
+fn default_weight() -> f64 {
+    1.0
 }
 
 fn default_warp_wavelength() -> f64 {
@@ -830,6 +853,12 @@ impl RegionSpec {
                     self.min,
                     self.max,
                 )?,
+                Op::Basis { .. } => {
+                    let spacing = (self.max[0] - self.min[0]).max(self.max[1] - self.min[1])
+                        / (self.samples - 1) as f64;
+                    let b = super::basis::BasisOp::of(op).expect("a basis op");
+                    super::basis::validate(&at(""), &b, self.min, self.max, spacing)?;
+                }
             }
         }
         Ok(())
