@@ -4,6 +4,8 @@
 //! world's bit for bit, the low-pass above the period is kept, tiles meet bit for bit; a bad
 //! operation is refused naming the field.
 
+mod common;
+
 use base64::Engine;
 use serde_json::{json, Value};
 use std::f64::consts::TAU;
@@ -177,36 +179,6 @@ fn block_means(m: &[f64]) -> Vec<f64> {
     out
 }
 
-fn assert_seams(tiles: &[Tile]) {
-    let n = 2 * T as usize;
-    let last = TILE_VERTS - 1;
-    for tz in 0..n {
-        for tx in 0..n {
-            let t = &tiles[tz * n + tx];
-            if tx + 1 < n {
-                let e = &tiles[tz * n + tx + 1];
-                for j in 0..TILE_VERTS {
-                    assert_eq!(
-                        t.heights[j * TILE_VERTS + last].to_bits(),
-                        e.heights[j * TILE_VERTS].to_bits(),
-                        "tile ({tx}, {tz}) east edge, row {j}"
-                    );
-                }
-            }
-            if tz + 1 < n {
-                let s = &tiles[(tz + 1) * n + tx];
-                for i in 0..TILE_VERTS {
-                    assert_eq!(
-                        t.heights[last * TILE_VERTS + i].to_bits(),
-                        s.heights[i].to_bits(),
-                        "tile ({tx}, {tz}) south edge, column {i}"
-                    );
-                }
-            }
-        }
-    }
-}
-
 #[test]
 fn the_basis_function_replaces_the_texture_where_its_weight_is_high_and_nowhere_else() {
     let plan = WorldPlan::new(SEED, WorldParams::earth()).expect("plan");
@@ -255,7 +227,7 @@ fn the_basis_function_replaces_the_texture_where_its_weight_is_high_and_nowhere_
         "block means moved by {diff:.2} m"
     );
     // Seams, across the bbox edge too.
-    assert_seams(&with);
+    common::seams::assert_grid_seams(&with, 2 * T as usize);
     // Outside the bbox the tiles are the world's, bit for bit.
     for (x, z) in [(T, 0), (-T - 1, 0), (0, T), (0, -T - 1), (T, T)] {
         let a = synthesize(&plan, key(x, z), &edits);

@@ -3,6 +3,8 @@
 //! outside it are untouched and tiles meet bit for bit across its edge; a bad sketch is refused
 //! naming the field; the server's own tile path serves the sketched world.
 
+mod common;
+
 use base64::Engine;
 use serde_json::{json, Value};
 use std::sync::Arc;
@@ -233,31 +235,7 @@ fn the_low_pass_of_the_tiles_follows_the_sketch_and_tiles_meet_across_its_edge()
     // Neighbouring tiles share their edge vertices bit for bit, across the bbox edge too.
     let n = range.clone().count();
     let last = TILE_VERTS - 1;
-    for tz in 0..n {
-        for tx in 0..n {
-            let t = &tiles[tz * n + tx];
-            if tx + 1 < n {
-                let e = &tiles[tz * n + tx + 1];
-                for j in 0..TILE_VERTS {
-                    assert_eq!(
-                        t.heights[j * TILE_VERTS + last].to_bits(),
-                        e.heights[j * TILE_VERTS].to_bits(),
-                        "tile ({tx}, {tz}) east edge, row {j}"
-                    );
-                }
-            }
-            if tz + 1 < n {
-                let s = &tiles[(tz + 1) * n + tx];
-                for i in 0..TILE_VERTS {
-                    assert_eq!(
-                        t.heights[last * TILE_VERTS + i].to_bits(),
-                        s.heights[i].to_bits(),
-                        "tile ({tx}, {tz}) south edge, column {i}"
-                    );
-                }
-            }
-        }
-    }
+    common::seams::assert_grid_seams(&tiles, n);
     // Outside the bbox the tiles are the world's, bit for bit, and so is the straddling
     // tiles' edge shared with them.
     for (x, z) in [(4, 0), (-5, 0), (0, 4), (0, -5), (4, 4)] {

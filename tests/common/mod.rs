@@ -1,6 +1,6 @@
 //! Helpers shared by the integration tests: the real `strata` binary ([`start`]), requests to
 //! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
-//! quad mesh's Euler counts ([`topology`]), the arch volume element ([`arch`]), the Khronos glTF
+//! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
 //! validator ([`gltf`]) and the Node packages of the browser tests ([`js`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
@@ -10,6 +10,7 @@ pub mod columns;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
+pub mod seams;
 pub mod topology;
 
 use std::ffi::OsStr;
