@@ -1,0 +1,45 @@
+//! A world stored by the first `earth-1` (before rivers) keeps its bytes: its scene has no
+//! `world.earth.rivers`, which means no rivers, and today's server answers the tiles the old
+//! server answered, bit for bit (`tests/fixtures/earth1-world/`). New worlds get rivers.
+
+mod common;
+
+use std::path::Path;
+
+const WORLD: &str = "ef03f35e5725d0b89309b207";
+
+fn fixture(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/earth1-world")
+        .join(name)
+}
+
+#[tokio::test]
+async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes() {
+    let data = tempfile::tempdir().expect("temp dir");
+    std::fs::copy(fixture("strata.db"), data.path().join("strata.db")).expect("copy fixture");
+    let server = common::start(
+        [std::ffi::OsStr::new("--data"), data.path().as_os_str()],
+        &[],
+    );
+    let expected = std::fs::read_to_string(fixture("tiles.blake3")).expect("fixture hashes");
+    let mut checked = 0;
+    for line in expected.lines() {
+        let parts: Vec<&str> = line.split_whitespace().collect();
+        let [version, key, hash] = parts[..] else {
+            panic!("bad fixture line {line:?}");
+        };
+        let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={version}");
+        let (status, body) = strata::bench::http::http_get(&server.addr, &path)
+            .await
+            .expect("request");
+        assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
+        assert_eq!(
+            blake3::hash(&body).to_hex().as_str(),
+            hash,
+            "{path} changed its bytes"
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 13, "every fixture tile was checked");
+}
