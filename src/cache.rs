@@ -47,7 +47,7 @@ pub const DEFAULT_BUDGET_BYTES: usize = 256 << 20;
 /// Bytes counted per memory entry besides the tile itself (map slot, LRU node, `Arc` header).
 pub const ENTRY_OVERHEAD_BYTES: usize = 128;
 /// Version of the disk file layout.
-pub const DISK_FORMAT_VERSION: u32 = 2;
+pub const DISK_FORMAT_VERSION: u32 = 3;
 /// Magic at the start of a disk cache file.
 pub const DISK_MAGIC: [u8; 4] = *b"STRC";
 
@@ -508,7 +508,8 @@ const HEADER_LEN: usize = 4 + 4 + 32 + 4 + 8 + 8 + 4 + 4 + 4;
 
 /// The disk form of a tile: the header, then heights, normals (x, y, z), weights, materials,
 /// water depth, a byte saying whether the volume-override marks follow and the marks (one byte
-/// per vertex), all little-endian, then blake3 of everything before it.
+/// per vertex), a byte saying whether the water kinds follow and the kinds (one byte per vertex),
+/// all little-endian, then blake3 of everything before it.
 pub fn encode_tile(hash: &InputHash, t: &Tile) -> Vec<u8> {
     let n = t.heights.len();
     let mut out = Vec::with_capacity(HEADER_LEN + n * (4 + 12 + 1 + 4) + t.weights.len() * 4 + 32);
@@ -536,6 +537,8 @@ pub fn encode_tile(hash: &InputHash, t: &Tile) -> Vec<u8> {
     }
     out.push(u8::from(!t.volume_override.is_empty()));
     out.extend_from_slice(&t.volume_override);
+    out.push(u8::from(!t.water_kind.is_empty()));
+    out.extend_from_slice(&t.water_kind);
     let sum = blake3::hash(&out);
     out.extend_from_slice(sum.as_bytes());
     out
@@ -587,8 +590,8 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
         return Err(format!("lod {lod} or biome count {k} out of range"));
     }
     let n = TILE_VERTEX_COUNT;
-    let fixed = n * (4 + 12 + 4 * k + 1 + 4) + 1;
-    if r.bytes.len() != fixed && r.bytes.len() != fixed + n {
+    let fixed = n * (4 + 12 + 4 * k + 1 + 4) + 2;
+    if ![fixed, fixed + n, fixed + 2 * n].contains(&r.bytes.len()) {
         return Err(format!("{} payload bytes for {k} biomes", r.bytes.len()));
     }
     let heights = r.f32s(n);
@@ -601,12 +604,25 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
     let materials = r.bytes[..n].to_vec();
     r.bytes = &r.bytes[n..];
     let water_depth = r.f32s(n);
-    let marked = r.take::<1>()[0] == 1;
-    let volume_override = if marked {
-        r.bytes[..n].to_vec()
-    } else {
-        Vec::new()
+    let optional = |r: &mut Reader| -> Result<Vec<u8>, String> {
+        if r.take::<1>()[0] != 1 {
+            return Ok(Vec::new());
+        }
+        if r.bytes.len() < n {
+            return Err("a section is cut short".into());
+        }
+        let (head, rest) = r.bytes.split_at(n);
+        r.bytes = rest;
+        Ok(head.to_vec())
     };
+    let volume_override = optional(&mut r)?;
+    if r.bytes.is_empty() {
+        return Err("the water-kind flag is missing".into());
+    }
+    let water_kind = optional(&mut r)?;
+    if !r.bytes.is_empty() {
+        return Err(format!("{} bytes left over", r.bytes.len()));
+    }
     Ok(Tile {
         key: TileKey { lod, x, z },
         spacing_m,
@@ -616,6 +632,7 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
         weights,
         materials,
         water_depth,
+        water_kind,
         skirt_depth_m,
         volume_override,
     })

@@ -304,10 +304,23 @@ impl EarthKernels {
         if data.len() < n {
             bail!("read back {} heights, expected {n}", data.len());
         }
+        let mut heights: Vec<f32> = data[..n].iter().map(|&b| f32::from_bits(b)).collect();
+        if let Some(rp) = earth
+            .rivers
+            .as_ref()
+            .filter(|_| job.lod as usize <= crate::terrain::earth::rivers::MAX_CARVE_LOD)
+        {
+            // The river carve runs on the CPU after the device's heights, as `earth::field`
+            // does it.
+            let rj = crate::terrain::earth::rivers::job_for(
+                earth, rp, spacing, job.gx0, job.gz0, job.w, job.h,
+            );
+            crate::terrain::earth::carve(&rj, spacing, job, &mut heights);
+        }
         Ok(Field {
             w: job.w,
             h: job.h,
-            heights: data[..n].iter().map(|&b| f32::from_bits(b)).collect(),
+            heights,
             weights,
         })
     }

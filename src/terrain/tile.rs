@@ -205,8 +205,11 @@ pub struct Tile {
     pub weights: Vec<f32>,
     /// Proto-texturing material id per vertex (index into `MATERIALS`).
     pub materials: Vec<u8>,
-    /// Depth of water above the ground, metres (0 on land).
+    /// Depth of water above the ground, metres (0 on land): sea, lake or river.
     pub water_depth: Vec<f32>,
+    /// Kind of the water over each vertex (`earth::rivers::kind`: 0 none, 1 sea, 2 lake,
+    /// 3 river); empty in worlds without rivers, where all water is the sea.
+    pub water_kind: Vec<u8>,
     /// Depth of the skirts hanging from the four edges, metres.
     pub skirt_depth_m: f32,
     /// 1 where a volume region's box holds the vertex's ground, so volume chunks, not this
@@ -281,10 +284,20 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         &snow_shift,
         &mut materials,
     );
-    let water_depth = heights
-        .iter()
-        .map(|h| (plan.params.sea_level_m - h).max(0.0))
-        .collect();
+    let sea = plan.params.sea_level_m;
+    let (surface, water_kind) = match &plan.earth {
+        Some(e) => super::earth::tile_water(e, key, spacing, sea, &heights),
+        None => (Vec::new(), Vec::new()),
+    };
+    let water_depth = if surface.is_empty() {
+        heights.iter().map(|h| (sea - h).max(0.0)).collect()
+    } else {
+        surface
+            .iter()
+            .zip(&heights)
+            .map(|(s, h)| (s - h).max(0.0))
+            .collect()
+    };
     let skirt_depth_m = skirt_depth(&heights, spacing);
     Tile {
         key,
@@ -295,6 +308,7 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         weights,
         materials,
         water_depth,
+        water_kind,
         skirt_depth_m,
         volume_override: Vec::new(),
     }

@@ -38,10 +38,11 @@
 pub mod climate;
 pub(crate) mod kernel;
 pub mod params;
+pub mod rivers;
 pub mod trig;
 
 pub use kernel::LANES;
-pub use params::{BiomeRelief, EarthParams};
+pub use params::{BiomeRelief, EarthParams, RiverParams};
 
 use super::biome::BiomeMapPlan;
 use super::hash::{purpose, stream, unit};
@@ -178,6 +179,8 @@ pub struct EarthPlan {
     pub inv_relief_max: f32,
     /// Stream seed of the snow line's noise.
     pub snow_seed: u32,
+    /// Rivers and lakes, when the world has them enabled.
+    pub rivers: Option<rivers::RiverPlan>,
 }
 
 fn octaves(
@@ -336,6 +339,17 @@ impl EarthPlan {
             e.lapse_m,
             params.biomes.len(),
         );
+        let mean_erosion = erosion.iter().sum::<f32>() / erosion.len().max(1) as f32;
+        let rivers = e.rivers.as_ref().filter(|r| r.enabled).map(|r| {
+            rivers::RiverPlan::new(seed, r, params.cell_m, params.sea_level_m, mean_erosion)
+        });
+        let mut lods: Vec<EarthLod> = lods;
+        if rivers.is_some() {
+            // LODs that skip the carve differ from LOD 0 by at most what it removes.
+            for l in lods.iter_mut().skip(rivers::MAX_CARVE_LOD + 1) {
+                l.bound_m += rivers::CARVE_MAX_M;
+            }
+        }
         Self {
             macro_plan,
             lods,
@@ -344,6 +358,7 @@ impl EarthPlan {
             roughness,
             inv_relief_max: (1.0 / a_max) as f32,
             snow_seed: stream(seed, purpose::EARTH, 300),
+            rivers,
         }
     }
 }
@@ -435,10 +450,63 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         kernel::heights(plan, lod as usize, &x, &z, &ero, &rough, &mut out);
         heights[start..start + m].copy_from_slice(&out[..m]);
     }
+    if let Some(rp) = plan
+        .rivers
+        .as_ref()
+        .filter(|_| lod as usize <= rivers::MAX_CARVE_LOD)
+    {
+        let rj = rivers::job_for(plan, rp, spacing_m, gx0, gz0, w, h);
+        carve(&rj, spacing_m, job, &mut heights);
+    }
     Field {
         w,
         h,
         heights,
         weights,
     }
+}
+
+/// Carves the rivers of `rj` into a job's heights (the CPU reference of the carve).
+pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
+    for (v, h) in heights.iter_mut().enumerate() {
+        let (i, j) = ((v % job.w) as i64, (v / job.w) as i64);
+        let x = (job.gx0 + i) as f32 * spacing_m;
+        let z = (job.gz0 + j) as f32 * spacing_m;
+        *h = rj.carve_one(x, z, *h);
+    }
+}
+
+/// Water surface (metres) and kind ([`rivers::kind`]) of tile `key`'s vertices, from their
+/// final heights; empty when the world has no rivers (the water is the sea's, from the height).
+pub fn tile_water(
+    plan: &EarthPlan,
+    key: super::tile::TileKey,
+    spacing_m: f32,
+    sea_level_m: f32,
+    heights: &[f32],
+) -> (Vec<f32>, Vec<u8>) {
+    let Some(rp) = &plan.rivers else {
+        return (Vec::new(), Vec::new());
+    };
+    let n = super::plan::TILE_VERTS;
+    let (gx0, gz0) = (
+        key.x * super::plan::TILE_QUADS,
+        key.z * super::plan::TILE_QUADS,
+    );
+    let carved = key.lod as usize <= rivers::MAX_CARVE_LOD;
+    let rj = if carved {
+        rivers::job_for(plan, rp, spacing_m, gx0, gz0, n, n)
+    } else {
+        rivers::RiverJob::default()
+    };
+    let mut surface = Vec::with_capacity(heights.len());
+    let mut kinds = Vec::with_capacity(heights.len());
+    for (v, &h) in heights.iter().enumerate() {
+        let x = (gx0 + (v % n) as i64) as f32 * spacing_m;
+        let z = (gz0 + (v / n) as i64) as f32 * spacing_m;
+        let (s, k) = rivers::water_at(&rj, sea_level_m, x, z, h);
+        surface.push(s);
+        kinds.push(k);
+    }
+    (surface, kinds)
 }

@@ -60,6 +60,58 @@ pub struct EarthParams {
     /// of the pole-to-equator range: 10 000 m means a 2 km mountain is a fifth of the way to the
     /// pole).
     pub lapse_m: f32,
+    /// Rivers and lakes ([`super::rivers`]); absent in worlds stored before rivers existed,
+    /// which keep their river-free bytes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rivers: Option<RiverParams>,
+}
+
+/// The river network of an `earth-1` world.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RiverParams {
+    /// Whether rivers and lakes are generated (false: the world stays river-free).
+    pub enabled: bool,
+    /// Spacing of the drainage nodes, metres: tributaries join about this far apart, in
+    /// [256, 8192].
+    pub spacing_m: f32,
+    /// River density: channels hold water from a basin of `8 / density` nodes, in [0.1, 4].
+    pub density: f32,
+    /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
+    pub incision_m: f32,
+}
+
+impl Default for RiverParams {
+    fn default() -> Self {
+        Self {
+            enabled: true,
+            spacing_m: 1024.0,
+            density: 1.0,
+            incision_m: 60.0,
+        }
+    }
+}
+
+impl RiverParams {
+    /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
+    pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
+        let m = "must be in";
+        check(
+            within(self.spacing_m, 256.0_f32.max(4.0 * cell_m), 8192.0),
+            "rivers.spacing_m",
+            &format!("{m} [max(256, 4 vertex spacings), 8192]"),
+        )?;
+        check(
+            within(self.density, 0.1, 4.0),
+            "rivers.density",
+            &format!("{m} [0.1, 4]"),
+        )?;
+        check(
+            within(self.incision_m, 0.0, 300.0),
+            "rivers.incision_m",
+            &format!("{m} [0, 300]"),
+        )
+    }
 }
 
 impl Default for EarthParams {
@@ -87,6 +139,7 @@ impl Default for EarthParams {
             gully_octaves: 6,
             latitude_offset_m: 1_024_000.0,
             lapse_m: 10_000.0,
+            rivers: Some(RiverParams::default()),
         }
     }
 }
@@ -216,6 +269,9 @@ impl EarthParams {
             "lapse_m",
             &format!("{m} [100, 1e6]"),
         )?;
+        if let Some(r) = &self.rivers {
+            r.validate(cell_m)?;
+        }
         Ok(())
     }
 }

@@ -1,0 +1,379 @@
+//! River pieces and the carve: the valley profile every sample is cut to, and the water over it
+//! (module docs of [`super`], step 6).
+
+use super::super::EarthPlan;
+use super::network::{Network, Node};
+use super::{channel, kind, RiverPlan, CARVE_MAX_M, PIECES, Q_MAX, REACH, VALLEY_MIN};
+
+/// One straight piece of a river's centre line, with the profile of its valley. Twelve `f32`,
+/// the layout of the WGSL twin's storage array.
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+#[repr(C)]
+pub struct Piece {
+    /// Upstream end, metres.
+    pub ax: f32,
+    /// Upstream end, metres.
+    pub az: f32,
+    /// Downstream end, metres.
+    pub bx: f32,
+    /// Downstream end, metres.
+    pub bz: f32,
+    /// Water level at the upstream end, metres.
+    pub wa: f32,
+    /// Water level at the downstream end, metres.
+    pub wb: f32,
+    /// Channel half-width, metres (0: a dry valley).
+    pub half_width: f32,
+    /// Channel depth below the water, metres.
+    pub depth: f32,
+    /// Half-width of the valley, metres: beyond it the piece changes nothing.
+    pub valley: f32,
+    /// 1 when the channel holds water.
+    pub wet: f32,
+    /// Padding (the WGSL array's stride is 48 bytes).
+    pub pad: [f32; 2],
+}
+
+/// The rivers and lakes that can touch a rectangle of samples: pieces binned on a grid, and the
+/// lake levels of the nodes around it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RiverJob {
+    /// Pieces.
+    pub pieces: Vec<Piece>,
+    /// West edge of the bin grid, metres.
+    pub x0: f32,
+    /// North edge of the bin grid, metres.
+    pub z0: f32,
+    /// Bin side, metres.
+    pub bin_m: f32,
+    /// Bins per row.
+    pub bins_w: usize,
+    /// Bin rows.
+    pub bins_h: usize,
+    /// `bins_w · bins_h + 1` offsets into `bin_pieces` (CSR).
+    pub bin_start: Vec<u32>,
+    /// Piece indices of each bin, in piece order.
+    pub bin_pieces: Vec<u32>,
+    /// Node spacing, metres.
+    pub spacing_m: f32,
+    /// First node column of `lakes`.
+    pub li0: i64,
+    /// First node row of `lakes`.
+    pub lk0: i64,
+    /// Node columns of `lakes`.
+    pub lakes_w: usize,
+    /// Lake level of each node of the window (NaN: none), row-major.
+    pub lakes: Vec<f32>,
+}
+
+/// Catmull–Rom point of the uniform spline through `p0..p3` at `t`.
+fn catmull_rom(p: [(f32, f32); 4], t: f32) -> (f32, f32) {
+    let (t2, t3) = (t * t, t * t * t);
+    let f = |a: f32, b: f32, c: f32, d: f32| {
+        0.5 * (2.0 * b
+            + (c - a) * t
+            + (2.0 * a - 5.0 * b + 4.0 * c - d) * t2
+            + (3.0 * b - a - 3.0 * c + d) * t3)
+    };
+    (
+        f(p[0].0, p[1].0, p[2].0, p[3].0),
+        f(p[0].1, p[1].1, p[2].1, p[3].1),
+    )
+}
+
+/// One river edge of the network: from a node to its downstream neighbour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Edge {
+    /// The upstream node.
+    pub from: Node,
+    /// The downstream node.
+    pub to: Node,
+    /// The centre line, `PIECES + 1` points (x, z, water level), metres.
+    pub points: Vec<[f32; 3]>,
+}
+
+impl Network<'_> {
+    /// The edge out of node `(i, k)`, if it drains somewhere.
+    pub fn edge(&mut self, i: i64, k: i64) -> Option<Edge> {
+        let from = self.node(i, k);
+        let (pi, pk) = from.down?;
+        let to = self.node(pi, pk);
+        // The main upstream neighbour: the largest discharge, first in OFFSETS order on ties.
+        let mut main: Option<(u32, (i64, i64))> = None;
+        for u in self.upstream(i, k) {
+            let q = self.q(u.0, u.1);
+            if main.is_none_or(|(mq, _)| q > mq) {
+                main = Some((q, u));
+            }
+        }
+        let p1 = (from.x, from.z);
+        let p2 = (to.x, to.z);
+        let p0 = match main {
+            Some((_, (a, b))) => self.plan.position(a, b),
+            None => (2.0 * p1.0 - p2.0, 2.0 * p1.1 - p2.1),
+        };
+        let p3 = match to.down {
+            Some((a, b)) => self.plan.position(a, b),
+            None => (2.0 * p2.0 - p1.0, 2.0 * p2.1 - p1.1),
+        };
+        // A valley begins at a node no carved edge enters: its water starts at the node's
+        // height, so the valley fades in instead of starting as a step.
+        let source = main.is_none_or(|(mq, _)| mq < 2);
+        let w0 = if source { from.h.max(from.w) } else { from.w };
+        let points = (0..=PIECES)
+            .map(|j| {
+                let t = j as f32 / PIECES as f32;
+                let (x, z) = if j == 0 {
+                    p1
+                } else if j == PIECES {
+                    p2
+                } else {
+                    catmull_rom([p0, p1, p2, p3], t)
+                };
+                [x, z, w0 + (to.w - w0) * t]
+            })
+            .collect();
+        Some(Edge { from, to, points })
+    }
+
+    /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
+    pub fn job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> RiverJob {
+        let s = self.plan.spacing_m;
+        let reach = REACH * s;
+        // Nodes whose edges can come within reach: the curve stays within a spacing of its
+        // nodes' cells (jitter and Catmull–Rom overshoot are both below half a spacing).
+        let margin = reach + 2.0 * s;
+        let ni0 = ((x0 - margin) / s).floor() as i64;
+        let ni1 = ((x1 + margin) / s).floor() as i64;
+        let nk0 = ((z0 - margin) / s).floor() as i64;
+        let nk1 = ((z1 + margin) / s).floor() as i64;
+        let mut pieces = Vec::new();
+        for k in nk0..=nk1 {
+            for i in ni0..=ni1 {
+                let q = self.q(i, k);
+                if q < 2 {
+                    continue;
+                }
+                let Some(edge) = self.edge(i, k) else {
+                    continue;
+                };
+                if edge.from.sea {
+                    continue;
+                }
+                let wet = q >= self.plan.wet_q;
+                let (hw, depth) = if wet { channel(q) } else { (0.0, 0.0) };
+                // Valleys widen with the discharge, from VALLEY_MIN to the reach.
+                let grow = libm::log2f(q as f32) / libm::log2f(Q_MAX as f32);
+                let valley = VALLEY_MIN + (reach - VALLEY_MIN) * grow;
+                for p in edge.points.windows(2) {
+                    pieces.push(Piece {
+                        ax: p[0][0],
+                        az: p[0][1],
+                        bx: p[1][0],
+                        bz: p[1][1],
+                        wa: p[0][2],
+                        wb: p[1][2],
+                        half_width: hw,
+                        depth,
+                        valley,
+                        wet: if wet { 1.0 } else { 0.0 },
+                        pad: [0.0; 2],
+                    });
+                }
+            }
+        }
+        // Bins of one node spacing over the rectangle; a piece goes into every bin its box,
+        // grown by its reach, overlaps.
+        let bin_m = s;
+        let bins_w = (((x1 - x0) / bin_m).floor() as usize) + 1;
+        let bins_h = (((z1 - z0) / bin_m).floor() as usize) + 1;
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); bins_w * bins_h];
+        for (pi, p) in pieces.iter().enumerate() {
+            let bx0 = ((p.ax.min(p.bx) - p.valley - x0) / bin_m).floor();
+            let bx1 = ((p.ax.max(p.bx) + p.valley - x0) / bin_m).floor();
+            let bz0 = ((p.az.min(p.bz) - p.valley - z0) / bin_m).floor();
+            let bz1 = ((p.az.max(p.bz) + p.valley - z0) / bin_m).floor();
+            if bx1 < 0.0 || bz1 < 0.0 || bx0 >= bins_w as f32 || bz0 >= bins_h as f32 {
+                continue;
+            }
+            for bz in bz0.max(0.0) as usize..=(bz1 as usize).min(bins_h - 1) {
+                for bx in bx0.max(0.0) as usize..=(bx1 as usize).min(bins_w - 1) {
+                    lists[bz * bins_w + bx].push(pi as u32);
+                }
+            }
+        }
+        let mut bin_start = Vec::with_capacity(lists.len() + 1);
+        let mut bin_pieces = Vec::new();
+        for l in &lists {
+            bin_start.push(bin_pieces.len() as u32);
+            bin_pieces.extend_from_slice(l);
+        }
+        bin_start.push(bin_pieces.len() as u32);
+        // Lake levels of the nodes around the rectangle (a vertex reads the four around it).
+        let li0 = ((x0 / s) - 0.5).floor() as i64 - 1;
+        let li1 = ((x1 / s) - 0.5).floor() as i64 + 2;
+        let lk0 = ((z0 / s) - 0.5).floor() as i64 - 1;
+        let lk1 = ((z1 / s) - 0.5).floor() as i64 + 2;
+        let lakes_w = (li1 - li0 + 1) as usize;
+        let mut lakes = Vec::with_capacity(lakes_w * (lk1 - lk0 + 1) as usize);
+        for k in lk0..=lk1 {
+            for i in li0..=li1 {
+                lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
+            }
+        }
+        RiverJob {
+            pieces,
+            x0,
+            z0,
+            bin_m,
+            bins_w,
+            bins_h,
+            bin_start,
+            bin_pieces,
+            spacing_m: s,
+            li0,
+            lk0,
+            lakes_w,
+            lakes,
+        }
+    }
+}
+
+#[inline(always)]
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Piece `p` applied to a sample at `(x, z)` of height `h`: the carved height and, when the
+/// sample lies in a wet channel, the water level there.
+///
+/// Above the water `W` the height keeps its excess scaled by `g = smoothstep(b, V, d)` (`b` the
+/// channel half-width, `V` the valley half-width, `d` the distance to the piece), so the valley
+/// keeps the terrain's detail, its floor flattens towards the channel and its walls are as steep
+/// as the relief around it; below `W` nothing is raised. Inside the channel the ground is cut to
+/// the parabola `W − c·(1 − (d/b)²)`. Beyond `V` the height is returned unchanged, bit for bit.
+#[inline(always)]
+pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
+    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
+    let len2 = abx * abx + abz * abz + 1e-6;
+    let t = (((x - p.ax) * abx + (z - p.az) * abz) / len2).clamp(0.0, 1.0);
+    let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
+    let d = (dx * dx + dz * dz).sqrt();
+    if d >= p.valley {
+        return (h, None);
+    }
+    let w = p.wa + (p.wb - p.wa) * t;
+    let g = smoothstep(p.half_width, p.valley, d);
+    let mut c = if h > w { w + (h - w) * g } else { h };
+    let mut water = None;
+    if d < p.half_width {
+        let r = d / p.half_width;
+        c = c.min(w - p.depth * (1.0 - r * r));
+        if p.wet > 0.0 {
+            water = Some(w);
+        }
+    }
+    (c, water)
+}
+
+impl RiverJob {
+    fn bin(&self, x: f32, z: f32) -> &[u32] {
+        let bx = ((x - self.x0) / self.bin_m).floor();
+        let bz = ((z - self.z0) / self.bin_m).floor();
+        if bx < 0.0 || bz < 0.0 || bx >= self.bins_w as f32 || bz >= self.bins_h as f32 {
+            return &[];
+        }
+        let b = bz as usize * self.bins_w + bx as usize;
+        &self.bin_pieces[self.bin_start[b] as usize..self.bin_start[b + 1] as usize]
+    }
+
+    fn pieces_at(&self, x: f32, z: f32) -> impl Iterator<Item = &Piece> {
+        self.bin(x, z).iter().map(|&i| &self.pieces[i as usize])
+    }
+
+    /// The carved height of a sample at `(x, z)` with height `h`: the lowest of the pieces'
+    /// carves ([`profile`]), removing at most [`CARVE_MAX_M`].
+    pub fn carve_one(&self, x: f32, z: f32, h: f32) -> f32 {
+        let mut c = h;
+        for p in self.pieces_at(x, z) {
+            c = c.min(profile(p, x, z, h).0);
+        }
+        c.max(h - CARVE_MAX_M)
+    }
+
+    /// The river level over a sample at `(x, z)` whose carved height is `carved`, if it lies in
+    /// a wet channel below the water (the highest such level).
+    pub fn river_level(&self, x: f32, z: f32, carved: f32) -> Option<f32> {
+        let mut best: Option<f32> = None;
+        for p in self.pieces_at(x, z) {
+            if let (_, Some(w)) = profile(p, x, z, carved) {
+                if carved < w {
+                    best = Some(best.map_or(w, |o| o.max(w)));
+                }
+            }
+        }
+        best
+    }
+
+    /// Lake level over `(x, z)`: the highest of the four nodes around it.
+    pub fn lake_level(&self, x: f32, z: f32) -> Option<f32> {
+        let i = ((x / self.spacing_m) - 0.5).floor() as i64 - self.li0;
+        let k = ((z / self.spacing_m) - 0.5).floor() as i64 - self.lk0;
+        let rows = self.lakes.len() / self.lakes_w.max(1);
+        let mut best: Option<f32> = None;
+        for (di, dk) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+            let (a, b) = (i + di, k + dk);
+            if a < 0 || b < 0 || a as usize >= self.lakes_w || b as usize >= rows {
+                continue;
+            }
+            let l = self.lakes[b as usize * self.lakes_w + a as usize];
+            if !l.is_nan() {
+                best = Some(best.map_or(l, |o| o.max(l)));
+            }
+        }
+        best
+    }
+}
+
+/// The job of the samples `(gx0 + i, gz0 + j)·spacing` of a field (its world rectangle).
+pub fn job_for(
+    earth: &EarthPlan,
+    plan: &RiverPlan,
+    spacing_m: f32,
+    gx0: i64,
+    gz0: i64,
+    w: usize,
+    h: usize,
+) -> RiverJob {
+    let x0 = gx0 as f32 * spacing_m;
+    let z0 = gz0 as f32 * spacing_m;
+    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
+    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    Network::new(earth, plan).job(x0, z0, x1, z1)
+}
+
+/// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height
+/// (the highest of the sea, a lake and a river over it).
+pub fn water_at(job: &RiverJob, sea_level_m: f32, x: f32, z: f32, carved: f32) -> (f32, u8) {
+    let river = job.river_level(x, z, carved);
+    let mut surface = carved;
+    let mut k = kind::NONE;
+    if carved < sea_level_m {
+        surface = sea_level_m;
+        k = kind::SEA;
+    }
+    if let Some(w) = river {
+        if w > surface {
+            surface = w;
+            k = kind::RIVER;
+        }
+    }
+    if let Some(l) = job.lake_level(x, z) {
+        if l > carved && l > surface {
+            surface = l;
+            k = kind::LAKE;
+        }
+    }
+    (surface, k)
+}

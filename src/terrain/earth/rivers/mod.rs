@@ -1,0 +1,223 @@
+//! Rivers and lakes of an `earth-1` world: a drainage network on a world-anchored node lattice,
+//! evaluated on demand with a bounded dependency radius.
+//!
+//! Génevaux et al. (2013) build terrain from a hydrology-first river graph over a bounded map;
+//! strata's world is unbounded and every tile must be produced alone, in any order, on any node.
+//! So the network here is a pure function of the node lattice:
+//!
+//! 1. **Nodes.** Node `(i, k)` sits at `((i + ½ + j_x)·s, (k + ½ + j_z)·s)` with a hashed jitter
+//!    `|j| ≤` [`JITTER`] (no lattice alignment), `s` = `spacing_m`. Its height `H` is the world's
+//!    height function at the LOD whose spacing is `s / 2` (relief finer than that is left to the
+//!    carve), with the world's mean erosion.
+//! 2. **Flow.** Neighbours are the four axis nodes and, per lattice cell, one hashed diagonal, so
+//!    the graph is planar and no two rivers cross. A land node drains to the neighbour of steepest
+//!    descent; a node below sea level is the sea; a land node with no lower neighbour is a pit,
+//!    where a lake begins. Depends on a node's 3×3 neighbourhood only.
+//! 3. **Discharge.** `Q(n) = min(upstream nodes including n, Q_MAX)`, computed by a depth-first
+//!    count that stops once `Q_MAX` is reached, so it reads at most `Q_MAX` nodes upstream and is
+//!    exact below the cap. It never falls downstream (`Q(down(n)) ≥ Q(n)`, also at the cap).
+//! 4. **Water level.** `W(n) = max(H(n) − incision(Q(n)), sea level)`: `H` falls strictly along
+//!    the flow and the incision grows with `Q`, so `W` never rises downstream.
+//! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
+//!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
+//!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
+//!    Rivers end in the lake; lakes do not spill into further rivers.
+//! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
+//!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`] straight
+//!    pieces with `W` linear along it. A sample at distance `d` from a piece may be no higher
+//!    than the valley profile `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c`
+//!    depth, from the discharge) and `W + bank + K·u + G·u²` outside it (`u` past the
+//!    floodplain), faded out by [`REACH`] spacings; the height becomes the smooth minimum of
+//!    itself and the lowest profile. Where a channel holds water, the vertex is `river` water.
+//!
+//! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
+//! a sample changes nothing (its profile is more than [`FADE_M`] above any height), so every tile
+//! that contains a vertex computes its height and water bit for bit alike. Node data are
+//! memoised per world in bounded caches (`moka`): the cache changes the time, never the bytes.
+//!
+//! LODs: the carve runs at LODs `0..=MAX_CARVE_LOD` (spacing up to half a node spacing by
+//! default); coarser tiles skip it, and their LOD bound grows by [`CARVE_MAX_M`], the most the
+//! carve may remove. (Finer LODs carve the same profile: the smooth minimum is 1-Lipschitz, so
+//! their bound stands.)
+
+mod carve;
+mod network;
+
+pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob};
+pub use network::{Network, Node};
+
+use super::super::hash::{hash2, mix32, purpose, stream, unit};
+use super::params::RiverParams;
+use network::Caches;
+use std::sync::Arc;
+
+/// The node heights come from the LOD whose spacing is this many node spacings: relief finer
+/// than a few node spacings is left out, so the drainage follows the larger slopes and cuts
+/// through smaller hills rather than ending in a pit behind each.
+pub const NODE_LOD_FACTOR: f32 = 4.0;
+/// Nodes per block side of the caches.
+pub const BLOCK: i64 = 32;
+/// Largest discharge counted, in nodes: rivers wider than this basin look alike.
+pub const Q_MAX: u32 = 4096;
+/// Largest jitter of a node from its cell centre, in spacings.
+pub const JITTER: f32 = 0.3;
+/// Straight pieces per river edge.
+pub const PIECES: usize = 4;
+/// A lake's flood visits at most this many nodes.
+pub const LAKE_MAX_NODES: usize = 256;
+/// A lake's flood stays within this many spacings of its pit (Chebyshev distance).
+pub const LAKE_RADIUS: i64 = 12;
+/// A pit whose lake would be shallower than this, metres, drains over its saddle instead.
+pub const BREACH_DEPTH_M: f32 = 20.0;
+/// Rivers are incised in full within half this many steps of where their flow ends (the sea or
+/// a lake), less farther up, and not at all beyond it.
+pub const LAKE_WALK: usize = 384;
+/// Reach of a river's valley, in node spacings.
+pub const REACH: f32 = 1.5;
+/// Half-width of the smallest valleys, metres.
+pub const VALLEY_MIN: f32 = 250.0;
+/// Strength of the hashed preference between descending links, in [0, 1).
+pub const ROUTE_NOISE: f32 = 0.6;
+/// Runoff: discharge per square kilometre of basin, m³/s (about 630 mm a year).
+pub const RUNOFF_M3S_PER_KM2: f32 = 0.02;
+/// Coarsest LOD that carves rivers.
+pub const MAX_CARVE_LOD: usize = 9;
+/// Deepest cut of the carve below the uncarved height, metres: the LOD bound of the coarser
+/// LODs that skip it.
+pub const CARVE_MAX_M: f32 = 600.0;
+
+/// Water kinds of a vertex (tile format v2).
+pub mod kind {
+    /// Dry ground.
+    pub const NONE: u8 = 0;
+    /// Below sea level.
+    pub const SEA: u8 = 1;
+    /// Inside a lake filled to its level.
+    pub const LAKE: u8 = 2;
+    /// Inside a river's channel.
+    pub const RIVER: u8 = 3;
+}
+
+/// `down` of a node that drains nowhere (the sea or a pit).
+const NONE: u8 = 255;
+/// Neighbour offsets in a fixed order (the tie-break of equal descents).
+const OFFSETS: [(i64, i64); 8] = [
+    (1, 0),
+    (0, 1),
+    (-1, 0),
+    (0, -1),
+    (1, 1),
+    (-1, 1),
+    (-1, -1),
+    (1, -1),
+];
+
+/// The river settings of a world, resolved.
+#[derive(Clone)]
+pub struct RiverPlan {
+    /// Node spacing, metres.
+    pub spacing_m: f32,
+    /// Stream seed of the node jitter and diagonals.
+    pub seed: u32,
+    /// LOD whose height function gives the node heights.
+    pub node_lod: usize,
+    /// Discharge (nodes) from which a channel holds water.
+    pub wet_q: u32,
+    /// Incision of the largest rivers below the node heights, metres.
+    pub incision_m: f32,
+    /// World sea level, metres.
+    pub sea_level_m: f32,
+    /// Erosion strength of the node heights (the biomes' mean).
+    pub erosion: f32,
+    caches: Arc<Caches>,
+}
+
+impl PartialEq for RiverPlan {
+    fn eq(&self, o: &Self) -> bool {
+        (self.spacing_m, self.seed, self.node_lod, self.wet_q)
+            == (o.spacing_m, o.seed, o.node_lod, o.wet_q)
+            && (self.incision_m, self.sea_level_m, self.erosion)
+                == (o.incision_m, o.sea_level_m, o.erosion)
+    }
+}
+
+impl std::fmt::Debug for RiverPlan {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RiverPlan")
+            .field("spacing_m", &self.spacing_m)
+            .field("node_lod", &self.node_lod)
+            .field("wet_q", &self.wet_q)
+            .field("incision_m", &self.incision_m)
+            .finish_non_exhaustive()
+    }
+}
+
+impl RiverPlan {
+    /// The plan of `params` in a world of LOD-0 spacing `cell_m` (the node LOD is the one of
+    /// spacing `spacing_m / 2`, clamped to the world's LODs).
+    pub fn new(
+        seed: u64,
+        params: &RiverParams,
+        cell_m: f32,
+        sea_level_m: f32,
+        erosion: f32,
+    ) -> Self {
+        let lod = libm::log2((params.spacing_m * NODE_LOD_FACTOR / cell_m) as f64).floor();
+        Self {
+            spacing_m: params.spacing_m,
+            seed: stream(seed, purpose::EARTH, 400),
+            node_lod: lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize,
+            wet_q: ((8.0 / params.density).round() as u32).max(2),
+            incision_m: params.incision_m,
+            sea_level_m,
+            erosion,
+            caches: Arc::new(Caches::new()),
+        }
+    }
+
+    fn jitter(&self, i: i64, k: i64) -> (f32, f32) {
+        let h = hash2(i as i32, k as i32, self.seed);
+        let jx = (unit(h) * 2.0 - 1.0) * JITTER;
+        let jz = (unit(mix32(h ^ 0x68e3_1da4)) * 2.0 - 1.0) * JITTER;
+        (jx, jz)
+    }
+
+    /// World position of node `(i, k)`, metres.
+    pub fn position(&self, i: i64, k: i64) -> (f32, f32) {
+        let (jx, jz) = self.jitter(i, k);
+        let s = self.spacing_m as f64;
+        (
+            ((i as f64 + 0.5 + jx as f64) * s) as f32,
+            ((k as f64 + 0.5 + jz as f64) * s) as f32,
+        )
+    }
+
+    /// Whether lattice cell `(i, k)` (nodes `i..=i+1`, `k..=k+1`) links its main diagonal
+    /// `(i, k)–(i+1, k+1)` rather than `(i+1, k)–(i, k+1)`.
+    fn main_diagonal(&self, i: i64, k: i64) -> bool {
+        mix32(hash2(i as i32, k as i32, self.seed ^ 0x5bd1_e995)) & 1 == 0
+    }
+
+    /// Whether node `(i, k)` links to its neighbour at `OFFSETS[d]`.
+    pub(super) fn linked(&self, i: i64, k: i64, d: usize) -> bool {
+        match d {
+            4 => self.main_diagonal(i, k),
+            6 => self.main_diagonal(i - 1, k - 1),
+            5 => !self.main_diagonal(i - 1, k),
+            7 => !self.main_diagonal(i, k - 1),
+            _ => true,
+        }
+    }
+}
+
+/// Channel half-width and depth (metres) of a river of discharge `q` nodes per km² of node cell
+/// (hydraulic geometry: width ∝ Q^0.5, depth ∝ Q^0.4).
+pub(crate) fn channel(q: u32) -> (f32, f32) {
+    let m3s = q as f32 * RUNOFF_M3S_PER_KM2;
+    (1.0 + 2.0 * m3s.sqrt(), 0.3 + 0.4 * m3s.powf(0.4))
+}
+
+/// Discharge of `q` nodes, m³/s (per node of `spacing_m`).
+pub fn discharge_m3s(q: u32, spacing_m: f32) -> f32 {
+    q as f32 * spacing_m * spacing_m * 1e-6 * RUNOFF_M3S_PER_KM2
+}

@@ -1,0 +1,558 @@
+//! The drainage network: node heights, flow, discharge and lakes, memoised per world in
+//! bounded block caches (module docs of [`super`], steps 1–5).
+
+use super::super::super::hash::{hash2, unit};
+use super::super::kernel::{self, LANES};
+use super::super::EarthPlan;
+use super::{
+    RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_MAX_NODES, LAKE_RADIUS, LAKE_WALK, NONE, OFFSETS, Q_MAX,
+    ROUTE_NOISE,
+};
+use std::collections::{BinaryHeap, HashMap, HashSet};
+use std::sync::Arc;
+
+/// A node's lattice index `(i, k)`.
+pub type NodeId = (i64, i64);
+
+/// A lake: its level (metres), the nodes it floods and its outlet, if the flood found one.
+pub type Lake = (f32, Vec<NodeId>, Option<NodeId>);
+
+/// Where flows end and in how many steps, by node.
+type Ends = HashMap<NodeId, (NodeId, usize)>;
+
+/// A frame of the upstream count: the node, its upstream neighbours, the next to visit and the
+/// count so far.
+type Frame = (NodeId, Vec<NodeId>, usize, u32);
+
+/// The block caches of one world's network.
+pub(super) struct Caches {
+    heights: moka::sync::Cache<(i64, i64), Arc<HeightBlock>>,
+    routes: moka::sync::Cache<(i64, i64), Arc<RouteBlock>>,
+    flow: moka::sync::Cache<(i64, i64), Arc<FlowBlock>>,
+}
+
+/// The breached pits of one block: shallow pits that drain over their saddle to the outlet
+/// beyond it instead of holding a lake.
+#[derive(Default)]
+struct RouteBlock {
+    /// Breached pits of the block and their outlets.
+    out: HashMap<(i64, i64), (i64, i64)>,
+    /// Outlets in the block and the breached pits that drain into each, in index order.
+    into: HashMap<(i64, i64), Vec<(i64, i64)>>,
+}
+
+/// Heights (a one-node ring included) and flow directions of one block of nodes.
+struct HeightBlock {
+    /// `(BLOCK + 2)²` heights, metres, from node `(bx·BLOCK − 1, bz·BLOCK − 1)`.
+    h: Vec<f32>,
+    /// `BLOCK²` indices into [`OFFSETS`] of the downstream neighbour, or `NONE`.
+    down: Vec<u8>,
+}
+
+/// Discharge and lake levels of one block of nodes.
+struct FlowBlock {
+    /// `BLOCK²` discharges, nodes.
+    q: Vec<u32>,
+    /// `BLOCK²` levels of the highest lake covering each node, metres (NaN: none).
+    lake: Vec<f32>,
+    /// `BLOCK²` water levels, metres.
+    w: Vec<f32>,
+}
+
+impl Caches {
+    pub(super) fn new() -> Self {
+        Self {
+            heights: moka::sync::Cache::new(2048),
+            routes: moka::sync::Cache::new(2048),
+            flow: moka::sync::Cache::new(1024),
+        }
+    }
+}
+
+/// One node of the network as the products see it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Node {
+    /// Lattice index.
+    pub i: i64,
+    /// Lattice index.
+    pub k: i64,
+    /// World position, metres.
+    pub x: f32,
+    /// World position, metres.
+    pub z: f32,
+    /// Height of the world function at the node LOD, metres.
+    pub h: f32,
+    /// Discharge, nodes (capped at [`Q_MAX`]).
+    pub q: u32,
+    /// Water level of the river through the node, metres.
+    pub w: f32,
+    /// The downstream neighbour, if any.
+    pub down: Option<(i64, i64)>,
+    /// Whether the node is below sea level.
+    pub sea: bool,
+    /// The lake level covering the node, if any.
+    pub lake: Option<f32>,
+}
+
+/// Read access to the network with a per-call memo of blocks.
+pub struct Network<'a> {
+    pub(super) earth: &'a EarthPlan,
+    pub(super) plan: &'a RiverPlan,
+    heights: HashMap<(i64, i64), Arc<HeightBlock>>,
+    routes: HashMap<(i64, i64), Arc<RouteBlock>>,
+    flows: HashMap<(i64, i64), Arc<FlowBlock>>,
+}
+
+impl std::fmt::Debug for Network<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Network").finish_non_exhaustive()
+    }
+}
+
+fn block_of(i: i64) -> (i64, usize) {
+    (i.div_euclid(BLOCK), i.rem_euclid(BLOCK) as usize)
+}
+
+impl<'a> Network<'a> {
+    /// The network of `earth`'s rivers (`earth.rivers` must be set).
+    pub fn new(earth: &'a EarthPlan, plan: &'a RiverPlan) -> Self {
+        Self {
+            earth,
+            plan,
+            heights: HashMap::new(),
+            routes: HashMap::new(),
+            flows: HashMap::new(),
+        }
+    }
+
+    fn height_block(&mut self, b: (i64, i64)) -> Arc<HeightBlock> {
+        if let Some(hb) = self.heights.get(&b) {
+            return hb.clone();
+        }
+        let (earth, plan) = (self.earth, self.plan);
+        let hb = plan
+            .caches
+            .heights
+            .get_with(b, || Arc::new(compute_heights(earth, plan, b)));
+        self.heights.insert(b, hb.clone());
+        hb
+    }
+
+    /// Height of node `(i, k)`, metres.
+    pub fn height(&mut self, i: i64, k: i64) -> f32 {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        let hb = self.height_block((bx, bz));
+        hb.h[(lk + 1) * (BLOCK as usize + 2) + li + 1]
+    }
+
+    fn down_index(&mut self, i: i64, k: i64) -> u8 {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        self.height_block((bx, bz)).down[lk * BLOCK as usize + li]
+    }
+
+    /// The downstream neighbour of node `(i, k)` on the lattice (a pit has none).
+    fn lattice_down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        match self.down_index(i, k) {
+            NONE => None,
+            d => {
+                let (di, dk) = OFFSETS[d as usize];
+                Some((i + di, k + dk))
+            }
+        }
+    }
+
+    fn route_block(&mut self, b: (i64, i64)) -> Arc<RouteBlock> {
+        if let Some(rb) = self.routes.get(&b) {
+            return rb.clone();
+        }
+        if let Some(rb) = self.plan.caches.routes.get(&b) {
+            self.routes.insert(b, rb.clone());
+            return rb;
+        }
+        let rb = Arc::new(self.compute_routes(b));
+        self.plan.caches.routes.insert(b, rb.clone());
+        self.routes.insert(b, rb.clone());
+        rb
+    }
+
+    /// Whether `(i, k)` is a pit: land with no lower neighbour.
+    fn is_pit(&mut self, i: i64, k: i64) -> bool {
+        self.down_index(i, k) == NONE && self.height(i, k) >= self.plan.sea_level_m
+    }
+
+    /// The outlet a shallow pit drains to: the first node below the lake's level beyond its
+    /// saddle, when that node is lower than the pit itself (so heights fall strictly along every
+    /// chain of breaches and no flow can cycle) and the lake would be shallower than
+    /// [`BREACH_DEPTH_M`].
+    fn breach(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        let (level, _, outlet) = self.flood(i, k);
+        let h = self.height(i, k);
+        let o = outlet?;
+        (self.height(o.0, o.1) < h && level - h < BREACH_DEPTH_M).then_some(o)
+    }
+
+    fn compute_routes(&mut self, (bx, bz): (i64, i64)) -> RouteBlock {
+        let (i0, k0) = (bx * BLOCK, bz * BLOCK);
+        let inside =
+            |i: i64, k: i64| (i0..i0 + BLOCK).contains(&i) && (k0..k0 + BLOCK).contains(&k);
+        let mut rb = RouteBlock::default();
+        // An outlet lies within the flood radius (plus one) of its pit.
+        let r = LAKE_RADIUS + 1;
+        for k in k0 - r..k0 + BLOCK + r {
+            for i in i0 - r..i0 + BLOCK + r {
+                if !self.is_pit(i, k) {
+                    continue;
+                }
+                let Some(o) = self.breach(i, k) else {
+                    continue;
+                };
+                if inside(i, k) {
+                    rb.out.insert((i, k), o);
+                }
+                if inside(o.0, o.1) {
+                    rb.into.entry(o).or_default().push((i, k));
+                }
+            }
+        }
+        rb
+    }
+
+    /// The downstream neighbour of node `(i, k)`: its lattice neighbour of steepest descent, or
+    /// for a breached pit its outlet.
+    pub fn down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        if let Some(d) = self.lattice_down(i, k) {
+            return Some(d);
+        }
+        if !self.is_pit(i, k) {
+            return None;
+        }
+        let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
+        self.route_block((bx, bz)).out.get(&(i, k)).copied()
+    }
+
+    /// The upstream neighbours of node `(i, k)`: lattice neighbours in [`OFFSETS`] order, then
+    /// the breached pits that drain into it.
+    pub fn upstream(&mut self, i: i64, k: i64) -> Vec<(i64, i64)> {
+        let mut out = Vec::new();
+        for (d, (di, dk)) in OFFSETS.iter().enumerate() {
+            if !self.plan.linked(i, k, d) {
+                continue;
+            }
+            let (ni, nk) = (i + di, k + dk);
+            if self.lattice_down(ni, nk) == Some((i, k)) {
+                out.push((ni, nk));
+            }
+        }
+        let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
+        if let Some(pits) = self.route_block((bx, bz)).into.get(&(i, k)) {
+            out.extend_from_slice(pits);
+        }
+        out
+    }
+
+    fn flow_block(&mut self, b: (i64, i64)) -> Arc<FlowBlock> {
+        if let Some(fb) = self.flows.get(&b) {
+            return fb.clone();
+        }
+        if let Some(fb) = self.plan.caches.flow.get(&b) {
+            self.flows.insert(b, fb.clone());
+            return fb;
+        }
+        let fb = Arc::new(self.compute_flow(b));
+        self.plan.caches.flow.insert(b, fb.clone());
+        self.flows.insert(b, fb.clone());
+        fb
+    }
+
+    /// Discharge of node `(i, k)`, nodes.
+    pub fn q(&mut self, i: i64, k: i64) -> u32 {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        self.flow_block((bx, bz)).q[lk * BLOCK as usize + li]
+    }
+
+    /// Level of the highest lake covering node `(i, k)`.
+    pub fn lake(&mut self, i: i64, k: i64) -> Option<f32> {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        let l = self.flow_block((bx, bz)).lake[lk * BLOCK as usize + li];
+        (!l.is_nan()).then_some(l)
+    }
+
+    /// Water level of the river through node `(i, k)`, metres.
+    pub fn water_level(&mut self, i: i64, k: i64) -> f32 {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        self.flow_block((bx, bz)).w[lk * BLOCK as usize + li]
+    }
+
+    fn incision(&self, q: u32) -> f32 {
+        self.plan.incision_m * libm::log2f(q.max(1) as f32) / libm::log2f(Q_MAX as f32)
+    }
+
+    /// Everything about node `(i, k)`.
+    pub fn node(&mut self, i: i64, k: i64) -> Node {
+        let (x, z) = self.plan.position(i, k);
+        let h = self.height(i, k);
+        Node {
+            i,
+            k,
+            x,
+            z,
+            h,
+            q: self.q(i, k),
+            w: self.water_level(i, k),
+            down: self.down(i, k),
+            sea: h < self.plan.sea_level_m,
+            lake: self.lake(i, k),
+        }
+    }
+
+    /// `min(upstream count, Q_MAX)` by a depth-first count that stops at the cap.
+    fn count(&mut self, i: i64, k: i64, memo: &mut HashMap<(i64, i64), u32>) -> u32 {
+        if let Some(&q) = memo.get(&(i, k)) {
+            return q;
+        }
+        // Frames: node, its upstream neighbours, the next one to visit, the count so far.
+        let mut stack: Vec<Frame> = vec![((i, k), self.upstream(i, k), 0, 1)];
+        loop {
+            let top = stack.len() - 1;
+            let (node, next, acc) = (stack[top].0, stack[top].2, stack[top].3);
+            if acc >= Q_MAX || next == stack[top].1.len() {
+                let q = acc.min(Q_MAX);
+                memo.insert(node, q);
+                stack.pop();
+                match stack.last_mut() {
+                    Some(parent) => parent.3 += q,
+                    None => return q,
+                }
+                continue;
+            }
+            let child = stack[top].1[next];
+            stack[top].2 += 1;
+            match memo.get(&child) {
+                Some(&q) => stack[top].3 += q,
+                None => {
+                    let ups = self.upstream(child.0, child.1);
+                    stack.push((child, ups, 0, 1));
+                }
+            }
+        }
+    }
+
+    fn compute_flow(&mut self, (bx, bz): (i64, i64)) -> FlowBlock {
+        let n = BLOCK as usize;
+        let (i0, k0) = (bx * BLOCK, bz * BLOCK);
+        let mut memo = HashMap::new();
+        let mut q = vec![0u32; n * n];
+        for lk in 0..n {
+            for li in 0..n {
+                q[lk * n + li] = self.count(i0 + li as i64, k0 + lk as i64, &mut memo);
+            }
+        }
+        let mut lake = vec![f32::NAN; n * n];
+        let raise = |lake: &mut Vec<f32>, fi: i64, fk: i64, level: f32| {
+            let (li, lk) = (fi - i0, fk - k0);
+            if (0..BLOCK).contains(&li) && (0..BLOCK).contains(&lk) {
+                let v = &mut lake[lk as usize * n + li as usize];
+                if v.is_nan() || level > *v {
+                    *v = level;
+                }
+            }
+        };
+        // The nodes each lake floods.
+        let r = LAKE_RADIUS;
+        let mut levels: HashMap<(i64, i64), f32> = HashMap::new();
+        for k in k0 - r..k0 + BLOCK + r {
+            for i in i0 - r..i0 + BLOCK + r {
+                if self.down(i, k).is_some() || !self.is_pit(i, k) {
+                    continue;
+                }
+                let (level, flooded, _) = self.flood(i, k);
+                levels.insert((i, k), level);
+                for (fi, fk) in flooded {
+                    raise(&mut lake, fi, fk, level);
+                }
+            }
+        }
+        // Water levels: incised below the node height by the discharge, faded out with the
+        // distance to the end of the flow, and never below the end's base level.
+        let mut ends: Ends = HashMap::new();
+        let mut w = vec![0.0f32; n * n];
+        for lk in 0..n {
+            for li in 0..n {
+                let (i, k) = (i0 + li as i64, k0 + lk as i64);
+                let h = self.height(i, k);
+                let Some((end, steps)) = self.end_of_flow(i, k, &mut ends) else {
+                    // No end within LAKE_WALK steps: not incised (module docs, step 4).
+                    w[lk * n + li] = h;
+                    continue;
+                };
+                let base = if self.is_pit(end.0, end.1) {
+                    match levels.get(&end) {
+                        Some(&l) => l,
+                        None => {
+                            let l = self.flood(end.0, end.1).0;
+                            levels.insert(end, l);
+                            l
+                        }
+                    }
+                } else {
+                    self.plan.sea_level_m
+                };
+                let fade = (2.0 - 2.0 * steps as f32 / LAKE_WALK as f32).clamp(0.0, 1.0);
+                let cut = self.incision(q[lk * n + li]) * fade;
+                w[lk * n + li] = (h - cut).max(base).min(h.max(base));
+            }
+        }
+        FlowBlock { q, lake, w }
+    }
+
+    /// Where the flow from `(i, k)` ends (the sea or a pit) and in how many steps, if at most
+    /// [`LAKE_WALK`]. `memo` keeps exact answers only, so the result never depends on what was
+    /// asked before.
+    fn end_of_flow(&mut self, i: i64, k: i64, memo: &mut Ends) -> Option<(NodeId, usize)> {
+        // Walk down at most LAKE_WALK steps, stopping at a memoised node or the end.
+        let mut path = Vec::new();
+        let mut at = (i, k);
+        let (end, mut steps) = loop {
+            if let Some(&known) = memo.get(&at) {
+                break known;
+            }
+            match self.down(at.0, at.1) {
+                None => {
+                    memo.insert(at, (at, 0));
+                    break (at, 0);
+                }
+                Some(next) => {
+                    path.push(at);
+                    if path.len() > LAKE_WALK {
+                        return None;
+                    }
+                    at = next;
+                }
+            }
+        };
+        for &node in path.iter().rev() {
+            steps += 1;
+            memo.insert(node, (end, steps));
+        }
+        memo.get(&(i, k)).copied().filter(|&(_, s)| s <= LAKE_WALK)
+    }
+
+    /// The lake of pit `(i, k)`: its level, the nodes it covers and the outlet (the first node
+    /// below the level beyond the saddle; `None` when the search stopped first) (module docs,
+    /// step 5).
+    pub fn flood(&mut self, i: i64, k: i64) -> Lake {
+        #[derive(PartialEq)]
+        struct Entry(f32, i64, i64);
+        impl Eq for Entry {}
+        impl PartialOrd for Entry {
+            fn partial_cmp(&self, o: &Self) -> Option<std::cmp::Ordering> {
+                Some(self.cmp(o))
+            }
+        }
+        impl Ord for Entry {
+            // Lowest height first, then by index (a min-heap in a max-heap).
+            fn cmp(&self, o: &Self) -> std::cmp::Ordering {
+                o.0.total_cmp(&self.0)
+                    .then(o.1.cmp(&self.1))
+                    .then(o.2.cmp(&self.2))
+            }
+        }
+        let mut level = self.height(i, k);
+        let mut flooded = vec![(i, k)];
+        let mut seen: HashSet<(i64, i64)> = HashSet::from([(i, k)]);
+        let mut heap = BinaryHeap::new();
+        let push = |net: &mut Self,
+                    heap: &mut BinaryHeap<Entry>,
+                    seen: &mut HashSet<_>,
+                    a: i64,
+                    b: i64| {
+            for (d, (di, dk)) in OFFSETS.iter().enumerate() {
+                let (ni, nk) = (a + di, b + dk);
+                if net.plan.linked(a, b, d) && seen.insert((ni, nk)) {
+                    heap.push(Entry(net.height(ni, nk), ni, nk));
+                }
+            }
+        };
+        push(self, &mut heap, &mut seen, i, k);
+        let mut outlet = None;
+        while let Some(Entry(h, ni, nk)) = heap.pop() {
+            if h < level {
+                outlet = Some((ni, nk));
+                break;
+            }
+            if flooded.len() >= LAKE_MAX_NODES || (ni - i).abs().max((nk - k).abs()) > LAKE_RADIUS {
+                break;
+            }
+            level = h;
+            flooded.push((ni, nk));
+            push(self, &mut heap, &mut seen, ni, nk);
+        }
+        (level, flooded, outlet)
+    }
+}
+
+fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) -> HeightBlock {
+    let m = BLOCK as usize + 2;
+    let (i0, k0) = (bx * BLOCK - 1, bz * BLOCK - 1);
+    let mut xs = Vec::with_capacity(m * m);
+    let mut zs = Vec::with_capacity(m * m);
+    for lk in 0..m {
+        for li in 0..m {
+            let (x, z) = plan.position(i0 + li as i64, k0 + lk as i64);
+            xs.push(x);
+            zs.push(z);
+        }
+    }
+    let mut h = vec![0.0f32; m * m];
+    let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
+    let ero = [plan.erosion; LANES];
+    let rough = [1.0f32; LANES];
+    let mut out = [0.0f32; LANES];
+    for start in (0..m * m).step_by(LANES) {
+        let c = (m * m - start).min(LANES);
+        x[..c].copy_from_slice(&xs[start..start + c]);
+        z[..c].copy_from_slice(&zs[start..start + c]);
+        kernel::heights(earth, plan.node_lod, &x, &z, &ero, &rough, &mut out);
+        h[start..start + c].copy_from_slice(&out[..c]);
+    }
+    let n = BLOCK as usize;
+    let mut down = vec![NONE; n * n];
+    for lk in 0..n {
+        for li in 0..n {
+            let (ci, ck) = (li + 1, lk + 1);
+            let (i, k) = (i0 + ci as i64, k0 + ck as i64);
+            let c = ck * m + ci;
+            let hc = h[c];
+            if hc < plan.sea_level_m {
+                continue;
+            }
+            let mut best = 0.0f32;
+            for (d, (di, dk)) in OFFSETS.iter().enumerate() {
+                if !plan.linked(i, k, d) {
+                    continue;
+                }
+                let o = (ck as i64 + dk) as usize * m + (ci as i64 + di) as usize;
+                let drop = hc - h[o];
+                if drop <= 0.0 {
+                    continue;
+                }
+                let (dx, dz) = (xs[o] - xs[c], zs[o] - zs[c]);
+                // Steepest descent with a hashed preference per link (Scheidegger's random
+                // drainage on an inclined plane): on even slopes the rivers wander and merge
+                // instead of running in parallel lattice rows.
+                let bias = unit(hash2(
+                    i as i32,
+                    k as i32,
+                    plan.seed ^ (0x2f6b_4c1d_u32.wrapping_mul(d as u32 + 1)),
+                ));
+                let slope =
+                    drop / (dx * dx + dz * dz).sqrt() * (1.0 + ROUTE_NOISE * (2.0 * bias - 1.0));
+                if slope > best {
+                    best = slope;
+                    down[lk * n + li] = d as u8;
+                }
+            }
+        }
+    }
+    HeightBlock { h, down }
+}
