@@ -279,9 +279,14 @@ pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
 
 impl RiverJob {
     fn bin(&self, x: f32, z: f32) -> &[u32] {
+        if self.bin_start.is_empty() {
+            return &[];
+        }
         let bx = ((x - self.x0) / self.bin_m).floor();
         let bz = ((z - self.z0) / self.bin_m).floor();
-        if bx < 0.0 || bz < 0.0 || bx >= self.bins_w as f32 || bz >= self.bins_h as f32 {
+        // Written so that NaN lands outside too.
+        let inside = |b: f32, n: usize| b >= 0.0 && b < n as f32;
+        if !(inside(bx, self.bins_w) && inside(bz, self.bins_h)) {
             return &[];
         }
         let b = bz as usize * self.bins_w + bx as usize;
