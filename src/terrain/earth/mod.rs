@@ -510,3 +510,18 @@ pub fn tile_water(
     }
     (surface, kinds)
 }
+
+/// The river lines of tile `key` ([`rivers::RiverLine`]); empty when the world has no rivers.
+pub fn tile_rivers(
+    plan: &EarthPlan,
+    key: super::tile::TileKey,
+    spacing_m: f32,
+) -> Vec<rivers::RiverLine> {
+    let Some(rp) = &plan.rivers else {
+        return Vec::new();
+    };
+    let span = super::plan::TILE_QUADS as f32 * spacing_m;
+    let x0 = key.x as f32 * span;
+    let z0 = key.z as f32 * span;
+    rivers::Network::new(plan, rp).lines(x0, z0, x0 + span, z0 + span)
+}

@@ -98,14 +98,7 @@ impl Network<'_> {
         let from = self.node(i, k);
         let (pi, pk) = from.down?;
         let to = self.node(pi, pk);
-        // The main upstream neighbour: the largest discharge, first in OFFSETS order on ties.
-        let mut main: Option<(u32, (i64, i64))> = None;
-        for u in self.upstream(i, k) {
-            let q = self.q(u.0, u.1);
-            if main.is_none_or(|(mq, _)| q > mq) {
-                main = Some((q, u));
-            }
-        }
+        let main = self.main_upstream(i, k).map(|u| (self.q(u.0, u.1), u));
         let p1 = (from.x, from.z);
         let p2 = (to.x, to.z);
         let p0 = match main {

@@ -41,10 +41,12 @@
 //! their bound stands.)
 
 mod carve;
+mod lines;
 mod network;
 
 pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob};
-pub use network::{Network, Node};
+pub use lines::{LineEnd, RiverLine};
+pub use network::{Lake, Network, Node, NodeId};
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
 use super::params::RiverParams;

@@ -250,6 +250,19 @@ impl<'a> Network<'a> {
         out
     }
 
+    /// The main upstream neighbour of `(i, k)`: the largest discharge, the first in
+    /// [`Network::upstream`] order on ties.
+    pub fn main_upstream(&mut self, i: i64, k: i64) -> Option<NodeId> {
+        let mut main: Option<(u32, NodeId)> = None;
+        for u in self.upstream(i, k) {
+            let q = self.q(u.0, u.1);
+            if main.is_none_or(|(mq, _)| q > mq) {
+                main = Some((q, u));
+            }
+        }
+        main.map(|(_, u)| u)
+    }
+
     fn flow_block(&mut self, b: (i64, i64)) -> Arc<FlowBlock> {
         if let Some(fb) = self.flows.get(&b) {
             return fb.clone();

@@ -1,0 +1,136 @@
+//! River polylines of a tile: the wet edges of the network that reach into the tile's rectangle,
+//! chained from upstream to downstream (the JSON product `…/rivers/{lod}/{x}/{z}.json`).
+//!
+//! At a confluence the chain follows the main upstream edge (largest discharge, first in
+//! lattice order on ties, as the carve's curves do); the other incoming chains end there, in a
+//! river at least as large. A chain also ends in the sea, in a lake, or at the edge of what the
+//! tile touches, where the neighbouring tile's product continues it from the same node.
+
+use super::carve::Edge;
+use super::network::{Network, NodeId};
+use super::{channel, discharge_m3s, PIECES};
+use std::collections::{HashMap, HashSet};
+
+/// How a river line ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LineEnd {
+    /// It reaches the sea.
+    Sea,
+    /// It ends in a lake (a pit filled to its outlet).
+    Lake,
+    /// It joins a river at least as large (a confluence where another chain continues).
+    River,
+    /// It leaves the part of the network the tile touches; the chain from `to` continues it.
+    Continues,
+}
+
+/// One river line of a tile.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct RiverLine {
+    /// Centre-line points `[x, z, water level]`, metres, from upstream to downstream.
+    pub points: Vec<[f32; 3]>,
+    /// Channel width at each point, metres.
+    pub width_m: Vec<f32>,
+    /// Discharge at each point, m³/s.
+    pub discharge_m3s: Vec<f32>,
+    /// Node the line starts at (lattice index `[i, k]` of the river network).
+    pub from: [i64; 2],
+    /// Node the line ends at.
+    pub to: [i64; 2],
+    /// How it ends.
+    pub ends: LineEnd,
+}
+
+impl Network<'_> {
+    /// The river lines that reach into `[x0, x1] × [z0, z1]` (metres).
+    pub fn lines(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> Vec<RiverLine> {
+        let s = self.plan.spacing_m;
+        let wet = self.plan.wet_q;
+        let margin = 2.0 * s;
+        let ni0 = ((x0 - margin) / s).floor() as i64;
+        let ni1 = ((x1 + margin) / s).floor() as i64;
+        let nk0 = ((z0 - margin) / s).floor() as i64;
+        let nk1 = ((z1 + margin) / s).floor() as i64;
+        // The wet edges whose curve (with its channel) touches the rectangle.
+        let mut edges: Vec<Edge> = Vec::new();
+        for k in nk0..=nk1 {
+            for i in ni0..=ni1 {
+                if self.q(i, k) < wet {
+                    continue;
+                }
+                let Some(e) = self.edge(i, k) else { continue };
+                if e.from.sea {
+                    continue;
+                }
+                let hw = channel(e.from.q).0;
+                let touches = e.points.iter().any(|p| {
+                    p[0] >= x0 - hw && p[0] <= x1 + hw && p[1] >= z0 - hw && p[1] <= z1 + hw
+                });
+                if touches {
+                    edges.push(e);
+                }
+            }
+        }
+        let by_from: HashMap<NodeId, usize> = edges
+            .iter()
+            .enumerate()
+            .map(|(n, e)| ((e.from.i, e.from.k), n))
+            .collect();
+        // The successor of each edge: the collected edge out of its end, if it is the main one in.
+        let mut next: Vec<Option<usize>> = vec![None; edges.len()];
+        let mut is_next = HashSet::new();
+        for (n, e) in edges.iter().enumerate() {
+            let to = (e.to.i, e.to.k);
+            if self.main_upstream(to.0, to.1) != Some((e.from.i, e.from.k)) {
+                continue;
+            }
+            if let Some(&m) = by_from.get(&to) {
+                next[n] = Some(m);
+                is_next.insert(m);
+            }
+        }
+        let mut lines = Vec::new();
+        for start in 0..edges.len() {
+            if is_next.contains(&start) {
+                continue;
+            }
+            let mut line = RiverLine {
+                points: Vec::new(),
+                width_m: Vec::new(),
+                discharge_m3s: Vec::new(),
+                from: [edges[start].from.i, edges[start].from.k],
+                to: [0, 0],
+                ends: LineEnd::Continues,
+            };
+            let mut at = Some(start);
+            let mut last = start;
+            while let Some(n) = at {
+                let e = &edges[n];
+                let skip = usize::from(!line.points.is_empty());
+                for (j, p) in e.points.iter().enumerate().skip(skip) {
+                    // Width and discharge change at the downstream node of the edge.
+                    let q = if j == PIECES { e.to.q } else { e.from.q };
+                    line.points.push(*p);
+                    line.width_m.push(2.0 * channel(q).0);
+                    line.discharge_m3s.push(discharge_m3s(q, s));
+                }
+                last = n;
+                at = next[n];
+            }
+            let e = &edges[last];
+            line.to = [e.to.i, e.to.k];
+            line.ends = if e.to.sea {
+                LineEnd::Sea
+            } else if e.to.down.is_none() {
+                LineEnd::Lake
+            } else if self.main_upstream(e.to.i, e.to.k) != Some((e.from.i, e.from.k)) {
+                LineEnd::River
+            } else {
+                LineEnd::Continues
+            };
+            lines.push(line);
+        }
+        lines
+    }
+}
