@@ -239,6 +239,10 @@ impl Network<'_> {
     }
 }
 
+/// Added to a piece's squared length before the division that projects a sample onto it, so a
+/// piece of zero length divides by a positive number (the WGSL twin reads it from its preamble).
+pub const PIECE_LEN2_EPS: f32 = 1e-6;
+
 #[inline(always)]
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
@@ -256,7 +260,7 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
-    let len2 = abx * abx + abz * abz + 1e-6;
+    let len2 = abx * abx + abz * abz + PIECE_LEN2_EPS;
     let t = (((x - p.ax) * abx + (z - p.az) * abz) / len2).clamp(0.0, 1.0);
     let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
     let d = (dx * dx + dz * dz).sqrt();

@@ -43,7 +43,7 @@
 mod carve;
 mod network;
 
-pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob};
+pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob, PIECE_LEN2_EPS};
 pub use network::{Network, Node};
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
