@@ -198,7 +198,7 @@ impl Network<'_> {
                         valley,
                         wet: if wet { 1.0 } else { 0.0 },
                         reach,
-                        inv_len2: 1.0 / (abx * abx + abz * abz + 1e-6),
+                        inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
                     });
                 }
             }
@@ -287,6 +287,10 @@ impl Network<'_> {
         }
     }
 }
+
+/// Added to a piece's squared length before the division that projects a sample onto it, so a
+/// piece of zero length divides by a positive number (the WGSL twin reads it from its preamble).
+pub const PIECE_LEN2_EPS: f32 = 1e-6;
 
 #[inline(always)]
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
@@ -379,6 +383,9 @@ impl RiverJob {
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.
     pub fn lake_level(&self, x: f32, z: f32) -> Option<f32> {
+        if self.lakes.is_empty() {
+            return None;
+        }
         let i = ((x / self.spacing_m) - 0.5).floor() as i64 - self.li0;
         let k = ((z / self.spacing_m) - 0.5).floor() as i64 - self.lk0;
         let rows = self.lakes.len() / self.lakes_w.max(1);

@@ -44,7 +44,7 @@ mod carve;
 mod lines;
 mod network;
 
-pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob};
+pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob, PIECE_LEN2_EPS};
 pub use lines::{LineEnd, RiverLine};
 pub use network::{Lake, Network, Node, NodeId};
 
