@@ -179,11 +179,13 @@ impl Network<'_> {
                 let wet = q >= self.plan.wet_q;
                 let (hw, depth) = if wet { channel(q) } else { (0.0, 0.0) };
                 // Valleys widen with the discharge, from VALLEY_MIN to the reach, and may widen
-                // further where they are deep, up to three times that (at most the reach).
+                // further where they are deep: up to three times that in plains, more where the
+                // relief is high (at most the reach).
                 let grow = libm::log2f(q as f32) / libm::log2f(Q_MAX as f32);
                 let max_reach = REACH * s;
                 let valley = VALLEY_MIN + (max_reach - VALLEY_MIN) * grow;
-                let reach = (3.0 * valley).min(max_reach);
+                let relief = self.relief(i, k) * self.earth.inv_relief_max;
+                let reach = (3.0 * valley * (1.0 + 3.0 * relief)).min(max_reach);
                 for p in edge.points.windows(2) {
                     let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
                     pieces.push(Piece {

@@ -49,6 +49,8 @@ struct HeightBlock {
     h: Vec<f32>,
     /// `BLOCK²` indices into [`OFFSETS`] of the downstream neighbour, or `NONE`.
     down: Vec<u8>,
+    /// `BLOCK²` relief amplitudes of the macro fields, metres.
+    relief: Vec<f32>,
 }
 
 /// Discharge and lake levels of one block of nodes.
@@ -146,6 +148,12 @@ impl<'a> Network<'a> {
         let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
         let hb = self.height_block((bx, bz));
         hb.h[(lk + 1) * (BLOCK as usize + 2) + li + 1]
+    }
+
+    /// Relief amplitude of the macro fields at node `(i, k)`, metres.
+    pub fn relief(&mut self, i: i64, k: i64) -> f32 {
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        self.height_block((bx, bz)).relief[lk * BLOCK as usize + li]
     }
 
     fn down_index(&mut self, i: i64, k: i64) -> u8 {
@@ -530,7 +538,9 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
         }
     }
     let mut h = vec![0.0f32; m * m];
+    let mut amp = vec![0.0f32; m * m];
     let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
+    let (mut e, mut a, mut r) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
     let ero = [plan.erosion; LANES];
     let rough = [1.0f32; LANES];
     let mut out = [0.0f32; LANES];
@@ -540,14 +550,18 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
         z[..c].copy_from_slice(&zs[start..start + c]);
         kernel::heights(earth, plan.node_lod, &x, &z, &ero, &rough, &mut out);
         h[start..start + c].copy_from_slice(&out[..c]);
+        kernel::macro_fields(&earth.macro_plan, &x, &z, &mut e, &mut a, &mut r);
+        amp[start..start + c].copy_from_slice(&a[..c]);
     }
     let n = BLOCK as usize;
     let mut down = vec![NONE; n * n];
+    let mut relief = Vec::with_capacity(n * n);
     for lk in 0..n {
         for li in 0..n {
             let (ci, ck) = (li + 1, lk + 1);
             let (i, k) = (i0 + ci as i64, k0 + ck as i64);
             let c = ck * m + ci;
+            relief.push(amp[c]);
             let hc = h[c];
             if hc < plan.sea_level_m {
                 continue;
@@ -580,5 +594,5 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
             }
         }
     }
-    HeightBlock { h, down }
+    HeightBlock { h, down, relief }
 }
