@@ -316,6 +316,11 @@ impl RiverJob {
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.
     pub fn lake_level(&self, x: f32, z: f32) -> Option<f32> {
+        // An empty job (coarse LODs) has no lakes and no spacing: dividing by its zero spacing
+        // would saturate the node index, and the neighbour offsets below would overflow.
+        if self.lakes.is_empty() {
+            return None;
+        }
         let i = ((x / self.spacing_m) - 0.5).floor() as i64 - self.li0;
         let k = ((z / self.spacing_m) - 0.5).floor() as i64 - self.lk0;
         let rows = self.lakes.len() / self.lakes_w.max(1);
