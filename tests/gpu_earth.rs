@@ -4,11 +4,15 @@
 //! skip.
 //!
 //! The biome weights are computed on the CPU on both paths, so they must be identical, bit for
-//! bit. The heights: see [`height_tolerance`].
+//! bit. The heights: see [`height_tolerance`]. The river carve (`shaders/rivers.wgsl`, a second
+//! pass over the heights) is compared on tiles that cross rivers in
+//! [`gpu_river_carve_matches_cpu`]: the carved field within the same tolerance, and the carve of
+//! the device's own heights bit for bit.
 
 use std::sync::Arc;
 use strata::compute::Compute;
 use strata::gpu::{request_device, BackendChoice, EarthKernels};
+use strata::terrain::earth::rivers;
 use strata::terrain::tile::{field, FieldJob};
 use strata::terrain::{TileKey, WorldParams, WorldPlan};
 
@@ -57,6 +61,8 @@ struct Report {
     differing: usize,
     min_h: f32,
     max_h: f32,
+    /// The device's heights.
+    gpu_heights: Vec<f32>,
 }
 
 fn compare(
@@ -92,6 +98,7 @@ fn compare(
         differing: 0,
         min_h: f32::INFINITY,
         max_h: f32::NEG_INFINITY,
+        gpu_heights: gpu.heights.clone(),
     };
     for (v, (&c, &g)) in cpu.heights.iter().zip(&gpu.heights).enumerate() {
         let (i, j) = (v % job.w, v / job.w);
@@ -174,6 +181,139 @@ fn gpu_earth_field_matches_cpu() {
     assert!(
         mountain_relief > 500.0,
         "the LOD 6 tiles at x = 110 km should be mountains ({mountain_relief} m of relief)"
+    );
+}
+
+/// The default world without rivers: the heights `earth::field` has before the carve.
+fn dry_plan() -> WorldPlan {
+    let mut params = WorldParams::default();
+    params.earth.as_mut().expect("earth-1").rivers = None;
+    WorldPlan::new(SEED, params).expect("default world without rivers")
+}
+
+/// The device's river carve (`shaders/rivers.wgsl`) against `earth::carve`, on tiles of the
+/// default world that cross river valleys at LODs 0, 3, 6 and 8 (all carve: `MAX_CARVE_LOD` is
+/// 8). Two comparisons:
+///
+/// - **Carved field, device vs CPU**, within [`height_tolerance`], the uncarved heights' own
+///   slack (the carve reads the device's heights, which carry it); the test prints max |Δh|
+///   (0 on lavapipe). The carve is metres to hundreds of metres deep, far beyond that slack:
+///   each LOD's tiles must hold at least 1 000 samples that the CPU carve moves by more than
+///   the tolerance, so a device that skipped or misplaced the carve fails here.
+/// - **The carve alone, exactly**: the device's carved heights must equal, bit for bit, the CPU
+///   carve applied to the device's own uncarved heights (the same tile of the world without
+///   rivers). No tolerance: the carve is a pointwise function of the position and the uncarved
+///   height with no feedback, mirrored operation for operation (products through `rn`, `/` and
+///   `sqrt` correctly rounded, the CPU's `clamp` written out, `CARVE_MAX_M` and the piece
+///   epsilon from the generated preamble), so on any device with IEEE `+ − ×` it gives the
+///   CPU's bits. This is what catches a last-millimetre error the tolerance would let through,
+///   such as a sample outside every valley that is not returned unchanged (the seams need those
+///   bits).
+#[test]
+fn gpu_river_carve_matches_cpu() {
+    let plan = plan();
+    let dry = dry_plan();
+    let earth = plan.earth.as_ref().expect("earth-1");
+    let rp = earth.rivers.as_ref().expect("the default world has rivers");
+    let (_adapter, device, queue) = software_device();
+    let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+    let key = |lod, x, z| TileKey { lod, x, z };
+    // Found from the CPU field with and without rivers: valley floors and walls, valley edges
+    // (tiles the valley crosses in part: most of their samples keep their heights bit for bit,
+    // the others move by millimetres) and mountain valleys cut by the full CARVE_MAX_M.
+    let cases = [
+        // LOD 8 (16 km tiles): around the origin, south-west of it, mountains at x ≈ 60 km.
+        key(8, 0, 0),
+        key(8, -1, -1),
+        key(8, 3, 2),
+        // LOD 6 (4 km tiles): a mountain valley cut by CARVE_MAX_M, two valleys in hills.
+        key(6, 15, 9),
+        key(6, 5, 0),
+        key(6, 6, -4),
+        // LOD 3 (512 m tiles): a mountain valley cut by CARVE_MAX_M, a valley wall, a valley
+        // edge.
+        key(3, 121, 75),
+        key(3, 49, -25),
+        key(3, 72, 112),
+        // LOD 0 (64 m tiles): a channel, a valley cut by CARVE_MAX_M, two valley edges.
+        key(0, -16, 80),
+        key(0, 968, 600),
+        key(0, 520, 248),
+        key(0, 576, 896),
+    ];
+    let (mut max_dh, mut differing, mut samples, mut clamped) = (0.0f32, 0, 0, 0);
+    let mut beyond_by_lod = std::collections::BTreeMap::new();
+    for k in cases {
+        assert!(k.lod as usize <= rivers::MAX_CARVE_LOD, "{k:?} must carve");
+        let job = FieldJob::with_margin(k);
+        let spacing = plan.lods[k.lod as usize].spacing_m;
+        let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+        let carve = |uncarved: &[f32]| {
+            let mut h = uncarved.to_vec();
+            strata::terrain::earth::carve(&rj, spacing, job, &mut h);
+            h
+        };
+        let carved = field(&plan, job);
+        let bare = field(&dry, job);
+        // The world without rivers has the heights of the world with rivers before the carve.
+        let recarved = carve(&bare.heights);
+        assert!(
+            recarved
+                .iter()
+                .zip(&carved.heights)
+                .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "{k:?}: carving the river-free field does not give the field with rivers"
+        );
+        let (mut changed, mut beyond, mut at_max) = (0, 0, 0);
+        for (&c, &b) in carved.heights.iter().zip(&bare.heights) {
+            changed += usize::from(c.to_bits() != b.to_bits());
+            beyond += usize::from((c - b).abs() > height_tolerance(c));
+            at_max += usize::from(c.to_bits() == (b - rivers::CARVE_MAX_M).to_bits());
+        }
+        println!(
+            "{k:?}: the CPU carve changes {changed} of {} heights ({beyond} beyond the \
+             tolerance, {at_max} by CARVE_MAX_M)",
+            carved.heights.len()
+        );
+        assert!(changed > 0, "{k:?} should cross a river valley");
+        *beyond_by_lod.entry(k.lod).or_insert(0) += beyond;
+        clamped += at_max;
+
+        let rep = compare(&device, &queue, &kernels, &plan, k);
+        max_dh = max_dh.max(rep.max_dh);
+        differing += rep.differing;
+        samples += carved.heights.len();
+
+        let gpu_bare = kernels
+            .field(&device, &queue, &dry, job, None)
+            .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
+        let expected = carve(&gpu_bare.heights);
+        for (v, (e, g)) in expected.iter().zip(&rep.gpu_heights).enumerate() {
+            assert_eq!(
+                e.to_bits(),
+                g.to_bits(),
+                "{k:?}, vertex ({}, {}): the device carves its height {} to {g}, the CPU carve \
+                 of that height gives {e}",
+                v % job.w,
+                v / job.w,
+                gpu_bare.heights[v]
+            );
+        }
+    }
+    println!(
+        "river carve overall: max |Δh| {max_dh:.3e} m, {differing} of {samples} heights not \
+         bit-identical; carved beyond the tolerance per LOD {beyond_by_lod:?}; {clamped} cut by \
+         CARVE_MAX_M"
+    );
+    for (lod, beyond) in &beyond_by_lod {
+        assert!(
+            *beyond >= 1000,
+            "LOD {lod}: only {beyond} samples carved beyond the tolerance; choose tiles on rivers"
+        );
+    }
+    assert!(
+        clamped > 0,
+        "some valley should be cut by the full CARVE_MAX_M, so that the limit is compared too"
     );
 }
 

@@ -6,15 +6,18 @@
 //! files are covered automatically because the test enumerates the directory.
 //!
 //! A shader whose constants the host generates names the generator on a `// preamble: path()`
-//! line (`earth.wgsl`: `strata::gpu::earth::constants_wgsl()`); the test validates the source the
-//! crate loads for it, and checks that naga reads every generated constant as the Rust `f32`.
+//! line (`earth.wgsl` and `rivers.wgsl`: `strata::gpu::earth::constants_wgsl()`); the test
+//! validates the source the crate loads for it, and checks that naga reads every generated
+//! constant as the Rust `f32`.
 
 use std::collections::BTreeMap;
 use std::mem::{offset_of, size_of};
 use std::path::{Path, PathBuf};
 use strata::gpu::layout::{
-    GpuBiomeMap, GpuEarthLayer, GpuEarthOctave, GpuEarthParams, GpuFractal, GpuOctave, GpuParams,
+    GpuBiomeMap, GpuCarveParams, GpuEarthLayer, GpuEarthOctave, GpuEarthParams, GpuFractal,
+    GpuOctave, GpuParams,
 };
+use strata::terrain::earth::rivers::Piece;
 
 fn shader_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders")
@@ -99,6 +102,9 @@ fn every_shader_parses_and_validates() {
             let source = match (name.as_str(), generator.trim()) {
                 ("earth.wgsl", "strata::gpu::earth::constants_wgsl()") => {
                     strata::gpu::earth_shader_source()
+                }
+                ("rivers.wgsl", "strata::gpu::earth::constants_wgsl()") => {
+                    strata::gpu::rivers_shader_source()
                 }
                 other => panic!("{name}: no host source known for preamble {other:?}"),
             };
@@ -227,22 +233,35 @@ fn host_structs_match_the_wgsl_layout() {
 }
 
 #[test]
-fn the_earth_source_has_its_entry_point_and_the_rust_constants() {
-    let source = strata::gpu::earth_shader_source();
-    let module = validate("gpu::earth_shader_source()", &source);
+fn the_earth_sources_have_their_entry_points_and_the_rust_constants() {
+    for (label, source, entry) in [
+        (
+            "gpu::earth_shader_source()",
+            strata::gpu::earth_shader_source(),
+            "earth_heights",
+        ),
+        (
+            "gpu::rivers_shader_source()",
+            strata::gpu::rivers_shader_source(),
+            "river_carve",
+        ),
+    ] {
+        check_entry_and_constants(label, &source, entry);
+    }
+}
+
+fn check_entry_and_constants(label: &str, source: &str, entry: &str) {
+    let module = validate(label, source);
     assert!(
-        module
-            .entry_points
-            .iter()
-            .any(|e| e.name == "earth_heights"),
-        "entry point earth_heights missing"
+        module.entry_points.iter().any(|e| e.name == entry),
+        "entry point {entry} missing from {label}"
     );
     for (name, value) in strata::gpu::earth::constants() {
         let (_, c) = module
             .constants
             .iter()
             .find(|(_, c)| c.name.as_deref() == Some(name))
-            .unwrap_or_else(|| panic!("constant {name} missing from the earth source"));
+            .unwrap_or_else(|| panic!("constant {name} missing from {label}"));
         match module.global_expressions[c.init] {
             naga::Expression::Literal(naga::Literal::F32(v)) => {
                 assert_eq!(
@@ -300,5 +319,34 @@ fn earth_structs_match_the_wgsl_layout() {
             ocean_depth_m,
             inv_relief_max
         ]
+    );
+}
+
+#[test]
+fn river_carve_structs_match_the_wgsl_layout() {
+    let module = validate("rivers", &strata::gpu::rivers_shader_source());
+    check_layout!(
+        &module,
+        "CarveParams",
+        GpuCarveParams,
+        [
+            gx0,
+            gz0,
+            w,
+            h,
+            spacing,
+            rounding_key,
+            x0,
+            z0,
+            bin_m,
+            bins_w,
+            bins_h
+        ]
+    );
+    check_layout!(
+        &module,
+        "Piece",
+        Piece,
+        [ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2]
     );
 }

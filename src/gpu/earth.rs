@@ -1,26 +1,37 @@
-//! The `earth-1` height kernel: `terrain::earth::field` on a wgpu device.
+//! The `earth-1` height kernel and river carve: `terrain::earth::field` on a wgpu device.
 //!
-//! [`EarthKernels`] holds the compute pipeline of `shaders/earth.wgsl`, one invocation per sample:
-//! the macro fields, the LOD's relief layers and gully layers of `terrain::earth::kernel`. The
-//! biome weights (the climate: `earth::climate::weights`, a Voronoi map on a 4 km lattice with an
-//! elevation lapse and a blur) stay on the CPU: the host computes them, derives each sample's
-//! erosion strength and roughness from them exactly as `earth::field` does, and uploads those two
-//! numbers per sample; the returned field's weights are the CPU's, bit for bit.
+//! [`EarthKernels`] holds the compute pipelines of `shaders/earth.wgsl` and `shaders/rivers.wgsl`.
+//! The first runs one invocation per sample: the macro fields, the LOD's relief layers and gully
+//! layers of `terrain::earth::kernel`. The biome weights (the climate: `earth::climate::weights`,
+//! a Voronoi map on a 4 km lattice with an elevation lapse and a blur) stay on the CPU: the host
+//! computes them, derives each sample's erosion strength and roughness from them exactly as
+//! `earth::field` does, and uploads those two numbers per sample; the returned field's weights
+//! are the CPU's, bit for bit.
 //!
-//! The kernel constants of `earth::kernel` have one source of truth, the Rust constants: the host
-//! prepends a preamble of `const NAME: f32 = …;` lines ([`constants_wgsl`]) to the shader source,
-//! each literal the shortest decimal of the `f32` widened to `f64`, which WGSL reads as that `f64`
-//! exactly and converts to the same `f32` without rounding. Retuning a number (or the layer lists
-//! of `earth::EarthPlan`, which are uploaded per job) needs no change here.
+//! Where the world has rivers and the LOD carves them (`rivers::MAX_CARVE_LOD`), the second
+//! pipeline, `shaders/rivers.wgsl`, carves the heights in place in the same command encoder,
+//! before they are copied out: the twin of `earth::carve` (`rivers::RiverJob::carve_one`), one
+//! invocation per sample. The river job (the drainage network, its pieces and their bins) is
+//! built on the CPU by `rivers::job_for`, as `earth::field` builds it, and uploaded: the pieces as
+//! `rivers::Piece` itself, the bins in their CSR form, and the bin grid in
+//! [`GpuCarveParams`].
+//!
+//! The kernel constants of `earth::kernel` and of the carve have one source of truth, the Rust
+//! constants: the host prepends a preamble of `const NAME: f32 = …;` lines ([`constants_wgsl`])
+//! to both shader sources, each literal the shortest decimal of the `f32` widened to `f64`, which
+//! WGSL reads as that `f64` exactly and converts to the same `f32` without rounding. Retuning a
+//! number (or the layer lists of `earth::EarthPlan`, which are uploaded per job) needs no change
+//! here.
 //!
 //! Like [`super::tile::TileKernels`], every job runs inside error scopes, waits for its
 //! submission with a timeout, checks the mapping, and reports any failure as an `Err`.
 
 use super::kit::{bind_group, dispatch_linear, read_back, readback, storage, upload};
 use super::kit::{Binding, Program};
-use super::layout::{GpuEarthLayer, GpuEarthOctave, GpuEarthParams};
+use super::layout::{GpuCarveParams, GpuEarthLayer, GpuEarthOctave, GpuEarthParams};
 use super::scopes::Scopes;
 use super::tile::{COMMON_WGSL, MAX_BUFFER_BYTES};
+use crate::terrain::earth::rivers::{self, Piece, RiverJob};
 use crate::terrain::earth::{climate, kernel, EarthPlan};
 use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
@@ -32,12 +43,17 @@ use std::time::Duration;
 /// preamble and `common.wgsl`).
 pub const EARTH_WGSL: &str = include_str!("../../shaders/earth.wgsl");
 
+/// `shaders/rivers.wgsl`: bindings and entry point of the river carve (needs the constants
+/// preamble and `common.wgsl`).
+pub const RIVERS_WGSL: &str = include_str!("../../shaders/rivers.wgsl");
+
 /// Invocations per workgroup (`@workgroup_size(64)`).
 const WORKGROUP: u32 = 64;
 
-/// The `f32` constants `earth.wgsl` reads, by WGSL name: the named constants of
+/// The `f32` constants `earth.wgsl` and `rivers.wgsl` read, by WGSL name: the named constants of
 /// `earth::kernel`, then the literals inside its functions and those of `earth::trig` (which
-/// have no Rust name; they are repeated here, and the twin tests notice if they drift).
+/// have no Rust name; they are repeated here, and the twin tests notice if they drift), then the
+/// named constants of the river carve.
 pub fn constants() -> Vec<(&'static str, f32)> {
     use kernel as k;
     vec![
@@ -72,6 +88,10 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("TRIG_S7", 1.0 / 5040.0),
         ("TRIG_C4", 1.0 / 24.0),
         ("TRIG_C6", 1.0 / 720.0),
+        // `rivers::RiverJob::carve_one` and `rivers::profile`.
+        ("CARVE_MAX_M", rivers::CARVE_MAX_M),
+        ("PIECE_LEN2_EPS", rivers::PIECE_LEN2_EPS),
+        ("WALL_SLOPE", rivers::WALL_SLOPE),
     ]
 }
 
@@ -92,6 +112,11 @@ pub fn constants_wgsl() -> String {
 /// The WGSL source of the earth kernel: the constants preamble, `common.wgsl`, `earth.wgsl`.
 pub fn earth_shader_source() -> String {
     format!("{}\n{COMMON_WGSL}\n{EARTH_WGSL}", constants_wgsl())
+}
+
+/// The WGSL source of the river carve: the constants preamble, `common.wgsl`, `rivers.wgsl`.
+pub fn rivers_shader_source() -> String {
+    format!("{}\n{COMMON_WGSL}\n{RIVERS_WGSL}", constants_wgsl())
 }
 
 /// The earth plan of an `earth-1` world.
@@ -165,6 +190,69 @@ pub fn earth_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuEarthP
     })
 }
 
+/// The uniform of the river carve of a field job over its river job `rj`: the rectangle of
+/// `params` (the job's [`earth_params`]) and the bin grid of `rj`, with no bins when `rj` has
+/// none (`bin_start` empty, as in `RiverJob::default()`), so that no sample reads a bin.
+///
+/// # Errors
+/// If `rj`'s bins are not `bins_w · bins_h` ranges in CSR form, or its pieces or bins need a
+/// buffer larger than [`MAX_BUFFER_BYTES`] (the job then does not run on the device).
+pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<GpuCarveParams> {
+    for (what, bytes) in [
+        ("pieces", std::mem::size_of_val(rj.pieces.as_slice())),
+        (
+            "bin offsets",
+            std::mem::size_of_val(rj.bin_start.as_slice()),
+        ),
+        (
+            "bin entries",
+            std::mem::size_of_val(rj.bin_pieces.as_slice()),
+        ),
+    ] {
+        if bytes as u64 > MAX_BUFFER_BYTES {
+            bail!("the river {what} need a {bytes}-byte buffer; at most {MAX_BUFFER_BYTES} are allowed");
+        }
+    }
+    let (bins_w, bins_h) = if rj.bin_start.is_empty() {
+        (0, 0)
+    } else {
+        let bins = rj.bins_w.checked_mul(rj.bins_h);
+        if bins.and_then(|b| b.checked_add(1)) != Some(rj.bin_start.len()) {
+            bail!(
+                "a river job of {}×{} bins has {} bin offsets",
+                rj.bins_w,
+                rj.bins_h,
+                rj.bin_start.len()
+            );
+        }
+        // Within MAX_BUFFER_BYTES of offsets, both counts and their product fit in u32.
+        (rj.bins_w as u32, rj.bins_h as u32)
+    };
+    Ok(GpuCarveParams {
+        gx0: params.gx0,
+        gz0: params.gz0,
+        w: params.w,
+        h: params.h,
+        spacing: params.spacing,
+        rounding_key: 0,
+        x0: rj.x0,
+        z0: rj.z0,
+        bin_m: rj.bin_m,
+        bins_w,
+        bins_h,
+        _pad: 0,
+    })
+}
+
+/// `v`, or `pad` when `v` is empty: a storage array binding must hold at least one element.
+fn or_pad<'a, T>(v: &'a [T], pad: &'a [T; 1]) -> &'a [T] {
+    if v.is_empty() {
+        pad
+    } else {
+        v
+    }
+}
+
 /// The macro octaves in the order `earth.wgsl` reads them: warp x, warp z, continent, belt, hills.
 fn macro_octaves(earth: &EarthPlan) -> Vec<GpuEarthOctave> {
     let m = &earth.macro_plan;
@@ -192,20 +280,24 @@ fn sample_relief(earth: &EarthPlan, weights: &[f32], n: usize) -> Vec<[f32; 2]> 
         .collect()
 }
 
-/// The compiled pipeline of `earth.wgsl`, for one device.
+/// The compiled pipelines of `earth.wgsl` and `rivers.wgsl`, for one device.
 #[derive(Debug)]
 pub struct EarthKernels {
     layout: wgpu::BindGroupLayout,
     heights: wgpu::ComputePipeline,
+    carve_layout: wgpu::BindGroupLayout,
+    carve: wgpu::ComputePipeline,
 }
 
 impl EarthKernels {
-    /// Compiles the preamble + `common.wgsl` + `earth.wgsl` and builds the pipeline.
+    /// Compiles the preamble + `common.wgsl` + `earth.wgsl`, and the preamble + `common.wgsl` +
+    /// `rivers.wgsl`, and builds their pipelines.
     ///
     /// # Errors
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
         let scopes = Scopes::push(device);
+        // Both programs bind a uniform, three read-only arrays and the heights.
         let bindings = [
             Binding::Uniform,
             Binding::Read,
@@ -219,22 +311,34 @@ impl EarthKernels {
             &earth_shader_source(),
             &bindings,
         );
+        let carve = Program::new(
+            device,
+            "strata rivers.wgsl",
+            &rivers_shader_source(),
+            &bindings,
+        );
         let kernels = Self {
             heights: program.pipeline(device, "earth_heights"),
             layout: program.layout,
+            carve: carve.pipeline(device, "river_carve"),
+            carve_layout: carve.layout,
         };
-        scopes.pop().context("compiling shaders/earth.wgsl")?;
+        scopes
+            .pop()
+            .context("compiling shaders/earth.wgsl and shaders/rivers.wgsl")?;
         Ok(kernels)
     }
 
     /// Heights and biome weights of the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of
-    /// LOD `lod` of an `earth-1` world: the twin of [`crate::terrain::earth::field`] (heights on
-    /// the device, weights on the CPU; tolerance in `tests/gpu_earth.rs`). `timeout` bounds the
-    /// wait for the device (`None`: wait indefinitely).
+    /// LOD `lod` of an `earth-1` world: the twin of [`crate::terrain::earth::field`] (heights and
+    /// their river carve on the device, weights and the river job on the CPU; tolerance in
+    /// `tests/gpu_earth.rs`). `timeout` bounds the wait for the device (`None`: wait
+    /// indefinitely).
     ///
     /// # Errors
-    /// If the job is out of range ([`earth_params`]), or the device reports an error, times out,
-    /// is lost or fails to map the result.
+    /// If the job is out of range ([`earth_params`]), its river job is too large
+    /// ([`carve_params`]), or the device reports an error, times out, is lost or fails to map the
+    /// result.
     pub fn field(
         &self,
         device: &wgpu::Device,
@@ -259,6 +363,19 @@ impl EarthKernels {
         if layers.is_empty() {
             layers.push(GpuEarthLayer::default());
         }
+        // The river job of the carve, as `earth::field` builds it.
+        let river = match earth
+            .rivers
+            .as_ref()
+            .filter(|_| job.lod as usize <= rivers::MAX_CARVE_LOD)
+        {
+            Some(rp) => {
+                let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+                let cp = carve_params(&params, &rj)?;
+                Some((rj, cp))
+            }
+            None => None,
+        };
 
         let scopes = Scopes::push(device);
         let init = |label: &str, contents: &[u8], usage: wgpu::BufferUsages| {
@@ -280,6 +397,41 @@ impl EarthKernels {
         let bytes = n as u64 * 4;
         let heights = storage(device, "earth heights", bytes, wgpu::BufferUsages::COPY_SRC);
         let readback = readback(device, "earth readback", bytes);
+        let carve_group = river.as_ref().map(|(rj, cp)| {
+            // Empty arrays are uploaded as one element, which nothing reads: a job without
+            // pieces has empty bins, and one without bins has `bins_w = bins_h = 0`.
+            let (no_piece, no_index) = ([Piece::default()], [0u32]);
+            let array = |label: &str, bytes: &[u8]| init(label, bytes, storage_usage);
+            let carve_params_buf = init(
+                "river carve params",
+                bytemuck::bytes_of(cp),
+                wgpu::BufferUsages::UNIFORM,
+            );
+            let piece_buf = array(
+                "river pieces",
+                bytemuck::cast_slice(or_pad(&rj.pieces, &no_piece)),
+            );
+            let start_buf = array(
+                "river bin offsets",
+                bytemuck::cast_slice(or_pad(&rj.bin_start, &no_index)),
+            );
+            let entry_buf = array(
+                "river bin entries",
+                bytemuck::cast_slice(or_pad(&rj.bin_pieces, &no_index)),
+            );
+            bind_group(
+                device,
+                &self.carve_layout,
+                "strata river carve job",
+                &[
+                    &carve_params_buf,
+                    &piece_buf,
+                    &start_buf,
+                    &entry_buf,
+                    &heights,
+                ],
+            )
+        });
         let bind_group = bind_group(
             device,
             &self.layout,
@@ -298,25 +450,23 @@ impl EarthKernels {
             pass.set_bind_group(0, &bind_group, &[]);
             dispatch_linear(&mut pass, n as u32, WORKGROUP);
         }
+        if let Some(carve_group) = &carve_group {
+            // A pass of its own: it reads every height the first pass wrote.
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: None,
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&self.carve);
+            pass.set_bind_group(0, carve_group, &[]);
+            dispatch_linear(&mut pass, n as u32, WORKGROUP);
+        }
         encoder.copy_buffer_to_buffer(&heights, 0, &readback, 0, bytes);
         let submission = queue.submit([encoder.finish()]);
         let data: Vec<u32> = read_back(device, &readback, submission, timeout, scopes)?;
         if data.len() < n {
             bail!("read back {} heights, expected {n}", data.len());
         }
-        let mut heights: Vec<f32> = data[..n].iter().map(|&b| f32::from_bits(b)).collect();
-        if let Some(rp) = earth
-            .rivers
-            .as_ref()
-            .filter(|_| job.lod as usize <= crate::terrain::earth::rivers::MAX_CARVE_LOD)
-        {
-            // The river carve runs on the CPU after the device's heights, as `earth::field`
-            // does it.
-            let rj = crate::terrain::earth::rivers::job_for(
-                earth, rp, spacing, job.gx0, job.gz0, job.w, job.h,
-            );
-            crate::terrain::earth::carve(&rj, spacing, job, &mut heights);
-        }
+        let heights: Vec<f32> = data[..n].iter().map(|&b| f32::from_bits(b)).collect();
         Ok(Field {
             w: job.w,
             h: job.h,
@@ -359,6 +509,46 @@ mod tests {
             assert_eq!(wide, value as f64, "{name}: {lit} is not exactly the f32");
             assert_eq!((wide as f32).to_bits(), value.to_bits(), "{name}");
         }
+    }
+
+    #[test]
+    fn carve_params_follow_the_river_job() {
+        let plan = WorldPlan::new(1, crate::terrain::WorldParams::default()).expect("plan");
+        let job = FieldJob::new(6, -33, -33, 67, 67);
+        let params = earth_params(&plan, job).expect("params");
+        let earth = plan.earth.as_ref().expect("earth");
+        let rp = earth.rivers.as_ref().expect("the default world has rivers");
+        let spacing = plan.lods[6].spacing_m;
+        let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+        let cp = carve_params(&params, &rj).expect("carve params");
+        assert_eq!(
+            (cp.gx0, cp.gz0, cp.w, cp.h),
+            (params.gx0, params.gz0, params.w, params.h)
+        );
+        assert_eq!(cp.spacing.to_bits(), spacing.to_bits());
+        assert_eq!(cp.rounding_key, 0);
+        assert_eq!(
+            (cp.x0.to_bits(), cp.z0.to_bits(), cp.bin_m.to_bits()),
+            (rj.x0.to_bits(), rj.z0.to_bits(), rj.bin_m.to_bits())
+        );
+        assert!(cp.bins_w > 0 && cp.bins_h > 0);
+        assert_eq!(
+            (cp.bins_w as usize, cp.bins_h as usize),
+            (rj.bins_w, rj.bins_h)
+        );
+        // A job without bins reads none: its grid has no bins.
+        let empty = carve_params(&params, &RiverJob::default()).expect("an empty job");
+        assert_eq!((empty.bins_w, empty.bins_h), (0, 0));
+        // Offsets that do not cover the grid would send the device out of the job.
+        let mut short = rj.clone();
+        short.bin_start.pop();
+        assert!(carve_params(&params, &short).is_err());
+    }
+
+    #[test]
+    fn empty_arrays_are_padded_to_one_element() {
+        assert_eq!(or_pad(&[] as &[u32], &[7]), &[7]);
+        assert_eq!(or_pad(&[1u32, 2], &[7]), &[1, 2]);
     }
 
     #[test]

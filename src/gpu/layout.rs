@@ -1,12 +1,13 @@
-//! Host-side images of the WGSL structs of `shaders/common.wgsl`, `shaders/tile.wgsl` and
-//! `shaders/earth.wgsl`.
+//! Host-side images of the WGSL structs of `shaders/common.wgsl`, `shaders/tile.wgsl`,
+//! `shaders/earth.wgsl` and `shaders/rivers.wgsl`.
 //!
 //! Each struct is `#[repr(C)]`, [`bytemuck::Pod`] and matches its WGSL struct field for field
 //! (offsets are checked against the offsets naga computes, by `tests/shaders_naga.rs`). Only 4-byte
 //! scalars, `vec2<f32>` (`[f32; 2]`, 8-byte aligned in WGSL, placed at multiples of 8 here) and
 //! arrays of 16-byte structs are used, so the C layout and the WGSL layout coincide without hidden
 //! padding. Every value is copied from [`crate::terrain::WorldPlan`] (which did the transcendental
-//! arithmetic in `f64`), never recomputed.
+//! arithmetic in `f64`) or, for the river carve, from the field's
+//! [`crate::terrain::earth::rivers::RiverJob`], never recomputed.
 
 use crate::terrain::biome::BiomeMapPlan;
 use crate::terrain::earth::{Layer, LayerKind, NoiseOctave};
@@ -292,6 +293,38 @@ pub struct GpuEarthParams {
     pub ocean_depth_m: f32,
     /// `EarthPlan::inv_relief_max`.
     pub inv_relief_max: f32,
+    /// Padding to a multiple of 16 bytes.
+    pub _pad: u32,
+}
+
+/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 48 bytes): the rectangle of the heights
+/// and the bin grid of `terrain::earth::rivers::RiverJob`. The pieces are uploaded as
+/// `rivers::Piece` itself, whose `#[repr(C)]` layout is the WGSL `Piece`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuCarveParams {
+    /// Output rectangle origin, lattice index.
+    pub gx0: i32,
+    /// Output rectangle origin, lattice index.
+    pub gz0: i32,
+    /// Output columns.
+    pub w: u32,
+    /// Output rows.
+    pub h: u32,
+    /// Vertex spacing, metres.
+    pub spacing: f32,
+    /// Always 0: the runtime zero of the rounding barrier `rn` in `common.wgsl`.
+    pub rounding_key: u32,
+    /// `RiverJob::x0`: west edge of the bin grid, metres.
+    pub x0: f32,
+    /// `RiverJob::z0`: north edge of the bin grid, metres.
+    pub z0: f32,
+    /// `RiverJob::bin_m`: bin side, metres.
+    pub bin_m: f32,
+    /// `RiverJob::bins_w`, or 0 when the job has no bins (`bin_start` empty).
+    pub bins_w: u32,
+    /// `RiverJob::bins_h`, or 0 when the job has no bins.
+    pub bins_h: u32,
     /// Padding to a multiple of 16 bytes.
     pub _pad: u32,
 }

@@ -13,11 +13,15 @@
 //!   ([`crate::terrain::earth::field`]) from its macro octaves and the LOD's layers, one
 //!   invocation per sample, with the same rounding barriers and correctly rounded `/` and `sqrt`;
 //!   its biome weights (the climate) are computed on the CPU, and so are the per-sample erosion
-//!   and roughness the kernel reads. [`GpuHandle::field`] routes each world to its kernels.
+//!   and roughness the kernel reads. Where the world has rivers and the LOD carves them,
+//!   `shaders/rivers.wgsl` then carves the heights in place in a second pass
+//!   ([`crate::terrain::earth::carve`]), from the river job (pieces and bins) the CPU builds and
+//!   uploads. [`GpuHandle::field`] routes each world to its kernels.
 //!
 //! All transcendental constants (octave frequencies and amplitudes, warp constants, scales, blur
-//! taps) are taken from [`crate::terrain::WorldPlan`] and uploaded ([`layout`]); the GPU evaluates
-//! no `pow`, `exp` or `log`.
+//! taps) are taken from [`crate::terrain::WorldPlan`] and uploaded ([`layout`]), as are the river
+//! pieces of the CPU's river job (channel widths and depths, valley widths); the GPU evaluates no
+//! `pow`, `exp` or `log`.
 //!
 //! # Exactness and tolerance
 //!
@@ -31,19 +35,22 @@
 //!   that feeds an addition therefore passes a rounding barrier, `rn` in `common.wgsl`: an xor
 //!   with a runtime zero, which no compiler can see through;
 //! - WGSL's `/` and `sqrt` need only be accurate to 2.5 ULP; `div_rn` (blur normalisation,
-//!   latitude gradient) corrects the quotient to the correctly rounded one with exact residuals
-//!   from Dekker's product (WGSL's `fma` need not be fused, and on lavapipe it is not). The warp
-//!   normalisation needs no hardware square root: it mirrors the CPU's `inv_sqrt` (integer first
-//!   guess, Newton steps in rounded multiplies). `sqrt_rn` is there, tested, for kernels that need
-//!   a square root.
+//!   latitude gradient, the earth kernel's and the river carve's quotients) corrects the quotient
+//!   to the correctly rounded one with exact residuals from Dekker's product (WGSL's `fma` need
+//!   not be fused, and on lavapipe it is not). The warp normalisation needs no hardware square
+//!   root: it mirrors the CPU's `inv_sqrt` (integer first guess, Newton steps in rounded
+//!   multiplies). `sqrt_rn` corrects the hardware square root in the same way as `div_rn`, for
+//!   the earth kernel (belts, ridges, slopes) and the river carve (distances to the river pieces).
 //!
 //! So on any device with IEEE-754 `+`, `-`, `*` (which WGSL requires) the GPU field equals the
 //! CPU field bit for bit; `tests/gpu_twin.rs` observes exactly that on lavapipe, on tiles at LODs
-//! 0–8 up to the corner of the supported world. Bit-exactness matters here because the §2.2 warp
+//! 0–8 up to the corner of the supported world, and `tests/gpu_earth.rs` for the `earth-1`
+//! heights and their river carve. Bit-exactness matters here because the §2.2 warp
 //! feeds the accumulated height back into the sample position: a one-ULP difference can grow
 //! through the octaves, and the GPU and CPU paths serve neighbouring tiles (after a fallback, or
 //! for snap strips), which must meet without steps. The tests allow a little slack on top — weights
-//! within 2⁻²³, heights within 1 mm + 2⁻²⁰·|h|, at most two differing biome ids — for a device
+//! within 2⁻²³, heights within 1 mm + 2⁻²⁰·|h| (1 cm + 2⁻¹⁸·|h| for `earth-1`, whose gully
+//! layers amplify a last-bit difference more), at most two differing biome ids — for a device
 //! that flushes subnormals or rounds an intermediate differently; a systematic deviation would
 //! exceed it.
 
@@ -62,7 +69,7 @@ pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, AdapterInfo,
     BackendChoice, GpuHandle,
 };
-pub use earth::{earth_field_on_device, earth_shader_source, EarthKernels};
+pub use earth::{earth_field_on_device, earth_shader_source, rivers_shader_source, EarthKernels};
 pub use tile::{
     field_on_device, field_params, tile_shader_source, TileKernels, DEFAULT_JOB_TIMEOUT,
 };

@@ -51,13 +51,20 @@ pub fn shade(g: &Grid) -> Vec<u8> {
     out
 }
 
-/// RGB pixels: grey land, blue-tinted sea.
-pub fn rgb(g: &Grid, sea_level_m: f64) -> Vec<u8> {
+/// RGB pixels: grey land, blue-tinted sea, and blue lakes and rivers where `water` (one flag
+/// per pixel, when given) says so.
+pub fn rgb(g: &Grid, sea_level_m: f64, water: Option<&[bool]>) -> Vec<u8> {
     let shades = shade(g);
     let mut out = Vec::with_capacity(shades.len() * 3);
-    for (s, z) in shades.iter().zip(&g.heights) {
+    for (n, (s, z)) in shades.iter().zip(&g.heights).enumerate() {
         let s = *s as f64;
-        if (*z as f64) <= sea_level_m {
+        if water.is_some_and(|w| w[n]) {
+            out.extend([
+                (20.0 + 0.2 * s) as u8,
+                (70.0 + 0.35 * s) as u8,
+                (140.0 + 0.45 * s).min(255.0) as u8,
+            ]);
+        } else if (*z as f64) <= sea_level_m {
             out.extend([
                 (10.0 + 0.35 * s) as u8,
                 (30.0 + 0.55 * s) as u8,
@@ -70,8 +77,14 @@ pub fn rgb(g: &Grid, sea_level_m: f64) -> Vec<u8> {
     out
 }
 
-/// Writes the hillshade of `g` to `path` (creating its folder).
-pub fn write_png(path: &Path, g: &Grid, sea_level_m: f64) -> anyhow::Result<()> {
+/// Writes the hillshade of `g` to `path` (creating its folder), lakes and rivers where `water`
+/// says.
+pub fn write_png(
+    path: &Path,
+    g: &Grid,
+    sea_level_m: f64,
+    water: Option<&[bool]>,
+) -> anyhow::Result<()> {
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }
@@ -82,7 +95,7 @@ pub fn write_png(path: &Path, g: &Grid, sea_level_m: f64) -> anyhow::Result<()> 
         enc.set_depth(png::BitDepth::Eight);
         enc.set_compression(png::Compression::High);
         let mut writer = enc.write_header()?;
-        writer.write_image_data(&rgb(g, sea_level_m))?;
+        writer.write_image_data(&rgb(g, sea_level_m, water))?;
         writer.finish()?;
     }
     std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))
@@ -102,7 +115,7 @@ mod tests {
         let away = Grid::from_fn(8, 8, 10.0, |x, z| -0.5 * (x + z));
         assert!(shade(&away)[27] < 150, "{}", shade(&away)[27]);
         assert!(shade(&toward)[27] > 220, "{}", shade(&toward)[27]);
-        let sea = rgb(&flat, 10.0);
+        let sea = rgb(&flat, 10.0, None);
         assert!(sea[2] > sea[0]);
     }
 }

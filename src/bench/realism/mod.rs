@@ -291,10 +291,17 @@ fn png_dir() -> Option<PathBuf> {
     }
 }
 
-fn write_png(args: &BenchArgs, dir: &Option<PathBuf>, file: String, g: &Grid, sea: f64) {
+fn write_png(
+    args: &BenchArgs,
+    dir: &Option<PathBuf>,
+    file: String,
+    g: &Grid,
+    sea: f64,
+    water: Option<&[bool]>,
+) {
     let Some(dir) = dir else { return };
     let path = dir.join(file);
-    if let Err(e) = hillshade::write_png(&path, g, sea) {
+    if let Err(e) = hillshade::write_png(&path, g, sea, water) {
         emit(
             args,
             json!({"bench":"realism","png":path.display().to_string(),"error":format!("{e:#}")}),
@@ -365,6 +372,7 @@ fn load_peers(args: &BenchArgs, pngs: &Option<PathBuf>) -> Peers {
             format!("dem-{}-{}.png", d.name, spacing_tag(s)),
             &native,
             d.sea_level_m,
+            None,
         );
         if d.name == "jacksboro" {
             peers.near_64 = Some(k);
@@ -375,6 +383,7 @@ fn load_peers(args: &BenchArgs, pngs: &Option<PathBuf>) -> Peers {
                 format!("dem-{}-64m.png", d.name),
                 &fine,
                 d.sea_level_m,
+                None,
             );
         }
         if s < 512.0 {
@@ -386,6 +395,7 @@ fn load_peers(args: &BenchArgs, pngs: &Option<PathBuf>) -> Peers {
                     format!("dem-{}-512m.png", d.name),
                     &coarse,
                     d.sea_level_m,
+                    None,
                 );
                 let k = push(format!("{} 512 m", d.name), coarse, "block_average", d);
                 if d.name == "jacksboro" {
@@ -518,7 +528,9 @@ fn run_world(
                 n,
                 n,
             );
-            let g = &s.grid;
+            // Figures of the surface a DEM records (lakes and rivers flat at their level).
+            let surface = s.surface();
+            let g = &surface;
             let spacing = g.spacing_m;
             let f = figures(g, sea);
             let border = border_curvature(g, &s.border);
@@ -530,6 +542,7 @@ fn run_world(
                     format!("{}-{}.png", area.name, spacing_tag(spacing)),
                     g,
                     sea,
+                    Some(&s.water.iter().map(|w| !w.is_nan()).collect::<Vec<bool>>()),
                 );
             }
             let peer = if lod == 6 {

@@ -15,6 +15,7 @@
 //! dimensionless ratio; ≤ 1 means the bound holds for 99 % of vertices).
 
 use super::metrics::{percentile, Grid};
+use crate::terrain::earth::rivers;
 use crate::terrain::{synthesize, TileKey, WorldPlan};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -32,12 +33,29 @@ pub struct Sampled {
     pub grid: Grid,
     /// Biome-border vertices, same layout.
     pub border: Vec<bool>,
+    /// Lake or river water surface over each vertex, metres (NaN: none), same layout.
+    pub water: Vec<f32>,
     /// The tiles' LOD.
     pub lod: u32,
     /// First tile column.
     pub tx0: i64,
     /// First tile row.
     pub tz0: i64,
+}
+
+impl Sampled {
+    /// The surface a DEM would record: the lake or river surface where there is one, else the
+    /// ground.
+    pub fn surface(&self) -> Grid {
+        let heights = self
+            .grid
+            .heights
+            .iter()
+            .zip(&self.water)
+            .map(|(h, w)| if w.is_nan() { *h } else { w.max(*h) })
+            .collect();
+        Grid::new(self.grid.w, self.grid.h, self.grid.spacing_m, heights)
+    }
 }
 
 /// The first tile coordinate of `n` tiles at `lod` centred on world coordinate `centre_m`.
@@ -57,40 +75,53 @@ pub fn sample(plan: &WorldPlan, lod: u32, tx0: i64, tz0: i64, nx: usize, nz: usi
             })
         })
         .collect();
-    let parts: Vec<(Vec<f32>, Vec<bool>)> = keys
+    let parts: Vec<(Vec<f32>, Vec<bool>, Vec<f32>)> = keys
         .par_iter()
         .map(|key| {
             let t = synthesize(plan, *key);
             let k = t.biome_count.max(1);
             let mut h = Vec::with_capacity(Q * Q);
             let mut b = Vec::with_capacity(Q * Q);
+            let mut wt = Vec::with_capacity(Q * Q);
             for j in 0..Q {
                 for i in 0..Q {
                     let v = j * (Q + 1) + i;
                     h.push(t.heights[v]);
+                    let inland = t
+                        .water_kind
+                        .get(v)
+                        .is_some_and(|k| *k == rivers::kind::LAKE || *k == rivers::kind::RIVER);
+                    wt.push(if inland {
+                        t.heights[v] + t.water_depth[v]
+                    } else {
+                        f32::NAN
+                    });
                     let max = t.weights[v * k..(v + 1) * k]
                         .iter()
                         .fold(0.0f32, |m, w| m.max(*w));
                     b.push(t.biome_count > 1 && max < BORDER_WEIGHT);
                 }
             }
-            (h, b)
+            (h, b, wt)
         })
         .collect();
     let (w, h) = (nx * Q, nz * Q);
     let mut heights = vec![0.0f32; w * h];
     let mut border = vec![false; w * h];
-    for (n, (th, tb)) in parts.iter().enumerate() {
+    let mut water = vec![f32::NAN; w * h];
+    for (n, (th, tb, tw)) in parts.iter().enumerate() {
         let (a, b) = (n % nx, n / nx);
         for j in 0..Q {
             let row = (b * Q + j) * w + a * Q;
             heights[row..row + Q].copy_from_slice(&th[j * Q..(j + 1) * Q]);
             border[row..row + Q].copy_from_slice(&tb[j * Q..(j + 1) * Q]);
+            water[row..row + Q].copy_from_slice(&tw[j * Q..(j + 1) * Q]);
         }
     }
     Sampled {
         grid: Grid::new(w, h, plan.lods[lod as usize].spacing_m as f64, heights),
         border,
+        water,
         lod,
         tx0,
         tz0,
@@ -237,6 +268,7 @@ mod tests {
             let s = Sampled {
                 grid: Grid::new(64, 32, 2.0, heights),
                 border: vec![false; 64 * 32],
+                water: vec![f32::NAN; 64 * 32],
                 lod: 1,
                 tx0: -1,
                 tz0: -1,

@@ -466,7 +466,8 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
     }
 }
 
-/// Carves the rivers of `rj` into a job's heights (the CPU reference of the carve).
+/// Carves the rivers of `rj` into a job's heights: the CPU reference of the carve (the WGSL twin
+/// is `shaders/rivers.wgsl`).
 pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
     for (v, h) in heights.iter_mut().enumerate() {
         let (i, j) = ((v % job.w) as i64, (v / job.w) as i64);

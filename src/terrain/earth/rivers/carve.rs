@@ -3,7 +3,10 @@
 
 use super::super::EarthPlan;
 use super::network::{Network, Node};
-use super::{channel, kind, RiverPlan, CARVE_MAX_M, PIECES, Q_MAX, REACH, VALLEY_MIN};
+use super::{
+    channel, kind, RiverPlan, CARVE_MAX_M, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX, REACH,
+    VALLEY_MIN, WALL_SLOPE,
+};
 
 /// One straight piece of a river's centre line, with the profile of its valley. Twelve `f32`,
 /// the layout of the WGSL twin's storage array.
@@ -30,8 +33,11 @@ pub struct Piece {
     pub valley: f32,
     /// 1 when the channel holds water.
     pub wet: f32,
-    /// Padding (the WGSL array's stride is 48 bytes).
-    pub pad: [f32; 2],
+    /// Reach of the piece, metres: the widest its valley gets, and where it stops changing
+    /// anything.
+    pub reach: f32,
+    /// `1 / (|b − a|² + 10⁻⁶)`, 1/m².
+    pub inv_len2: f32,
 }
 
 /// The rivers and lakes that can touch a rectangle of samples: pieces binned on a grid, and the
@@ -64,6 +70,29 @@ pub struct RiverJob {
     pub lakes_w: usize,
     /// Lake level of each node of the window (NaN: none), row-major.
     pub lakes: Vec<f32>,
+}
+
+/// The foot of the point `(x, z)` on piece `p`: its parameter `t` in `[0, 1]` and the squared
+/// distance, m².
+#[inline(always)]
+fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
+    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
+    let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
+    let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
+    (t, dx * dx + dz * dz)
+}
+
+/// Distance from piece `p`'s segment to the point `(x, z)`, metres.
+fn point_distance(p: &Piece, x: f32, z: f32) -> f32 {
+    foot(p, x, z).1.sqrt()
+}
+
+/// A lower bound of the distance from piece `p` to the rectangle `[x0, x1] × [z0, z1]`: the
+/// distance between their bounding boxes.
+fn rect_distance(p: &Piece, x0: f32, z0: f32, x1: f32, z1: f32) -> f32 {
+    let dx = (x0 - p.ax.max(p.bx)).max(p.ax.min(p.bx) - x1).max(0.0);
+    let dz = (z0 - p.az.max(p.bz)).max(p.az.min(p.bz) - z1).max(0.0);
+    (dx * dx + dz * dz).sqrt()
 }
 
 /// Catmull–Rom point of the uniform spline through `p0..p3` at `t`.
@@ -111,7 +140,7 @@ impl Network<'_> {
         };
         // A valley begins at a node no carved edge enters: its water starts at the node's
         // height, so the valley fades in instead of starting as a step.
-        let source = main.is_none_or(|(mq, _)| mq < 2);
+        let source = main.is_none_or(|(mq, _)| mq < MIN_VALLEY_Q);
         let w0 = if source { from.h.max(from.w) } else { from.w };
         let points = (0..=PIECES)
             .map(|j| {
@@ -130,21 +159,15 @@ impl Network<'_> {
     }
 
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
-    pub fn job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> RiverJob {
+    /// The pieces of the edges out of the nodes of piece block `b` ([`PIECE_BLOCK`] nodes a
+    /// side), in node order (rows, then columns) and along each edge.
+    pub(super) fn block_pieces(&mut self, (bx, bz): (i64, i64)) -> Vec<Piece> {
         let s = self.plan.spacing_m;
-        let reach = REACH * s;
-        // Nodes whose edges can come within reach: the curve stays within a spacing of its
-        // nodes' cells (jitter and Catmull–Rom overshoot are both below half a spacing).
-        let margin = reach + 2.0 * s;
-        let ni0 = ((x0 - margin) / s).floor() as i64;
-        let ni1 = ((x1 + margin) / s).floor() as i64;
-        let nk0 = ((z0 - margin) / s).floor() as i64;
-        let nk1 = ((z1 + margin) / s).floor() as i64;
         let mut pieces = Vec::new();
-        for k in nk0..=nk1 {
-            for i in ni0..=ni1 {
+        for k in bz * PIECE_BLOCK..(bz + 1) * PIECE_BLOCK {
+            for i in bx * PIECE_BLOCK..(bx + 1) * PIECE_BLOCK {
                 let q = self.q(i, k);
-                if q < 2 {
+                if q < MIN_VALLEY_Q {
                     continue;
                 }
                 let Some(edge) = self.edge(i, k) else {
@@ -155,10 +178,14 @@ impl Network<'_> {
                 }
                 let wet = q >= self.plan.wet_q;
                 let (hw, depth) = if wet { channel(q) } else { (0.0, 0.0) };
-                // Valleys widen with the discharge, from VALLEY_MIN to the reach.
+                // Valleys widen with the discharge, from VALLEY_MIN to the reach, and may widen
+                // further where they are deep, up to three times that (at most the reach).
                 let grow = libm::log2f(q as f32) / libm::log2f(Q_MAX as f32);
-                let valley = VALLEY_MIN + (reach - VALLEY_MIN) * grow;
+                let max_reach = REACH * s;
+                let valley = VALLEY_MIN + (max_reach - VALLEY_MIN) * grow;
+                let reach = (3.0 * valley).min(max_reach);
                 for p in edge.points.windows(2) {
+                    let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
                     pieces.push(Piece {
                         ax: p[0][0],
                         az: p[0][1],
@@ -170,28 +197,57 @@ impl Network<'_> {
                         depth,
                         valley,
                         wet: if wet { 1.0 } else { 0.0 },
-                        pad: [0.0; 2],
+                        reach,
+                        inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
                     });
                 }
             }
         }
-        // Bins of one node spacing over the rectangle; a piece goes into every bin its box,
-        // grown by its reach, overlaps.
-        let bin_m = s;
+        pieces
+    }
+
+    /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres), binned on
+    /// a grid of `bin_m` squares.
+    pub fn job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32, bin_m: f32) -> RiverJob {
+        let s = self.plan.spacing_m;
+        // Nodes whose edges can come within reach: the curve stays within a spacing of its
+        // nodes' cells (jitter and Catmull–Rom overshoot are both below half a spacing).
+        let margin = REACH * s + 2.0 * s;
+        let block = |v: f32| ((v / s).floor() as i64).div_euclid(PIECE_BLOCK);
+        let (bx0, bx1) = (block(x0 - margin), block(x1 + margin));
+        let (bz0, bz1) = (block(z0 - margin), block(z1 + margin));
+        let mut pieces: Vec<Piece> = Vec::new();
+        for bz in bz0..=bz1 {
+            for bx in bx0..=bx1 {
+                let cached = self.pieces((bx, bz));
+                pieces.extend(
+                    cached
+                        .iter()
+                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < p.reach),
+                );
+            }
+        }
+        // A piece goes into every bin it can reach: the distance from the piece to the bin's
+        // centre is below its reach plus half the bin's diagonal.
         let bins_w = (((x1 - x0) / bin_m).floor() as usize) + 1;
         let bins_h = (((z1 - z0) / bin_m).floor() as usize) + 1;
+        let half_diag = bin_m * std::f32::consts::FRAC_1_SQRT_2;
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); bins_w * bins_h];
         for (pi, p) in pieces.iter().enumerate() {
-            let bx0 = ((p.ax.min(p.bx) - p.valley - x0) / bin_m).floor();
-            let bx1 = ((p.ax.max(p.bx) + p.valley - x0) / bin_m).floor();
-            let bz0 = ((p.az.min(p.bz) - p.valley - z0) / bin_m).floor();
-            let bz1 = ((p.az.max(p.bz) + p.valley - z0) / bin_m).floor();
+            let bx0 = ((p.ax.min(p.bx) - p.reach - x0) / bin_m).floor();
+            let bx1 = ((p.ax.max(p.bx) + p.reach - x0) / bin_m).floor();
+            let bz0 = ((p.az.min(p.bz) - p.reach - z0) / bin_m).floor();
+            let bz1 = ((p.az.max(p.bz) + p.reach - z0) / bin_m).floor();
             if bx1 < 0.0 || bz1 < 0.0 || bx0 >= bins_w as f32 || bz0 >= bins_h as f32 {
                 continue;
             }
             for bz in bz0.max(0.0) as usize..=(bz1 as usize).min(bins_h - 1) {
                 for bx in bx0.max(0.0) as usize..=(bx1 as usize).min(bins_w - 1) {
-                    lists[bz * bins_w + bx].push(pi as u32);
+                    let cx = x0 + (bx as f32 + 0.5) * bin_m;
+                    let cz = z0 + (bz as f32 + 0.5) * bin_m;
+                    if point_distance(p, cx, cz) < p.reach + half_diag {
+                        lists[bz * bins_w + bx].push(pi as u32);
+                    }
                 }
             }
         }
@@ -232,33 +288,42 @@ impl Network<'_> {
     }
 }
 
+/// Added to a piece's squared length before the division that projects a sample onto it, so a
+/// piece of zero length divides by a positive number (the WGSL twin reads it from its preamble).
+pub const PIECE_LEN2_EPS: f32 = 1e-6;
+
 #[inline(always)]
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }
 
-/// Piece `p` applied to a sample at `(x, z)` of height `h`: the carved height and, when the
-/// sample lies in a wet channel, the water level there.
+/// Piece `p` applied to a sample at `(x, z)` of height `h`: the height lowered towards the
+/// valley (at most `h`) and, when the sample lies in a wet channel, the water level there.
 ///
-/// Above the water `W` the height keeps its excess scaled by `g = smoothstep(b, V, d)` (`b` the
-/// channel half-width, `V` the valley half-width, `d` the distance to the piece), so the valley
-/// keeps the terrain's detail, its floor flattens towards the channel and its walls are as steep
-/// as the relief around it; below `W` nothing is raised. Inside the channel the ground is cut to
-/// the parabola `W − c·(1 − (d/b)²)`. Beyond `V` the height is returned unchanged, bit for bit.
+/// With `W` the water level, `b` the channel half-width, `V` the valley half-width and `d` the
+/// distance to the piece: above `W` the height keeps its excess scaled by
+/// `g = smoothstep(b, V', d)`, so the valley keeps the terrain's detail and its floor flattens
+/// towards the channel; `V' = clamp(b + (h − W) / WALL_SLOPE, V, R)` widens the valley where it
+/// is deep, so its walls average no more than [`WALL_SLOPE`] (`R` is the piece's reach). Below
+/// `W` nothing changes. Inside the channel the ground is cut to the parabola
+/// `W − c·(1 − (d/b)²)`. Beyond `V'` the height is `h`, bit for bit.
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
-    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
-    let len2 = abx * abx + abz * abz + 1e-6;
-    let t = (((x - p.ax) * abx + (z - p.az) * abz) / len2).clamp(0.0, 1.0);
-    let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
-    let d = (dx * dx + dz * dz).sqrt();
-    if d >= p.valley {
+    let (t, d2) = foot(p, x, z);
+    if d2 >= p.reach * p.reach {
         return (h, None);
     }
+    let d = d2.sqrt();
     let w = p.wa + (p.wb - p.wa) * t;
-    let g = smoothstep(p.half_width, p.valley, d);
-    let mut c = if h > w { w + (h - w) * g } else { h };
+    let mut c = h;
+    if h > w {
+        let v = (p.half_width + (h - w) / WALL_SLOPE).clamp(p.valley, p.reach);
+        if d < v {
+            let g = smoothstep(p.half_width, v, d);
+            c = w + (h - w) * g;
+        }
+    }
     let mut water = None;
     if d < p.half_width {
         let r = d / p.half_width;
@@ -304,8 +369,10 @@ impl RiverJob {
     /// a wet channel below the water (the highest such level).
     pub fn river_level(&self, x: f32, z: f32, carved: f32) -> Option<f32> {
         let mut best: Option<f32> = None;
-        for p in self.pieces_at(x, z) {
-            if let (_, Some(w)) = profile(p, x, z, carved) {
+        for p in self.pieces_at(x, z).filter(|p| p.wet > 0.0) {
+            let (t, d2) = foot(p, x, z);
+            if d2 < p.half_width * p.half_width {
+                let w = p.wa + (p.wb - p.wa) * t;
                 if carved < w {
                     best = Some(best.map_or(w, |o| o.max(w)));
                 }
@@ -316,8 +383,6 @@ impl RiverJob {
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.
     pub fn lake_level(&self, x: f32, z: f32) -> Option<f32> {
-        // An empty job (coarse LODs) has no lakes and no spacing: dividing by its zero spacing
-        // would saturate the node index, and the neighbour offsets below would overflow.
         if self.lakes.is_empty() {
             return None;
         }
@@ -353,7 +418,9 @@ pub fn job_for(
     let z0 = gz0 as f32 * spacing_m;
     let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
     let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
-    Network::new(earth, plan).job(x0, z0, x1, z1)
+    // About 8 × 8 bins over the rectangle, at least 8 m and at most a node spacing.
+    let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
+    Network::new(earth, plan).job(x0, z0, x1, z1, bin_m)
 }
 
 /// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height

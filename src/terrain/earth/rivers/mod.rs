@@ -44,7 +44,7 @@ mod carve;
 mod lines;
 mod network;
 
-pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob};
+pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob, PIECE_LEN2_EPS};
 pub use lines::{LineEnd, RiverLine};
 pub use network::{Lake, Network, Node, NodeId};
 
@@ -57,6 +57,8 @@ use std::sync::Arc;
 /// than a few node spacings is left out, so the drainage follows the larger slopes and cuts
 /// through smaller hills rather than ending in a pit behind each.
 pub const NODE_LOD_FACTOR: f32 = 4.0;
+/// Nodes per side of a block of the piece cache.
+pub const PIECE_BLOCK: i64 = 8;
 /// Nodes per block side of the caches.
 pub const BLOCK: i64 = 32;
 /// Largest discharge counted, in nodes: rivers wider than this basin look alike.
@@ -76,6 +78,11 @@ pub const BREACH_DEPTH_M: f32 = 20.0;
 pub const LAKE_WALK: usize = 384;
 /// Reach of a river's valley, in node spacings.
 pub const REACH: f32 = 1.5;
+/// Mean slope of the valley walls the carve makes where the valley is deep (rise over run,
+/// about 25°; the smoothstep's steepest point is 1.5 times that).
+pub const WALL_SLOPE: f32 = 0.47;
+/// Edges out of nodes with less discharge than this carve no valley.
+pub const MIN_VALLEY_Q: u32 = 1;
 /// Half-width of the smallest valleys, metres.
 pub const VALLEY_MIN: f32 = 250.0;
 /// Strength of the hashed preference between descending links, in [0, 1).
@@ -83,7 +90,7 @@ pub const ROUTE_NOISE: f32 = 0.6;
 /// Runoff: discharge per square kilometre of basin, m³/s (about 630 mm a year).
 pub const RUNOFF_M3S_PER_KM2: f32 = 0.02;
 /// Coarsest LOD that carves rivers.
-pub const MAX_CARVE_LOD: usize = 9;
+pub const MAX_CARVE_LOD: usize = 8;
 /// Deepest cut of the carve below the uncarved height, metres: the LOD bound of the coarser
 /// LODs that skip it.
 pub const CARVE_MAX_M: f32 = 600.0;

@@ -4,6 +4,7 @@
 use super::super::super::hash::{hash2, unit};
 use super::super::kernel::{self, LANES};
 use super::super::EarthPlan;
+use super::carve::Piece;
 use super::{
     RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_MAX_NODES, LAKE_RADIUS, LAKE_WALK, NONE, OFFSETS, Q_MAX,
     ROUTE_NOISE,
@@ -29,6 +30,7 @@ pub(super) struct Caches {
     heights: moka::sync::Cache<(i64, i64), Arc<HeightBlock>>,
     routes: moka::sync::Cache<(i64, i64), Arc<RouteBlock>>,
     flow: moka::sync::Cache<(i64, i64), Arc<FlowBlock>>,
+    pieces: moka::sync::Cache<(i64, i64), Arc<Vec<Piece>>>,
 }
 
 /// The breached pits of one block: shallow pits that drain over their saddle to the outlet
@@ -65,6 +67,7 @@ impl Caches {
             heights: moka::sync::Cache::new(2048),
             routes: moka::sync::Cache::new(2048),
             flow: moka::sync::Cache::new(1024),
+            pieces: moka::sync::Cache::new(4096),
         }
     }
 }
@@ -250,6 +253,16 @@ impl<'a> Network<'a> {
         out
     }
 
+    /// The pieces of piece block `b` (`Network::block_pieces`), memoised.
+    pub(super) fn pieces(&mut self, b: (i64, i64)) -> Arc<Vec<Piece>> {
+        if let Some(p) = self.plan.caches.pieces.get(&b) {
+            return p;
+        }
+        let p = Arc::new(self.block_pieces(b));
+        self.plan.caches.pieces.insert(b, p.clone());
+        p
+    }
+
     /// The main upstream neighbour of `(i, k)`: the largest discharge, the first in
     /// [`Network::upstream`] order on ties.
     pub fn main_upstream(&mut self, i: i64, k: i64) -> Option<NodeId> {
@@ -297,7 +310,7 @@ impl<'a> Network<'a> {
     }
 
     fn incision(&self, q: u32) -> f32 {
-        self.plan.incision_m * libm::log2f(q.max(1) as f32) / libm::log2f(Q_MAX as f32)
+        self.plan.incision_m * libm::log2f(1.0 + q as f32) / libm::log2f(1.0 + Q_MAX as f32)
     }
 
     /// Everything about node `(i, k)`.

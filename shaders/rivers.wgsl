@@ -1,0 +1,170 @@
+// requires: common.wgsl
+// preamble: strata::gpu::earth::constants_wgsl()
+//
+// WGSL twin of the river carve of `earth-1` (`terrain::earth::rivers::RiverJob::carve_one`, with
+// `rivers::profile`): one invocation per sample of a field job, run after `earth.wgsl` has
+// written the heights and before they are read back. Each sample looks up the bin of its
+// position, lowers its height to the lowest of the valley profiles of the bin's river pieces,
+// and removes at most CARVE_MAX_M.
+//
+// The river job itself (the drainage network, its pieces and their binning) is built on the CPU
+// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (twelve f32), `bin_start` and
+// `bin_pieces` are the job's bins in CSR form, and `CarveParams` is
+// `gpu::layout::GpuCarveParams`, field for field.
+//
+// Every operation mirrors the Rust in the same order, as in `earth.wgsl`: each product that can
+// meet an addition passes the rounding barrier `rn`, `/` is `div_rn` and `sqrt` is `sqrt_rn`,
+// and `f32::clamp` is written out as Rust evaluates it. CARVE_MAX_M and PIECE_LEN2_EPS come from
+// the preamble the host generates from the Rust constants (`gpu::earth::constants_wgsl`).
+
+struct CarveParams {
+    // Output rectangle: lattice origin and size (those of the heights).
+    gx0: i32,
+    gz0: i32,
+    w: u32,
+    h: u32,
+    // Vertex spacing in metres, and 0 (see `rn`).
+    spacing: f32,
+    rounding_key: u32,
+    // Bin grid of the river job: west and north edges and side in metres, bins per row and
+    // rows (both 0 for a job without bins).
+    x0: f32,
+    z0: f32,
+    bin_m: f32,
+    bins_w: u32,
+    bins_h: u32,
+    _pad: u32,
+}
+
+// `rivers::Piece`: one straight piece of a river's centre line and its valley.
+struct Piece {
+    ax: f32,
+    az: f32,
+    bx: f32,
+    bz: f32,
+    wa: f32,
+    wb: f32,
+    half_width: f32,
+    depth: f32,
+    valley: f32,
+    wet: f32,
+    reach: f32,
+    inv_len2: f32,
+}
+
+const WORKGROUP: u32 = 64u;
+
+@group(0) @binding(0) var<uniform> params: CarveParams;
+@group(0) @binding(1) var<storage, read> pieces: array<Piece>;
+// `bins_w · bins_h + 1` offsets into `bin_pieces`.
+@group(0) @binding(2) var<storage, read> bin_start: array<u32>;
+// Piece indices of each bin, in piece order.
+@group(0) @binding(3) var<storage, read> bin_pieces: array<u32>;
+// Heights (w × h, row-major), carved in place.
+@group(0) @binding(4) var<storage, read_write> heights: array<f32>;
+
+// `f32::clamp(t, 0.0, 1.0)` as Rust evaluates it (WGSL's `clamp` may treat −0 differently).
+fn clamp01(t: f32) -> f32 {
+    var r = t;
+    if (r < 0.0) {
+        r = 0.0;
+    }
+    if (r > 1.0) {
+        r = 1.0;
+    }
+    return r;
+}
+
+// `carve::smoothstep`.
+fn smoothstep_rn(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = clamp01(div_rn(x - e0, e1 - e0));
+    return rn(rn(t * t) * (3.0 - rn(2.0 * t)));
+}
+
+// Correctly rounded sqrt, also for 0.
+fn sqrt0(x: f32) -> f32 {
+    if (x > 0.0) {
+        return sqrt_rn(x);
+    }
+    return sqrt(x);
+}
+
+// `rivers::profile` (its height only): piece `p` applied to a sample at `(x, z)` of height `h`.
+// Beyond the reach, or the widened valley, the height is returned unchanged, bit for bit.
+fn profile(p: Piece, x: f32, z: f32, h: f32) -> f32 {
+    let abx = p.bx - p.ax;
+    let abz = p.bz - p.az;
+    let t = clamp01(rn((rn((x - p.ax) * abx) + rn((z - p.az) * abz)) * p.inv_len2));
+    let dx = x - (p.ax + rn(t * abx));
+    let dz = z - (p.az + rn(t * abz));
+    let d2 = rn(dx * dx) + rn(dz * dz);
+    if (d2 >= rn(p.reach * p.reach)) {
+        return h;
+    }
+    let d = sqrt0(d2);
+    let w = p.wa + rn((p.wb - p.wa) * t);
+    var c = h;
+    if (h > w) {
+        let v = clamp_to(p.half_width + div_rn(h - w, WALL_SLOPE), p.valley, p.reach);
+        if (d < v) {
+            let g = smoothstep_rn(p.half_width, v, d);
+            c = w + rn((h - w) * g);
+        }
+    }
+    if (d < p.half_width) {
+        let r = div_rn(d, p.half_width);
+        c = min(c, w - rn(p.depth * (1.0 - rn(r * r))));
+    }
+    return c;
+}
+
+// `f32::clamp` as Rust evaluates it (not WGSL's `clamp`, whose handling of −0 may differ).
+fn clamp_to(x: f32, lo: f32, hi: f32) -> f32 {
+    var r = x;
+    if (r < lo) {
+        r = lo;
+    }
+    if (r > hi) {
+        r = hi;
+    }
+    return r;
+}
+
+// `RiverJob::bin`: the range of `bin_pieces` of the bin holding `(x, z)`, empty outside the
+// grid (written, as on the CPU, so that a NaN index lands outside too).
+fn bin_range(x: f32, z: f32) -> vec2<u32> {
+    let bx = floor(div_rn(x - params.x0, params.bin_m));
+    let bz = floor(div_rn(z - params.z0, params.bin_m));
+    let inside_x = bx >= 0.0 && bx < f32(params.bins_w);
+    let inside_z = bz >= 0.0 && bz < f32(params.bins_h);
+    if (!(inside_x && inside_z)) {
+        return vec2<u32>(0u, 0u);
+    }
+    let b = u32(bz) * params.bins_w + u32(bx);
+    return vec2<u32>(bin_start[b], bin_start[b + 1u]);
+}
+
+// Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).
+fn invocation(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
+    return gid.y * nwg.x * WORKGROUP + gid.x;
+}
+
+// `RiverJob::carve_one` for one sample, in place.
+@compute @workgroup_size(64)
+fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>) {
+    rounding_key = params.rounding_key;
+    let idx = invocation(gid, nwg);
+    if (idx >= params.w * params.h) {
+        return;
+    }
+    // World position `(g as f32) * spacing`, as on the CPU.
+    let x = rn(f32(params.gx0 + i32(idx % params.w)) * params.spacing);
+    let z = rn(f32(params.gz0 + i32(idx / params.w)) * params.spacing);
+    let h = heights[idx];
+    var c = h;
+    let range = bin_range(x, z);
+    for (var k = range.x; k < range.y; k++) {
+        c = min(c, profile(pieces[bin_pieces[k]], x, z, h));
+    }
+    heights[idx] = max(c, h - CARVE_MAX_M);
+}

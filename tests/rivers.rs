@@ -1,0 +1,409 @@
+//! Rivers and lakes of the default `earth-1` world (`terrain::earth::rivers`): they flow
+//! downhill to the sea, a lake or a larger river, everywhere (near the origin, far out, at
+//! negative coordinates, in mountains); lakes fill their depressions to the outlet; and every
+//! tile is the same bytes whatever was computed before it, with water that meets its neighbours
+//! bit for bit.
+
+use std::collections::HashSet;
+use strata::terrain::earth::rivers::{kind, LineEnd, Network, NodeId, RiverPlan};
+use strata::terrain::earth::{tile_rivers, EarthPlan};
+use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+
+fn plan() -> WorldPlan {
+    WorldPlan::new(42, WorldParams::default()).expect("default world")
+}
+
+fn parts(p: &WorldPlan) -> (&EarthPlan, &RiverPlan) {
+    let e = p.earth.as_ref().expect("the default world is earth-1");
+    (e, e.rivers.as_ref().expect("the default world has rivers"))
+}
+
+/// Named areas (world metres): the origin, far out (693 km), negative coordinates, and the
+/// mountain belt east of the origin.
+const AREAS: [(&str, f32, f32); 4] = [
+    ("origin", 0.0, 0.0),
+    ("far", 620e3, 310e3),
+    ("west", -120e3, -40e3),
+    ("mountains", 110e3, -40e3),
+];
+
+/// Follows the flow from `start` to its end and checks every step: heights fall strictly, the
+/// water level never rises, the discharge never falls. Returns the end and whether it is a lake.
+fn trace(net: &mut Network, start: NodeId, done: &mut HashSet<NodeId>) -> usize {
+    let mut at = start;
+    let mut steps = 0;
+    loop {
+        if !done.insert(at) {
+            return steps;
+        }
+        let n = net.node(at.0, at.1);
+        let Some(d) = n.down else {
+            // The end: the sea, or a lake whose level is at least the pit's height.
+            assert!(
+                n.sea || n.lake.is_some_and(|l| l >= n.h),
+                "flow from {start:?} ends at {at:?}, neither sea nor lake: {n:?}"
+            );
+            return steps;
+        };
+        let m = net.node(d.0, d.1);
+        assert!(
+            m.h < n.h,
+            "height rises from {at:?} to {d:?}: {n:?} → {m:?}"
+        );
+        assert!(
+            m.w <= n.w,
+            "water rises from {at:?} to {d:?}: {n:?} → {m:?}"
+        );
+        assert!(
+            m.q >= n.q,
+            "discharge falls from {at:?} to {d:?}: {n:?} → {m:?}"
+        );
+        steps += 1;
+        assert!(steps < 20_000, "flow from {start:?} never ends");
+        at = d;
+    }
+}
+
+#[test]
+fn every_river_descends_and_ends_in_the_sea_a_lake_or_a_larger_river() {
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    let mut net = Network::new(earth, rp);
+    let s = rp.spacing_m;
+    let mut done = HashSet::new();
+    for (name, x, z) in AREAS {
+        let (ci, ck) = ((x / s) as i64, (z / s) as i64);
+        let mut wet = 0;
+        for k in ck - 24..ck + 24 {
+            for i in ci - 24..ci + 24 {
+                let n = net.node(i, k);
+                if n.q >= rp.wet_q && !n.sea {
+                    wet += 1;
+                    trace(&mut net, (i, k), &mut done);
+                }
+            }
+        }
+        assert!(wet > 50, "{name}: only {wet} river nodes in 48 × 48 km");
+    }
+}
+
+#[test]
+fn tile_lines_descend_and_end_where_they_should() {
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    let lod = 6;
+    let spacing = p.lods[lod as usize].spacing_m;
+    let span = 64.0 * spacing;
+    let mut net = Network::new(earth, rp);
+    let mut ends = [0usize; 4];
+    for (name, x, z) in AREAS {
+        let (tx, tz) = ((x / span).floor() as i64, (z / span).floor() as i64);
+        let mut lines = 0;
+        for tz in tz - 2..tz + 2 {
+            for tx in tx - 2..tx + 2 {
+                let key = TileKey { lod, x: tx, z: tz };
+                for line in tile_rivers(earth, key, spacing) {
+                    lines += 1;
+                    assert_eq!(line.points.len(), line.width_m.len());
+                    assert_eq!(line.points.len(), line.discharge_m3s.len());
+                    for w in line.points.windows(2) {
+                        assert!(
+                            w[1][2] <= w[0][2],
+                            "{name} {key:?}: level rises in {line:?}"
+                        );
+                    }
+                    for w in line.discharge_m3s.windows(2) {
+                        assert!(w[1] >= w[0], "{name} {key:?}: discharge falls");
+                    }
+                    let to = net.node(line.to[0], line.to[1]);
+                    match line.ends {
+                        LineEnd::Sea => {
+                            ends[0] += 1;
+                            assert!(to.sea);
+                        }
+                        LineEnd::Lake => {
+                            ends[1] += 1;
+                            assert!(to.down.is_none() && !to.sea && to.lake.is_some());
+                        }
+                        LineEnd::River => {
+                            ends[2] += 1;
+                            // A confluence: the main stem in, at least as large, goes on.
+                            let main = net.main_upstream(to.i, to.k).expect("a confluence");
+                            let last = line.discharge_m3s[line.discharge_m3s.len() - 2];
+                            let main_q = net.node(main.0, main.1).q;
+                            let main_m3s =
+                                strata::terrain::earth::rivers::discharge_m3s(main_q, rp.spacing_m);
+                            assert!(to.down.is_some(), "{line:?}");
+                            assert!(main_m3s >= last, "{name} {key:?}: joins a smaller river");
+                        }
+                        LineEnd::Continues => {
+                            ends[3] += 1;
+                            // The next edge goes on outside this tile's reach: some tile nearby
+                            // has a line through the node.
+                            assert!(to.down.is_some());
+                            let found = (-1..=1).any(|dz| {
+                                (-1..=1).any(|dx| {
+                                    let k2 = TileKey {
+                                        lod,
+                                        x: tx + dx,
+                                        z: tz + dz,
+                                    };
+                                    (dx, dz) != (0, 0)
+                                        && tile_rivers(earth, k2, spacing).iter().any(|l| {
+                                            l.points.iter().any(|q| q[0] == to.x && q[1] == to.z)
+                                        })
+                                })
+                            });
+                            assert!(found, "{name} {key:?}: nothing continues {line:?}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(lines > 0, "{name}: no river lines in 16 LOD-6 tiles");
+    }
+    assert!(ends[2] > 0 && ends[3] > 0, "ends seen: {ends:?}");
+}
+
+#[test]
+fn lakes_fill_their_depressions_to_the_outlet_and_shallow_pits_drain() {
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    let mut net = Network::new(earth, rp);
+    let (mut lakes, mut full) = (0, 0);
+    for k in -64..64 {
+        for i in -64..64 {
+            let n = net.node(i, k);
+            if n.sea || n.down.is_some() {
+                continue;
+            }
+            let (level, flooded, outlet) = net.flood(i, k);
+            lakes += 1;
+            assert!(level >= n.h);
+            for (fi, fk) in &flooded {
+                assert!(
+                    net.height(*fi, *fk) <= level,
+                    "a flooded node is above the lake"
+                );
+            }
+            if let Some(o) = outlet {
+                full += 1;
+                // The outlet is beyond the saddle: lower than the level, and the lake is deep
+                // enough to stay (a shallower one would have drained over the saddle), or its
+                // outlet is higher than the pit.
+                let ho = net.height(o.0, o.1);
+                assert!(ho < level);
+                assert!(
+                    level - n.h >= strata::terrain::earth::rivers::BREACH_DEPTH_M || ho >= n.h,
+                    "pit {:?} should have drained to {o:?}",
+                    (i, k)
+                );
+                assert!(!flooded.contains(&o));
+            }
+            assert_eq!(
+                net.lake(i, k),
+                Some(net.lake(i, k).unwrap_or(level).max(level))
+            );
+        }
+    }
+    assert!(
+        lakes > 0 && full > 0,
+        "{lakes} lakes, {full} filled to an outlet"
+    );
+}
+
+fn tile_bits(t: &strata::terrain::Tile) -> Vec<u32> {
+    let mut v: Vec<u32> = t.heights.iter().map(|h| h.to_bits()).collect();
+    v.extend(t.water_depth.iter().map(|d| d.to_bits()));
+    v.extend(t.water_kind.iter().map(|&k| k as u32));
+    v.extend(t.materials.iter().map(|&m| m as u32));
+    v
+}
+
+#[test]
+fn tiles_alone_and_in_shuffled_orders_give_identical_bytes() {
+    let mut keys = Vec::new();
+    for lod in [0u32, 3, 6, 9] {
+        let span = 64.0 * (1u64 << lod) as f32;
+        for (_, x, z) in AREAS {
+            let (tx, tz) = ((x / span).floor() as i64, (z / span).floor() as i64);
+            keys.push(TileKey { lod, x: tx, z: tz });
+            keys.push(TileKey {
+                lod,
+                x: tx + 1,
+                z: tz - 1,
+            });
+        }
+    }
+    // Each tile alone, with a fresh world (cold caches).
+    let alone: Vec<Vec<u32>> = keys
+        .iter()
+        .map(|k| tile_bits(&synthesize(&plan(), *k)))
+        .collect();
+    // All in one world, in a shuffled order (a fixed permutation), so the caches hold what
+    // other tiles computed first.
+    let shared = plan();
+    let mut order: Vec<usize> = (0..keys.len()).collect();
+    order.sort_by_key(|&i| (i * 7919) % keys.len());
+    for &i in &order {
+        assert_eq!(
+            tile_bits(&synthesize(&shared, keys[i])),
+            alone[i],
+            "{:?} differs after other tiles",
+            keys[i]
+        );
+    }
+    // And from several threads at once.
+    let threads: Vec<_> = (0..3)
+        .map(|t| {
+            let keys = keys.clone();
+            std::thread::spawn(move || {
+                let p = plan();
+                keys.iter()
+                    .rev()
+                    .skip(t)
+                    .step_by(3)
+                    .map(|k| (*k, tile_bits(&synthesize(&p, *k))))
+                    .collect::<Vec<_>>()
+            })
+        })
+        .collect();
+    for th in threads {
+        for (k, bits) in th.join().expect("thread") {
+            let i = keys.iter().position(|x| *x == k).expect("key");
+            assert_eq!(bits, alone[i], "{k:?} differs on another thread");
+        }
+    }
+    let wet = keys
+        .iter()
+        .map(|k| synthesize(&shared, *k))
+        .filter(|t| {
+            t.water_kind
+                .iter()
+                .any(|&w| w == kind::RIVER || w == kind::LAKE)
+        })
+        .count();
+    assert!(wet > 0, "no tile of the sample holds river or lake water");
+}
+
+#[test]
+fn water_meets_across_tile_edges_bit_for_bit() {
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    let mut net = Network::new(earth, rp);
+    // Tiles of LOD 3 over a river: find a wet node near the origin.
+    let river = (0..40)
+        .flat_map(|k| (0..40).map(move |i| (i - 20, k - 20)))
+        .find(|&(i, k)| net.q(i, k) >= 4 * rp.wet_q)
+        .expect("a river near the origin");
+    let (x, z) = rp.position(river.0, river.1);
+    let lod = 3;
+    let span = 64.0 * 8.0;
+    let (tx, tz) = ((x / span).floor() as i64, (z / span).floor() as i64);
+    let mut checked = 0;
+    let mut wet_edges = 0;
+    for dz in -1..=1 {
+        for dx in -1..=1 {
+            let a = synthesize(
+                &p,
+                TileKey {
+                    lod,
+                    x: tx + dx,
+                    z: tz + dz,
+                },
+            );
+            let east = synthesize(
+                &p,
+                TileKey {
+                    lod,
+                    x: tx + dx + 1,
+                    z: tz + dz,
+                },
+            );
+            let south = synthesize(
+                &p,
+                TileKey {
+                    lod,
+                    x: tx + dx,
+                    z: tz + dz + 1,
+                },
+            );
+            for t in 0..65 {
+                for (va, vb, b) in [(t * 65 + 64, t * 65, &east), (64 * 65 + t, t, &south)] {
+                    assert_eq!(a.heights[va].to_bits(), b.heights[vb].to_bits());
+                    assert_eq!(a.water_depth[va].to_bits(), b.water_depth[vb].to_bits());
+                    assert_eq!(a.water_kind[va], b.water_kind[vb]);
+                    if a.water_kind[va] == kind::RIVER || a.water_kind[va] == kind::LAKE {
+                        wet_edges += 1;
+                    }
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 1000);
+    assert!(
+        wet_edges > 0,
+        "no tile edge crosses water around the river at {river:?}"
+    );
+}
+
+#[test]
+fn rivers_follow_the_scene_settings() {
+    let wet = |density: Option<f32>| {
+        let mut params = WorldParams::default();
+        match density {
+            Some(d) => {
+                params
+                    .earth
+                    .as_mut()
+                    .expect("earth")
+                    .rivers
+                    .as_mut()
+                    .expect("rivers")
+                    .density = d
+            }
+            None => {
+                params
+                    .earth
+                    .as_mut()
+                    .expect("earth")
+                    .rivers
+                    .as_mut()
+                    .expect("rivers")
+                    .enabled = false
+            }
+        }
+        let p = WorldPlan::new(42, params).expect("plan");
+        let key = TileKey { lod: 6, x: 0, z: 0 };
+        let t = synthesize(&p, key);
+        let lines = p
+            .earth
+            .as_ref()
+            .map_or(0, |e| tile_rivers(e, key, p.lods[6].spacing_m).len());
+        (lines, t)
+    };
+    let (sparse, _) = wet(Some(0.5));
+    let (dense, _) = wet(Some(3.0));
+    assert!(
+        dense > sparse,
+        "density 3 gives {dense} lines, 0.5 gives {sparse}"
+    );
+    let (none, off) = wet(None);
+    assert_eq!(none, 0);
+    assert!(
+        off.water_kind.is_empty(),
+        "a world with rivers off has no water kinds"
+    );
+    let mut stored = WorldParams::default();
+    stored.earth.as_mut().expect("earth").rivers = None;
+    let old = synthesize(
+        &WorldPlan::new(42, stored).expect("plan"),
+        TileKey { lod: 6, x: 0, z: 0 },
+    );
+    assert_eq!(
+        tile_bits(&old),
+        tile_bits(&off),
+        "off is the river-free world"
+    );
+}
