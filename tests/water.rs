@@ -8,6 +8,7 @@ use serde_json::{json, Value};
 use strata::compute::Compute;
 use strata::encode;
 use strata::server::{app, AppState};
+use strata::terrain::earth::rivers::MAX_CARVE_LOD;
 use strata::terrain::earth::tile_rivers;
 use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan, TILE_VERTEX_COUNT};
 
@@ -195,7 +196,7 @@ async fn bad_format_versions_are_400_naming_format_and_the_allowed_values() {
             ("glb".to_string(), json!([1])),
         ]
     );
-    assert_eq!(info["limits"]["max_river_lod"], 9);
+    assert_eq!(info["limits"]["max_river_lod"], MAX_CARVE_LOD);
     let glb = get(&app, "/v1/seeds/1/tiles/0/0/0.glb?format=1", &[]).await;
     glb.ok();
     assert_eq!(
@@ -244,7 +245,16 @@ async fn seed_river_lines_descend_and_are_the_librarys() {
     let app = service();
     let mut lines_seen = 0;
     let mut ends = std::collections::BTreeSet::new();
-    for (lod, x, z) in [(6, 0, 0), (6, -1, 1), (6, 1, 1), (9, 0, 0)] {
+    let coarsest = MAX_CARVE_LOD as u32;
+    let tiles = [
+        (6, 0, 0),
+        (6, -1, 1),
+        (6, 1, 1),
+        (coarsest, 0, 0),
+        (coarsest, 0, 1),
+        (coarsest, 1, 0),
+    ];
+    for (lod, x, z) in tiles {
         let key = TileKey { lod, x, z };
         let uri = format!("/v1/seeds/42/rivers/{lod}/{x}/{z}.json");
         let r = get(&app, &uri, &[]).await;
@@ -298,8 +308,9 @@ async fn seed_river_lines_descend_and_are_the_librarys() {
 #[tokio::test]
 async fn river_lines_refuse_coarse_lods_and_other_formats() {
     let app = service();
+    let too_coarse = format!("/v1/seeds/42/rivers/{}/0/0.json", MAX_CARVE_LOD + 1);
     let cases = [
-        ("/v1/seeds/42/rivers/10/0/0.json", "lod_out_of_range", "lod"),
+        (too_coarse.as_str(), "lod_out_of_range", "lod"),
         ("/v1/seeds/42/rivers/12/0/0.json", "lod_out_of_range", "lod"),
         ("/v1/seeds/42/rivers/13/0/0.json", "lod_out_of_range", "lod"),
         ("/v1/seeds/42/rivers/x/0/0.json", "bad_lod", "lod"),
@@ -317,12 +328,15 @@ async fn river_lines_refuse_coarse_lods_and_other_formats() {
             .await
             .error(StatusCode::BAD_REQUEST, code, Some(field));
     }
-    let r = get(&app, "/v1/seeds/42/rivers/10/0/0.json", &[]).await;
+    let r = get(&app, &too_coarse, &[]).await;
     let message = r.json()["error"]["message"]
         .as_str()
         .unwrap_or_default()
         .to_string();
-    assert!(message.contains("0..=9"), "names the limit: {message}");
+    assert!(
+        message.contains(&format!("0..={MAX_CARVE_LOD}")),
+        "names the limit: {message}"
+    );
 }
 
 async fn post(app: &Router, uri: &str, token: Option<&str>, kind: &str, body: &Value) -> Reply {
@@ -403,9 +417,14 @@ async fn world_river_lines_follow_the_version_and_the_access() {
         "version_not_found",
         Some("v"),
     );
-    get(&app, &format!("/v1/worlds/{id}/rivers/10/0/0.json"), &auth)
-        .await
-        .error(StatusCode::BAD_REQUEST, "lod_out_of_range", Some("lod"));
+    let too_coarse = MAX_CARVE_LOD + 1;
+    get(
+        &app,
+        &format!("/v1/worlds/{id}/rivers/{too_coarse}/0/0.json"),
+        &auth,
+    )
+    .await
+    .error(StatusCode::BAD_REQUEST, "lod_out_of_range", Some("lod"));
 
     // Without rivers a tile has no kinds: v2 writes kind 0 everywhere, the sea's water included.
     let key = TileKey { lod: 9, x: 0, z: 1 };

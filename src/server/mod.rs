@@ -13,7 +13,7 @@
 //! | `GET /v1/info` | version, backend, limits, formats, world |
 //! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w][&format=1\|2]` | height tile |
 //! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
-//! | `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` | river lines of a tile, LOD 0–9 (see [`rivers`]; worlds: `/v1/worlds/{id}/rivers/…`) |
+//! | `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` | river lines of a tile, LOD `0..=MAX_CARVE_LOD` (see [`rivers`]; worlds: `/v1/worlds/{id}/rivers/…`) |
 //! | `/v1/worlds…` | worlds, scenes, edits, tokens and their products (see [`worlds`]) |
 //! | `/v1/worlds/{id}/volumes/{vid}/{mesh.glb,curves.json,meshes}` | volume-region mesh export, curves in and out, glb uploads (see [`volume_routes`]) |
 //! | `POST /v1/worlds/{id}/exports`, `/v1/jobs/{job}[/events\|/archive]` | export jobs (see [`exports`]) |

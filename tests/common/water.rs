@@ -1,6 +1,6 @@
 //! Tiles with water of the default world, found through the library the way a client would:
 //! river tiles from the river lines of a few LOD-6 tiles around the origin, lake tiles from the
-//! lake vertices of the LOD-9 tiles around it.
+//! lake vertices of the coarsest carved tiles (LOD `rivers::MAX_CARVE_LOD`) around it.
 
 use strata::terrain::earth::{rivers, tile_rivers};
 use strata::terrain::{synthesize, Tile, TileKey, WorldPlan};
@@ -40,11 +40,30 @@ pub fn river_tile(plan: &WorldPlan, lod: u32, min: usize) -> Tile {
     panic!("no LOD-{lod} tile with {min} river vertices on the rivers near the origin");
 }
 
-/// The LOD-`lod` tiles holding lake vertices of the LOD-9 tiles around the origin, until one has
+/// The LOD-`lod` tiles holding lake vertices of the coarsest carved tiles around the origin
+/// (LOD [`rivers::MAX_CARVE_LOD`], where lakes show), until one has
 /// at least `lakes` lake and `streams` river vertices. Panics if none has.
 pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Tile {
-    for (x, z) in [(0, 0), (-1, 0), (0, -1), (-1, -1)] {
-        let coarse = synthesize(plan, TileKey { lod: 9, x, z });
+    for (x, z) in [
+        (0, 0),
+        (-1, 0),
+        (0, -1),
+        (-1, -1),
+        (1, 0),
+        (0, 1),
+        (1, 1),
+        (-1, 1),
+        (1, -1),
+    ] {
+        let coarsest = rivers::MAX_CARVE_LOD as u32;
+        let coarse = synthesize(
+            plan,
+            TileKey {
+                lod: coarsest,
+                x,
+                z,
+            },
+        );
         let s = coarse.spacing_m as f64;
         let wet = coarse
             .water_kind
