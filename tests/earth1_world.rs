@@ -1,6 +1,7 @@
 //! A world stored by the first `earth-1` (before rivers) keeps its bytes: its scene has no
 //! `world.earth.rivers`, which means no rivers, and today's server answers the tiles the old
-//! server answered, bit for bit (`tests/fixtures/earth1-world/`). New worlds get rivers.
+//! server answered, bit for bit (`tests/fixtures/earth1-world/`), and its glb tiles have no
+//! water node. New worlds get rivers.
 
 mod common;
 
@@ -39,6 +40,17 @@ async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes(
             hash,
             "{path} changed its bytes"
         );
+        // Its tiles carry no water kinds, so its glb keeps the terrain's one node: no water.
+        let glb = format!("/v1/worlds/{WORLD}/tiles/{key}.glb?v={version}");
+        let (status, body) = strata::bench::http::http_get(&server.addr, &glb)
+            .await
+            .expect("request");
+        assert_eq!(status, 200, "{glb}");
+        let json_len = u32::from_le_bytes([body[12], body[13], body[14], body[15]]) as usize;
+        let doc: serde_json::Value =
+            serde_json::from_slice(&body[20..20 + json_len]).expect("glb JSON chunk");
+        assert_eq!(doc["nodes"].as_array().map(Vec::len), Some(1), "{glb}");
+        assert!(doc.get("materials").is_none(), "{glb}");
         checked += 1;
     }
     assert_eq!(checked, 13, "every fixture tile was checked");

@@ -1,24 +1,30 @@
-//! The `STRT` version 1 binary encoding of a height tile (normative text:
-//! `api/tile_format_v1.md` §Binary).
+//! The `STRT` binary encoding of a height tile, versions 1 and 2 (normative text:
+//! `api/tile_format_v1.md` §Binary and `api/tile_format_v2.md`).
 //!
-//! All numbers are little-endian. A 128-byte header is followed by five sections, each starting
+//! All numbers are little-endian. A 128-byte header is followed by the sections, each starting
 //! at the offset the header gives (a multiple of 4; single-byte sections are zero-padded to a
 //! multiple of 4):
 //!
-//! | section | type | count |
-//! |---|---|---|
-//! | heights, metres | `f32` | 4225 |
-//! | normals `x, y, z` | `f32` ×3 | 4225 |
-//! | biome weights | `u8`, per vertex summing to exactly 255 | 4225·k |
-//! | materials | `u8` | 4225 |
-//! | water depth, metres | `f32` | 4225 |
+//! | section | type | count | version |
+//! |---|---|---|---|
+//! | heights, metres | `f32` | 4225 | 1, 2 |
+//! | normals `x, y, z` | `f32` ×3 | 4225 | 1, 2 |
+//! | biome weights | `u8`, per vertex summing to exactly 255 | 4225·k | 1, 2 |
+//! | materials | `u8` | 4225 | 1, 2 |
+//! | water depth, metres | `f32` | 4225 | 1, 2 |
+//! | water surface height, metres | `f32` | 4225 | 2 |
+//! | water kind | `u8` | 4225 | 2 |
+//! | volume override (optional) | `u8` | 4225 | 1, 2 |
+//!
+//! Version 1 ([`encode`]) is the default product and keeps its bytes; [`encode_version`] writes
+//! either.
 
-use super::height_range;
+use super::{height_range, water, TileVersion};
 use crate::terrain::{Tile, WorldPlan, TILE_VERTEX_COUNT, TILE_VERTS};
 
 /// File magic.
 pub const MAGIC: [u8; 4] = *b"STRT";
-/// Format version.
+/// Format version of [`encode`].
 pub const VERSION: u16 = 1;
 /// Header length, bytes.
 pub const HEADER_LEN: usize = 128;
@@ -81,7 +87,13 @@ pub mod offset {
     pub const TOTAL_LEN: usize = 100;
     /// `u32` offset of the volume-override section (`u8` per vertex), 0 when absent.
     pub const VOLUME_OVERRIDE: usize = 104;
-    // 108..128: reserved, zero.
+    /// `u32` offset of the water-surface section (`f32` per vertex); version 2 only (reserved,
+    /// zero, in version 1).
+    pub const WATER_SURFACE: usize = 108;
+    /// `u32` offset of the water-kind section (`u8` per vertex); version 2 only (reserved, zero,
+    /// in version 1).
+    pub const WATER_KIND: usize = 112;
+    // 116..128: reserved, zero.
 }
 
 fn pad4(n: usize) -> usize {
@@ -137,26 +149,81 @@ pub fn quantize_weights(w: &[f32], out: &mut [u8]) {
     }
 }
 
+/// Where the sections of one tile's file start, bytes (0: the section is absent).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// Heights.
+    pub heights: usize,
+    /// Normals.
+    pub normals: usize,
+    /// Biome weights.
+    pub weights: usize,
+    /// Materials.
+    pub materials: usize,
+    /// Water depth.
+    pub water_depth: usize,
+    /// Water surface height (version 2).
+    pub water_surface: usize,
+    /// Water kind (version 2).
+    pub water_kind: usize,
+    /// Volume override (when some vertex is marked).
+    pub volume_override: usize,
+    /// File length.
+    pub total: usize,
+}
+
+impl Layout {
+    /// The layout of a tile of `k` biomes in `version`, with a volume-override section when
+    /// `marked`.
+    pub fn new(k: usize, version: TileVersion, marked: bool) -> Self {
+        let n = TILE_VERTEX_COUNT;
+        let heights = HEADER_LEN;
+        let normals = heights + 4 * n;
+        let weights = normals + 12 * n;
+        let materials = weights + pad4(n * k);
+        let water_depth = materials + pad4(n);
+        let mut end = water_depth + 4 * n;
+        let (mut water_surface, mut water_kind) = (0, 0);
+        if version == TileVersion::V2 {
+            water_surface = end;
+            water_kind = water_surface + 4 * n;
+            end = water_kind + pad4(n);
+        }
+        let volume_override = if marked { end } else { 0 };
+        let total = end + if marked { pad4(n) } else { 0 };
+        Self {
+            heights,
+            normals,
+            weights,
+            materials,
+            water_depth,
+            water_surface,
+            water_kind,
+            volume_override,
+            total,
+        }
+    }
+}
+
 /// Encodes a tile as `STRT` v1.
 pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
+    encode_version(plan, tile, TileVersion::V1)
+}
+
+/// Encodes a tile as `STRT` of `version`.
+pub fn encode_version(plan: &WorldPlan, tile: &Tile, version: TileVersion) -> Vec<u8> {
     let n = TILE_VERTEX_COUNT;
     let k = tile.biome_count;
-    let heights_off = HEADER_LEN;
-    let normals_off = heights_off + 4 * n;
-    let weights_off = normals_off + 12 * n;
-    let materials_off = weights_off + pad4(n * k);
-    let water_off = materials_off + pad4(n);
     let marked = !tile.volume_override.is_empty();
-    let override_off = if marked { water_off + 4 * n } else { 0 };
-    let total = water_off + 4 * n + if marked { pad4(n) } else { 0 };
+    let at = Layout::new(k, version, marked);
 
-    let mut out = vec![0u8; total];
+    let mut out = vec![0u8; at.total];
     let put = |out: &mut Vec<u8>, at: usize, bytes: &[u8]| {
         out[at..at + bytes.len()].copy_from_slice(bytes)
     };
     let (min_h, max_h) = height_range(tile);
     put(&mut out, offset::MAGIC, &MAGIC);
-    put(&mut out, offset::VERSION, &VERSION.to_le_bytes());
+    put(&mut out, offset::VERSION, &version.number().to_le_bytes());
     put(
         &mut out,
         offset::HEADER_LEN,
@@ -192,39 +259,47 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
     let materials = crate::terrain::world::MATERIALS.len() as u16;
     put(&mut out, offset::MATERIAL_COUNT, &materials.to_le_bytes());
     for (field, value) in [
-        (offset::HEIGHTS, heights_off),
-        (offset::NORMALS, normals_off),
-        (offset::WEIGHTS, weights_off),
-        (offset::MATERIALS, materials_off),
-        (offset::WATER_DEPTH, water_off),
-        (offset::TOTAL_LEN, total),
-        (offset::VOLUME_OVERRIDE, override_off),
+        (offset::HEIGHTS, at.heights),
+        (offset::NORMALS, at.normals),
+        (offset::WEIGHTS, at.weights),
+        (offset::MATERIALS, at.materials),
+        (offset::WATER_DEPTH, at.water_depth),
+        (offset::TOTAL_LEN, at.total),
+        (offset::VOLUME_OVERRIDE, at.volume_override),
+        (offset::WATER_SURFACE, at.water_surface),
+        (offset::WATER_KIND, at.water_kind),
     ] {
         put(&mut out, field, &(value as u32).to_le_bytes());
     }
 
     for (v, h) in tile.heights.iter().take(n).enumerate() {
-        put(&mut out, heights_off + 4 * v, &h.to_le_bytes());
+        put(&mut out, at.heights + 4 * v, &h.to_le_bytes());
     }
     for (v, nrm) in tile.normals.iter().take(n).enumerate() {
         for (c, x) in nrm.iter().enumerate() {
-            put(&mut out, normals_off + 12 * v + 4 * c, &x.to_le_bytes());
+            put(&mut out, at.normals + 12 * v + 4 * c, &x.to_le_bytes());
         }
     }
     if k > 0 {
-        let dst = &mut out[weights_off..weights_off + n * k];
+        let dst = &mut out[at.weights..at.weights + n * k];
         for (w, q) in tile.weights.chunks(k).zip(dst.chunks_mut(k)) {
             quantize_weights(w, q);
         }
     }
     let m = tile.materials.len().min(n);
-    out[materials_off..materials_off + m].copy_from_slice(&tile.materials[..m]);
+    out[at.materials..at.materials + m].copy_from_slice(&tile.materials[..m]);
     for (v, d) in tile.water_depth.iter().take(n).enumerate() {
-        put(&mut out, water_off + 4 * v, &d.to_le_bytes());
+        put(&mut out, at.water_depth + 4 * v, &d.to_le_bytes());
+    }
+    if version == TileVersion::V2 {
+        for (v, s) in water::surface(tile).iter().enumerate() {
+            put(&mut out, at.water_surface + 4 * v, &s.to_le_bytes());
+        }
+        out[at.water_kind..at.water_kind + n].copy_from_slice(&water::kinds(tile));
     }
     if marked {
         let m = tile.volume_override.len().min(n);
-        out[override_off..override_off + m].copy_from_slice(&tile.volume_override[..m]);
+        out[at.volume_override..at.volume_override + m].copy_from_slice(&tile.volume_override[..m]);
     }
     out
 }
@@ -283,5 +358,51 @@ mod tests {
         }
         let h = u32_at(offset::HEIGHTS);
         assert_eq!(&b[h..h + 4], &t.heights[0].to_le_bytes());
+        assert!(b[108..128].iter().all(|&x| x == 0), "reserved in v1");
+    }
+
+    #[test]
+    fn version_2_is_version_1_plus_the_water_sections() {
+        let mut t = tile(1, -2, 3);
+        t.water_depth[10] = 1.5;
+        t.water_kind = vec![0; TILE_VERTEX_COUNT];
+        t.water_kind[10] = 2;
+        let v1 = encode(plan(), &t);
+        let v2 = encode_version(plan(), &t, TileVersion::V2);
+        let u32_at = |o: usize| u32::from_le_bytes([v2[o], v2[o + 1], v2[o + 2], v2[o + 3]]);
+        assert_eq!(u16::from_le_bytes([v2[4], v2[5]]), 2, "version");
+        let at = Layout::new(t.biome_count, TileVersion::V2, false);
+        assert_eq!(u32_at(offset::TOTAL_LEN) as usize, v2.len());
+        assert_eq!(u32_at(offset::WATER_SURFACE) as usize, at.water_surface);
+        assert_eq!(u32_at(offset::WATER_KIND) as usize, at.water_kind);
+        assert_eq!(at.water_surface, at.water_depth + 4 * TILE_VERTEX_COUNT);
+        assert_eq!(at.water_surface % 4, 0);
+        assert_eq!(at.water_kind % 4, 0);
+        // The shared sections are the same bytes; only the version and the new fields differ.
+        let shared = at.water_surface;
+        assert_eq!(v1.len(), shared);
+        assert_eq!(&v1[HEADER_LEN..], &v2[HEADER_LEN..shared]);
+        assert_eq!(&v1[..4], &v2[..4]);
+        assert_eq!(&v1[6..offset::TOTAL_LEN], &v2[6..offset::TOTAL_LEN]);
+        let f32_at = |o: usize| f32::from_le_bytes([v2[o], v2[o + 1], v2[o + 2], v2[o + 3]]);
+        let s = f32_at(at.water_surface + 4 * 10);
+        assert_eq!(s, t.heights[10] + 1.5);
+        assert_eq!(f32_at(at.water_surface).to_bits(), t.heights[0].to_bits());
+        assert_eq!(v2[at.water_kind + 10], 2);
+        assert!(v2[at.water_kind + TILE_VERTEX_COUNT..]
+            .iter()
+            .all(|&x| x == 0));
+    }
+
+    #[test]
+    fn the_default_world_layout_matches_the_spec() {
+        let at = Layout::new(4, TileVersion::V2, false);
+        assert_eq!(
+            (at.water_depth, at.water_surface, at.water_kind, at.total),
+            (88_856, 105_756, 122_656, 126_884)
+        );
+        let marked = Layout::new(4, TileVersion::V2, true);
+        assert_eq!((marked.volume_override, marked.total), (126_884, 131_112));
+        assert_eq!(Layout::new(4, TileVersion::V1, false).total, 105_756);
     }
 }

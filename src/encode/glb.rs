@@ -1,6 +1,7 @@
 //! The glTF 2.0 binary (`.glb`) mesh of a tile, skirts included.
 //!
-//! One scene, one node, one mesh with one indexed triangle primitive:
+//! One scene, one node, one mesh with one indexed triangle primitive (plus, in worlds with
+//! rivers, a second node and mesh for the water: [`super::water_glb`]):
 //!
 //! - **Vertices** `0..4225` are the surface, vertex `j·65 + i` at local
 //!   `(i·spacing, h, j·spacing)`; vertices `4225 + e·65 + t` are the skirt bottoms, a copy of
@@ -34,10 +35,14 @@ pub const SURFACE_TRIANGLES: usize = 2 * (TILE_VERTS - 1) * (TILE_VERTS - 1);
 /// Skirt triangles.
 pub const SKIRT_TRIANGLES: usize = 4 * 2 * (TILE_VERTS - 1);
 
-const ARRAY_BUFFER: u32 = 34962;
-const ELEMENT_ARRAY_BUFFER: u32 = 34963;
-const FLOAT: u32 = 5126;
-const UNSIGNED_SHORT: u32 = 5123;
+/// glTF `bufferView.target` of vertex attributes.
+pub(super) const ARRAY_BUFFER: u32 = 34962;
+/// glTF `bufferView.target` of indices.
+pub(super) const ELEMENT_ARRAY_BUFFER: u32 = 34963;
+/// glTF `componentType` of `f32`.
+pub(super) const FLOAT: u32 = 5126;
+/// glTF `componentType` of `u16`.
+pub(super) const UNSIGNED_SHORT: u32 = 5123;
 const UNSIGNED_INT: u32 = 5125;
 
 /// Triangle index list (surface, then skirts), counter-clockwise seen from the front.
@@ -184,7 +189,7 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
     let exact = |v: [f32; 3]| v.map(|x| x as f64);
     let key = tile.key;
     let (ox, oz) = (tile.origin_x_m(), tile.origin_z_m());
-    let doc = json!({
+    let mut doc = json!({
         "asset": {
             "version": "2.0",
             "generator": concat!("strata ", env!("CARGO_PKG_VERSION")),
@@ -224,6 +229,10 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
         "bufferViews": views,
         "buffers": [{ "byteLength": bin.len() }],
     });
+    if let Some(water) = super::water_glb::mesh(tile) {
+        let name = format!("water {}/{}/{}", key.lod, key.x, key.z);
+        super::water_glb::append(&mut doc, &mut bin, &water, name, [ox, 0.0, oz]);
+    }
     container(&doc, &bin)
 }
 
@@ -292,5 +301,58 @@ mod tests {
             serde_json::from_slice(&b[20..20 + json_len]).expect("json chunk");
         assert_eq!(doc["accessors"][0]["count"], VERTEX_COUNT);
         assert_eq!(doc["nodes"][0]["extras"]["key"]["lod"], 0);
+    }
+
+    /// The JSON chunk and the BIN chunk's length of a glb.
+    fn chunks(b: &[u8]) -> (serde_json::Value, usize) {
+        let json_len = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;
+        let doc = serde_json::from_slice(&b[20..20 + json_len]).expect("json chunk");
+        let at = 20 + json_len;
+        let bin_len = u32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]]) as usize;
+        (doc, bin_len)
+    }
+
+    #[test]
+    fn water_is_a_second_node_only_where_the_tile_has_kinds_and_water() {
+        let mut t = tile(1, 2, -1);
+        t.water_kind.clear();
+        let (dry, _) = chunks(&encode(plan(), &t));
+        assert_eq!(dry["nodes"].as_array().map(Vec::len), Some(1));
+        assert_eq!(dry["meshes"].as_array().map(Vec::len), Some(1));
+        assert_eq!(dry["scenes"][0]["nodes"], serde_json::json!([0]));
+        assert!(dry.get("materials").is_none(), "no material without kinds");
+        assert_eq!(dry["bufferViews"].as_array().map(Vec::len), Some(4));
+
+        t.water_kind = vec![0; TILE_VERTEX_COUNT];
+        for v in [0, 1, 65, 66, 2000] {
+            t.water_kind[v] = 2;
+            t.water_depth[v] = 3.0;
+        }
+        let b = encode(plan(), &t);
+        let (wet, bin_len) = chunks(&b);
+        assert_eq!(wet["scenes"][0]["nodes"], serde_json::json!([0, 1]));
+        assert_eq!(wet["nodes"][1]["mesh"], 1);
+        assert_eq!(
+            wet["nodes"][1]["translation"],
+            wet["nodes"][0]["translation"]
+        );
+        assert_eq!(wet["materials"][0]["alphaMode"], "BLEND");
+        let prim = &wet["meshes"][1]["primitives"][0];
+        assert_eq!(prim["material"], 0);
+        let water = super::super::water_glb::mesh(&t).expect("water");
+        let pos = prim["attributes"]["POSITION"].as_u64().expect("accessor") as usize;
+        assert_eq!(wet["accessors"][pos]["count"], water.positions.len());
+        let idx = prim["indices"].as_u64().expect("accessor") as usize;
+        assert_eq!(wet["accessors"][idx]["count"], water.indices.len());
+        assert_eq!(wet["buffers"][0]["byteLength"], bin_len);
+        for view in wet["bufferViews"].as_array().expect("views") {
+            let offset = view["byteOffset"].as_u64().expect("offset") as usize;
+            let len = view["byteLength"].as_u64().expect("length") as usize;
+            assert_eq!(offset % 4, 0);
+            assert!(offset + len <= bin_len);
+        }
+        // The wet 2×2 block at the corner touches the quads (0..2, 0..2), and the wet vertex
+        // (50, 30) its four quads.
+        assert_eq!(water.indices.len(), 6 * (4 + 4));
     }
 }

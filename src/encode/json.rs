@@ -1,11 +1,12 @@
-//! The `strata.tile.v1` JSON encoding of a height tile.
+//! The `strata.tile.v1` and `strata.tile.v2` JSON encodings of a height tile.
 //!
 //! One object; per-vertex arrays have 4225 entries indexed `j·65 + i` (`i` east, `j` south).
 //! Numbers are serialised by `serde_json` (shortest round-trip form of each `f32`), so the bytes
 //! are a deterministic function of the tile. Field by field, with units, in
-//! `api/tile_format_v1.md` §JSON.
+//! `api/tile_format_v1.md` §JSON; version 2 (`api/tile_format_v2.md`) names itself
+//! `strata.tile.v2` and adds `water_surface_m` and `water_kind` after `water_depth`.
 
-use super::{height_range, TILE_FORMAT};
+use super::{height_range, water, TileVersion, TILE_FORMAT, TILE_FORMAT_V2};
 use crate::terrain::world::MATERIALS;
 use crate::terrain::{Tile, WorldPlan, TILE_VERTS};
 use serde::Serialize;
@@ -34,7 +35,7 @@ impl From<crate::terrain::TileKey> for KeyJson {
 /// The JSON document; field order is the serialisation order.
 #[derive(Debug, Serialize)]
 struct TileJson<'a> {
-    /// Always [`TILE_FORMAT`].
+    /// [`TILE_FORMAT`] or [`TILE_FORMAT_V2`].
     format: &'static str,
     /// Address.
     key: KeyJson,
@@ -68,6 +69,12 @@ struct TileJson<'a> {
     materials: &'a [u8],
     /// Water depth above the ground, metres (0 on land).
     water_depth: &'a [f32],
+    /// Water surface height, metres (the ground height where dry); version 2 only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    water_surface_m: Option<Vec<f32>>,
+    /// Water kind per vertex (0 none, 1 sea, 2 lake, 3 river); version 2 only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    water_kind: Option<Vec<u8>>,
     /// Vertices a volume region overrides (indices), when any.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     volume_override: Vec<u32>,
@@ -75,10 +82,16 @@ struct TileJson<'a> {
 
 /// Encodes a tile as `strata.tile.v1` JSON.
 pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
+    encode_version(plan, tile, TileVersion::V1)
+}
+
+/// Encodes a tile as JSON of `version`.
+pub fn encode_version(plan: &WorldPlan, tile: &Tile, version: TileVersion) -> Vec<u8> {
     let (min_height_m, max_height_m) = height_range(tile);
     let k = tile.biome_count.max(1);
+    let v2 = version == TileVersion::V2;
     let doc = TileJson {
-        format: TILE_FORMAT,
+        format: if v2 { TILE_FORMAT_V2 } else { TILE_FORMAT },
         key: tile.key.into(),
         seed: plan.seed.to_string(),
         size: TILE_VERTS,
@@ -95,6 +108,8 @@ pub fn encode(plan: &WorldPlan, tile: &Tile) -> Vec<u8> {
         normals: &tile.normals,
         materials: &tile.materials,
         water_depth: &tile.water_depth,
+        water_surface_m: v2.then(|| water::surface(tile)),
+        water_kind: v2.then(|| water::kinds(tile)),
         volume_override: tile
             .volume_override
             .iter()
@@ -134,5 +149,41 @@ mod tests {
         // f32 values round-trip exactly.
         let h0 = v["heights"][100].as_f64().expect("number") as f32;
         assert_eq!(h0.to_bits(), t.heights[100].to_bits());
+        assert!(v.get("water_surface_m").is_none() && v.get("water_kind").is_none());
+    }
+
+    #[test]
+    fn version_2_adds_the_water_surface_and_kind() {
+        let mut t = tile(2, 1, 1);
+        t.water_depth[5] = 0.75;
+        t.water_kind = vec![0; TILE_VERTEX_COUNT];
+        t.water_kind[5] = 3;
+        let v: serde_json::Value =
+            serde_json::from_slice(&encode_version(plan(), &t, TileVersion::V2)).expect("JSON");
+        assert_eq!(v["format"], "strata.tile.v2");
+        let surface: Vec<f32> = v["water_surface_m"]
+            .as_array()
+            .expect("surface")
+            .iter()
+            .map(|x| x.as_f64().expect("number") as f32)
+            .collect();
+        let want = water::surface(&t);
+        assert_eq!(surface.len(), TILE_VERTEX_COUNT);
+        for (a, b) in surface.iter().zip(&want) {
+            assert_eq!(a.to_bits(), b.to_bits());
+        }
+        assert_eq!(surface[5], t.heights[5] + 0.75);
+        assert_eq!(v["water_kind"][5], 3);
+        assert_eq!(v["water_kind"][6], 0);
+        // Everything else is the version 1 document.
+        let mut v1: serde_json::Value = serde_json::from_slice(&encode(plan(), &t)).expect("JSON");
+        let mut v2 = v.clone();
+        for doc in [&mut v1, &mut v2] {
+            let o = doc.as_object_mut().expect("object");
+            for key in ["format", "water_surface_m", "water_kind"] {
+                o.remove(key);
+            }
+        }
+        assert_eq!(v1, v2);
     }
 }

@@ -11,8 +11,11 @@
 //! | `png` | [`heightmap`] | `image/png` | 16-bit greyscale 65×65 |
 //! | `glb` | [`glb`] | `model/gltf-binary` | glTF 2.0 binary with skirts |
 //!
-//! plus [`scatter`] (JSON) for the scatter product. The normative description of all of them is
-//! `api/tile_format_v1.md`.
+//! plus [`scatter`] (JSON) for the scatter product and [`rivers`] (JSON) for a tile's river
+//! lines. The normative description of the tile formats is `api/tile_format_v1.md`; `json` and
+//! `bin` also have a [`TileVersion::V2`] (`?format=2`, `api/tile_format_v2.md`) that adds each
+//! vertex's water surface height and water kind ([`water`]). The river lines are specified in
+//! `api/rivers_v1.md`.
 
 pub mod bin;
 pub mod chunk;
@@ -21,12 +24,67 @@ pub mod glb;
 pub mod heightmap;
 pub mod json;
 pub mod region_glb;
+pub mod rivers;
 pub mod scatter;
+pub mod water;
+pub mod water_glb;
 
 use crate::terrain::Tile;
 
 /// Format identifier in the JSON products.
 pub const TILE_FORMAT: &str = "strata.tile.v1";
+/// Format identifier of the version 2 JSON tile.
+pub const TILE_FORMAT_V2: &str = "strata.tile.v2";
+/// `Content-Type` of the version 2 binary tile.
+pub const BIN_V2_CONTENT_TYPE: &str = "application/vnd.strata.tile.v2";
+
+/// A version of the tile encodings `json` and `bin` (the `?format=` query parameter); `png` and
+/// `glb` have version 1 only.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum TileVersion {
+    /// `strata.tile.v1` and `STRT` v1 (`api/tile_format_v1.md`), the default.
+    #[default]
+    V1,
+    /// `strata.tile.v2` and `STRT` v2 (`api/tile_format_v2.md`): v1 plus the water surface
+    /// height and the water kind of every vertex.
+    V2,
+}
+
+impl TileVersion {
+    /// All versions, oldest first.
+    pub const ALL: [TileVersion; 2] = [TileVersion::V1, TileVersion::V2];
+
+    /// The version's number (`1` or `2`), as in `?format=` and the binary header.
+    pub fn number(self) -> u16 {
+        match self {
+            Self::V1 => 1,
+            Self::V2 => 2,
+        }
+    }
+
+    /// Whether `format` exists in this version (version 2 is defined for `json` and `bin`).
+    pub fn has(self, format: Format) -> bool {
+        self == Self::V1 || matches!(format, Format::Json | Format::Bin)
+    }
+
+    /// The `Content-Type` of `format` in this version.
+    pub fn content_type(self, format: Format) -> &'static str {
+        match (self, format) {
+            (Self::V2, Format::Bin) => BIN_V2_CONTENT_TYPE,
+            _ => format.content_type(),
+        }
+    }
+
+    /// A short name of `format` in this version, unique among the pairs that exist (`bin`,
+    /// `bin.v2`, …; see [`TileVersion::has`]): the body cache's key.
+    pub fn tag(self, format: Format) -> &'static str {
+        match (self, format) {
+            (Self::V2, Format::Json) => "json.v2",
+            (Self::V2, Format::Bin) => "bin.v2",
+            _ => format.extension(),
+        }
+    }
+}
 
 /// A tile wire format, named by the URL extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -11,8 +11,9 @@
 //! |---|---|
 //! | `GET /healthz` | `{"status":"ok"}` |
 //! | `GET /v1/info` | version, backend, limits, formats, world |
-//! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w]` | height tile |
+//! | `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{json,bin,png,glb}[?seams=n,e,s,w][&format=1\|2]` | height tile |
 //! | `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` | scatter points |
+//! | `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` | river lines of a tile, LOD `0..=MAX_CARVE_LOD` (see [`rivers`]; worlds: `/v1/worlds/{id}/rivers/…`) |
 //! | `/v1/worlds…` | worlds, scenes, edits, tokens and their products (see [`worlds`]) |
 //! | `/v1/worlds/{id}/volumes/{vid}/{mesh.glb,curves.json,meshes}` | volume-region mesh export, curves in and out, glb uploads (see [`volume_routes`]) |
 //! | `POST /v1/worlds/{id}/exports`, `/v1/jobs/{job}[/events\|/archive]` | export jobs (see [`exports`]) |
@@ -40,6 +41,7 @@ pub mod params;
 mod plans;
 pub mod region_io;
 pub mod regions;
+pub mod rivers;
 pub mod routes;
 pub mod solved;
 pub mod stream_routes;
@@ -217,8 +219,8 @@ impl AppState {
         })
     }
 
-    /// A tile encoded in `format`, from the body cache or through the stage cache and an encoder
-    /// in one synthesis slot.
+    /// A tile encoded in `format` of `version`, from the body cache or through the stage cache
+    /// and an encoder in one synthesis slot.
     pub async fn tile_product(
         &self,
         inputs: &Arc<SceneInputs>,
@@ -226,8 +228,9 @@ impl AppState {
         key: TileKey,
         seams: [bool; 4],
         format: crate::encode::Format,
+        version: crate::encode::TileVersion,
     ) -> Result<Arc<routes::CachedProduct>, AppError> {
-        let body_key = (inputs.tile(plan.seed, key, seams), format.extension());
+        let body_key = (inputs.tile(plan.seed, key, seams), version.tag(format));
         if let Some(p) = self.bodies.get(&body_key) {
             return Ok(p);
         }
@@ -238,7 +241,7 @@ impl AppState {
                     .tile_with_inputs(&inputs, plan.clone(), key, seams)
                     .await;
                 tokio::task::spawn_blocking(move || {
-                    routes::encode_tile(&plan, &tile, format).map(|p| {
+                    routes::encode_tile_as(&plan, &tile, format, version).map(|p| {
                         Arc::new(routes::CachedProduct::new(p.body, p.content_type, p.extra))
                     })
                 })

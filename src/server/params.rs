@@ -2,10 +2,11 @@
 //!
 //! Pure functions from strings to values or an [`AppError`] naming the field; they never panic,
 //! whatever the input (see the fuzz test below). Checks run in the order seed, lod, x, z, format,
-//! seams, so a URL with several mistakes always reports the same one.
+//! seams, the format version (`?format=`), so a URL with several mistakes always reports the
+//! same one.
 
 use super::error::{code, truncate, AppError};
-use crate::encode::Format;
+use crate::encode::{Format, TileVersion};
 use crate::terrain::{TileKey, WorldPlan, MAX_LOD};
 
 /// Longest decimal integer accepted before it is judged out of range without parsing.
@@ -229,6 +230,59 @@ pub fn parse_seams(query: Option<&str>) -> Result<[bool; 4], AppError> {
     Ok(found.unwrap_or([false; 4]))
 }
 
+/// `?format=1|2`: the version of the tile encoding ([`TileVersion`]; absent means 1) for a tile
+/// of `format`. Other query parameters are ignored. A value that names no version, a repeated
+/// `format`, or version 2 of `.png` or `.glb` (which have version 1 only) is 400
+/// `bad_parameter` naming `format` and the allowed values.
+pub fn parse_tile_version(query: Option<&str>, format: Format) -> Result<TileVersion, AppError> {
+    let bad = |message: String| AppError::bad_request(code::BAD_PARAMETER, "format", message);
+    let allowed = |f: Format| {
+        TileVersion::ALL
+            .iter()
+            .filter(|v| v.has(f))
+            .map(|v| v.number().to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut found: Option<TileVersion> = None;
+    for pair in query.unwrap_or("").split('&').filter(|p| !p.is_empty()) {
+        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+        if percent_decode(k).as_deref() != Some("format") {
+            continue;
+        }
+        if found.is_some() {
+            return Err(bad(format!(
+                "format given more than once; allowed values: {}",
+                allowed(Format::Json)
+            )));
+        }
+        let decoded = percent_decode(v);
+        let version = decoded.as_deref().and_then(|d| {
+            TileVersion::ALL
+                .into_iter()
+                .find(|v| v.number().to_string() == d)
+        });
+        let Some(version) = version else {
+            return Err(bad(format!(
+                "format must be one of {}, got {:?}",
+                allowed(Format::Json),
+                truncate(decoded.as_deref().unwrap_or(v), 40)
+            )));
+        };
+        found = Some(version);
+    }
+    let version = found.unwrap_or_default();
+    if !version.has(format) {
+        return Err(bad(format!(
+            "format={} is not defined for .{}; allowed: {}",
+            version.number(),
+            format.extension(),
+            allowed(format)
+        )));
+    }
+    Ok(version)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -345,6 +399,44 @@ mod tests {
     }
 
     #[test]
+    fn tile_versions() {
+        assert_eq!(parse_tile_version(None, Format::Bin), Ok(TileVersion::V1));
+        assert_eq!(
+            parse_tile_version(Some("seams=0,0,0,0&format=2"), Format::Bin),
+            Ok(TileVersion::V2)
+        );
+        assert_eq!(
+            parse_tile_version(Some("format=1"), Format::Glb),
+            Ok(TileVersion::V1)
+        );
+        assert_eq!(
+            parse_tile_version(Some("format=%32"), Format::Json),
+            Ok(TileVersion::V2)
+        );
+        for (bad, format) in [
+            ("format=3", Format::Bin),
+            ("format=0", Format::Bin),
+            ("format=", Format::Bin),
+            ("format", Format::Json),
+            ("format=v2", Format::Json),
+            ("format=02", Format::Json),
+            ("format=+2", Format::Json),
+            ("format=1&format=1", Format::Json),
+            ("format=%zz", Format::Json),
+            ("format=2", Format::Png),
+            ("format=2", Format::Glb),
+        ] {
+            let e = parse_tile_version(Some(bad), format).expect_err(bad);
+            assert_eq!(
+                (e.code, e.field.as_deref()),
+                (code::BAD_PARAMETER, Some("format")),
+                "{bad}"
+            );
+            assert!(e.message.contains('1'), "{bad}: names the allowed values");
+        }
+    }
+
+    #[test]
     fn bounds() {
         let plan = crate::terrain::WorldPlan::new(1, crate::terrain::WorldParams::default())
             .expect("plan");
@@ -432,11 +524,15 @@ mod tests {
             if let Err(e) = parse_seams(Some(q)) {
                 assert!(e.status.is_client_error() && e.field.as_deref() == Some("seams"));
             }
+            if let Err(e) = parse_tile_version(Some(q), Format::Bin) {
+                assert!(e.status.is_client_error() && e.field.as_deref() == Some("format"));
+            }
         };
         for a in odd {
             for b in odd {
                 check(a, b, a, b, a);
                 check("1", "0", a, b, &format!("seams={a}"));
+                check("1", "0", a, b, &format!("format={a}"));
             }
         }
         let alphabet: Vec<char> = "0123456789-.,%+=&ajsonbpgtf /😀é\0".chars().collect();

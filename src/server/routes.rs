@@ -1,9 +1,9 @@
 //! Route table, handlers, conditional requests and the middleware stack.
 
 use super::error::{code, AppError};
-use super::params::{check_bounds, parse_product, parse_seams};
+use super::params::{check_bounds, parse_product, parse_seams, parse_tile_version};
 use super::{AppState, MAX_BODY_BYTES};
-use crate::encode::{self, Format};
+use crate::encode::{self, Format, TileVersion};
 use crate::terrain::plan::{TILE_QUADS, WORLD_LIMIT_CELLS};
 use crate::terrain::world::MATERIALS;
 use crate::terrain::{Tile, WorldPlan, MAX_LOD, MIN_LOD, TILE_VERTEX_COUNT, TILE_VERTS};
@@ -40,6 +40,7 @@ pub fn router(state: AppState) -> Router {
         .route("/v1/seeds/{seed}/tiles/{lod}/{x}/{z_ext}", get(tile))
         .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
         .route("/metrics", get(super::metrics::render))
+        .merge(super::rivers::routes())
         .merge(super::worlds::routes())
         .merge(super::region_io::routes())
         .merge(super::exports::routes())
@@ -109,11 +110,13 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "synthesis_timeout_ms": limits.synthesis_timeout.as_millis() as u64,
             "max_body_bytes": MAX_BODY_BYTES,
             "plan_cache_seeds": limits.plan_cache_seeds,
+            "max_river_lod": crate::terrain::earth::rivers::MAX_CARVE_LOD,
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),
             "content_type": f.content_type(),
-            "products": if *f == Format::Json { vec!["tiles", "scatter"] } else { vec!["tiles"] },
+            "products": if *f == Format::Json { vec!["tiles", "scatter", "rivers"] } else { vec!["tiles"] },
+            "versions": TileVersion::ALL.iter().filter(|v| v.has(*f)).map(|v| v.number()).collect::<Vec<_>>(),
         })).collect::<Vec<_>>(),
         "world": {
             "params": "default",
@@ -150,7 +153,7 @@ pub(super) fn segments<T>(path: PathSegments<T>) -> Result<T, AppError> {
     }
 }
 
-/// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}[?seams=n,e,s,w]`.
+/// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}[?seams=n,e,s,w][&format=1|2]`.
 async fn tile(
     State(st): State<AppState>,
     path: Segments,
@@ -162,9 +165,10 @@ async fn tile(
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
     let seams = parse_seams(query.as_deref())?;
+    let version = parse_tile_version(query.as_deref(), req.format)?;
     let inputs = super::bare_inputs(&plan.params);
     let product = st
-        .tile_product(&inputs, plan, req.key, seams, req.format)
+        .tile_product(&inputs, plan, req.key, seams, req.format, version)
         .await?;
     Ok(product.respond(&headers))
 }
@@ -218,9 +222,10 @@ pub(super) async fn scatter_product(
     })
 }
 
-/// Runs the encoding `f` on the blocking thread pool. If the task panics or is cancelled, the
-/// failure is logged and the answer is 500 `internal` ("encoding failed").
-async fn blocking<T: Send + 'static>(
+/// Runs the encoding `f` (or the tracing of river lines, [`super::rivers`]) on the blocking
+/// thread pool. If the task panics or is cancelled, the failure is logged and the answer is 500
+/// `internal` ("encoding failed").
+pub(super) async fn blocking<T: Send + 'static>(
     f: impl FnOnce() -> T + Send + 'static,
 ) -> Result<T, AppError> {
     tokio::task::spawn_blocking(f).await.map_err(|e| {
@@ -291,12 +296,23 @@ pub struct Product {
     pub extra: Vec<(HeaderName, String)>,
 }
 
-/// Encodes a tile in a format.
+/// Encodes a tile in a format, version 1.
 pub fn encode_tile(plan: &WorldPlan, tile: &Tile, format: Format) -> Result<Product, AppError> {
+    encode_tile_as(plan, tile, format, TileVersion::V1)
+}
+
+/// Encodes a tile in a format of `version` (`png` and `glb` have version 1 only, which they
+/// give for any `version`; the routes refuse version 2 of them first).
+pub fn encode_tile_as(
+    plan: &WorldPlan,
+    tile: &Tile,
+    format: Format,
+    version: TileVersion,
+) -> Result<Product, AppError> {
     let mut extra = Vec::new();
     let body = match format {
-        Format::Json => encode::json::encode(plan, tile),
-        Format::Bin => encode::bin::encode(plan, tile),
+        Format::Json => encode::json::encode_version(plan, tile, version),
+        Format::Bin => encode::bin::encode_version(plan, tile, version),
         Format::Glb => encode::glb::encode(plan, tile),
         Format::Png => {
             let png = encode::heightmap::encode(plan, tile)
@@ -314,7 +330,7 @@ pub fn encode_tile(plan: &WorldPlan, tile: &Tile, format: Format) -> Result<Prod
     };
     Ok(Product {
         body,
-        content_type: format.content_type(),
+        content_type: version.content_type(format),
         extra,
     })
 }

@@ -3,7 +3,7 @@
 //! products through the stage and body caches).
 
 use super::{AppError, AppState};
-use crate::encode::Format;
+use crate::encode::{Format, TileVersion};
 use crate::stream::session::{run, EditEvent, StreamError, StreamSource, MAX_MESSAGE_BYTES};
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::{Path, State, WebSocketUpgrade};
@@ -39,7 +39,7 @@ async fn tile_payload(
 ) -> Result<Vec<u8>, StreamError> {
     let inputs = state.inputs_for(world, &plan).await?;
     let product = state
-        .tile_product(&inputs, plan, key, seams, format)
+        .tile_product(&inputs, plan, key, seams, format, TileVersion::V1)
         .await?;
     Ok(product.body.to_vec())
 }

@@ -10,8 +10,9 @@
 //! | `POST /v1/worlds/{id}/edits` (`application/json-patch+json`, `If-Match: <v>`) | edit | `{version, dirty}` after the commit |
 //! | `POST /v1/worlds/{id}/tokens` `{role}` | admin | 201 `{token, role}` |
 //! | `POST /v1/worlds/{id}/access` `{public}` | admin | `{id, public}` |
-//! | `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=…]` | read | height tile |
+//! | `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=…][&format=1\|2]` | read | height tile |
 //! | `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]` | read | scatter points |
+//! | `GET /v1/worlds/{id}/rivers/{lod}/{x}/{z}.json[?v=N]` | read | river lines ([`super::rivers`]) |
 //!
 //! A product URL with `v` is immutable (`Cache-Control: public, max-age=31536000, immutable`,
 //! `private` for private worlds); without `v` it is the latest version, cached for
@@ -25,7 +26,8 @@
 use super::access::{caller, Caller};
 use super::error::{code, AppError};
 use super::params::{
-    check_bounds, parse_coord, parse_format, parse_lod, parse_seams, split_extension,
+    check_bounds, parse_coord, parse_format, parse_lod, parse_seams, parse_tile_version,
+    split_extension,
 };
 use super::routes::{check_scatter_format, scatter_product, segments, Segments, IMMUTABLE};
 use super::AppState;
@@ -897,7 +899,7 @@ pub(super) fn product_headers(res: &mut Response, meta: &WorldMeta, version: u64
     set_version_headers(res, version, false);
 }
 
-/// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=n,e,s,w]`.
+/// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=n,e,s,w][&format=1|2]`.
 async fn tile(
     State(st): State<AppState>,
     path: Segments,
@@ -906,8 +908,9 @@ async fn tile(
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
     let seams = parse_seams(query.as_deref())?;
+    let version = parse_tile_version(query.as_deref(), p.format)?;
     let product = st
-        .tile_product(&p.inputs, p.plan.clone(), p.key, seams, p.format)
+        .tile_product(&p.inputs, p.plan.clone(), p.key, seams, p.format, version)
         .await?;
     Ok(finish_product(&p, product.respond(&headers)))
 }

@@ -1,7 +1,8 @@
 //! Helpers shared by the integration tests: the real `strata` binary ([`start`]), requests to
 //! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
 //! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
-//! validator ([`gltf`]) and the Node packages of the browser tests ([`js`]).
+//! validator ([`gltf`]), the Node packages of the browser tests ([`js`]) and tiles with river
+//! and lake water ([`water`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
@@ -12,6 +13,7 @@ pub mod js;
 pub mod oneshot;
 pub mod seams;
 pub mod topology;
+pub mod water;
 
 use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};

@@ -1,0 +1,87 @@
+//! Tiles with water of the default world, found through the library the way a client would:
+//! river tiles from the river lines of a few LOD-6 tiles around the origin, lake tiles from the
+//! lake vertices of the coarsest carved tiles (LOD `rivers::MAX_CARVE_LOD`) around it.
+
+use strata::terrain::earth::{rivers, tile_rivers};
+use strata::terrain::{synthesize, Tile, TileKey, WorldPlan};
+
+/// The LOD-`lod` tile of `plan` holding world point `(x, z)`, metres.
+pub fn key_at(plan: &WorldPlan, lod: u32, x: f64, z: f64) -> TileKey {
+    let span = 64.0 * plan.lods[lod as usize].spacing_m as f64;
+    TileKey {
+        lod,
+        x: (x / span).floor() as i64,
+        z: (z / span).floor() as i64,
+    }
+}
+
+/// How many vertices of `tile` have water of kind `kind`.
+pub fn count(tile: &Tile, kind: u8) -> usize {
+    tile.water_kind.iter().filter(|&&k| k == kind).count()
+}
+
+/// The LOD-`lod` tiles (`lod` ≤ 2, where channels span vertices) on the river lines of the
+/// LOD-6 tiles around the origin, until one has at least `min` river vertices. Panics if none
+/// has.
+pub fn river_tile(plan: &WorldPlan, lod: u32, min: usize) -> Tile {
+    let earth = plan.earth.as_ref().expect("an earth-1 world");
+    for (x, z) in [(0, 0), (-1, 1), (1, 1), (-1, 0), (0, -1), (-1, -1)] {
+        let key = TileKey { lod: 6, x, z };
+        for line in tile_rivers(earth, key, plan.lods[6].spacing_m) {
+            // Points between the network's nodes lie mid-channel, away from confluences.
+            for p in line.points.iter().skip(1).step_by(2) {
+                let tile = synthesize(plan, key_at(plan, lod, p[0] as f64, p[1] as f64));
+                if count(&tile, rivers::kind::RIVER) >= min {
+                    return tile;
+                }
+            }
+        }
+    }
+    panic!("no LOD-{lod} tile with {min} river vertices on the rivers near the origin");
+}
+
+/// The LOD-`lod` tiles holding lake vertices of the coarsest carved tiles around the origin
+/// (LOD [`rivers::MAX_CARVE_LOD`], where lakes show), until one has
+/// at least `lakes` lake and `streams` river vertices. Panics if none has.
+pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Tile {
+    for (x, z) in [
+        (0, 0),
+        (-1, 0),
+        (0, -1),
+        (-1, -1),
+        (1, 0),
+        (0, 1),
+        (1, 1),
+        (-1, 1),
+        (1, -1),
+    ] {
+        let coarsest = rivers::MAX_CARVE_LOD as u32;
+        let coarse = synthesize(
+            plan,
+            TileKey {
+                lod: coarsest,
+                x,
+                z,
+            },
+        );
+        let s = coarse.spacing_m as f64;
+        let wet = coarse
+            .water_kind
+            .iter()
+            .enumerate()
+            .filter(|&(_, &k)| k == rivers::kind::LAKE)
+            .step_by(7)
+            .take(8);
+        for (v, _) in wet {
+            let wx = coarse.origin_x_m() + (v % 65) as f64 * s;
+            let wz = coarse.origin_z_m() + (v / 65) as f64 * s;
+            let tile = synthesize(plan, key_at(plan, lod, wx, wz));
+            if count(&tile, rivers::kind::LAKE) >= lakes
+                && count(&tile, rivers::kind::RIVER) >= streams
+            {
+                return tile;
+            }
+        }
+    }
+    panic!("no LOD-{lod} tile with {lakes} lake and {streams} river vertices near the origin");
+}
