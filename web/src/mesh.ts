@@ -1,6 +1,6 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
-// api/tile_format_v1.md), vertex colours from biome weights and materials, water as a flat
-// translucent quad at sea level over tiles that reach below it.
+// api/tile_format_v1.md), vertex colours from biome weights and materials, water as a translucent
+// sheet at each vertex's water surface (sea, lake or river) over the quads that hold water.
 import * as THREE from "three";
 import type { Tile } from "./frame";
 
@@ -77,12 +77,40 @@ export const waterMaterial = new THREE.MeshLambertMaterial({
   depthWrite: false,
 });
 
-/** The sea level a tile implies (`h + water_depth` where the ground is under water), if any. */
-export function seaLevelOf(tile: Tile): number | undefined {
-  for (let v = 0; v < tile.waterDepth.length; v++) {
-    if (tile.waterDepth[v] > 0) return tile.heights[v] + tile.waterDepth[v];
+/**
+ * The water sheet of a tile: its vertices at the water surface (`h + water_depth`) where the
+ * ground is under water (sea, lake or river), and at the ground elsewhere, so the sheet dips into
+ * the banks and the ground hides its edge; only the quads with a wet corner are drawn. `undefined`
+ * for a dry tile.
+ */
+export function waterGeometry(tile: Tile): THREE.BufferGeometry | undefined {
+  const { size, heights, waterDepth } = tile;
+  const idx: number[] = [];
+  for (let j = 0; j + 1 < size; j++) {
+    for (let i = 0; i + 1 < size; i++) {
+      const a = j * size + i;
+      const [b, c, d] = [a + 1, a + size, a + size + 1];
+      if (waterDepth[a] > 0 || waterDepth[b] > 0 || waterDepth[c] > 0 || waterDepth[d] > 0) {
+        idx.push(a, c, b, b, c, d);
+      }
+    }
   }
-  return undefined;
+  if (idx.length === 0) return undefined;
+  const pos = new Float32Array(3 * size * size);
+  for (let j = 0; j < size; j++) {
+    for (let i = 0; i < size; i++) {
+      const v = j * size + i;
+      pos[3 * v] = i * tile.spacing;
+      pos[3 * v + 1] = heights[v] + Math.max(waterDepth[v], 0);
+      pos[3 * v + 2] = j * tile.spacing;
+    }
+  }
+  const geo = new THREE.BufferGeometry();
+  geo.setIndex(idx);
+  geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+  geo.computeVertexNormals();
+  geo.computeBoundingSphere();
+  return geo;
 }
 
 export function buildMesh(tile: Tile): THREE.Mesh {
@@ -142,13 +170,11 @@ export function buildMesh(tile: Tile): THREE.Mesh {
   mesh.position.set(tile.originX, 0, tile.originZ);
   mesh.matrixAutoUpdate = false;
   mesh.updateMatrix();
-  const sea = seaLevelOf(tile);
-  if (sea !== undefined) {
-    const extent = (size - 1) * tile.spacing;
-    const water = new THREE.Mesh(new THREE.PlaneGeometry(extent, extent), waterMaterial);
-    water.rotation.x = -Math.PI / 2;
-    water.position.set(extent / 2, sea, extent / 2);
+  const sheet = waterGeometry(tile);
+  if (sheet !== undefined) {
+    const water = new THREE.Mesh(sheet, waterMaterial);
     water.renderOrder = 1;
+    water.matrixAutoUpdate = false;
     water.updateMatrix();
     mesh.add(water);
   }

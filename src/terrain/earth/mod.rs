@@ -469,6 +469,9 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
 /// Carves the rivers of `rj` into a job's heights: the CPU reference of the carve (the WGSL twin
 /// is `shaders/rivers.wgsl`).
 pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
+    // Only the pieces that can reach the job at its highest sample (the same result, faster).
+    let h_max = heights.iter().fold(f32::NEG_INFINITY, |m, h| m.max(*h));
+    let rj = rj.pruned(h_max);
     for (v, h) in heights.iter_mut().enumerate() {
         let (i, j) = ((v % job.w) as i64, (v / job.w) as i64);
         let x = (job.gx0 + i) as f32 * spacing_m;

@@ -50,6 +50,10 @@ pub struct RiverJob {
     pub x0: f32,
     /// North edge of the bin grid, metres.
     pub z0: f32,
+    /// East edge of the samples' rectangle, metres.
+    pub x1: f32,
+    /// South edge of the samples' rectangle, metres.
+    pub z1: f32,
     /// Bin side, metres.
     pub bin_m: f32,
     /// Bins per row.
@@ -276,6 +280,8 @@ impl Network<'_> {
             pieces,
             x0,
             z0,
+            x1,
+            z1,
             bin_m,
             bins_w,
             bins_h,
@@ -381,6 +387,56 @@ impl RiverJob {
             }
         }
         best
+    }
+
+    /// The same job without the pieces that cannot change any sample of the rectangle whose
+    /// heights are at most `h_max`: a piece reaches no farther than its valley widened for
+    /// `h_max` (`profile`'s `V'`, with a margin for rounding) or its channel. The carve of every
+    /// sample is unchanged, bit for bit: the pieces left out would have returned it unchanged.
+    pub fn pruned(&self, h_max: f32) -> RiverJob {
+        let keep: Vec<bool> = self
+            .pieces
+            .iter()
+            .map(|p| {
+                let w_min = p.wa.min(p.wb);
+                let v = if h_max > w_min {
+                    (p.half_width + (h_max - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
+                } else {
+                    p.half_width
+                };
+                rect_distance(p, self.x0, self.z0, self.x1, self.z1) < v * 1.001 + 1.0
+            })
+            .collect();
+        let mut index = vec![u32::MAX; self.pieces.len()];
+        let mut pieces = Vec::new();
+        for (i, p) in self.pieces.iter().enumerate() {
+            if keep[i] {
+                index[i] = pieces.len() as u32;
+                pieces.push(*p);
+            }
+        }
+        let mut bin_start = Vec::with_capacity(self.bin_start.len());
+        let mut bin_pieces = Vec::new();
+        for b in 0..self.bin_start.len().saturating_sub(1) {
+            bin_start.push(bin_pieces.len() as u32);
+            let range = self.bin_start[b] as usize..self.bin_start[b + 1] as usize;
+            bin_pieces.extend(
+                self.bin_pieces[range]
+                    .iter()
+                    .filter(|&&i| keep[i as usize])
+                    .map(|&i| index[i as usize]),
+            );
+        }
+        if !self.bin_start.is_empty() {
+            bin_start.push(bin_pieces.len() as u32);
+        }
+        RiverJob {
+            pieces,
+            bin_start,
+            bin_pieces,
+            lakes: self.lakes.clone(),
+            ..*self
+        }
     }
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.
