@@ -340,8 +340,18 @@ impl EarthPlan {
             params.biomes.len(),
         );
         let mean_erosion = erosion.iter().sum::<f32>() / erosion.len().max(1) as f32;
+        // The node heights read the whole world settings (edits are not in them), so worlds and
+        // versions with equal settings share cached network blocks.
+        let world = serde_json::to_vec(params).unwrap_or_default();
         let rivers = e.rivers.as_ref().filter(|r| r.enabled).map(|r| {
-            rivers::RiverPlan::new(seed, r, params.cell_m, params.sea_level_m, mean_erosion)
+            rivers::RiverPlan::new(
+                seed,
+                r,
+                params.cell_m,
+                params.sea_level_m,
+                mean_erosion,
+                &world,
+            )
         });
         let mut lods: Vec<EarthLod> = lods;
         if rivers.is_some() {

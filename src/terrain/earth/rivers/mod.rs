@@ -33,7 +33,8 @@
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample changes nothing (its profile is more than [`FADE_M`] above any height), so every tile
 //! that contains a vertex computes its height and water bit for bit alike. Node data are
-//! memoised per world in bounded caches (`moka`): the cache changes the time, never the bytes.
+//! memoised in process-wide caches (`moka`, bounded in bytes, keyed by the world's fingerprint):
+//! the cache changes the time, never the bytes.
 //!
 //! LODs: the carve runs at LODs `0..=MAX_CARVE_LOD` (spacing up to half a node spacing by
 //! default); coarser tiles skip it, and their LOD bound grows by [`CARVE_MAX_M`], the most the
@@ -46,12 +47,10 @@ mod network;
 
 pub use carve::{job_for, profile, water_at, Edge, Piece, RiverJob, PIECE_LEN2_EPS};
 pub use lines::{LineEnd, RiverLine};
-pub use network::{Lake, Network, Node, NodeId};
+pub use network::{clear_caches, Lake, Network, Node, NodeId};
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
 use super::params::RiverParams;
-use network::Caches;
-use std::sync::Arc;
 
 /// The node heights come from the LOD whose spacing is this many node spacings: relief finer
 /// than a few node spacings is left out, so the drainage follows the larger slopes and cuts
@@ -122,7 +121,7 @@ const OFFSETS: [(i64, i64); 8] = [
 ];
 
 /// The river settings of a world, resolved.
-#[derive(Clone)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct RiverPlan {
     /// Node spacing, metres.
     pub spacing_m: f32,
@@ -138,39 +137,32 @@ pub struct RiverPlan {
     pub sea_level_m: f32,
     /// Erosion strength of the node heights (the biomes' mean).
     pub erosion: f32,
-    caches: Arc<Caches>,
-}
-
-impl PartialEq for RiverPlan {
-    fn eq(&self, o: &Self) -> bool {
-        (self.spacing_m, self.seed, self.node_lod, self.wet_q)
-            == (o.spacing_m, o.seed, o.node_lod, o.wet_q)
-            && (self.incision_m, self.sea_level_m, self.erosion)
-                == (o.incision_m, o.sea_level_m, o.erosion)
-    }
-}
-
-impl std::fmt::Debug for RiverPlan {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("RiverPlan")
-            .field("spacing_m", &self.spacing_m)
-            .field("node_lod", &self.node_lod)
-            .field("wet_q", &self.wet_q)
-            .field("incision_m", &self.incision_m)
-            .finish_non_exhaustive()
-    }
+    /// Identifies the world function the network is computed from (the seed and every setting
+    /// the node heights read), so worlds and versions that share it share cached blocks.
+    pub fingerprint: u64,
 }
 
 impl RiverPlan {
-    /// The plan of `params` in a world of LOD-0 spacing `cell_m` (the node LOD is the one of
-    /// spacing `spacing_m / 2`, clamped to the world's LODs).
+    /// The plan of `params` in a world of LOD-0 spacing `cell_m` (the node heights come from the
+    /// LOD of spacing `NODE_LOD_FACTOR` node spacings, clamped to the world's LODs); `world` is
+    /// the serialised world settings the node heights depend on (hashed with the seed into the
+    /// fingerprint).
     pub fn new(
         seed: u64,
         params: &RiverParams,
         cell_m: f32,
         sea_level_m: f32,
         erosion: f32,
+        world: &[u8],
     ) -> Self {
+        let mut hasher = blake3::Hasher::new();
+        hasher.update(b"strata rivers v1");
+        hasher.update(&seed.to_le_bytes());
+        hasher.update(world);
+        let digest = hasher.finalize();
+        let mut first = [0u8; 8];
+        first.copy_from_slice(&digest.as_bytes()[..8]);
+        let fingerprint = u64::from_le_bytes(first);
         let lod = libm::log2((params.spacing_m * NODE_LOD_FACTOR / cell_m) as f64).floor();
         Self {
             spacing_m: params.spacing_m,
@@ -180,7 +172,7 @@ impl RiverPlan {
             incision_m: params.incision_m,
             sea_level_m,
             erosion,
-            caches: Arc::new(Caches::new()),
+            fingerprint,
         }
     }
 

@@ -25,13 +25,59 @@ type Ends = HashMap<NodeId, (NodeId, usize)>;
 /// count so far.
 type Frame = (NodeId, Vec<NodeId>, usize, u32);
 
-/// The block caches of one world's network.
-pub(super) struct Caches {
-    heights: moka::sync::Cache<(i64, i64), Arc<HeightBlock>>,
-    routes: moka::sync::Cache<(i64, i64), Arc<RouteBlock>>,
-    flow: moka::sync::Cache<(i64, i64), Arc<FlowBlock>>,
-    pieces: moka::sync::Cache<(i64, i64), Arc<Vec<Piece>>>,
+/// Empties every cache of every world's network (the results stay the same: tests use it to
+/// compute a tile from nothing).
+pub fn clear_caches() {
+    CACHES.heights.invalidate_all();
+    CACHES.routes.invalidate_all();
+    CACHES.flow.invalidate_all();
+    CACHES.pieces.invalidate_all();
 }
+
+/// A block of one world's network: the world's fingerprint ([`RiverPlan::fingerprint`]) and
+/// the block's index.
+type BlockKey = (u64, (i64, i64));
+
+/// The block caches of every world's network in the process, each bounded in bytes (so many
+/// worlds and versions share one budget; versions of a world with the same settings share
+/// their blocks).
+struct Caches {
+    heights: moka::sync::Cache<BlockKey, Arc<HeightBlock>>,
+    routes: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
+    flow: moka::sync::Cache<BlockKey, Arc<FlowBlock>>,
+    pieces: moka::sync::Cache<BlockKey, Arc<Vec<Piece>>>,
+}
+
+/// Byte budgets of the caches.
+const HEIGHTS_BYTES: u64 = 64 << 20;
+const ROUTES_BYTES: u64 = 8 << 20;
+const FLOW_BYTES: u64 = 64 << 20;
+const PIECES_BYTES: u64 = 64 << 20;
+
+fn cache<V: Send + Sync + 'static>(
+    bytes: u64,
+    weigh: fn(&V) -> usize,
+) -> moka::sync::Cache<BlockKey, Arc<V>> {
+    moka::sync::Cache::builder()
+        .max_capacity(bytes)
+        .weigher(move |_, v: &Arc<V>| (64 + weigh(v)).min(u32::MAX as usize) as u32)
+        .build()
+}
+
+static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches {
+    heights: cache(HEIGHTS_BYTES, |b: &HeightBlock| {
+        4 * b.h.len() + b.down.len() + 4 * b.relief.len()
+    }),
+    routes: cache(ROUTES_BYTES, |b: &RouteBlock| {
+        48 * b.out.len() + b.into.values().map(|v| 48 + 16 * v.len()).sum::<usize>()
+    }),
+    flow: cache(FLOW_BYTES, |b: &FlowBlock| {
+        4 * (b.q.len() + b.lake.len() + b.w.len())
+    }),
+    pieces: cache(PIECES_BYTES, |p: &Vec<Piece>| {
+        std::mem::size_of::<Piece>() * p.len()
+    }),
+});
 
 /// The breached pits of one block: shallow pits that drain over their saddle to the outlet
 /// beyond it instead of holding a lake.
@@ -61,17 +107,6 @@ struct FlowBlock {
     lake: Vec<f32>,
     /// `BLOCK²` water levels, metres.
     w: Vec<f32>,
-}
-
-impl Caches {
-    pub(super) fn new() -> Self {
-        Self {
-            heights: moka::sync::Cache::new(2048),
-            routes: moka::sync::Cache::new(2048),
-            flow: moka::sync::Cache::new(1024),
-            pieces: moka::sync::Cache::new(4096),
-        }
-    }
 }
 
 /// One node of the network as the products see it.
@@ -135,10 +170,9 @@ impl<'a> Network<'a> {
             return hb.clone();
         }
         let (earth, plan) = (self.earth, self.plan);
-        let hb = plan
-            .caches
-            .heights
-            .get_with(b, || Arc::new(compute_heights(earth, plan, b)));
+        let hb = CACHES.heights.get_with((plan.fingerprint, b), || {
+            Arc::new(compute_heights(earth, plan, b))
+        });
         self.heights.insert(b, hb.clone());
         hb
     }
@@ -176,12 +210,12 @@ impl<'a> Network<'a> {
         if let Some(rb) = self.routes.get(&b) {
             return rb.clone();
         }
-        if let Some(rb) = self.plan.caches.routes.get(&b) {
+        if let Some(rb) = CACHES.routes.get(&(self.plan.fingerprint, b)) {
             self.routes.insert(b, rb.clone());
             return rb;
         }
         let rb = Arc::new(self.compute_routes(b));
-        self.plan.caches.routes.insert(b, rb.clone());
+        CACHES.routes.insert((self.plan.fingerprint, b), rb.clone());
         self.routes.insert(b, rb.clone());
         rb
     }
@@ -263,11 +297,11 @@ impl<'a> Network<'a> {
 
     /// The pieces of piece block `b` (`Network::block_pieces`), memoised.
     pub(super) fn pieces(&mut self, b: (i64, i64)) -> Arc<Vec<Piece>> {
-        if let Some(p) = self.plan.caches.pieces.get(&b) {
+        if let Some(p) = CACHES.pieces.get(&(self.plan.fingerprint, b)) {
             return p;
         }
         let p = Arc::new(self.block_pieces(b));
-        self.plan.caches.pieces.insert(b, p.clone());
+        CACHES.pieces.insert((self.plan.fingerprint, b), p.clone());
         p
     }
 
@@ -288,12 +322,12 @@ impl<'a> Network<'a> {
         if let Some(fb) = self.flows.get(&b) {
             return fb.clone();
         }
-        if let Some(fb) = self.plan.caches.flow.get(&b) {
+        if let Some(fb) = CACHES.flow.get(&(self.plan.fingerprint, b)) {
             self.flows.insert(b, fb.clone());
             return fb;
         }
         let fb = Arc::new(self.compute_flow(b));
-        self.plan.caches.flow.insert(b, fb.clone());
+        CACHES.flow.insert((self.plan.fingerprint, b), fb.clone());
         self.flows.insert(b, fb.clone());
         fb
     }
