@@ -1,10 +1,11 @@
 //! River pieces and the carve: the valley profile every sample is cut to, and the water over it
 //! (module docs of [`super`], step 6).
 
+use super::super::super::hash::{hash2, signed_unit};
 use super::super::EarthPlan;
 use super::network::{Network, Node};
 use super::{
-    channel, kind, RiverPlan, CARVE_MAX_M, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX, REACH,
+    channel, kind, RiverPlan, CARVE_MAX_M, MEANDER, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX, REACH,
     VALLEY_MIN, WALL_SLOPE,
 };
 
@@ -146,6 +147,10 @@ impl Network<'_> {
         // height, so the valley fades in instead of starting as a step.
         let source = main.is_none_or(|(mq, _)| mq < MIN_VALLEY_Q);
         let w0 = if source { from.h.max(from.w) } else { from.w };
+        // A hashed bend across the edge, largest at its middle and nil at the nodes, so valleys
+        // wander off the lattice's directions between confluences.
+        let (ex, ez) = (p2.0 - p1.0, p2.1 - p1.1);
+        let bend = MEANDER * signed_unit(hash2(i as i32, k as i32, self.plan.seed ^ 0x7c15_9e3d));
         let points = (0..=PIECES)
             .map(|j| {
                 let t = j as f32 / PIECES as f32;
@@ -154,7 +159,9 @@ impl Network<'_> {
                 } else if j == PIECES {
                     p2
                 } else {
-                    catmull_rom([p0, p1, p2, p3], t)
+                    let (cx, cz) = catmull_rom([p0, p1, p2, p3], t);
+                    let b = bend * 4.0 * t * (1.0 - t);
+                    (cx - ez * b, cz + ex * b)
                 };
                 [x, z, w0 + (to.w - w0) * t]
             })

@@ -64,6 +64,8 @@ pub const BLOCK: i64 = 32;
 pub const Q_MAX: u32 = 4096;
 /// Largest jitter of a node from its cell centre, in spacings.
 pub const JITTER: f32 = 0.3;
+/// Largest bend of an edge's middle across it, in units of its length.
+pub const MEANDER: f32 = 0.35;
 /// Straight pieces per river edge.
 pub const PIECES: usize = 4;
 /// A lake's flood visits at most this many nodes.
