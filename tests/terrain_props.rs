@@ -1,7 +1,7 @@
 //! Properties of the procedural world function that clients rely on: seams, determinism,
 //! normalised weights, latitude bands, scatter.
 
-use strata::terrain::scatter::scatter;
+use strata::terrain::scatter::{candidates, scatter, MAX_CANDIDATES, MAX_LEVEL};
 use strata::terrain::tile::{snap_edges, Edge};
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan, TILE_VERTS};
 
@@ -320,5 +320,89 @@ fn scatter_is_deterministic_inside_the_tile_and_coarse_positions_are_a_subset() 
         kept * 10 >= coarse.len() * 8,
         "{kept} of {} coarse objects persist at LOD 0",
         coarse.len()
+    );
+}
+
+#[test]
+fn levels_scatter_costs_the_same_at_every_lod_while_scan_grows_fourfold() {
+    let [levels, scan] = plans(42);
+    let base = candidates(&levels, 0);
+    assert!(base > 100, "a LOD-0 tile visits candidates ({base})");
+    for lod in 0..=strata::terrain::MAX_LOD {
+        let n = candidates(&levels, lod);
+        assert!(
+            n <= 2 * base,
+            "LOD {lod}: {n} candidates against {base} at LOD 0"
+        );
+        assert!(n <= MAX_CANDIDATES, "LOD {lod}");
+    }
+    for lod in 0..6 {
+        let (a, b) = (candidates(&scan, lod), candidates(&scan, lod + 1));
+        assert!(
+            b > 3 * a && b <= 4 * a + 4 * (a as f64).sqrt() as u64 + 4,
+            "{a} → {b}"
+        );
+    }
+    assert!(
+        candidates(&scan, 7) > MAX_CANDIDATES,
+        "scan tiles pass the limit at LOD 7"
+    );
+    assert_eq!(
+        MAX_LEVEL,
+        strata::terrain::MAX_LOD,
+        "the coarsest tiles keep candidates"
+    );
+}
+
+#[test]
+fn levels_scatter_keeps_coarse_positions_and_thins_fourfold_per_level() {
+    let [p, _] = plans(42);
+    let key = TileKey { lod: 2, x: 0, z: 0 };
+    let coarse = scatter(&p, &synthesize(&p, key));
+    assert_eq!(coarse, scatter(&p, &synthesize(&p, key)));
+    let mut fine = Vec::new();
+    for dz in 0..4 {
+        for dx in 0..4 {
+            let k = TileKey {
+                lod: 0,
+                x: dx,
+                z: dz,
+            };
+            fine.extend(scatter(&p, &synthesize(&p, k)));
+        }
+    }
+    assert!(
+        fine.len() > 200,
+        "16 LOD-0 tiles carry objects ({})",
+        fine.len()
+    );
+    assert!(!coarse.is_empty(), "a 256 m tile carries objects");
+    let span = 256.0;
+    let mut kept = 0;
+    for pt in &coarse {
+        assert!(
+            pt.x >= 0.0 && pt.x < span && pt.z >= 0.0 && pt.z < span,
+            "{pt:?}"
+        );
+        assert!(pt.level >= 2, "{pt:?}");
+        if fine
+            .iter()
+            .any(|f| f.x == pt.x && f.z == pt.z && f.level == pt.level)
+        {
+            kept += 1;
+        }
+    }
+    assert!(
+        kept * 10 >= coarse.len() * 8,
+        "{kept} of {} coarse objects persist at LOD 0",
+        coarse.len()
+    );
+    // The objects of level ≥ L thin by about 4 per level (binomial counts: wide bounds).
+    let at_least = |l: u32| fine.iter().filter(|f| f.level >= l).count() as f64;
+    let r1 = at_least(1) / at_least(0);
+    assert!((0.15..0.35).contains(&r1), "level ≥ 1 over level ≥ 0: {r1}");
+    assert!(
+        at_least(2) < at_least(1) && at_least(1) < at_least(0),
+        "counts fall with the level"
     );
 }

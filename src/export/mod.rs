@@ -130,6 +130,11 @@ impl ExportSpec {
         if self.products.is_empty() {
             return err("products", "name at least one of tiles, scatter".into());
         }
+        if self.products.contains(&Product::Scatter) {
+            if let Some(message) = crate::terrain::scatter::cost_error(plan, self.lod) {
+                return err("lod", message);
+            }
+        }
         if self.products.contains(&Product::Tiles) && self.formats.is_empty() {
             return err(
                 "formats",
@@ -312,6 +317,25 @@ mod tests {
             products: vec![Product::Tiles, Product::Scatter],
             formats: vec!["bin".into(), "png".into()],
         }
+    }
+
+    #[test]
+    fn scatter_exports_are_refused_where_a_scan_tile_costs_too_much() {
+        let levels = WorldPlan::new(5, WorldParams::default()).expect("plan");
+        let scan = WorldPlan::new(5, WorldParams::classic()).expect("plan");
+        let at = |lod| ExportSpec { lod, ..spec() };
+        assert_eq!(at(12).validate(&levels), Ok(()));
+        assert_eq!(at(6).validate(&scan), Ok(()));
+        let e = at(7)
+            .validate(&scan)
+            .expect_err("LOD 7 scatter of a scan world");
+        assert_eq!(e.field, "lod");
+        assert!(e.message.contains("up to LOD 6"), "{}", e.message);
+        let tiles_only = ExportSpec {
+            products: vec![Product::Tiles],
+            ..at(7)
+        };
+        assert_eq!(tiles_only.validate(&scan), Ok(()));
     }
 
     #[test]

@@ -5,6 +5,7 @@ use super::params::{check_bounds, parse_product, parse_seams, parse_tile_version
 use super::{AppState, MAX_BODY_BYTES};
 use crate::encode::{self, Format, TileVersion};
 use crate::terrain::plan::{TILE_QUADS, WORLD_LIMIT_CELLS};
+use crate::terrain::scatter;
 use crate::terrain::world::MATERIALS;
 use crate::terrain::{Tile, WorldPlan, MAX_LOD, MIN_LOD, TILE_VERTEX_COUNT, TILE_VERTS};
 use axum::extract::rejection::PathRejection;
@@ -111,6 +112,7 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "max_body_bytes": MAX_BODY_BYTES,
             "plan_cache_seeds": limits.plan_cache_seeds,
             "max_river_lod": crate::terrain::earth::rivers::MAX_CARVE_LOD,
+            "scatter_max_candidates": scatter::MAX_CANDIDATES,
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),
@@ -184,6 +186,7 @@ async fn scatter(
     check_scatter_format(req.format)?;
     let plan = st.plan(req.seed).await?;
     check_bounds(&plan, req.key)?;
+    check_scatter_cost(&plan, req.key.lod)?;
     let state = st.clone();
     let product = st
         .limited(async move {
@@ -206,6 +209,19 @@ pub(super) fn check_scatter_format(format: Format) -> Result<(), AppError> {
         "format",
         "scatter is only available as .json",
     ))
+}
+
+/// Refuses scatter that would visit more than [`scatter::MAX_CANDIDATES`] candidates: 400
+/// `lod_out_of_range` naming `lod`, before any work.
+pub(super) fn check_scatter_cost(plan: &WorldPlan, lod: u32) -> Result<(), AppError> {
+    match scatter::cost_error(plan, lod) {
+        Some(message) => Err(AppError::bad_request(
+            code::LOD_OUT_OF_RANGE,
+            "lod",
+            message,
+        )),
+        None => Ok(()),
+    }
 }
 
 /// Encodes the scatter points of `tile` (of the world `plan`) as a JSON product, on the

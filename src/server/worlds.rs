@@ -29,7 +29,9 @@ use super::params::{
     check_bounds, parse_coord, parse_format, parse_lod, parse_seams, parse_tile_version,
     split_extension,
 };
-use super::routes::{check_scatter_format, scatter_product, segments, Segments, IMMUTABLE};
+use super::routes::{
+    check_scatter_cost, check_scatter_format, scatter_product, segments, Segments, IMMUTABLE,
+};
 use super::AppState;
 use crate::encode::Format;
 use crate::scene::{Scene, SceneInputs};
@@ -924,6 +926,7 @@ async fn scatter(
 ) -> Result<Response, AppError> {
     let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
     check_scatter_format(p.format)?;
+    check_scatter_cost(&p.plan, p.key.lod)?;
     let (state, plan, inputs, key) = (st.clone(), p.plan.clone(), p.inputs.clone(), p.key);
     let product = st
         .limited(async move {

@@ -100,6 +100,31 @@ pub struct ScatterParams {
     /// Spacing of the world-anchored candidate lattice at LOD 0, metres; a tile at LOD `l` keeps
     /// the candidates whose level is at least `l` (a quarter of them per level).
     pub spacing_m: f32,
+    /// How candidates get their level; documents without it are [`ScatterLattice::Scan`].
+    #[serde(default, skip_serializing_if = "ScatterLattice::is_scan")]
+    pub lattice: ScatterLattice,
+}
+
+/// How a world's scatter candidates get their level ([`super::scatter`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ScatterLattice {
+    /// One lattice of `spacing_m` whose candidates each hash a level: a tile visits every
+    /// candidate of its area, so a tile one LOD coarser visits 4 times as many. Worlds stored
+    /// before `levels` keep it, and their bytes.
+    #[default]
+    #[serde(rename = "scan")]
+    Scan,
+    /// One lattice per level `L` of spacing `spacing_m · 2^L` whose candidates have level `L`:
+    /// a tile visits about the same number of candidates at every LOD.
+    #[serde(rename = "levels")]
+    Levels,
+}
+
+impl ScatterLattice {
+    /// Whether this is the stored worlds' [`ScatterLattice::Scan`] (which documents leave out).
+    pub fn is_scan(&self) -> bool {
+        *self == ScatterLattice::Scan
+    }
 }
 
 /// Which world function a world uses. Stored scenes name theirs, so a world keeps its bytes when
@@ -281,7 +306,10 @@ impl WorldParams {
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
             },
-            scatter: ScatterParams { spacing_m: 4.0 },
+            scatter: ScatterParams {
+                spacing_m: 4.0,
+                lattice: ScatterLattice::Levels,
+            },
         }
     }
 }
@@ -360,7 +388,10 @@ impl WorldParams {
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
             },
-            scatter: ScatterParams { spacing_m: 4.0 },
+            scatter: ScatterParams {
+                spacing_m: 4.0,
+                lattice: ScatterLattice::Scan,
+            },
         }
     }
 }
