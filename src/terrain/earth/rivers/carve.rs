@@ -5,8 +5,8 @@ use super::super::super::hash::{hash2, signed_unit};
 use super::super::EarthPlan;
 use super::network::{Network, Node};
 use super::{
-    channel, kind, RiverPlan, CARVE_MAX_M, MEANDER, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX, REACH,
-    VALLEY_MIN, WALL_SLOPE,
+    channel, kind, RiverPlan, CARVE_MAX_M, MEANDER, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX,
+    REACH, VALLEY_MIN, WALL_SLOPE,
 };
 
 /// One straight piece of a river's centre line, with the profile of its valley. Twelve `f32`,
