@@ -459,7 +459,7 @@ async fn archive_before_done_is_409_and_the_queue_is_bounded() {
 }
 
 #[tokio::test]
-async fn a_private_worlds_exports_need_a_token() {
+async fn exports_need_an_edit_token_and_following_them_needs_read() {
     let dir = tempfile::tempdir().expect("tmp");
     let app = service(dir.path());
     let (id, admin) = world(&app, 5).await;
@@ -472,6 +472,17 @@ async fn a_private_worlds_exports_need_a_token() {
     )
     .await;
     let reader = r.status_is(StatusCode::CREATED).json()["token"]
+        .as_str()
+        .expect("token")
+        .to_string();
+    let r = post(
+        &app,
+        &format!("/v1/worlds/{id}/tokens"),
+        Some(&admin),
+        &json!({"role": "edit"}),
+    )
+    .await;
+    let editor = r.status_is(StatusCode::CREATED).json()["token"]
         .as_str()
         .expect("token")
         .to_string();
@@ -491,7 +502,11 @@ async fn a_private_worlds_exports_need_a_token() {
         "unauthenticated",
         None,
     );
-    let job = start(&app, &id, Some(&reader), &body).await;
+    // Reading is not enough: an export writes archives to the server's disk.
+    post(&app, &url, Some(&reader), &body)
+        .await
+        .error(StatusCode::FORBIDDEN, "forbidden", None);
+    let job = start(&app, &id, Some(&editor), &body).await;
     let status_url = job["status_url"].as_str().expect("url");
     let v = wait(&app, status_url, Some(&reader)).await;
     assert_eq!(v["status"], "done");
@@ -526,4 +541,11 @@ async fn a_private_worlds_exports_need_a_token() {
             .len(),
         2
     );
+    // Issue 18, finding 3: a public world's exports still need the edit role.
+    post(&app, &url, None, &body)
+        .await
+        .error(StatusCode::UNAUTHORIZED, "unauthenticated", None);
+    post(&app, &url, Some(&reader), &body)
+        .await
+        .error(StatusCode::FORBIDDEN, "forbidden", None);
 }

@@ -99,7 +99,8 @@ fn urls(job: &str) -> (String, String, String) {
     )
 }
 
-/// `POST /v1/worlds/{id}/exports`.
+/// `POST /v1/worlds/{id}/exports`: needs the edit role, public world or not, since an export
+/// writes to the server's disk.
 async fn create(
     State(st): State<AppState>,
     Path(id): Path<String>,
@@ -107,7 +108,7 @@ async fn create(
     body: Bytes,
 ) -> Result<Response, AppError> {
     let (meta, req): (_, ExportBody) =
-        authorized_body(&st, &headers, &id, Role::Read, &body).await?;
+        authorized_body(&st, &headers, &id, Role::Edit, &body).await?;
     let version = match req.v {
         None => meta.version,
         Some(0) => {
