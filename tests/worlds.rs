@@ -802,6 +802,21 @@ async fn bad_input_names_the_field() {
         "invalid_scene",
         Some("/decals/0/bbox/max/0"),
     );
+    // Issue 18, finding 1: a region over ±1e9 m was accepted and its first tile grew the
+    // process to 13 GB; it is refused before any work, naming the field and the limit.
+    let huge = json!([{"op": "add", "path": "/regions/-", "value": {"id": "huge",
+        "bbox": {"min": [-1e9, -1e9], "max": [1e9, 1e9]}, "samples": 33, "ops": []}}]);
+    let r = edit(&app, &w.id, Some(tok), None, &huge).await;
+    let message = r.json()["error"]["message"]
+        .as_str()
+        .unwrap_or_default()
+        .to_string();
+    r.error(
+        StatusCode::BAD_REQUEST,
+        "invalid_scene",
+        Some("/regions/0/bbox/min/0"),
+    );
+    assert!(message.contains("within ±1048576 m"), "{message}");
     for bad in ["abc", "0", "1, 2", "\"x\""] {
         edit(&app, &w.id, Some(tok), Some(bad), &json!([]))
             .await

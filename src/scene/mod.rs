@@ -22,6 +22,7 @@ pub use inputs::{
     StrataInput, VolumeInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
 };
 
+use crate::terrain::plan::WORLD_LIMIT_CELLS;
 use crate::terrain::world::ParamError;
 use crate::terrain::WorldParams;
 use serde::{Deserialize, Serialize};
@@ -168,6 +169,22 @@ impl Scene {
                     }
                 }
                 if kind == "regions" {
+                    // A region's procedural base is sampled over its whole bbox, so the world
+                    // limit bounds that work (issue 18, finding 1: ±1e9 m took 13 GB).
+                    let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
+                    for axis in 0..2 {
+                        for (name, v) in [("min", e.bbox.min[axis]), ("max", e.bbox.max[axis])] {
+                            if v.abs() > limit {
+                                return Err(SceneError::new(
+                                    at(&format!("/bbox/{name}/{axis}")),
+                                    format!(
+                                        "a region lies within the world: within ±{limit} m \
+                                         (world_limit_m of /v1/info)"
+                                    ),
+                                ));
+                            }
+                        }
+                    }
                     crate::authoring::RegionSpec::from_element(e)
                         .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
                 }
@@ -207,6 +224,21 @@ mod tests {
             Scene::from_value(&json!({})).expect("empty is default"),
             Scene::default()
         );
+    }
+
+    #[test]
+    fn a_region_beyond_the_world_is_refused_before_any_work() {
+        let region = |m: f64| {
+            let mut v = Scene::default().to_value();
+            v["regions"] = json!([{"id": "r", "bbox": {"min": [-m, -m], "max": [m, m]},
+                "samples": 33, "ops": []}]);
+            v
+        };
+        let limit = WORLD_LIMIT_CELLS * f64::from(WorldParams::default().cell_m);
+        assert!(Scene::from_value(&region(limit)).is_ok());
+        let e = Scene::from_value(&region(1e9)).expect_err("±1e9 m");
+        assert_eq!(e.pointer, "/regions/0/bbox/min/0");
+        assert!(e.message.contains(&format!("±{limit} m")), "{}", e.message);
     }
 
     #[test]
