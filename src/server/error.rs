@@ -35,6 +35,8 @@ pub mod code {
     pub const PAYLOAD_TOO_LARGE: &str = "payload_too_large";
     /// Tile synthesis did not finish (queueing included) within the time limit; retry later.
     pub const SYNTHESIS_TIMEOUT: &str = "synthesis_timeout";
+    /// The server is shutting down and did not finish the work; retry later.
+    pub const SHUTTING_DOWN: &str = "shutting_down";
     /// A bug or an unexpected failure on the server.
     pub const INTERNAL: &str = "internal";
     /// No world has this id (or the id is malformed).

@@ -150,10 +150,11 @@ async fn world_stream(
     }
     let (_, caller) =
         crate::server::worlds::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
+    let sessions = state.sessions.clone();
     let source: Arc<dyn StreamSource> = Arc::new(WorldSource { state, id, caller });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, source)))
+        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
 }
 
 /// A bare seed: version 1 forever, no edits.
@@ -218,8 +219,9 @@ async fn seed_stream(
         )
     })?;
     let plan = state.plan(seed).await?;
+    let sessions = state.sessions.clone();
     let source: Arc<dyn StreamSource> = Arc::new(SeedSource { state, plan });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, source)))
+        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
 }

@@ -10,6 +10,9 @@
 //!   queued. A full queue stops production (backpressure); a client that does not take a frame
 //!   within [`SEND_TIMEOUT`] is disconnected. Memory per client is bounded by [`QUEUE_FRAMES`]
 //!   frames plus the view's bookkeeping ([`super::view::MAX_VIEW_TILES`] entries).
+//!
+//! At shutdown the server cancels the session's token: production stops at once and the client
+//! gets a close frame with code [`GOING_AWAY`].
 
 use super::protocol::{ClientMessage, ServerMessage, TileFrame};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
@@ -24,6 +27,7 @@ use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::sync::{broadcast, mpsc};
+use tokio_util::sync::CancellationToken;
 
 /// Frames buffered per client.
 pub const QUEUE_FRAMES: usize = 16;
@@ -31,6 +35,10 @@ pub const QUEUE_FRAMES: usize = 16;
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
 /// Largest client message, bytes.
 pub const MAX_MESSAGE_BYTES: usize = 256 * 1024;
+/// Close code sent to every client when the server shuts down (RFC 6455 "going away").
+pub const GOING_AWAY: u16 = 1001;
+/// At shutdown, the longest a client is given to take its last messages and the close frame.
+pub const GOING_AWAY_TIMEOUT: Duration = Duration::from_secs(2);
 
 /// Process-wide stream counters (for `/metrics` and tests).
 #[derive(Debug, Default)]
@@ -135,16 +143,28 @@ fn text(msg: &ServerMessage) -> Message {
     Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
 }
 
-/// Runs a session until the client leaves or is dropped.
-pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
+/// Runs a session until the client leaves or is dropped, or until `closing` is cancelled (the
+/// server is shutting down): then the client gets the text messages already queued (acks, errors)
+/// and a close frame with code 1001 (going away), within [`GOING_AWAY_TIMEOUT`].
+pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: CancellationToken) {
     STATS
         .sessions
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let _guard = SessionGuard;
     let (mut sink, mut incoming) = socket.split();
     let (tx, mut rx) = mpsc::channel::<Message>(QUEUE_FRAMES);
+    let writer_closing = closing.clone();
     let writer = tokio::spawn(async move {
-        while let Some(msg) = rx.recv().await {
+        loop {
+            let msg = tokio::select! {
+                biased;
+                () = writer_closing.cancelled() => break,
+                msg = rx.recv() => msg,
+            };
+            let Some(msg) = msg else {
+                let _ = sink.close().await;
+                return;
+            };
             match tokio::time::timeout(SEND_TIMEOUT, sink.send(msg)).await {
                 Ok(Ok(())) => {}
                 Ok(Err(_)) => return,
@@ -166,7 +186,20 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
                 }
             }
         }
-        let _ = sink.close().await;
+        rx.close();
+        let going_away = async {
+            while let Some(msg) = rx.recv().await {
+                if matches!(msg, Message::Text(_)) {
+                    sink.send(msg).await?;
+                }
+            }
+            let close = CloseFrame {
+                code: GOING_AWAY,
+                reason: "server shutting down".into(),
+            };
+            sink.send(Message::Close(Some(close))).await
+        };
+        let _ = tokio::time::timeout(GOING_AWAY_TIMEOUT, going_away).await;
     });
     let mut edits = source.subscribe_edits();
     let (mut version, mut plan) = match source.current().await {
@@ -203,6 +236,7 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
             }
         };
         tokio::select! {
+            () = closing.cancelled() => break,
             msg = incoming.next() => {
                 let Some(Ok(msg)) = msg else { break };
                 let text_msg = match msg {
@@ -295,7 +329,11 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
             permit = tx.reserve(), if !pending.is_empty() => {
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
-                match source.tile(version, plan.clone(), t.key, t.seams, format).await {
+                let produced = tokio::select! {
+                    r = source.tile(version, plan.clone(), t.key, t.seams, format) => r,
+                    () = closing.cancelled() => break,
+                };
+                match produced {
                     Ok(payload) => {
                         permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
                         held.insert(t.key, version);
