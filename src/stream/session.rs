@@ -35,6 +35,8 @@ pub const QUEUE_FRAMES: usize = 16;
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
 /// Largest client message, bytes.
 pub const MAX_MESSAGE_BYTES: usize = 256 * 1024;
+/// Close code after a client message over [`MAX_MESSAGE_BYTES`] (RFC 6455 "message too big").
+pub const MESSAGE_TOO_BIG: u16 = 1009;
 /// Close code sent to every client when the server shuts down (RFC 6455 "going away").
 pub const GOING_AWAY: u16 = 1001;
 /// At shutdown, the longest a client is given to take its last messages and the close frame.
@@ -139,6 +141,21 @@ fn refused(code: &'static str, field: &'static str, message: impl Into<String>) 
     }
 }
 
+/// The error sent before closing a stream whose client sent a message over [`MAX_MESSAGE_BYTES`].
+fn too_large() -> StreamError {
+    StreamError {
+        code: "message_too_large",
+        message: format!("messages are limited to {MAX_MESSAGE_BYTES} bytes; closing the stream"),
+        field: None,
+    }
+}
+
+/// Whether a read error is the WebSocket's message size limit (tungstenite's capacity error,
+/// whose text starts with "Space limit exceeded"; axum does not expose its type).
+fn is_too_large(e: &axum::Error) -> bool {
+    e.to_string().contains("Space limit exceeded")
+}
+
 fn text(msg: &ServerMessage) -> Message {
     Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
 }
@@ -238,7 +255,19 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
         tokio::select! {
             () = closing.cancelled() => break,
             msg = incoming.next() => {
-                let Some(Ok(msg)) = msg else { break };
+                let msg = match msg {
+                    None => break,
+                    Some(Ok(msg)) => msg,
+                    Some(Err(e)) => {
+                        if is_too_large(&e) {
+                            let e = too_large();
+                            let _ = tx.send(text(&error_message(&e, None))).await;
+                            let close = CloseFrame { code: MESSAGE_TOO_BIG, reason: "message too large".into() };
+                            let _ = tx.send(Message::Close(Some(close))).await;
+                        }
+                        break;
+                    }
+                };
                 let text_msg = match msg {
                     Message::Text(t) => t,
                     Message::Close(_) => break,
@@ -249,14 +278,13 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
                     }
                     _ => continue,
                 };
-                if text_msg.len() > MAX_MESSAGE_BYTES {
-                    let e = refused("message_too_large", "type", format!("messages are limited to {MAX_MESSAGE_BYTES} bytes"));
-                    let _ = tx.send(text(&error_message(&e, None))).await;
-                    continue;
-                }
-                match serde_json::from_str::<ClientMessage>(&text_msg) {
-                    Err(e) => {
-                        let e = refused("bad_message", "type", format!("not a strata.stream.v1 message: {e}"));
+                match ClientMessage::parse(&text_msg) {
+                    Err(bad) => {
+                        let e = StreamError {
+                            code: "bad_message",
+                            message: format!("not a strata.stream.v1 message: {}", bad.message),
+                            field: Some(bad.field.into()),
+                        };
                         let _ = tx.send(text(&error_message(&e, None))).await;
                     }
                     Ok(ClientMessage::View { x, z, rings, format: f }) => {
