@@ -32,6 +32,7 @@ pub mod access;
 pub mod args;
 pub mod bodies;
 pub mod chunks;
+pub mod cors;
 pub mod error;
 pub mod exports;
 pub mod geology;
@@ -116,6 +117,8 @@ pub struct AppState {
     pub volumes: Arc<volumes::VolumeCache>,
     /// Open stream sessions and the signal that closes them at shutdown.
     pub sessions: Sessions,
+    /// Origins besides the server's own that may call every route from a browser.
+    pub cors: cors::CorsOrigins,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -147,6 +150,7 @@ impl AppState {
             regions: Arc::default(),
             volumes: Arc::default(),
             sessions: Sessions::default(),
+            cors: cors::CorsOrigins::default(),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
@@ -171,6 +175,13 @@ impl AppState {
     /// [`crate::cache::DEFAULT_BUDGET_BYTES`].
     pub fn with_cache(mut self, cache: StageCache) -> Self {
         self.cache = Arc::new(cache);
+        self
+    }
+
+    /// Lets browsers on `origins` call every route (see [`cors`]); without it only the
+    /// server's own origin may, besides the public routes.
+    pub fn with_cors_origins(mut self, origins: cors::CorsOrigins) -> Self {
+        self.cors = origins;
         self
     }
 
@@ -470,6 +481,26 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
             args.web.display()
         );
     }
+    let origins = if args.cors_origin.is_empty() {
+        std::env::var("STRATA_CORS_ORIGINS")
+            .ok()
+            .map(|v| {
+                v.split(',')
+                    .map(str::trim)
+                    .filter(|o| !o.is_empty())
+                    .map(str::to_owned)
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default()
+    } else {
+        args.cors_origin.clone()
+    };
+    let origins = cors::CorsOrigins::new(&origins)
+        .map_err(|e| anyhow::anyhow!("STRATA_CORS_ORIGINS: {e}"))?;
+    if !origins.origins().is_empty() {
+        tracing::info!(origins = ?origins.origins(), "cross-origin requests allowed");
+    }
+    state = state.with_cors_origins(origins);
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);
     let sessions = state.sessions.clone();

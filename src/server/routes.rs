@@ -64,6 +64,7 @@ pub fn router(state: AppState) -> Router {
                     .is_some_and(|v| v.starts_with("application/json"))
         };
     let metrics = state.metrics.clone();
+    let cors = state.cors.layer();
     routes
         .with_state(state)
         .layer(middleware::from_fn_with_state(
@@ -79,6 +80,7 @@ pub fn router(state: AppState) -> Router {
                 .compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(json_only)),
         )
         .layer(middleware::map_response(etag_per_encoding))
+        .layer(cors)
         .layer(TraceLayer::new_for_http())
 }
 
@@ -515,14 +517,6 @@ impl CachedProduct {
             h.insert(header::ETAG, v);
         }
         h.insert(header::CACHE_CONTROL, HeaderValue::from_static(IMMUTABLE));
-        h.insert(
-            header::ACCESS_CONTROL_ALLOW_ORIGIN,
-            HeaderValue::from_static("*"),
-        );
-        h.insert(
-            header::ACCESS_CONTROL_EXPOSE_HEADERS,
-            HeaderValue::from_static("ETag, X-Strata-Height-Offset-M, X-Strata-Height-Scale-M"),
-        );
         h.insert(
             header::X_CONTENT_TYPE_OPTIONS,
             HeaderValue::from_static("nosniff"),

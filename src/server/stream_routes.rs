@@ -151,6 +151,7 @@ async fn world_stream(
     headers: axum::http::HeaderMap,
     ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
+    state.cors.check_upgrade(&headers)?;
     let mut headers = headers;
     if let Some(token) = q
         .token
