@@ -75,10 +75,10 @@ impl Compute {
                 }
             }
         }
-        match tokio::task::spawn_blocking(move || crate::terrain::tile::field(&plan, job)).await {
-            Ok(f) => f,
-            Err(e) => std::panic::resume_unwind(e.into_panic()),
-        }
+        joined(tokio::task::spawn_blocking(move || {
+            crate::terrain::tile::field(&plan, job)
+        }))
+        .await
     }
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
@@ -150,11 +150,25 @@ impl Compute {
             t
         };
         let started = std::time::Instant::now();
-        let t = match tokio::task::spawn_blocking(finish_tile).await {
-            Ok(t) => t,
-            Err(e) => std::panic::resume_unwind(e.into_panic()),
-        };
+        let t = joined(tokio::task::spawn_blocking(finish_tile)).await;
         count(Stage::Finish, started);
         t
+    }
+}
+
+/// The result of a blocking task whose result the caller cannot do without.
+///
+/// A panic in the task goes on unwinding in the caller. A cancelled task is not a panic: tokio
+/// cancels blocking tasks only while its runtime shuts down (nothing here aborts their handles),
+/// and the runtime then drops every task, the caller included, so the caller waits for that
+/// instead of inventing a result.
+pub async fn joined<T>(task: tokio::task::JoinHandle<T>) -> T {
+    match task.await {
+        Ok(t) => t,
+        Err(e) if e.is_panic() => std::panic::resume_unwind(e.into_panic()),
+        Err(_) => {
+            tracing::debug!("blocking task cancelled: the runtime is shutting down");
+            std::future::pending().await
+        }
     }
 }

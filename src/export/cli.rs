@@ -1,8 +1,8 @@
 //! `strata export`: the export of the jobs API, run locally with a progress bar.
 
 use super::{write_archive, ExportSpec, Product, Shard};
-use crate::terrain::{WorldParams, WorldPlan};
-use anyhow::{bail, Context};
+use crate::terrain::{WorldParams, WorldPlan, MAX_LOD};
+use anyhow::Context;
 use std::io::{BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -13,30 +13,105 @@ pub struct ExportArgs {
     /// World seed.
     #[arg(long)]
     pub seed: u64,
-    /// World settings as JSON (a `WorldParams` document); the default world without it.
-    #[arg(long)]
+    /// World settings: a JSON file holding a scene's `world` object; the default world without
+    /// it.
+    #[arg(long, value_name = "FILE")]
     pub world: Option<PathBuf>,
-    /// Level of detail.
-    #[arg(long, default_value_t = 0)]
+    /// Level of detail, 0 (finest) to 12.
+    #[arg(long, default_value_t = 0, value_parser = clap::value_parser!(u32).range(0..=i64::from(MAX_LOD)))]
     pub lod: u32,
-    /// Tile rectangle `x0,z0,x1,z1` (x1 and z1 exclusive).
-    #[arg(long, value_delimiter = ',', num_args = 4)]
-    pub region: Vec<i64>,
-    /// Products: `tiles`, `scatter`.
-    #[arg(long, value_delimiter = ',', default_value = "tiles")]
-    pub products: Vec<String>,
-    /// Tile formats: `json`, `bin`, `png`, `glb`.
-    #[arg(long, value_delimiter = ',', default_value = "bin")]
-    pub formats: Vec<String>,
-    /// Shard `i/N` (1-based); the default is the whole export.
-    #[arg(long)]
-    pub shard: Option<String>,
-    /// Output archive.
-    #[arg(long, short)]
+    /// Tile rectangle: tiles x0 ≤ x < x1, z0 ≤ z < z1, e.g. `--region -2,-2,2,2`.
+    #[arg(long, value_name = "X0,Z0,X1,Z1", allow_hyphen_values = true)]
+    pub region: Region,
+    /// Products, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "tiles")]
+    pub products: Vec<ProductName>,
+    /// Tile formats, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "bin")]
+    pub formats: Vec<FormatName>,
+    /// Write only part I of N of the export (I counted from 1); the parts of a region, in order,
+    /// make the whole export.
+    #[arg(long, value_name = "I/N", value_parser = Shard::parse)]
+    pub shard: Option<Shard>,
+    /// Output archive (tar).
+    #[arg(long, short, value_name = "FILE")]
     pub out: PathBuf,
     /// Worker threads (default: all cores).
-    #[arg(long)]
-    pub threads: Option<usize>,
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub threads: Option<u64>,
+}
+
+/// A tile rectangle `x0,z0,x1,z1`: tiles `x0 ≤ x < x1`, `z0 ≤ z < z1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Region {
+    /// First column.
+    pub x0: i64,
+    /// First row.
+    pub z0: i64,
+    /// Column after the last.
+    pub x1: i64,
+    /// Row after the last.
+    pub z1: i64,
+}
+
+impl std::str::FromStr for Region {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, String> {
+        let values = s
+            .split(',')
+            .map(|v| {
+                v.trim()
+                    .parse::<i64>()
+                    .map_err(|_| format!("{:?} is not an integer", v.trim()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let [x0, z0, x1, z1] = values[..] else {
+            return Err(format!(
+                "4 comma-separated integers x0,z0,x1,z1 required, got {}",
+                values.len()
+            ));
+        };
+        if x1 <= x0 || z1 <= z0 {
+            return Err(format!(
+                "the rectangle is empty: need x0 < x1 and z0 < z1, got {x0},{z0},{x1},{z1}"
+            ));
+        }
+        Ok(Region { x0, z0, x1, z1 })
+    }
+}
+
+/// A product of `--products`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ProductName {
+    /// Height tiles, in each of `--formats`.
+    Tiles,
+    /// Scatter points (JSON).
+    Scatter,
+}
+
+/// A tile format of `--formats`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FormatName {
+    /// JSON.
+    Json,
+    /// Binary tile (`api/tile_format_v1.md`).
+    Bin,
+    /// 16-bit greyscale PNG of the heights.
+    Png,
+    /// glTF binary mesh.
+    Glb,
+}
+
+impl FormatName {
+    fn extension(self) -> &'static str {
+        match self {
+            FormatName::Json => "json",
+            FormatName::Bin => "bin",
+            FormatName::Png => "png",
+            FormatName::Glb => "glb",
+        }
+    }
 }
 
 /// Runs `strata export`.
@@ -51,18 +126,15 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         None => WorldParams::default(),
     };
     let plan = WorldPlan::new(args.seed, params)?;
-    let [x0, z0, x1, z1] = args.region[..] else {
-        bail!("--region needs x0,z0,x1,z1")
-    };
+    let Region { x0, z0, x1, z1 } = args.region;
     let products = args
         .products
         .iter()
-        .map(|p| match p.as_str() {
-            "tiles" => Ok(Product::Tiles),
-            "scatter" => Ok(Product::Scatter),
-            other => bail!("unknown product {other:?}; known: tiles, scatter"),
+        .map(|p| match p {
+            ProductName::Tiles => Product::Tiles,
+            ProductName::Scatter => Product::Scatter,
         })
-        .collect::<anyhow::Result<Vec<_>>>()?;
+        .collect();
     let spec = ExportSpec {
         lod: args.lod,
         x0,
@@ -70,17 +142,21 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         x1,
         z1,
         products,
-        formats: args.formats.clone(),
+        formats: args
+            .formats
+            .iter()
+            .map(|f| f.extension().to_string())
+            .collect(),
     };
-    let shard = match &args.shard {
-        Some(s) => Shard::parse(s).map_err(anyhow::Error::msg)?,
-        None => Shard::WHOLE,
-    };
-    let threads = args.threads.unwrap_or_else(|| {
-        std::thread::available_parallelism()
-            .map(|n| n.get())
-            .unwrap_or(1)
-    });
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    let threads = args
+        .threads
+        .and_then(|n| usize::try_from(n).ok())
+        .unwrap_or_else(|| {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+        });
     let file = std::fs::File::create(&args.out)
         .with_context(|| format!("creating {}", args.out.display()))?;
     let mut out = BufWriter::new(file);

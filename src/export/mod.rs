@@ -105,10 +105,10 @@ impl ExportSpec {
         for (field, v) in [
             ("x0", self.x0),
             ("z0", self.z0),
-            ("x1", self.x1 - 1),
-            ("z1", self.z1 - 1),
+            ("x1", self.x1.saturating_sub(1)),
+            ("z1", self.z1.saturating_sub(1)),
         ] {
-            if v.abs() > lim {
+            if v.unsigned_abs() > lim.unsigned_abs() {
                 return err(
                     field,
                     format!("tile coordinates at LOD {} must be within ±{lim}", self.lod),

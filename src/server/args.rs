@@ -23,8 +23,18 @@ pub struct ServeArgs {
     /// `STRATA_ADMIN_TOKEN` when not given. Without one, anyone may create worlds.
     #[arg(long)]
     pub admin_token: Option<super::access::Secret>,
+    /// An origin (`https://maps.example.org`) whose pages may call every route from a browser,
+    /// worlds included; repeat it for several. Read from `STRATA_CORS_ORIGINS` (comma-separated)
+    /// when not given. Without one, only the server's own origin may, besides the bare seeds'
+    /// routes, which every origin may read.
+    #[arg(long, value_name = "ORIGIN", value_parser = check_origin)]
+    pub cors_origin: Vec<String>,
     /// Directory of the disk tier of the stage cache (finished tiles by input hash); memory
     /// only without it.
     #[arg(long)]
     pub cache_dir: Option<PathBuf>,
+}
+
+fn check_origin(s: &str) -> Result<String, String> {
+    super::cors::parse_origin(s).map(|_| s.to_owned())
 }

@@ -31,10 +31,16 @@ pub mod code {
     pub const NOT_FOUND: &str = "not_found";
     /// The route exists but not for this method.
     pub const METHOD_NOT_ALLOWED: &str = "method_not_allowed";
+    /// A WebSocket route was requested without a WebSocket upgrade; `field` is `Upgrade`.
+    pub const UPGRADE_REQUIRED: &str = "upgrade_required";
+    /// The request is malformed in a way no more specific code covers; the message says how.
+    pub const BAD_REQUEST: &str = "bad_request";
     /// The request body is larger than the limit.
     pub const PAYLOAD_TOO_LARGE: &str = "payload_too_large";
     /// Tile synthesis did not finish (queueing included) within the time limit; retry later.
     pub const SYNTHESIS_TIMEOUT: &str = "synthesis_timeout";
+    /// The server is shutting down and did not finish the work; retry later.
+    pub const SHUTTING_DOWN: &str = "shutting_down";
     /// A bug or an unexpected failure on the server.
     pub const INTERNAL: &str = "internal";
     /// No world has this id (or the id is malformed).

@@ -54,6 +54,18 @@ pub fn routes() -> Router<AppState> {
         .route("/v1/worlds/{id}/materials/query", post(query))
 }
 
+/// The largest `|x|`, `|z|` of a column chunk of `size` voxels of `voxel_m` metres: chunk `c`
+/// spans `[c, c + 1)·size·voxel_m`, so `|c| + 1` chunks must fit both in the coordinate limit
+/// ([`crate::scene::MAX_COORD_M`]) and in the world's LOD-0 tiles on either side of the origin,
+/// and chunk coordinates are `i32`.
+fn max_column_chunk(plan: &WorldPlan, voxel_m: f64, size: u32) -> i64 {
+    let tiles_m =
+        plan.max_tile_coord(0) as f64 * TILE_QUADS as f64 * f64::from(plan.lods[0].spacing_m);
+    let half_m = crate::scene::MAX_COORD_M.min(tiles_m);
+    let chunks = (half_m / (voxel_m * f64::from(size))).floor() - 1.0;
+    chunks.clamp(0.0, f64::from(i32::MAX)) as i64
+}
+
 /// The world's ground (before breaches) at `(x, z)` points, from its LOD-0 tiles.
 struct Ground {
     spacing_m: f64,
@@ -91,7 +103,7 @@ impl Ground {
         let mut keys = std::collections::BTreeSet::new();
         for (i, &(x, z)) in points.iter().enumerate() {
             let (t, _) = Ground::cell(spacing_m, x, z);
-            if t.0.abs() > max || t.1.abs() > max {
+            if t.0.unsigned_abs() > max.unsigned_abs() || t.1.unsigned_abs() > max.unsigned_abs() {
                 return Err(AppError::bad_request(
                     code::COORDINATE_OUT_OF_RANGE,
                     format!("points/{i}"),
@@ -247,13 +259,15 @@ async fn columns(
     };
     let geology = input.geology(plan.seed);
     let v = geology.voxel_m();
-    let limit = (crate::scene::MAX_COORD_M / v) as i64 / i64::from(size);
+    let limit = max_column_chunk(&plan, v, size);
     for (field, c) in [("x", x), ("z", z)] {
-        if c.abs() > limit {
+        if c.unsigned_abs() > limit.unsigned_abs() {
             return Err(AppError::bad_request(
                 code::COORDINATE_OUT_OF_RANGE,
                 field,
-                format!("|{field}| must be at most {limit} column chunks of {size} voxels"),
+                format!(
+                    "|{field}| must be at most {limit} column chunks of {size} voxels of {v} m, got {c}"
+                ),
             ));
         }
     }

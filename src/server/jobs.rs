@@ -433,7 +433,8 @@ async fn run(
             });
         }
         Ok(Err(e)) => job.fail(format!("{e:#}")),
-        Err(e) => job.fail(format!("the export panicked: {e}")),
+        Err(e) if e.is_panic() => job.fail(format!("the export panicked: {e}")),
+        Err(_) => job.fail("cancelled: the server is shutting down"),
     }
 }
 

@@ -32,6 +32,7 @@ pub mod access;
 pub mod args;
 pub mod bodies;
 pub mod chunks;
+pub mod cors;
 pub mod error;
 pub mod exports;
 pub mod geology;
@@ -114,6 +115,10 @@ pub struct AppState {
     pub regions: Arc<regions::RegionCache>,
     /// Solved volume regions.
     pub volumes: Arc<volumes::VolumeCache>,
+    /// Open stream sessions and the signal that closes them at shutdown.
+    pub sessions: Sessions,
+    /// Origins besides the server's own that may call every route from a browser.
+    pub cors: cors::CorsOrigins,
     limits: Limits,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
@@ -144,6 +149,8 @@ impl AppState {
             )),
             regions: Arc::default(),
             volumes: Arc::default(),
+            sessions: Sessions::default(),
+            cors: cors::CorsOrigins::default(),
             limits,
             plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
@@ -168,6 +175,13 @@ impl AppState {
     /// [`crate::cache::DEFAULT_BUDGET_BYTES`].
     pub fn with_cache(mut self, cache: StageCache) -> Self {
         self.cache = Arc::new(cache);
+        self
+    }
+
+    /// Lets browsers on `origins` call every route (see [`cors`]); without it only the
+    /// server's own origin may, besides the public routes.
+    pub fn with_cors_origins(mut self, origins: cors::CorsOrigins) -> Self {
+        self.cors = origins;
         self
     }
 
@@ -323,10 +337,15 @@ impl AppState {
             });
             match task.await {
                 Ok(r) => r,
-                Err(e) => {
+                Err(e) if e.is_panic() => {
                     tracing::error!("synthesis task failed: {e}");
                     Err(AppError::internal("tile synthesis failed"))
                 }
+                Err(_) => Err(AppError::new(
+                    axum::http::StatusCode::SERVICE_UNAVAILABLE,
+                    error::code::SHUTTING_DOWN,
+                    "the server is shutting down; retry later",
+                )),
             }
         };
         match tokio::time::timeout(self.limits.synthesis_timeout, run).await {
@@ -340,6 +359,42 @@ impl AppState {
                 ),
             )),
         }
+    }
+}
+
+/// How long shutdown waits for stream sessions to send their close frames and end.
+pub const SESSION_DRAIN_TIMEOUT: Duration = Duration::from_secs(5);
+
+/// The stream sessions of a server: each runs with a token that [`Sessions::close`] cancels,
+/// and [`Sessions::drained`] waits for them to end. Cheap to clone; clones share the sessions.
+#[derive(Clone, Debug, Default)]
+pub struct Sessions {
+    closing: tokio_util::sync::CancellationToken,
+    tracker: tokio_util::task::TaskTracker,
+}
+
+impl Sessions {
+    /// The session `session(closing)`, counted until it ends; `closing` is cancelled by
+    /// [`Sessions::close`].
+    pub fn track<F, Fut>(&self, session: F) -> impl std::future::Future<Output = ()>
+    where
+        F: FnOnce(tokio_util::sync::CancellationToken) -> Fut,
+        Fut: std::future::Future<Output = ()>,
+    {
+        self.tracker.track_future(session(self.closing.clone()))
+    }
+
+    /// Tells every session, running or still to start, to close with code 1001.
+    pub fn close(&self) {
+        self.closing.cancel();
+    }
+
+    /// Waits until every session has ended, at most `within`; whether they all did.
+    pub async fn drained(&self, within: Duration) -> bool {
+        self.tracker.close();
+        tokio::time::timeout(within, self.tracker.wait())
+            .await
+            .is_ok()
     }
 }
 
@@ -426,11 +481,43 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
             args.web.display()
         );
     }
+    let origins = if args.cors_origin.is_empty() {
+        std::env::var("STRATA_CORS_ORIGINS")
+            .ok()
+            .map(|v| {
+                v.split(',')
+                    .map(str::trim)
+                    .filter(|o| !o.is_empty())
+                    .map(str::to_owned)
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default()
+    } else {
+        args.cors_origin.clone()
+    };
+    let origins = cors::CorsOrigins::new(&origins)
+        .map_err(|e| anyhow::anyhow!("STRATA_CORS_ORIGINS: {e}"))?;
+    if !origins.origins().is_empty() {
+        tracing::info!(origins = ?origins.origins(), "cross-origin requests allowed");
+    }
+    state = state.with_cors_origins(origins);
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);
+    let sessions = state.sessions.clone();
+    let stop = sessions.clone();
     axum::serve(listener, app(state))
-        .with_graceful_shutdown(shutdown_signal())
+        .with_graceful_shutdown(async move {
+            shutdown_signal().await;
+            stop.close();
+        })
         .await?;
+    // Upgraded connections are not the HTTP server's: wait for the streams' close frames here.
+    if !sessions.drained(SESSION_DRAIN_TIMEOUT).await {
+        tracing::warn!(
+            "stream sessions still open after {} s; closing their connections",
+            SESSION_DRAIN_TIMEOUT.as_secs()
+        );
+    }
     Ok(())
 }
 

@@ -52,8 +52,8 @@ pub fn router(state: AppState) -> Router {
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {
         Some(dir) => {
-            let not_found = axum::handler::HandlerWithoutStateExt::into_service(not_found);
-            routes.fallback_service(ServeDir::new(dir).not_found_service(not_found))
+            let files = ServeDir::new(dir);
+            routes.fallback(move |req: Request| web_file(files.clone(), req))
         }
         None => routes.fallback(not_found),
     };
@@ -65,6 +65,7 @@ pub fn router(state: AppState) -> Router {
                     .is_some_and(|v| v.starts_with("application/json"))
         };
     let metrics = state.metrics.clone();
+    let cors = state.cors.layer();
     routes
         .with_state(state)
         .layer(middleware::from_fn_with_state(
@@ -72,6 +73,7 @@ pub fn router(state: AppState) -> Router {
             super::metrics::track,
         ))
         .layer(middleware::from_fn(limit_body))
+        .layer(middleware::from_fn(json_errors))
         .layer(DefaultBodyLimit::max(MAX_BODY_BYTES))
         .layer(
             CompressionLayer::new()
@@ -79,6 +81,7 @@ pub fn router(state: AppState) -> Router {
                 .compress_when(SizeAbove::new(COMPRESS_MIN_BYTES).and(json_only)),
         )
         .layer(middleware::map_response(etag_per_encoding))
+        .layer(cors)
         .layer(TraceLayer::new_for_http())
 }
 
@@ -113,6 +116,8 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "plan_cache_seeds": limits.plan_cache_seeds,
             "max_river_lod": crate::terrain::earth::rivers::MAX_CARVE_LOD,
             "scatter_max_candidates": scatter::MAX_CANDIDATES,
+            "max_log_entries": crate::store::MAX_LOG_ENTRIES,
+            "max_stream_message_bytes": crate::stream::session::MAX_MESSAGE_BYTES,
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),
@@ -252,6 +257,99 @@ pub(super) async fn blocking<T: Send + 'static>(
 
 async fn not_found(uri: Uri) -> AppError {
     AppError::not_found(uri.path())
+}
+
+/// Longest file name the viewer directory can hold (`NAME_MAX` on Linux), bytes.
+pub const MAX_FILE_NAME_BYTES: usize = 255;
+
+/// A file of the viewer directory. A path segment longer than any file name is 404 `not_found`
+/// without a look-up (the file system would refuse it with `ENAMETOOLONG`), and a file that
+/// cannot be read is 500 `internal`, both in the JSON error shape.
+async fn web_file(mut files: ServeDir, req: Request) -> Response {
+    let path = req.uri().path().to_owned();
+    let too_long = path
+        .split('/')
+        .any(|s| percent_encoding::percent_decode_str(s).count() > MAX_FILE_NAME_BYTES);
+    if too_long {
+        return AppError::not_found(&path).into_response();
+    }
+    match files.try_call(req).await {
+        Ok(res) if res.status() == StatusCode::NOT_FOUND => {
+            AppError::not_found(&path).into_response()
+        }
+        Ok(res) => res.map(axum::body::Body::new),
+        Err(e) if e.kind() == std::io::ErrorKind::InvalidFilename => {
+            AppError::not_found(&path).into_response()
+        }
+        Err(e) => {
+            tracing::warn!(path = %super::error::truncate(&path, 200), "cannot read a viewer file: {e}");
+            AppError::internal("cannot read the file").into_response()
+        }
+    }
+}
+
+/// Every error in the JSON shape of [`AppError`]. A path whose percent-encoding is not UTF-8 is
+/// refused before routing (400 `bad_path`), whatever the route. Any other error
+/// response that is not JSON (an extractor's rejection, such as the body limit met by a chunked
+/// body) is rewritten with the code of its status and its text as the message; its `Allow` and
+/// `Upgrade` headers are kept.
+async fn json_errors(req: Request, next: Next) -> Response {
+    if percent_encoding::percent_decode_str(req.uri().path())
+        .decode_utf8()
+        .is_err()
+    {
+        return AppError::new(
+            StatusCode::BAD_REQUEST,
+            code::BAD_PATH,
+            "the path's percent-encoding is not UTF-8",
+        )
+        .into_response();
+    }
+    let res = next.run(req).await;
+    let is_json = res
+        .headers()
+        .get(header::CONTENT_TYPE)
+        .and_then(|v| v.to_str().ok())
+        .is_some_and(|v| v.starts_with("application/json"));
+    if res.status().as_u16() < 400 || is_json {
+        return res;
+    }
+    let (parts, body) = res.into_parts();
+    let status = parts.status;
+    let text = axum::body::to_bytes(body, 4096)
+        .await
+        .map(|b| String::from_utf8_lossy(&b).trim().to_owned())
+        .unwrap_or_default();
+    let message = if text.is_empty() {
+        status.canonical_reason().unwrap_or("error").to_owned()
+    } else {
+        text
+    };
+    let error = match status {
+        StatusCode::NOT_FOUND => AppError::new(status, code::NOT_FOUND, message),
+        StatusCode::METHOD_NOT_ALLOWED => AppError::new(status, code::METHOD_NOT_ALLOWED, message),
+        StatusCode::PAYLOAD_TOO_LARGE => AppError::new(
+            status,
+            code::PAYLOAD_TOO_LARGE,
+            format!("request bodies are limited to {MAX_BODY_BYTES} bytes ({message})"),
+        )
+        .with_field("body"),
+        StatusCode::UNSUPPORTED_MEDIA_TYPE => {
+            AppError::new(status, code::UNSUPPORTED_MEDIA_TYPE, message).with_field("Content-Type")
+        }
+        StatusCode::UPGRADE_REQUIRED => {
+            AppError::new(status, code::UPGRADE_REQUIRED, message).with_field("Upgrade")
+        }
+        s if s.is_server_error() => AppError::new(s, code::INTERNAL, message),
+        s => AppError::new(s, code::BAD_REQUEST, message),
+    };
+    let mut out = error.into_response();
+    for name in [header::ALLOW, header::UPGRADE, header::RETRY_AFTER] {
+        if let Some(v) = parts.headers.get(&name) {
+            out.headers_mut().insert(name, v.clone());
+        }
+    }
+    out
 }
 
 async fn method_not_allowed() -> AppError {
@@ -435,14 +533,6 @@ impl CachedProduct {
             h.insert(header::ETAG, v);
         }
         h.insert(header::CACHE_CONTROL, HeaderValue::from_static(IMMUTABLE));
-        h.insert(
-            header::ACCESS_CONTROL_ALLOW_ORIGIN,
-            HeaderValue::from_static("*"),
-        );
-        h.insert(
-            header::ACCESS_CONTROL_EXPOSE_HEADERS,
-            HeaderValue::from_static("ETag, X-Strata-Height-Offset-M, X-Strata-Height-Scale-M"),
-        );
         h.insert(
             header::X_CONTENT_TYPE_OPTIONS,
             HeaderValue::from_static("nosniff"),

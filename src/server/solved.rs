@@ -54,13 +54,13 @@ impl<T: Send + Sync + 'static> SolvedCache<T> {
             entry.0.clone()
         };
         slot.get_or_init(|| async move {
-            match tokio::task::spawn_blocking(solve).await {
-                Ok(Ok(v)) => Some(Arc::new(v)),
-                Ok(Err(e)) => {
+            // Not `None` on cancellation: a tile made without this region would be cached.
+            match crate::compute::joined(tokio::task::spawn_blocking(solve)).await {
+                Ok(v) => Some(Arc::new(v)),
+                Err(e) => {
                     tracing::warn!("{what} not solved: {e}");
                     None
                 }
-                Err(e) => std::panic::resume_unwind(e.into_panic()),
             }
         })
         .await

@@ -6,8 +6,9 @@ use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
 use crate::stream::session::{run, EditEvent, StreamError, StreamSource, MAX_MESSAGE_BYTES};
 use crate::terrain::{TileKey, WorldPlan};
+use axum::extract::ws::rejection::WebSocketUpgradeRejection;
 use axum::extract::{Path, State, WebSocketUpgrade};
-use axum::response::Response;
+use axum::response::{IntoResponse, Response};
 use std::sync::Arc;
 
 /// Routes of this module, to merge into the app's router.
@@ -120,6 +121,23 @@ impl StreamSource for WorldSource {
     }
 }
 
+/// 426 `upgrade_required` (field `Upgrade`, with `Upgrade: websocket`) in the JSON error shape,
+/// for a stream request that is not a WebSocket handshake.
+fn upgrade_required(e: &WebSocketUpgradeRejection) -> Response {
+    let mut res = AppError::new(
+        axum::http::StatusCode::UPGRADE_REQUIRED,
+        crate::server::error::code::UPGRADE_REQUIRED,
+        format!("this route is a WebSocket (strata.stream.v1): {e}"),
+    )
+    .with_field("Upgrade")
+    .into_response();
+    res.headers_mut().insert(
+        axum::http::header::UPGRADE,
+        axum::http::HeaderValue::from_static("websocket"),
+    );
+    res
+}
+
 /// `?token=` for browsers, which cannot set headers on a WebSocket.
 #[derive(serde::Deserialize)]
 struct TokenQuery {
@@ -131,8 +149,9 @@ async fn world_stream(
     Path(id): Path<String>,
     axum::extract::Query(q): axum::extract::Query<TokenQuery>,
     headers: axum::http::HeaderMap,
-    ws: WebSocketUpgrade,
+    ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
+    state.cors.check_upgrade(&headers)?;
     let mut headers = headers;
     if let Some(token) = q
         .token
@@ -150,10 +169,15 @@ async fn world_stream(
     }
     let (_, caller) =
         crate::server::worlds::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
+    let ws = match ws {
+        Ok(ws) => ws,
+        Err(e) => return Ok(upgrade_required(&e)),
+    };
+    let sessions = state.sessions.clone();
     let source: Arc<dyn StreamSource> = Arc::new(WorldSource { state, id, caller });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, source)))
+        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
 }
 
 /// A bare seed: version 1 forever, no edits.
@@ -208,18 +232,17 @@ impl StreamSource for SeedSource {
 async fn seed_stream(
     State(state): State<AppState>,
     Path(seed): Path<String>,
-    ws: WebSocketUpgrade,
+    ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
-    let seed: u64 = seed.parse().map_err(|_| {
-        AppError::bad_request(
-            crate::server::error::code::BAD_SEED,
-            "seed",
-            "seed must be a decimal u64",
-        )
-    })?;
+    let seed = crate::server::params::parse_seed(&seed)?;
+    let ws = match ws {
+        Ok(ws) => ws,
+        Err(e) => return Ok(upgrade_required(&e)),
+    };
     let plan = state.plan(seed).await?;
+    let sessions = state.sessions.clone();
     let source: Arc<dyn StreamSource> = Arc::new(SeedSource { state, plan });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| run(socket, source)))
+        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
 }

@@ -638,7 +638,23 @@ async fn edit_log(
     };
     let limit = match query_param(query.as_deref(), "limit") {
         None => store::MAX_LOG_ENTRIES,
-        Some(s) => parse_version(s, "limit")? as usize,
+        Some(s) => s
+            .parse::<usize>()
+            .ok()
+            .filter(|n| {
+                (1..=store::MAX_LOG_ENTRIES).contains(n) && s.bytes().all(|b| b.is_ascii_digit())
+            })
+            .ok_or_else(|| {
+                AppError::bad_request(
+                    code::BAD_PARAMETER,
+                    "limit",
+                    format!(
+                        "limit must be an integer in 1..={}, got {:?}",
+                        store::MAX_LOG_ENTRIES,
+                        super::error::truncate(s, 40)
+                    ),
+                )
+            })?,
     };
     let edits = st
         .worlds

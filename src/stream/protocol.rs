@@ -45,6 +45,111 @@ pub enum ClientMessage {
     },
 }
 
+/// Why a client message was refused: the field to blame (`type` when the message is not an
+/// object with a known `type`) and what is wrong.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BadMessage {
+    /// The offending field of the message: `type`, `x`, `rings`, `patch`, …
+    pub field: String,
+    /// Human-readable explanation.
+    pub message: String,
+}
+
+impl BadMessage {
+    fn new(field: &str, message: impl Into<String>) -> Self {
+        Self {
+            field: field.to_owned(),
+            message: message.into(),
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ViewFields {
+    x: f64,
+    z: f64,
+    rings: Vec<u32>,
+    #[serde(default)]
+    format: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct EditFields {
+    id: String,
+    patch: serde_json::Value,
+    #[serde(default)]
+    if_match: Option<u64>,
+}
+
+impl ClientMessage {
+    /// Parses a text message, blaming the field that is missing, unknown or of the wrong type.
+    pub fn parse(text: &str) -> Result<Self, BadMessage> {
+        let value: serde_json::Value = serde_json::from_str(text)
+            .map_err(|e| BadMessage::new("type", format!("not a JSON message: {e}")))?;
+        let serde_json::Value::Object(mut fields) = value else {
+            return Err(BadMessage::new("type", "a message is a JSON object"));
+        };
+        let kind = match fields.remove("type") {
+            Some(serde_json::Value::String(kind)) => kind,
+            _ => {
+                return Err(BadMessage::new(
+                    "type",
+                    "`type` must be \"view\" or \"edit\"",
+                ))
+            }
+        };
+        let rest = serde_json::Value::Object(fields);
+        match kind.as_str() {
+            "view" => {
+                let f: ViewFields = fields_of(&rest)?;
+                Ok(ClientMessage::View {
+                    x: f.x,
+                    z: f.z,
+                    rings: f.rings,
+                    format: f.format,
+                })
+            }
+            "edit" => {
+                let f: EditFields = fields_of(&rest)?;
+                Ok(ClientMessage::Edit {
+                    id: f.id,
+                    patch: f.patch,
+                    if_match: f.if_match,
+                })
+            }
+            other => Err(BadMessage::new(
+                "type",
+                format!(
+                    "unknown message type {:?}; known: view, edit",
+                    other.chars().take(40).collect::<String>()
+                ),
+            )),
+        }
+    }
+}
+
+/// The fields of a message of a known type, or the top-level field to blame: the first segment
+/// of the error's path, else the field a "missing field" or "unknown field" error names.
+fn fields_of<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Result<T, BadMessage> {
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let message = e.inner().to_string();
+        let from_path = e.path().iter().find_map(|s| match s {
+            serde_path_to_error::Segment::Map { key } => Some(key.clone()),
+            _ => None,
+        });
+        let named = || {
+            let (_, rest) = message.split_once("field `")?;
+            rest.split_once('`').map(|(name, _)| name.to_owned())
+        };
+        let field = from_path
+            .or_else(named)
+            .unwrap_or_else(|| "type".to_owned());
+        BadMessage { field, message }
+    })
+}
+
 /// A control message from the server.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "type", rename_all = "snake_case")]

@@ -10,6 +10,9 @@
 //!   queued. A full queue stops production (backpressure); a client that does not take a frame
 //!   within [`SEND_TIMEOUT`] is disconnected. Memory per client is bounded by [`QUEUE_FRAMES`]
 //!   frames plus the view's bookkeeping ([`super::view::MAX_VIEW_TILES`] entries).
+//!
+//! At shutdown the server cancels the session's token: production stops at once and the client
+//! gets a close frame with code [`GOING_AWAY`].
 
 use super::protocol::{ClientMessage, ServerMessage, TileFrame};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
@@ -24,6 +27,7 @@ use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::sync::{broadcast, mpsc};
+use tokio_util::sync::CancellationToken;
 
 /// Frames buffered per client.
 pub const QUEUE_FRAMES: usize = 16;
@@ -31,6 +35,12 @@ pub const QUEUE_FRAMES: usize = 16;
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
 /// Largest client message, bytes.
 pub const MAX_MESSAGE_BYTES: usize = 256 * 1024;
+/// Close code after a client message over [`MAX_MESSAGE_BYTES`] (RFC 6455 "message too big").
+pub const MESSAGE_TOO_BIG: u16 = 1009;
+/// Close code sent to every client when the server shuts down (RFC 6455 "going away").
+pub const GOING_AWAY: u16 = 1001;
+/// At shutdown, the longest a client is given to take its last messages and the close frame.
+pub const GOING_AWAY_TIMEOUT: Duration = Duration::from_secs(2);
 
 /// Process-wide stream counters (for `/metrics` and tests).
 #[derive(Debug, Default)]
@@ -131,20 +141,47 @@ fn refused(code: &'static str, field: &'static str, message: impl Into<String>) 
     }
 }
 
+/// The error sent before closing a stream whose client sent a message over [`MAX_MESSAGE_BYTES`].
+fn too_large() -> StreamError {
+    StreamError {
+        code: "message_too_large",
+        message: format!("messages are limited to {MAX_MESSAGE_BYTES} bytes; closing the stream"),
+        field: None,
+    }
+}
+
+/// Whether a read error is the WebSocket's message size limit (tungstenite's capacity error,
+/// whose text starts with "Space limit exceeded"; axum does not expose its type).
+fn is_too_large(e: &axum::Error) -> bool {
+    e.to_string().contains("Space limit exceeded")
+}
+
 fn text(msg: &ServerMessage) -> Message {
     Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
 }
 
-/// Runs a session until the client leaves or is dropped.
-pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
+/// Runs a session until the client leaves or is dropped, or until `closing` is cancelled (the
+/// server is shutting down): then the client gets the text messages already queued (acks, errors)
+/// and a close frame with code 1001 (going away), within [`GOING_AWAY_TIMEOUT`].
+pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: CancellationToken) {
     STATS
         .sessions
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let _guard = SessionGuard;
     let (mut sink, mut incoming) = socket.split();
     let (tx, mut rx) = mpsc::channel::<Message>(QUEUE_FRAMES);
+    let writer_closing = closing.clone();
     let writer = tokio::spawn(async move {
-        while let Some(msg) = rx.recv().await {
+        loop {
+            let msg = tokio::select! {
+                biased;
+                () = writer_closing.cancelled() => break,
+                msg = rx.recv() => msg,
+            };
+            let Some(msg) = msg else {
+                let _ = sink.close().await;
+                return;
+            };
             match tokio::time::timeout(SEND_TIMEOUT, sink.send(msg)).await {
                 Ok(Ok(())) => {}
                 Ok(Err(_)) => return,
@@ -166,7 +203,20 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
                 }
             }
         }
-        let _ = sink.close().await;
+        rx.close();
+        let going_away = async {
+            while let Some(msg) = rx.recv().await {
+                if matches!(msg, Message::Text(_)) {
+                    sink.send(msg).await?;
+                }
+            }
+            let close = CloseFrame {
+                code: GOING_AWAY,
+                reason: "server shutting down".into(),
+            };
+            sink.send(Message::Close(Some(close))).await
+        };
+        let _ = tokio::time::timeout(GOING_AWAY_TIMEOUT, going_away).await;
     });
     let mut edits = source.subscribe_edits();
     let (mut version, mut plan) = match source.current().await {
@@ -203,8 +253,21 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
             }
         };
         tokio::select! {
+            () = closing.cancelled() => break,
             msg = incoming.next() => {
-                let Some(Ok(msg)) = msg else { break };
+                let msg = match msg {
+                    None => break,
+                    Some(Ok(msg)) => msg,
+                    Some(Err(e)) => {
+                        if is_too_large(&e) {
+                            let e = too_large();
+                            let _ = tx.send(text(&error_message(&e, None))).await;
+                            let close = CloseFrame { code: MESSAGE_TOO_BIG, reason: "message too large".into() };
+                            let _ = tx.send(Message::Close(Some(close))).await;
+                        }
+                        break;
+                    }
+                };
                 let text_msg = match msg {
                     Message::Text(t) => t,
                     Message::Close(_) => break,
@@ -215,14 +278,13 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
                     }
                     _ => continue,
                 };
-                if text_msg.len() > MAX_MESSAGE_BYTES {
-                    let e = refused("message_too_large", "type", format!("messages are limited to {MAX_MESSAGE_BYTES} bytes"));
-                    let _ = tx.send(text(&error_message(&e, None))).await;
-                    continue;
-                }
-                match serde_json::from_str::<ClientMessage>(&text_msg) {
-                    Err(e) => {
-                        let e = refused("bad_message", "type", format!("not a strata.stream.v1 message: {e}"));
+                match ClientMessage::parse(&text_msg) {
+                    Err(bad) => {
+                        let e = StreamError {
+                            code: "bad_message",
+                            message: format!("not a strata.stream.v1 message: {}", bad.message),
+                            field: Some(bad.field.into()),
+                        };
                         let _ = tx.send(text(&error_message(&e, None))).await;
                     }
                     Ok(ClientMessage::View { x, z, rings, format: f }) => {
@@ -295,7 +357,11 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>) {
             permit = tx.reserve(), if !pending.is_empty() => {
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
-                match source.tile(version, plan.clone(), t.key, t.seams, format).await {
+                let produced = tokio::select! {
+                    r = source.tile(version, plan.clone(), t.key, t.seams, format) => r,
+                    () = closing.cancelled() => break,
+                };
+                match produced {
                     Ok(payload) => {
                         permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
                         held.insert(t.key, version);

@@ -1,4 +1,4 @@
-//! Helpers shared by the integration tests: the real `strata` binary ([`start`]), requests to
+//! Helpers shared by the integration tests: the real `strata` binary ([`start`], [`start_logged`]), requests to
 //! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
 //! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
 //! validator ([`gltf`]), the Node packages of the browser tests ([`js`]) and tiles with river
@@ -18,6 +18,7 @@ pub mod water;
 use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};
 use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
 
 /// A running `strata serve`, killed when dropped.
 pub struct Server {
@@ -42,6 +43,53 @@ where
     I: IntoIterator<Item = S>,
     S: AsRef<OsStr>,
 {
+    launch(args, envs, None)
+}
+
+/// What a server started by [`start_logged`] writes after its address: its log on stdout and
+/// panic messages on stderr.
+pub struct Log {
+    text: Arc<Mutex<String>>,
+    readers: Vec<std::thread::JoinHandle<()>>,
+}
+
+impl Log {
+    /// Everything written so far.
+    pub fn now(&self) -> String {
+        self.text
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone()
+    }
+
+    /// Everything written, once the process has exited (waits for the pipes to be drained).
+    pub fn finish(mut self) -> String {
+        for r in std::mem::take(&mut self.readers) {
+            let _ = r.join();
+        }
+        self.now()
+    }
+}
+
+/// As [`start`], with the server's output collected in a [`Log`].
+pub fn start_logged<I, S>(args: I, envs: &[(&str, String)]) -> (Server, Log)
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<OsStr>,
+{
+    let mut log = Log {
+        text: Arc::default(),
+        readers: Vec::new(),
+    };
+    let server = launch(args, envs, Some(&mut log));
+    (server, log)
+}
+
+fn launch<I, S>(args: I, envs: &[(&str, String)], log: Option<&mut Log>) -> Server
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<OsStr>,
+{
     let mut child = Command::new(env!("CARGO_BIN_EXE_strata"))
         .args(["serve", "--addr", "127.0.0.1:0", "--backend", "cpu"])
         .args(args)
@@ -49,7 +97,11 @@ where
         .env("NO_COLOR", "1")
         .env("RUST_LOG", "strata=info")
         .stdout(Stdio::piped())
-        .stderr(Stdio::inherit())
+        .stderr(if log.is_some() {
+            Stdio::piped()
+        } else {
+            Stdio::inherit()
+        })
         .spawn()
         .expect("start strata serve");
     let stdout = child.stdout.take().expect("piped stdout");
@@ -67,6 +119,29 @@ where
                 .to_string();
         }
     };
-    std::thread::spawn(move || for _ in lines.by_ref() {});
+    match log {
+        None => {
+            std::thread::spawn(move || for _ in lines.by_ref() {});
+        }
+        Some(log) => {
+            let stderr = child.stderr.take().expect("piped stderr");
+            let (out, err) = (log.text.clone(), log.text.clone());
+            log.readers
+                .push(std::thread::spawn(move || append_lines(lines, &out)));
+            log.readers.push(std::thread::spawn(move || {
+                append_lines(BufReader::new(stderr).lines(), &err)
+            }));
+        }
+    }
     Server { child, addr }
+}
+
+fn append_lines(lines: impl Iterator<Item = std::io::Result<String>>, log: &Mutex<String>) {
+    for line in lines.map_while(Result::ok) {
+        let mut log = log
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        log.push_str(&line);
+        log.push('\n');
+    }
 }
