@@ -1,7 +1,7 @@
 //! Connections of the real `strata serve` over raw TCP (issue 18, finding 5): a connection that
 //! sends nothing, a partial header or a partial body is closed after the read timeout instead of
-//! staying open, and connections beyond the cap are refused with a JSON 503 while the held ones
-//! keep working.
+//! staying open, and connections beyond the cap (stream connections included) are refused with
+//! a JSON 503 while the held ones keep working.
 
 mod common;
 
@@ -101,7 +101,22 @@ fn connections_beyond_the_cap_get_a_json_503() {
         ],
         &[],
     );
-    let held: Vec<TcpStream> = (0..3)
+    // A stream keeps its connection's slot after the upgrade.
+    let mut stream = TcpStream::connect(&server.addr).expect("connect");
+    stream
+        .write_all(
+            b"GET /v1/seeds/1/stream HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\n\
+              Connection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n\
+              Sec-WebSocket-Version: 13\r\n\r\n",
+        )
+        .expect("send");
+    stream
+        .set_read_timeout(Some(Duration::from_secs(30)))
+        .expect("read timeout");
+    let mut head = [0u8; 12];
+    stream.read_exact(&mut head).expect("handshake answer");
+    assert_eq!(&head, b"HTTP/1.1 101", "{}", String::from_utf8_lossy(&head));
+    let held: Vec<TcpStream> = (0..2)
         .map(|_| TcpStream::connect(&server.addr).expect("connect"))
         .collect();
     // The held connections are accepted before the next one is.
