@@ -29,6 +29,16 @@ pub struct ServeArgs {
     /// routes, which every origin may read.
     #[arg(long, value_name = "ORIGIN", value_parser = check_origin)]
     pub cors_origin: Vec<String>,
+    /// Milliseconds a client may take to send a request's header, and may pause while sending
+    /// its body, before the connection is closed.
+    #[arg(long, value_name = "MS", default_value_t = super::HEADER_READ_TIMEOUT.as_millis() as u64,
+          value_parser = clap::value_parser!(u64).range(1..=3_600_000))]
+    pub read_timeout_ms: u64,
+    /// Connections held at once, stream connections included; further ones are answered 503
+    /// and closed.
+    #[arg(long, value_name = "N", default_value_t = super::MAX_CONNECTIONS as u32,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_connections: u32,
     /// Directory of the disk tier of the stage cache (finished tiles by input hash); memory
     /// only without it.
     #[arg(long)]
@@ -37,4 +47,11 @@ pub struct ServeArgs {
 
 fn check_origin(s: &str) -> Result<String, String> {
     super::cors::parse_origin(s).map(|_| s.to_owned())
+}
+
+impl ServeArgs {
+    /// `--read-timeout-ms` as a duration.
+    pub fn read_timeout(&self) -> std::time::Duration {
+        std::time::Duration::from_millis(self.read_timeout_ms)
+    }
 }

@@ -39,6 +39,8 @@ pub mod code {
     pub const PAYLOAD_TOO_LARGE: &str = "payload_too_large";
     /// Tile synthesis did not finish (queueing included) within the time limit; retry later.
     pub const SYNTHESIS_TIMEOUT: &str = "synthesis_timeout";
+    /// The server holds its limit of connections; retry later.
+    pub const TOO_MANY_CONNECTIONS: &str = "too_many_connections";
     /// The server is shutting down and did not finish the work; retry later.
     pub const SHUTTING_DOWN: &str = "shutting_down";
     /// A bug or an unexpected failure on the server.

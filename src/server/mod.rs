@@ -32,6 +32,7 @@ pub mod access;
 pub mod args;
 pub mod bodies;
 pub mod chunks;
+pub mod connections;
 pub mod cors;
 pub mod error;
 pub mod exports;
@@ -72,6 +73,15 @@ pub const SYNTHESIS_TIMEOUT: Duration = Duration::from_secs(30);
 pub const MAX_BODY_BYTES: usize = 2 << 20;
 /// World plans kept, one per seed, least recently used evicted first.
 pub const PLAN_CACHE_SEEDS: usize = 32;
+/// A connection that has not sent a request's whole header this long after it opened (or
+/// after its previous request) is closed.
+pub const HEADER_READ_TIMEOUT: Duration = Duration::from_secs(10);
+/// A request body that sends no data for this long fails (400 `bad_request`) and its
+/// connection is closed.
+pub const BODY_READ_TIMEOUT: Duration = Duration::from_secs(10);
+/// Connections held at once, stream connections included; further ones are answered 503
+/// `too_many_connections` and closed.
+pub const MAX_CONNECTIONS: usize = 4096;
 
 /// Request limits of an [`AppState`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,6 +92,12 @@ pub struct Limits {
     pub synthesis_timeout: Duration,
     /// World plans cached ([`PLAN_CACHE_SEEDS`]).
     pub plan_cache_seeds: usize,
+    /// Time to send a request's header ([`HEADER_READ_TIMEOUT`]; enforced by [`serve`]).
+    pub header_read_timeout: Duration,
+    /// Longest pause of a request body ([`BODY_READ_TIMEOUT`]).
+    pub body_read_timeout: Duration,
+    /// Connections held at once ([`MAX_CONNECTIONS`]; enforced by [`serve`]).
+    pub max_connections: usize,
 }
 
 impl Default for Limits {
@@ -90,6 +106,9 @@ impl Default for Limits {
             max_concurrent_syntheses: MAX_CONCURRENT_SYNTHESES,
             synthesis_timeout: SYNTHESIS_TIMEOUT,
             plan_cache_seeds: PLAN_CACHE_SEEDS,
+            header_read_timeout: HEADER_READ_TIMEOUT,
+            body_read_timeout: BODY_READ_TIMEOUT,
+            max_connections: MAX_CONNECTIONS,
         }
     }
 }
@@ -458,7 +477,13 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
             "no admin token (--admin-token or STRATA_ADMIN_TOKEN): anyone may create worlds"
         );
     }
-    let mut state = AppState::new(compute)
+    let limits = Limits {
+        header_read_timeout: args.read_timeout(),
+        body_read_timeout: args.read_timeout(),
+        max_connections: usize::try_from(args.max_connections).unwrap_or(MAX_CONNECTIONS),
+        ..Limits::default()
+    };
+    let mut state = AppState::with_limits(compute, limits)
         .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose))
         .with_jobs_dir(args.data.join("exports"));
     match state.jobs.sweep() {
@@ -504,13 +529,14 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);
     let sessions = state.sessions.clone();
-    let stop = sessions.clone();
-    axum::serve(listener, app(state))
-        .with_graceful_shutdown(async move {
-            shutdown_signal().await;
-            stop.close();
-        })
-        .await?;
+    let stopping = tokio_util::sync::CancellationToken::new();
+    let stop = (sessions.clone(), stopping.clone());
+    tokio::spawn(async move {
+        shutdown_signal().await;
+        stop.0.close();
+        stop.1.cancel();
+    });
+    connections::serve(listener, app(state), limits, stopping).await;
     // Upgraded connections are not the HTTP server's: wait for the streams' close frames here.
     if !sessions.drained(SESSION_DRAIN_TIMEOUT).await {
         tracing::warn!(

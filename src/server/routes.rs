@@ -20,6 +20,7 @@ use std::sync::Arc;
 use tower_http::compression::predicate::{Predicate, SizeAbove};
 use tower_http::compression::CompressionLayer;
 use tower_http::services::ServeDir;
+use tower_http::timeout::RequestBodyTimeoutLayer;
 use tower_http::trace::TraceLayer;
 
 /// `Cache-Control` of product URLs: their content is a pure function of the URL.
@@ -66,12 +67,14 @@ pub fn router(state: AppState) -> Router {
         };
     let metrics = state.metrics.clone();
     let cors = state.cors.layer();
+    let body_read_timeout = state.limits().body_read_timeout;
     routes
         .with_state(state)
         .layer(middleware::from_fn_with_state(
             metrics,
             super::metrics::track,
         ))
+        .layer(RequestBodyTimeoutLayer::new(body_read_timeout))
         .layer(middleware::from_fn(limit_body))
         .layer(middleware::from_fn(json_errors))
         .layer(DefaultBodyLimit::max(MAX_BODY_BYTES))
@@ -118,6 +121,9 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "scatter_max_candidates": scatter::MAX_CANDIDATES,
             "max_log_entries": crate::store::MAX_LOG_ENTRIES,
             "max_stream_message_bytes": crate::stream::session::MAX_MESSAGE_BYTES,
+            "header_read_timeout_ms": limits.header_read_timeout.as_millis() as u64,
+            "body_read_timeout_ms": limits.body_read_timeout.as_millis() as u64,
+            "max_connections": limits.max_connections,
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),

@@ -149,6 +149,7 @@ async fn world_stream(
     Path(id): Path<String>,
     axum::extract::Query(q): axum::extract::Query<TokenQuery>,
     headers: axum::http::HeaderMap,
+    slot: Option<axum::Extension<super::connections::ConnectionSlot>>,
     ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
     state.cors.check_upgrade(&headers)?;
@@ -177,7 +178,11 @@ async fn world_stream(
     let source: Arc<dyn StreamSource> = Arc::new(WorldSource { state, id, caller });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
+        .on_upgrade(move |socket| async move {
+            // The connection's slot stays taken while the session runs.
+            let _slot = slot;
+            sessions.track(|closing| run(socket, source, closing)).await;
+        }))
 }
 
 /// A bare seed: version 1 forever, no edits.
@@ -232,6 +237,7 @@ impl StreamSource for SeedSource {
 async fn seed_stream(
     State(state): State<AppState>,
     Path(seed): Path<String>,
+    slot: Option<axum::Extension<super::connections::ConnectionSlot>>,
     ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
     let seed = crate::server::params::parse_seed(&seed)?;
@@ -244,5 +250,9 @@ async fn seed_stream(
     let source: Arc<dyn StreamSource> = Arc::new(SeedSource { state, plan });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| sessions.track(|closing| run(socket, source, closing))))
+        .on_upgrade(move |socket| async move {
+            // The connection's slot stays taken while the session runs.
+            let _slot = slot;
+            sessions.track(|closing| run(socket, source, closing)).await;
+        }))
 }

@@ -146,7 +146,11 @@ fn fields_of<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Resul
         let field = from_path
             .or_else(named)
             .unwrap_or_else(|| "type".to_owned());
-        BadMessage { field, message }
+        // An unknown field's name is the client's own text: echo at most 64 characters of it.
+        BadMessage {
+            field: field.chars().take(64).collect(),
+            message: message.chars().take(300).collect(),
+        }
     })
 }
 
