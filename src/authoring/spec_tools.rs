@@ -22,6 +22,9 @@ pub const MAX_NETWORK_EDGES: usize = 1024;
 pub const MAX_DROPLETS: u32 = 200_000;
 /// Most steps of one droplet.
 pub const MAX_DROPLET_STEPS: u32 = 512;
+/// Most droplet steps (`droplets × steps`, summed over a region's hydraulic-erosion brushes): at
+/// about 0.2 µs a step (issue 18's probe: 200,000 × 512 took 21 s of CPU) about 1 s of one core.
+pub const MAX_REGION_DROPLET_STEPS: u64 = 1 << 22;
 /// Longest inline heightmap (`png_base64`), characters: 512 KiB of base64 (384 KiB of PNG), so
 /// a scene with one stays well below the store's 1 MiB scene limit.
 pub const MAX_HEIGHTMAP_BASE64: usize = 512 * 1024;
