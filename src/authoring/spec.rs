@@ -500,6 +500,32 @@ impl RegionSpec {
         Ok(spec)
     }
 
+    /// The cost limits a region meets when it is accepted (not when a stored scene is read, so a
+    /// world accepted under older limits keeps loading): `droplets × steps` summed over its
+    /// hydraulic-erosion brushes is at most [`MAX_REGION_DROPLET_STEPS`].
+    pub fn check_cost(&self) -> Result<(), SpecError> {
+        let mut droplet_steps = 0u64;
+        for (i, op) in self.ops.iter().enumerate() {
+            if let Op::HydraulicErosion {
+                droplets, steps, ..
+            } = op
+            {
+                droplet_steps += u64::from(*droplets) * u64::from(*steps);
+                if droplet_steps > MAX_REGION_DROPLET_STEPS {
+                    return Err(err(
+                        format!("/ops/{i}/droplets"),
+                        format!(
+                            "droplets × steps over a region's hydraulic_erosion operations \
+                             total at most {MAX_REGION_DROPLET_STEPS}; with this one they reach \
+                             {droplet_steps}"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
     fn validate(&self) -> Result<(), SpecError> {
         if !SAMPLE_CHOICES.contains(&self.samples) {
             return Err(err(
@@ -529,7 +555,6 @@ impl RegionSpec {
             }
             Ok(())
         };
-        let mut droplet_steps = 0u64;
         for (i, op) in self.ops.iter().enumerate() {
             let at = |f: &str| format!("/ops/{i}{f}");
             match op {
@@ -834,17 +859,7 @@ impl RegionSpec {
                             format!("must be in 1..={MAX_DROPLET_STEPS}"),
                         ));
                     }
-                    droplet_steps += u64::from(*droplets) * u64::from(*steps);
-                    if droplet_steps > MAX_REGION_DROPLET_STEPS {
-                        return Err(err(
-                            at("/droplets"),
-                            format!(
-                                "droplets × steps over a region's hydraulic_erosion operations \
-                                 total at most {MAX_REGION_DROPLET_STEPS}; with this one they \
-                                 reach {droplet_steps}"
-                            ),
-                        ));
-                    }
+
                     finite_in(at("/erosion_rate"), *erosion_rate, 0.0, 1.0)?;
                 }
                 Op::Contours { lines, detail } => validate_contours(&at(""), lines, *detail)?,
@@ -896,6 +911,8 @@ mod tests {
         };
         let region = |ops: Vec<serde_json::Value>| {
             parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "ops": ops}))
+                .expect("a valid region")
+                .check_cost()
         };
         let half = MAX_REGION_DROPLET_STEPS / 2 / 512;
         assert!(region(vec![brush(half, 512), brush(half, 512)]).is_ok());

@@ -131,6 +131,43 @@ impl Scene {
         ]
     }
 
+    /// The cost limits of issue 18 for the elements that are new or changed since `before` (all
+    /// of them without it). Checked when a scene is written (a new world, an edit), not when a
+    /// stored one is read, so a world accepted under older limits keeps loading and can still
+    /// be edited:
+    ///
+    /// - a region's bbox lies within the world (|coordinate| ≤ `WORLD_LIMIT_CELLS · cell_m`),
+    ///   since its procedural base is sampled over the whole bbox (finding 1: ±1e9 m grew the
+    ///   process to 13 GB);
+    /// - a region's hydraulic erosion is within its budget
+    ///   ([`crate::authoring::RegionSpec::check_cost`]).
+    pub fn check_costs(&self, before: Option<&Scene>) -> Result<(), SceneError> {
+        let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
+        for (i, e) in self.regions.iter().enumerate() {
+            if before.is_some_and(|b| b.regions.contains(e)) {
+                continue;
+            }
+            let at = |f: &str| format!("/regions/{i}{f}");
+            for axis in 0..2 {
+                for (name, v) in [("min", e.bbox.min[axis]), ("max", e.bbox.max[axis])] {
+                    if v.abs() > limit {
+                        return Err(SceneError::new(
+                            at(&format!("/bbox/{name}/{axis}")),
+                            format!(
+                                "a region lies within the world: within ±{limit} m \
+                                 (world_limit_m of /v1/info)"
+                            ),
+                        ));
+                    }
+                }
+            }
+            crate::authoring::RegionSpec::from_element(e)
+                .and_then(|r| r.check_cost())
+                .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+        }
+        Ok(())
+    }
+
     /// Checks the world settings and every element.
     pub fn validate(&self) -> Result<(), SceneError> {
         self.world.validate().map_err(|e: ParamError| {
@@ -169,22 +206,6 @@ impl Scene {
                     }
                 }
                 if kind == "regions" {
-                    // A region's procedural base is sampled over its whole bbox, so the world
-                    // limit bounds that work (issue 18, finding 1: ±1e9 m took 13 GB).
-                    let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
-                    for axis in 0..2 {
-                        for (name, v) in [("min", e.bbox.min[axis]), ("max", e.bbox.max[axis])] {
-                            if v.abs() > limit {
-                                return Err(SceneError::new(
-                                    at(&format!("/bbox/{name}/{axis}")),
-                                    format!(
-                                        "a region lies within the world: within ±{limit} m \
-                                         (world_limit_m of /v1/info)"
-                                    ),
-                                ));
-                            }
-                        }
-                    }
                     crate::authoring::RegionSpec::from_element(e)
                         .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
                 }
@@ -235,10 +256,19 @@ mod tests {
             v
         };
         let limit = WORLD_LIMIT_CELLS * f64::from(WorldParams::default().cell_m);
-        assert!(Scene::from_value(&region(limit)).is_ok());
-        let e = Scene::from_value(&region(1e9)).expect_err("±1e9 m");
+        let at_limit = Scene::from_value(&region(limit)).expect("a valid scene");
+        assert_eq!(at_limit.check_costs(None), Ok(()));
+        // A stored scene reads without the cost limits, so a world accepted before them loads.
+        let huge = Scene::from_value(&region(1e9)).expect("it reads");
+        let e = huge.check_costs(None).expect_err("±1e9 m");
         assert_eq!(e.pointer, "/regions/0/bbox/min/0");
         assert!(e.message.contains(&format!("±{limit} m")), "{}", e.message);
+        // An edit that leaves the element as it was is accepted; one that adds it is not.
+        assert_eq!(huge.check_costs(Some(&huge)), Ok(()));
+        let e = huge
+            .check_costs(Some(&Scene::default()))
+            .expect_err("added by the edit");
+        assert_eq!(e.pointer, "/regions/0/bbox/min/0");
     }
 
     #[test]

@@ -268,9 +268,11 @@ pub trait SceneStore: Send + Sync + std::fmt::Debug {
     async fn list_worlds(&self) -> Result<Vec<WorldMeta>, StoreError>;
 }
 
-/// Validates a scene document and returns its stored form (every field present).
+/// Validates a new world's scene document, cost limits included ([`Scene::check_costs`]), and
+/// returns its stored form (every field present).
 pub fn canonical_scene(doc: &Value) -> Result<Value, StoreError> {
     let scene = Scene::from_value(doc).map_err(StoreError::Invalid)?;
+    scene.check_costs(None).map_err(StoreError::Invalid)?;
     Ok(scene.to_value())
 }
 

@@ -434,6 +434,7 @@ impl SceneStore for SqliteStore {
                 message: format!("{} at {:?}", e.kind, e.path.as_str()),
             })?;
             let new = Scene::from_value(&doc).map_err(StoreError::Invalid)?;
+            new.check_costs(Some(&old)).map_err(StoreError::Invalid)?;
             let text = serde_json::to_string(&doc).map_err(backend)?;
             if text.len() > MAX_SCENE_BYTES {
                 return Err(StoreError::TooLarge {
