@@ -16,14 +16,35 @@ fn fixture(name: &str) -> std::path::PathBuf {
         .join(name)
 }
 
-#[tokio::test]
-async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes() {
+/// The real binary serving a copy of the fixture database (the directory lives as long as the
+/// returned guard).
+fn serve_fixture() -> (tempfile::TempDir, common::Server) {
     let data = tempfile::tempdir().expect("temp dir");
     std::fs::copy(fixture("strata.db"), data.path().join("strata.db")).expect("copy fixture");
     let server = common::start(
         [std::ffi::OsStr::new("--data"), data.path().as_os_str()],
         &[],
     );
+    (data, server)
+}
+
+/// `GET path`, which must answer 200 with bytes whose blake3 is `hash`; the body.
+async fn pinned_get(server: &common::Server, path: &str, hash: &str) -> Vec<u8> {
+    let (status, body) = strata::bench::http::http_get(&server.addr, path)
+        .await
+        .expect("request");
+    assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
+    assert_eq!(
+        blake3::hash(&body).to_hex().as_str(),
+        hash,
+        "{path} changed its bytes"
+    );
+    body
+}
+
+#[tokio::test]
+async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes() {
+    let (_data, server) = serve_fixture();
     let expected = std::fs::read_to_string(fixture("tiles.blake3")).expect("fixture hashes");
     let mut checked = 0;
     for line in expected.lines() {
@@ -31,16 +52,12 @@ async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes(
         let [version, key, hash] = parts[..] else {
             panic!("bad fixture line {line:?}");
         };
-        let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={version}");
-        let (status, body) = strata::bench::http::http_get(&server.addr, &path)
-            .await
-            .expect("request");
-        assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
-        assert_eq!(
-            blake3::hash(&body).to_hex().as_str(),
+        pinned_get(
+            &server,
+            &format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={version}"),
             hash,
-            "{path} changed its bytes"
-        );
+        )
+        .await;
         // Its tiles carry no water kinds, so its glb keeps the terrain's one node: no water.
         let glb = format!("/v1/worlds/{WORLD}/tiles/{key}.glb?v={version}");
         let (status, body) = strata::bench::http::http_get(&server.addr, &glb)
@@ -59,12 +76,7 @@ async fn a_world_stored_by_the_first_earth_generator_serves_the_same_tile_bytes(
 
 #[tokio::test]
 async fn a_world_stored_before_the_levels_lattice_keeps_its_scatter_and_refuses_costly_lods() {
-    let data = tempfile::tempdir().expect("temp dir");
-    std::fs::copy(fixture("strata.db"), data.path().join("strata.db")).expect("copy fixture");
-    let server = common::start(
-        [std::ffi::OsStr::new("--data"), data.path().as_os_str()],
-        &[],
-    );
+    let (_data, server) = serve_fixture();
     let expected = std::fs::read_to_string(fixture("scatter.blake3")).expect("fixture hashes");
     let (mut checked, mut points) = (0, 0);
     for line in expected.lines() {
@@ -73,15 +85,7 @@ async fn a_world_stored_before_the_levels_lattice_keeps_its_scatter_and_refuses_
             panic!("bad fixture line {line:?}");
         };
         let path = format!("/v1/worlds/{WORLD}/scatter/{key}.json?v={version}");
-        let (status, body) = strata::bench::http::http_get(&server.addr, &path)
-            .await
-            .expect("request");
-        assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
-        assert_eq!(
-            blake3::hash(&body).to_hex().as_str(),
-            hash,
-            "{path} changed its bytes"
-        );
+        let body = pinned_get(&server, &path, hash).await;
         let doc: serde_json::Value = serde_json::from_slice(&body).expect("scatter JSON");
         let n = doc["points"].as_array().map_or(0, Vec::len);
         assert_eq!(n.to_string(), count, "{path}");

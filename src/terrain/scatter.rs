@@ -94,10 +94,8 @@ pub fn scatter(plan: &WorldPlan, tile: &Tile) -> Vec<ScatterPoint> {
             for_each_cell(tile, s, |a, b| {
                 let level = (hash2(a, b, seed_level).trailing_zeros() / 2).min(MAX_LEVEL);
                 if level >= tile.key.lod {
-                    let h = hash2(a, b, seed_pos);
-                    let x = (a as f64 + unit(h) as f64) * s;
-                    let z = (b as f64 + unit(mix32(h ^ 0x5bd1_e995)) as f64) * s;
-                    place(plan, tile, (x, z), hash2(a, b, seed_pick), level, &mut out);
+                    let at = jittered(a, b, seed_pos, s);
+                    place(plan, tile, at, hash2(a, b, seed_pick), level, &mut out);
                 }
             });
         }
@@ -107,15 +105,22 @@ pub fn scatter(plan: &WorldPlan, tile: &Tile) -> Vec<ScatterPoint> {
                 let seed_pos = stream(plan.seed, purpose::SCATTER, 16 + level);
                 let seed_pick = stream(plan.seed, purpose::SCATTER, 32 + level);
                 for_each_cell(tile, sl, |a, b| {
-                    let h = hash2(a, b, seed_pos);
-                    let x = (a as f64 + unit(h) as f64) * sl;
-                    let z = (b as f64 + unit(mix32(h ^ 0x5bd1_e995)) as f64) * sl;
-                    place(plan, tile, (x, z), hash2(a, b, seed_pick), level, &mut out);
+                    let at = jittered(a, b, seed_pos, sl);
+                    place(plan, tile, at, hash2(a, b, seed_pick), level, &mut out);
                 });
             }
         }
     }
     out
+}
+
+/// The position of candidate `(a, b)` of the lattice of spacing `s`: its cell's corner plus a
+/// hashed offset in `[0, s)` on each axis, world metres.
+fn jittered(a: i32, b: i32, seed: u32, s: f64) -> (f64, f64) {
+    let h = hash2(a, b, seed);
+    let x = (a as f64 + unit(h) as f64) * s;
+    let z = (b as f64 + unit(mix32(h ^ 0x5bd1_e995)) as f64) * s;
+    (x, z)
 }
 
 /// Calls `f(a, b)` for every cell of the lattice of spacing `s` that meets the tile's area.
