@@ -5,14 +5,15 @@
 //! that fails (device lost, validation error, timeout) is recomputed on the CPU and the device is
 //! marked lost, so requests never fail because of the device.
 //!
+//! A tile runs the jobs of [`crate::edits::tile_jobs`] here (device or CPU) and then
+//! [`crate::edits::assemble`], the same synthesis as the CPU's [`crate::edits::synthesize`].
 //! [`Compute::tile_cached`] puts the [`crate::cache::StageCache`] in front: a tile whose input
 //! hash is cached runs no stage; otherwise each stage run is counted there.
 
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::edits::TileEdits;
 pub use crate::gpu::AdapterInfo;
-use crate::terrain::plan::MAX_LOD;
-use crate::terrain::tile::{apply_snap, finish, snap_strip, Edge, Field};
+use crate::terrain::tile::Field;
 use crate::terrain::{FieldJob, Tile, TileKey, WorldPlan};
 use serde::Serialize;
 use std::sync::Arc;
@@ -125,32 +126,26 @@ impl Compute {
                 c.record_run(stage, since.elapsed());
             }
         };
-        let started = std::time::Instant::now();
-        let job = FieldJob::with_margin(key);
-        let mut f = self.field(plan.clone(), job).await;
-        edits.apply(job.window(&plan), &mut f.heights);
-        count(Stage::Field, started);
-        let mut strips = Vec::new();
-        if key.lod < MAX_LOD {
-            for (edge, _) in Edge::ALL.iter().zip(coarser).filter(|(_, c)| *c) {
-                let started = std::time::Instant::now();
-                let job = snap_strip(key, *edge);
-                let mut strip = self.field(plan.clone(), job).await;
-                edits.apply(job.window(&plan), &mut strip.heights);
-                strips.push((*edge, strip));
-                count(Stage::Snap, started);
-            }
+        let mut fields = Vec::new();
+        for (edge, job) in crate::edits::tile_jobs(&plan, key, coarser) {
+            let started = std::time::Instant::now();
+            let mut f = self.field(plan.clone(), job).await;
+            crate::edits::edit_field(&plan, job, &edits, &mut f);
+            fields.push((edge, f));
+            count(
+                if edge.is_none() {
+                    Stage::Field
+                } else {
+                    Stage::Snap
+                },
+                started,
+            );
         }
-        let finish_tile = move || {
-            let mut t = finish(&plan, key, &f);
-            for (edge, strip) in &strips {
-                apply_snap(&mut t, *edge, &strip.heights);
-            }
-            edits.mark(&mut t);
-            t
-        };
         let started = std::time::Instant::now();
-        let t = joined(tokio::task::spawn_blocking(finish_tile)).await;
+        let t = joined(tokio::task::spawn_blocking(move || {
+            crate::edits::assemble(&plan, key, &fields, &edits)
+        }))
+        .await;
         count(Stage::Finish, started);
         t
     }

@@ -13,7 +13,7 @@ use crate::subsurface::world::breach_lattice;
 use crate::subsurface::Geology;
 use crate::terrain::lattice::Window;
 use crate::terrain::plan::TILE_VERTS;
-use crate::terrain::tile::{field, finish, FieldJob};
+use crate::terrain::tile::{apply_snap, field, finish, snap_strip, Edge, Field, FieldJob};
 use crate::terrain::{Tile, TileKey, WorldPlan};
 use crate::volume::element::{GroundEdits, VolumeSpec};
 use std::sync::Arc;
@@ -82,13 +82,70 @@ impl GroundEdits for TileEdits {
     }
 }
 
-/// Synthesises tile `key` of the world `plan` with `edits` (the CPU path of the tile routes, for
-/// batch exports): the field with its margin, the edits, then normals, materials and skirts.
-pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
-    let job = FieldJob::with_margin(key);
-    let mut f = field(plan, job);
-    edits.apply(job.window(plan), &mut f.heights);
-    let mut t = finish(plan, key, &f);
+/// The lattice jobs tile `key` needs, in order: its field with the one-vertex margin, then one
+/// strip of the coarser lattice per edge whose `seams` flag is set (`n, e, s, w`; none at the
+/// coarsest LOD). [`assemble`] takes their fields in the same order.
+pub fn tile_jobs(
+    plan: &WorldPlan,
+    key: TileKey,
+    seams: [bool; 4],
+) -> Vec<(Option<Edge>, FieldJob)> {
+    let mut jobs = vec![(None, FieldJob::with_margin(key))];
+    if (key.lod as usize) + 1 < plan.lods.len() {
+        for (edge, _) in Edge::ALL.iter().zip(seams).filter(|(_, c)| *c) {
+            jobs.push((Some(*edge), snap_strip(key, *edge)));
+        }
+    }
+    jobs
+}
+
+/// Applies `edits` to the field a job of [`tile_jobs`] produced.
+pub fn edit_field(plan: &WorldPlan, job: FieldJob, edits: &TileEdits, field: &mut Field) {
+    edits.apply(job.window(plan), &mut field.heights);
+}
+
+/// The one tile synthesis after the fields: `fields` are those of [`tile_jobs`] (same order),
+/// already edited by [`edit_field`]. Finishes the tile (normals, materials, water, skirts),
+/// snaps the seam edges to the coarser strips (so the edits reach the seams too) and marks the
+/// vertices volume regions override.
+pub fn assemble(
+    plan: &WorldPlan,
+    key: TileKey,
+    fields: &[(Option<Edge>, Field)],
+    edits: &TileEdits,
+) -> Tile {
+    let mut t = finish(plan, key, &fields[0].1);
+    for (edge, strip) in &fields[1..] {
+        if let Some(edge) = edge {
+            apply_snap(&mut t, *edge, &strip.heights);
+        }
+    }
     edits.mark(&mut t);
     t
+}
+
+/// Synthesises tile `key` of the world `plan` with `edits` and no seams on the CPU (the tiles
+/// of batch exports): [`synthesize_with_seams`].
+pub fn synthesize(plan: &WorldPlan, key: TileKey, edits: &TileEdits) -> Tile {
+    synthesize_with_seams(plan, key, [false; 4], edits)
+}
+
+/// Synthesises tile `key` of the world `plan` with `seams` and `edits` on the CPU: the jobs of
+/// [`tile_jobs`] by [`field`], then [`assemble`]. The compute front door runs the same jobs on
+/// the device when it has one, and the same [`assemble`].
+pub fn synthesize_with_seams(
+    plan: &WorldPlan,
+    key: TileKey,
+    seams: [bool; 4],
+    edits: &TileEdits,
+) -> Tile {
+    let fields: Vec<(Option<Edge>, Field)> = tile_jobs(plan, key, seams)
+        .into_iter()
+        .map(|(edge, job)| {
+            let mut f = field(plan, job);
+            edit_field(plan, job, edits, &mut f);
+            (edge, f)
+        })
+        .collect();
+    assemble(plan, key, &fields, edits)
 }

@@ -7,6 +7,7 @@ use serde_json::json;
 use std::sync::Arc;
 use strata::compute::Compute;
 use strata::scene::{Scene, SceneInputs};
+use strata::server::view::WorldView;
 use strata::server::AppState;
 use strata::terrain::{Tile, TileKey, WorldPlan, TILE_VERTS};
 
@@ -45,8 +46,9 @@ impl World {
 
     async fn tile(&self, edited: bool, lod: u32, x: i64, z: i64) -> Arc<Tile> {
         let inputs = if edited { &self.edited } else { &self.bare };
+        let view = WorldView::stored("authoring", 1, self.plan.clone(), inputs.clone());
         self.state
-            .tile_with_inputs(inputs, self.plan.clone(), TileKey { lod, x, z }, [false; 4])
+            .tile(&view, TileKey { lod, x, z }, [false; 4])
             .await
     }
 }

@@ -11,7 +11,6 @@ use std::collections::BTreeSet;
 use strata::cache::{Stage, StageCache};
 use strata::compute::Compute;
 use strata::encode::Format;
-use strata::server::routes::encode_tile;
 use strata::server::{app, AppState};
 use strata::terrain::tile::snap_edges;
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
@@ -335,7 +334,9 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
 fn fresh(plan: &WorldPlan, key: TileKey, seams: [bool; 4], format: Format) -> Vec<u8> {
     let mut tile = synthesize(plan, key);
     snap_edges(plan, &mut tile, seams);
-    encode_tile(plan, &tile, format).expect("encodes").body
+    strata::encode::tile(plan, &tile, format, strata::encode::TileVersion::V1)
+        .expect("encodes")
+        .body
 }
 
 #[tokio::test]
@@ -437,4 +438,40 @@ async fn cached_bytes_equal_freshly_computed_bytes() {
     )
     .await;
     assert_eq!(state.cache.stats().runs_of(Stage::Field), 0);
+}
+
+/// The one tile synthesis (`edits::tile_jobs` + `edits::assemble`, what `compute` runs) equals the
+/// terrain layer's reference (`terrain::synthesize`, then `snap_edges`) bit for bit without edits,
+/// for every seam combination, at a LOD with a coarser neighbour and at the coarsest LOD.
+#[test]
+fn the_one_synthesis_equals_the_terrain_reference_with_seams() {
+    let plan = WorldPlan::new(3, WorldParams::default()).expect("plan");
+    let none = strata::edits::TileEdits::default();
+    for key in [
+        TileKey {
+            lod: 2,
+            x: -1,
+            z: 3,
+        },
+        TileKey {
+            lod: strata::terrain::MAX_LOD,
+            x: 0,
+            z: -1,
+        },
+    ] {
+        for bits in 0..16u8 {
+            let seams = [0, 1, 2, 3].map(|i| bits & (1 << i) != 0);
+            let mut want = synthesize(&plan, key);
+            snap_edges(&plan, &mut want, seams);
+            let got = strata::edits::synthesize_with_seams(&plan, key, seams, &none);
+            assert_eq!(got, want, "{key:?} seams {seams:?}");
+        }
+        let strips = strata::edits::tile_jobs(&plan, key, [true; 4]).len() - 1;
+        let expected = if key.lod == strata::terrain::MAX_LOD {
+            0
+        } else {
+            4
+        };
+        assert_eq!(strips, expected, "seam strips of {key:?}");
+    }
 }

@@ -314,12 +314,11 @@ async fn the_server_path_serves_the_sketched_world() {
     let state = AppState::new(Compute::cpu());
     let plan = Arc::new(WorldPlan::new(SEED, scene.world.clone()).expect("plan"));
     let inputs = Arc::new(SceneInputs::new(&scene));
+    let view = strata::server::view::WorldView::stored("sketch", 1, plan, inputs);
     let mut tiles = Vec::new();
     for z in -4..4 {
         for x in -4..4 {
-            let t = state
-                .tile_with_inputs(&inputs, plan.clone(), key(x, z), [false; 4])
-                .await;
+            let t = state.tile(&view, key(x, z), [false; 4]).await;
             tiles.push(Tile::clone(&t));
         }
     }

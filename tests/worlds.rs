@@ -1194,3 +1194,60 @@ fn scene_module_is_pure() {
     }
     assert!(n >= 2);
 }
+
+/// Stream sessions subscribe per world: an edit reaches the sessions of its world only, with the
+/// view of the version it made (plan and parsed scene, built once), so no session reads the
+/// store per edit.
+#[tokio::test]
+async fn stream_sessions_hear_only_their_world_with_the_new_view() {
+    use strata::stream::session::SourceView;
+    let dir = tempfile::tempdir().expect("tmp");
+    let state = AppState::new(Compute::cpu()).with_worlds(store_in(dir.path()), None);
+    let worlds = state.worlds.clone();
+    let app = app(state);
+    let a = create(&app, None, json!({"seed": 5, "public": true})).await;
+    let b = create(&app, None, json!({"seed": 6, "public": true})).await;
+    let mut hears_a = worlds.subscribe_world(&a.id);
+    let mut hears_a_too = worlds.subscribe_world(&a.id);
+    edit(
+        &app,
+        &b.id,
+        Some(b.admin.as_str()),
+        None,
+        &add_region("r", 20.0),
+    )
+    .await;
+    assert!(
+        hears_a.try_recv().is_err(),
+        "an edit of another world does not reach a's sessions"
+    );
+    let reply = edit(
+        &app,
+        &a.id,
+        Some(a.admin.as_str()),
+        None,
+        &add_region("r", 20.0),
+    )
+    .await;
+    assert_eq!(reply.status, StatusCode::OK);
+    let e = hears_a.try_recv().expect("a's edit reaches a's session");
+    let e2 = hears_a_too.try_recv().expect("and every session of a");
+    assert_eq!(e.view.version(), 2);
+    assert_eq!(e.view.plan().seed, 5);
+    assert_eq!(e.view.view.world, Some((a.id.clone(), 2)));
+    assert!(
+        e.view.view.inputs.region("r").is_some(),
+        "the view has the edit"
+    );
+    assert!(
+        Arc::ptr_eq(&e.view.view, &e2.view.view),
+        "one view, built once for every session"
+    );
+    assert_eq!(
+        e.dirty,
+        Dirty::Rects(vec![Rect {
+            min: [20.0, 0.0],
+            max: [30.0, 10.0]
+        }])
+    );
+}

@@ -135,6 +135,52 @@ impl Format {
     }
 }
 
+/// A tile encoded in one format of one version ([`tile`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EncodedTile {
+    /// The bytes.
+    pub body: Vec<u8>,
+    /// Their `Content-Type`.
+    pub content_type: &'static str,
+    /// How a PNG's 16-bit samples map to metres (`png` only).
+    pub png_mapping: Option<heightmap::HeightMapping>,
+}
+
+/// Why a tile could not be encoded.
+#[derive(Debug, thiserror::Error)]
+pub enum EncodeError {
+    /// The PNG encoder failed.
+    #[error("PNG encoding failed: {0}")]
+    Png(#[from] png::EncodingError),
+}
+
+/// Encodes `tile` (of the world `plan`) in `format` of `version`: the one dispatch of the tile
+/// formats, used by the tile routes, the stream and export archives. `png` and `glb` have
+/// version 1 only, which they give for any `version` (the routes refuse version 2 of them).
+pub fn tile(
+    plan: &crate::terrain::WorldPlan,
+    tile: &Tile,
+    format: Format,
+    version: TileVersion,
+) -> Result<EncodedTile, EncodeError> {
+    let mut png_mapping = None;
+    let body = match format {
+        Format::Json => json::encode_version(plan, tile, version),
+        Format::Bin => bin::encode_version(plan, tile, version),
+        Format::Glb => glb::encode(plan, tile),
+        Format::Png => {
+            let png = heightmap::encode(plan, tile)?;
+            png_mapping = Some(png.mapping);
+            png.bytes
+        }
+    };
+    Ok(EncodedTile {
+        body,
+        content_type: version.content_type(format),
+        png_mapping,
+    })
+}
+
 /// Lowest and highest height of a tile, metres (NaNs ignored; `(0, 0)` if there are none).
 pub fn height_range(tile: &Tile) -> (f32, f32) {
     let mut lo = f32::INFINITY;

@@ -173,8 +173,19 @@ impl ExportSpec {
     }
 }
 
-/// The archive members of one tile, in canonical order.
-pub fn members(plan: &WorldPlan, spec: &ExportSpec, tile: &Tile) -> Vec<(String, Vec<u8>)> {
+/// Archive members: names and bytes.
+pub type Members = Vec<(String, Vec<u8>)>;
+
+/// The archive members of one tile, in canonical order, encoded as the tile routes encode them
+/// ([`encode::tile`], version 1).
+///
+/// # Errors
+/// An encoder failed (PNG).
+pub fn members(
+    plan: &WorldPlan,
+    spec: &ExportSpec,
+    tile: &Tile,
+) -> Result<Members, encode::EncodeError> {
     let k = tile.key;
     let mut out = Vec::new();
     for product in &spec.products {
@@ -185,14 +196,7 @@ pub fn members(plan: &WorldPlan, spec: &ExportSpec, tile: &Tile) -> Vec<(String,
                     .iter()
                     .filter_map(|f| Format::from_extension(f))
                 {
-                    let bytes = match f {
-                        Format::Json => encode::json::encode(plan, tile),
-                        Format::Bin => encode::bin::encode(plan, tile),
-                        Format::Glb => encode::glb::encode(plan, tile),
-                        Format::Png => encode::heightmap::encode(plan, tile)
-                            .map(|p| p.bytes)
-                            .unwrap_or_default(),
-                    };
+                    let bytes = encode::tile(plan, tile, f, encode::TileVersion::V1)?.body;
                     out.push((
                         format!("tiles/{}/{}/{}.{}", k.lod, k.x, k.z, f.extension()),
                         bytes,
@@ -205,7 +209,7 @@ pub fn members(plan: &WorldPlan, spec: &ExportSpec, tile: &Tile) -> Vec<(String,
             )),
         }
     }
-    out
+    Ok(out)
 }
 
 /// Manifest entry of one member.
@@ -260,7 +264,8 @@ pub fn write_archive(
     };
     let mut done = 0;
     for batch in keys.chunks(threads * 4) {
-        let tiles: Vec<Vec<(String, Vec<u8>)>> = std::thread::scope(|s| {
+        // An encoder's failure travels as its message (the results are cloned into order).
+        let tiles: Vec<Result<Members, String>> = std::thread::scope(|s| {
             let handles: Vec<_> = (0..threads)
                 .map(|t| {
                     s.spawn(move || {
@@ -269,7 +274,8 @@ pub fn write_archive(
                             .skip(t)
                             .step_by(threads)
                             .map(|k| {
-                                members(plan, spec, &crate::edits::synthesize(plan, *k, edits))
+                                let tile = crate::edits::synthesize(plan, *k, edits);
+                                members(plan, spec, &tile).map_err(|e| e.to_string())
                             })
                             .collect::<Vec<_>>()
                     })
@@ -284,7 +290,7 @@ pub fn write_archive(
                 .collect()
         });
         for tile_members in tiles {
-            for (name, bytes) in tile_members {
+            for (name, bytes) in tile_members.map_err(anyhow::Error::msg)? {
                 tar::write_member(out, &name, &bytes)?;
                 manifest.members.push(ManifestEntry {
                     bytes: bytes.len() as u64,

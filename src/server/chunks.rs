@@ -6,7 +6,7 @@
 //! | `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{json,bin,glb}` | chunk of a bare seed |
 //! | `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{json,bin,glb}[?v=N]` | chunk of a stored world |
 //!
-//! Parameters are checked in the order seed/id, lod, x, y, z, format; errors are 400 JSON naming
+//! Parameters are checked in the order seed/id (with access and `?v`), lod, x, y, z, format; errors are 400 JSON naming
 //! the field ([`AppError`]). Limits: `lod` in `0..=3`, `|x|, |z| ≤ 2·max_tile_coord(lod) − 1`,
 //! `|y| ≤ max_chunk_y(lod)`. A chunk's heights come from the same-LOD height tiles through the
 //! stage cache, so a world chunk reflects the world's edits like its tiles do, and the caves of
@@ -16,15 +16,13 @@
 //! (immutable when pinned with `?v=N`, short-lived otherwise).
 
 use super::error::{code, AppError};
-use super::params::{parse_coord, parse_format, parse_lod, parse_seed, split_extension};
+use super::params::{parse_coord, parse_format, parse_lod, split_extension};
 use super::routes::{segments, CachedProduct, PathSegments};
-use super::worlds::{authorize, product_headers, query_param, requested_version};
+use super::view::{WorldAt, WorldView};
 use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
 use crate::encode::{chunk_glb, Format};
 use crate::scene::Rect;
-use crate::scene::SceneInputs;
-use crate::store::Role;
 use crate::subsurface::carve::mesh_world_chunk;
 use crate::terrain::{TileKey, WorldPlan};
 use crate::volume::chunk::{
@@ -32,7 +30,7 @@ use crate::volume::chunk::{
     MAX_CHUNK_LOD,
 };
 use crate::volume::mesh::QuadMesh;
-use axum::extract::{RawQuery, State};
+use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::Response;
 use axum::routing::get;
@@ -42,14 +40,8 @@ use std::sync::Arc;
 /// The volume-chunk routes.
 pub fn routes() -> Router<AppState> {
     Router::new()
-        .route(
-            "/v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z_ext}",
-            get(seed_chunk),
-        )
-        .route(
-            "/v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z_ext}",
-            get(world_chunk),
-        )
+        .route("/v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z_ext}", get(chunk))
+        .route("/v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z_ext}", get(chunk))
 }
 
 /// The five path segments of a chunk route (`{seed|id}/{lod}/{x}/{y}/{z_ext}`).
@@ -57,7 +49,7 @@ type Segments = PathSegments<(String, String, String, String, String)>;
 
 /// Parses `lod`, `x`, `y`, `z.ext` and checks the chunk limits against `plan`.
 fn parse_chunk(
-    plan: Option<&WorldPlan>,
+    plan: &WorldPlan,
     lod: &str,
     x: &str,
     y: &str,
@@ -84,9 +76,7 @@ fn parse_chunk(
         ));
     }
     let key = ChunkKey { lod, x, y, z };
-    if let Some(plan) = plan {
-        check_chunk_bounds(plan, key)?;
-    }
+    check_chunk_bounds(plan, key)?;
     Ok((key, format))
 }
 
@@ -130,11 +120,10 @@ fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
     )
 }
 
-/// Meshes and encodes a chunk in one synthesis slot.
+/// Meshes and encodes chunk `key` of the world `view` in one synthesis slot.
 async fn product(
     st: &AppState,
-    inputs: Arc<SceneInputs>,
-    plan: Arc<WorldPlan>,
+    view: Arc<WorldView>,
     key: ChunkKey,
     format: Format,
 ) -> Result<CachedProduct, AppError> {
@@ -147,19 +136,17 @@ async fn product(
                 x: tx,
                 z: tz,
             };
-            tiles.push((
-                (tx, tz),
-                state
-                    .tile_with_inputs(&inputs, plan.clone(), tk, [false; 4])
-                    .await,
-            ));
+            tiles.push(((tx, tz), state.tile(&view, tk, [false; 4]).await));
         }
+        let plan = &view.plan;
         let spacing_m = plan.lods[key.lod as usize].spacing_m;
-        let strata = inputs.strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
+        let strata = view
+            .inputs
+            .strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
         let (lo, hi) = chunk_box(key, spacing_m);
         let mut volumes = Vec::new();
-        for v in inputs.volumes_meeting(lo, hi) {
-            if let Some(solved) = state.volumes.get(&state.regions, &inputs, &plan, &v).await {
+        for v in view.inputs.volumes_meeting(lo, hi) {
+            if let Some(solved) = state.volumes.get(&state, &view, &v).await {
                 volumes.push(solved);
             }
         }
@@ -202,39 +189,16 @@ async fn product(
     .await
 }
 
-/// `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{ext}`.
-async fn seed_chunk(
-    State(st): State<AppState>,
-    path: Segments,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let (seed, lod, x, y, z_ext) = segments(path)?;
-    let seed = parse_seed(&seed)?;
-    parse_chunk(None, &lod, &x, &y, &z_ext)?;
-    let plan = st.plan(seed).await?;
-    let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
-    let inputs = super::bare_inputs(&plan.params);
-    let p = product(&st, inputs, plan, key, format).await?;
-    Ok(p.respond(&headers))
-}
-
+/// `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{ext}` and
 /// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`.
-async fn world_chunk(
+async fn chunk(
+    world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
-    RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (id, lod, x, y, z_ext) = segments(path)?;
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
-    parse_chunk(None, &lod, &x, &y, &z_ext)?;
-    // `?v=N` is read and refused exactly as on the other product routes.
-    let version = requested_version(&meta, query.as_deref())?;
-    let pinned = query_param(query.as_deref(), "v").is_some();
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let (key, format) = parse_chunk(Some(&plan), &lod, &x, &y, &z_ext)?;
-    let p = product(&st, inputs, plan, key, format).await?;
-    let mut res = p.respond(&headers);
-    product_headers(&mut res, &meta, version, pinned);
-    Ok(res)
+    let (_, lod, x, y, z_ext) = segments(path)?;
+    let (key, format) = parse_chunk(&world.view.plan, &lod, &x, &y, &z_ext)?;
+    let p = product(&st, world.view.clone(), key, format).await?;
+    Ok(world.finish(p.respond(&headers)))
 }

@@ -150,33 +150,12 @@ async fn create(
         products: req.products,
         formats: req.formats,
     };
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
+    let view = st.worlds.view(&meta, version).await?;
+    let plan = view.plan.clone();
     spec.validate(&plan)
         .map_err(|e| invalid(pointer(e.field), e.message))?;
-    // The regions the exported tiles meet, solved now (cached), so the archive shows the edits.
-    let mut edits = crate::edits::TileEdits::default();
-    let mut seen = std::collections::HashSet::new();
-    for key in spec.keys(shard) {
-        for region in inputs.regions_touching(key) {
-            if seen.insert(region.digest) {
-                if let Some(d) = st.regions.get(&plan, &region).await {
-                    edits.displacements.push(d);
-                }
-            }
-        }
-    }
-    // Every strata element: a breach depends only on the element in force at a column, which
-    // is the same whether or not elements far from the tile are listed.
-    edits.strata = inputs
-        .strata()
-        .iter()
-        .map(|s| s.geology(plan.seed))
-        .collect();
-    edits.volumes = inputs
-        .volumes_meeting([f64::MIN; 3], [f64::MAX; 3])
-        .into_iter()
-        .map(|v| v.spec)
-        .collect();
+    // The elements the exported tiles meet, solved now (cached), so the archive shows the edits.
+    let edits = view.edits_over(&st, &spec.keys(shard)).await;
     let job = match st
         .jobs
         .submit_with(&meta.id, version, plan, edits, spec, shard)

@@ -17,10 +17,9 @@
 
 use super::error::{code, truncate, AppError};
 use super::params::parse_coord;
-use super::worlds::{authorize, query_param, requested_version};
+use super::view::{WorldAt, WorldView};
+use super::worlds::query_param;
 use super::AppState;
-use crate::scene::SceneInputs;
-use crate::store::Role;
 use crate::subsurface::chunk::{Chunk, ChunkKey};
 use crate::subsurface::world::{ground_under, main_material, memos};
 use crate::subsurface::Geology;
@@ -28,7 +27,7 @@ use crate::terrain::plan::TILE_QUADS;
 use crate::terrain::{Tile, TileKey, WorldPlan};
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
-use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::Router;
@@ -92,12 +91,12 @@ impl Ground {
     /// field that set the points' spread).
     async fn load(
         st: &AppState,
-        inputs: &SceneInputs,
-        plan: &Arc<WorldPlan>,
+        view: &WorldView,
         points: &[(f64, f64)],
         strata: Vec<Arc<Geology>>,
         field: &'static str,
     ) -> Result<Ground, AppError> {
+        let plan = &view.plan;
         let spacing_m = f64::from(plan.lods[0].spacing_m);
         let max = plan.max_tile_coord(0);
         let mut keys = std::collections::BTreeSet::new();
@@ -133,9 +132,7 @@ impl Ground {
                 x: tx,
                 z: tz,
             };
-            let tile = st
-                .tile_with_inputs(inputs, plan.clone(), key, [false; 4])
-                .await;
+            let tile = st.tile(view, key, [false; 4]).await;
             tiles.insert((tx, tz), tile);
         }
         Ok(Ground {
@@ -192,12 +189,11 @@ fn json_ok(body: Value, version: u64) -> Response {
 
 /// `GET /v1/worlds/{id}/columns/{x}/{z}.json`.
 async fn columns(
+    world: WorldAt,
     State(st): State<AppState>,
     Path((id, x, z_ext)): Path<(String, String, String)>,
     RawQuery(query): RawQuery,
-    headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     let query = query.as_deref();
     let x = parse_coord(&x, "x")?;
     let Some(z) = z_ext.strip_suffix(".json") else {
@@ -224,9 +220,9 @@ async fn columns(
             }
         },
     };
-    let version = requested_version(&meta, query)?;
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let strata = inputs.strata();
+    let view = world.view;
+    let (version, plan) = (view.version(), view.plan.clone());
+    let strata = view.inputs.strata();
     let input = match query_param(query, "strata") {
         Some(sid) => strata.iter().find(|s| s.spec.id == sid).ok_or_else(|| {
             AppError::bad_request(
@@ -283,15 +279,8 @@ async fn columns(
     let state = st.clone();
     let body = st
         .limited(async move {
-            let ground = Ground::load(
-                &state,
-                &inputs,
-                &plan,
-                &centres,
-                vec![geology.clone()],
-                "size",
-            )
-            .await?;
+            let ground =
+                Ground::load(&state, &view, &centres, vec![geology.clone()], "size").await?;
             tokio::task::spawn_blocking(move || {
         let ground_m: Vec<f64> = centres.iter().map(|&(cx, cz)| ground.at(cx, cz)).collect();
         let (xi, zi) = (
@@ -400,13 +389,10 @@ fn parse_points(body: &[u8]) -> Result<Vec<[f64; 3]>, AppError> {
 
 /// `POST /v1/worlds/{id}/materials/query`.
 async fn query(
+    world: WorldAt,
     State(st): State<AppState>,
-    Path(id): Path<String>,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
     body: Bytes,
 ) -> Result<Response, AppError> {
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
     if body.len() > MAX_QUERY_BYTES {
         return Err(AppError::new(
             StatusCode::PAYLOAD_TOO_LARGE,
@@ -415,12 +401,13 @@ async fn query(
         ));
     }
     let points = parse_points(&body)?;
-    let version = requested_version(&meta, query.as_deref())?;
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let strata: Vec<Arc<Geology>> = inputs
+    let view = world.view;
+    let version = view.version();
+    let strata: Vec<Arc<Geology>> = view
+        .inputs
         .strata()
         .iter()
-        .map(|s| s.geology(plan.seed))
+        .map(|s| s.geology(view.seed()))
         .collect();
     // The ground is read at the centre of each point's voxel column.
     let centres: Vec<(f64, f64)> = points
@@ -435,7 +422,7 @@ async fn query(
     let state = st.clone();
     let body = st
         .limited(async move {
-    let ground = Ground::load(&state, &inputs, &plan, &centres, strata.clone(), "points").await?;
+    let ground = Ground::load(&state, &view, &centres, strata.clone(), "points").await?;
     tokio::task::spawn_blocking(move || {
         let mut memos = memos(&strata);
         let results: Vec<Value> = points

@@ -24,9 +24,10 @@
 //! `If-None-Match` with 304 and are `Cache-Control: public, max-age=31536000, immutable`. Errors
 //! have one JSON shape ([`AppError`]). Limits: [`Limits`].
 //!
-//! Tiles go through the stage cache ([`crate::cache`], [`AppState::cached_tile`]) keyed by their
-//! input hash ([`crate::scene::SceneInputs`]), so repeated requests and edits elsewhere in a world
-//! run no stage.
+//! Every product route starts from a [`view::WorldView`] (the world at one version), which its
+//! first extractor [`view::WorldAt`] resolves. Tiles go through the stage cache ([`crate::cache`],
+//! [`AppState::tile`]) keyed by their input hash ([`crate::scene::SceneInputs`]), so repeated
+//! requests and edits elsewhere in a world run no stage.
 
 pub mod access;
 pub mod args;
@@ -47,6 +48,7 @@ pub mod rivers;
 pub mod routes;
 pub mod solved;
 pub mod stream_routes;
+pub mod view;
 pub mod volume_routes;
 pub mod volumes;
 pub mod worlds;
@@ -226,105 +228,62 @@ impl AppState {
         self.worlds.subscribe()
     }
 
-    /// A finished tile through the stage cache: of stored world `id` at `version` when `world`
-    /// is `Some((id, version))` (`plan` must be that version's plan), else of the bare seed
-    /// `plan.seed` (whose plan has no scene elements).
-    pub async fn cached_tile(
+    /// The default world of `seed`, its plan from the cache or built on the blocking pool.
+    pub async fn bare_view(&self, seed: u64) -> Result<Arc<view::WorldView>, AppError> {
+        Ok(Arc::new(view::WorldView::bare(self.plan(seed).await?)))
+    }
+
+    /// Tile `key` with `seams` of the world `view` through the stage cache.
+    pub async fn tile(&self, view: &view::WorldView, key: TileKey, seams: [bool; 4]) -> Arc<Tile> {
+        self.tile_hashed(view, view.tile_hash(key, seams), key, seams)
+            .await
+    }
+
+    /// [`AppState::tile`] given the tile's input hash `hash` ([`view::WorldView::tile_hash`]),
+    /// so a request hashes its inputs once.
+    async fn tile_hashed(
         &self,
-        world: Option<(&str, u64)>,
-        plan: Arc<WorldPlan>,
+        view: &view::WorldView,
+        hash: [u8; 32],
         key: TileKey,
         seams: [bool; 4],
-    ) -> Result<Arc<Tile>, AppError> {
-        let inputs = self.inputs_for(world, &plan).await?;
-        Ok(self.tile_with_inputs(&inputs, plan, key, seams).await)
+    ) -> Arc<Tile> {
+        let edits = view.tile_edits(self, key);
+        self.compute
+            .tile_cached(&self.cache, hash, view.plan.clone(), key, seams, edits)
+            .await
     }
 
-    /// The [`SceneInputs`] of a world version, or of a bare seed's plan.
-    pub async fn inputs_for(
-        &self,
-        world: Option<(&str, u64)>,
-        plan: &WorldPlan,
-    ) -> Result<Arc<SceneInputs>, AppError> {
-        Ok(match world {
-            Some((id, version)) => self.worlds.inputs(id, version).await?,
-            None => bare_inputs(&plan.params),
-        })
-    }
-
-    /// A tile encoded in `format` of `version`, from the body cache or through the stage cache
-    /// and an encoder in one synthesis slot.
+    /// Tile `key` with `seams` of the world `view` encoded in `format` of `version`, from the
+    /// body cache or through the stage cache and the encoder ([`crate::encode::tile`]) in one
+    /// synthesis slot.
     pub async fn tile_product(
         &self,
-        inputs: &Arc<SceneInputs>,
-        plan: Arc<WorldPlan>,
+        view: &Arc<view::WorldView>,
         key: TileKey,
         seams: [bool; 4],
         format: crate::encode::Format,
         version: crate::encode::TileVersion,
     ) -> Result<Arc<routes::CachedProduct>, AppError> {
-        let body_key = (inputs.tile(plan.seed, key, seams), version.tag(format));
+        let hash = view.tile_hash(key, seams);
+        let body_key = (hash, version.tag(format));
         if let Some(p) = self.bodies.get(&body_key) {
             return Ok(p);
         }
-        let (state, inputs) = (self.clone(), inputs.clone());
+        let (state, view) = (self.clone(), view.clone());
         let product = self
             .limited(async move {
-                let tile = state
-                    .tile_with_inputs(&inputs, plan.clone(), key, seams)
-                    .await;
-                tokio::task::spawn_blocking(move || {
-                    routes::encode_tile_as(&plan, &tile, format, version).map(|p| {
-                        Arc::new(routes::CachedProduct::new(p.body, p.content_type, p.extra))
-                    })
-                })
-                .await
-                .map_err(|e| AppError::internal(format!("encoding failed: {e}")))?
+                let tile = state.tile_hashed(&view, hash, key, seams).await;
+                let plan = view.plan.clone();
+                let encoded =
+                    routes::blocking(move || crate::encode::tile(&plan, &tile, format, version))
+                        .await?
+                        .map_err(|e| AppError::internal(e.to_string()))?;
+                Ok(Arc::new(routes::CachedProduct::from(encoded)))
             })
             .await?;
         self.bodies.insert(body_key, product.clone());
         Ok(product)
-    }
-
-    /// A finished tile through the stage cache, given its version's [`SceneInputs`].
-    pub async fn tile_with_inputs(
-        &self,
-        inputs: &SceneInputs,
-        plan: Arc<WorldPlan>,
-        key: TileKey,
-        seams: [bool; 4],
-    ) -> Arc<Tile> {
-        let hash = inputs.tile(plan.seed, key, seams);
-        let regions = inputs.regions_touching(key);
-        let strata = inputs.strata_touching(plan.seed, key);
-        // The reach, not the footprint: a box touching the tile's edge marks the edge's
-        // vertices in both neighbours, and the reach's elements are in the tile's input hash.
-        let foot = crate::scene::tile_reach(inputs.world(), key);
-        let volumes = inputs
-            .volumes_meeting(
-                [foot.min[0], f64::MIN, foot.min[1]],
-                [foot.max[0], f64::MAX, foot.max[1]],
-            )
-            .into_iter()
-            .map(|v| v.spec)
-            .collect();
-        let (cache, solved) = (self.regions.clone(), plan.clone());
-        let edits = async move {
-            let mut displacements = Vec::new();
-            for region in regions {
-                if let Some(d) = cache.get(&solved, &region).await {
-                    displacements.push(d);
-                }
-            }
-            crate::edits::TileEdits {
-                displacements,
-                strata,
-                volumes,
-            }
-        };
-        self.compute
-            .tile_cached(&self.cache, hash, plan, key, seams, edits)
-            .await
     }
 
     /// The limits in force.

@@ -12,17 +12,6 @@ use crate::terrain::{TileKey, WorldPlan, MAX_LOD};
 /// Longest decimal integer accepted before it is judged out of range without parsing.
 const MAX_DIGITS: usize = 40;
 
-/// A parsed product URL, before the coordinate range check (which needs the plan).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ProductRequest {
-    /// World seed.
-    pub seed: u64,
-    /// Tile address.
-    pub key: TileKey,
-    /// Wire format.
-    pub format: Format,
-}
-
 /// `seed`: one to 20 ASCII digits, at most `u64::MAX`.
 pub fn parse_seed(s: &str) -> Result<u64, AppError> {
     let bad = || {
@@ -122,24 +111,22 @@ pub fn parse_format(ext: Option<&str>) -> Result<Format, AppError> {
     }
 }
 
-/// The four path segments of a product URL.
-pub fn parse_product(
-    seed: &str,
+/// The tile address and format of a product URL's last three segments (`{lod}/{x}/{z}.{ext}`),
+/// checked against the bounds of the world `plan`.
+pub fn parse_tile_path(
+    plan: &WorldPlan,
     lod: &str,
     x: &str,
     z_ext: &str,
-) -> Result<ProductRequest, AppError> {
-    let seed = parse_seed(seed)?;
+) -> Result<(TileKey, Format), AppError> {
     let lod = parse_lod(lod)?;
     let x = parse_coord(x, "x")?;
     let (z, ext) = split_extension(z_ext);
     let z = parse_coord(z, "z")?;
     let format = parse_format(ext)?;
-    Ok(ProductRequest {
-        seed,
-        key: TileKey { lod, x, z },
-        format,
-    })
+    let key = TileKey { lod, x, z };
+    check_bounds(plan, key)?;
+    Ok((key, format))
 }
 
 /// Checks `|x|, |z| ≤ plan.max_tile_coord(lod)`.
@@ -289,28 +276,29 @@ mod tests {
 
     #[test]
     fn good_paths() {
-        let r = parse_product("42", "3", "-2", "5.glb").expect("valid");
+        let plan = crate::encode::test_util::plan();
+        let r = parse_tile_path(plan, "3", "-2", "5.glb").expect("valid");
         assert_eq!(
             r,
-            ProductRequest {
-                seed: 42,
-                key: TileKey {
+            (
+                TileKey {
                     lod: 3,
                     x: -2,
                     z: 5
                 },
-                format: Format::Glb
-            }
+                Format::Glb
+            )
         );
-        let r = parse_product("18446744073709551615", "0", "0", "-0.json").expect("valid");
-        assert_eq!(r.seed, u64::MAX);
-        assert_eq!(r.key.z, 0);
+        assert_eq!(parse_seed("18446744073709551615"), Ok(u64::MAX));
+        let r = parse_tile_path(plan, "0", "0", "-0.json").expect("valid");
+        assert_eq!(r.0.z, 0);
     }
 
     #[test]
     fn errors_name_the_field() {
         let case = |s: &str, l: &str, x: &str, z: &str| {
-            parse_product(s, l, x, z)
+            parse_seed(s)
+                .and_then(|_| parse_tile_path(crate::encode::test_util::plan(), l, x, z))
                 .map(|_| ())
                 .map_err(|e| match e.field {
                     Some(std::borrow::Cow::Borrowed(f)) => (e.code, Some(f)),
@@ -518,7 +506,9 @@ mod tests {
             "12\u{0301}",
         ];
         let check = |s: &str, l: &str, x: &str, z: &str, q: &str| {
-            if let Err(e) = parse_product(s, l, x, z) {
+            let parsed = parse_seed(s)
+                .and_then(|_| parse_tile_path(crate::encode::test_util::plan(), l, x, z));
+            if let Err(e) = parsed {
                 assert!(e.status.is_client_error() && e.field.is_some(), "{e:?}");
             }
             if let Err(e) = parse_seams(Some(q)) {

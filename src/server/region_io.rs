@@ -18,9 +18,10 @@
 //! retried on the new head up to [`super::worlds::EDIT_ATTEMPTS`] times.
 
 use super::error::{code, truncate, AppError};
+use super::view::{WorldAt, WorldView};
 use super::worlds::{
     authorize, check_content_type, commit_on_head, json_response, parse_if_match, query_param,
-    readable_version, set_version_headers,
+    set_version_headers,
 };
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16, ExchangeError};
@@ -75,26 +76,21 @@ fn number(query: Option<&str>, name: &'static str, default: Option<f64>) -> Resu
     }
 }
 
-/// The solved region `rid` of world `id` at the query's `v` (default: latest), after checking
-/// read access; with its version.
-async fn solved(
+/// The solved region `rid` of the world `view` (stored world `id`).
+pub(super) async fn solved(
     st: &AppState,
-    headers: &HeaderMap,
+    view: &WorldView,
     id: &str,
     rid: &str,
-    query: Option<&str>,
-) -> Result<(Arc<Displacement>, u64), AppError> {
-    let (meta, version) = readable_version(st, headers, id, query).await?;
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let region = inputs
+) -> Result<Arc<Displacement>, AppError> {
+    let region = view
+        .inputs
         .region(rid)
-        .ok_or_else(|| no_region(id, rid, version))?;
-    let solved = st
-        .regions
-        .get(&plan, region)
+        .ok_or_else(|| no_region(id, rid, view.version()))?;
+    st.regions
+        .get(&view.plan, region)
         .await
-        .ok_or_else(|| AppError::internal("the region could not be solved"))?;
-    Ok((solved, version))
+        .ok_or_else(|| AppError::internal("the region could not be solved"))
 }
 
 /// 404 `not_found` naming `rid`: world `id` has no region `rid` at `version`.
@@ -179,12 +175,12 @@ impl RegionPng for GradientsPng {
 /// access, `P` encodes it on the blocking pool, and the answer is [`png_response`]. An encoding
 /// failure is 500 `internal` with the message `"{P::WHAT}: {error}"`.
 async fn region_png<P: RegionPng>(
+    world: WorldAt,
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (region, version) = solved(&st, &headers, &id, &rid, query.as_deref()).await?;
+    let version = world.view.version();
+    let region = solved(&st, &world.view, &id, &rid).await?;
     let (bytes, extra) = blocking(move || P::encode(&region))
         .await?
         .map_err(|e| AppError::internal(format!("{}: {e}", P::WHAT)))?;

@@ -6,7 +6,8 @@
 //! | `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` | river lines of a bare seed |
 //! | `GET /v1/worlds/{id}/rivers/{lod}/{x}/{z}.json[?v=N]` | river lines of a stored world |
 //!
-//! Parameters are checked in the order seed/id, lod, x, z, format, version, world bounds;
+//! Parameters are checked in the order seed/id (with access and `?v`), lod, x, z, format, world
+//! bounds;
 //! errors are 400 JSON naming the field ([`AppError`]). `lod` must be in
 //! `0..=`[`MAX_CARVE_LOD`] (the lines are too costly to trace on coarser tiles): a larger one
 //! is 400 `lod_out_of_range`. A world without rivers (classic, or `earth-1` stored before rivers
@@ -16,19 +17,15 @@
 //! answers follow the world tiles' caching (immutable when pinned with `?v=N`).
 
 use super::error::{code, AppError};
-use super::params::{
-    check_bounds, parse_coord, parse_format, parse_lod, parse_seed, split_extension,
-};
+use super::params::{check_bounds, parse_coord, parse_format, parse_lod, split_extension};
 use super::routes::{blocking, segments, CachedProduct, Segments};
-use super::worlds::{authorize, product_headers, query_param, requested_version};
+use super::view::{WorldAt, WorldView};
 use super::AppState;
 use crate::encode::{rivers, Format};
-use crate::scene::SceneInputs;
-use crate::store::Role;
 use crate::terrain::earth::rivers::MAX_CARVE_LOD;
 use crate::terrain::earth::tile_rivers;
-use crate::terrain::{TileKey, WorldPlan};
-use axum::extract::{RawQuery, State};
+use crate::terrain::TileKey;
+use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::Response;
 use axum::routing::get;
@@ -41,14 +38,8 @@ const BODY_TAG: &str = "rivers.json";
 /// The river-line routes.
 pub fn routes() -> Router<AppState> {
     Router::new()
-        .route(
-            "/v1/seeds/{seed}/rivers/{lod}/{x}/{z_ext}",
-            get(seed_rivers),
-        )
-        .route(
-            "/v1/worlds/{id}/rivers/{lod}/{x}/{z_ext}",
-            get(world_rivers),
-        )
+        .route("/v1/seeds/{seed}/rivers/{lod}/{x}/{z_ext}", get(lines))
+        .route("/v1/worlds/{id}/rivers/{lod}/{x}/{z_ext}", get(lines))
 }
 
 /// Parses `lod` (at most [`MAX_CARVE_LOD`]), `x` and `z.json`.
@@ -74,16 +65,16 @@ fn parse_key(lod: &str, x: &str, z_ext: &str) -> Result<TileKey, AppError> {
     Ok(TileKey { lod, x, z })
 }
 
-/// The river lines of tile `key` of the world `plan` (whose inputs are `inputs`), from the body
+/// The river lines of tile `key` of the world `view`, from the body
 /// cache or traced on the blocking pool in one synthesis slot.
 async fn product(
     st: &AppState,
-    inputs: &SceneInputs,
-    plan: Arc<WorldPlan>,
+    view: &WorldView,
     key: TileKey,
 ) -> Result<Arc<CachedProduct>, AppError> {
     // The tile's input hash covers the world's settings and the key, which the lines depend on.
-    let body_key = (inputs.tile(plan.seed, key, [false; 4]), BODY_TAG);
+    let body_key = (view.tile_hash(key, [false; 4]), BODY_TAG);
+    let plan = view.plan.clone();
     if let Some(p) = st.bodies.get(&body_key) {
         return Ok(p);
     }
@@ -109,38 +100,17 @@ async fn product(
     Ok(product)
 }
 
-/// `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json`.
-async fn seed_rivers(
-    State(st): State<AppState>,
-    path: Segments,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let (seed, lod, x, z_ext) = segments(path)?;
-    let seed = parse_seed(&seed)?;
-    let key = parse_key(&lod, &x, &z_ext)?;
-    let plan = st.plan(seed).await?;
-    check_bounds(&plan, key)?;
-    let inputs = super::bare_inputs(&plan.params);
-    let p = product(&st, &inputs, plan, key).await?;
-    Ok(p.respond(&headers))
-}
-
+/// `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` and
 /// `GET /v1/worlds/{id}/rivers/{lod}/{x}/{z}.json[?v=N]`.
-async fn world_rivers(
+async fn lines(
+    world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
-    RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (id, lod, x, z_ext) = segments(path)?;
-    let (meta, _) = authorize(&st, &headers, &id, Role::Read).await?;
+    let (_, lod, x, z_ext) = segments(path)?;
     let key = parse_key(&lod, &x, &z_ext)?;
-    let version = requested_version(&meta, query.as_deref())?;
-    let pinned = query_param(query.as_deref(), "v").is_some();
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    check_bounds(&plan, key)?;
-    let p = product(&st, &inputs, plan, key).await?;
-    let mut res = p.respond(&headers);
-    product_headers(&mut res, &meta, version, pinned);
-    Ok(res)
+    check_bounds(&world.view.plan, key)?;
+    let p = product(&st, &world.view, key).await?;
+    Ok(world.finish(p.respond(&headers)))
 }

@@ -1,7 +1,8 @@
 //! Route table, handlers, conditional requests and the middleware stack.
 
 use super::error::{code, AppError};
-use super::params::{check_bounds, parse_product, parse_seams, parse_tile_version};
+use super::params::{parse_seams, parse_tile_path, parse_tile_version};
+use super::view::WorldAt;
 use super::{AppState, MAX_BODY_BYTES};
 use crate::encode::{self, Format, TileVersion};
 use crate::terrain::plan::{TILE_QUADS, WORLD_LIMIT_CELLS};
@@ -166,48 +167,45 @@ pub(super) fn segments<T>(path: PathSegments<T>) -> Result<T, AppError> {
     }
 }
 
-/// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}[?seams=n,e,s,w][&format=1|2]`.
-async fn tile(
+/// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}` and
+/// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N]`, both `[?seams=n,e,s,w][&format=1|2]`.
+pub(super) async fn tile(
+    world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
     RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (seed, lod, x, z_ext) = segments(path)?;
-    let req = parse_product(&seed, &lod, &x, &z_ext)?;
-    let plan = st.plan(req.seed).await?;
-    check_bounds(&plan, req.key)?;
+    let (_, lod, x, z_ext) = segments(path)?;
+    let (key, format) = parse_tile_path(&world.view.plan, &lod, &x, &z_ext)?;
     let seams = parse_seams(query.as_deref())?;
-    let version = parse_tile_version(query.as_deref(), req.format)?;
-    let inputs = super::bare_inputs(&plan.params);
+    let version = parse_tile_version(query.as_deref(), format)?;
     let product = st
-        .tile_product(&inputs, plan, req.key, seams, req.format, version)
+        .tile_product(&world.view, key, seams, format, version)
         .await?;
-    Ok(product.respond(&headers))
+    Ok(world.finish(product.respond(&headers)))
 }
 
-/// `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json`.
-async fn scatter(
+/// `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` and
+/// `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]`.
+pub(super) async fn scatter(
+    world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let (seed, lod, x, z_ext) = segments(path)?;
-    let req = parse_product(&seed, &lod, &x, &z_ext)?;
-    check_scatter_format(req.format)?;
-    let plan = st.plan(req.seed).await?;
-    check_bounds(&plan, req.key)?;
-    check_scatter_cost(&plan, req.key.lod)?;
-    let state = st.clone();
+    let (_, lod, x, z_ext) = segments(path)?;
+    let (key, format) = parse_tile_path(&world.view.plan, &lod, &x, &z_ext)?;
+    check_scatter_format(format)?;
+    check_scatter_cost(&world.view.plan, key.lod)?;
+    let (state, view) = (st.clone(), world.view.clone());
     let product = st
         .limited(async move {
-            let tile = state
-                .cached_tile(None, plan.clone(), req.key, [false; 4])
-                .await?;
-            scatter_product(plan, tile).await
+            let tile = state.tile(&view, key, [false; 4]).await;
+            scatter_product(view.plan.clone(), tile).await
         })
         .await?;
-    Ok(product.respond(&headers))
+    Ok(world.finish(product.respond(&headers)))
 }
 
 /// Refuses a scatter request for any format but JSON: 400 `unknown_format` naming `format`.
@@ -416,43 +414,37 @@ pub struct Product {
     pub extra: Vec<(HeaderName, String)>,
 }
 
-/// Encodes a tile in a format, version 1.
-pub fn encode_tile(plan: &WorldPlan, tile: &Tile, format: Format) -> Result<Product, AppError> {
-    encode_tile_as(plan, tile, format, TileVersion::V1)
+impl From<encode::EncodedTile> for Product {
+    /// A tile product: a PNG carries its height mapping in the `X-Strata-Height-*` headers.
+    fn from(t: encode::EncodedTile) -> Self {
+        let extra = t
+            .png_mapping
+            .map(|m| {
+                vec![
+                    (
+                        HeaderName::from_static(HEIGHT_OFFSET_HEADER),
+                        m.offset_m.to_string(),
+                    ),
+                    (
+                        HeaderName::from_static(HEIGHT_SCALE_HEADER),
+                        m.scale_m.to_string(),
+                    ),
+                ]
+            })
+            .unwrap_or_default();
+        Product {
+            body: t.body,
+            content_type: t.content_type,
+            extra,
+        }
+    }
 }
 
-/// Encodes a tile in a format of `version` (`png` and `glb` have version 1 only, which they
-/// give for any `version`; the routes refuse version 2 of them first).
-pub fn encode_tile_as(
-    plan: &WorldPlan,
-    tile: &Tile,
-    format: Format,
-    version: TileVersion,
-) -> Result<Product, AppError> {
-    let mut extra = Vec::new();
-    let body = match format {
-        Format::Json => encode::json::encode_version(plan, tile, version),
-        Format::Bin => encode::bin::encode_version(plan, tile, version),
-        Format::Glb => encode::glb::encode(plan, tile),
-        Format::Png => {
-            let png = encode::heightmap::encode(plan, tile)
-                .map_err(|e| AppError::internal(format!("PNG encoding failed: {e}")))?;
-            extra.push((
-                HeaderName::from_static(HEIGHT_OFFSET_HEADER),
-                png.mapping.offset_m.to_string(),
-            ));
-            extra.push((
-                HeaderName::from_static(HEIGHT_SCALE_HEADER),
-                png.mapping.scale_m.to_string(),
-            ));
-            png.bytes
-        }
-    };
-    Ok(Product {
-        body,
-        content_type: version.content_type(format),
-        extra,
-    })
+impl From<encode::EncodedTile> for CachedProduct {
+    fn from(t: encode::EncodedTile) -> Self {
+        let p = Product::from(t);
+        CachedProduct::new(p.body, p.content_type, p.extra)
+    }
 }
 
 /// The entity tag of some bytes: the first [`ETAG_HEX_DIGITS`] hex digits of their blake3 hash.

@@ -2,14 +2,16 @@
 //! [`crate::stream::session`] on a source backed by the server's state (plans, edits, the tile
 //! products through the stage and body caches).
 
+use super::worlds::{StreamView, WorldEdit};
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
-use crate::stream::session::{run, EditEvent, StreamError, StreamSource, MAX_MESSAGE_BYTES};
-use crate::terrain::{TileKey, WorldPlan};
+use crate::stream::session::{run, StreamError, StreamSource, MAX_MESSAGE_BYTES};
+use crate::terrain::TileKey;
 use axum::extract::ws::rejection::WebSocketUpgradeRejection;
 use axum::extract::{Path, State, WebSocketUpgrade};
 use axum::response::{IntoResponse, Response};
 use std::sync::Arc;
+use tokio::sync::broadcast;
 
 /// Routes of this module, to merge into the app's router.
 pub fn router() -> axum::Router<AppState> {
@@ -28,19 +30,17 @@ impl From<AppError> for StreamError {
     }
 }
 
-/// The payload of a tile frame: tile `key` of `world` at a version (or of the bare seed when
-/// `None`), through the body cache, so clients streaming the same area share encodings.
+/// The payload of a tile frame: tile `key` of the world `view`, through the body cache, so
+/// clients streaming the same area share encodings.
 async fn tile_payload(
     state: &AppState,
-    world: Option<(&str, u64)>,
-    plan: Arc<WorldPlan>,
+    view: &StreamView,
     key: TileKey,
     seams: [bool; 4],
     format: Format,
 ) -> Result<Vec<u8>, StreamError> {
-    let inputs = state.inputs_for(world, &plan).await?;
     let product = state
-        .tile_product(&inputs, plan, key, seams, format, TileVersion::V1)
+        .tile_product(&view.view, key, seams, format, TileVersion::V1)
         .await?;
     Ok(product.body.to_vec())
 }
@@ -68,35 +68,29 @@ impl WorldSource {
 
 #[async_trait::async_trait]
 impl StreamSource for WorldSource {
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError> {
+    type View = StreamView;
+
+    async fn current(&self) -> Result<StreamView, StreamError> {
         let meta = self.meta().await?;
-        let plan = self.state.worlds.plan(&meta, meta.version).await?;
-        Ok((meta.version, plan))
+        let view = self.state.worlds.view(&meta, meta.version).await?;
+        Ok(StreamView {
+            version: meta.version,
+            view,
+        })
     }
 
-    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, StreamError> {
-        let meta = self.meta().await?;
-        Ok(self.state.worlds.plan(&meta, version).await?)
-    }
-
-    fn world(&self) -> Option<&str> {
-        Some(&self.id)
-    }
-
-    fn subscribe_edits(&self) -> Option<tokio::sync::broadcast::Receiver<EditEvent>> {
-        Some(self.state.subscribe_edits())
+    fn subscribe_edits(&self) -> Option<broadcast::Receiver<WorldEdit>> {
+        Some(self.state.worlds.subscribe_world(&self.id))
     }
 
     async fn tile(
         &self,
-        version: u64,
-        plan: Arc<WorldPlan>,
+        view: &StreamView,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
     ) -> Result<Vec<u8>, StreamError> {
-        let world = Some((self.id.as_str(), version));
-        tile_payload(&self.state, world, plan, key, seams, format).await
+        tile_payload(&self.state, view, key, seams, format).await
     }
 
     async fn edit(
@@ -175,7 +169,7 @@ async fn world_stream(
         Err(e) => return Ok(upgrade_required(&e)),
     };
     let sessions = state.sessions.clone();
-    let source: Arc<dyn StreamSource> = Arc::new(WorldSource { state, id, caller });
+    let source = Arc::new(WorldSource { state, id, caller });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
         .on_upgrade(move |socket| async move {
@@ -188,36 +182,29 @@ async fn world_stream(
 /// A bare seed: version 1 forever, no edits.
 struct SeedSource {
     state: AppState,
-    plan: Arc<WorldPlan>,
+    view: StreamView,
 }
 
 #[async_trait::async_trait]
 impl StreamSource for SeedSource {
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError> {
-        Ok((1, self.plan.clone()))
+    type View = StreamView;
+
+    async fn current(&self) -> Result<StreamView, StreamError> {
+        Ok(self.view.clone())
     }
 
-    async fn plan_at(&self, _version: u64) -> Result<Arc<WorldPlan>, StreamError> {
-        Ok(self.plan.clone())
-    }
-
-    fn world(&self) -> Option<&str> {
-        None
-    }
-
-    fn subscribe_edits(&self) -> Option<tokio::sync::broadcast::Receiver<EditEvent>> {
+    fn subscribe_edits(&self) -> Option<broadcast::Receiver<WorldEdit>> {
         None
     }
 
     async fn tile(
         &self,
-        _version: u64,
-        plan: Arc<WorldPlan>,
+        view: &StreamView,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
     ) -> Result<Vec<u8>, StreamError> {
-        tile_payload(&self.state, None, plan, key, seams, format).await
+        tile_payload(&self.state, view, key, seams, format).await
     }
 
     async fn edit(
@@ -245,9 +232,12 @@ async fn seed_stream(
         Ok(ws) => ws,
         Err(e) => return Ok(upgrade_required(&e)),
     };
-    let plan = state.plan(seed).await?;
+    let view = StreamView {
+        version: 1,
+        view: state.bare_view(seed).await?,
+    };
     let sessions = state.sessions.clone();
-    let source: Arc<dyn StreamSource> = Arc::new(SeedSource { state, plan });
+    let source = Arc::new(SeedSource { state, view });
     Ok(ws
         .max_message_size(MAX_MESSAGE_BYTES)
         .on_upgrade(move |socket| async move {

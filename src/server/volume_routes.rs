@@ -29,9 +29,10 @@
 
 use super::error::{code, truncate, AppError};
 use super::routes::CachedProduct;
+use super::view::WorldAt;
 use super::worlds::{
     authorize, check_content_type, commit_on_head, edit_answer, json_response, parse_if_match,
-    product_headers, query_param, readable_version, set_version_headers, store_error,
+    query_param, readable_version, set_version_headers, store_error,
 };
 use super::AppState;
 use crate::encode::region_glb::{self, RegionInfo};
@@ -94,23 +95,20 @@ fn volume_input(inputs: &crate::scene::SceneInputs, vid: &str) -> Option<VolumeI
 
 /// `GET /v1/worlds/{id}/volumes/{vid}/mesh.glb[?v=N]`.
 async fn mesh_glb(
+    world: WorldAt,
     State(st): State<AppState>,
     Path((id, vid)): Path<(String, String)>,
-    RawQuery(query): RawQuery,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let query = query.as_deref();
-    let (meta, version) = readable_version(&st, &headers, &id, query).await?;
-    let pinned = query_param(query, "v").is_some();
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let volume = volume_input(&inputs, &vid).ok_or_else(|| no_volume(&id, &vid, version))?;
+    let view = world.view.clone();
+    let (seed, version) = (view.seed(), view.version());
+    let volume = volume_input(&view.inputs, &vid).ok_or_else(|| no_volume(&id, &vid, version))?;
     let state = st.clone();
-    let seed = meta.seed;
     let product = st
         .limited(async move {
             let solved = state
                 .volumes
-                .get(&state.regions, &inputs, &plan, &volume)
+                .get(&state, &view, &volume)
                 .await
                 .ok_or_else(|| {
                 AppError::new(
@@ -139,9 +137,7 @@ async fn mesh_glb(
             .map_err(|e| AppError::internal(format!("region export failed: {e}")))?
         })
         .await?;
-    let mut res = product.respond(&headers);
-    product_headers(&mut res, &meta, version, pinned);
-    Ok(res)
+    Ok(world.finish(product.respond(&headers)))
 }
 
 /// `GET /v1/worlds/{id}/volumes/{vid}/curves.json[?v=N]`.

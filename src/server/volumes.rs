@@ -3,11 +3,10 @@
 //! the element and the authored regions and `strata` elements whose edits its ground takes, so
 //! editing any of them solves the region again.
 
-use super::regions::RegionCache;
 use super::solved::SolvedCache;
-use crate::edits::TileEdits;
-use crate::scene::{SceneInputs, VolumeInput};
-use crate::terrain::WorldPlan;
+use super::view::WorldView;
+use super::AppState;
+use crate::scene::VolumeInput;
 use crate::volume::element::{ground_rect, solve_volume, SolvedVolume};
 use std::sync::Arc;
 
@@ -24,42 +23,30 @@ impl Default for VolumeCache {
 }
 
 impl VolumeCache {
-    /// The solved region of `volume` in the world `plan` with scene `inputs`, solving it (and
-    /// the authored regions its ground takes, through `regions`) if needed. `None` if the
-    /// pipeline refused it (logged; chunks then show the heightfield there).
+    /// The solved region of `volume` in the world `view`, solving it (and the authored regions
+    /// its ground takes, through the state's region cache) if needed. `None` if the pipeline
+    /// refused it (logged; chunks then show the heightfield there).
     pub async fn get(
         &self,
-        regions: &RegionCache,
-        inputs: &SceneInputs,
-        plan: &Arc<WorldPlan>,
+        st: &AppState,
+        view: &WorldView,
         volume: &VolumeInput,
     ) -> Option<Arc<SolvedVolume>> {
+        let plan = &view.plan;
         let rect = ground_rect(plan, &volume.spec);
-        let authored = inputs.regions_meeting(&rect);
-        let strata = inputs.strata_meeting(plan.seed, &rect);
         let mut key = blake3::Hasher::new();
         key.update(b"strata.volume-inputs\0");
         key.update(&volume.digest);
-        for r in &authored {
+        for r in view.inputs.regions_meeting(&rect) {
             key.update(&r.digest);
         }
-        for s in inputs.strata() {
+        for s in view.inputs.strata() {
             if s.rect().intersects(&rect) {
                 key.update(&s.digest);
             }
         }
         let key = (plan.seed, *key.finalize().as_bytes());
-        let mut displacements = Vec::new();
-        for r in &authored {
-            if let Some(d) = regions.get(plan, r).await {
-                displacements.push(d);
-            }
-        }
-        let edits = TileEdits {
-            displacements,
-            strata,
-            volumes: Vec::new(),
-        };
+        let edits = view.ground_edits(st, &rect).await;
         let (p, spec) = (plan.clone(), volume.spec.clone());
         self.get_or_solve(key, "volume region", move || {
             solve_volume(&p, &spec, &edits)

@@ -20,26 +20,21 @@
 //! answer names its version in `X-Strata-Version`. A world created from a bare seed has the
 //! default scene, so its products equal those of `/v1/seeds/{seed}/…`.
 //!
-//! Accepted edits are announced on an in-process broadcast ([`EditEvent`], see
-//! [`AppState::subscribe_edits`]) after they are committed.
+//! Accepted edits are announced after they are committed: to the stream sessions of the edited
+//! world, with the new version's view ([`Worlds::subscribe_world`], [`WorldEdit`]), and on an
+//! in-process broadcast of every world's edits ([`EditEvent`], [`AppState::subscribe_edits`]).
 
 use super::access::{caller, Caller};
 use super::error::{code, AppError};
-use super::params::{
-    check_bounds, parse_coord, parse_format, parse_lod, parse_seams, parse_tile_version,
-    split_extension,
-};
-use super::routes::{
-    check_scatter_cost, check_scatter_format, scatter_product, segments, Segments, IMMUTABLE,
-};
+use super::routes::IMMUTABLE;
+use super::view::{WorldAt, WorldView};
 use super::AppState;
-use crate::encode::Format;
 use crate::scene::{Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, valid_world_id, NewWorld, Role, SceneStore,
     StoreError, TokenHash, WorldMeta,
 };
-use crate::terrain::{TileKey, WorldPlan};
+use crate::terrain::WorldPlan;
 use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
@@ -63,8 +58,39 @@ pub const VERSION_HEADER: &str = "x-strata-version";
 /// The media type of edits.
 pub const JSON_PATCH: &str = "application/json-patch+json";
 
-/// An accepted edit, as broadcast to the streaming side.
-pub use crate::stream::session::EditEvent;
+/// An accepted edit, as broadcast to every subscriber of [`Worlds::subscribe`] after its commit.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct EditEvent {
+    /// World id.
+    pub world: String,
+    /// The version the edit made.
+    pub version: u64,
+    /// What it changed.
+    pub dirty: crate::scene::Dirty,
+}
+
+/// A stream session's view of a world version ([`crate::stream::session::SourceView`]): the
+/// version a stream reports (1 for a bare seed) and the world's view.
+#[derive(Clone, Debug)]
+pub struct StreamView {
+    /// The version the stream reports.
+    pub version: u64,
+    /// The world at that version.
+    pub view: Arc<WorldView>,
+}
+
+impl crate::stream::session::SourceView for StreamView {
+    fn version(&self) -> u64 {
+        self.version
+    }
+
+    fn plan(&self) -> &Arc<WorldPlan> {
+        &self.view.plan
+    }
+}
+
+/// An edit of one world as its stream sessions receive it.
+pub type WorldEdit = crate::stream::session::WorldEdit<StreamView>;
 
 /// The world-related state of an [`AppState`].
 #[derive(Debug)]
@@ -73,6 +99,8 @@ pub struct Worlds {
     pub store: Arc<dyn SceneStore>,
     admin: Option<TokenHash>,
     edits: broadcast::Sender<EditEvent>,
+    /// Per world with stream sessions: the channel its edits reach them on.
+    streams: Mutex<std::collections::HashMap<String, broadcast::Sender<WorldEdit>>>,
     plans: VersionPlans,
 }
 
@@ -84,7 +112,40 @@ impl Worlds {
             store,
             admin: admin.map(hash_token),
             edits,
+            streams: Mutex::default(),
             plans: VersionPlans::new(WORLD_PLAN_CACHE),
+        }
+    }
+
+    /// A new receiver of world `id`'s edits, each with the view of the version it made.
+    pub fn subscribe_world(&self, id: &str) -> broadcast::Receiver<WorldEdit> {
+        let mut streams = self.streams.lock().unwrap_or_else(|p| p.into_inner());
+        streams.retain(|_, tx| tx.receiver_count() > 0);
+        streams
+            .entry(id.to_owned())
+            .or_insert_with(|| broadcast::channel(EDIT_CHANNEL_CAPACITY).0)
+            .subscribe()
+    }
+
+    /// Sends the edit that made `version` of world `id` to the world's stream sessions, with
+    /// the version's view, built once for all of them (nothing when no session streams it).
+    async fn announce(&self, id: &str, version: u64, dirty: &crate::scene::Dirty) {
+        let tx = {
+            let streams = self.streams.lock().unwrap_or_else(|p| p.into_inner());
+            match streams.get(id) {
+                Some(tx) if tx.receiver_count() > 0 => tx.clone(),
+                _ => return,
+            }
+        };
+        match self.view_of(id, version).await {
+            Ok(view) => {
+                // A session that left since is not an error.
+                let _ = tx.send(WorldEdit {
+                    view: StreamView { version, view },
+                    dirty: dirty.clone(),
+                });
+            }
+            Err(e) => tracing::warn!(world = %id, version, "stream sessions miss an edit: {e}"),
         }
     }
 
@@ -113,25 +174,21 @@ impl Worlds {
 
     /// The plan of world `meta` at `version` (which must exist).
     pub async fn plan(&self, meta: &WorldMeta, version: u64) -> Result<Arc<WorldPlan>, AppError> {
-        Ok(self.plans.get(&*self.store, meta, version).await?.0)
+        Ok(self.view(meta, version).await?.plan.clone())
     }
 
-    /// The plan of world `meta` at `version` and what its tiles' input hashes are made of.
-    pub async fn plan_and_inputs(
-        &self,
-        meta: &WorldMeta,
-        version: u64,
-    ) -> Result<(Arc<WorldPlan>, Arc<SceneInputs>), AppError> {
+    /// The view of world `meta` at `version` (which must exist), built once per version.
+    pub async fn view(&self, meta: &WorldMeta, version: u64) -> Result<Arc<WorldView>, AppError> {
         self.plans.get(&*self.store, meta, version).await
     }
 
-    /// What the input hashes of world `id`'s tiles at `version` are made of.
-    pub async fn inputs(&self, id: &str, version: u64) -> Result<Arc<SceneInputs>, AppError> {
-        if let Some((_, inputs)) = self.plans.lookup(id, version) {
-            return Ok(inputs);
+    /// The view of world `id` at `version`.
+    pub async fn view_of(&self, id: &str, version: u64) -> Result<Arc<WorldView>, AppError> {
+        if let Some(view) = self.plans.lookup(id, version) {
+            return Ok(view);
         }
         let meta = self.store.meta(id).await.map_err(store_error)?;
-        Ok(self.plans.get(&*self.store, &meta, version).await?.1)
+        self.view(&meta, version).await
     }
 }
 
@@ -140,12 +197,11 @@ struct PlanEntry {
     version: u64,
     seed: u64,
     params_hash: [u8; 32],
-    plan: Arc<WorldPlan>,
-    inputs: Arc<SceneInputs>,
+    view: Arc<WorldView>,
     used: u64,
 }
 
-/// Plans by `(world, version)`, least recently used evicted first; entries with the same seed
+/// Views by `(world, version)`, least recently used evicted first; entries with the same seed
 /// and world settings share one plan.
 struct VersionPlans {
     capacity: usize,
@@ -178,8 +234,8 @@ impl VersionPlans {
         self.entries.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// The cached plan and inputs of `(world, version)`, counted as a hit when found.
-    fn lookup(&self, world: &str, version: u64) -> Option<(Arc<WorldPlan>, Arc<SceneInputs>)> {
+    /// The cached view of `(world, version)`, counted as a hit when found.
+    fn lookup(&self, world: &str, version: u64) -> Option<Arc<WorldView>> {
         let now = self.clock.fetch_add(1, Ordering::Relaxed);
         let mut entries = self.entries();
         let e = entries
@@ -187,7 +243,7 @@ impl VersionPlans {
             .find(|e| e.world == world && e.version == version)?;
         e.used = now;
         self.hits.fetch_add(1, Ordering::Relaxed);
-        Some((e.plan.clone(), e.inputs.clone()))
+        Some(e.view.clone())
     }
 
     async fn get(
@@ -195,7 +251,7 @@ impl VersionPlans {
         store: &dyn SceneStore,
         meta: &WorldMeta,
         version: u64,
-    ) -> Result<(Arc<WorldPlan>, Arc<SceneInputs>), AppError> {
+    ) -> Result<Arc<WorldView>, AppError> {
         if let Some(found) = self.lookup(&meta.id, version) {
             return Ok(found);
         }
@@ -216,7 +272,7 @@ impl VersionPlans {
             .entries()
             .iter()
             .find(|e| e.seed == meta.seed && e.params_hash == params_hash)
-            .map(|e| e.plan.clone());
+            .map(|e| e.view.plan.clone());
         let plan = match shared {
             Some(p) => p,
             None => {
@@ -236,7 +292,7 @@ impl VersionPlans {
             .find(|e| e.world == meta.id && e.version == version)
         {
             e.used = now;
-            return Ok((e.plan.clone(), e.inputs.clone()));
+            return Ok(e.view.clone());
         }
         if entries.len() >= self.capacity {
             if let Some(oldest) = entries
@@ -248,16 +304,16 @@ impl VersionPlans {
                 entries.swap_remove(oldest);
             }
         }
+        let view = Arc::new(WorldView::stored(&meta.id, version, plan, inputs));
         entries.push(PlanEntry {
             world: meta.id.clone(),
             version,
             seed: meta.seed,
             params_hash,
-            plan: plan.clone(),
-            inputs: inputs.clone(),
+            view: view.clone(),
             used: now,
         });
-        Ok((plan, inputs))
+        Ok(view)
     }
 }
 
@@ -270,8 +326,14 @@ pub(super) fn routes() -> Router<AppState> {
         .route("/v1/worlds/{id}/edits", post(edit).get(edit_log))
         .route("/v1/worlds/{id}/tokens", post(mint_token))
         .route("/v1/worlds/{id}/access", post(set_access))
-        .route("/v1/worlds/{id}/tiles/{lod}/{x}/{z_ext}", get(tile))
-        .route("/v1/worlds/{id}/scatter/{lod}/{x}/{z_ext}", get(scatter))
+        .route(
+            "/v1/worlds/{id}/tiles/{lod}/{x}/{z_ext}",
+            get(super::routes::tile),
+        )
+        .route(
+            "/v1/worlds/{id}/scatter/{lod}/{x}/{z_ext}",
+            get(super::routes::scatter),
+        )
         .route("/v1/worlds/{id}/regions/{rid}/stats", get(region_stats))
 }
 
@@ -787,7 +849,10 @@ pub(crate) async fn commit_edit(
     };
     st.metrics.edits_applied.fetch_add(1, Ordering::Relaxed);
     tracing::info!(world = %id, version = applied.version, "edit committed");
-    // No receivers is not an error: nobody is streaming this process's worlds.
+    st.worlds
+        .announce(id, applied.version, &applied.dirty)
+        .await;
+    // No receivers is not an error: nobody is listening to this process's edits.
     let _ = st.worlds.edits.send(EditEvent {
         world: id.to_string(),
         version: applied.version,
@@ -852,51 +917,6 @@ async fn set_access(
     ))
 }
 
-/// A parsed world product URL, access checked.
-struct WorldProduct {
-    meta: WorldMeta,
-    version: u64,
-    pinned: bool,
-    key: TileKey,
-    format: Format,
-    plan: Arc<WorldPlan>,
-    inputs: Arc<SceneInputs>,
-}
-
-async fn world_product(
-    st: &AppState,
-    headers: &HeaderMap,
-    (id, lod, x, z_ext): (String, String, String, String),
-    query: Option<&str>,
-) -> Result<WorldProduct, AppError> {
-    let (meta, _) = authorize(st, headers, &id, Role::Read).await?;
-    let lod = parse_lod(&lod)?;
-    let x = parse_coord(&x, "x")?;
-    let (z, ext) = split_extension(&z_ext);
-    let z = parse_coord(z, "z")?;
-    let format = parse_format(ext)?;
-    let version = requested_version(&meta, query)?;
-    let pinned = query_param(query, "v").is_some();
-    let key = TileKey { lod, x, z };
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    check_bounds(&plan, key)?;
-    Ok(WorldProduct {
-        meta,
-        version,
-        pinned,
-        key,
-        format,
-        plan,
-        inputs,
-    })
-}
-
-/// Caching headers of a world product answer.
-fn finish_product(p: &WorldProduct, mut res: Response) -> Response {
-    product_headers(&mut res, &p.meta, p.version, p.pinned);
-    res
-}
-
 /// Caching headers of any product of world `meta` at `version` (tiles, chunks, region meshes):
 /// immutable when `pinned` by `?v=N`, short-lived otherwise; private and varying by
 /// `Authorization` unless the world is public; the version header.
@@ -915,44 +935,6 @@ pub(super) fn product_headers(res: &mut Response, meta: &WorldMeta, version: u64
             .insert(header::VARY, HeaderValue::from_static("Authorization"));
     }
     set_version_headers(res, version, false);
-}
-
-/// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N][&seams=n,e,s,w][&format=1|2]`.
-async fn tile(
-    State(st): State<AppState>,
-    path: Segments,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
-    let seams = parse_seams(query.as_deref())?;
-    let version = parse_tile_version(query.as_deref(), p.format)?;
-    let product = st
-        .tile_product(&p.inputs, p.plan.clone(), p.key, seams, p.format, version)
-        .await?;
-    Ok(finish_product(&p, product.respond(&headers)))
-}
-
-/// `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]`.
-async fn scatter(
-    State(st): State<AppState>,
-    path: Segments,
-    RawQuery(query): RawQuery,
-    headers: HeaderMap,
-) -> Result<Response, AppError> {
-    let p = world_product(&st, &headers, segments(path)?, query.as_deref()).await?;
-    check_scatter_format(p.format)?;
-    check_scatter_cost(&p.plan, p.key.lod)?;
-    let (state, plan, inputs, key) = (st.clone(), p.plan.clone(), p.inputs.clone(), p.key);
-    let product = st
-        .limited(async move {
-            let tile = state
-                .tile_with_inputs(&inputs, plan.clone(), key, [false; 4])
-                .await;
-            scatter_product(plan, tile).await
-        })
-        .await?;
-    Ok(finish_product(&p, product.respond(&headers)))
 }
 
 /// Parses `x,z;x,z;…` (metres) for the stats readout.
@@ -1015,14 +997,15 @@ pub(super) async fn readable_version(
 /// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
 /// §6.3).
 async fn region_stats(
+    world: WorldAt,
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,
     RawQuery(query): RawQuery,
-    headers: HeaderMap,
 ) -> Result<Response, AppError> {
     use crate::authoring::stats::{stats, StatsShape};
     let query = query.as_deref();
-    let (meta, version) = readable_version(&st, &headers, &id, query).await?;
+    let view = &world.view;
+    let version = view.version();
     let shape = match (
         query_param(query, "point"),
         query_param(query, "polyline"),
@@ -1051,15 +1034,7 @@ async fn region_stats(
             ))
         }
     };
-    let (plan, inputs) = st.worlds.plan_and_inputs(&meta, version).await?;
-    let region = inputs
-        .region(&rid)
-        .ok_or_else(|| super::region_io::no_region(&id, &rid, version))?;
-    let solved = st
-        .regions
-        .get(&plan, region)
-        .await
-        .ok_or_else(|| AppError::internal("the region could not be solved"))?;
+    let solved = super::region_io::solved(&st, view, &id, &rid).await?;
     let s = stats(&solved, &shape)
         .map_err(|e| AppError::bad_request(code::BAD_COORDINATE, e.field, e.message))?;
     let mut res = json_response(

@@ -21,7 +21,6 @@ use crate::scene::Dirty;
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
 use futures::{SinkExt, StreamExt};
-use serde::Serialize;
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
@@ -71,18 +70,6 @@ impl Drop for SessionGuard {
     }
 }
 
-/// An accepted edit, as broadcast to the streaming side (the server sends one after each edit
-/// commit).
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct EditEvent {
-    /// World id.
-    pub world: String,
-    /// The version the edit made.
-    pub version: u64,
-    /// What it changed.
-    pub dirty: Dirty,
-}
-
 /// Why a request of a stream failed: the code, message and field of the API's one error shape
 /// (the server's `AppError` converts into it), sent to the client as an `error` message.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -95,29 +82,46 @@ pub struct StreamError {
     pub field: Option<Cow<'static, str>>,
 }
 
+/// The world at one version as a [`StreamSource`] serves it: the server's view of a world
+/// version, which the session hands back when it asks for that version's tiles.
+pub trait SourceView: Send + Sync + 'static {
+    /// The version (a bare seed is version 1 forever).
+    fn version(&self) -> u64;
+    /// The version's plan.
+    fn plan(&self) -> &Arc<WorldPlan>;
+}
+
+/// An edit of the stream's world, with the view of the version it made, so a session reads
+/// nothing per edit.
+#[derive(Clone, Debug)]
+pub struct WorldEdit<V> {
+    /// The view of the version the edit made.
+    pub view: V,
+    /// What it changed.
+    pub dirty: Dirty,
+}
+
 /// What a stream shows: a bare seed or a stored world. The server implements it for both.
 #[async_trait::async_trait]
-pub trait StreamSource: Send + Sync {
-    /// The current version and its plan.
-    async fn current(&self) -> Result<(u64, Arc<WorldPlan>), StreamError>;
-    /// The plan of a version.
-    async fn plan_at(&self, version: u64) -> Result<Arc<WorldPlan>, StreamError>;
-    /// The world id whose edit events concern this stream, if any.
-    fn world(&self) -> Option<&str>;
-    /// A new receiver of the edit events, for a stream of a stored world; `None` for a bare seed.
-    fn subscribe_edits(&self) -> Option<broadcast::Receiver<EditEvent>>;
+pub trait StreamSource: Send + Sync + 'static {
+    /// The world at one version.
+    type View: SourceView + Clone;
+    /// The current version's view.
+    async fn current(&self) -> Result<Self::View, StreamError>;
+    /// A new receiver of this world's edits, for a stream of a stored world; `None` for a bare
+    /// seed.
+    fn subscribe_edits(&self) -> Option<broadcast::Receiver<WorldEdit<Self::View>>>;
     /// Applies an edit sent on the socket; returns the new version.
     async fn edit(
         &self,
         patch: serde_json::Value,
         if_match: Option<u64>,
     ) -> Result<u64, StreamError>;
-    /// The encoded tile `key` with `seams` of `version` (whose plan is `plan`) in `format`: a
-    /// tile frame's payload.
+    /// The encoded tile `key` with `seams` of the world `view` in `format`: a tile frame's
+    /// payload.
     async fn tile(
         &self,
-        version: u64,
-        plan: Arc<WorldPlan>,
+        view: &Self::View,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
@@ -163,7 +167,7 @@ fn text(msg: &ServerMessage) -> Message {
 /// Runs a session until the client leaves or is dropped, or until `closing` is cancelled (the
 /// server is shutting down): then the client gets the text messages already queued (acks, errors)
 /// and a close frame with code 1001 (going away), within [`GOING_AWAY_TIMEOUT`].
-pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: CancellationToken) {
+pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: CancellationToken) {
     STATS
         .sessions
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -219,7 +223,7 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
         let _ = tokio::time::timeout(GOING_AWAY_TIMEOUT, going_away).await;
     });
     let mut edits = source.subscribe_edits();
-    let (mut version, mut plan) = match source.current().await {
+    let mut current = match source.current().await {
         Ok(v) => v,
         Err(e) => {
             let _ = tx.send(text(&error_message(&e, None))).await;
@@ -228,7 +232,8 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
             return;
         }
     };
-    let cell_m = plan.params.cell_m as f64;
+    let mut version = current.version();
+    let cell_m = current.plan().params.cell_m as f64;
     let hello = ServerMessage::Hello {
         protocol: "strata.stream.v1",
         version,
@@ -319,23 +324,24 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
                 }
             }
             ev = edit_event => {
-                let (new_version, dirty) = match ev {
-                    Ok(ev) if Some(ev.world.as_str()) == source.world() => (ev.version, ev.dirty),
-                    Ok(_) => continue,
+                let (next, dirty) = match ev {
+                    Ok(ev) => (ev.view, ev.dirty),
+                    // Missed edits: the store's current version, everything stale.
                     Err(broadcast::error::RecvError::Lagged(_)) => match source.current().await {
-                        Ok((v, _)) => (v, Dirty::Everything),
+                        Ok(v) => (v, Dirty::Everything),
                         Err(_) => continue,
                     },
                     Err(broadcast::error::RecvError::Closed) => { edits = None; continue; }
                 };
-                if new_version <= version {
-                    continue;
+                // Edits of one world may arrive out of order (their views are built
+                // concurrently): an older one still invalidates what it touched, and tiles are
+                // produced from the newest version seen, which includes it.
+                if next.version() > version {
+                    current = next;
+                    version = current.version();
                 }
-                match source.plan_at(new_version).await {
-                    Ok(p) => { plan = p; version = new_version; }
-                    Err(_) => continue,
-                }
-                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&crate::scene::tile_reach(&plan.params, t.key))).copied().collect();
+                let params = &current.plan().params;
+                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&crate::scene::tile_reach(params, t.key))).copied().collect();
                 // Tiles not held stay pending; held tiles the edit does not touch are current.
                 for v in held.values_mut() {
                     *v = version;
@@ -358,7 +364,7 @@ pub async fn run(socket: WebSocket, source: Arc<dyn StreamSource>, closing: Canc
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
                 let produced = tokio::select! {
-                    r = source.tile(version, plan.clone(), t.key, t.seams, format) => r,
+                    r = source.tile(&current, t.key, t.seams, format) => r,
                     () = closing.cancelled() => break,
                 };
                 match produced {
