@@ -14,8 +14,8 @@
 //!   `Origin` header (not a browser) every upgrade is allowed.
 
 use super::error::{code, AppError};
+use super::http::VERSION_HEADER;
 use super::routes::{HEIGHT_OFFSET_HEADER, HEIGHT_SCALE_HEADER};
-use super::worlds::VERSION_HEADER;
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, Method, StatusCode};
 use std::sync::Arc;
 use std::time::Duration;

@@ -22,8 +22,8 @@
 //! `{done, total, download_url}` or `failed` `{done, total, error}`.
 
 use super::error::{code, AppError};
+use super::http::{authorize, authorized_body, json_response, store_error};
 use super::jobs::{valid_job_id, Job, Progress, Status, SubmitError};
-use super::worlds::{authorize, authorized_body, json_response, store_error};
 use super::AppState;
 use crate::export::{ExportSpec, Product, Shard};
 use crate::store::{Role, StoreError};

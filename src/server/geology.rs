@@ -16,9 +16,9 @@
 //! [`MAX_QUERY_TILES`] (a very small `world.cell_m`) is refused naming `size`.
 
 use super::error::{code, truncate, AppError};
+use super::http::query_param;
 use super::params::parse_coord;
 use super::view::{WorldAt, WorldView};
-use super::worlds::query_param;
 use super::AppState;
 use crate::subsurface::chunk::{Chunk, ChunkKey};
 use crate::subsurface::world::{ground_under, main_material, memos};
@@ -181,7 +181,7 @@ impl Ground {
 
 fn json_ok(body: Value, version: u64) -> Response {
     let mut res = (StatusCode::OK, axum::Json(body)).into_response();
-    super::worlds::set_version_headers(&mut res, version, false);
+    super::http::set_version_headers(&mut res, version, false);
     res.headers_mut()
         .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
     res

@@ -372,7 +372,7 @@ pub async fn render(State(st): State<AppState>) -> Response {
         "strata_edit_subscribers",
         "gauge",
         "Receivers of the in-process edit broadcast.",
-        st.worlds.subscribers(),
+        st.worlds.edits.subscribers(),
     );
     stage_cache(&mut extra, &st.cache.stats());
     service_gauges(&mut extra, &st);

@@ -35,9 +35,11 @@ pub mod bodies;
 pub mod chunks;
 pub mod connections;
 pub mod cors;
+pub mod edit_service;
 pub mod error;
 pub mod exports;
 pub mod geology;
+pub mod http;
 pub mod jobs;
 pub mod metrics;
 pub mod params;
@@ -224,7 +226,7 @@ impl AppState {
     }
 
     /// A receiver of every accepted edit, after its commit.
-    pub fn subscribe_edits(&self) -> tokio::sync::broadcast::Receiver<worlds::EditEvent> {
+    pub fn subscribe_edits(&self) -> tokio::sync::broadcast::Receiver<edit_service::EditEvent> {
         self.worlds.subscribe()
     }
 

@@ -17,12 +17,12 @@
 //! `If-Match` it applies only to that version (409 otherwise); without it, a concurrent edit is
 //! retried on the new head up to [`super::worlds::EDIT_ATTEMPTS`] times.
 
+use super::edit_service::commit_on_head;
 use super::error::{code, truncate, AppError};
-use super::view::{WorldAt, WorldView};
-use super::worlds::{
-    authorize, check_content_type, commit_on_head, json_response, parse_if_match, query_param,
-    set_version_headers,
+use super::http::{
+    authorize, check_content_type, json_response, parse_if_match, query_param, set_version_headers,
 };
+use super::view::{WorldAt, WorldView};
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16, ExchangeError};
 use crate::authoring::spec_tools::{Heightmap, MAX_HEIGHTMAP_BASE64};
@@ -294,4 +294,83 @@ fn import_patch(
     ]))
     .map_err(|e| AppError::internal(format!("import patch: {e}")))?;
     Ok((patch, ops))
+}
+
+/// Parses `x,z;x,z;…` (metres) for the stats readout.
+fn parse_points(text: &str, field: &'static str) -> Result<Vec<[f64; 2]>, AppError> {
+    let bad = || {
+        AppError::bad_request(
+            code::BAD_COORDINATE,
+            field,
+            format!("{field} must be x,z pairs in metres separated by ';'"),
+        )
+    };
+    let points = text
+        .split(';')
+        .map(|pair| {
+            let mut it = pair.split(',').map(|v| v.trim().parse::<f64>());
+            match (it.next(), it.next(), it.next()) {
+                (Some(Ok(x)), Some(Ok(z)), None) if x.is_finite() && z.is_finite() => Ok([x, z]),
+                _ => Err(bad()),
+            }
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if points.is_empty() || points.len() > crate::authoring::MAX_POINTS {
+        return Err(bad());
+    }
+    Ok(points)
+}
+
+/// `GET /v1/worlds/{id}/regions/{rid}/stats?point=x,z | polyline=x,z;x,z;… |
+/// rect=x0,z0;x1,z1 [&v=N]`: elevation (min, mean, max, metres) and mean and steepest slope
+/// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
+/// §6.3).
+pub(super) async fn region_stats(
+    world: WorldAt,
+    State(st): State<AppState>,
+    Path((id, rid)): Path<(String, String)>,
+    RawQuery(query): RawQuery,
+) -> Result<Response, AppError> {
+    use crate::authoring::stats::{stats, StatsShape};
+    let query = query.as_deref();
+    let view = &world.view;
+    let version = view.version();
+    let shape = match (
+        query_param(query, "point"),
+        query_param(query, "polyline"),
+        query_param(query, "rect"),
+    ) {
+        (Some(p), None, None) => StatsShape::Point(parse_points(p, "point")?[0]),
+        (None, Some(p), None) => StatsShape::Polyline(parse_points(p, "polyline")?),
+        (None, None, Some(p)) => match parse_points(p, "rect")?.as_slice() {
+            [a, b] => StatsShape::Rect {
+                min: [a[0].min(b[0]), a[1].min(b[1])],
+                max: [a[0].max(b[0]), a[1].max(b[1])],
+            },
+            _ => {
+                return Err(AppError::bad_request(
+                    code::BAD_COORDINATE,
+                    "rect",
+                    "rect must be two corners: x0,z0;x1,z1",
+                ))
+            }
+        },
+        _ => {
+            return Err(AppError::bad_request(
+                code::BAD_COORDINATE,
+                "point",
+                "give exactly one of point, polyline and rect",
+            ))
+        }
+    };
+    let solved = super::region_io::solved(&st, view, &id, &rid).await?;
+    let s = stats(&solved, &shape)
+        .map_err(|e| AppError::bad_request(code::BAD_COORDINATE, e.field, e.message))?;
+    let mut res = json_response(
+        StatusCode::OK,
+        json!({ "region": rid, "version": version, "stats": s }),
+        "private, no-cache",
+    );
+    set_version_headers(&mut res, version, false);
+    Ok(res)
 }

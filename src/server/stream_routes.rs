@@ -2,7 +2,7 @@
 //! [`crate::stream::session`] on a source backed by the server's state (plans, edits, the tile
 //! products through the stage and body caches).
 
-use super::worlds::{StreamView, WorldEdit};
+use super::edit_service::{StreamView, WorldEdit};
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
 use crate::stream::session::{run, StreamError, StreamSource, MAX_MESSAGE_BYTES};
@@ -108,7 +108,7 @@ impl StreamSource for WorldSource {
             )
         })?;
         Ok(
-            crate::server::worlds::commit_edit(&self.state, &self.id, patch, if_match)
+            crate::server::edit_service::commit_edit(&self.state, &self.id, patch, if_match)
                 .await?
                 .version,
         )
@@ -163,7 +163,7 @@ async fn world_stream(
         headers.insert(axum::http::header::AUTHORIZATION, value);
     }
     let (_, caller) =
-        crate::server::worlds::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
+        crate::server::http::authorize(&state, &headers, &id, crate::store::Role::Read).await?;
     let ws = match ws {
         Ok(ws) => ws,
         Err(e) => return Ok(upgrade_required(&e)),

@@ -12,8 +12,8 @@
 
 use super::access::Caller;
 use super::error::{code, AppError};
+use super::http::{authorize, product_headers, query_param, requested_version};
 use super::params::parse_seed;
-use super::worlds::{authorize, product_headers, query_param, requested_version};
 use super::AppState;
 use crate::edits::TileEdits;
 use crate::element::Rect;

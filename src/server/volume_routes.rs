@@ -27,13 +27,14 @@
 //! `/curves/2/control_points`). `mesh.glb` is a product: content-hash `ETag`, immutable when
 //! pinned with `?v=N`, short-lived otherwise, like world chunks.
 
+use super::edit_service::{commit_on_head, edit_answer};
 use super::error::{code, truncate, AppError};
+use super::http::{
+    authorize, check_content_type, json_response, parse_if_match, query_param, readable_version,
+    set_version_headers, store_error,
+};
 use super::routes::CachedProduct;
 use super::view::WorldAt;
-use super::worlds::{
-    authorize, check_content_type, commit_on_head, edit_answer, json_response, parse_if_match,
-    query_param, readable_version, set_version_headers, store_error,
-};
 use super::AppState;
 use crate::encode::region_glb::{self, RegionInfo};
 use crate::scene::{Element, VolumeInput};
