@@ -1,6 +1,6 @@
 //! `strata bench`: performance figures against the issues' targets.
 //!
-//! `strata bench tiles` (issue 2) synthesises LOD-0 tiles of the default world (four biomes, a
+//! `strata bench tiles` (issue 2) synthesises LOD-0 tiles of the classic world (four biomes, a
 //! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
 //! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process; then (issue 17)
 //! `earth-1` tiles of the default world at LOD 0 against fastnoise-lite's time for 4 225

@@ -3,7 +3,7 @@
 //!
 //! | route | who | answer |
 //! |---|---|---|
-//! | `POST /v1/worlds/{id}/exports` `{lod, region, products, formats?, v?, shard?}` | read | 202 `{job, world, version, status, total, status_url, events_url, download_url}` |
+//! | `POST /v1/worlds/{id}/exports` `{lod, region, products, formats?, v?, shard?}` | edit | 202 `{job, world, version, status, total, status_url, events_url, download_url}` |
 //! | `GET /v1/jobs/{job}` | read on the job's world | `{id, world, version, shard, status, done, total, error?, download_url?}` |
 //! | `GET /v1/jobs/{job}/events` | read on the job's world | `text/event-stream`: `progress`, then `done` or `failed` |
 //! | `GET /v1/jobs/{job}/archive` | read on the job's world | the tar (`application/x-tar`); 409 before it is done |

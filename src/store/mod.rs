@@ -1,9 +1,10 @@
 //! Durable worlds: scenes, their versions, the edit log and access tokens.
 //!
 //! [`SceneStore`] is the interface the server uses; [`SqliteStore`] is the embedded default
-//! (`<data>/strata.db`). A PostgreSQL store for many replicas implements the same trait with the
-//! same tables (see `sqlite.rs` for the schema and its PostgreSQL reading) and adds
-//! `LISTEN/NOTIFY` for edit fan-out; the trait's contract is what both must honour:
+//! (`<data>/strata.db`) and the only store today. A PostgreSQL store for many replicas would
+//! implement the same trait with the same tables (see `sqlite.rs` for the schema and its
+//! PostgreSQL reading) and add `LISTEN/NOTIFY` for edit fan-out; the trait's contract is what
+//! any store must honour:
 //!
 //! - **Versions.** A world is created at version 1; every accepted edit yields `version + 1`.
 //!   Versions are never rewritten or removed.

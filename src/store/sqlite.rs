@@ -8,9 +8,9 @@
 //!   of other connections (WAL lets them run beside the writer); an in-memory store (tests) uses
 //!   the writer for everything.
 //!
-//! Schema (`PRAGMA user_version = 1`); a PostgreSQL store uses the same tables with `BIGINT`,
-//! `BOOLEAN`, `JSONB` and `BYTEA`, `SELECT … FOR UPDATE` on the world row in place of the single
-//! writer, and `NOTIFY` after each edit commit:
+//! Schema (`PRAGMA user_version = 1`); a PostgreSQL store (none exists yet) would use the same
+//! tables with `BIGINT`, `BOOLEAN`, `JSONB` and `BYTEA`, `SELECT … FOR UPDATE` on the world row
+//! in place of the single writer, and `NOTIFY` after each edit commit:
 //!
 //! ```sql
 //! worlds    (id TEXT PK, seed INTEGER  -- the u64 seed's bits as i64
