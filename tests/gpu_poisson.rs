@@ -19,9 +19,9 @@
 //!   a few millimetres on a 129² grid (observed 1.3 mm, relative residual 6e-7); we allow 2 cm
 //!   and a relative residual (recomputed on the CPU in `f64`) of 1e-5.
 
+mod common;
+
 use strata::gpu::poisson::{GpuField, GpuPoissonParams, Op, PoissonKernels, POISSON_WGSL};
-use strata::gpu::request_device;
-use strata::gpu::BackendChoice;
 use strata::terrain::poisson::level::Level;
 use strata::terrain::poisson::ops::{
     prolong, residual, residual_restrict, smooth_colour, smooth_nine,
@@ -29,14 +29,7 @@ use strata::terrain::poisson::ops::{
 use strata::terrain::poisson::{Acceleration, GridSpec, OwnedProblem, SolveOptions, Solver, Start};
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some(d)) => d,
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_poisson needs a wgpu adapter; install Mesa's lavapipe (apt-get install \
-             mesa-vulkan-drivers libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::software_device("gpu_poisson")
 }
 
 /// A terrain-like problem; with `constrained`, a fixed point and a fixed diagonal curve.

@@ -5,26 +5,19 @@
 
 #![allow(clippy::needless_range_loop)]
 
+mod common;
+
 use std::mem::{offset_of, size_of};
-use strata::gpu::request_device;
 use strata::gpu::volume::{
     diffuse_on_device, propagate_on_device, DiffuseInput, GpuDiffuseParams, GpuPropagateParams,
     PropagateInput, DIFFUSE_WGSL, PROPAGATE_WGSL,
 };
-use strata::gpu::BackendChoice;
 use strata::volume::pipeline::diffuse::{sweeps, K_PERONA_MALIK};
 use strata::volume::pipeline::propagate::propagate_surface;
 use strata::volume::pipeline::{generate, scenes};
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some(d)) => d,
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_volume needs a wgpu adapter; install Mesa's lavapipe (apt-get install \
-             mesa-vulkan-drivers libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::software_device("gpu_volume")
 }
 
 fn field(n: usize, seed: u32, base: f32, amp: f32) -> Vec<f32> {

@@ -11,9 +11,9 @@
 //! those flips may be at most 0.1 % of the samples. The test prints how many samples are
 //! bit-identical.
 
-use strata::gpu::request_device;
+mod common;
+
 use strata::gpu::volume_bitangent::smooth_bitangents_on_device;
-use strata::gpu::BackendChoice;
 use strata::volume::pipeline::expand::{smooth_bitangents, BITANGENT_SWEEPS};
 use strata::volume::pipeline::{generate, scenes};
 
@@ -21,14 +21,7 @@ const LINE_TOL: f32 = 1e-5;
 const MAX_FLIPPED_FRACTION: f64 = 1e-3;
 
 fn device() -> (wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some((_, d, q))) => (d, q),
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_volume_bitangent needs a wgpu adapter; install Mesa's lavapipe (apt-get install \
-             mesa-vulkan-drivers libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::device("gpu_volume_bitangent")
 }
 
 fn compare(dims: [usize; 3], sparse: &[Vec<f32>; 3], sweeps: usize) {

@@ -7,23 +7,16 @@
 //! components within 1e-5, the room WGSL leaves for fused multiply-adds and 2.5-ULP `/` and
 //! `sqrt` on values of magnitude ≤ 1. The test prints how many values are bit-identical.
 
-use strata::gpu::request_device;
+mod common;
+
 use strata::gpu::volume_mesh::VolumeMeshKernel;
-use strata::gpu::BackendChoice;
 use strata::volume::mesh::{surface_nets, MeshOptions, QuadMesh, SampleAttributes};
 
 const OFFSET_TOL: f32 = 1e-5;
 const NORMAL_TOL: f32 = 1e-5;
 
 fn device() -> (wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some((_, d, q))) => (d, q),
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_volume_mesh needs a wgpu adapter; install Mesa's lavapipe (apt-get install \
-             mesa-vulkan-drivers libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::device("gpu_volume_mesh")
 }
 
 fn field(dims: [usize; 3], f: impl Fn(f32, f32, f32) -> f32) -> Vec<f32> {

@@ -2,12 +2,9 @@
 //! `strata` binary is started twice (one worker thread, then three) and asked for the same
 //! products over real TCP.
 
-use std::io::{Read, Write};
-use std::net::TcpStream;
-use std::time::Duration;
-
 mod common;
 
+use common::raw::get;
 use common::Server;
 
 fn start(worker_threads: usize, data: &std::path::Path) -> Server {
@@ -15,37 +12,6 @@ fn start(worker_threads: usize, data: &std::path::Path) -> Server {
         [std::ffi::OsStr::new("--data"), data.as_os_str()],
         &[("TOKIO_WORKER_THREADS", worker_threads.to_string())],
     )
-}
-
-/// A minimal HTTP/1.1 GET: status code and body.
-fn get(addr: &str, path: &str) -> (u16, Vec<u8>) {
-    let mut s = TcpStream::connect(addr).expect("connect");
-    s.set_read_timeout(Some(Duration::from_secs(60)))
-        .expect("timeout");
-    write!(
-        s,
-        "GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n"
-    )
-    .expect("send");
-    let mut raw = Vec::new();
-    s.read_to_end(&mut raw).expect("read");
-    let split = raw
-        .windows(4)
-        .position(|w| w == b"\r\n\r\n")
-        .expect("header end");
-    let head = String::from_utf8_lossy(&raw[..split]).to_string();
-    let status: u16 = head
-        .split_whitespace()
-        .nth(1)
-        .and_then(|c| c.parse().ok())
-        .expect("status");
-    assert!(
-        !head
-            .to_ascii_lowercase()
-            .contains("transfer-encoding: chunked"),
-        "unexpected chunked body"
-    );
-    (status, raw[split + 4..].to_vec())
 }
 
 #[test]

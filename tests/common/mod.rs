@@ -1,4 +1,5 @@
-//! Helpers shared by the integration tests: the real `strata` binary ([`start`], [`start_logged`]), requests to
+//! Helpers shared by the integration tests: the real `strata` binary ([`start`], [`start_logged`])
+//! and its raw HTTP client ([`raw`]), the GPU tests' device ([`device`]), requests to
 //! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
 //! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
 //! validator ([`gltf`]), the Node packages of the browser tests ([`js`]) and tiles with river
@@ -8,9 +9,11 @@
 
 pub mod arch;
 pub mod columns;
+pub mod device;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
+pub mod raw;
 pub mod seams;
 pub mod topology;
 pub mod water;
