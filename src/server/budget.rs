@@ -12,8 +12,10 @@
 //! | world plans of bare seeds (`plans::PlanCache`) | 1/64 | 8 MiB |
 //!
 //! Each cache counts what its entries hold (see each weigher), so their sum stays within the
-//! budget; what the process holds besides (code, the `earth-1` river block caches, requests in
-//! flight, allocator slack) is a fixed overhead on top, which `strata bench serve` measures.
+//! budget; what the process holds besides is a fixed overhead on top, which `strata bench serve`
+//! measures: code and runtime, requests in flight, allocator slack, and the `earth-1` river
+//! block caches (`terrain::earth::rivers::network`, process-wide `moka` caches of their own,
+//! 200 MiB in all, outside this budget because `terrain` sits below `cache` and `server`).
 
 /// Default of `--memory-budget`, MiB.
 pub const DEFAULT_MEMORY_BUDGET_MB: u64 = 512;
