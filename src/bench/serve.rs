@@ -6,6 +6,13 @@
 //! 2. The time from an edit's acknowledgement (the HTTP 200) to its invalidation reaching each of
 //!    100 subscribed WebSocket clients; the target is p99 ≤ 50 ms.
 //!
+//! 3. Resident memory under an uncached load: `wrk` asks for a new tile with every request (a
+//!    script walks the keys), so every cache fills to its share of the memory budget
+//!    (`server::budget`); the process's peak resident set (`VmHWM` of `/proc/self/status`, the
+//!    server being in this process) is reported against the budget, as a ratio, and what it
+//!    holds beyond the budget is the fixed overhead (code, runtime, the `earth-1` river block
+//!    caches, requests in flight, allocator slack).
+//!
 //! The server runs in this process on loopback with the CPU backend and an in-memory store; `wrk`
 //! and `nginx` are separate processes (`apt-get install wrk nginx-light`).
 
@@ -66,16 +73,26 @@ fn parse_ms(s: &str) -> Option<f64> {
 }
 
 fn wrk(url: &str, seconds: u32) -> anyhow::Result<WrkFigures> {
-    let out = Command::new("wrk")
-        .args([
-            "-t2",
-            &format!("-c{CONNECTIONS}"),
-            &format!("-d{seconds}s"),
-            "--latency",
-            url,
-        ])
-        .output()
-        .context("running wrk")?;
+    wrk_with(url, seconds, None)
+}
+
+/// `wrk` with a request script, if any.
+fn wrk_with(
+    url: &str,
+    seconds: u32,
+    script: Option<&std::path::Path>,
+) -> anyhow::Result<WrkFigures> {
+    let mut cmd = Command::new("wrk");
+    cmd.args([
+        "-t2",
+        &format!("-c{CONNECTIONS}"),
+        &format!("-d{seconds}s"),
+        "--latency",
+    ]);
+    if let Some(script) = script {
+        cmd.arg("-s").arg(script);
+    }
+    let out = cmd.arg(url).output().context("running wrk")?;
     let text = String::from_utf8_lossy(&out.stdout);
     if !out.status.success() {
         bail!("wrk failed: {text}{}", String::from_utf8_lossy(&out.stderr));
@@ -100,6 +117,37 @@ fn wrk(url: &str, seconds: u32) -> anyhow::Result<WrkFigures> {
     Ok(f)
 }
 
+/// A tile key per request, distinct across wrk's threads: every request misses every cache.
+const UNCACHED_SCRIPT: &str = r#"
+local threads = 0
+function setup(thread)
+  thread:set("id", threads)
+  threads = threads + 1
+end
+function init(args)
+  n = 0
+end
+function request()
+  n = n + 1
+  local k = n * 2 + id
+  local x = k % 2000 - 1000
+  local z = math.floor(k / 2000) - 1000
+  return wrk.format("GET", "/v1/seeds/43/tiles/0/" .. x .. "/" .. z .. ".bin")
+end
+"#;
+
+/// A figure of `/proc/self/status` (`VmRSS`, `VmHWM`), bytes; 0 where there is none.
+fn proc_status_bytes(field: &str) -> u64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix(field)?.strip_prefix(':').map(str::to_owned))
+        })
+        .and_then(|v| v.split_whitespace().next()?.parse::<u64>().ok())
+        .map_or(0, |kib| kib << 10)
+}
+
 /// Runs `strata bench serve`.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     need("wrk")?;
@@ -108,6 +156,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         .enable_all()
         .build()?;
     let state = AppState::new(Compute::cpu());
+    let budget = state.memory_budget().total as f64;
     let listener = rt.block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))?;
     let addr = listener.local_addr()?;
     rt.spawn(async move {
@@ -195,6 +244,39 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             theirs.requests_per_s,
             theirs.p50_ms,
             theirs.p99_ms
+        ),
+    );
+
+    let script =
+        std::env::temp_dir().join(format!("strata-bench-uncached-{}.lua", std::process::id()));
+    std::fs::write(&script, UNCACHED_SCRIPT)?;
+    let before = proc_status_bytes("VmRSS") as f64;
+    let uncached = wrk_with(&format!("http://{addr}/"), 2 * seconds, Some(&script));
+    let _ = std::fs::remove_file(&script);
+    let uncached = uncached?;
+    let (rss, peak) = (
+        proc_status_bytes("VmRSS") as f64,
+        proc_status_bytes("VmHWM") as f64,
+    );
+    let mib = |b: f64| b / f64::from(1u32 << 20);
+    emit(
+        args,
+        json!({"bench":"serve","figure":"uncached_memory","connections":CONNECTIONS,"seconds":2 * seconds,
+               "requests_per_s":uncached.requests_per_s,"p50_ms":uncached.p50_ms,"p99_ms":uncached.p99_ms,
+               "memory_budget_mib":mib(budget),"rss_before_mib":mib(before),"rss_mib":mib(rss),"peak_rss_mib":mib(peak),
+               "peak_rss_over_budget":peak / budget,"overhead_mib":mib(peak - budget)}),
+        format!(
+            "  uncached tiles, {CONNECTIONS} connections, {} s: {:.0} req/s, p50 {:.2} ms, p99 {:.2} ms\n  resident memory: peak {:.0} MiB, now {:.0} MiB, {:.0} MiB before the load, against a cache budget of {:.0} MiB: peak/budget {:.2}, fixed overhead {:.0} MiB",
+            2 * seconds,
+            uncached.requests_per_s,
+            uncached.p50_ms,
+            uncached.p99_ms,
+            mib(peak),
+            mib(rss),
+            mib(before),
+            mib(budget),
+            peak / budget,
+            mib(peak - budget)
         ),
     );
 

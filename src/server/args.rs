@@ -43,6 +43,13 @@ pub struct ServeArgs {
     /// only without it.
     #[arg(long)]
     pub cache_dir: Option<PathBuf>,
+    /// Memory budget of all the caches together, MiB (split between them by fixed fractions:
+    /// half for finished tiles, a quarter for encoded bodies, the rest for solved regions and
+    /// world plans; see `server::budget`). Read from `STRATA_MEMORY_BUDGET` (MiB) when not
+    /// given; default 512. The process holds a fixed overhead besides (`strata bench serve`
+    /// measures the resident memory against it).
+    #[arg(long, value_name = "MB", value_parser = clap::value_parser!(u64).range(0..=1 << 30))]
+    pub memory_budget: Option<u64>,
 }
 
 fn check_origin(s: &str) -> Result<String, String> {
@@ -50,6 +57,28 @@ fn check_origin(s: &str) -> Result<String, String> {
 }
 
 impl ServeArgs {
+    /// `--memory-budget`, else `STRATA_MEMORY_BUDGET`, else
+    /// [`super::budget::DEFAULT_MEMORY_BUDGET_MB`].
+    ///
+    /// # Errors
+    /// `STRATA_MEMORY_BUDGET` is not a whole number of MiB.
+    pub fn memory_budget_mb(&self) -> anyhow::Result<u64> {
+        if let Some(mb) = self.memory_budget {
+            return Ok(mb);
+        }
+        match std::env::var("STRATA_MEMORY_BUDGET") {
+            Ok(v) => v
+                .trim()
+                .parse::<u64>()
+                .ok()
+                .filter(|mb| *mb <= 1 << 30)
+                .ok_or_else(|| {
+                    anyhow::anyhow!("STRATA_MEMORY_BUDGET: {v:?} is not a number of MiB")
+                }),
+            Err(_) => Ok(super::budget::DEFAULT_MEMORY_BUDGET_MB),
+        }
+    }
+
     /// `--read-timeout-ms` as a duration.
     pub fn read_timeout(&self) -> std::time::Duration {
         std::time::Duration::from_millis(self.read_timeout_ms)

@@ -1,11 +1,11 @@
 //! Encoded products by `(tile input hash, format)`: a hit answers a request with a reference-counted
-//! body and a precomputed ETag, no synthesis, encoding or hashing. Bounded by a byte budget,
-//! least recently used evicted first.
+//! body and a precomputed ETag, no synthesis, encoding or hashing. A [`Memo`] bounded by a byte
+//! budget, least recently used evicted first (O(1), no scan).
 
 use super::routes::CachedProduct;
-use std::collections::HashMap;
+use crate::cache::Memo;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 /// Default budget of encoded bodies, bytes.
 pub const DEFAULT_BODY_BUDGET_BYTES: usize = 128 << 20;
@@ -13,18 +13,26 @@ pub const DEFAULT_BODY_BUDGET_BYTES: usize = 128 << 20;
 /// Key: the tile's input hash and the format's extension.
 pub type BodyKey = ([u8; 32], &'static str);
 
-#[derive(Debug, Default)]
-struct Inner {
-    map: HashMap<BodyKey, (Arc<CachedProduct>, u64)>,
-    bytes: usize,
-    tick: u64,
+/// Bytes a product is counted for: the struct, the body's length (a body made from a `Vec`
+/// may hold a little more capacity: approximate), the ETag and the extra headers.
+pub fn product_bytes(p: &CachedProduct) -> usize {
+    std::mem::size_of::<CachedProduct>()
+        + p.body.len()
+        + p.hash.capacity()
+        + p.extra
+            .iter()
+            .map(|(name, value)| {
+                std::mem::size_of::<(axum::http::HeaderName, String)>()
+                    + name.as_str().len()
+                    + value.capacity()
+            })
+            .sum::<usize>()
 }
 
 /// The cache; cheap to share behind an `Arc`.
 #[derive(Debug)]
 pub struct BodyCache {
-    budget: usize,
-    inner: Mutex<Inner>,
+    memo: Memo<BodyKey, Arc<CachedProduct>>,
     /// Requests answered from the cache.
     pub hits: AtomicU64,
     /// Requests that encoded a body.
@@ -38,11 +46,11 @@ impl Default for BodyCache {
 }
 
 impl BodyCache {
-    /// A cache of at most `budget` bytes of bodies.
+    /// A cache of at most `budget` bytes of products ([`product_bytes`] each, plus
+    /// [`crate::cache::ENTRY_OVERHEAD_BYTES`]).
     pub fn new(budget: usize) -> Self {
         Self {
-            budget,
-            inner: Mutex::default(),
+            memo: Memo::new(budget, |_, p: &Arc<CachedProduct>| product_bytes(p)),
             hits: AtomicU64::new(0),
             misses: AtomicU64::new(0),
         }
@@ -50,49 +58,30 @@ impl BodyCache {
 
     /// The cached product, if any.
     pub fn get(&self, key: &BodyKey) -> Option<Arc<CachedProduct>> {
-        let mut g = self.inner.lock().unwrap_or_else(|e| e.into_inner());
-        g.tick += 1;
-        let tick = g.tick;
-        match g.map.get_mut(key) {
-            Some(entry) => {
-                entry.1 = tick;
-                self.hits.fetch_add(1, Ordering::Relaxed);
-                Some(entry.0.clone())
-            }
-            None => {
-                self.misses.fetch_add(1, Ordering::Relaxed);
-                None
-            }
-        }
+        let found = self.memo.get(key);
+        let counter = if found.is_some() {
+            &self.hits
+        } else {
+            &self.misses
+        };
+        counter.fetch_add(1, Ordering::Relaxed);
+        found
     }
 
     /// Stores a product, evicting the least recently used ones beyond the budget.
     pub fn insert(&self, key: BodyKey, product: Arc<CachedProduct>) {
-        let size = product.body.len() + 256;
-        if size > self.budget {
-            return;
-        }
-        let mut g = self.inner.lock().unwrap_or_else(|e| e.into_inner());
-        g.tick += 1;
-        let tick = g.tick;
-        if let Some((old, _)) = g.map.insert(key, (product, tick)) {
-            g.bytes -= old.body.len() + 256;
-        }
-        g.bytes += size;
-        while g.bytes > self.budget {
-            let Some(oldest) = g.map.iter().min_by_key(|(_, (_, t))| *t).map(|(k, _)| *k) else {
-                break;
-            };
-            if let Some((p, _)) = g.map.remove(&oldest) {
-                g.bytes -= p.body.len() + 256;
-            }
-        }
+        self.memo.insert(key, product);
     }
 
     /// `(entries, bytes)`.
     pub fn size(&self) -> (usize, usize) {
-        let g = self.inner.lock().unwrap_or_else(|e| e.into_inner());
-        (g.map.len(), g.bytes)
+        let s = self.memo.stats();
+        (s.entries as usize, s.bytes as usize)
+    }
+
+    /// The byte budget.
+    pub fn budget_bytes(&self) -> usize {
+        self.memo.budget_bytes()
     }
 }
 
@@ -110,17 +99,35 @@ mod tests {
 
     #[test]
     fn evicts_least_recently_used_within_budget() {
-        let c = BodyCache::new(3 * (1000 + 256));
+        let one = product_bytes(&product(1000)) + crate::cache::ENTRY_OVERHEAD_BYTES;
+        let c = BodyCache::new(3 * one + one / 2);
         for i in 0..3u8 {
             c.insert(([i; 32], "bin"), product(1000));
         }
+        c.memo.run_pending_tasks();
         assert!(c.get(&([0; 32], "bin")).is_some());
+        c.memo.run_pending_tasks();
         c.insert(([9; 32], "bin"), product(1000));
+        c.memo.run_pending_tasks();
         assert!(
             c.get(&([1; 32], "bin")).is_none(),
             "the least recently used went first"
         );
         assert!(c.get(&([0; 32], "bin")).is_some() && c.get(&([9; 32], "bin")).is_some());
-        assert!(c.size().1 <= 3 * 1256);
+        assert_eq!(c.size(), (3, 3 * one));
+    }
+
+    #[test]
+    fn a_product_counts_its_headers() {
+        let bare = product_bytes(&product(10));
+        let p = CachedProduct::new(
+            vec![7u8; 10],
+            "application/octet-stream",
+            vec![(
+                axum::http::HeaderName::from_static("x-strata-lod"),
+                "12345".to_owned(),
+            )],
+        );
+        assert!(product_bytes(&p) >= bare + "x-strata-lod".len() + 5);
     }
 }

@@ -16,6 +16,8 @@
 //! | `strata_stage_seconds_total` (counter) | `stage` |
 //! | `strata_stage_cache_evictions_total`, `strata_stage_cache_disk_writes_total`, `strata_stage_cache_disk_errors_total` (counters) | |
 //! | `strata_stage_cache_bytes`, `strata_stage_cache_budget_bytes`, `strata_stage_cache_entries` (gauges) | |
+//! | `strata_cache_bytes`, `strata_cache_budget_bytes` (gauges): every cache's share of `--memory-budget` | `cache`: `stage`, `bodies`, `regions`, `volumes`, `seed_plans`, `world_plans` |
+//! | `strata_memory_budget_bytes` (gauge): `--memory-budget` | |
 
 use super::AppState;
 use axum::extract::{MatchedPath, Request, State};
@@ -342,6 +344,50 @@ fn service_gauges(out: &mut String, st: &AppState) {
     }
 }
 
+/// Bytes held and budgets of the five caches, and the process-wide budget.
+fn cache_sizes(out: &mut String, st: &AppState, stage: &crate::cache::CacheStats) {
+    let (_, body_bytes) = st.bodies.size();
+    let (_, region_bytes, region_budget) = st.regions.size();
+    let (_, volume_bytes, volume_budget) = st.volumes.size();
+    let (_, seed_bytes, seed_budget) = st.plans.size();
+    let (_, world_bytes, world_budget) = st.worlds.plan_size();
+    let rows = [
+        ("stage", stage.bytes, stage.budget_bytes),
+        ("bodies", body_bytes as u64, st.bodies.budget_bytes() as u64),
+        ("regions", region_bytes, region_budget),
+        ("volumes", volume_bytes, volume_budget),
+        ("seed_plans", seed_bytes, seed_budget),
+        ("world_plans", world_bytes, world_budget),
+    ];
+    labelled(
+        out,
+        (
+            "strata_cache_bytes",
+            "gauge",
+            "Bytes counted in each cache (what its entries hold).",
+        ),
+        "cache",
+        rows.map(|(name, bytes, _)| (name, bytes)),
+    );
+    labelled(
+        out,
+        (
+            "strata_cache_budget_bytes",
+            "gauge",
+            "Byte budget of each cache, its share of the memory budget.",
+        ),
+        "cache",
+        rows.map(|(name, _, budget)| (name, budget)),
+    );
+    single(
+        out,
+        "strata_memory_budget_bytes",
+        "gauge",
+        "The process-wide memory budget of the caches (--memory-budget).",
+        st.memory_budget().total,
+    );
+}
+
 /// `GET /metrics`.
 pub async fn render(State(st): State<AppState>) -> Response {
     let (seed_hits, seed_misses) = st.plans.stats();
@@ -374,7 +420,9 @@ pub async fn render(State(st): State<AppState>) -> Response {
         "Receivers of the in-process edit broadcast.",
         st.worlds.edits.subscribers(),
     );
-    stage_cache(&mut extra, &st.cache.stats());
+    let stage = st.cache.stats();
+    stage_cache(&mut extra, &stage);
+    cache_sizes(&mut extra, &st, &stage);
     service_gauges(&mut extra, &st);
     let mut res = st.metrics.render(&extra).into_response();
     let h = res.headers_mut();

@@ -32,6 +32,7 @@
 pub mod access;
 pub mod args;
 pub mod bodies;
+pub mod budget;
 pub mod chunks;
 pub mod connections;
 pub mod cors;
@@ -143,6 +144,7 @@ pub struct AppState {
     /// Origins besides the server's own that may call every route from a browser.
     pub cors: cors::CorsOrigins,
     limits: Limits,
+    budget: budget::MemoryBudget,
     plans: Arc<PlanCache>,
     slots: Arc<Semaphore>,
 }
@@ -175,7 +177,11 @@ impl AppState {
             sessions: Sessions::default(),
             cors: cors::CorsOrigins::default(),
             limits,
-            plans: Arc::new(PlanCache::new(limits.plan_cache_seeds)),
+            budget: budget::MemoryBudget::default(),
+            plans: Arc::new(PlanCache::new(
+                limits.plan_cache_seeds,
+                budget::MemoryBudget::default().seed_plans,
+            )),
             slots: Arc::new(Semaphore::new(limits.max_concurrent_syntheses)),
         }
     }
@@ -192,6 +198,28 @@ impl AppState {
     pub fn with_job_limits(mut self, limits: jobs::JobLimits) -> Self {
         self.jobs = Arc::new(jobs::Jobs::new(self.jobs.dir().to_path_buf(), limits));
         self
+    }
+
+    /// Splits `budget` between the caches (see [`budget`]): replaces the stage cache (memory
+    /// only: add the disk tier with [`AppState::with_cache`] after this), the body, solution
+    /// and seed-plan caches, and sizes the world-plan cache of later [`AppState::with_worlds`]
+    /// calls. Call it before serving.
+    pub fn with_memory_budget(mut self, budget: budget::MemoryBudget) -> Self {
+        self.budget = budget;
+        self.cache = Arc::new(StageCache::new(budget.stage));
+        self.bodies = Arc::new(bodies::BodyCache::new(budget.bodies));
+        self.regions = Arc::new(regions::RegionCache::new(budget.regions));
+        self.volumes = Arc::new(volumes::VolumeCache::new(budget.volumes));
+        self.plans = Arc::new(PlanCache::new(
+            self.limits.plan_cache_seeds,
+            budget.seed_plans,
+        ));
+        self
+    }
+
+    /// The memory budget of the caches and its split.
+    pub fn memory_budget(&self) -> budget::MemoryBudget {
+        self.budget
     }
 
     /// Keeps finished tiles in `cache` instead of a memory-only cache of
@@ -221,7 +249,11 @@ impl AppState {
         store: Arc<dyn crate::store::SceneStore>,
         admin_token: Option<&str>,
     ) -> Self {
-        self.worlds = Arc::new(worlds::Worlds::new(store, admin_token));
+        self.worlds = Arc::new(worlds::Worlds::with_plan_budget(
+            store,
+            admin_token,
+            self.budget.world_plans,
+        ));
         self
     }
 
@@ -444,7 +476,15 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         max_connections: usize::try_from(args.max_connections).unwrap_or(MAX_CONNECTIONS),
         ..Limits::default()
     };
+    let budget = budget::MemoryBudget::from_mb(args.memory_budget_mb()?);
+    tracing::info!(
+        total_mb = budget.total >> 20,
+        stage_mb = budget.stage >> 20,
+        bodies_mb = budget.bodies >> 20,
+        "cache memory budget"
+    );
     let mut state = AppState::with_limits(compute, limits)
+        .with_memory_budget(budget)
         .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose))
         .with_jobs_dir(args.data.join("exports"));
     match state.jobs.sweep() {
@@ -453,7 +493,7 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         Err(e) => tracing::warn!("cannot sweep {}: {e}", state.jobs.dir().display()),
     }
     if let Some(dir) = &args.cache_dir {
-        let cache = StageCache::default().with_disk(dir).map_err(|e| {
+        let cache = StageCache::new(budget.stage).with_disk(dir).map_err(|e| {
             anyhow::anyhow!("cannot open the cache directory {}: {e}", dir.display())
         })?;
         tracing::info!(dir = %dir.display(), "stage cache on disk");

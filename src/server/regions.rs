@@ -1,20 +1,30 @@
 //! Solved authored regions, by `(seed, digest)` ([`SolvedCache`]).
 
-use super::solved::SolvedCache;
+use super::solved::{SolvedCache, Weigh};
 use crate::authoring::{solve_region, Displacement};
 use crate::scene::RegionInput;
 use crate::terrain::WorldPlan;
 use std::sync::Arc;
 
-/// Most solved regions kept; the least recently used go first.
-pub const REGION_CACHE_ENTRIES: usize = 64;
+/// Default byte budget of solved regions (the share of [`super::budget::MemoryBudget`]); the
+/// least recently used go first.
+pub const REGION_CACHE_BYTES: usize = 32 << 20;
 
 /// Solved authored regions.
 pub type RegionCache = SolvedCache<Displacement>;
 
 impl Default for RegionCache {
     fn default() -> Self {
-        Self::new(REGION_CACHE_ENTRIES)
+        Self::new(REGION_CACHE_BYTES)
+    }
+}
+
+impl Weigh for Displacement {
+    fn weight(&self) -> usize {
+        std::mem::size_of::<Self>()
+            + self.id.capacity()
+            + 4 * (self.d.capacity() + self.base.capacity())
+            + self.fixed.capacity()
     }
 }
 

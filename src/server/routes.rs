@@ -118,6 +118,7 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "synthesis_timeout_ms": limits.synthesis_timeout.as_millis() as u64,
             "max_body_bytes": MAX_BODY_BYTES,
             "plan_cache_seeds": limits.plan_cache_seeds,
+            "memory_budget_bytes": st.memory_budget().total,
             "max_river_lod": crate::terrain::earth::rivers::MAX_CARVE_LOD,
             "scatter_max_candidates": scatter::MAX_CANDIDATES,
             "max_log_entries": crate::store::MAX_LOG_ENTRIES,

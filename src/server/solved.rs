@@ -1,32 +1,39 @@
 //! Solutions by `(seed, element digest)`: each element of each world version is solved once, on
-//! the blocking pool, however many requests ask for it at once; the least recently used go first.
-//! Authored regions ([`super::regions`]) and volume regions ([`super::volumes`]) keep theirs here.
+//! the blocking pool, however many requests ask for it at once (the [`Memo`]'s single flight);
+//! the least recently used go first beyond the cache's byte budget. Authored regions
+//! ([`super::regions`]) and volume regions ([`super::volumes`]) keep theirs here.
 
-use std::collections::HashMap;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
-use tokio::sync::OnceCell;
+use crate::cache::Memo;
+use std::sync::Arc;
 
-type Slot<T> = Arc<OnceCell<Option<Arc<T>>>>;
-/// `(seed, digest)` → the slot and its last use.
-type Entries<T> = HashMap<(u64, [u8; 32]), (Slot<T>, u64)>;
-
-/// Solutions of type `T` by `(seed, digest)`, at most `capacity` of them.
-#[derive(Debug)]
-pub struct SolvedCache<T> {
-    entries: Mutex<Entries<T>>,
-    clock: AtomicU64,
-    capacity: usize,
+/// What a solution holds, bytes (its arrays' capacities; approximate where a type says so).
+pub trait Weigh {
+    /// Bytes held, the value itself included.
+    fn weight(&self) -> usize;
 }
 
-impl<T: Send + Sync + 'static> SolvedCache<T> {
-    /// An empty cache keeping at most `capacity` solutions.
-    pub fn new(capacity: usize) -> Self {
+/// Solutions of type `T` by `(seed, digest)`, within a byte budget. A refusal (`None`) is kept
+/// too.
+#[derive(Debug)]
+pub struct SolvedCache<T> {
+    memo: Memo<(u64, [u8; 32]), Option<Arc<T>>>,
+}
+
+impl<T: Weigh + Send + Sync + 'static> SolvedCache<T> {
+    /// An empty cache of at most `budget_bytes` of solutions ([`Weigh::weight`] each, plus
+    /// [`crate::cache::ENTRY_OVERHEAD_BYTES`]).
+    pub fn new(budget_bytes: usize) -> Self {
         Self {
-            entries: Mutex::default(),
-            clock: AtomicU64::new(0),
-            capacity: capacity.max(1),
+            memo: Memo::new(budget_bytes, |_, v: &Option<Arc<T>>| {
+                v.as_ref().map_or(0, |v| v.weight())
+            }),
         }
+    }
+
+    /// `(entries, bytes, budget bytes)`.
+    pub fn size(&self) -> (u64, u64, u64) {
+        let s = self.memo.stats();
+        (s.entries, s.bytes, s.budget_bytes)
     }
 
     /// The solution under `key`, running `solve` on the blocking pool if there is none yet.
@@ -38,32 +45,18 @@ impl<T: Send + Sync + 'static> SolvedCache<T> {
         what: &'static str,
         solve: impl FnOnce() -> Result<T, E> + Send + 'static,
     ) -> Option<Arc<T>> {
-        let now = self.clock.fetch_add(1, Ordering::Relaxed);
-        let slot = {
-            let mut map = self
-                .entries
-                .lock()
-                .unwrap_or_else(std::sync::PoisonError::into_inner);
-            if !map.contains_key(&key) && map.len() >= self.capacity {
-                if let Some(oldest) = map.iter().min_by_key(|(_, (_, t))| *t).map(|(k, _)| *k) {
-                    map.remove(&oldest);
+        self.memo
+            .get_or_compute_async(key, move || async move {
+                // Not `None` on cancellation: a tile made without this region would be cached.
+                match crate::compute::joined(tokio::task::spawn_blocking(solve)).await {
+                    Ok(v) => Some(Arc::new(v)),
+                    Err(e) => {
+                        tracing::warn!("{what} not solved: {e}");
+                        None
+                    }
                 }
-            }
-            let entry = map.entry(key).or_insert_with(|| (Slot::default(), now));
-            entry.1 = now;
-            entry.0.clone()
-        };
-        slot.get_or_init(|| async move {
-            // Not `None` on cancellation: a tile made without this region would be cached.
-            match crate::compute::joined(tokio::task::spawn_blocking(solve)).await {
-                Ok(v) => Some(Arc::new(v)),
-                Err(e) => {
-                    tracing::warn!("{what} not solved: {e}");
-                    None
-                }
-            }
-        })
-        .await
-        .clone()
+            })
+            .await
+            .0
     }
 }

@@ -3,22 +3,53 @@
 //! the element and the authored regions and `strata` elements whose edits its ground takes, so
 //! editing any of them solves the region again.
 
-use super::solved::SolvedCache;
+use super::solved::{SolvedCache, Weigh};
 use super::view::WorldView;
 use super::AppState;
 use crate::scene::VolumeInput;
 use crate::volume::element::{ground_rect, solve_volume, SolvedVolume};
 use std::sync::Arc;
 
-/// Most solved volume regions kept; the least recently used go first.
-pub const VOLUME_CACHE_ENTRIES: usize = 16;
+/// Default byte budget of solved volume regions (the share of [`super::budget::MemoryBudget`]);
+/// the least recently used go first.
+pub const VOLUME_CACHE_BYTES: usize = 64 << 20;
 
 /// Solved volume regions.
 pub type VolumeCache = SolvedCache<SolvedVolume>;
 
 impl Default for VolumeCache {
     fn default() -> Self {
-        Self::new(VOLUME_CACHE_ENTRIES)
+        Self::new(VOLUME_CACHE_BYTES)
+    }
+}
+
+/// The fields' and the voxelization's arrays (the element itself and the grid by their struct
+/// size only: approximate).
+impl Weigh for SolvedVolume {
+    fn weight(&self) -> usize {
+        fn f32s<const N: usize>(v: &[Vec<f32>; N]) -> usize {
+            v.iter().map(|v| 4 * v.capacity()).sum()
+        }
+        let f = &self.fields;
+        let x = &f.voxelized;
+        std::mem::size_of::<Self>()
+            + f32s(&f.normal)
+            + f32s(&f.bitangent)
+            + 4 * (f.surface.capacity()
+                + f.surface_raw.capacity()
+                + f.surface_layer.capacity()
+                + f.alpha.capacity()
+                + f.beta.capacity()
+                + f.confidence.capacity())
+            + 2 * f.material.capacity()
+            + f32s(&x.normal)
+            + f32s(&x.bitangent)
+            + 4 * (x.surface.capacity() + x.alpha.capacity() + x.beta.capacity())
+            + 2 * x.material.capacity()
+            + x.omega_n.capacity()
+            + x.omega_r.capacity()
+            + x.omega_s.capacity()
+            + std::mem::size_of_val(x.pass_stats.as_slice())
     }
 }
 

@@ -29,6 +29,7 @@ use super::http::{
 use super::routes::IMMUTABLE;
 use super::view::WorldView;
 use super::AppState;
+use crate::cache::Memo;
 use crate::scene::{Scene, SceneInputs};
 use crate::store::{
     self, hash_token, new_token, new_world_id, NewWorld, Role, SceneStore, TokenHash, WorldMeta,
@@ -42,11 +43,11 @@ use axum::routing::{get, post};
 use axum::Router;
 use serde::Deserialize;
 use serde_json::{json, Value};
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::atomic::Ordering;
+use std::sync::Arc;
 
 /// World plans kept, one per `(world, version)`; versions with equal world settings share one.
-pub const WORLD_PLAN_CACHE: usize = 256;
+pub const WORLD_PLAN_BUDGET_BYTES: usize = 24 << 20;
 
 /// The world-related state of an [`AppState`].
 #[derive(Debug)]
@@ -62,11 +63,20 @@ pub struct Worlds {
 impl Worlds {
     /// Worlds kept in `store`; `admin` is the server admin token, if any.
     pub fn new(store: Arc<dyn SceneStore>, admin: Option<&str>) -> Self {
+        Self::with_plan_budget(store, admin, WORLD_PLAN_BUDGET_BYTES)
+    }
+
+    /// Like [`Worlds::new`], keeping at most `plan_bytes` of views and their plans.
+    pub fn with_plan_budget(
+        store: Arc<dyn SceneStore>,
+        admin: Option<&str>,
+        plan_bytes: usize,
+    ) -> Self {
         Self {
             store,
             admin: admin.map(hash_token),
             edits: EditChannels::default(),
-            plans: VersionPlans::new(WORLD_PLAN_CACHE),
+            plans: VersionPlans::new(plan_bytes),
         }
     }
 
@@ -87,9 +97,18 @@ impl Worlds {
 
     /// `(hits, misses)` of the world plan cache.
     pub fn plan_stats(&self) -> (u64, u64) {
+        let s = self.plans.versions.stats();
+        (s.hits + s.joined, s.misses)
+    }
+
+    /// `(entries, bytes, budget bytes)` of the world plan cache (its versions and their shared
+    /// plans together).
+    pub fn plan_size(&self) -> (u64, u64, u64) {
+        let (v, p) = (self.plans.versions.stats(), self.plans.shared.stats());
         (
-            self.plans.hits.load(Ordering::Relaxed),
-            self.plans.misses.load(Ordering::Relaxed),
+            v.entries,
+            v.bytes + p.bytes,
+            v.budget_bytes + p.budget_bytes,
         )
     }
 
@@ -118,58 +137,48 @@ impl Worlds {
     }
 }
 
-struct PlanEntry {
-    world: String,
-    version: u64,
-    seed: u64,
-    params_hash: [u8; 32],
+/// A version's view, and the bytes its scene inputs are counted for.
+#[derive(Clone)]
+struct VersionEntry {
     view: Arc<WorldView>,
-    used: u64,
+    bytes: usize,
 }
 
-/// Views by `(world, version)`, least recently used evicted first; entries with the same seed
-/// and world settings share one plan.
+/// Views by `(world, version)` ([`Memo`]s, least recently used evicted first); versions with
+/// the same seed and world settings share one plan, kept by `(seed, settings hash)`. A quarter
+/// of the budget is the versions' scene inputs (each counted as its scene document's JSON
+/// length: approximate), three quarters the plans
+/// ([`super::plans::PLAN_BYTES_ESTIMATE`] each). Concurrent misses of one version, or of one
+/// plan, build it once.
 struct VersionPlans {
-    capacity: usize,
-    entries: Mutex<Vec<PlanEntry>>,
-    clock: AtomicU64,
-    hits: AtomicU64,
-    misses: AtomicU64,
+    versions: Memo<(String, u64), VersionEntry>,
+    shared: Memo<(u64, [u8; 32]), Arc<WorldPlan>>,
 }
 
 impl std::fmt::Debug for VersionPlans {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("VersionPlans")
-            .field("capacity", &self.capacity)
-            .finish_non_exhaustive()
+            .field("versions", &self.versions)
+            .field("shared", &self.shared)
+            .finish()
     }
 }
 
 impl VersionPlans {
-    fn new(capacity: usize) -> Self {
+    fn new(budget_bytes: usize) -> Self {
         Self {
-            capacity: capacity.max(1),
-            entries: Mutex::new(Vec::new()),
-            clock: AtomicU64::new(0),
-            hits: AtomicU64::new(0),
-            misses: AtomicU64::new(0),
+            versions: Memo::new(budget_bytes / 4, |k: &(String, u64), e: &VersionEntry| {
+                k.0.capacity() + e.bytes
+            }),
+            shared: Memo::new(budget_bytes - budget_bytes / 4, |_, _| {
+                super::plans::PLAN_BYTES_ESTIMATE
+            }),
         }
-    }
-
-    fn entries(&self) -> std::sync::MutexGuard<'_, Vec<PlanEntry>> {
-        self.entries.lock().unwrap_or_else(|p| p.into_inner())
     }
 
     /// The cached view of `(world, version)`, counted as a hit when found.
     fn lookup(&self, world: &str, version: u64) -> Option<Arc<WorldView>> {
-        let now = self.clock.fetch_add(1, Ordering::Relaxed);
-        let mut entries = self.entries();
-        let e = entries
-            .iter_mut()
-            .find(|e| e.world == world && e.version == version)?;
-        e.used = now;
-        self.hits.fetch_add(1, Ordering::Relaxed);
-        Some(e.view.clone())
+        Some(self.versions.lookup(&(world.to_owned(), version))?.view)
     }
 
     async fn get(
@@ -178,68 +187,47 @@ impl VersionPlans {
         meta: &WorldMeta,
         version: u64,
     ) -> Result<Arc<WorldView>, AppError> {
-        if let Some(found) = self.lookup(&meta.id, version) {
-            return Ok(found);
-        }
-        let now = self.clock.fetch_add(1, Ordering::Relaxed);
-        self.misses.fetch_add(1, Ordering::Relaxed);
-        let doc = store
-            .scene_at(&meta.id, version)
-            .await
-            .map_err(store_error)?;
-        let scene = Scene::from_value(&doc).map_err(|e| {
-            tracing::error!(world = %meta.id, version, "stored scene is invalid: {e}");
-            AppError::internal("the stored scene is invalid")
-        })?;
-        let inputs = Arc::new(SceneInputs::new(&scene));
-        let params_hash =
-            *blake3::hash(&serde_json::to_vec(&scene.world).unwrap_or_default()).as_bytes();
-        let shared = self
-            .entries()
-            .iter()
-            .find(|e| e.seed == meta.seed && e.params_hash == params_hash)
-            .map(|e| e.view.plan.clone());
-        let plan = match shared {
-            Some(p) => p,
-            None => {
-                let seed = meta.seed;
-                let built = tokio::task::spawn_blocking(move || WorldPlan::new(seed, scene.world))
+        let key = (meta.id.clone(), version);
+        let (e, _) = self
+            .versions
+            .try_get_or_compute_async(key, || async {
+                let doc = store
+                    .scene_at(&meta.id, version)
                     .await
-                    .map_err(|e| {
-                        AppError::internal(format!("building the world plan failed: {e}"))
-                    })?
-                    .map_err(|e| AppError::internal(format!("invalid world settings: {e}")))?;
-                Arc::new(built)
-            }
-        };
-        let mut entries = self.entries();
-        if let Some(e) = entries
-            .iter_mut()
-            .find(|e| e.world == meta.id && e.version == version)
-        {
-            e.used = now;
-            return Ok(e.view.clone());
-        }
-        if entries.len() >= self.capacity {
-            if let Some(oldest) = entries
-                .iter()
-                .enumerate()
-                .min_by_key(|(_, e)| e.used)
-                .map(|(i, _)| i)
-            {
-                entries.swap_remove(oldest);
-            }
-        }
-        let view = Arc::new(WorldView::stored(&meta.id, version, plan, inputs));
-        entries.push(PlanEntry {
-            world: meta.id.clone(),
-            version,
-            seed: meta.seed,
-            params_hash,
-            view: view.clone(),
-            used: now,
-        });
-        Ok(view)
+                    .map_err(store_error)?;
+                let scene = Scene::from_value(&doc).map_err(|e| {
+                    tracing::error!(world = %meta.id, version, "stored scene is invalid: {e}");
+                    AppError::internal("the stored scene is invalid")
+                })?;
+                let inputs = Arc::new(SceneInputs::new(&scene));
+                let bytes = std::mem::size_of::<SceneInputs>()
+                    + serde_json::to_vec(&doc).map_or(0, |v| v.len());
+                let params_hash =
+                    *blake3::hash(&serde_json::to_vec(&scene.world).unwrap_or_default()).as_bytes();
+                let seed = meta.seed;
+                let (plan, _) =
+                    self.shared
+                        .try_get_or_compute_async((seed, params_hash), || async move {
+                            let built = tokio::task::spawn_blocking(move || {
+                                WorldPlan::new(seed, scene.world)
+                            })
+                            .await
+                            .map_err(|e| {
+                                AppError::internal(format!("building the world plan failed: {e}"))
+                            })?
+                            .map_err(|e| {
+                                AppError::internal(format!("invalid world settings: {e}"))
+                            })?;
+                            Ok::<_, AppError>(Arc::new(built))
+                        })
+                        .await?;
+                Ok::<_, AppError>(VersionEntry {
+                    view: Arc::new(WorldView::stored(&meta.id, version, plan, inputs)),
+                    bytes,
+                })
+            })
+            .await?;
+        Ok(e.view)
     }
 }
 
