@@ -1,6 +1,10 @@
 //! `strata bench realism` (issue 17, item 6): how much the world looks like terrain, measured
 //! side by side with real DEMs.
 //!
+//! Why one file of about 780 lines: it is the benchmark's one runner, and the named areas, the
+//! peers' DEMs, the world's figures and the table and JSON lines are read in the order the report
+//! prints them.
+//!
 //! For named areas of a world, each at 8, 64 and 512 m spacing (LOD 3, 6 and 9 with the default
 //! 1 m cell), the benchmark synthesises 8 × 8 tiles (512 × 512 samples; [`sample`]) and prints
 //! the statistics of [`metrics`] (their definitions and units are there): slope median and 95th
