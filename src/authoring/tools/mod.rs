@@ -17,36 +17,26 @@
 //! - [`sketch`]: issue 17's coarse sketch (`sketch`).
 //! - [`basis`]: Schneider §3 basis functions (`basis`).
 //!
-//! The algorithms behind them (the [`crate::authoring::raster::Canvas`] methods) live in the modules of
-//! [`crate::authoring`] named in each family's documentation.
+//! The algorithms behind them (the [`crate::authoring::raster::Canvas`] methods) live in the
+//! modules of [`crate::authoring`] named in each family's documentation.
 //!
 //! # Adding a tool
 //!
 //! A new tool is one new file and one registration line:
 //!
-//! 1. `src/authoring/tools/<family>.rs` (a new family, or a tool added to an existing family's
-//!    file): a parameter struct deriving `Clone, Debug, PartialEq, Serialize, Deserialize` with
+//! 1. `src/authoring/tools/<family>.rs`: a parameter struct named as the tool (`MyTool`)
+//!    deriving `Clone, Debug, PartialEq, Serialize, Deserialize` with
 //!    `#[serde(deny_unknown_fields)]`, whose fields are the operation's JSON fields, and
 //!    `impl Tool` for it: [`Tool::check`] with the [`Check`] helpers, [`Tool::apply`] on the
 //!    [`Raster`] (its canvas, the world plan, the heights solved so far), and
-//!    [`Tool::droplet_steps`] or [`Tool::keeps_solution`] where the defaults do not hold. A new
-//!    family file also needs its `pub mod <family>;` below.
-//! 2. One line in the `tools!` list below, `VariantName(family::Params),`: the variant's name
-//!    in snake case is the `op` tag (`MyTool` is `"op": "my_tool"`). New tools go last, so the
-//!    list of expected tags in serde's "unknown variant" message only grows.
+//!    [`Tool::droplet_steps`] or [`Tool::keeps_solution`] where the defaults do not hold.
+//! 2. One line at the end of the `tools!` list below: `mod my_family: MyTool,` declares the new
+//!    file's module and registers the tool (a further tool of an existing family's file is
+//!    `my_family: MyOtherTool,`, without `mod`). The tool's name in snake case is its `op` tag
+//!    (`MyTool` is `"op": "my_tool"`). New tools go last, so the list of expected tags in serde's
+//!    "unknown variant" message only grows.
 //!
 //! `api/scene.schema.json` describes the document and gets the new operation's fields.
-
-pub mod basis;
-pub mod brush;
-pub mod elevation;
-pub mod erosion;
-pub mod fitting;
-pub mod landform;
-pub mod paste;
-pub mod sketch;
-pub mod slope;
-pub mod tensor;
 
 pub use super::region::Raster;
 pub use elevation::Shape;
@@ -86,18 +76,26 @@ pub trait Tool {
     fn apply(&self, r: &mut Raster) -> Result<(), RegionError>;
 }
 
-/// Registers the tools: the [`Op`] enum (one newtype variant per tool, tagged by `op`) and its
-/// dispatch to [`Tool`].
+/// Registers the tools: declares each family's module (an entry with `mod`), and makes the
+/// [`Op`] enum (one newtype variant per tool, named as its parameter type and tagged by `op`)
+/// and its dispatch to [`Tool`], in the order of the list.
 macro_rules! tools {
-    ($($variant:ident($params:ty),)*) => {
+    (@munch [$($done:tt)*] mod $family:ident: $name:ident, $($rest:tt)*) => {
+        pub mod $family;
+        tools!(@munch [$($done)* $family::$name] $($rest)*);
+    };
+    (@munch [$($done:tt)*] $family:ident: $name:ident, $($rest:tt)*) => {
+        tools!(@munch [$($done)* $family::$name] $($rest)*);
+    };
+    (@munch [$($family:ident::$name:ident)*]) => {
         /// One tool operation: `op` names the tool (the variant in snake case), the other fields
         /// are its parameters.
         #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
         #[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
         pub enum Op {
             $(
-                #[doc = concat!("The tool of `", stringify!($params), "`.")]
-                $variant($params),
+                #[doc = concat!("The tool of `", stringify!($family), "::", stringify!($name), "`.")]
+                $name($family::$name),
             )*
         }
 
@@ -105,39 +103,42 @@ macro_rules! tools {
             /// The operation's tool.
             pub fn tool(&self) -> &dyn Tool {
                 match self {
-                    $(Op::$variant(params) => params,)*
+                    $(Op::$name(params) => params,)*
                 }
             }
         }
     };
+    ($($entries:tt)*) => {
+        tools!(@munch [] $($entries)*);
+    };
 }
 
 tools! {
-    Elevation(elevation::Elevation),
-    Freeze(elevation::Freeze),
-    Amplify(brush::Amplify),
-    Crest(landform::Crest),
-    Noise(brush::Noise),
-    SlopePoint(slope::SlopePoint),
-    SlopeCurve(slope::SlopeCurve),
-    Cliff(landform::Cliff),
-    River(landform::River),
-    FreeCrest(landform::FreeCrest),
-    Ravine(landform::Ravine),
-    Fault(landform::Fault),
-    MountainRange(landform::MountainRange),
-    Mesa(landform::Mesa),
-    CopyPaste(paste::CopyPaste),
-    DirectionalTensor(tensor::DirectionalTensor),
-    SkeletonTensor(tensor::SkeletonTensor),
-    StrokeTensor(tensor::StrokeTensor),
-    Erosion(erosion::Erosion),
-    HydraulicErosion(erosion::HydraulicErosion),
-    Contours(fitting::Contours),
-    Network(fitting::Network),
-    Regularize(fitting::Regularize),
-    Sketch(sketch::Sketch),
-    Basis(basis::Basis),
+    mod elevation: Elevation,
+    elevation: Freeze,
+    mod brush: Amplify,
+    mod landform: Crest,
+    brush: Noise,
+    mod slope: SlopePoint,
+    slope: SlopeCurve,
+    landform: Cliff,
+    landform: River,
+    landform: FreeCrest,
+    landform: Ravine,
+    landform: Fault,
+    landform: MountainRange,
+    landform: Mesa,
+    mod paste: CopyPaste,
+    mod tensor: DirectionalTensor,
+    tensor: SkeletonTensor,
+    tensor: StrokeTensor,
+    mod erosion: Erosion,
+    erosion: HydraulicErosion,
+    mod fitting: Contours,
+    fitting: Network,
+    fitting: Regularize,
+    mod sketch: Sketch,
+    mod basis: Basis,
 }
 
 /// What a tool's [`Tool::check`] sees: the operation's index and the region, with the checks
