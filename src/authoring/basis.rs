@@ -25,8 +25,10 @@
 use super::grid::RegionGrid;
 use super::raster::Canvas;
 use super::sketch::{taper, LowPass, MAX_BLEND_M, MAX_SKETCH_M};
-use super::spec::{err, finite_in, Op, SpecError, MAX_ELEVATION_M};
+use super::spec::{err, finite_in, SpecError, MAX_ELEVATION_M};
 use super::spec_tools::MAX_HEIGHTMAP_BASE64;
+use super::tools::basis::Basis as BasisOp;
+use super::tools::Op;
 use crate::terrain::WorldPlan;
 
 /// Most pixels a side of a basis image.
@@ -122,43 +124,6 @@ pub fn decode(png_base64: &str) -> Result<Basis, String> {
     })
 }
 
-/// The fields of a `basis` operation.
-#[derive(Clone, Copy, Debug)]
-pub struct BasisOp<'a> {
-    /// The image, base64.
-    pub png_base64: &'a str,
-    /// Period of the tiling, metres.
-    pub period_m: f64,
-    /// RMS of the texture, metres.
-    pub amplitude_m: f64,
-    /// Weight at full strength, `0..=1`.
-    pub weight: f64,
-    /// Width of the taper inside the bbox edge, metres.
-    pub blend_m: f64,
-}
-
-impl<'a> BasisOp<'a> {
-    /// The `basis` operation's fields, if `op` is one.
-    pub fn of(op: &'a Op) -> Option<Self> {
-        match op {
-            Op::Basis {
-                png_base64,
-                period_m,
-                amplitude_m,
-                weight,
-                blend_m,
-            } => Some(Self {
-                png_base64,
-                period_m: *period_m,
-                amplitude_m: *amplitude_m,
-                weight: *weight,
-                blend_m: *blend_m,
-            }),
-            _ => None,
-        }
-    }
-}
-
 /// Validates a `basis` operation at `at` (`/ops/0`) of a region with bbox `min`..`max` and
 /// sample spacing `spacing_m`.
 pub fn validate(
@@ -194,7 +159,7 @@ pub fn validate(
     )?;
     finite_in(format!("{at}/weight"), op.weight, 0.0, 1.0)?;
     finite_in(format!("{at}/blend_m"), op.blend_m, 0.0, MAX_BLEND_M)?;
-    decode(op.png_base64)
+    decode(&op.png_base64)
         .map(|_| ())
         .map_err(|e| err(format!("{at}/png_base64"), e))
 }
@@ -218,7 +183,13 @@ impl Basis {
 /// The sum `W(p)` of the `basis` operations' weights `weight · taper` at the grid's samples,
 /// or `None` when the region has none.
 pub fn total_weight(ops: &[Op], g: &RegionGrid) -> Option<Vec<f64>> {
-    let bases: Vec<BasisOp> = ops.iter().filter_map(BasisOp::of).collect();
+    let bases: Vec<&BasisOp> = ops
+        .iter()
+        .filter_map(|op| match op {
+            Op::Basis(b) => Some(b),
+            _ => None,
+        })
+        .collect();
     if bases.is_empty() {
         return None;
     }

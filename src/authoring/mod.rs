@@ -26,13 +26,19 @@
 //!   world position and the region;
 //! - coarser LODs keep their fewer octaves and still show the edit.
 //!
-//! Tools ([`spec::Op`]) are rasterised on the grid in document order ([`raster`]): each either
-//! adds to the target gradient of `d` (soft: the least-squares target) or fixes samples (hard).
-//! A hard constraint beats any conflicting soft one because fixed samples are not unknowns.
+//! Tools ([`Op`]) are rasterised on the grid in document order ([`region::solve_region`]): each
+//! either adds to the target gradient of `d` (soft: the least-squares target) or fixes samples
+//! (hard). A hard constraint beats any conflicting soft one because fixed samples are not
+//! unknowns.
 //!
 //! # Tools by module
 //!
-//! - [`raster`]: elevation, freeze, amplify, crest and noise (§4.1, §4.4).
+//! - [`tools`]: every tool's parameters, validation, cost and rasterisation behind the [`Tool`]
+//!   trait, one module per family, registered in [`Op`]; how to add a tool is in its docs. The
+//!   modules below are the algorithms the tools call.
+//! - [`spec`]: the region element (bbox, samples, operations), parsed, validated and costed.
+//! - [`region`]: the solve (the [`region::Raster`] the tools work on) and the displacement.
+//! - [`raster`]: the canvas, and elevation, freeze, amplify, crest and noise (§4.1, §4.4).
 //! - [`landform`]: the rest of Fig. 4 (cliff, river, free crest, ravine, fault) and the Fig. 8
 //!   composites (mountain range, mesa).
 //! - [`tensor`]: §4.3 tensor maps (directional, skeleton, stroke-aligned).
@@ -66,11 +72,9 @@ pub mod spec;
 pub mod spec_tools;
 pub mod stats;
 pub mod tensor;
-#[cfg(test)]
-mod tests;
-#[cfg(test)]
-mod tests_tools;
+pub mod tools;
 
 pub use grid::{Procedural, RegionGrid};
 pub use region::{solve_region, Displacement, RegionError};
-pub use spec::{Op, RegionSpec, Shape, MAX_OPS, MAX_POINTS, SAMPLE_CHOICES};
+pub use spec::{RegionSpec, MAX_OPS, MAX_POINTS, SAMPLE_CHOICES};
+pub use tools::{Op, Shape, Tool};

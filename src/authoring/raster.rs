@@ -385,3 +385,47 @@ impl Canvas {
         });
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn near_polyline_finds_what_a_full_scan_finds() {
+        let n = 33;
+        let grid = RegionGrid {
+            origin: [10.0, 20.0],
+            spacing_m: 0.75,
+            n,
+            max: [34.0, 44.0],
+        };
+        let c = Canvas::new(grid, vec![0.0; n * n]);
+        let line = [
+            [12.3, 21.1],
+            [30.2, 25.7],
+            [18.0, 40.9],
+            [18.0, 40.9],
+            [29.5, 43.0],
+        ];
+        for radius in [0.0, 0.3, 0.75, 2.6] {
+            let fast = c.near_polyline(&line, radius);
+            let full: Vec<_> = (0..n * n)
+                .filter_map(|v| {
+                    let (d, s, t) = polyline_distance(&line, grid.position(v % n, v / n));
+                    (d <= radius).then_some((v, d, s, t))
+                })
+                .collect();
+            if full.is_empty() {
+                assert_eq!(
+                    fast.len(),
+                    1,
+                    "the nearest sample when none is within {radius}"
+                );
+            } else {
+                assert_eq!(fast, full, "radius {radius}");
+            }
+        }
+        // A point far outside the grid still gets its nearest sample.
+        assert_eq!(c.near_polyline(&[[-100.0, 20.0]], 1.0)[0].0, 0);
+    }
+}

@@ -1,15 +1,9 @@
-//! Solving a region: rasterise its operations, reconstruct the displacement, and apply it to
-//! lattice heights.
+//! Solving a region: rasterise its operations (each a [`super::tools`] tool, on a [`Raster`]),
+//! reconstruct the displacement, and apply it to lattice heights.
 
-use super::basis::{self, BasisOp};
 use super::grid::{Procedural, RegionGrid};
-use super::hydraulic::{droplet_seed, Droplets};
-use super::paste::{PasteSource, Placement, Warp};
 use super::raster::Canvas;
-use super::sketch::decode;
-use super::spec::{Op, RegionSpec, Shape};
-use super::spec_tools::resolve_elevations;
-use super::tensor::orientation;
+use super::spec::RegionSpec;
 use crate::terrain::lattice::Window;
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
@@ -79,294 +73,127 @@ impl Displacement {
     }
 }
 
+/// A region being rasterised: what a tool's [`super::tools::Tool::apply`] works on (the canvas, the world,
+/// the operation's index) and the solver behind [`Raster::solved`].
+pub struct Raster<'a> {
+    /// The world.
+    pub plan: &'a WorldPlan,
+    /// The region.
+    pub spec: &'a RegionSpec,
+    /// Index of the operation being applied.
+    pub index: usize,
+    /// The grid's constraints and target gradient so far.
+    pub canvas: Canvas,
+    /// The `basis` operations' summed weights at the samples, computed by the first of them.
+    pub basis_total: Option<Vec<f64>>,
+    gspec: GridSpec,
+    solver: Solver,
+    /// `d` solved from the canvas (0 before any solve).
+    current: Vec<f32>,
+    /// Whether `current` solves the canvas as it is.
+    solved: bool,
+    /// Whether no solve ran yet (the next one starts cold).
+    first: bool,
+    /// Finest-level cycles of the last solve.
+    cycles: usize,
+}
+
+impl std::fmt::Debug for Raster<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Raster")
+            .field("region", &self.spec.id)
+            .field("index", &self.index)
+            .field("solved", &self.solved)
+            .field("cycles", &self.cycles)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<'a> Raster<'a> {
+    fn new(plan: &'a WorldPlan, spec: &'a RegionSpec) -> Result<Self, RegionError> {
+        let grid = RegionGrid::of(spec);
+        let base = Procedural::sample(plan, &grid).heights;
+        let canvas = Canvas::new(grid, base);
+        let gspec = GridSpec::new(grid.n, grid.n, grid.spacing_m)?;
+        let solver = Solver::new(gspec, SolveOptions::default())?;
+        Ok(Self {
+            plan,
+            spec,
+            index: 0,
+            canvas,
+            basis_total: None,
+            gspec,
+            solver,
+            current: vec![0.0f32; grid.n * grid.n],
+            solved: true,
+            first: true,
+            cycles: 0,
+        })
+    }
+
+    /// Reconstructs `d` from the canvas as it is (cold the first time, warm after).
+    fn solve(&mut self) -> Result<(), RegionError> {
+        let c = &self.canvas;
+        let problem = Problem {
+            grid: self.gspec,
+            gx: &c.gx,
+            gz: &c.gz,
+            fixed: &c.fixed,
+            heights: &c.d,
+        };
+        let start = if self.first { Start::Cold } else { Start::Warm };
+        let report = self.solver.solve(&problem, start)?;
+        self.solver.heights_into(&mut self.current)?;
+        self.cycles = report.cycles;
+        self.first = false;
+        self.solved = true;
+        Ok(())
+    }
+
+    /// The canvas and the displacement solved from what precedes this operation, solving first
+    /// unless nothing changed since the last solve.
+    ///
+    /// # Errors
+    /// [`RegionError::Solver`] if the solver refuses the problem.
+    pub fn solved(&mut self) -> Result<(&mut Canvas, &[f32]), RegionError> {
+        if !self.solved {
+            self.solve()?;
+        }
+        Ok((&mut self.canvas, &self.current))
+    }
+
+    /// This operation's input could not be used, for `message`.
+    pub fn refuse(&self, message: String) -> RegionError {
+        RegionError::Source {
+            op: self.index,
+            message,
+        }
+    }
+}
+
 /// Solves a region of the world `plan`: samples the procedural heights, rasterises the
-/// operations in order (a freeze brush solves what precedes it first) and reconstructs `d`.
+/// operations in order (a tool reading the solved heights, like a freeze brush, solves what
+/// precedes it first) and reconstructs `d`.
 ///
 /// # Errors
-/// [`RegionError`] if the solver refuses the problem.
+/// [`RegionError`] if the solver refuses the problem or an operation's input is unusable.
 pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement, RegionError> {
-    let grid = RegionGrid::of(spec);
-    let base = Procedural::sample(plan, &grid).heights;
-    let mut canvas = Canvas::new(grid, base);
-    let gspec = GridSpec::new(grid.n, grid.n, grid.spacing_m)?;
-    let mut solver = Solver::new(gspec, SolveOptions::default())?;
-    let mut current = vec![0.0f32; grid.n * grid.n];
-    let mut solved = true;
-    let mut cycles = 0;
-    let mut solve =
-        |c: &Canvas, current: &mut Vec<f32>, cold: bool| -> Result<usize, RegionError> {
-            let problem = Problem {
-                grid: gspec,
-                gx: &c.gx,
-                gz: &c.gz,
-                fixed: &c.fixed,
-                heights: &c.d,
-            };
-            let report = solver.solve(&problem, if cold { Start::Cold } else { Start::Warm })?;
-            solver.heights_into(current)?;
-            Ok(report.cycles)
-        };
-    let mut first = true;
-    let mut basis_total: Option<Vec<f64>> = None;
+    let mut r = Raster::new(plan, spec)?;
     for (index, op) in spec.ops.iter().enumerate() {
-        match op {
-            Op::Elevation {
-                shape,
-                elevation_m,
-                elevations_m,
-                radius_m,
-            } => {
-                let es = match (elevation_m, elevations_m) {
-                    (_, Some(es)) => es.clone(),
-                    (Some(e), None) => vec![*e],
-                    (None, None) => vec![0.0],
-                };
-                match shape {
-                    Shape::Point(p) => canvas.elevation(&[*p], &es, *radius_m),
-                    Shape::Polyline(pts) => canvas.elevation(pts, &es, *radius_m),
-                    Shape::Region(poly) => canvas.elevation_region(poly, es[0], *radius_m),
-                }
-            }
-            Op::Freeze { center, radius_m } => {
-                if !solved {
-                    cycles = solve(&canvas, &mut current, first)?;
-                    first = false;
-                }
-                canvas.freeze(*center, *radius_m, &current);
-            }
-            Op::Amplify {
-                center,
-                radius_m,
-                factor,
-            } => canvas.amplify(*center, *radius_m, *factor),
-            Op::Crest {
-                points,
-                elevation_m,
-                slope_deg,
-                width_m,
-            } => canvas.crest(points, *elevation_m, *slope_deg, *width_m),
-            Op::Noise {
-                center,
-                radius_m,
-                amplitude_m,
-                wavelength_m,
-                seed,
-                anisotropy,
-                angle_deg,
-            } => {
-                let m = orientation(angle_deg.to_radians());
-                let k = *anisotropy;
-                canvas.noise(
-                    plan.seed,
-                    *center,
-                    *radius_m,
-                    *amplitude_m,
-                    *wavelength_m,
-                    *seed,
-                    [[k * m[0][0], k * m[0][1]], [k * m[1][0], k * m[1][1]]],
-                )
-            }
-            Op::SlopePoint {
-                center,
-                radius_m,
-                slope_deg,
-                direction_deg,
-            } => canvas.slope_point(*center, *radius_m, *slope_deg, *direction_deg),
-            Op::SlopeCurve {
-                points,
-                slope_left_deg,
-                slope_right_deg,
-                width_m,
-            } => canvas.slope_curve(points, *slope_left_deg, *slope_right_deg, *width_m),
-            Op::Cliff {
-                points,
-                top_elevation_m,
-                slope_deg,
-                width_m,
-            } => canvas.cliff(points, *top_elevation_m, *slope_deg, *width_m),
-            Op::River {
-                points,
-                bed_elevation_m,
-                bed_width_m,
-                bank_slope_deg,
-                bank_width_m,
-            } => canvas.river(
-                points,
-                *bed_elevation_m,
-                *bed_width_m,
-                *bank_slope_deg,
-                *bank_width_m,
-            ),
-            Op::FreeCrest {
-                points,
-                slope_deg,
-                width_m,
-            } => canvas.free_crest(points, 1.0, *slope_deg, *width_m),
-            Op::Ravine {
-                points,
-                slope_deg,
-                width_m,
-            } => canvas.free_crest(points, -1.0, *slope_deg, *width_m),
-            Op::Fault {
-                points,
-                throw_m,
-                width_m,
-            } => canvas.fault(points, *throw_m, *width_m),
-            Op::MountainRange {
-                points,
-                height_m,
-                width_m,
-                seed,
-            } => canvas.mountain_range(points, *height_m, *width_m, plan.seed, *seed),
-            Op::Mesa {
-                center,
-                radius_m,
-                elevation_m,
-                slope_deg,
-                cliff_width_m,
-            } => canvas.mesa(*center, *radius_m, *elevation_m, *slope_deg, *cliff_width_m),
-            Op::CopyPaste {
-                source_min,
-                source_max,
-                target,
-                rotation_deg,
-                scale,
-                source_seed,
-                heightmap,
-                warp_m,
-                warp_wavelength_m,
-                warp_seed,
-            } => {
-                let spacing = grid.spacing_m / scale;
-                let source_err = |message: String| RegionError::Source {
-                    op: index,
-                    message: format!("copy-paste source: {message}"),
-                };
-                let src = match (heightmap, source_seed) {
-                    (Some(h), _) => {
-                        let img = h.decode().map_err(source_err)?;
-                        PasteSource::from_image(
-                            &img,
-                            h.spacing_m,
-                            *source_min,
-                            *source_max,
-                            spacing,
-                        )
-                    }
-                    (None, Some(seed)) => {
-                        let other = WorldPlan::new(*seed, plan.params.clone())
-                            .map_err(|e| source_err(e.to_string()))?;
-                        PasteSource::sample(&other, *source_min, *source_max, spacing)
-                    }
-                    (None, None) => PasteSource::sample(plan, *source_min, *source_max, spacing),
-                };
-                let at = Placement {
-                    target: *target,
-                    rotation_deg: *rotation_deg,
-                    scale: *scale,
-                    warp: Warp::new(plan.seed, *warp_seed, *warp_m, *warp_wavelength_m),
-                };
-                canvas.paste(&src, &at);
-            }
-            Op::DirectionalTensor {
-                center,
-                radius_m,
-                angle_deg,
-                strength,
-            } => canvas.directional_tensor(*center, *radius_m, *angle_deg, *strength),
-            Op::SkeletonTensor {
-                points,
-                radius_m,
-                angle_deg,
-                strength,
-            } => canvas.skeleton_tensor(points, *radius_m, *angle_deg, *strength),
-            Op::StrokeTensor {
-                points,
-                radius_m,
-                strength,
-            } => canvas.stroke_tensor(points, *radius_m, *strength),
-            Op::Erosion {
-                center,
-                radius_m,
-                talus_deg,
-                iterations,
-            } => {
-                if !solved {
-                    cycles = solve(&canvas, &mut current, first)?;
-                    first = false;
-                }
-                canvas.erode(*center, *radius_m, *talus_deg, *iterations, &current);
-            }
-            Op::HydraulicErosion {
-                center,
-                radius_m,
-                droplets,
-                steps,
-                erosion_rate,
-                seed,
-            } => {
-                if !solved {
-                    cycles = solve(&canvas, &mut current, first)?;
-                    first = false;
-                }
-                let d = Droplets {
-                    count: *droplets,
-                    steps: *steps,
-                    erosion_rate: *erosion_rate,
-                    seed: droplet_seed(plan.seed, *seed),
-                };
-                canvas.hydraulic_erode(*center, *radius_m, &d, &current);
-            }
-            Op::Contours { lines, detail } => canvas.contours(lines, *detail),
-            Op::Network {
-                nodes,
-                edges,
-                detail,
-            } => {
-                let elevations =
-                    resolve_elevations(nodes, edges).map_err(|k| RegionError::Source {
-                        op: index,
-                        message: format!("node {k} has no elevation"),
-                    })?;
-                canvas.network(nodes, &elevations, edges, *detail)
-            }
-            Op::Regularize {} => {
-                if !solved {
-                    cycles = solve(&canvas, &mut current, first)?;
-                    first = false;
-                }
-                canvas.regularize(&current);
-            }
-            Op::Sketch {
-                png_base64,
-                min_m,
-                max_m,
-                blend_m,
-            } => {
-                let source_err = |message: String| RegionError::Source {
-                    op: index,
-                    message: format!("sketch: {message}"),
-                };
-                let img = decode(png_base64, *min_m, *max_m).map_err(source_err)?;
-                canvas.sketch(plan, &img, *blend_m);
-            }
-            Op::Basis { .. } => {
-                let b = BasisOp::of(op).expect("a basis op");
-                let img = basis::decode(b.png_base64).map_err(|message| RegionError::Source {
-                    op: index,
-                    message: format!("basis: {message}"),
-                })?;
-                let total = basis_total.get_or_insert_with(|| {
-                    basis::total_weight(&spec.ops, &grid).expect("a basis op")
-                });
-                canvas.basis(plan, &img, &b, total);
-            }
-        }
-        solved = matches!(op, Op::Freeze { .. });
+        r.index = index;
+        let tool = op.tool();
+        tool.apply(&mut r)?;
+        r.solved = tool.keeps_solution();
     }
-    if !spec.ops.is_empty() && !solved {
-        cycles = solve(&canvas, &mut current, first)?;
+    if !spec.ops.is_empty() && !r.solved {
+        r.solve()?;
     }
+    let Raster {
+        canvas,
+        mut current,
+        cycles,
+        ..
+    } = r;
     // Fixed samples take their imposed values exactly (the solver keeps them, this makes it
     // independent of how it stores them).
     for (v, fixed) in canvas.fixed.iter().enumerate() {
@@ -376,7 +203,7 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
     }
     Ok(Displacement {
         id: spec.id.clone(),
-        grid,
+        grid: canvas.grid,
         d: current,
         base: canvas.base,
         fixed: canvas.fixed,

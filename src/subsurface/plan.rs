@@ -1,5 +1,9 @@
 //! §4.2: the layer stack (Eq. 1–4) as a function of the world seed, and veins and caves (Eq. 5–6)
 //! on world lattices.
+//!
+//! Why one file of about 690 lines (40 of tests): the layer stack and the vein and cave elements
+//! are all drawn by `SubsurfacePlan` from the seed's numbered `Draws` streams, and the geometry
+//! helpers at the end (`outline`, `border_distance`, `inside`) serve only those elements.
 
 use super::config::{Range, SubsurfaceConfig};
 use crate::terrain::hash::{hash2, mix32, stream, unit};

@@ -1,5 +1,8 @@
 //! World settings: everything the procedural world function depends on besides the seed.
 //!
+//! Why one file of slightly over 600 lines: the settings types, their defaults and their validation
+//! (every error naming its field) are the one schema of the `world` document.
+//!
 //! Units are in the field names' docs: metres, degrees, or plain numbers. `WorldParams::default()`
 //! is the default scene's world: four biomes ordered from pole to equator, the paper's warping
 //! constants and a 64 m biome blur (129 samples at LOD 0; `strata bench tiles` uses the paper's 35).

@@ -3,6 +3,11 @@
 //! McCormick & Thomas, *The fast adaptive composite grid method for elliptic equations*, Math.
 //! Comp. 46, 1986) on our Galerkin hierarchy.
 //!
+//! Why one file of about 840 lines: the windows, their precomputed transfers and the composite
+//! cycle described below are one algorithm over the private `Win` type, whose invariant (a window
+//! covers the finer one and its ring) every part relies on; splitting it would expose those
+//! internals to the rest of the solver.
+//!
 //! After an edit, the solver knows where the right-hand side, the fixed heights or the mask
 //! changed (a rectangle of the finest level, see [`super::Solver`]). The correction `E` that
 //! takes the previous solution to the new one solves `A E = r₀`, `r₀` the residual of the previous

@@ -1,5 +1,9 @@
 //! The multigrid driver: full-multigrid start, V- or W-cycles with residual correction, the
 //! relative-residual stopping rule, warm starts, and the per-solve report.
+//!
+//! Why one file of about 800 lines: it is the `Solver` type, whose loading, cold and warm starts,
+//! full-multigrid start, cycle loop and conjugate-gradient acceleration all work on its private
+//! level hierarchy and scratch buffers.
 
 use super::galerkin::coarsen_rows;
 use super::grid::{GridSpec, Split};

@@ -2,6 +2,11 @@
 //! the residual, full-weighting restriction (fused with the residual and its norm) and bilinear
 //! prolongation. `shaders/poisson.wgsl` holds their WGSL twins.
 //!
+//! Why one file of about 1,000 lines (850 of kernels, the rest tests): each kernel is the CPU half
+//! of a WGSL twin that must evaluate the same expressions in the same order, and all of them share
+//! the private row, band and colour helpers below; kept together, the order stated here can be
+//! checked against `shaders/poisson.wgsl` in one place.
+//!
 //! Every kernel works row by row on contiguous slices of the colour-split arrays
 //! ([`super::grid`]); rows are distributed over rayon's threads in bands when a level has at least
 //! [`PARALLEL_MIN_SAMPLES`] samples. Each output value is a fixed expression of its inputs (no

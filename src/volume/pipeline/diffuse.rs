@@ -1,5 +1,9 @@
 //! Guidance-field and noise-field diffusion (Becher §4.3–4.4), with an O(n) solver (§8).
 //!
+//! Why one file of about 770 lines (70 of tests): the Perona–Malik sweep with its wide and narrow
+//! kernels, which must agree bit for bit, and the Laplace sweep share the row layout of `rows` and
+//! the fixed-sample rule of `keep_fixed`, and the energies below measure those sweeps.
+//!
 //! **The sweep** is the paper's discretised anisotropic diffusion (Perona & Malik 1990):
 //!
 //! `N' = N + ⅙ (c_E [∂N/∂x]⁺ + c_W [∂N/∂x]⁻ + c_U [∂N/∂y]⁺ + c_D [∂N/∂y]⁻ + c_N [∂N/∂z]⁺ + c_S [∂N/∂z]⁻)`

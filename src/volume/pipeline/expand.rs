@@ -6,6 +6,10 @@
 //! ([`expand_scene`]; `region::generate` calls it when `PipelineParams::expand` is set), so `N`
 //! matches them.
 //!
+//! Why one file of about 830 lines (200 of tests): the bitangent smoothing, the tracing of branches
+//! and the rebuild of a curve are the stages of one §5.1 expansion over the shared `Guidance` and
+//! `Branch` types.
+//!
 //! # The smooth bitangent field (§5.1)
 //!
 //! `B` is sign-free: `b` and `−b` describe the same ribbon direction, so diffusing it like `N`

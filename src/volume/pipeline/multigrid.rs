@@ -2,6 +2,10 @@
 //! of thousands of Jacobi sweeps): Laplace's equation `Σ_nb (u − u_nb) = 0` at the free samples,
 //! Dirichlet values at the fixed ones, homogeneous Neumann borders.
 //!
+//! Why one file of about 850 lines: the hierarchy, its sweeps and transfers, the cascade and the
+//! V-cycles below are one solver on the private `Level` type (edge weights, sinks, dead samples),
+//! and the fixed order of its sums is what keeps the result independent of the thread count.
+//!
 //! **Hierarchy.** Level `l + 1` halves level `l` per axis (cell-centred: coarse sample `X` covers
 //! fine samples `2X` and `2X + 1`). The coarse operators are built from Galerkin products
 //! `Pᵀ A P` for the piecewise-constant `P` on the fine level's unknowns (free samples): a coarse

@@ -1,5 +1,8 @@
 //! The drainage network: node heights, flow, discharge and lakes, memoised per world in
 //! bounded block caches (module docs of [`super`], steps 1–5).
+//!
+//! Why one file of about 630 lines: steps 1–5 are methods of one `Network`, each reading the block
+//! caches that the earlier steps fill, in the order the module docs of [`super`] give.
 
 use super::super::super::hash::{hash2, unit};
 use super::super::kernel::{self, LANES};

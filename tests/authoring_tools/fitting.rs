@@ -2,23 +2,12 @@
 //! defining property checked on the solved region (region `[1000, 2000]–[1128, 2128]`, 1 m
 //! spacing at 129 samples).
 
-use super::paste::{PasteSource, Placement};
-use super::region::tests::{height, plan, sample_at, spec};
-use super::region::{solve_region, Displacement};
-use super::tests::paste_agreement;
-use crate::terrain::lattice::lerp2;
+use crate::landforms::paste_agreement;
+use crate::{ground, height, plan, sample_at, solve};
 use serde_json::json;
-
-fn solve(ops: serde_json::Value) -> Displacement {
-    solve_region(&plan(), &spec(129, ops)).expect("solved")
-}
-
-/// The procedural height at a world position, rounded to a metre.
-fn ground(x: f64, z: f64) -> f64 {
-    let flat = solve(json!([]));
-    let (i, j) = sample_at(&flat, x, z);
-    height(&flat, i, j).round()
-}
+use strata::authoring::paste::{PasteSource, Placement};
+use strata::authoring::Displacement;
+use strata::terrain::lattice::lerp2;
 
 /// A closed circle of `k` segments.
 fn circle(c: [f64; 2], r: f64, k: usize) -> Vec<[f64; 2]> {
@@ -381,7 +370,7 @@ fn copy_paste_from_another_world_reproduces_its_gradients() {
         json!([{"op": "copy_paste", "source_min": min, "source_max": max,
         "target": at.target, "rotation_deg": at.rotation_deg, "source_seed": 99}]),
     );
-    let other = crate::terrain::WorldPlan::new(99, plan().params.clone()).expect("plan");
+    let other = strata::terrain::WorldPlan::new(99, plan().params.clone()).expect("plan");
     let src = PasteSource::sample(&other, min, max, r.grid.spacing_m);
     let same = PasteSource::sample(&plan(), min, max, r.grid.spacing_m);
     let (c, gain, c0, count) = paste_agreement(&r, &src, &at);
@@ -416,7 +405,7 @@ fn copy_paste_from_a_png16_heightmap_reproduces_its_gradients() {
     let heights: Vec<f32> = (0..side * side)
         .map(|v| src0.heights[(v / side) * src0.grid.n + v % side])
         .collect();
-    let png = super::exchange::encode_png16(side, side, &heights).expect("png");
+    let png = strata::authoring::exchange::encode_png16(side, side, &heights).expect("png");
     let at = Placement {
         target: [1064.0, 2064.0],
         rotation_deg: 45.0,
@@ -429,7 +418,8 @@ fn copy_paste_from_a_png16_heightmap_reproduces_its_gradients() {
         json!([{"op": "copy_paste", "source_min": [0, 0], "source_max": [60, 60],
         "target": at.target, "rotation_deg": at.rotation_deg, "scale": at.scale, "heightmap": map}]),
     );
-    let img = super::exchange::import_png16(&png.bytes, png.lo_m, png.hi_m).expect("image");
+    let img =
+        strata::authoring::exchange::import_png16(&png.bytes, png.lo_m, png.hi_m).expect("image");
     let src = PasteSource::from_image(
         &img,
         1.0,
@@ -491,7 +481,7 @@ fn a_tensor_modulated_noise_brush_stretches_the_noise_along_its_direction() {
 
 #[test]
 fn a_warped_paste_follows_the_warped_source() {
-    use super::paste::Warp;
+    use strata::authoring::paste::Warp;
     let (min, max) = ([1500.0, 2500.0], [1560.0, 2560.0]);
     let warp = Warp::new(plan().seed, 4, 3.0, 20.0);
     let at = Placement {
@@ -525,58 +515,17 @@ fn a_warped_paste_follows_the_warped_source() {
 #[test]
 fn an_oversized_inline_heightmap_is_refused_before_decoding() {
     use base64::Engine;
-    let png = super::exchange::encode_png16(2050, 2, &vec![1.0; 4100]).expect("png");
+    let png = strata::authoring::exchange::encode_png16(2050, 2, &vec![1.0; 4100]).expect("png");
     let map = json!({"png_base64": base64::engine::general_purpose::STANDARD.encode(&png.bytes),
         "lo_m": 0, "hi_m": 1, "spacing_m": 1});
-    let element: crate::element::Element = serde_json::from_value(json!({
+    let element: strata::element::Element = serde_json::from_value(json!({
         "id": "r", "bbox": {"min": [0, 0], "max": [64, 64]}, "samples": 33,
         "ops": [{"op": "copy_paste", "source_min": [0, 0], "source_max": [10, 1],
                  "target": [32, 32], "heightmap": map}]}))
     .expect("element");
-    let e = super::RegionSpec::from_element(&element).expect_err("refused");
+    let e = strata::authoring::RegionSpec::from_element(&element).expect_err("refused");
     assert_eq!(e.pointer, "/ops/0/heightmap/png_base64", "{e}");
     assert!(e.message.contains("2049"), "{e}");
-}
-
-#[test]
-fn near_polyline_finds_what_a_full_scan_finds() {
-    use super::grid::RegionGrid;
-    use super::raster::{polyline_distance, Canvas};
-    let n = 33;
-    let grid = RegionGrid {
-        origin: [10.0, 20.0],
-        spacing_m: 0.75,
-        n,
-        max: [34.0, 44.0],
-    };
-    let c = Canvas::new(grid, vec![0.0; n * n]);
-    let line = [
-        [12.3, 21.1],
-        [30.2, 25.7],
-        [18.0, 40.9],
-        [18.0, 40.9],
-        [29.5, 43.0],
-    ];
-    for radius in [0.0, 0.3, 0.75, 2.6] {
-        let fast = c.near_polyline(&line, radius);
-        let full: Vec<_> = (0..n * n)
-            .filter_map(|v| {
-                let (d, s, t) = polyline_distance(&line, grid.position(v % n, v / n));
-                (d <= radius).then_some((v, d, s, t))
-            })
-            .collect();
-        if full.is_empty() {
-            assert_eq!(
-                fast.len(),
-                1,
-                "the nearest sample when none is within {radius}"
-            );
-        } else {
-            assert_eq!(fast, full, "radius {radius}");
-        }
-    }
-    // A point far outside the grid still gets its nearest sample.
-    assert_eq!(c.near_polyline(&[[-100.0, 20.0]], 1.0)[0].0, 0);
 }
 
 #[test]

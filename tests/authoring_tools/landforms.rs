@@ -1,20 +1,9 @@
 //! Tests of the landform, composite, tensor and copy-paste tools: each tool's defining property
 //! checked on the solved region (region `[1000, 2000]–[1128, 2128]`, 1 m spacing at 129 samples).
 
-use super::region::tests::{height, plan, sample_at, spec};
-use super::region::{solve_region, Displacement};
+use crate::{ground, height, plan, sample_at, solve};
 use serde_json::json;
-
-fn solve(ops: serde_json::Value) -> Displacement {
-    solve_region(&plan(), &spec(129, ops)).expect("solved")
-}
-
-/// The procedural height at a world position, rounded to a metre.
-fn ground(x: f64, z: f64) -> f64 {
-    let flat = solve(json!([]));
-    let (i, j) = sample_at(&flat, x, z);
-    height(&flat, i, j).round()
-}
+use strata::authoring::Displacement;
 
 fn d_at(r: &Displacement, x: f64, z: f64) -> f64 {
     let (i, j) = sample_at(r, x, z);
@@ -191,7 +180,7 @@ fn a_mesa_is_flat_at_its_elevation_with_a_steep_rim() {
 }
 
 /// Pearson correlation of two series.
-pub(super) fn correlation(a: &[f64], b: &[f64]) -> f64 {
+pub fn correlation(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len() as f64;
     let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
     let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
@@ -204,7 +193,7 @@ pub(super) fn correlation(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// Least-squares `v ≈ a + b·x + c·z`: `[a, b, c]` (normal equations, Cramer's rule).
-pub(super) fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
+pub fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
     let mut m = [[0.0f64; 3]; 3];
     let mut rhs = [0.0f64; 3];
     for (q, y) in p.iter().zip(v) {
@@ -243,10 +232,10 @@ pub(super) fn affine_fit(p: &[[f64; 2]], v: &[f64]) -> [f64; 3] {
 /// surroundings: the heights are the copy's plus a harmonic correction, whose gradient over the
 /// core is close to affine in position. So the gradients are compared with each component's
 /// best affine fit in position removed.
-pub(super) fn paste_agreement(
+pub fn paste_agreement(
     r: &Displacement,
-    src: &super::paste::PasteSource,
-    at: &super::paste::Placement,
+    src: &strata::authoring::paste::PasteSource,
+    at: &strata::authoring::paste::Placement,
 ) -> (f64, f64, f64, usize) {
     let h = r.grid.spacing_m;
     let (mut pasted, mut expected, mut before) = (Vec::new(), Vec::new(), Vec::new());
@@ -293,7 +282,7 @@ pub(super) fn paste_agreement(
 
 #[test]
 fn copy_paste_reproduces_the_rotated_scaled_source_gradients() {
-    use super::paste::{PasteSource, Placement};
+    use strata::authoring::paste::{PasteSource, Placement};
     let (min, max) = ([1500.0, 2500.0], [1560.0, 2560.0]);
     let at = Placement {
         target: [1064.0, 2064.0],
@@ -460,7 +449,7 @@ fn a_painted_region_holds_its_elevation_inside_and_nowhere_else() {
     for j in 0..n {
         for i in 0..n {
             let p = r.grid.position(i, j);
-            if super::raster::inside_polygon(&poly, p) {
+            if strata::authoring::raster::inside_polygon(&poly, p) {
                 inside += 1;
                 assert!((height(&r, i, j) - e).abs() < 1e-3, "inside at {p:?}");
             } else if (height(&r, i, j) - e).abs() < 1e-3 && !r.fixed[j * n + i] {
@@ -475,7 +464,7 @@ fn a_painted_region_holds_its_elevation_inside_and_nowhere_else() {
     );
     // Refused: fewer than three points, or one elevation per point.
     let bad = |ops: serde_json::Value| {
-        super::spec::RegionSpec::from_element(
+        strata::authoring::RegionSpec::from_element(
             &serde_json::from_value(json!({"id": "r",
                 "bbox": {"min": [1000, 2000], "max": [1128, 2128]}, "ops": ops}))
             .expect("element"),
