@@ -475,3 +475,52 @@ fn the_one_synthesis_equals_the_terrain_reference_with_seams() {
         assert_eq!(strips, expected, "seam strips of {key:?}");
     }
 }
+
+/// Eight concurrent requests of one uncached tile body synthesise and encode it once: the body
+/// cache and the stage cache are single-flight, and the seven others are answered by that one
+/// computation.
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn eight_concurrent_requests_of_one_body_encode_it_once() {
+    use std::sync::atomic::Ordering;
+    use strata::encode::TileVersion;
+    let state = AppState::new(Compute::cpu());
+    let view = state.bare_view(11).await.expect("view");
+    let key = TileKey {
+        lod: 1,
+        x: 2,
+        z: -3,
+    };
+    let barrier = std::sync::Arc::new(tokio::sync::Barrier::new(8));
+    let requests: Vec<_> = (0..8)
+        .map(|_| {
+            let (state, view, barrier) = (state.clone(), view.clone(), barrier.clone());
+            tokio::spawn(async move {
+                barrier.wait().await;
+                state
+                    .tile_product(&view, key, [false; 4], Format::Bin, TileVersion::V1)
+                    .await
+                    .expect("product")
+            })
+        })
+        .collect();
+    let mut bodies = Vec::new();
+    for r in requests {
+        bodies.push(r.await.expect("task"));
+    }
+    assert!(bodies.iter().all(|b| b.body == bodies[0].body));
+    assert_eq!(
+        state.bodies.misses.load(Ordering::Relaxed),
+        1,
+        "one encoding"
+    );
+    assert_eq!(
+        state.bodies.hits.load(Ordering::Relaxed),
+        7,
+        "seven answered by it"
+    );
+    assert_eq!(
+        state.cache.stats().runs_of(Stage::Field),
+        1,
+        "one synthesis"
+    );
+}

@@ -1,9 +1,11 @@
 //! Encoded products by `(tile input hash, format)`: a hit answers a request with a reference-counted
 //! body and a precomputed ETag, no synthesis, encoding or hashing. A [`Memo`] bounded by a byte
-//! budget, least recently used evicted first (O(1), no scan).
+//! budget, least recently used evicted first (O(1), no scan); concurrent misses of one body
+//! encode it once ([`BodyCache::get_or_encode`]).
 
 use super::routes::CachedProduct;
-use crate::cache::Memo;
+use super::AppError;
+use crate::cache::{Memo, Outcome};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
@@ -66,6 +68,27 @@ impl BodyCache {
         };
         counter.fetch_add(1, Ordering::Relaxed);
         found
+    }
+
+    /// The product under `key`, encoding it with the future `encode` returns on a miss;
+    /// concurrent misses of one key await one encoding (counted as hits). A failed encoding is
+    /// not kept.
+    pub async fn get_or_encode<F, Fut>(
+        &self,
+        key: BodyKey,
+        encode: F,
+    ) -> Result<Arc<CachedProduct>, AppError>
+    where
+        F: FnOnce() -> Fut,
+        Fut: std::future::Future<Output = Result<Arc<CachedProduct>, AppError>>,
+    {
+        let (product, outcome) = self.memo.try_get_or_compute_async(key, encode).await?;
+        let counter = match outcome {
+            Outcome::Computed => &self.misses,
+            Outcome::Hit | Outcome::Joined => &self.hits,
+        };
+        counter.fetch_add(1, Ordering::Relaxed);
+        Ok(product)
     }
 
     /// Stores a product, evicting the least recently used ones beyond the budget.

@@ -290,7 +290,7 @@ impl AppState {
 
     /// Tile `key` with `seams` of the world `view` encoded in `format` of `version`, from the
     /// body cache or through the stage cache and the encoder ([`crate::encode::tile`]) in one
-    /// synthesis slot.
+    /// synthesis slot (once for concurrent requests of one body).
     pub async fn tile_product(
         &self,
         view: &Arc<view::WorldView>,
@@ -301,23 +301,21 @@ impl AppState {
     ) -> Result<Arc<routes::CachedProduct>, AppError> {
         let hash = view.tile_hash(key, seams);
         let body_key = (hash, version.tag(format));
-        if let Some(p) = self.bodies.get(&body_key) {
-            return Ok(p);
-        }
         let (state, view) = (self.clone(), view.clone());
-        let product = self
-            .limited(async move {
-                let tile = state.tile_hashed(&view, hash, key, seams).await;
-                let plan = view.plan.clone();
-                let encoded =
-                    routes::blocking(move || crate::encode::tile(&plan, &tile, format, version))
-                        .await?
-                        .map_err(|e| AppError::internal(e.to_string()))?;
-                Ok(Arc::new(routes::CachedProduct::from(encoded)))
+        self.bodies
+            .get_or_encode(body_key, || {
+                self.limited(async move {
+                    let tile = state.tile_hashed(&view, hash, key, seams).await;
+                    let plan = view.plan.clone();
+                    let encoded = routes::blocking(move || {
+                        crate::encode::tile(&plan, &tile, format, version)
+                    })
+                    .await?
+                    .map_err(|e| AppError::internal(e.to_string()))?;
+                    Ok(Arc::new(routes::CachedProduct::from(encoded)))
+                })
             })
-            .await?;
-        self.bodies.insert(body_key, product.clone());
-        Ok(product)
+            .await
     }
 
     /// The limits in force.

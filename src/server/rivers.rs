@@ -66,7 +66,7 @@ fn parse_key(lod: &str, x: &str, z_ext: &str) -> Result<TileKey, AppError> {
 }
 
 /// The river lines of tile `key` of the world `view`, from the body
-/// cache or traced on the blocking pool in one synthesis slot.
+/// cache or traced on the blocking pool in one synthesis slot (once for concurrent requests).
 async fn product(
     st: &AppState,
     view: &WorldView,
@@ -75,29 +75,26 @@ async fn product(
     // The tile's input hash covers the world's settings and the key, which the lines depend on.
     let body_key = (view.tile_hash(key, [false; 4]), BODY_TAG);
     let plan = view.plan.clone();
-    if let Some(p) = st.bodies.get(&body_key) {
-        return Ok(p);
-    }
-    let product = st
-        .limited(async move {
-            blocking(move || {
-                let spacing_m = plan.lods[key.lod as usize].spacing_m;
-                let lines = match &plan.earth {
-                    Some(earth) => tile_rivers(earth, key, spacing_m),
-                    None => Vec::new(),
-                };
-                let body = rivers::encode(key, spacing_m, &lines);
-                Arc::new(CachedProduct::new(
-                    body,
-                    Format::Json.content_type(),
-                    Vec::new(),
-                ))
+    st.bodies
+        .get_or_encode(body_key, || {
+            st.limited(async move {
+                blocking(move || {
+                    let spacing_m = plan.lods[key.lod as usize].spacing_m;
+                    let lines = match &plan.earth {
+                        Some(earth) => tile_rivers(earth, key, spacing_m),
+                        None => Vec::new(),
+                    };
+                    let body = rivers::encode(key, spacing_m, &lines);
+                    Arc::new(CachedProduct::new(
+                        body,
+                        Format::Json.content_type(),
+                        Vec::new(),
+                    ))
+                })
+                .await
             })
-            .await
         })
-        .await?;
-    st.bodies.insert(body_key, product.clone());
-    Ok(product)
+        .await
 }
 
 /// `GET /v1/seeds/{seed}/rivers/{lod}/{x}/{z}.json` and
