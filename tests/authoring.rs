@@ -1,7 +1,7 @@
 //! Authored regions in the world's tiles (issue 4, Done-when 3): tiles that meet a region serve
 //! its reconstructed heights, neighbouring tiles still share edges bit for bit across and inside
 //! the region, and the region's edge meets the procedural world with no step. Tiles come through
-//! the server's own path (`AppState::tile_with_inputs`: region cache, stage cache, compute).
+//! the server's own path (`AppState::tile`: region cache, stage cache, compute).
 
 use serde_json::json;
 use std::sync::Arc;

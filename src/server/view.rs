@@ -4,11 +4,11 @@
 //! A view is a bare seed's default world or a stored world at one version: its plan
 //! ([`WorldPlan`]) and what its products' input hashes are made of ([`SceneInputs`]: the parsed
 //! scene's authored regions, `strata` and volume regions). Stored worlds' views are built once
-//! per `(world, version)` and shared through the plan cache of [`super::worlds::Worlds`]; the
-//! tile routes, scatter, rivers, chunks, geology, region I/O and stats, volume exports, export
-//! jobs and stream sessions all take one. What a tile applies on top of the field
-//! ([`WorldView::tile_edits`]) and the tile itself ([`AppState::tile`]) are assembled here and
-//! nowhere else.
+//! per `(world, version)` and shared through the view cache of [`super::worlds::Worlds`]; a bare
+//! seed's view is made per request on its cached plan (two reference counts). The tile routes,
+//! scatter, rivers, chunks, geology, region I/O and stats, volume exports, export jobs and stream
+//! sessions all take one. What a tile applies on top of the field is assembled here and nowhere
+//! else ([`WorldView::tile_edits`]); the tile itself comes through [`AppState::tile`].
 
 use super::access::Caller;
 use super::error::{code, AppError};
