@@ -12,7 +12,7 @@
 
 pub use super::tools::{Op, Shape};
 
-use super::spec_tools::MAX_REGION_DROPLET_STEPS;
+use super::spec_tools::{MAX_REGION_DROPLET_STEPS, MAX_REGION_EROSION_CELL_STEPS};
 use super::tools::Check;
 use crate::element::Element;
 use serde::{Deserialize, Serialize};
@@ -102,24 +102,43 @@ impl RegionSpec {
 
     /// The cost limits a region meets when it is accepted (not when a stored scene is read, so a
     /// world accepted under older limits keeps loading): `droplets × steps` summed over its
-    /// hydraulic-erosion brushes is at most [`MAX_REGION_DROPLET_STEPS`].
+    /// hydraulic-erosion brushes is at most [`MAX_REGION_DROPLET_STEPS`], and
+    /// `iterations × samples²` summed over its thermal-erosion brushes at most
+    /// [`MAX_REGION_EROSION_CELL_STEPS`].
     pub fn check_cost(&self) -> Result<(), SpecError> {
-        let mut droplet_steps = 0u64;
+        let cells = (self.samples as u64).saturating_mul(self.samples as u64);
+        let (mut droplet_steps, mut cell_steps) = (0u64, 0u64);
         for (i, op) in self.ops.iter().enumerate() {
-            let steps = op.tool().droplet_steps();
-            if steps == 0 {
-                continue;
+            let tool = op.tool();
+            let steps = tool.droplet_steps();
+            if steps > 0 {
+                droplet_steps = droplet_steps.saturating_add(steps);
+                if droplet_steps > MAX_REGION_DROPLET_STEPS {
+                    return Err(err(
+                        format!("/ops/{i}/droplets"),
+                        format!(
+                            "droplets × steps over a region's hydraulic_erosion operations \
+                             total at most {MAX_REGION_DROPLET_STEPS}; with this one they reach \
+                             {droplet_steps}"
+                        ),
+                    ));
+                }
             }
-            droplet_steps += steps;
-            if droplet_steps > MAX_REGION_DROPLET_STEPS {
-                return Err(err(
-                    format!("/ops/{i}/droplets"),
-                    format!(
-                        "droplets × steps over a region's hydraulic_erosion operations \
-                         total at most {MAX_REGION_DROPLET_STEPS}; with this one they reach \
-                         {droplet_steps}"
-                    ),
-                ));
+            let sweeps = tool.grid_sweeps();
+            if sweeps > 0 {
+                cell_steps = cell_steps.saturating_add(sweeps.saturating_mul(cells));
+                if cell_steps > MAX_REGION_EROSION_CELL_STEPS {
+                    return Err(err(
+                        format!("/ops/{i}/iterations"),
+                        format!(
+                            "iterations × samples² over a region's erosion operations total at \
+                             most {MAX_REGION_EROSION_CELL_STEPS} ({} iterations at {} samples); \
+                             with this one they reach {cell_steps}",
+                            MAX_REGION_EROSION_CELL_STEPS / cells.max(1),
+                            self.samples
+                        ),
+                    ));
+                }
             }
         }
         Ok(())

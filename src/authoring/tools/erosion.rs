@@ -46,6 +46,10 @@ impl Tool for Erosion {
         Ok(())
     }
 
+    fn grid_sweeps(&self) -> u64 {
+        u64::from(self.iterations)
+    }
+
     fn apply(&self, r: &mut Raster) -> Result<(), RegionError> {
         let (canvas, current) = r.solved()?;
         canvas.erode(

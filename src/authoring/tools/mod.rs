@@ -61,6 +61,14 @@ pub trait Tool {
         0
     }
 
+    /// Sweeps of the whole region grid the operation makes (thermal erosion: its iterations):
+    /// the region's budget of `sweeps × samples²` cell steps,
+    /// [`super::spec_tools::MAX_REGION_EROSION_CELL_STEPS`], is checked when a scene is accepted
+    /// ([`RegionSpec::check_cost`], which names the operation's `iterations` field).
+    fn grid_sweeps(&self) -> u64 {
+        0
+    }
+
     /// Whether the heights solved before the operation still solve the problem after it (a
     /// freeze only fixes samples at those heights), so a later operation that reads the solved
     /// heights need not solve again.
