@@ -149,16 +149,7 @@ pub fn decode_tile(bytes: &[u8], hash: &InputHash) -> Result<Tile, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::terrain::{synthesize, WorldParams, WorldPlan};
-
-    fn tile(x: i64) -> Tile {
-        let plan = WorldPlan::new(3, WorldParams::classic()).expect("plan");
-        synthesize(&plan, TileKey { lod: 2, x, z: -1 })
-    }
-
-    fn h(n: u8) -> InputHash {
-        [n; 32]
-    }
+    use crate::cache::test_util::{h, tile};
 
     #[test]
     fn disk_format_round_trips_and_rejects_damage() {

@@ -264,17 +264,7 @@ impl StageCache {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::terrain::TileKey;
-    use crate::terrain::{synthesize, WorldParams, WorldPlan};
-
-    fn tile(x: i64) -> Tile {
-        let plan = WorldPlan::new(3, WorldParams::classic()).expect("plan");
-        synthesize(&plan, TileKey { lod: 2, x, z: -1 })
-    }
-
-    fn h(n: u8) -> InputHash {
-        [n; 32]
-    }
+    use crate::cache::test_util::{h, tile};
 
     #[test]
     fn lru_within_the_byte_budget() {

@@ -49,3 +49,21 @@ pub use memory::{tile_bytes, CacheStats, Stage, StageCache, DEFAULT_BUDGET_BYTES
 
 /// A tile's input hash (see the module docs).
 pub type InputHash = [u8; 32];
+
+/// What the tests of the cache tiers share.
+#[cfg(test)]
+pub(crate) mod test_util {
+    use super::InputHash;
+    use crate::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
+
+    /// Tile `(2, x, -1)` of a classic world of seed 3.
+    pub fn tile(x: i64) -> Tile {
+        let plan = WorldPlan::new(3, WorldParams::classic()).expect("plan");
+        synthesize(&plan, TileKey { lod: 2, x, z: -1 })
+    }
+
+    /// An input hash of one repeated byte.
+    pub fn h(n: u8) -> InputHash {
+        [n; 32]
+    }
+}

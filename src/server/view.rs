@@ -15,9 +15,10 @@ use super::error::{code, AppError};
 use super::http::{authorize, product_headers, query_param, requested_version};
 use super::params::parse_seed;
 use super::AppState;
+use crate::authoring::Displacement;
 use crate::edits::TileEdits;
 use crate::element::Rect;
-use crate::scene::SceneInputs;
+use crate::scene::{RegionInput, SceneInputs};
 use crate::store::{Role, WorldMeta};
 use crate::terrain::{TileKey, WorldPlan};
 use axum::extract::{FromRequestParts, RawPathParams};
@@ -87,17 +88,23 @@ impl WorldView {
             .into_iter()
             .map(|v| v.spec)
             .collect();
-        let mut displacements = Vec::new();
-        for region in self.inputs.regions_touching(key) {
-            if let Some(d) = st.regions.get(&self.plan, &region).await {
-                displacements.push(d);
-            }
-        }
         TileEdits {
-            displacements,
+            displacements: self.solved(st, self.inputs.regions_touching(key)).await,
             strata: self.inputs.strata_touching(self.plan.seed, key),
             volumes,
         }
+    }
+
+    /// The solved displacements of `regions` (in their order) from the state's region cache;
+    /// a region the solver refused is left out (logged there).
+    async fn solved(&self, st: &AppState, regions: Vec<RegionInput>) -> Vec<Arc<Displacement>> {
+        let mut out = Vec::with_capacity(regions.len());
+        for region in regions {
+            if let Some(d) = st.regions.get(&self.plan, &region).await {
+                out.push(d);
+            }
+        }
+        out
     }
 
     /// What the tiles `keys` apply, as one set (an export applies it to each of its tiles): the
@@ -132,14 +139,8 @@ impl WorldView {
     /// and the `strata` elements meeting it (no volume marks: this is the ground a volume region
     /// is solved over).
     pub async fn ground_edits(&self, st: &AppState, rect: &Rect) -> TileEdits {
-        let mut displacements = Vec::new();
-        for region in self.inputs.regions_meeting(rect) {
-            if let Some(d) = st.regions.get(&self.plan, &region).await {
-                displacements.push(d);
-            }
-        }
         TileEdits {
-            displacements,
+            displacements: self.solved(st, self.inputs.regions_meeting(rect)).await,
             strata: self.inputs.strata_meeting(self.plan.seed, rect),
             volumes: Vec::new(),
         }
