@@ -264,8 +264,7 @@ pub fn write_archive(
     };
     let mut done = 0;
     for batch in keys.chunks(threads * 4) {
-        // An encoder's failure travels as its message (the results are cloned into order).
-        let tiles: Vec<Result<Members, String>> = std::thread::scope(|s| {
+        let tiles: Vec<Result<Members, encode::EncodeError>> = std::thread::scope(|s| {
             let handles: Vec<_> = (0..threads)
                 .map(|t| {
                     s.spawn(move || {
@@ -275,22 +274,24 @@ pub fn write_archive(
                             .step_by(threads)
                             .map(|k| {
                                 let tile = crate::edits::synthesize(plan, *k, edits);
-                                members(plan, spec, &tile).map_err(|e| e.to_string())
+                                members(plan, spec, &tile)
                             })
                             .collect::<Vec<_>>()
                     })
                 })
                 .collect();
-            let per_thread: Vec<Vec<_>> = handles
+            // Thread `t` made keys `t, t + threads, …`: taking from the threads in turn restores
+            // the keys' order without copying any bytes.
+            let mut per_thread: Vec<_> = handles
                 .into_iter()
-                .map(|h| h.join().expect("export worker panicked"))
+                .map(|h| h.join().expect("export worker panicked").into_iter())
                 .collect();
             (0..batch.len())
-                .map(|i| per_thread[i % threads][i / threads].clone())
+                .filter_map(|i| per_thread[i % threads].next())
                 .collect()
         });
         for tile_members in tiles {
-            for (name, bytes) in tile_members.map_err(anyhow::Error::msg)? {
+            for (name, bytes) in tile_members? {
                 tar::write_member(out, &name, &bytes)?;
                 manifest.members.push(ManifestEntry {
                     bytes: bytes.len() as u64,
