@@ -11,10 +11,12 @@
 
 use std::sync::Arc;
 use strata::compute::Compute;
-use strata::gpu::{request_device, BackendChoice, EarthKernels};
+use strata::gpu::{BackendChoice, EarthKernels};
 use strata::terrain::earth::rivers;
 use strata::terrain::tile::{field, FieldJob};
 use strata::terrain::{TileKey, WorldParams, WorldPlan};
+
+mod common;
 
 const SEED: u64 = 42;
 
@@ -25,14 +27,7 @@ fn plan() -> WorldPlan {
 }
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some(d)) => d,
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_earth needs a wgpu adapter; install Mesa's lavapipe (apt-get install mesa-vulkan-drivers \
-             libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::software_device("gpu_earth")
 }
 
 /// Slack on `|Δh|`: 1 cm plus 2⁻¹⁸ of the height (≈ 32 ULP; about 2 cm at 4 km).

@@ -17,9 +17,11 @@
 use std::sync::Arc;
 use strata::compute::Compute;
 use strata::gpu::BackendChoice;
-use strata::gpu::{request_device, TileKernels};
+use strata::gpu::TileKernels;
 use strata::terrain::tile::{field, job_biome_ids, Field, FieldJob};
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+
+mod common;
 
 const SEED: u64 = 7;
 
@@ -30,14 +32,7 @@ fn plan() -> WorldPlan {
 }
 
 fn software_device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
-    match pollster::block_on(request_device(BackendChoice::Gpu)) {
-        Ok(Some(d)) => d,
-        Ok(None) => panic!("request_device(Gpu) returned no device"),
-        Err(e) => panic!(
-            "gpu_twin needs a wgpu adapter; install Mesa's lavapipe (apt-get install mesa-vulkan-drivers \
-             libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
-        ),
-    }
+    common::device::software_device("gpu_twin")
 }
 
 /// Slack on `|Δw|`: one ULP of 1.0. The weights are sums of kernel taps in tap order, products
@@ -341,11 +336,7 @@ async fn backend_choices_cpu_and_auto() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn device_loss_falls_back_to_the_cpu() {
     let plan = Arc::new(plan());
-    let handle = match strata::gpu::open(BackendChoice::Gpu).await {
-        Ok(Some(h)) => h,
-        Ok(None) => panic!("open(Gpu) returned no device"),
-        Err(e) => panic!("device_loss test needs a wgpu adapter (lavapipe): {e:#}"),
-    };
+    let handle = common::device::handle("device_loss_falls_back_to_the_cpu").await;
     let compute = Compute::with_gpu(handle.clone());
     let info = compute.info();
     assert_eq!(info.backend, "gpu");

@@ -85,6 +85,7 @@ impl World {
             &[],
             &self.edits.strata,
             &mut QuadMesh::default(),
+            &strata::volume::offload::CpuOnly,
         )
         .expect("mesh")
     }

@@ -36,7 +36,16 @@ fn chunk(plan: &WorldPlan, key: ChunkKey, volumes: &[Arc<SolvedVolume>]) -> Chun
     let tiles = tiles(plan, key).into_iter().collect();
     let cols = common::columns::columns(key, &tiles);
     let s = plan.lods[key.lod as usize].spacing_m;
-    mesh_world_chunk(key, s, &cols, volumes, &[], &mut QuadMesh::default()).expect("mesh")
+    mesh_world_chunk(
+        key,
+        s,
+        &cols,
+        volumes,
+        &[],
+        &mut QuadMesh::default(),
+        &strata::volume::offload::CpuOnly,
+    )
+    .expect("mesh")
 }
 
 fn ground_at(plan: &WorldPlan, x: i64, z: i64) -> f32 {

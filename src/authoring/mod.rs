@@ -75,6 +75,6 @@ pub mod tensor;
 pub mod tools;
 
 pub use grid::{Procedural, RegionGrid};
-pub use region::{solve_region, Displacement, RegionError};
+pub use region::{solve_region, solve_region_on, Displacement, RegionError};
 pub use spec::{RegionSpec, MAX_OPS, MAX_POINTS, SAMPLE_CHOICES};
 pub use tools::{Op, Shape, Tool};

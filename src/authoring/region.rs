@@ -5,6 +5,7 @@ use super::grid::{Procedural, RegionGrid};
 use super::raster::Canvas;
 use super::spec::RegionSpec;
 use crate::terrain::lattice::Window;
+use crate::terrain::offload::{CpuOnly, PoissonOffload};
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
 use crate::terrain::WorldPlan;
 
@@ -88,6 +89,8 @@ pub struct Raster<'a> {
     pub basis_total: Option<Vec<f64>>,
     gspec: GridSpec,
     solver: Solver,
+    /// Where the solver's cycles may run besides the CPU.
+    offload: &'a dyn PoissonOffload,
     /// `d` solved from the canvas (0 before any solve).
     current: Vec<f32>,
     /// Whether `current` solves the canvas as it is.
@@ -110,7 +113,11 @@ impl std::fmt::Debug for Raster<'_> {
 }
 
 impl<'a> Raster<'a> {
-    fn new(plan: &'a WorldPlan, spec: &'a RegionSpec) -> Result<Self, RegionError> {
+    fn new(
+        plan: &'a WorldPlan,
+        spec: &'a RegionSpec,
+        offload: &'a dyn PoissonOffload,
+    ) -> Result<Self, RegionError> {
         let grid = RegionGrid::of(spec);
         let base = Procedural::sample(plan, &grid).heights;
         let canvas = Canvas::new(grid, base);
@@ -124,6 +131,7 @@ impl<'a> Raster<'a> {
             basis_total: None,
             gspec,
             solver,
+            offload,
             current: vec![0.0f32; grid.n * grid.n],
             solved: true,
             first: true,
@@ -142,7 +150,7 @@ impl<'a> Raster<'a> {
             heights: &c.d,
         };
         let start = if self.first { Start::Cold } else { Start::Warm };
-        let report = self.solver.solve(&problem, start)?;
+        let report = self.solver.solve_on(&problem, start, self.offload)?;
         self.solver.heights_into(&mut self.current)?;
         self.cycles = report.cycles;
         self.first = false;
@@ -178,7 +186,21 @@ impl<'a> Raster<'a> {
 /// # Errors
 /// [`RegionError`] if the solver refuses the problem or an operation's input is unusable.
 pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement, RegionError> {
-    let mut r = Raster::new(plan, spec)?;
+    solve_region_on(plan, spec, &CpuOnly)
+}
+
+/// [`solve_region`] with the solver's cycles offered to `offload` ([`Solver::solve_on`]): the
+/// result meets the same stopping test and differs from the CPU's only within the solver's
+/// tolerance.
+///
+/// # Errors
+/// As [`solve_region`].
+pub fn solve_region_on(
+    plan: &WorldPlan,
+    spec: &RegionSpec,
+    offload: &dyn PoissonOffload,
+) -> Result<Displacement, RegionError> {
+    let mut r = Raster::new(plan, spec, offload)?;
     for (index, op) in spec.ops.iter().enumerate() {
         r.index = index;
         let tool = op.tool();

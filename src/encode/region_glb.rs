@@ -23,8 +23,9 @@
 //! accessors).
 
 use crate::volume::element::SolvedVolume;
-use crate::volume::mesh::{surface_nets, MeshError, MeshOptions, QuadMesh, SampleAttributes};
+use crate::volume::mesh::{surface_nets_on, MeshError, MeshOptions, QuadMesh, SampleAttributes};
 use crate::volume::mesh_import::write_glb;
+use crate::volume::offload::VolumeOffload;
 use serde_json::json;
 
 /// Most quads in one exported region mesh (about 60 bytes each in the glb: 1.2 GB at most).
@@ -56,8 +57,8 @@ pub enum ExportError {
 }
 
 /// The region's quad mesh (positions relative to grid sample `(0, 0, 0)`), with `noise` =
-/// `[α, β, 0, 0]` per vertex.
-pub fn region_mesh(v: &SolvedVolume) -> Result<QuadMesh, MeshError> {
+/// `[α, β, 0, 0]` per vertex, with the surface nets offered to `dev`.
+pub fn region_mesh(v: &SolvedVolume, dev: &dyn VolumeOffload) -> Result<QuadMesh, MeshError> {
     let f = &v.fields;
     let noise: Vec<[f32; 4]> = f
         .alpha
@@ -70,11 +71,12 @@ pub fn region_mesh(v: &SolvedVolume) -> Result<QuadMesh, MeshError> {
         noise: Some(&noise),
     };
     let mut m = QuadMesh::default();
-    surface_nets(
+    surface_nets_on(
         &f.surface,
         attrs,
         &MeshOptions::new(f.grid.dims, f.grid.spacing),
         &mut m,
+        dev,
     )?;
     Ok(m)
 }
@@ -98,8 +100,12 @@ fn vertex_materials(v: &SolvedVolume, m: &QuadMesh) -> Vec<f32> {
 ///
 /// # Errors
 /// [`ExportError`] when the mesher refuses the grid or the mesh has too many quads.
-pub fn encode(v: &SolvedVolume, info: RegionInfo) -> Result<Vec<u8>, ExportError> {
-    let m = region_mesh(v)?;
+pub fn encode(
+    v: &SolvedVolume,
+    info: RegionInfo,
+    dev: &dyn VolumeOffload,
+) -> Result<Vec<u8>, ExportError> {
+    let m = region_mesh(v, dev)?;
     if m.quad_count() > MAX_EXPORT_QUADS {
         return Err(ExportError::TooLarge(m.quad_count()));
     }

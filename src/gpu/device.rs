@@ -11,12 +11,16 @@
 //! on the CPU.
 
 use super::earth::EarthKernels;
+use super::jobs::{DeviceStage, JobCounts, JobResult};
+use super::poisson::PoissonKernels;
 use super::tile::{TileKernels, DEFAULT_JOB_TIMEOUT, MAX_BUFFER_BYTES};
+use super::volume_mesh::VolumeMeshKernel;
 use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
 use anyhow::{anyhow, bail};
 use clap::ValueEnum;
 use serde::Serialize;
+use std::cell::OnceCell;
 use std::fmt;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -54,14 +58,64 @@ const QUEUE_POLL: Duration = Duration::from_millis(50);
 /// Storage buffers one kernel binds (`shaders/tile.wgsl`, bindings 1–8).
 const STORAGE_BUFFERS: u32 = 8;
 
+/// A job's work on the device thread: it sends its own typed reply and returns the error that
+/// marks the device lost, if any.
+type Task = Box<dyn FnOnce(&DeviceContext) -> Result<(), String> + Send>;
+
 enum Job {
-    Field {
-        plan: Arc<WorldPlan>,
-        job: FieldJob,
+    Run {
+        task: Task,
         started: oneshot::Sender<()>,
-        reply: oneshot::Sender<anyhow::Result<Field>>,
     },
     Destroy,
+}
+
+/// What a job sees on the device thread: the device, its queue and the compiled kernels.
+/// Kernels that only some worlds need are compiled on first use.
+pub struct DeviceContext {
+    /// The device.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+    /// The classic field kernels.
+    pub tile: TileKernels,
+    /// The `earth-1` field kernels.
+    pub earth: EarthKernels,
+    poisson: OnceCell<PoissonKernels>,
+    mesh: OnceCell<VolumeMeshKernel>,
+}
+
+impl fmt::Debug for DeviceContext {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("DeviceContext")
+            .field("poisson_compiled", &self.poisson.get().is_some())
+            .field("mesh_compiled", &self.mesh.get().is_some())
+            .finish_non_exhaustive()
+    }
+}
+
+impl DeviceContext {
+    /// The multigrid Poisson kernels, compiled on first use.
+    ///
+    /// # Errors
+    /// If they do not compile on this device.
+    pub fn poisson(&self) -> anyhow::Result<&PoissonKernels> {
+        if self.poisson.get().is_none() {
+            let _ = self.poisson.set(PoissonKernels::new(&self.device)?);
+        }
+        Ok(self.poisson.get().expect("set above"))
+    }
+
+    /// The surface-nets kernel, compiled on first use.
+    ///
+    /// # Errors
+    /// If it does not compile on this device.
+    pub fn mesh(&self) -> anyhow::Result<&VolumeMeshKernel> {
+        if self.mesh.get().is_none() {
+            let _ = self.mesh.set(VolumeMeshKernel::new(&self.device)?);
+        }
+        Ok(self.mesh.get().expect("set above"))
+    }
 }
 
 /// Handle to the device task; cheap to clone. The task ends when the last handle is dropped.
@@ -71,6 +125,7 @@ pub struct GpuHandle {
     lost: Arc<AtomicBool>,
     info: Arc<AdapterInfo>,
     timeout: Duration,
+    pub(super) jobs: Arc<JobCounts>,
 }
 
 impl fmt::Debug for GpuHandle {
@@ -120,17 +175,79 @@ impl GpuHandle {
     /// device lost); otherwise if the job fails on the device or takes longer than the job
     /// timeout once started, which marks the device lost.
     pub async fn field(&self, plan: Arc<WorldPlan>, job: FieldJob) -> anyhow::Result<Field> {
+        if let Err(e) = check_job(&plan, job) {
+            return self.refuse(DeviceStage::Field, e);
+        }
+        let timeout = self.timeout;
+        self.run(DeviceStage::Field, timeout, move |ctx| {
+            if plan.earth.is_some() {
+                ctx.earth
+                    .field(&ctx.device, &ctx.queue, &plan, job, Some(timeout))
+            } else {
+                ctx.tile
+                    .field(&ctx.device, &ctx.queue, &plan, job, Some(timeout))
+            }
+        })
+        .await
+    }
+
+    /// Runs `work` on the device thread and returns its result, counting it under `stage`.
+    ///
+    /// The caller checks that the input is within the kernel's limits first: any error `work`
+    /// returns, a panic in it, or a reply later than `timeout` after the job started marks the
+    /// device lost. Time in the queue does not count against `timeout`.
+    ///
+    /// # Errors
+    /// At once if the device is lost; otherwise `work`'s error, a panic, or the time-out.
+    pub async fn run<T: Send + 'static>(
+        &self,
+        stage: DeviceStage,
+        timeout: Duration,
+        work: impl FnOnce(&DeviceContext) -> anyhow::Result<T> + Send + 'static,
+    ) -> anyhow::Result<T> {
         if self.is_lost() {
+            self.jobs.count(stage, JobResult::Skipped);
             bail!("GPU device lost");
         }
-        check_job(&plan, job)?;
+        let result = self.send(timeout, work).await;
+        self.jobs.count(
+            stage,
+            if result.is_ok() {
+                JobResult::Device
+            } else {
+                JobResult::Failed
+            },
+        );
+        result
+    }
+
+    /// Counts a job of `stage` that is not sent because its input exceeds the kernel's limits,
+    /// and returns `refusal` as the error.
+    pub(super) fn refuse<T>(
+        &self,
+        stage: DeviceStage,
+        refusal: anyhow::Error,
+    ) -> anyhow::Result<T> {
+        self.jobs.count(stage, JobResult::Skipped);
+        Err(refusal)
+    }
+
+    async fn send<T: Send + 'static>(
+        &self,
+        timeout: Duration,
+        work: impl FnOnce(&DeviceContext) -> anyhow::Result<T> + Send + 'static,
+    ) -> anyhow::Result<T> {
         let (started_tx, mut started_rx) = oneshot::channel();
         let (reply_tx, reply_rx) = oneshot::channel();
-        let job = Job::Field {
-            plan,
-            job,
+        let task: Task = Box::new(move |ctx| {
+            let result = work(ctx);
+            let failure = result.as_ref().err().map(|e| format!("{e:#}"));
+            let _ = reply_tx.send(result);
+            failure.map_or(Ok(()), Err)
+        });
+        let job = Job::Run {
+            task,
             started: started_tx,
-            reply: reply_tx,
         };
         if self.tx.send(job).await.is_err() {
             self.mark_lost();
@@ -154,7 +271,7 @@ impl GpuHandle {
                 }
             }
         }
-        match tokio::time::timeout(self.timeout, reply_rx).await {
+        match tokio::time::timeout(timeout, reply_rx).await {
             Ok(Ok(result)) => result,
             Ok(Err(_)) => {
                 self.mark_lost();
@@ -162,7 +279,7 @@ impl GpuHandle {
             }
             Err(_) => {
                 self.mark_lost();
-                bail!("GPU job timed out after {:?}", self.timeout)
+                bail!("GPU job timed out after {timeout:?}")
             }
         }
     }
@@ -220,13 +337,14 @@ pub async fn open_with_timeout(
     let thread_lost = lost.clone();
     std::thread::Builder::new()
         .name("strata-gpu".into())
-        .spawn(move || device_thread(choice, timeout, ready_tx, rx, thread_lost))?;
+        .spawn(move || device_thread(choice, ready_tx, rx, thread_lost))?;
     match ready_rx.await {
         Ok(Ok(Some(info))) => Ok(Some(GpuHandle {
             tx,
             lost,
             info: Arc::new(info),
             timeout,
+            jobs: Arc::default(),
         })),
         Ok(Ok(None)) => Ok(None),
         Ok(Err(e)) => Err(e),
@@ -339,7 +457,6 @@ pub async fn request_device(
 
 fn device_thread(
     choice: BackendChoice,
-    timeout: Duration,
     ready: oneshot::Sender<anyhow::Result<Option<AdapterInfo>>>,
     mut rx: mpsc::Receiver<Job>,
     lost: Arc<AtomicBool>,
@@ -347,12 +464,19 @@ fn device_thread(
     let opened = pollster::block_on(request_device(choice)).and_then(|opened| {
         opened
             .map(|(adapter, device, queue)| {
-                let kernels = (TileKernels::new(&device)?, EarthKernels::new(&device)?);
-                Ok((adapter_info_of(&adapter.get_info()), device, queue, kernels))
+                let ctx = DeviceContext {
+                    tile: TileKernels::new(&device)?,
+                    earth: EarthKernels::new(&device)?,
+                    poisson: OnceCell::new(),
+                    mesh: OnceCell::new(),
+                    device,
+                    queue,
+                };
+                Ok((adapter_info_of(&adapter.get_info()), ctx))
             })
             .transpose()
     });
-    let (info, device, queue, (kernels, earth_kernels)) = match opened {
+    let (info, ctx) = match opened {
         Ok(Some(opened)) => opened,
         Ok(None) => {
             let _ = ready.send(Ok(None));
@@ -364,7 +488,7 @@ fn device_thread(
         }
     };
     let flag = lost.clone();
-    device.set_device_lost_callback(move |reason, message| {
+    ctx.device.set_device_lost_callback(move |reason, message| {
         // `Destroyed` only follows our own `destroy()` (the test hook), whose effect the next job
         // must detect by failing; every other reason is a real loss.
         if reason != wgpu::DeviceLostReason::Destroyed {
@@ -373,7 +497,7 @@ fn device_thread(
         }
     });
     let flag = lost.clone();
-    device.on_uncaptured_error(Arc::new(move |e| {
+    ctx.device.on_uncaptured_error(Arc::new(move |e| {
         tracing::error!("uncaptured wgpu error, marking the device lost: {e}");
         flag.store(true, Ordering::Release);
     }));
@@ -388,44 +512,31 @@ fn device_thread(
     }
     while let Some(job) = rx.blocking_recv() {
         match job {
-            Job::Field {
-                plan,
-                job,
-                started,
-                reply,
-            } => {
+            Job::Run { task, started } => {
                 let _ = started.send(());
                 if lost.load(Ordering::Acquire) {
-                    let _ = reply.send(Err(anyhow!("GPU device lost")));
+                    // Dropping the task drops its reply sender: the caller sees the job dropped.
                     continue;
                 }
-                let run = catch_unwind(AssertUnwindSafe(|| {
-                    if plan.earth.is_some() {
-                        earth_kernels.field(&device, &queue, &plan, job, Some(timeout))
-                    } else {
-                        kernels.field(&device, &queue, &plan, job, Some(timeout))
-                    }
-                }));
-                let result = match run {
-                    Ok(result) => result,
-                    Err(panic) => {
-                        let msg = panic
+                let failure = match catch_unwind(AssertUnwindSafe(|| task(&ctx))) {
+                    Ok(result) => result.err(),
+                    Err(panic) => Some(format!(
+                        "panic in the GPU job: {}",
+                        panic
                             .downcast_ref::<String>()
                             .map(String::as_str)
                             .or_else(|| panic.downcast_ref::<&str>().copied())
-                            .unwrap_or("unknown panic");
-                        Err(anyhow!("panic in the GPU job: {msg}"))
-                    }
+                            .unwrap_or("unknown panic")
+                    )),
                 };
-                if let Err(e) = &result {
-                    tracing::error!("GPU job failed, marking the device lost: {e:#}");
+                if let Some(e) = failure {
+                    tracing::error!("GPU job failed, marking the device lost: {e}");
                     lost.store(true, Ordering::Release);
                 }
-                let _ = reply.send(result);
             }
             Job::Destroy => {
                 tracing::warn!("destroying the GPU device (simulated device loss)");
-                device.destroy();
+                ctx.device.destroy();
             }
         }
     }

@@ -56,6 +56,7 @@
 
 pub mod device;
 pub mod earth;
+pub mod jobs;
 mod kit;
 pub mod layout;
 pub mod poisson;
@@ -67,7 +68,7 @@ pub mod volume_mesh;
 
 pub use device::{
     adapter_info_of, adapter_rank, open, open_with_timeout, request_device, AdapterInfo,
-    BackendChoice, GpuHandle,
+    BackendChoice, DeviceContext, GpuHandle,
 };
 pub use earth::{earth_field_on_device, earth_shader_source, rivers_shader_source, EarthKernels};
 pub use tile::{

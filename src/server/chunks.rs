@@ -155,6 +155,7 @@ async fn product(
             key,
             spacing_m,
         };
+        let offload = state.compute.offload();
         tokio::task::spawn_blocking(move || {
             let views: Vec<TileColumns<'_>> = tiles
                 .iter()
@@ -174,6 +175,7 @@ async fn product(
                 &volumes,
                 &strata,
                 &mut QuadMesh::default(),
+                &offload,
             )
             .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
             let (body, content_type) = match format {

@@ -18,6 +18,7 @@
 //! | `strata_stage_cache_bytes`, `strata_stage_cache_budget_bytes`, `strata_stage_cache_entries` (gauges) | |
 //! | `strata_cache_bytes`, `strata_cache_budget_bytes` (gauges): every cache's share of `--memory-budget` | `cache`: `stage`, `bodies`, `regions`, `volumes`, `seed_plans`, `world_plans` |
 //! | `strata_memory_budget_bytes` (gauge): `--memory-budget` | |
+//! | `strata_device_jobs_total` (counter): jobs of the stages with a WGSL twin sent for the GPU device | `stage`: `field`, `poisson`, `diffusion`, `propagation`, `bitangents`, `meshing`; `result`: `device` (ran there), `failed` (recomputed on the CPU; the device is then lost), `skipped` (not sent: device lost, or input beyond the kernel's limits) |
 
 use super::AppState;
 use axum::extract::{MatchedPath, Request, State};
@@ -192,6 +193,30 @@ pub async fn track(State(m): State<Arc<Metrics>>, req: Request, next: Next) -> R
         start.elapsed().as_secs_f64(),
     );
     res
+}
+
+/// The device's job counts by stage and result (zeros without a device, so the family always
+/// has every series).
+fn device_jobs(out: &mut String, counts: Option<&crate::gpu::jobs::JobCounts>) {
+    use crate::gpu::jobs::{DeviceStage, JobResult};
+    let name = "strata_device_jobs_total";
+    family_header(
+        out,
+        name,
+        "counter",
+        "Jobs of the stages with a WGSL twin sent for the GPU device, by stage and result.",
+    );
+    for stage in DeviceStage::ALL {
+        for result in JobResult::ALL {
+            let n = counts.map_or(0, |c| c.get(stage, result));
+            let _ = writeln!(
+                out,
+                "{name}{{stage=\"{}\",result=\"{}\"}} {n}",
+                stage.name(),
+                result.name()
+            );
+        }
+    }
 }
 
 /// The stage cache's lines.
@@ -422,6 +447,7 @@ pub async fn render(State(st): State<AppState>) -> Response {
     );
     let stage = st.cache.stats();
     stage_cache(&mut extra, &stage);
+    device_jobs(&mut extra, st.compute.device_jobs());
     cache_sizes(&mut extra, &st, &stage);
     service_gauges(&mut extra, &st);
     let mut res = st.metrics.render(&extra).into_response();

@@ -88,7 +88,7 @@ pub(super) async fn solved(
         .region(rid)
         .ok_or_else(|| no_region(id, rid, view.version()))?;
     st.regions
-        .get(&view.plan, region)
+        .get(&view.plan, region, st.compute.offload())
         .await
         .ok_or_else(|| AppError::internal("the region could not be solved"))
 }

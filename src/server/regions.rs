@@ -1,7 +1,8 @@
 //! Solved authored regions, by `(seed, digest)` ([`SolvedCache`]).
 
 use super::solved::{SolvedCache, Weigh};
-use crate::authoring::{solve_region, Displacement};
+use crate::authoring::{solve_region_on, Displacement};
+use crate::compute::Offload;
 use crate::scene::RegionInput;
 use crate::terrain::WorldPlan;
 use std::sync::Arc;
@@ -35,10 +36,11 @@ impl RegionCache {
         &self,
         plan: &Arc<WorldPlan>,
         region: &RegionInput,
+        offload: Offload,
     ) -> Option<Arc<Displacement>> {
         let (p, spec) = (plan.clone(), region.spec.clone());
         self.get_or_solve((plan.seed, region.digest), "authored region", move || {
-            solve_region(&p, &spec)
+            solve_region_on(&p, &spec, &offload)
         })
         .await
     }

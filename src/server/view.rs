@@ -100,7 +100,11 @@ impl WorldView {
     async fn solved(&self, st: &AppState, regions: Vec<RegionInput>) -> Vec<Arc<Displacement>> {
         let mut out = Vec::with_capacity(regions.len());
         for region in regions {
-            if let Some(d) = st.regions.get(&self.plan, &region).await {
+            if let Some(d) = st
+                .regions
+                .get(&self.plan, &region, st.compute.offload())
+                .await
+            {
                 out.push(d);
             }
         }

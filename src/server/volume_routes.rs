@@ -122,8 +122,9 @@ async fn mesh_glb(
                 )
                 .with_field("vid")
             })?;
+            let offload = state.compute.offload();
             tokio::task::spawn_blocking(move || {
-                region_glb::encode(&solved, RegionInfo { seed, version })
+                region_glb::encode(&solved, RegionInfo { seed, version }, &offload)
                     .map(|body| CachedProduct::new(body, GLB_CONTENT_TYPE, Vec::new()))
                     .map_err(|e| {
                         AppError::new(

@@ -7,7 +7,7 @@ use super::solved::{SolvedCache, Weigh};
 use super::view::WorldView;
 use super::AppState;
 use crate::scene::VolumeInput;
-use crate::volume::element::{ground_rect, solve_volume, SolvedVolume};
+use crate::volume::element::{ground_rect, solve_volume_on, SolvedVolume};
 use std::sync::Arc;
 
 /// Default byte budget of solved volume regions (the share of [`super::budget::MemoryBudget`]);
@@ -79,8 +79,9 @@ impl VolumeCache {
         let key = (plan.seed, *key.finalize().as_bytes());
         let edits = view.ground_edits(st, &rect).await;
         let (p, spec) = (plan.clone(), volume.spec.clone());
+        let offload = st.compute.offload();
         self.get_or_solve(key, "volume region", move || {
-            solve_volume(&p, &spec, &edits)
+            solve_volume_on(&p, &spec, &edits, &offload)
         })
         .await
     }

@@ -25,6 +25,7 @@ use crate::volume::chunk::{
 };
 use crate::volume::element::SolvedVolume;
 use crate::volume::mesh::{MeshError, QuadMesh};
+use crate::volume::offload::VolumeOffload;
 use std::sync::Arc;
 
 /// Half-voxel steps a vertex looks into the solid for its material.
@@ -33,7 +34,9 @@ pub const MATERIAL_STEPS: usize = 4;
 /// Meshes chunk `key` of a world whose tiles gave `cols`: the heightfield solid, the volume
 /// regions `volumes` blended in (in document order, [`SolvedVolume::blend`]), then the caves of
 /// `geos` (the `strata` elements meeting the chunk, in document order) carved and vertex
-/// materials set. With no element it equals [`crate::volume::chunk::mesh_chunk`].
+/// materials set; the surface nets are offered to `dev`. With no element and
+/// [`CpuOnly`](crate::volume::offload::CpuOnly) it
+/// equals [`crate::volume::chunk::mesh_chunk`].
 ///
 /// # Errors
 /// [`MeshError`] if the mesher refuses the grid.
@@ -44,6 +47,7 @@ pub fn mesh_world_chunk(
     volumes: &[Arc<SolvedVolume>],
     geos: &[Arc<Geology>],
     scratch: &mut QuadMesh,
+    dev: &dyn VolumeOffload,
 ) -> Result<ChunkMesh, MeshError> {
     let mut sdf = Vec::new();
     let mut mats = Vec::new();
@@ -55,7 +59,7 @@ pub fn mesh_world_chunk(
         blend_volume(v, [gx0, gy0, gz0], s, &mut sdf);
     }
     if geos.is_empty() {
-        return mesh_sdf(key, spacing_m, &sdf, &mats, scratch);
+        return mesh_sdf(key, spacing_m, &sdf, &mats, scratch, dev);
     }
     let mut memos = memos(geos);
     let mut ground = vec![0.0f32; n * n];
@@ -80,7 +84,7 @@ pub fn mesh_world_chunk(
             }
         }
     }
-    let mut mesh = mesh_sdf(key, spacing_m, &sdf, &mats, scratch)?;
+    let mut mesh = mesh_sdf(key, spacing_m, &sdf, &mats, scratch, dev)?;
     let origin = key.first_cell().map(|c| c as f64 * s);
     let frame = Frame {
         x0: gx0 as f64 * s,

@@ -11,6 +11,7 @@ pub mod fractal;
 pub mod hash;
 pub mod lattice;
 pub mod noise;
+pub mod offload;
 pub mod plan;
 pub mod poisson;
 pub mod scatter;

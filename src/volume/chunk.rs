@@ -50,8 +50,9 @@
 //! and has no LOD seams.
 
 use super::mesh::{
-    surface_nets, MeshError, MeshOptions, QuadClass, QuadMesh, SampleAttributes, NONE,
+    surface_nets_on, MeshError, MeshOptions, QuadClass, QuadMesh, SampleAttributes, NONE,
 };
+use super::offload::{CpuOnly, VolumeOffload};
 
 /// Cells per chunk side.
 pub const CHUNK_CELLS: usize = 32;
@@ -237,17 +238,19 @@ pub fn mesh_chunk(
     let mut sdf = Vec::new();
     let mut mats = Vec::new();
     chunk_sdf(key, spacing_m, cols, &mut sdf, &mut mats);
-    mesh_sdf(key, spacing_m, &sdf, &mats, scratch)
+    mesh_sdf(key, spacing_m, &sdf, &mats, scratch, &CpuOnly)
 }
 
 /// Meshes a chunk's padded grid as [`chunk_sdf`] lays it out (34³ values, negative inside the
-/// solid), e.g. after caves carved it (`subsurface::carve`).
+/// solid), e.g. after caves carved it (`subsurface::carve`), with the surface nets offered to
+/// `dev`.
 pub fn mesh_sdf(
     key: ChunkKey,
     spacing_m: f32,
     sdf: &[f32],
     mats: &[u8],
     scratch: &mut QuadMesh,
+    dev: &dyn VolumeOffload,
 ) -> Result<ChunkMesh, MeshError> {
     let n = CHUNK_SAMPLES;
     let opts = MeshOptions {
@@ -259,7 +262,7 @@ pub fn mesh_sdf(
         materials: Some(mats),
         noise: None,
     };
-    surface_nets(sdf, attrs, &opts, scratch)?;
+    surface_nets_on(sdf, attrs, &opts, scratch, dev)?;
     Ok(assemble(key, spacing_m, scratch))
 }
 

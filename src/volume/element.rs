@@ -417,6 +417,20 @@ pub fn solve_volume(
     spec: &VolumeSpec,
     edits: &dyn GroundEdits,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
+    solve_volume_on(plan, spec, edits, &super::offload::CpuOnly)
+}
+
+/// [`solve_volume`] with the pipeline's twinned stages offered to `dev`
+/// ([`super::offload`]).
+///
+/// # Errors
+/// As [`solve_volume`].
+pub fn solve_volume_on(
+    plan: &WorldPlan,
+    spec: &VolumeSpec,
+    edits: &dyn GroundEdits,
+    dev: &dyn super::offload::VolumeOffload,
+) -> Result<SolvedVolume, pipeline::PipelineError> {
     let window = ground_window(plan, spec);
     let mut field = crate::terrain::tile::field(
         plan,
@@ -445,7 +459,7 @@ pub fn solve_volume(
         expand: spec.expand,
         ..PipelineParams::default()
     };
-    let fields = pipeline::generate(&spec.grid, &scene, &params)?;
+    let fields = pipeline::generate_on(&spec.grid, &scene, &params, dev)?;
     Ok(SolvedVolume {
         spec: spec.clone(),
         fields,

@@ -8,4 +8,5 @@ pub mod chunk;
 pub mod element;
 pub mod mesh;
 pub mod mesh_import;
+pub mod offload;
 pub mod pipeline;

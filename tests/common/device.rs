@@ -21,3 +21,16 @@ pub fn device(test: &str) -> (wgpu::Device, wgpu::Queue) {
     let (_, device, queue) = software_device(test);
     (device, queue)
 }
+
+/// The device task `--backend gpu` would open ([`strata::gpu::open`]), or a panic naming `test`
+/// and how to install an adapter.
+pub async fn handle(test: &str) -> strata::gpu::GpuHandle {
+    match strata::gpu::open(BackendChoice::Gpu).await {
+        Ok(Some(h)) => h,
+        Ok(None) => panic!("open(Gpu) returned no device"),
+        Err(e) => panic!(
+            "{test} needs a wgpu adapter; install Mesa's lavapipe (apt-get install \
+             mesa-vulkan-drivers libvulkan1) and set XDG_RUNTIME_DIR. Error: {e:#}"
+        ),
+    }
+}

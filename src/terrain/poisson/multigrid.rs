@@ -23,6 +23,10 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-6;
 pub const AUTO_SWITCH_FACTOR: f64 = 0.3;
 /// Default cap on finest-level cycles per solve.
 pub const DEFAULT_MAX_CYCLES: usize = 40;
+/// Finest-level cycles [`Solver::solve_on`] asks a device for: a V-cycle reduces the residual
+/// about tenfold, so 16 reach the `f32` floor from a cold start (`tests/gpu_poisson.rs` reaches
+/// `1e-5` in 20 on a constrained 129² problem).
+pub const DEVICE_CYCLES: usize = 16;
 /// Gauss–Seidel sweeps on the coarsest level (its shorter side has one interior sample, so every
 /// sweep reduces the error at least fourfold: 30 sweeps reach `f64` rounding).
 pub const COARSEST_SWEEPS: usize = 30;
@@ -136,6 +140,9 @@ pub struct SolveReport {
     /// Samples relaxed by the smoothers on all levels (each Gauss–Seidel sweep over a level or a
     /// window counts its samples): the work of the solve, independent of the machine.
     pub samples_relaxed: u64,
+    /// Finest-level cycles a device ran in `f32` before the CPU's `cycles`
+    /// ([`Solver::solve_on`]); 0 for a solve on the CPU alone.
+    pub device_cycles: usize,
 }
 
 impl SolveReport {
@@ -323,6 +330,51 @@ impl Solver {
         Ok(self.on_pool(|s| s.run(problem, start)))
     }
 
+    /// [`Self::solve`] with the bulk of the work on `device`: the problem is loaded, the device
+    /// runs [`DEVICE_CYCLES`] plain cycles in `f32` from the loaded state (the previous solution
+    /// after an earlier solve, else the constraints and zeros), and the CPU then solves from the
+    /// device's heights ([`Start::From`]) to the tolerance in `f64`, which from the device's
+    /// `f32` floor (a relative residual of about `1e-5`) takes a cycle or two. This is mixed-
+    /// precision iterative refinement: the answer meets the CPU's stopping test, and differs from
+    /// a CPU-only solve only by where within the tolerance it stops (millimetres on heights of
+    /// hundreds of metres; `tests/gpu_products.rs`). When `device` answers `None`, or with
+    /// non-finite values, this is [`Self::solve`] from `start`; so is a [`Start::From`].
+    ///
+    /// # Errors
+    /// As [`Self::solve`].
+    pub fn solve_on(
+        &mut self,
+        problem: &Problem,
+        start: Start,
+        device: &dyn crate::terrain::offload::PoissonOffload,
+    ) -> Result<SolveReport, PoissonError> {
+        if matches!(start, Start::From(_)) {
+            return self.solve(problem, start);
+        }
+        if self.load(problem)? == 0.0 {
+            return self.solve(problem, start);
+        }
+        let plain = SolveOptions {
+            acceleration: Acceleration::None,
+            ..self.options
+        };
+        let answer = device
+            .poisson_cycles(&self.levels, DEVICE_CYCLES, &plain)
+            .filter(|h| {
+                let split = &self.levels[0].split;
+                h.iter().all(|c| c.len() == split.len())
+                    && h.iter().flatten().all(|v| v.is_finite())
+            });
+        let Some(h) = answer else {
+            return self.solve(problem, start);
+        };
+        let mut heights = vec![0.0f32; self.grid().len()];
+        self.levels[0].split.merge_into(&h, &mut heights, |v| v);
+        let mut report = self.solve(problem, Start::From(&heights))?;
+        report.device_cycles = DEVICE_CYCLES;
+        Ok(report)
+    }
+
     /// A warm re-solve after an edit confined to `damage`, a rectangle of samples (bounds
     /// included) that the caller knows, such as a brush's bounds: only the rows of `damage` (and
     /// one row either side, whose right-hand side reads the edited edges and fixed heights) are
@@ -481,6 +533,7 @@ impl Solver {
                 local_cycles: 0,
                 finishing_sweeps: 0,
                 samples_relaxed: 0,
+                device_cycles: 0,
             };
         }
         let mut local_cycles = 0;
@@ -516,6 +569,7 @@ impl Solver {
             local_cycles,
             finishing_sweeps,
             samples_relaxed: self.relaxed() - relaxed_before + local_relaxed,
+            device_cycles: 0,
         }
     }
 

@@ -69,7 +69,7 @@
 pub mod nets;
 pub mod ptex;
 
-pub use nets::surface_nets;
+pub use nets::{surface_nets, surface_nets_on};
 pub use ptex::{uv_transform, UvTransform, UV_TRANSFORMS};
 
 /// "No quad" in [`Neighbor::quad`] and the internal index tables.

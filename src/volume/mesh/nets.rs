@@ -27,6 +27,47 @@ pub fn surface_nets(
     Ok(())
 }
 
+/// [`surface_nets`] with the geometry offered to `dev` (the WGSL twin,
+/// [`crate::volume::offload::VolumeOffload::surface_nets`]); the vertex attributes are then
+/// computed here from the sample attributes by the CPU's rule, so only positions and normals
+/// can differ from [`surface_nets`] (within the twin's tolerance), and a material pick where an
+/// offset lies within rounding of ½.
+///
+/// # Errors
+/// As [`surface_nets`].
+pub fn surface_nets_on(
+    sdf: &[f32],
+    attrs: SampleAttributes<'_>,
+    opts: &MeshOptions,
+    out: &mut QuadMesh,
+    dev: &dyn crate::volume::offload::VolumeOffload,
+) -> Result<(), MeshError> {
+    validate(sdf, attrs, opts)?;
+    match dev.surface_nets(sdf, opts) {
+        Some(mesh) if mesh.cells.len() == mesh.offsets.len() => {
+            *out = mesh;
+            let [nx, ny, _] = opts.dims;
+            let offs = corner_offsets(nx, nx * ny);
+            let (materials, noise) = (&mut out.materials, &mut out.noise);
+            materials.clear();
+            noise.clear();
+            for (c, f) in out.cells.iter().zip(&out.offsets) {
+                let i = c[0] as usize + nx * (c[1] as usize + ny * c[2] as usize);
+                let (m, n) = vertex_attributes(attrs, i, &offs, *f);
+                materials.push(m);
+                noise.push(n);
+            }
+            Ok(())
+        }
+        _ => {
+            out.clear();
+            emit(sdf, attrs, opts, out);
+            super::ptex::adjacency(out);
+            Ok(())
+        }
+    }
+}
+
 fn validate(sdf: &[f32], attrs: SampleAttributes<'_>, opts: &MeshOptions) -> Result<(), MeshError> {
     let d = opts.dims;
     let n = d
@@ -238,11 +279,26 @@ fn push_vertex(
         ((cell[k] as f64 + f[k] as f64) * spacing) as f32
     }));
     out.normals.push(normal);
+    let (material, noise) = vertex_attributes(attrs, i, offs, f);
+    out.materials.push(material);
+    out.noise.push(noise);
+    out.slots.push([NONE; 12]);
+    out.masks.push(mask as u8);
+}
+
+/// The material (of the corner nearest to the vertex) and the noise parameters (trilinear in
+/// the cell) of a vertex at in-cell offset `f` of the cell whose first sample is `i`.
+#[inline]
+fn vertex_attributes(
+    attrs: SampleAttributes<'_>,
+    i: usize,
+    offs: &[usize; 8],
+    f: [f32; 3],
+) -> (u8, [f32; 4]) {
     let nearest =
         usize::from(f[0] >= 0.5) | usize::from(f[1] >= 0.5) << 1 | usize::from(f[2] >= 0.5) << 2;
-    out.materials
-        .push(attrs.materials.map_or(0, |m| m[i + offs[nearest]]));
-    out.noise.push(match attrs.noise {
+    let material = attrs.materials.map_or(0, |m| m[i + offs[nearest]]);
+    let noise = match attrs.noise {
         None => [0.0; 4],
         Some(noise) => {
             let w = trilinear_weights(f);
@@ -255,9 +311,8 @@ fn push_vertex(
             }
             acc
         }
-    });
-    out.slots.push([NONE; 12]);
-    out.masks.push(mask as u8);
+    };
+    (material, noise)
 }
 
 /// Trilinear weights of the eight corners at in-cell offset `f`.

@@ -679,13 +679,14 @@ pub fn normalize_field(n: &mut [Vec<f32>], fixed: &[u8]) {
 /// Stage 2 of §4.1: the dense normal field. Harmonic fill of the free samples (cascadic, or the
 /// caller's warm-start values when `warm` is set), normalisation, `pm_sweeps` anisotropic sweeps,
 /// normalisation. `n` holds the constraints in `Ω_N` (and, with `warm`, the initial guess
-/// elsewhere).
+/// elsewhere). The anisotropic sweeps come from `dev` when it answers.
 pub fn diffuse_normals(
     dims: [usize; 3],
     n: &mut [Vec<f32>],
     fixed: &[u8],
     p: &DiffuseParams,
     warm: bool,
+    dev: &dyn crate::volume::offload::VolumeOffload,
 ) {
     // One scratch field for the fill and the sweeps.
     let mut tmp: Vec<Vec<f32>> = n.iter().map(|c| vec![0.0f32; c.len()]).collect();
@@ -695,7 +696,14 @@ pub fn diffuse_normals(
         harmonic_fill_with(dims, n, fixed, p, &mut tmp);
     }
     normalize_field(n, fixed);
-    sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp);
+    match dev.pm_sweeps(dims, n, fixed, p.k, p.pm_sweeps) {
+        Some(swept) if swept.len() == n.len() => {
+            for (c, s) in n.iter_mut().zip(swept) {
+                *c = s;
+            }
+        }
+        _ => sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp),
+    }
     normalize_field(n, fixed);
 }
 

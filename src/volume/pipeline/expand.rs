@@ -77,8 +77,9 @@
 
 use super::curve::{ConstraintPoint, FeatureCurve, MAX_CONTROL_POINTS};
 use super::grid::{add, cross, dot, length, normalize, scale, sub, Grid};
-use super::region::{generate, PipelineParams, Scene};
+use super::region::{PipelineParams, Scene};
 use super::PipelineError;
+use crate::volume::offload::{CpuOnly, VolumeOffload};
 use serde::{Deserialize, Serialize};
 
 /// Most steps of one branch (one curve end).
@@ -599,26 +600,45 @@ pub fn expand_curves(
 /// voxelized `B`, [`smooth_bitangents`] densifies `B`, and [`expand_curves`] traces the curves.
 ///
 /// # Errors
-/// As [`generate`] and [`expand_curves`].
+/// As [`super::generate`] and [`expand_curves`].
 pub fn expand_scene(
     grid: &Grid,
     scene: &Scene,
     params: &PipelineParams,
     expand: &ExpandParams,
 ) -> Result<Scene, PipelineError> {
+    expand_scene_on(grid, scene, params, expand, &CpuOnly)
+}
+
+/// [`expand_scene`] with the guidance pass's twinned stages and the smooth bitangents offered
+/// to `dev` ([`crate::volume::offload`]).
+///
+/// # Errors
+/// As [`expand_scene`].
+pub fn expand_scene_on(
+    grid: &Grid,
+    scene: &Scene,
+    params: &PipelineParams,
+    expand: &ExpandParams,
+    dev: &dyn VolumeOffload,
+) -> Result<Scene, PipelineError> {
     expand.validate().map_err(|e| e.within("expand_curves"))?;
     if scene.curves.is_empty() {
         return Ok(scene.clone());
     }
-    let first = generate(
+    let first = super::region::generate_on(
         grid,
         scene,
         &PipelineParams {
             expand: None,
             ..*params
         },
+        dev,
     )?;
-    let b = smooth_bitangents(grid.dims, &first.bitangent, BITANGENT_SWEEPS);
+    let b = dev
+        .smooth_bitangents(grid.dims, &first.bitangent, BITANGENT_SWEEPS)
+        .filter(|b| b.iter().all(|c| c.len() == grid.len()))
+        .unwrap_or_else(|| smooth_bitangents(grid.dims, &first.bitangent, BITANGENT_SWEEPS));
     let g = Guidance {
         grid,
         normal: [&first.normal[0], &first.normal[1], &first.normal[2]],
@@ -634,6 +654,7 @@ pub fn expand_scene(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::volume::pipeline::generate;
 
     #[test]
     fn sign_free_average_ignores_signs() {

@@ -47,7 +47,9 @@ pub mod voxelize;
 pub use curve::{ConstraintPoint, CurveSample, FeatureCurve};
 pub use grid::Grid;
 pub use proxy::{Heightfield, InputMesh, ProxyTriangle};
-pub use region::{generate, regenerate, PipelineParams, RegionFields, Scene, StageTimes};
+pub use region::{
+    generate, generate_on, regenerate, PipelineParams, RegionFields, Scene, StageTimes,
+};
 
 /// Errors of the pipeline's public functions.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]

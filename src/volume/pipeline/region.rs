@@ -19,6 +19,7 @@ use super::propagate::{propagate_material, propagate_surface};
 use super::proxy::{curve_proxy, heightfield_proxy, mesh_proxy, Heightfield, InputMesh};
 use super::voxelize::{voxelize, Voxelized};
 use super::PipelineError;
+use crate::volume::offload::{CpuOnly, VolumeOffload};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
@@ -240,8 +241,17 @@ fn material_stage(grid: &Grid, v: &Voxelized) -> (Vec<u16>, Vec<f32>) {
     (material, confidence)
 }
 
-/// Surface propagation (§4.5) from the voxelized seeds along `normal`: `S` and its layers.
-fn surface_stage(grid: &Grid, v: &Voxelized, normal: &[Vec<f32>; 3]) -> (Vec<f32>, Vec<u32>) {
+/// Surface propagation (§4.5) from the voxelized seeds along `normal`: `S` and its layers,
+/// from `dev` when it answers.
+fn surface_stage(
+    grid: &Grid,
+    v: &Voxelized,
+    normal: &[Vec<f32>; 3],
+    dev: &dyn VolumeOffload,
+) -> (Vec<f32>, Vec<u32>) {
+    if let Some(done) = dev.propagate_surface(grid, normal, &v.omega_s, &v.surface) {
+        return done;
+    }
     let mut s = v.surface.clone();
     let layer = propagate_surface(grid, normal, &v.omega_s, &mut s);
     (s, layer)
@@ -316,14 +326,28 @@ pub fn generate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<RegionFields, PipelineError> {
+    generate_on(grid, scene, params, &CpuOnly)
+}
+
+/// [`generate`] with the twinned stages (Perona–Malik sweeps, surface propagation, smooth
+/// bitangents) offered to `dev` ([`crate::volume::offload`]).
+///
+/// # Errors
+/// As [`generate`].
+pub fn generate_on(
+    grid: &Grid,
+    scene: &Scene,
+    params: &PipelineParams,
+    dev: &dyn VolumeOffload,
+) -> Result<RegionFields, PipelineError> {
     if let Some(e) = &params.expand {
         // §5.1: expand the curves along a first guidance pass, then solve for the expanded ones.
-        let expanded = super::expand::expand_scene(grid, scene, params, e)?;
+        let expanded = super::expand::expand_scene_on(grid, scene, params, e, dev)?;
         let params = PipelineParams {
             expand: None,
             ..*params
         };
-        return generate(grid, &expanded, &params);
+        return generate_on(grid, &expanded, &params, dev);
     }
     let run = Stopwatch::start();
     let grid = Grid::new(grid.dims, grid.origin, grid.spacing)?;
@@ -346,7 +370,7 @@ pub fn generate(
             |t| &mut t.normal_diffusion_ms,
             || {
                 let mut n: Vec<Vec<f32>> = v.normal.to_vec();
-                diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false);
+                diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false, dev);
                 let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
                 [n0, n1, n2]
             },
@@ -356,7 +380,7 @@ pub fn generate(
         &mut times,
         (
             |t| &mut t.surface_propagation_ms,
-            || surface_stage(&grid, &v, &n),
+            || surface_stage(&grid, &v, &n, dev),
         ),
         (
             |t| &mut t.noise_diffusion_ms,
@@ -497,7 +521,7 @@ pub fn regenerate(
     let dp = params.diffuse;
     if let Some((lo, hi)) = changed {
         solve_box(&grid, &mut n, &v.omega_n, lo, hi, |d, c, f| {
-            diffuse_normals(d, c, f, &dp, false)
+            diffuse_normals(d, c, f, &dp, false, &CpuOnly)
         });
         times.record(sw, |t| &mut t.normal_diffusion_ms);
         let sw = Stopwatch::start();
@@ -516,7 +540,7 @@ pub fn regenerate(
         (|t| &mut t.material_ms, || material_stage(&grid, &v)),
         (
             |t| &mut t.surface_propagation_ms,
-            || surface_stage(&grid, &v, &normal),
+            || surface_stage(&grid, &v, &normal, &CpuOnly),
         ),
     );
     Ok((

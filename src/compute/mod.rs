@@ -9,6 +9,14 @@
 //! [`crate::edits::assemble`], the same synthesis as the CPU's [`crate::edits::synthesize`].
 //! [`Compute::tile_cached`] puts the [`crate::cache::StageCache`] in front: a tile whose input
 //! hash is cached runs no stage; otherwise each stage run is counted there.
+//!
+//! The other stages with a WGSL twin (the Poisson cycles of authored regions, the volume
+//! pipeline's diffusion, propagation and bitangents, surface nets) run inside the pure solvers,
+//! which ask the [`Offload`] of [`Compute::offload`] before computing on the CPU.
+
+mod offload;
+
+pub use offload::Offload;
 
 use crate::cache::{InputHash, Stage, StageCache};
 use crate::edits::TileEdits;
@@ -64,6 +72,20 @@ impl Compute {
                 device_lost: g.is_lost(),
             },
         }
+    }
+
+    /// The offload the pure solvers take: this backend's device while it is healthy, jobs driven
+    /// by the current tokio runtime (none outside one: then everything runs on the CPU).
+    pub fn offload(&self) -> Offload {
+        Offload::new(
+            self.gpu.clone().filter(|g| !g.is_lost()),
+            tokio::runtime::Handle::try_current().ok(),
+        )
+    }
+
+    /// The device's job counts by stage and result, when there is a device.
+    pub fn device_jobs(&self) -> Option<&crate::gpu::jobs::JobCounts> {
+        self.gpu.as_ref().map(|g| g.job_counts())
     }
 
     /// Heights and weights of a lattice rectangle.
