@@ -64,6 +64,10 @@ impl Offload {
 }
 
 impl PoissonOffload for Offload {
+    fn has_device(&self) -> bool {
+        Offload::has_device(self)
+    }
+
     fn poisson_cycles(
         &self,
         levels: &[Level],

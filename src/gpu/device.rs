@@ -118,10 +118,39 @@ impl DeviceContext {
     }
 }
 
+/// How long dropping the last handle waits for the device thread to release the device.
+const SHUTDOWN_WAIT: Duration = Duration::from_secs(5);
+
+/// The sending end of the device thread's queue, shared by every handle. When the last handle
+/// goes, the queue closes and the drop waits (at most [`SHUTDOWN_WAIT`]) for the thread to drop
+/// the device, so a process that exits next does not unload the driver under a live device
+/// (lavapipe then crashes in its exit handlers).
+struct Queue {
+    tx: Option<mpsc::Sender<Job>>,
+    released: std::sync::Mutex<std::sync::mpsc::Receiver<()>>,
+}
+
+impl Queue {
+    fn sender(&self) -> &mpsc::Sender<Job> {
+        self.tx
+            .as_ref()
+            .expect("the sender lives until the queue is dropped")
+    }
+}
+
+impl Drop for Queue {
+    fn drop(&mut self) {
+        self.tx = None;
+        if let Ok(released) = self.released.lock() {
+            let _ = released.recv_timeout(SHUTDOWN_WAIT);
+        }
+    }
+}
+
 /// Handle to the device task; cheap to clone. The task ends when the last handle is dropped.
 #[derive(Clone)]
 pub struct GpuHandle {
-    tx: mpsc::Sender<Job>,
+    queue: Arc<Queue>,
     lost: Arc<AtomicBool>,
     info: Arc<AdapterInfo>,
     timeout: Duration,
@@ -249,7 +278,7 @@ impl GpuHandle {
             task,
             started: started_tx,
         };
-        if self.tx.send(job).await.is_err() {
+        if self.queue.sender().send(job).await.is_err() {
             self.mark_lost();
             bail!("GPU device task has stopped");
         }
@@ -289,7 +318,7 @@ impl GpuHandle {
     /// fails for real (its result cannot be mapped), and that failure sets the flag. If the queue
     /// is full the flag is set directly.
     pub fn simulate_device_loss(&self) {
-        if self.tx.try_send(Job::Destroy).is_err() {
+        if self.queue.sender().try_send(Job::Destroy).is_err() {
             self.mark_lost();
         }
     }
@@ -335,12 +364,19 @@ pub async fn open_with_timeout(
     let (tx, rx) = mpsc::channel(QUEUE_DEPTH);
     let lost = Arc::new(AtomicBool::new(false));
     let thread_lost = lost.clone();
+    let (released_tx, released_rx) = std::sync::mpsc::channel();
     std::thread::Builder::new()
         .name("strata-gpu".into())
-        .spawn(move || device_thread(choice, ready_tx, rx, thread_lost))?;
+        .spawn(move || {
+            device_thread(choice, ready_tx, rx, thread_lost);
+            let _ = released_tx.send(());
+        })?;
     match ready_rx.await {
         Ok(Ok(Some(info))) => Ok(Some(GpuHandle {
-            tx,
+            queue: Arc::new(Queue {
+                tx: Some(tx),
+                released: std::sync::Mutex::new(released_rx),
+            }),
             lost,
             info: Arc::new(info),
             timeout,

@@ -21,6 +21,12 @@ pub struct CpuOnly;
 /// Where the finest-level cycles of a Poisson solve may run (the twin in
 /// `shaders/poisson.wgsl`), used by [`super::poisson::Solver::solve_on`].
 pub trait PoissonOffload: Sync {
+    /// Whether [`Self::poisson_cycles`] may answer at all: without a device the solver takes its
+    /// CPU path untouched, bit for bit.
+    fn has_device(&self) -> bool {
+        false
+    }
+
     /// `cycles` finest-level cycles (`options.cycle`, plain, no Krylov acceleration) from the
     /// state of `levels`, a loaded solver's hierarchy: the finest unknowns as the two colour
     /// arrays of `levels[0].split`, in `f32`; `None` to leave the solve to the CPU.

@@ -337,8 +337,11 @@ impl Solver {
     /// `f32` floor (a relative residual of about `1e-5`) takes a cycle or two. This is mixed-
     /// precision iterative refinement: the answer meets the CPU's stopping test, and differs from
     /// a CPU-only solve only by where within the tolerance it stops (millimetres on heights of
-    /// hundreds of metres; `tests/gpu_products.rs`). When `device` answers `None`, or with
-    /// non-finite values, this is [`Self::solve`] from `start`; so is a [`Start::From`].
+    /// hundreds of metres; `tests/gpu_products.rs`). Without a device
+    /// ([`PoissonOffload::has_device`](crate::terrain::offload::PoissonOffload::has_device)), and
+    /// for a [`Start::From`], this is [`Self::solve`], bit for bit; when the device answers `None`
+    /// or non-finite values, it is [`Self::solve`] from `start` on the loaded problem (a warm
+    /// start then runs global cycles, not the local re-solve).
     ///
     /// # Errors
     /// As [`Self::solve`].
@@ -348,7 +351,7 @@ impl Solver {
         start: Start,
         device: &dyn crate::terrain::offload::PoissonOffload,
     ) -> Result<SolveReport, PoissonError> {
-        if matches!(start, Start::From(_)) {
+        if !device.has_device() || matches!(start, Start::From(_)) {
             return self.solve(problem, start);
         }
         if self.load(problem)? == 0.0 {
