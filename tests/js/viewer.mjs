@@ -2,8 +2,10 @@
 // browser): node viewer.mjs <page url> <screenshot.png> [copy.png …]
 //
 // Fails (exit 1) unless: the page has a WebGL2 context, at least MIN_TILES tiles arrive, no console
-// errors, no page errors, no errors shown by the viewer, and the screenshot is not blank (pixel
-// variance above a threshold, and both sky and terrain present).
+// errors, no page errors, no errors shown by the viewer, the screenshot is not blank (pixel
+// variance above a threshold, and both sky and terrain present), and river ribbons are drawn: the
+// test's place (seed 42 around (-12 km, 26 km)) has a river through the view, so once every held
+// tile's river lines have arrived at least one ribbon with MIN_RIVER_M of centre line is drawn.
 import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
 import { copyFileSync, mkdirSync } from "node:fs";
@@ -17,6 +19,7 @@ if (!url || !shot) {
 const MIN_TILES = 50;
 const TILE_TIMEOUT_MS = 45_000;
 const MIN_VARIANCE = 150; // per-channel luminance variance over the image, 0…65025
+const MIN_RIVER_M = 1000; // river centre line drawn as ribbons in the first view, metres
 
 
 const failures = [];
@@ -44,6 +47,13 @@ try {
   await page
     .waitForFunction(() => window.__strata && window.__strata.idle, null, { timeout: 30_000, polling: 250 })
     .catch(() => {});
+  // The river lines of the held tiles: requested after their tiles, two at a time.
+  await page
+    .waitForFunction(() => window.__strata && window.__strata.riverPending === 0 && window.__strata.riverTiles > 0, null, {
+      timeout: 30_000,
+      polling: 250,
+    })
+    .catch(() => {});
   await page.waitForTimeout(1500);
   const s = await page.evaluate(() => window.__strata);
   console.log(
@@ -55,6 +65,13 @@ try {
     if (!s.webgl2) failures.push("no WebGL2 context");
     if (s.errors.length) failures.push(`the viewer shows errors: ${s.errors.join(" | ")}`);
     if (s.held < 1) failures.push("no tile meshes held");
+    console.log(
+      `rivers: ${s.rivers} ribbons, ${(s.riverLength / 1000).toFixed(2)} km of centre line, ` +
+        `lines for ${s.riverTiles} tiles, ${s.riverPending} requests left`,
+    );
+    if (!(s.rivers > 0)) failures.push("no river ribbons drawn at a place with a river");
+    else if (!(s.riverLength >= MIN_RIVER_M))
+      failures.push(`river ribbons hold ${s.riverLength} m of centre line, fewer than ${MIN_RIVER_M}`);
   }
   const glVersion = await page.evaluate(() => {
     const gl = document.querySelector("canvas")?.getContext("webgl2");

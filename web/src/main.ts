@@ -1,12 +1,15 @@
 // The strata viewer: streams height tiles over strata.stream.v1 and renders them with three.js.
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
-// camera looks at first and ?dist= (metres) how far away it starts; ?rings=2,1,2,4,8 the LOD rings
-// of the view. With a world and a token the edit tools are shown (see ./edit.ts).
+// camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
+// horizon, 90 straight down) from how high; ?rings=2,1,2,4,8 the LOD rings
+// of the view. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
+// as ribbons along the server's river lines (see ./rivers.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { decodeFrame, decodeTile, type Tile } from "./frame";
 import { buildMesh, disposeMesh } from "./mesh";
+import { RiverLayer } from "./rivers";
 import { selectView, tileKey } from "./view";
 import { addPatch, crestRegion, pointRegion, removePatch, TOOLS, type GroundPoint, type Tool } from "./edit";
 
@@ -34,6 +37,10 @@ interface StrataState {
   edits: number; // edits the server acknowledged (durable)
   pendingEdits: number; // edits sent and not yet acknowledged
   lastEdit: string; // id of the last region element the viewer added
+  rivers: number; // river ribbons drawn (one per river line and tile it crosses)
+  riverLength: number; // their centre lines' total length, metres
+  riverPending: number; // river-line requests queued or open
+  riverTiles: number; // held tiles whose river lines have arrived
 }
 
 declare global {
@@ -59,6 +66,10 @@ const state: StrataState = {
   edits: 0,
   pendingEdits: 0,
   lastEdit: "",
+  rivers: 0,
+  riverLength: 0,
+  riverPending: 0,
+  riverTiles: 0,
 };
 window.__strata = state;
 
@@ -70,6 +81,7 @@ const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, 
 const startX = Number(q.get("x") ?? 0) || 0;
 const startZ = Number(q.get("z") ?? 0) || 0;
 const startDist = Math.max(50, Math.min(20000, Number(q.get("dist") ?? 4600) || 4600));
+const startPitch = (Math.max(5, Math.min(89.9, Number(q.get("pitch") ?? 34.4) || 34.4)) * Math.PI) / 180;
 const CELL_M = 1; // default world; refined from /v1/info below
 
 // ---- HUD and errors -------------------------------------------------------------------------
@@ -106,7 +118,7 @@ sun.position.set(-0.8, 0.55, -0.3);
 scene.add(sun);
 
 const camera = new THREE.PerspectiveCamera(55, window.innerWidth / window.innerHeight, 5, 60000);
-camera.position.set(startX, startDist * 0.565, startZ + startDist * 0.825);
+camera.position.set(startX, startDist * Math.sin(startPitch), startZ + startDist * Math.cos(startPitch));
 const controls = new OrbitControls(camera, canvas);
 controls.target.set(startX, 0, startZ);
 controls.enableDamping = true;
@@ -159,23 +171,43 @@ scene.add(terrain);
 let wanted = new Set<string>(); // keys of the current view (client-side selection, as the server's)
 let cellM = CELL_M;
 
+// The river ribbons of held tiles; the lines of a world are pinned to the tile's version, so an
+// edit that re-sends a tile also fetches its lines again.
+const riverBase = world
+  ? `v1/worlds/${encodeURIComponent(world)}/rivers/`
+  : `v1/seeds/${encodeURIComponent(seed)}/rivers/`;
+const rivers = new RiverLayer(
+  (lod, x, z, version) =>
+    new URL(`${riverBase}${lod}/${x}/${z}.json${world ? `?v=${version}` : ""}`, `${location.origin}${location.pathname}`).toString(),
+  token ? { authorization: `Bearer ${token}` } : {},
+  showError,
+);
+
 function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
-  dropTile(key);
+  removeMesh(key);
   const mesh = buildMesh(tile);
   terrain.add(mesh);
   held.set(key, { mesh, tile, version });
   state.held = held.size;
+  rivers.put(key, mesh, tile, version);
 }
 
+/** Frees the tile `key` and its river lines. */
 function dropTile(key: string): void {
+  if (removeMesh(key)) rivers.drop(key);
+}
+
+/** Removes and disposes the mesh of `key` (its water and ribbons with it); whether there was one. */
+function removeMesh(key: string): boolean {
   const h = held.get(key);
-  if (!h) return;
+  if (!h) return false;
   terrain.remove(h.mesh);
   disposeMesh(h.mesh);
   held.delete(key);
   state.held = held.size;
   state.freed++;
+  return true;
 }
 
 /** Frees the meshes the current view no longer holds. */
@@ -307,6 +339,10 @@ fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
   .then((info) => {
     if (Array.isArray(info?.world?.biomes)) biomes = info.world.biomes;
+    if (typeof info?.limits?.max_river_lod === "number") {
+      const sea = info?.world?.sea_level_m;
+      rivers.enable(info.limits.max_river_lod, typeof sea === "number" ? sea : undefined);
+    }
     if (typeof info?.world?.cell_m === "number" && info.world.cell_m !== cellM) {
       cellM = info.world.cell_m;
       sendView(true);
@@ -513,6 +549,11 @@ function frame(now: number): void {
   }
   if (now - hudAt > 200) {
     hudAt = now;
+    const r = rivers.stats();
+    state.rivers = r.ribbons;
+    state.riverLength = r.length;
+    state.riverPending = r.pending;
+    state.riverTiles = r.tiles;
     const p = camera.position;
     const ground = groundAt(p.x, p.z);
     hud.textContent = [
@@ -520,6 +561,7 @@ function frame(now: number): void {
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · v${state.version}`,
+      `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
       `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–4: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");
   }

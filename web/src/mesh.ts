@@ -1,6 +1,7 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
 // api/tile_format_v1.md), vertex colours from biome weights and materials, water as a translucent
-// sheet at each vertex's water surface (sea, lake or river) over the quads that hold water.
+// sheet at each vertex's water surface (sea, lake or river) over the quads that hold water, less
+// the quads whose water a river ribbon draws (see ./rivers.ts).
 import * as THREE from "three";
 import type { Tile } from "./frame";
 
@@ -80,19 +81,22 @@ export const waterMaterial = new THREE.MeshLambertMaterial({
 /**
  * The water sheet of a tile: its vertices at the water surface (`h + water_depth`) where the
  * ground is under water (sea, lake or river), and at the ground elsewhere, so the sheet dips into
- * the banks and the ground hides its edge; only the quads with a wet corner are drawn. `undefined`
- * for a dry tile.
+ * the banks and the ground hides its edge; only the quads with a wet corner are drawn, except
+ * those whose wet corners are all flagged in `river` (water a ribbon draws). `undefined` when no
+ * quad is left.
  */
-export function waterGeometry(tile: Tile): THREE.BufferGeometry | undefined {
+export function waterGeometry(tile: Tile, river?: Uint8Array): THREE.BufferGeometry | undefined {
   const { size, heights, waterDepth } = tile;
   const idx: number[] = [];
   for (let j = 0; j + 1 < size; j++) {
     for (let i = 0; i + 1 < size; i++) {
       const a = j * size + i;
-      const [b, c, d] = [a + 1, a + size, a + size + 1];
-      if (waterDepth[a] > 0 || waterDepth[b] > 0 || waterDepth[c] > 0 || waterDepth[d] > 0) {
-        idx.push(a, c, b, b, c, d);
-      }
+      const corners = [a, a + 1, a + size, a + size + 1];
+      const wet = corners.filter((v) => waterDepth[v] > 0);
+      if (wet.length === 0) continue;
+      if (river && wet.every((v) => river[v] === 1)) continue;
+      const [, b, c, d] = corners;
+      idx.push(a, c, b, b, c, d);
     }
   }
   if (idx.length === 0) return undefined;
@@ -170,15 +174,26 @@ export function buildMesh(tile: Tile): THREE.Mesh {
   mesh.position.set(tile.originX, 0, tile.originZ);
   mesh.matrixAutoUpdate = false;
   mesh.updateMatrix();
-  const sheet = waterGeometry(tile);
-  if (sheet !== undefined) {
-    const water = new THREE.Mesh(sheet, waterMaterial);
-    water.renderOrder = 1;
-    water.matrixAutoUpdate = false;
-    water.updateMatrix();
-    mesh.add(water);
-  }
+  setWater(mesh, tile);
   return mesh;
+}
+
+/** Replaces the water sheet under the tile's `mesh`, leaving out the quads `river` flags. */
+export function setWater(mesh: THREE.Mesh, tile: Tile, river?: Uint8Array): void {
+  for (const child of [...mesh.children]) {
+    if (child instanceof THREE.Mesh && child.name === "water") {
+      mesh.remove(child);
+      child.geometry.dispose();
+    }
+  }
+  const sheet = waterGeometry(tile, river);
+  if (sheet === undefined) return;
+  const water = new THREE.Mesh(sheet, waterMaterial);
+  water.name = "water";
+  water.renderOrder = 1;
+  water.matrixAutoUpdate = false;
+  water.updateMatrix();
+  mesh.add(water);
 }
 
 export function disposeMesh(mesh: THREE.Mesh): void {
