@@ -9,7 +9,7 @@
 //! limits) changes the result only within the twin's stated tolerance.
 //!
 //! This module holds the terrain's hook ([`PoissonOffload`], for the multigrid cycles of an
-//! authored region's solve); `crate::volume::offload` holds the volume pipeline's.
+//! authored region's solve); the volume module's `offload` holds the volume pipeline's.
 
 use super::poisson::level::Level;
 use super::poisson::SolveOptions;
