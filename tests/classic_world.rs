@@ -4,31 +4,16 @@
 
 mod common;
 
-use std::path::Path;
+use common::fixture::get;
 
 const WORLD: &str = "8207d904ca1fed302bc4dce8";
-
-fn fixture(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures/classic-world")
-        .join(name)
-}
-
-async fn get(addr: &str, path: &str) -> (u16, Vec<u8>) {
-    strata::bench::http::http_get(addr, path)
-        .await
-        .expect("request")
-}
+const FIXTURE: &str = "classic-world";
 
 #[tokio::test]
 async fn a_world_stored_by_the_classic_default_serves_the_same_tile_bytes() {
-    let data = tempfile::tempdir().expect("temp dir");
-    std::fs::copy(fixture("strata.db"), data.path().join("strata.db")).expect("copy fixture");
-    let server = common::start(
-        [std::ffi::OsStr::new("--data"), data.path().as_os_str()],
-        &[],
-    );
-    let expected = std::fs::read_to_string(fixture("tiles.blake3")).expect("fixture hashes");
+    let (_data, server) = common::fixture::serve(FIXTURE);
+    let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
+        .expect("fixture hashes");
     let mut checked = 0;
     for line in expected.lines() {
         let parts: Vec<&str> = line.split_whitespace().collect();
@@ -36,13 +21,7 @@ async fn a_world_stored_by_the_classic_default_serves_the_same_tile_bytes() {
             panic!("bad fixture line {line:?}");
         };
         let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={version}");
-        let (status, body) = get(&server.addr, &path).await;
-        assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
-        assert_eq!(
-            blake3::hash(&body).to_hex().as_str(),
-            hash,
-            "{path} changed its bytes"
-        );
+        common::fixture::pinned_get(&server, &path, hash).await;
         checked += 1;
     }
     assert_eq!(checked, 12, "every fixture tile was checked");

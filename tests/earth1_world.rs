@@ -6,40 +6,19 @@
 
 mod common;
 
-use std::path::Path;
+use common::fixture::pinned_get;
 
 const WORLD: &str = "ef03f35e5725d0b89309b207";
 
+/// The fixture's directory under `tests/fixtures`.
+const FIXTURE: &str = "earth1-world";
+
 fn fixture(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures/earth1-world")
-        .join(name)
+    common::fixture::path(FIXTURE, name)
 }
 
-/// The real binary serving a copy of the fixture database (the directory lives as long as the
-/// returned guard).
 fn serve_fixture() -> (tempfile::TempDir, common::Server) {
-    let data = tempfile::tempdir().expect("temp dir");
-    std::fs::copy(fixture("strata.db"), data.path().join("strata.db")).expect("copy fixture");
-    let server = common::start(
-        [std::ffi::OsStr::new("--data"), data.path().as_os_str()],
-        &[],
-    );
-    (data, server)
-}
-
-/// `GET path`, which must answer 200 with bytes whose blake3 is `hash`; the body.
-async fn pinned_get(server: &common::Server, path: &str, hash: &str) -> Vec<u8> {
-    let (status, body) = strata::bench::http::http_get(&server.addr, path)
-        .await
-        .expect("request");
-    assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
-    assert_eq!(
-        blake3::hash(&body).to_hex().as_str(),
-        hash,
-        "{path} changed its bytes"
-    );
-    body
+    common::fixture::serve(FIXTURE)
 }
 
 #[tokio::test]

@@ -2,7 +2,7 @@
 //! and its raw HTTP client ([`raw`]), the GPU tests' device ([`device`]), requests to
 //! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
 //! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
-//! validator ([`gltf`]), the Node packages of the browser tests ([`js`]) and tiles with river
+//! validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the browser tests ([`js`]) and tiles with river
 //! and lake water ([`water`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
@@ -10,6 +10,7 @@
 pub mod arch;
 pub mod columns;
 pub mod device;
+pub mod fixture;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
