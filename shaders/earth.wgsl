@@ -72,7 +72,8 @@ struct EarthOctave {
 const LAYER_RELIEF: u32 = 0u;
 const LAYER_GULLY: u32 = 1u;
 
-// `earth::Layer`: kind (LAYER_RELIEF or LAYER_GULLY), the relief flags as 0/1, the amplitude.
+// `earth::Layer`: kind (LAYER_RELIEF or LAYER_GULLY), the relief flags as 0/1 (`ridged` on a gully
+// layer: incised), the amplitude.
 struct EarthLayer {
     kind: u32,
     fine: u32,
@@ -289,6 +290,17 @@ fn gullies(o: EarthOctave, x: f32, z: f32, g: vec2<f32>) -> vec3<f32> {
     return vec3<f32>(rn(c * n), rn(ds * tx), rn(ds * tz));
 }
 
+// `kernel::incise`: the incised cross-section of a gully octave (`ridged` set on a gully layer),
+// `(2√(u + ε) − 1 − INCISE_MEAN) · INCISE_NORM` with `u = (1 + v)/2`, and its derivative.
+fn incise(nd: vec3<f32>) -> vec3<f32> {
+    let ue = (0.5 + rn(0.5 * nd.x)) + INCISE_EPS;
+    let inv = inv_sqrt(ue);
+    let r = rn(ue * inv);
+    let v = rn(((rn(2.0 * r) - 1.0) - INCISE_MEAN) * INCISE_NORM);
+    let dsig = rn(rn(0.5 * inv) * INCISE_NORM);
+    return vec3<f32>(v, rn(nd.y * dsig), rn(nd.z * dsig));
+}
+
 // Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).
 fn invocation(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
     return gid.y * nwg.x * WORKGROUP + gid.x;
@@ -343,7 +355,10 @@ fn earth_heights(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
             gx += rn(rn(a * dsig) * wdx);
             gz += rn(rn(a * dsig) * wdz);
         } else {
-            let nd = gullies(o, x, z, vec2<f32>(gx, gz));
+            var nd = gullies(o, x, z, vec2<f32>(gx, gz));
+            if (layer.ridged != 0u) {
+                nd = incise(nd);
+            }
             let slope = sqrt0(rn(gx * gx) + rn(gz * gz));
             // The slope relative to the local relief.
             let full = rn(rn(GULLY_SLOPE * amp) * params.inv_relief_max);

@@ -50,6 +50,7 @@ struct Piece {
     wet: f32,
     reach: f32,
     inv_len2: f32,
+    floodplain: f32,
 }
 
 const WORKGROUP: u32 = 64u;
@@ -105,9 +106,14 @@ fn profile(p: Piece, x: f32, z: f32, h: f32) -> f32 {
     let w = p.wa + rn((p.wb - p.wa) * t);
     var c = h;
     if (h > w) {
-        let v = clamp_to(p.half_width + div_rn(h - w, WALL_SLOPE), p.valley, p.reach);
+        // `f32::max` of two finite numbers: the floodplain's edge.
+        var floor = p.half_width;
+        if (p.floodplain > floor) {
+            floor = p.floodplain;
+        }
+        let v = clamp_to(floor + div_rn(h - w, WALL_SLOPE), p.valley, p.reach);
         if (d < v) {
-            let g = smoothstep_rn(p.half_width, v, d);
+            let g = smoothstep_rn(floor, v, d);
             c = w + rn((h - w) * g);
         }
     }

@@ -271,10 +271,22 @@ async fn get(
 
 /// A layer `y` holding the ground at the centre of chunk column (0, 0), LOD `lod`.
 fn ground_layer(lod: u32) -> i64 {
+    ground_layer_at(lod, 0, 0)
+}
+
+/// The chunk layer that holds the ground at the middle of chunk column `(x, z)` of `lod`.
+fn ground_layer_at(lod: u32, x: i64, z: i64) -> i64 {
     let w = World::new();
-    let t = synthesize(&w.plan, TileKey { lod, x: 0, z: 0 });
+    let (gx, gz) = (x * 32 + 16, z * 32 + 16);
+    let key = TileKey {
+        lod,
+        x: gx.div_euclid(64),
+        z: gz.div_euclid(64),
+    };
+    let t = synthesize(&w.plan, key);
     let s = w.plan.lods[lod as usize].spacing_m;
-    (t.heights[16 * 65 + 16] / (32.0 * s)).floor() as i64
+    let v = gz.rem_euclid(64) as usize * 65 + gx.rem_euclid(64) as usize;
+    (t.heights[v] / (32.0 * s)).floor() as i64
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -481,8 +493,8 @@ async fn glb_chunks_pass_the_khronos_validator() {
     let app = app(AppState::new(Compute::cpu()));
     let mut files = Vec::new();
     for lod in [0u32, 2, 3] {
-        let y = ground_layer(lod);
-        for (x, yy, z) in [(0, y, 0), (-3, y, 2), (0, 400 >> lod, 0)] {
+        let (y, y2) = (ground_layer(lod), ground_layer_at(lod, -3, 2));
+        for (x, yy, z) in [(0, y, 0), (-3, y2, 2), (0, 400 >> lod, 0)] {
             let (s, _, body) = get(
                 &app,
                 &format!("/v1/seeds/{SEED}/chunks/{lod}/{x}/{yy}/{z}.glb"),

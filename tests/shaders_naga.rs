@@ -347,6 +347,6 @@ fn river_carve_structs_match_the_wgsl_layout() {
         &module,
         "Piece",
         Piece,
-        [ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2]
+        [ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2, floodplain]
     );
 }

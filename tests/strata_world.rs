@@ -346,13 +346,14 @@ fn chunk_vertices_carry_the_material_found_there() {
         .filter(|m| m.flags.cave || m.flags.void)
         .map(|m| m.id)
         .collect();
-    // The ground chunk over the origin: every up-facing vertex shows the top layer, possibly
-    // mixed with what lies just under it; none shows air or a cave.
-    let ground = world.ground(5, 5);
+    // A ground chunk near the origin on level land (x from 128 to 160 m; the origin's own
+    // chunk lies on a valley wall): every up-facing vertex shows the top layer, possibly mixed
+    // with what lies just under it; none shows air or a cave.
+    let ground = world.ground(133, 5);
     let mut ups = Vec::new();
     let mut key = ChunkKey {
         lod: 0,
-        x: 0,
+        x: 4,
         y: 0,
         z: 0,
     };

@@ -78,6 +78,9 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("ABYSS_C", k::ABYSS_C),
         ("UPLIFT", k::UPLIFT),
         ("VALLEY_FLOOR", k::VALLEY_FLOOR),
+        ("INCISE_EPS", k::INCISE_EPS),
+        ("INCISE_MEAN", k::INCISE_MEAN),
+        ("INCISE_NORM", k::INCISE_NORM),
         // `kernel::gullies`: `inv_sqrt(g2 + 1e-12)` and `inv_sqrt(c² + s² + 1e-6)`.
         ("GULLY_G_EPS", 1e-12),
         ("GULLY_N_EPS", 1e-6),

@@ -218,7 +218,8 @@ pub struct GpuEarthLayer {
     pub kind: u32,
     /// 1 if a relief layer is scaled by the roughness.
     pub fine: u32,
-    /// 1 if a relief layer is mixed towards ridged by the ridge mix.
+    /// 1 if a relief layer is mixed towards ridged by the ridge mix, or a gully layer is
+    /// incised.
     pub ridged: u32,
     /// Amplitude relative to the local relief, times the LOD weight.
     pub amp: f32,
@@ -230,7 +231,7 @@ impl From<&Layer> for GpuEarthLayer {
     fn from(l: &Layer) -> Self {
         let (kind, fine, ridged) = match l.kind {
             LayerKind::Relief { fine, ridged } => (0, fine as u32, ridged as u32),
-            LayerKind::Gully => (1, 0, 0),
+            LayerKind::Gully { incised } => (1, 0, incised as u32),
         };
         Self {
             kind,

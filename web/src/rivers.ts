@@ -7,9 +7,9 @@
 // The lines of a tile finer than SOURCE_LOD come from the tile of SOURCE_LOD that holds it (the
 // lines do not depend on the LOD, only on the square asked for) and are cut to the fine tile's
 // square. One request then serves a whole patch of fine tiles, and it works around the server's
-// choice of lines: it keeps a river edge when one of its five points lies near the tile, so a
-// tile smaller than an edge's pieces (about 250 m) that a piece crosses without a point inside
-// gets no line for it, which left gaps in the ribbons on LOD 0–2 tiles.
+// choice of lines: it keeps a river edge when one of its points (five or nine an edge) lies near
+// the tile, so a tile smaller than an edge's pieces (about 250 or 125 m) that a piece crosses
+// without a point inside gets no line for it, which left gaps in the ribbons on LOD 0–2 tiles.
 import * as THREE from "three";
 import type { Tile } from "./frame";
 import { setWater, waterMaterial } from "./mesh";

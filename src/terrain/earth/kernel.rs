@@ -278,6 +278,34 @@ fn gullies(o: &NoiseOctave, xs: &L, zs: &L, gx: &L, gz: &L, out: &mut L, dx: &mu
     }
 }
 
+/// Softening of the incised gullies' troughs, in units of `u` (below): the V is rounded over
+/// about `√ε` of the stripe's half-period.
+pub const INCISE_EPS: f32 = 0.02;
+/// Mean of `2√u − 1` over a stripe's phase, `4/π − 1`: subtracted so incised gullies add no
+/// height on average.
+pub const INCISE_MEAN: f32 = 0.273_239_55;
+/// `1 / (1 + INCISE_MEAN) = π/4`: keeps the incised stripe within `[−1, 1]` (its deepest trough
+/// is −0.78, its crests 0.59), so the LOD bound's largest gully signal stands.
+pub const INCISE_NORM: f32 = std::f32::consts::FRAC_PI_4;
+
+/// The incised cross-section of a gully octave (`EarthParams::gullies` 2), in place: with the
+/// stripe `v` (1 on its crests, −1 in its troughs) and `u = (1 + v)/2 = cos²(θ/2)`, the
+/// section is `(2√(u + ε) − 1 − INCISE_MEAN) · INCISE_NORM`, i.e. `|cos(θ/2)|` rescaled: a
+/// V-shaped trough between broad rounded crests, as water cuts gullies into a slope and leaves
+/// the spurs between them. Its derivative is the stripe's times `INCISE_NORM / (2√(u + ε))`.
+#[inline(always)]
+fn incise(v: &mut L, dx: &mut L, dz: &mut L) {
+    for l in 0..LANES {
+        let ue = 0.5 + 0.5 * v[l] + INCISE_EPS;
+        let inv = inv_sqrt(ue);
+        let r = ue * inv;
+        v[l] = (2.0 * r - 1.0 - INCISE_MEAN) * INCISE_NORM;
+        let dsig = 0.5 * inv * INCISE_NORM;
+        dx[l] *= dsig;
+        dz[l] *= dsig;
+    }
+}
+
 /// Heights (metres) of a batch at one LOD: `erosion[l]` and `rough[l]` are the climate's
 /// erosion strength and roughness at each sample.
 pub(super) fn heights(
@@ -328,8 +356,11 @@ pub(super) fn heights(
                     gz[l] += a * dsig * wdz;
                 }
             }
-            LayerKind::Gully => {
+            LayerKind::Gully { incised } => {
                 gullies(o, xs, zs, &gx, &gz, &mut n, &mut dx, &mut dz);
+                if incised {
+                    incise(&mut n, &mut dx, &mut dz);
+                }
                 for l in 0..LANES {
                     // The slope relative to the local relief: plains get valleys on their
                     // gentle slopes as mountains do on their steep ones.

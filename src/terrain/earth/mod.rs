@@ -139,7 +139,10 @@ pub enum LayerKind {
         ridged: bool,
     },
     /// One erosion-filter octave.
-    Gully,
+    Gully {
+        /// Incised cross-section (`EarthParams::gullies` 2): V-shaped troughs, rounded crests.
+        incised: bool,
+    },
 }
 
 /// One layer of the height sum at one LOD.
@@ -287,7 +290,9 @@ impl EarthPlan {
             let o = octave(seed, 200 + g as u32, cell, 0.0);
             let amp = GULLY_DEPTH as f64 * libm::pow(0.5, g as f64);
             let layer = Layer {
-                kind: LayerKind::Gully,
+                kind: LayerKind::Gully {
+                    incised: e.gullies >= 2,
+                },
                 octave: o,
                 amp: amp as f32,
             };

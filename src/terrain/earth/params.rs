@@ -52,6 +52,15 @@ pub struct EarthParams {
     pub gully_scale_m: f32,
     /// Erosion filter: gully octaves, each half the spacing of the previous, in [0, 8].
     pub gully_octaves: u32,
+    /// Erosion filter: the gullies' cross-section, 1 or 2. `1`: a cosine, as high on its crests
+    /// as it is deep in its troughs (worlds stored before `2` existed have no `gullies` and keep
+    /// it, and their bytes); `2` (new worlds): incised, V-shaped troughs between broad rounded
+    /// crests, so the stripes read as valleys cut into the slope ([`super::kernel`]).
+    #[serde(
+        default = "EarthParams::first_gullies",
+        skip_serializing_if = "EarthParams::is_first_gullies"
+    )]
+    pub gullies: u32,
     /// Latitude of the origin as a distance from the pole, metres: the Voronoi map of
     /// Choroś & Topolski is read at `z + latitude_offset_m`, so the origin sits this far towards
     /// the equator.
@@ -79,6 +88,17 @@ pub struct RiverParams {
     pub density: f32,
     /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
     pub incision_m: f32,
+    /// The valleys' shape, 1 or 2 ([`super::rivers`], step 6). `1`: at least 250 m wide and more
+    /// by discharge, so the land between rivers is pulled towards the planes of their water
+    /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
+    /// and their bytes. `2` (new worlds): a floodplain and walls as wide as the height they
+    /// climb, along centre lines of eight pieces an edge instead of four; the land beyond keeps
+    /// its shape.
+    #[serde(
+        default = "RiverParams::first_valleys",
+        skip_serializing_if = "RiverParams::is_first_valleys"
+    )]
+    pub valleys: u32,
 }
 
 impl Default for RiverParams {
@@ -88,11 +108,20 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
+            valleys: 2,
         }
     }
 }
 
 impl RiverParams {
+    fn first_valleys() -> u32 {
+        1
+    }
+
+    fn is_first_valleys(v: &u32) -> bool {
+        *v == 1
+    }
+
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
     pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
         let m = "must be in";
@@ -110,6 +139,11 @@ impl RiverParams {
             within(self.incision_m, 0.0, 300.0),
             "rivers.incision_m",
             &format!("{m} [0, 300]"),
+        )?;
+        check(
+            (1..=2).contains(&self.valleys),
+            "rivers.valleys",
+            "must be 1 or 2",
         )
     }
 }
@@ -137,6 +171,7 @@ impl Default for EarthParams {
             erosion: 1.0,
             gully_scale_m: 8000.0,
             gully_octaves: 6,
+            gullies: 2,
             latitude_offset_m: 1_024_000.0,
             lapse_m: 10_000.0,
             rivers: Some(RiverParams::default()),
@@ -179,9 +214,18 @@ fn within(v: f32, lo: f32, hi: f32) -> bool {
 }
 
 impl EarthParams {
+    fn first_gullies() -> u32 {
+        1
+    }
+
+    fn is_first_gullies(v: &u32) -> bool {
+        *v == 1
+    }
+
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
     pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
         let m = "must be in";
+        check((1..=2).contains(&self.gullies), "gullies", "must be 1 or 2")?;
         check(
             within(self.continent_scale_m, 10_000.0, 1.0e8),
             "continent_scale_m",

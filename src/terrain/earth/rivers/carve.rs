@@ -5,11 +5,11 @@ use super::super::super::hash::{hash2, signed_unit};
 use super::super::EarthPlan;
 use super::network::{Network, Node};
 use super::{
-    channel, kind, RiverPlan, CARVE_MAX_M, MEANDER, MIN_VALLEY_Q, PIECES, PIECE_BLOCK, Q_MAX,
-    REACH, VALLEY_MIN, WALL_SLOPE,
+    channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
+    Q_MAX, REACH, VALLEY_MIN, WALL_SLOPE,
 };
 
-/// One straight piece of a river's centre line, with the profile of its valley. Twelve `f32`,
+/// One straight piece of a river's centre line, with the profile of its valley. Thirteen `f32`,
 /// the layout of the WGSL twin's storage array.
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 #[repr(C)]
@@ -39,6 +39,10 @@ pub struct Piece {
     pub reach: f32,
     /// `1 / (|b − a|² + 10⁻⁶)`, 1/m².
     pub inv_len2: f32,
+    /// Half-width of the flat floodplain, metres (`valleys: 2`; 0 in `valleys: 1` worlds, whose
+    /// walls rise from the channel's edge): the valley floor is the water level out to the
+    /// larger of it and the channel's half-width.
+    pub floodplain: f32,
 }
 
 /// The rivers and lakes that can touch a rectangle of samples: pieces binned on a grid, and the
@@ -122,7 +126,7 @@ pub struct Edge {
     pub from: Node,
     /// The downstream node.
     pub to: Node,
-    /// The centre line, `PIECES + 1` points (x, z, water level), metres.
+    /// The centre line, `RiverPlan::pieces + 1` points (x, z, water level), metres.
     pub points: Vec<[f32; 3]>,
 }
 
@@ -150,13 +154,15 @@ impl Network<'_> {
         // A hashed bend across the edge, largest at its middle and nil at the nodes, so valleys
         // wander off the lattice's directions between confluences.
         let (ex, ez) = (p2.0 - p1.0, p2.1 - p1.1);
-        let bend = MEANDER * signed_unit(hash2(i as i32, k as i32, self.plan.seed ^ 0x7c15_9e3d));
-        let points = (0..=PIECES)
+        let bend = self.plan.meander
+            * signed_unit(hash2(i as i32, k as i32, self.plan.seed ^ 0x7c15_9e3d));
+        let pieces = self.plan.pieces;
+        let points = (0..=pieces)
             .map(|j| {
-                let t = j as f32 / PIECES as f32;
+                let t = j as f32 / pieces as f32;
                 let (x, z) = if j == 0 {
                     p1
-                } else if j == PIECES {
+                } else if j == pieces {
                     p2
                 } else {
                     let (cx, cz) = catmull_rom([p0, p1, p2, p3], t);
@@ -197,6 +203,14 @@ impl Network<'_> {
                 let valley = VALLEY_MIN + (max_reach - VALLEY_MIN) * grow;
                 let relief = self.relief(i, k) * self.earth.inv_relief_max;
                 let reach = (3.0 * valley * (1.0 + 3.0 * relief)).min(max_reach);
+                // `valleys: 2`: a flat floodplain, then walls as wide as the height they climb
+                // (`profile`); the land beyond keeps its own shape.
+                let (floodplain, valley) = if self.plan.valleys >= 2 {
+                    let f = (FLOODPLAIN * hw + FLOODPLAIN_MIN_M).min(0.5 * reach);
+                    (f, 2.0 * f)
+                } else {
+                    (0.0, valley)
+                };
                 for p in edge.points.windows(2) {
                     let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
                     pieces.push(Piece {
@@ -212,6 +226,7 @@ impl Network<'_> {
                         wet: if wet { 1.0 } else { 0.0 },
                         reach,
                         inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
+                        floodplain,
                     });
                 }
             }
@@ -316,11 +331,12 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// Piece `p` applied to a sample at `(x, z)` of height `h`: the height lowered towards the
 /// valley (at most `h`) and, when the sample lies in a wet channel, the water level there.
 ///
-/// With `W` the water level, `b` the channel half-width, `V` the valley half-width and `d` the
-/// distance to the piece: above `W` the height keeps its excess scaled by
-/// `g = smoothstep(b, V', d)`, so the valley keeps the terrain's detail and its floor flattens
-/// towards the channel; `V' = clamp(b + (h − W) / WALL_SLOPE, V, R)` widens the valley where it
-/// is deep, so its walls average no more than [`WALL_SLOPE`] (`R` is the piece's reach). Below
+/// With `W` the water level, `b` the channel half-width, `F = max(b, floodplain)`, `V` the
+/// valley half-width and `d` the distance to the piece: above `W` the height keeps its excess
+/// scaled by `g = smoothstep(F, V', d)`, so the valley keeps the terrain's detail and its floor
+/// is flat at `W` out to `F`; `V' = clamp(F + (h − W) / WALL_SLOPE, V, R)` widens the valley
+/// where it is deep, so its walls average no more than [`WALL_SLOPE`] (`R` is the piece's
+/// reach). In `valleys: 1` worlds the floodplain is 0, so `F = b`. Below
 /// `W` nothing changes. Inside the channel the ground is cut to the parabola
 /// `W − c·(1 − (d/b)²)`. Beyond `V'` the height is `h`, bit for bit.
 #[inline(always)]
@@ -333,9 +349,10 @@ pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let w = p.wa + (p.wb - p.wa) * t;
     let mut c = h;
     if h > w {
-        let v = (p.half_width + (h - w) / WALL_SLOPE).clamp(p.valley, p.reach);
+        let floor = p.half_width.max(p.floodplain);
+        let v = (floor + (h - w) / WALL_SLOPE).clamp(p.valley, p.reach);
         if d < v {
-            let g = smoothstep(p.half_width, v, d);
+            let g = smoothstep(floor, v, d);
             c = w + (h - w) * g;
         }
     }
@@ -407,7 +424,8 @@ impl RiverJob {
             .map(|p| {
                 let w_min = p.wa.min(p.wb);
                 let v = if h_max > w_min {
-                    (p.half_width + (h_max - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
+                    let floor = p.half_width.max(p.floodplain);
+                    (floor + (h_max - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
                 } else {
                     p.half_width
                 };

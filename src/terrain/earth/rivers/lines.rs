@@ -8,7 +8,7 @@
 
 use super::carve::Edge;
 use super::network::{Network, NodeId};
-use super::{channel, discharge_m3s, PIECES};
+use super::{channel, discharge_m3s};
 use std::collections::{HashMap, HashSet};
 
 /// How a river line ends.
@@ -110,7 +110,11 @@ impl Network<'_> {
                 let skip = usize::from(!line.points.is_empty());
                 for (j, p) in e.points.iter().enumerate().skip(skip) {
                     // Width and discharge change at the downstream node of the edge.
-                    let q = if j == PIECES { e.to.q } else { e.from.q };
+                    let q = if j + 1 == e.points.len() {
+                        e.to.q
+                    } else {
+                        e.from.q
+                    };
                     line.points.push(*p);
                     line.width_m.push(2.0 * channel(q).0);
                     line.discharge_m3s.push(discharge_m3s(q, s));

@@ -23,12 +23,23 @@
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
 //!    Rivers end in the lake; lakes do not spill into further rivers.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
-//!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`] straight
-//!    pieces with `W` linear along it. A sample at distance `d` from a piece may be no higher
+//!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
+//!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it. A sample at distance `d` from a piece may be no higher
 //!    than the valley profile `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c`
 //!    depth, from the discharge) and `W + bank + K·u + G·u²` outside it (`u` past the
 //!    floodplain), faded out by [`REACH`] spacings; the height becomes the smooth minimum of
 //!    itself and the lowest profile. Where a channel holds water, the vertex is `river` water.
+//!    Valley walls ([`carve::profile`]): above the water a sample keeps its height above `W`
+//!    scaled by a smoothstep of its distance from the floor's edge `F` to the valley's
+//!    half-width `V' = clamp(F + (h − W) / WALL_SLOPE, V, R)`, so walls average [`WALL_SLOPE`]
+//!    however high they climb. In worlds with `valleys: 1` the floor ends at the channel
+//!    (`F = b`) and the narrowest valley `V` is [`VALLEY_MIN`], growing by discharge to the
+//!    reach (a kilometre and more): every sample between rivers lies in a valley, pulled down
+//!    towards the planes of their water levels, which draws straight facets across the plains.
+//!    With `valleys: 2` (the default of new worlds) the floor is a flat floodplain at `W`
+//!    ([`FLOODPLAIN`] channel half-widths plus [`FLOODPLAIN_MIN_M`]), `V` twice that, so a
+//!    valley is as wide as its walls need and the land beyond keeps its own shape; and the flat
+//!    floor keeps a valley sampled at 64 m from reading as a chain of pits.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample changes nothing (its profile is more than [`FADE_M`] above any height), so every tile
@@ -66,8 +77,15 @@ pub const Q_MAX: u32 = 4096;
 pub const JITTER: f32 = 0.3;
 /// Largest bend of an edge's middle across it, in units of its length.
 pub const MEANDER: f32 = 0.35;
-/// Straight pieces per river edge.
+/// [`MEANDER`] of `valleys: 2` worlds: their narrow valleys show the lattice's directions more
+/// than the wide ones did, so the edges bend further.
+pub const MEANDER_2: f32 = 0.5;
+/// Straight pieces per river edge in `valleys: 1` worlds.
 pub const PIECES: usize = 4;
+/// Straight pieces per river edge in `valleys: 2` worlds: a valley as narrow as its walls shows
+/// the corners of four pieces, so the centre line follows its curve closer (eight, not more:
+/// the carve's cost grows with the pieces a sample is tested against).
+pub const PIECES_2: usize = 8;
 /// A lake's flood visits at most this many nodes.
 pub const LAKE_MAX_NODES: usize = 256;
 /// A lake's flood stays within this many spacings of its pit (Chebyshev distance).
@@ -82,6 +100,10 @@ pub const REACH: f32 = 1.5;
 /// Mean slope of the valley walls the carve makes where the valley is deep (rise over run,
 /// about 25°; the smoothstep's steepest point is 1.5 times that).
 pub const WALL_SLOPE: f32 = 0.47;
+/// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
+pub const FLOODPLAIN: f32 = 4.0;
+/// Half-width of the smallest `valleys: 2` floodplain, metres.
+pub const FLOODPLAIN_MIN_M: f32 = 50.0;
 /// Edges out of nodes with less discharge than this carve no valley.
 pub const MIN_VALLEY_Q: u32 = 1;
 /// Half-width of the smallest valleys, metres.
@@ -142,6 +164,12 @@ pub struct RiverPlan {
     /// Identifies the world function the network is computed from (the seed and every setting
     /// the node heights read), so worlds and versions that share it share cached blocks.
     pub fingerprint: u64,
+    /// `RiverParams::valleys` (step 6): 1 for the first valleys, 2 for floodplain valleys.
+    pub valleys: u32,
+    /// Straight pieces per edge: [`PIECES`], or [`PIECES_2`] with `valleys: 2`.
+    pub pieces: usize,
+    /// Largest bend of an edge: [`MEANDER`], or [`MEANDER_2`] with `valleys: 2`.
+    pub meander: f32,
 }
 
 impl RiverPlan {
@@ -175,6 +203,17 @@ impl RiverPlan {
             sea_level_m,
             erosion,
             fingerprint,
+            valleys: params.valleys,
+            meander: if params.valleys >= 2 {
+                MEANDER_2
+            } else {
+                MEANDER
+            },
+            pieces: if params.valleys >= 2 {
+                PIECES_2
+            } else {
+                PIECES
+            },
         }
     }
 

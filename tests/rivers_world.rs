@@ -1,0 +1,67 @@
+//! A world stored with the first river valleys keeps its bytes: its scene has no
+//! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
+//! answers the tiles (formats 1 and 2) the old server answered, bit for bit
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 2` and `gullies: 2`,
+//! whose tiles differ.
+
+mod common;
+
+use common::fixture::{get, pinned_get};
+
+const WORLD: &str = "c7ff83f4aec16857c06ae2d9";
+const FIXTURE: &str = "rivers-world";
+
+#[tokio::test]
+async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
+    let (_data, server) = common::fixture::serve(FIXTURE);
+    let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
+        .expect("fixture hashes");
+    let mut checked = 0;
+    for line in expected.lines() {
+        let parts: Vec<&str> = line.split_whitespace().collect();
+        let [format, key, hash] = parts[..] else {
+            panic!("bad fixture line {line:?}");
+        };
+        let query = if format == "2" { "&format=2" } else { "" };
+        let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}");
+        pinned_get(&server, &path, hash).await;
+        checked += 1;
+    }
+    assert_eq!(checked, 20, "every fixture tile was checked");
+
+    // The stored scene has rivers but no `valleys`, and reading it does not add one.
+    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/1")).await;
+    assert_eq!(status, 200);
+    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
+    let doc = &doc["scene"];
+    let rivers = &doc["world"]["earth"]["rivers"];
+    assert_eq!(rivers["enabled"], true, "{rivers}");
+    assert!(rivers.get("valleys").is_none(), "{rivers}");
+    let earth = &doc["world"]["earth"];
+    assert!(earth.get("gullies").is_none(), "{earth}");
+
+    // A bare seed is the new default, `valleys: 2`: the carved tile over a river differs.
+    let stored = expected
+        .lines()
+        .find(|l| l.starts_with("1 3/-24/50 "))
+        .and_then(|l| l.split_whitespace().nth(2))
+        .expect("the river tile's line");
+    let (status, bare) = get(&server.addr, "/v1/seeds/42/tiles/3/-24/50.bin").await;
+    assert_eq!(status, 200);
+    assert_ne!(
+        blake3::hash(&bare).to_hex().as_str(),
+        stored,
+        "bare seeds carve valleys: 2 and incised gullies"
+    );
+}
+
+#[test]
+fn new_scenes_carve_the_second_valleys_and_accept_only_known_ones() {
+    let scene = strata::scene::Scene::default().to_value();
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 2);
+    assert_eq!(scene["world"]["earth"]["gullies"], 2);
+    let mut bad = scene.clone();
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(3);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 3 is refused");
+    assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
+}
