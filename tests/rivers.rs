@@ -411,3 +411,61 @@ fn rivers_follow_the_scene_settings() {
         "off is the river-free world"
     );
 }
+
+/// A straight `valleys: 2` piece along +x from (0, 0) to (100, 0), water at 50 m, a channel
+/// 4 m wide and 1 m deep, a floodplain 60 m wide each side, walls from 120 m out to the reach.
+fn floodplain_piece() -> strata::terrain::earth::rivers::Piece {
+    strata::terrain::earth::rivers::Piece {
+        ax: 0.0,
+        az: 0.0,
+        bx: 100.0,
+        bz: 0.0,
+        wa: 50.0,
+        wb: 50.0,
+        half_width: 2.0,
+        depth: 1.0,
+        valley: 120.0,
+        wet: 1.0,
+        reach: 1000.0,
+        inv_len2: 1.0 / (100.0 * 100.0 + strata::terrain::earth::rivers::PIECE_LEN2_EPS),
+        floodplain: 60.0,
+    }
+}
+
+#[test]
+fn a_floodplain_valley_is_flat_to_its_edge_then_climbs_walls_and_leaves_the_land_beyond() {
+    use strata::terrain::earth::rivers::{profile, WALL_SLOPE};
+    let p = floodplain_piece();
+    // On the floodplain the ground is the water level, whatever its height was.
+    for (d, h) in [(5.0, 51.0), (30.0, 80.0), (59.0, 300.0)] {
+        let (c, _) = profile(&p, 50.0, d, h);
+        assert_eq!(c, 50.0, "floodplain at {d} m, ground {h} m");
+    }
+    // In the channel the bed is below the water, and the vertex is river water.
+    let (c, water) = profile(&p, 50.0, 0.0, 60.0);
+    assert_eq!((c, water), (49.0, Some(50.0)));
+    // The walls rise from the floodplain's edge and end where they have climbed the height
+    // above the water at WALL_SLOPE: beyond that the ground keeps its height, bit for bit.
+    let h = 90.0f32;
+    let edge = 60.0 + (h - 50.0) / WALL_SLOPE;
+    let mut last = 50.0;
+    for i in 1..40 {
+        let d = 60.0 + (edge - 60.0) * i as f32 / 40.0;
+        let (c, _) = profile(&p, 50.0, d, h);
+        assert!(c >= last && c < h, "the wall climbs at {d} m: {c}");
+        last = c;
+    }
+    for d in [edge + 0.5, 400.0, 999.0, 1500.0] {
+        assert_eq!(profile(&p, 50.0, d, h).0.to_bits(), h.to_bits(), "{d} m");
+    }
+    // Below the water nothing changes outside the channel.
+    assert_eq!(profile(&p, 50.0, 30.0, 45.0).0, 45.0);
+    // The carved height moves by no more than the ground does (the LOD bound relies on it).
+    for d in [61.0f32, 80.0, 120.0, 200.0, 400.0] {
+        for h in [52.0f32, 60.0, 100.0, 200.0, 400.0] {
+            let (a, b) = (profile(&p, 50.0, d, h).0, profile(&p, 50.0, d, h + 0.5).0);
+            let slope = (b - a) / 0.5;
+            assert!((-0.26..=1.0001).contains(&slope), "{d} m, {h} m: {slope}");
+        }
+    }
+}

@@ -24,12 +24,13 @@
 //!    Rivers end in the lake; lakes do not spill into further rivers.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
-//!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it. A sample at distance `d` from a piece may be no higher
-//!    than the valley profile `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c`
-//!    depth, from the discharge) and `W + bank + K·u + G·u²` outside it (`u` past the
-//!    floodplain), faded out by [`REACH`] spacings; the height becomes the smooth minimum of
-//!    itself and the lowest profile. Where a channel holds water, the vertex is `river` water.
-//!    Valley walls ([`carve::profile`]): above the water a sample keeps its height above `W`
+//!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it. Each piece
+//!    lowers the samples within its reach (at most [`REACH`] spacings) to its valley profile: the
+//!    parabola `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c` depth, from the
+//!    discharge, `d` the distance to the piece) and the walls below outside it; a sample takes
+//!    the lowest of the pieces' profiles, at most [`CARVE_MAX_M`] below its height. Where a
+//!    channel holds water, the vertex is `river` water.
+//!    Valley walls ([`profile`]): above the water a sample keeps its height above `W`
 //!    scaled by a smoothstep of its distance from the floor's edge `F` to the valley's
 //!    half-width `V' = clamp(F + (h − W) / WALL_SLOPE, V, R)`, so walls average [`WALL_SLOPE`]
 //!    however high they climb. In worlds with `valleys: 1` the floor ends at the channel
@@ -42,15 +43,16 @@
 //!    floor keeps a valley sampled at 64 m from reading as a chain of pits.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
-//! a sample changes nothing (its profile is more than [`FADE_M`] above any height), so every tile
+//! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
 //! that contains a vertex computes its height and water bit for bit alike. Node data are
 //! memoised in process-wide caches (`moka`, bounded in bytes, keyed by the world's fingerprint):
 //! the cache changes the time, never the bytes.
 //!
 //! LODs: the carve runs at LODs `0..=MAX_CARVE_LOD` (spacing up to half a node spacing by
 //! default); coarser tiles skip it, and their LOD bound grows by [`CARVE_MAX_M`], the most the
-//! carve may remove. (Finer LODs carve the same profile: the smooth minimum is 1-Lipschitz, so
-//! their bound stands.)
+//! carve may remove. (Finer LODs carve with the same pieces, and a sample's carved height moves
+//! by no more than its uncarved height does — each profile's slope in `h` lies in [−¼, 1], and
+//! the minimum over pieces keeps that — so their bound stands.)
 
 mod carve;
 mod lines;
