@@ -14,16 +14,10 @@ async fn a_world_stored_by_the_classic_default_serves_the_same_tile_bytes() {
     let (_data, server) = common::fixture::serve(FIXTURE);
     let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
         .expect("fixture hashes");
-    let mut checked = 0;
-    for line in expected.lines() {
-        let parts: Vec<&str> = line.split_whitespace().collect();
-        let [version, key, hash] = parts[..] else {
-            panic!("bad fixture line {line:?}");
-        };
-        let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={version}");
-        common::fixture::pinned_get(&server, &path, hash).await;
-        checked += 1;
-    }
+    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |v, key| {
+        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v={v}")
+    })
+    .await;
     assert_eq!(checked, 12, "every fixture tile was checked");
 
     // The stored scene names no generator (so it is classic) ...

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::fixture::{get, pinned_get};
+use common::fixture::get;
 
 const WORLD: &str = "c7ff83f4aec16857c06ae2d9";
 const FIXTURE: &str = "rivers-world";
@@ -16,17 +16,11 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let (_data, server) = common::fixture::serve(FIXTURE);
     let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
         .expect("fixture hashes");
-    let mut checked = 0;
-    for line in expected.lines() {
-        let parts: Vec<&str> = line.split_whitespace().collect();
-        let [format, key, hash] = parts[..] else {
-            panic!("bad fixture line {line:?}");
-        };
+    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
         let query = if format == "2" { "&format=2" } else { "" };
-        let path = format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}");
-        pinned_get(&server, &path, hash).await;
-        checked += 1;
-    }
+        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}")
+    })
+    .await;
     assert_eq!(checked, 20, "every fixture tile was checked");
 
     // The stored scene has rivers but no `valleys`, and reading it does not add one.

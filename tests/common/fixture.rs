@@ -35,6 +35,28 @@ pub async fn pinned_get(server: &super::Server, path: &str, hash: &str) -> Vec<u
     body
 }
 
+/// The lines of fixture `name`'s hash file `file`, each `first key blake3` (the first column
+/// names the version or the format): every line's body, from the path `path(first, key)`, must
+/// have that hash. Returns the number of lines checked.
+pub async fn check_pinned(
+    server: &super::Server,
+    name: &str,
+    file: &str,
+    path_of: impl Fn(&str, &str) -> String,
+) -> usize {
+    let expected = std::fs::read_to_string(path(name, file)).expect("fixture hashes");
+    let mut checked = 0;
+    for line in expected.lines() {
+        let parts: Vec<&str> = line.split_whitespace().collect();
+        let [first, key, hash] = parts[..] else {
+            panic!("bad fixture line {line:?}");
+        };
+        pinned_get(server, &path_of(first, key), hash).await;
+        checked += 1;
+    }
+    checked
+}
+
 /// `GET path` from `addr`: the status and the body.
 pub async fn get(addr: &str, path: &str) -> (u16, Vec<u8>) {
     strata::bench::http::http_get(addr, path)

@@ -1,9 +1,9 @@
 //! Helpers shared by the integration tests: the real `strata` binary ([`start`], [`start_logged`])
-//! and its raw HTTP client ([`raw`]), the GPU tests' device ([`device`]), requests to
-//! the router in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a
-//! quad mesh's Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element ([`arch`]), the Khronos glTF
-//! validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the browser tests ([`js`]) and tiles with river
-//! and lake water ([`water`]).
+//! and its raw HTTP client ([`raw`]), the GPU tests' device ([`device`]), requests to the router
+//! in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a quad mesh's
+//! Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element
+//! ([`arch`]), the Khronos glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the
+//! Node packages of the browser tests ([`js`]) and tiles with river and lake water ([`water`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
