@@ -469,3 +469,74 @@ fn a_floodplain_valley_is_flat_to_its_edge_then_climbs_walls_and_leaves_the_land
         }
     }
 }
+
+/// Two shortcuts of the tile path against the full river job, over tiles that hold river lines
+/// at LOD 0, 3 and 6 in every named area: the carve with each bin pruned to the pieces that can
+/// reach its highest sample (`RiverJob::prune_bins`) gives every height of the full job, and the
+/// water job (`water_job_for`: wet channels only) gives every sample's water surface and kind,
+/// bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
+#[test]
+fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
+    use strata::terrain::earth::rivers::{job_for, water_at, water_job_for};
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    let n = 65usize;
+    let (mut tiles, mut wet, mut left_out) = (0, 0, 0usize);
+    for (name, cx, cz) in AREAS {
+        for lod in [0u32, 3, 6] {
+            let spacing = p.lods[lod as usize].spacing_m;
+            let span = 64.0 * spacing;
+            let (tx, tz) = ((cx / span).floor() as i64, (cz / span).floor() as i64);
+            let keys = (-3..=3)
+                .flat_map(|b| {
+                    (-3..=3).map(move |a| TileKey {
+                        lod,
+                        x: tx + a,
+                        z: tz + b,
+                    })
+                })
+                .filter(|k| !tile_rivers(earth, *k, spacing).is_empty())
+                .take(3);
+            for key in keys {
+                tiles += 1;
+                let t = synthesize(&p, key);
+                let (gx0, gz0) = (key.x * 64, key.z * 64);
+                let at = |v: usize| {
+                    let x = (gx0 + (v % n) as i64) as f32 * spacing;
+                    let z = (gz0 + (v / n) as i64) as f32 * spacing;
+                    (x, z)
+                };
+                let full = job_for(earth, rp, spacing, gx0, gz0, n, n);
+                let raised: Vec<f32> = t.heights.iter().map(|h| h + 40.0).collect();
+                let mut pruned = full.clone();
+                pruned.prune_bins(raised.iter().enumerate().map(|(v, h)| {
+                    let (x, z) = at(v);
+                    (x, z, *h)
+                }));
+                left_out += full.bin_pieces.len() - pruned.bin_pieces.len();
+                let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
+                let sea = p.params.sea_level_m;
+                for (v, h) in raised.iter().enumerate() {
+                    let (x, z) = at(v);
+                    assert_eq!(
+                        pruned.carve_one(x, z, *h).to_bits(),
+                        full.carve_one(x, z, *h).to_bits(),
+                        "{name} {key:?} vertex {v}: the pruned carve differs"
+                    );
+                    let carved = t.heights[v];
+                    let (s_full, k_full) = water_at(&full, sea, x, z, carved);
+                    let (s, k) = water_at(&water, sea, x, z, carved);
+                    assert_eq!(
+                        (s.to_bits(), k),
+                        (s_full.to_bits(), k_full),
+                        "{name} {key:?} vertex {v}: the water job's water differs"
+                    );
+                    wet += usize::from(k == kind::RIVER);
+                }
+            }
+        }
+    }
+    assert!(tiles >= 8, "only {tiles} tiles with river lines");
+    assert!(wet > 0, "no sample of the tiles lies in a river channel");
+    assert!(left_out > 0, "the pruning left no piece out of any bin");
+}

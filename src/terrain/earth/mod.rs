@@ -484,13 +484,21 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
 /// Carves the rivers of `rj` into a job's heights: the CPU reference of the carve (the WGSL twin
 /// is `shaders/rivers.wgsl`).
 pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
-    // Only the pieces that can reach the job at its highest sample (the same result, faster).
-    let h_max = heights.iter().fold(f32::NEG_INFINITY, |m, h| m.max(*h));
-    let rj = rj.pruned(h_max);
-    for (v, h) in heights.iter_mut().enumerate() {
+    let at = |v: usize| {
         let (i, j) = ((v % job.w) as i64, (v / job.w) as i64);
-        let x = (job.gx0 + i) as f32 * spacing_m;
-        let z = (job.gz0 + j) as f32 * spacing_m;
+        (
+            (job.gx0 + i) as f32 * spacing_m,
+            (job.gz0 + j) as f32 * spacing_m,
+        )
+    };
+    // Only the pieces that can reach each bin at its highest sample (the same result, faster).
+    let mut rj = rj.clone();
+    rj.prune_bins(heights.iter().enumerate().map(|(v, h)| {
+        let (x, z) = at(v);
+        (x, z, *h)
+    }));
+    for (v, h) in heights.iter_mut().enumerate() {
+        let (x, z) = at(v);
         *h = rj.carve_one(x, z, *h);
     }
 }
@@ -514,7 +522,7 @@ pub fn tile_water(
     );
     let carved = key.lod as usize <= rivers::MAX_CARVE_LOD;
     let rj = if carved {
-        rivers::job_for(plan, rp, spacing_m, gx0, gz0, n, n)
+        rivers::water_job_for(plan, rp, spacing_m, gx0, gz0, n, n)
     } else {
         rivers::RiverJob::default()
     };

@@ -237,6 +237,35 @@ impl Network<'_> {
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres), binned on
     /// a grid of `bin_m` squares.
     pub fn job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32, bin_m: f32) -> RiverJob {
+        self.job_within(x0, z0, x1, z1, bin_m, |p| p.reach)
+    }
+
+    /// The wet channels that can hold samples of `[x0, x1] × [z0, z1]` (metres), and the lakes:
+    /// the job of [`water_at`], whose river level reads only the pieces within a channel
+    /// half-width of a sample. `water_at` gives the same answer for it as for [`Network::job`]'s,
+    /// bit for bit (a margin of 1 m keeps rounding on the side of keeping a piece), and most
+    /// tiles have no such piece at all.
+    pub fn water_job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32, bin_m: f32) -> RiverJob {
+        self.job_within(x0, z0, x1, z1, bin_m, |p| {
+            if p.wet > 0.0 {
+                p.half_width + 1.0
+            } else {
+                0.0
+            }
+        })
+    }
+
+    /// The job of the pieces that come within `reach_of(piece)` metres of the rectangle, each in
+    /// the bins whose centre is within that plus half a bin's diagonal.
+    fn job_within(
+        &mut self,
+        x0: f32,
+        z0: f32,
+        x1: f32,
+        z1: f32,
+        bin_m: f32,
+        reach_of: impl Fn(&Piece) -> f32,
+    ) -> RiverJob {
         let s = self.plan.spacing_m;
         // Nodes whose edges can come within reach: the curve stays within a spacing of its
         // nodes' cells (jitter and Catmull–Rom overshoot are both below half a spacing).
@@ -251,7 +280,7 @@ impl Network<'_> {
                 pieces.extend(
                     cached
                         .iter()
-                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < p.reach),
+                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < reach_of(p)),
                 );
             }
         }
@@ -262,10 +291,11 @@ impl Network<'_> {
         let half_diag = bin_m * std::f32::consts::FRAC_1_SQRT_2;
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); bins_w * bins_h];
         for (pi, p) in pieces.iter().enumerate() {
-            let bx0 = ((p.ax.min(p.bx) - p.reach - x0) / bin_m).floor();
-            let bx1 = ((p.ax.max(p.bx) + p.reach - x0) / bin_m).floor();
-            let bz0 = ((p.az.min(p.bz) - p.reach - z0) / bin_m).floor();
-            let bz1 = ((p.az.max(p.bz) + p.reach - z0) / bin_m).floor();
+            let reach = reach_of(p);
+            let bx0 = ((p.ax.min(p.bx) - reach - x0) / bin_m).floor();
+            let bx1 = ((p.ax.max(p.bx) + reach - x0) / bin_m).floor();
+            let bz0 = ((p.az.min(p.bz) - reach - z0) / bin_m).floor();
+            let bz1 = ((p.az.max(p.bz) + reach - z0) / bin_m).floor();
             if bx1 < 0.0 || bz1 < 0.0 || bx0 >= bins_w as f32 || bz0 >= bins_h as f32 {
                 continue;
             }
@@ -273,7 +303,7 @@ impl Network<'_> {
                 for bx in bx0.max(0.0) as usize..=(bx1 as usize).min(bins_w - 1) {
                     let cx = x0 + (bx as f32 + 0.5) * bin_m;
                     let cz = z0 + (bz as f32 + 0.5) * bin_m;
-                    if point_distance(p, cx, cz) < p.reach + half_diag {
+                    if point_distance(p, cx, cz) < reach + half_diag {
                         lists[bz * bins_w + bx].push(pi as u32);
                     }
                 }
@@ -297,6 +327,10 @@ impl Network<'_> {
             for i in li0..=li1 {
                 lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
             }
+        }
+        // No lake around: an empty window, so `lake_level` answers at once.
+        if lakes.iter().all(|l| l.is_nan()) {
+            lakes.clear();
         }
         RiverJob {
             pieces,
@@ -368,19 +402,26 @@ pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
 }
 
 impl RiverJob {
-    fn bin(&self, x: f32, z: f32) -> &[u32] {
+    /// The bin of a sample at `(x, z)`, if it lies on the grid.
+    fn bin_index(&self, x: f32, z: f32) -> Option<usize> {
         if self.bin_start.is_empty() {
-            return &[];
+            return None;
         }
         let bx = ((x - self.x0) / self.bin_m).floor();
         let bz = ((z - self.z0) / self.bin_m).floor();
         // Written so that NaN lands outside too.
         let inside = |b: f32, n: usize| b >= 0.0 && b < n as f32;
         if !(inside(bx, self.bins_w) && inside(bz, self.bins_h)) {
-            return &[];
+            return None;
         }
-        let b = bz as usize * self.bins_w + bx as usize;
-        &self.bin_pieces[self.bin_start[b] as usize..self.bin_start[b + 1] as usize]
+        Some(bz as usize * self.bins_w + bx as usize)
+    }
+
+    fn bin(&self, x: f32, z: f32) -> &[u32] {
+        match self.bin_index(x, z) {
+            Some(b) => &self.bin_pieces[self.bin_start[b] as usize..self.bin_start[b + 1] as usize],
+            None => &[],
+        }
     }
 
     fn pieces_at(&self, x: f32, z: f32) -> impl Iterator<Item = &Piece> {
@@ -413,55 +454,52 @@ impl RiverJob {
         best
     }
 
-    /// The same job without the pieces that cannot change any sample of the rectangle whose
-    /// heights are at most `h_max`: a piece reaches no farther than its valley widened for
-    /// `h_max` (`profile`'s `V'`, with a margin for rounding) or its channel. The carve of every
-    /// sample is unchanged, bit for bit: the pieces left out would have returned it unchanged.
-    pub fn pruned(&self, h_max: f32) -> RiverJob {
-        let keep: Vec<bool> = self
-            .pieces
-            .iter()
-            .map(|p| {
+    /// Leaves out of each bin the pieces that cannot change its samples, given the samples'
+    /// heights `(x, z, h)`: a piece reaches no farther than its valley widened for the bin's
+    /// highest sample (`profile`'s `V'`, with a margin for rounding) or its channel. The carve
+    /// of every sample is unchanged, bit for bit: the pieces left out would have returned it
+    /// unchanged, and the lowest of the rest does not depend on their order. In mountains a
+    /// bin's highest sample is far below the tile's, so this keeps a few pieces of the many
+    /// within reach.
+    pub fn prune_bins(&mut self, samples: impl Iterator<Item = (f32, f32, f32)>) {
+        let bins = self.bin_start.len().saturating_sub(1);
+        let mut h_max = vec![f32::NEG_INFINITY; bins];
+        for (x, z, h) in samples {
+            if let Some(b) = self.bin_index(x, z) {
+                h_max[b] = h_max[b].max(h);
+            }
+        }
+        let mut bin_pieces = Vec::with_capacity(self.bin_pieces.len());
+        let mut start = 0usize;
+        for (b, &top) in h_max.iter().enumerate() {
+            let (bx, bz) = ((b % self.bins_w) as f32, (b / self.bins_w) as f32);
+            let rx0 = self.x0 + bx * self.bin_m;
+            let rz0 = self.z0 + bz * self.bin_m;
+            let (rx1, rz1) = (rx0 + self.bin_m, rz0 + self.bin_m);
+            let range = start..self.bin_start[b + 1] as usize;
+            start = range.end;
+            self.bin_start[b] = bin_pieces.len() as u32;
+            if top == f32::NEG_INFINITY {
+                continue;
+            }
+            for &i in &self.bin_pieces[range] {
+                let p = &self.pieces[i as usize];
                 let w_min = p.wa.min(p.wb);
-                let v = if h_max > w_min {
+                let v = if top > w_min {
                     let floor = p.half_width.max(p.floodplain);
-                    (floor + (h_max - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
+                    (floor + (top - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
                 } else {
                     p.half_width
                 };
-                rect_distance(p, self.x0, self.z0, self.x1, self.z1) < v * 1.001 + 1.0
-            })
-            .collect();
-        let mut index = vec![u32::MAX; self.pieces.len()];
-        let mut pieces = Vec::new();
-        for (i, p) in self.pieces.iter().enumerate() {
-            if keep[i] {
-                index[i] = pieces.len() as u32;
-                pieces.push(*p);
+                if rect_distance(p, rx0, rz0, rx1, rz1) < v * 1.001 + 1.0 {
+                    bin_pieces.push(i);
+                }
             }
         }
-        let mut bin_start = Vec::with_capacity(self.bin_start.len());
-        let mut bin_pieces = Vec::new();
-        for b in 0..self.bin_start.len().saturating_sub(1) {
-            bin_start.push(bin_pieces.len() as u32);
-            let range = self.bin_start[b] as usize..self.bin_start[b + 1] as usize;
-            bin_pieces.extend(
-                self.bin_pieces[range]
-                    .iter()
-                    .filter(|&&i| keep[i as usize])
-                    .map(|&i| index[i as usize]),
-            );
+        if bins > 0 {
+            self.bin_start[bins] = bin_pieces.len() as u32;
         }
-        if !self.bin_start.is_empty() {
-            bin_start.push(bin_pieces.len() as u32);
-        }
-        RiverJob {
-            pieces,
-            bin_start,
-            bin_pieces,
-            lakes: self.lakes.clone(),
-            ..*self
-        }
+        self.bin_pieces = bin_pieces;
     }
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.
@@ -504,6 +542,24 @@ pub fn job_for(
     // About 8 × 8 bins over the rectangle, at least 8 m and at most a node spacing.
     let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
     Network::new(earth, plan).job(x0, z0, x1, z1, bin_m)
+}
+
+/// The water job ([`Network::water_job`]) of the same samples as [`job_for`]'s.
+pub fn water_job_for(
+    earth: &EarthPlan,
+    plan: &RiverPlan,
+    spacing_m: f32,
+    gx0: i64,
+    gz0: i64,
+    w: usize,
+    h: usize,
+) -> RiverJob {
+    let x0 = gx0 as f32 * spacing_m;
+    let z0 = gz0 as f32 * spacing_m;
+    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
+    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
+    Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m)
 }
 
 /// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height

@@ -12,7 +12,8 @@ use super::{
     RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_MAX_NODES, LAKE_RADIUS, LAKE_WALK, NONE, OFFSETS, Q_MAX,
     ROUTE_NOISE,
 };
-use std::collections::{BinaryHeap, HashMap, HashSet};
+use rustc_hash::FxHashMap as HashMap;
+use std::collections::{BinaryHeap, HashSet};
 use std::sync::Arc;
 
 /// A node's lattice index `(i, k)`.
@@ -162,9 +163,9 @@ impl<'a> Network<'a> {
         Self {
             earth,
             plan,
-            heights: HashMap::new(),
-            routes: HashMap::new(),
-            flows: HashMap::new(),
+            heights: HashMap::default(),
+            routes: HashMap::default(),
+            flows: HashMap::default(),
         }
     }
 
@@ -411,7 +412,7 @@ impl<'a> Network<'a> {
     fn compute_flow(&mut self, (bx, bz): (i64, i64)) -> FlowBlock {
         let n = BLOCK as usize;
         let (i0, k0) = (bx * BLOCK, bz * BLOCK);
-        let mut memo = HashMap::new();
+        let mut memo = HashMap::default();
         let mut q = vec![0u32; n * n];
         for lk in 0..n {
             for li in 0..n {
@@ -430,7 +431,7 @@ impl<'a> Network<'a> {
         };
         // The nodes each lake floods.
         let r = LAKE_RADIUS;
-        let mut levels: HashMap<(i64, i64), f32> = HashMap::new();
+        let mut levels: HashMap<(i64, i64), f32> = HashMap::default();
         for k in k0 - r..k0 + BLOCK + r {
             for i in i0 - r..i0 + BLOCK + r {
                 if self.down(i, k).is_some() || !self.is_pit(i, k) {
@@ -445,7 +446,7 @@ impl<'a> Network<'a> {
         }
         // Water levels: incised below the node height by the discharge, faded out with the
         // distance to the end of the flow, and never below the end's base level.
-        let mut ends: Ends = HashMap::new();
+        let mut ends: Ends = HashMap::default();
         let mut w = vec![0.0f32; n * n];
         for lk in 0..n {
             for li in 0..n {
