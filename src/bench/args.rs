@@ -3,7 +3,7 @@
 /// `strata bench` options.
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
-    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume` or `realism`.
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume`, `realism` or `abuse`.
     pub name: String,
     /// Print one JSON object per line instead of a table.
     #[arg(long)]

@@ -9,8 +9,10 @@
 //!
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`]; `strata bench realism` (issue 17, the world against real DEMs) in
-//! [`realism`].
+//! [`realism`]; `strata bench abuse` (issue 18, the cost of requests at their limits) in
+//! [`abuse`].
 
+pub mod abuse;
 mod args;
 pub mod http;
 pub mod poisson;
@@ -61,8 +63,9 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "poisson" => poisson::run(args),
         "volume" => volume::run(args),
         "realism" => realism::run(args),
+        "abuse" => abuse::run(args),
         other => anyhow::bail!(
-            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism"
+            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism, abuse"
         ),
     }
 }

@@ -6,8 +6,8 @@
 //! |---|---|---|
 //! | stage cache, finished tiles ([`crate::cache::StageCache`]) | 1/2 | 256 MiB |
 //! | encoded bodies ([`super::bodies::BodyCache`]) | 1/4 | 128 MiB |
-//! | solved volume regions ([`super::volumes::VolumeCache`]) | 1/8 | 64 MiB |
-//! | solved authored regions ([`super::regions::RegionCache`]) | 1/16 | 32 MiB |
+//! | solved authored regions ([`super::regions::RegionCache`]) | 1/8 | 64 MiB |
+//! | solved volume regions ([`super::volumes::VolumeCache`]) | 1/16 | 32 MiB |
 //! | world plans of stored worlds (`worlds::VersionPlans`) | 3/64 | 24 MiB |
 //! | world plans of bare seeds (`plans::PlanCache`) | 1/64 | 8 MiB |
 //!
@@ -47,8 +47,8 @@ impl MemoryBudget {
             total,
             stage: part(1, 2),
             bodies: part(1, 4),
-            volumes: part(1, 8),
-            regions: part(1, 16),
+            volumes: part(1, 16),
+            regions: part(1, 8),
             world_plans: part(3, 64),
             seed_plans: part(1, 64),
         }
@@ -89,8 +89,8 @@ mod tests {
         assert_eq!(st.memory_budget(), b);
         assert_eq!(st.cache.budget_bytes(), 32 << 20);
         assert_eq!(st.bodies.budget_bytes(), 16 << 20);
-        assert_eq!(st.volumes.size().2, 8 << 20);
-        assert_eq!(st.regions.size().2, 4 << 20);
+        assert_eq!(st.volumes.size().2, 4 << 20);
+        assert_eq!(st.regions.size().2, 8 << 20);
         assert!(st.plans.size().2 <= b.seed_plans as u64);
     }
 }

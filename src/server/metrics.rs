@@ -10,6 +10,7 @@
 //! | `strata_plan_cache_hits_total`, `strata_plan_cache_misses_total` (counters) | `cache`: `seeds`, `worlds` |
 //! | `strata_worlds_created_total` (counter) | |
 //! | `strata_edit_subscribers` (gauge) | |
+//! | `strata_synthesis_timeouts_total` (counter), `strata_synthesis_after_timeout` (gauge: syntheses still running whose request timed out, see [`super::overrun`]) | |
 //! | `strata_stage_cache_hits_total` (counter) | `tier`: `memory`, `disk`, `inflight` (joined a computation under way) |
 //! | `strata_stage_cache_misses_total` (counter): tiles computed | |
 //! | `strata_stage_runs_total` (counter) | `stage`: `field`, `snap`, `finish` |
@@ -56,6 +57,8 @@ pub struct Metrics {
     pub edits_refused: AtomicU64,
     /// Worlds created.
     pub worlds_created: AtomicU64,
+    /// Syntheses whose request timed out ([`super::overrun`]).
+    pub overruns: Arc<super::overrun::Overruns>,
 }
 
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
@@ -308,7 +311,7 @@ fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
 fn service_gauges(out: &mut String, st: &AppState) {
     use crate::stream::session::STATS;
     let (entries, bytes) = st.bodies.size();
-    let lines: [(&str, &str, &str, String); 9] = [
+    let lines: [(&str, &str, &str, String); 11] = [
         (
             "strata_body_cache_hits_total",
             "counter",
@@ -350,6 +353,26 @@ fn service_gauges(out: &mut String, st: &AppState) {
             "counter",
             "Stream clients closed for not keeping up.",
             STATS.dropped_slow.load(Ordering::Relaxed).to_string(),
+        ),
+        (
+            "strata_synthesis_timeouts_total",
+            "counter",
+            "Requests answered 503 synthesis_timeout.",
+            st.metrics
+                .overruns
+                .timeouts
+                .load(Ordering::Relaxed)
+                .to_string(),
+        ),
+        (
+            "strata_synthesis_after_timeout",
+            "gauge",
+            "Syntheses running whose request timed out (each within its cost limits).",
+            st.metrics
+                .overruns
+                .running
+                .load(Ordering::Relaxed)
+                .to_string(),
         ),
         (
             "strata_export_jobs_queued",

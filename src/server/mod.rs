@@ -43,6 +43,7 @@ pub mod geology;
 pub mod http;
 pub mod jobs;
 pub mod metrics;
+pub mod overrun;
 pub mod params;
 mod plans;
 pub mod region_io;
@@ -72,7 +73,8 @@ use tokio::sync::Semaphore;
 /// Tile syntheses (plus their encoding) that may run at once; the rest queue.
 pub const MAX_CONCURRENT_SYNTHESES: usize = 16;
 /// A request whose synthesis has not finished (queueing included) within this time gets 503
-/// `synthesis_timeout`; the synthesis itself finishes in the background, holding its slot.
+/// `synthesis_timeout`; a synthesis that had started finishes in the background, holding its
+/// slot, and is counted meanwhile ([`overrun`]); one still queued never starts.
 pub const SYNTHESIS_TIMEOUT: Duration = Duration::from_secs(30);
 /// Largest request body accepted (a world's scene is at most [`crate::store::MAX_SCENE_BYTES`]).
 pub const MAX_BODY_BYTES: usize = 2 << 20;
@@ -336,6 +338,8 @@ impl AppState {
         F: std::future::Future<Output = Result<T, AppError>> + Send + 'static,
     {
         let slots = self.slots.clone();
+        let tracker = overrun::Tracker::new(self.metrics.overruns.clone());
+        let started = tracker.clone();
         let run = async move {
             let permit = slots
                 .acquire_owned()
@@ -343,6 +347,7 @@ impl AppState {
                 .map_err(|_| AppError::internal("synthesis slots closed"))?;
             let task = tokio::spawn(async move {
                 let _permit = permit;
+                let _running = started.start();
                 job.await
             });
             match task.await {
@@ -360,14 +365,17 @@ impl AppState {
         };
         match tokio::time::timeout(self.limits.synthesis_timeout, run).await {
             Ok(r) => r,
-            Err(_) => Err(AppError::new(
-                axum::http::StatusCode::SERVICE_UNAVAILABLE,
-                error::code::SYNTHESIS_TIMEOUT,
-                format!(
-                    "tile synthesis did not finish within {} ms; retry later",
-                    self.limits.synthesis_timeout.as_millis()
-                ),
-            )),
+            Err(_) => Err({
+                tracker.timed_out();
+                AppError::new(
+                    axum::http::StatusCode::SERVICE_UNAVAILABLE,
+                    error::code::SYNTHESIS_TIMEOUT,
+                    format!(
+                        "tile synthesis did not finish within {} ms; retry later",
+                        self.limits.synthesis_timeout.as_millis()
+                    ),
+                )
+            }),
         }
     }
 }

@@ -3,10 +3,13 @@
 //! products through the stage and body caches).
 
 use super::edit_service::{StreamView, WorldEdit};
+use super::routes::CachedProduct;
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
+use crate::stream::protocol::TileFrame;
 use crate::stream::session::{run, StreamError, StreamSource, MAX_MESSAGE_BYTES};
 use crate::terrain::TileKey;
+use axum::body::Bytes;
 use axum::extract::ws::rejection::WebSocketUpgradeRejection;
 use axum::extract::{Path, State, WebSocketUpgrade};
 use axum::response::{IntoResponse, Response};
@@ -30,19 +33,44 @@ impl From<AppError> for StreamError {
     }
 }
 
-/// The payload of a tile frame: tile `key` of the world `view`, through the body cache, so
-/// clients streaming the same area share encodings.
-async fn tile_payload(
+/// The frame of tile `key` of the world `view`: the tile's body (through the body cache) behind
+/// a frame header, itself kept in the body cache under a key of its own, so the clients
+/// streaming one area share one copy of each frame, the frames in their queues included.
+async fn tile_frame(
     state: &AppState,
     view: &StreamView,
     key: TileKey,
     seams: [bool; 4],
     format: Format,
-) -> Result<Vec<u8>, StreamError> {
-    let product = state
-        .tile_product(&view.view, key, seams, format, TileVersion::V1)
+) -> Result<Bytes, StreamError> {
+    let tag = TileVersion::V1.tag(format);
+    let tile_hash = view.view.tile_hash(key, seams);
+    // The frame names the world version, so its key does too; the domain string keeps frame
+    // keys apart from the tile bodies' input hashes.
+    let mut h = blake3::Hasher::new();
+    h.update(b"strata.stream.v1 frame");
+    h.update(&tile_hash);
+    h.update(&view.version.to_le_bytes());
+    h.update(tag.as_bytes());
+    let frame_key = (*h.finalize().as_bytes(), tag);
+    let frame = state
+        .bodies
+        .get_or_encode(frame_key, || async {
+            // Boxed: the tile product's future nested in this one exceeds the compiler's
+            // layout depth otherwise.
+            let product =
+                Box::pin(state.tile_product(&view.view, key, seams, format, TileVersion::V1))
+                    .await?;
+            let bytes = TileFrame::encode_parts(key, format, view.version, seams, &product.body);
+            Ok(Arc::new(CachedProduct {
+                body: bytes.into(),
+                hash: String::new(),
+                content_type: "application/octet-stream",
+                extra: Vec::new(),
+            }))
+        })
         .await?;
-    Ok(product.body.to_vec())
+    Ok(frame.body.clone())
 }
 
 /// A stored world: the latest version, its edit events, edits by callers with the edit role.
@@ -83,14 +111,14 @@ impl StreamSource for WorldSource {
         Some(self.state.worlds.subscribe_world(&self.id))
     }
 
-    async fn tile(
+    async fn frame(
         &self,
         view: &StreamView,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
-    ) -> Result<Vec<u8>, StreamError> {
-        tile_payload(&self.state, view, key, seams, format).await
+    ) -> Result<Bytes, StreamError> {
+        tile_frame(&self.state, view, key, seams, format).await
     }
 
     async fn edit(
@@ -197,14 +225,14 @@ impl StreamSource for SeedSource {
         None
     }
 
-    async fn tile(
+    async fn frame(
         &self,
         view: &StreamView,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
-    ) -> Result<Vec<u8>, StreamError> {
-        tile_payload(&self.state, view, key, seams, format).await
+    ) -> Result<Bytes, StreamError> {
+        tile_frame(&self.state, view, key, seams, format).await
     }
 
     async fn edit(

@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 /// Default byte budget of solved volume regions (the share of [`super::budget::MemoryBudget`]);
 /// the least recently used go first.
-pub const VOLUME_CACHE_BYTES: usize = 64 << 20;
+pub const VOLUME_CACHE_BYTES: usize = 32 << 20;
 
 /// Solved volume regions.
 pub type VolumeCache = SolvedCache<SolvedVolume>;

@@ -234,24 +234,42 @@ pub struct TileFrame {
 impl TileFrame {
     /// The frame's bytes: header (little-endian) then payload.
     pub fn encode(&self) -> Vec<u8> {
-        let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + self.payload.len());
+        Self::encode_parts(
+            self.key,
+            self.format,
+            self.version,
+            self.seams,
+            &self.payload,
+        )
+    }
+
+    /// The bytes of the frame of tile `key` of world `version` with `seams`, its `payload` in
+    /// `format`: what [`TileFrame::encode`] writes, from borrowed parts (a server frames a cached
+    /// body without copying it first).
+    pub fn encode_parts(
+        key: TileKey,
+        format: Format,
+        version: u64,
+        seams: [bool; 4],
+        payload: &[u8],
+    ) -> Vec<u8> {
+        let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + payload.len());
         out.extend_from_slice(FRAME_MAGIC);
         out.extend_from_slice(&FRAME_VERSION.to_le_bytes());
         out.push(KIND_TILE);
-        out.push(format_code(self.format));
-        out.extend_from_slice(&self.key.lod.to_le_bytes());
-        out.extend_from_slice(&self.key.x.to_le_bytes());
-        out.extend_from_slice(&self.key.z.to_le_bytes());
-        out.extend_from_slice(&self.version.to_le_bytes());
-        let bits = self
-            .seams
+        out.push(format_code(format));
+        out.extend_from_slice(&key.lod.to_le_bytes());
+        out.extend_from_slice(&key.x.to_le_bytes());
+        out.extend_from_slice(&key.z.to_le_bytes());
+        out.extend_from_slice(&version.to_le_bytes());
+        let bits = seams
             .iter()
             .enumerate()
             .fold(0u8, |b, (i, s)| b | ((*s as u8) << i));
         out.push(bits);
         out.extend_from_slice(&[0, 0, 0]);
-        out.extend_from_slice(&(self.payload.len() as u32).to_le_bytes());
-        out.extend_from_slice(&self.payload);
+        out.extend_from_slice(&(payload.len() as u32).to_le_bytes());
+        out.extend_from_slice(payload);
         out
     }
 

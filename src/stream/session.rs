@@ -8,13 +8,22 @@
 //!   message) and queued again, ahead of the rest, in view order;
 //! - production: while work is pending and the queue has room, the next tile is synthesised and
 //!   queued. A full queue stops production (backpressure); a client that does not take a frame
-//!   within [`SEND_TIMEOUT`] is disconnected. Memory per client is bounded by [`QUEUE_FRAMES`]
-//!   frames plus the view's bookkeeping ([`super::view::MAX_VIEW_TILES`] entries).
+//!   within [`SEND_TIMEOUT`] is disconnected (the kernel's socket buffers take the first frames,
+//!   so a client that never reads is closed [`SEND_TIMEOUT`] after they fill).
+//!
+//! **Memory per client** is bounded: the queue holds at most [`QUEUE_FRAMES`] frames and
+//! [`QUEUE_BYTES`] bytes of them (production waits for room), the WebSocket's write buffer one
+//! frame more plus its 128 KiB write buffer, and the view's bookkeeping at most
+//! [`super::view::MAX_VIEW_TILES`] entries: [`CLIENT_MEMORY_BOUND`] in all. Frames are
+//! reference-counted bytes the source shares between clients (the server's body cache holds
+//! them), so clients of one area hold one copy of each frame, not one each.
 //!
 //! At shutdown the server cancels the session's token: production stops at once and the client
 //! gets a close frame with code [`GOING_AWAY`].
 
-use super::protocol::{ClientMessage, ServerMessage, TileFrame};
+#[cfg(doc)]
+use super::protocol::TileFrame;
+use super::protocol::{ClientMessage, ServerMessage};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use crate::encode::Format;
 use crate::scene::Dirty;
@@ -25,11 +34,21 @@ use std::borrow::Cow;
 use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
 use std::time::Duration;
-use tokio::sync::{broadcast, mpsc};
+use tokio::sync::{broadcast, mpsc, OwnedSemaphorePermit, Semaphore};
 use tokio_util::sync::CancellationToken;
 
 /// Frames buffered per client.
 pub const QUEUE_FRAMES: usize = 16;
+/// Bytes of frames buffered per client: production waits while the queue holds more.
+pub const QUEUE_BYTES: usize = 1 << 20;
+/// Largest tile frame, bytes: a LOD-0 JSON tile with every optional layer (about 0.4 MiB),
+/// rounded up.
+pub const MAX_FRAME_BYTES: usize = 1 << 20;
+/// Memory one client may hold, bytes: the queued frames, one frame in production and one in
+/// the WebSocket's buffers with its 128 KiB write buffer, and the view's bookkeeping (a tile
+/// key and its seams per view tile, two hash maps of them).
+pub const CLIENT_MEMORY_BOUND: usize =
+    QUEUE_BYTES + 2 * MAX_FRAME_BYTES + (128 << 10) + MAX_VIEW_TILES * 256;
 /// A client that does not accept a frame for this long is disconnected.
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
 /// Largest client message, bytes.
@@ -117,15 +136,16 @@ pub trait StreamSource: Send + Sync + 'static {
         patch: serde_json::Value,
         if_match: Option<u64>,
     ) -> Result<u64, StreamError>;
-    /// The encoded tile `key` with `seams` of the world `view` in `format`: a tile frame's
-    /// payload.
-    async fn tile(
+    /// The frame of tile `key` with `seams` of the world `view` in `format` (its bytes as
+    /// [`TileFrame::encode`] writes them, with the view's version): reference-counted bytes a
+    /// source shares between the clients that stream the same tile.
+    async fn frame(
         &self,
         view: &Self::View,
         key: TileKey,
         seams: [bool; 4],
         format: Format,
-    ) -> Result<Vec<u8>, StreamError>;
+    ) -> Result<axum::body::Bytes, StreamError>;
 }
 
 fn error_message(e: &StreamError, id: Option<String>) -> ServerMessage {
@@ -160,8 +180,14 @@ fn is_too_large(e: &axum::Error) -> bool {
     e.to_string().contains("Space limit exceeded")
 }
 
-fn text(msg: &ServerMessage) -> Message {
-    Message::Text(serde_json::to_string(msg).unwrap_or_default().into())
+/// A queued message and, for a frame, its share of [`QUEUE_BYTES`], returned once it is sent.
+type Queued = (Message, Option<OwnedSemaphorePermit>);
+
+fn text(msg: &ServerMessage) -> Queued {
+    (
+        Message::Text(serde_json::to_string(msg).unwrap_or_default().into()),
+        None,
+    )
 }
 
 /// Runs a session until the client leaves or is dropped, or until `closing` is cancelled (the
@@ -173,7 +199,8 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let _guard = SessionGuard;
     let (mut sink, mut incoming) = socket.split();
-    let (tx, mut rx) = mpsc::channel::<Message>(QUEUE_FRAMES);
+    let (tx, mut rx) = mpsc::channel::<Queued>(QUEUE_FRAMES);
+    let queued_bytes = Arc::new(Semaphore::new(QUEUE_BYTES));
     let writer_closing = closing.clone();
     let writer = tokio::spawn(async move {
         loop {
@@ -182,7 +209,7 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                 () = writer_closing.cancelled() => break,
                 msg = rx.recv() => msg,
             };
-            let Some(msg) = msg else {
+            let Some((msg, _bytes)) = msg else {
                 let _ = sink.close().await;
                 return;
             };
@@ -209,7 +236,7 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
         }
         rx.close();
         let going_away = async {
-            while let Some(msg) = rx.recv().await {
+            while let Some((msg, _bytes)) = rx.recv().await {
                 if matches!(msg, Message::Text(_)) {
                     sink.send(msg).await?;
                 }
@@ -268,7 +295,7 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                             let e = too_large();
                             let _ = tx.send(text(&error_message(&e, None))).await;
                             let close = CloseFrame { code: MESSAGE_TOO_BIG, reason: "message too large".into() };
-                            let _ = tx.send(Message::Close(Some(close))).await;
+                            let _ = tx.send((Message::Close(Some(close)), None)).await;
                         }
                         break;
                     }
@@ -364,12 +391,20 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                 let Ok(permit) = permit else { break };
                 let Some(t) = pending.pop_front() else { continue };
                 let produced = tokio::select! {
-                    r = source.tile(&current, t.key, t.seams, format) => r,
+                    r = source.frame(&current, t.key, t.seams, format) => r,
                     () = closing.cancelled() => break,
                 };
                 match produced {
-                    Ok(payload) => {
-                        permit.send(Message::Binary(TileFrame { key: t.key, format, version, seams: t.seams, payload }.encode().into()));
+                    Ok(frame) => {
+                        // Room in the byte budget: the writer returns a frame's share once it is
+                        // sent, or drops them all when it gives up on the client.
+                        let share = u32::try_from(frame.len().min(QUEUE_BYTES)).unwrap_or(u32::MAX);
+                        let bytes = tokio::select! {
+                            b = queued_bytes.clone().acquire_many_owned(share) => b,
+                            () = closing.cancelled() => break,
+                        };
+                        let Ok(bytes) = bytes else { break };
+                        permit.send((Message::Binary(frame), Some(bytes)));
                         held.insert(t.key, version);
                         STATS.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     }
