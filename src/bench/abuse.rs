@@ -216,14 +216,8 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
             walk: None,
         },
         Probe {
-            name: "world region stats",
-            path: w("/regions/heavy/stats"),
-            anonymous: true,
-            walk: None,
-        },
-        Probe {
-            name: "world columns, largest size",
-            path: w("/columns/3/3.json?size=32"),
+            name: "world region stats, whole region",
+            path: w("/regions/heavy/stats?rect=0,0;8192,8192"),
             anonymous: true,
             walk: None,
         },
