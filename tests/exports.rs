@@ -395,6 +395,7 @@ async fn archive_before_done_is_409_and_the_queue_is_bounded() {
         max_running: 1,
         max_queued: 1,
         max_finished: 8,
+        ..JobLimits::default()
     };
     let state = AppState::new(Compute::cpu())
         .with_jobs_dir(dir.path())

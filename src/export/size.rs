@@ -86,9 +86,8 @@ pub fn tile_member_bound(plan: &WorldPlan, format: Format) -> u64 {
 
 /// Upper bound of one tile's scatter member at `lod`, bytes.
 pub fn scatter_member_bound(plan: &WorldPlan, lod: u32) -> u64 {
-    let longest = |names: &mut dyn Iterator<Item = &str>| {
-        6 * names.map(str::len).max().unwrap_or(0) as u64
-    };
+    let longest =
+        |names: &mut dyn Iterator<Item = &str>| 6 * names.map(str::len).max().unwrap_or(0) as u64;
     let biome = longest(&mut plan.params.biomes.iter().map(|b| b.name.as_str()));
     let kind = longest(
         &mut plan
@@ -160,12 +159,18 @@ mod tests {
         // Incompressible heights, a volume override everywhere and water on every vertex.
         let mut tile = crate::edits::synthesize(
             &plan,
-            TileKey { lod: 0, x: 3, z: -2 },
+            TileKey {
+                lod: 0,
+                x: 3,
+                z: -2,
+            },
             &Default::default(),
         );
         let mut state = 0x9e37_79b9_7f4a_7c15_u64;
         for h in &mut tile.heights {
-            state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
             *h = -1.234_567_8e-30 * (state >> 11) as f32;
         }
         tile.volume_override = vec![1; TILE_VERTEX_COUNT];
@@ -181,11 +186,8 @@ mod tests {
     #[test]
     fn the_bounds_are_not_vacuous() {
         let plan = plan();
-        let tile = crate::edits::synthesize(
-            &plan,
-            TileKey { lod: 2, x: 0, z: 0 },
-            &Default::default(),
-        );
+        let tile =
+            crate::edits::synthesize(&plan, TileKey { lod: 2, x: 0, z: 0 }, &Default::default());
         for (f, len) in sizes(&plan, &tile) {
             let bound = tile_member_bound(&plan, f);
             assert!(
