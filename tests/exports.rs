@@ -395,6 +395,11 @@ async fn archive_before_done_is_409_and_the_queue_is_bounded() {
         max_running: 1,
         max_queued: 1,
         max_finished: 8,
+        // The long job below (65536 tiles, about 8 GB) exceeds the default disk budgets, which
+        // tests/export_size.rs checks; this test is about the queue.
+        world_budget_bytes: 1 << 40,
+        disk_budget_bytes: 1 << 40,
+        ..JobLimits::default()
     };
     let state = AppState::new(Compute::cpu())
         .with_jobs_dir(dir.path())

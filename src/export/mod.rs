@@ -10,6 +10,7 @@
 //! same key.
 
 pub mod cli;
+pub mod size;
 pub mod tar;
 
 use crate::encode::{self, Format};

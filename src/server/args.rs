@@ -50,6 +50,30 @@ pub struct ServeArgs {
     /// measures the resident memory against it).
     #[arg(long, value_name = "MB", value_parser = clap::value_parser!(u64).range(0..=1 << 30))]
     pub memory_budget: Option<u64>,
+    /// Archive bytes one world's export jobs may hold on disk, MiB: queued and running jobs
+    /// count at the upper bound of their archive, finished ones at its size. An export whose
+    /// bound exceeds it is refused (400 `export_too_large`); one that does not fit beside the
+    /// world's other archives is refused until they expire (429 `export_quota_exceeded`).
+    #[arg(long, value_name = "MIB", default_value_t = super::jobs::quota::DEFAULT_WORLD_BUDGET_MB,
+          value_parser = clap::value_parser!(u64).range(1..=1 << 30))]
+    pub export_world_budget: u64,
+    /// Archive bytes all export jobs together may hold on disk, MiB (counted as for
+    /// `--export-world-budget`).
+    #[arg(long, value_name = "MIB", default_value_t = super::jobs::quota::DEFAULT_DISK_BUDGET_MB,
+          value_parser = clap::value_parser!(u64).range(1..=1 << 30))]
+    pub export_disk_budget: u64,
+    /// Seconds an export archive is kept after its job is done; then it is deleted and its job
+    /// answers `expired` (410 `job_expired` for the archive).
+    #[arg(long, value_name = "SECONDS", default_value_t = super::jobs::quota::DEFAULT_MAX_AGE_S,
+          value_parser = clap::value_parser!(u64).range(1..=10 * 365 * 86_400))]
+    pub export_max_age: u64,
+    /// Expensive requests (export creation, scatter, region PNGs and stats, volume meshes,
+    /// tiles not yet cached) each client address and each token may make per minute, in a burst
+    /// or spread out; further ones are refused (429 `rate_limited` with `Retry-After`).
+    #[arg(long, value_name = "PER_MINUTE",
+          default_value_t = super::rate_limit::DEFAULT_RATE_LIMIT_PER_MINUTE,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub rate_limit: u32,
 }
 
 fn check_origin(s: &str) -> Result<String, String> {
@@ -76,6 +100,16 @@ impl ServeArgs {
                     anyhow::anyhow!("STRATA_MEMORY_BUDGET: {v:?} is not a number of MiB")
                 }),
             Err(_) => Ok(super::budget::DEFAULT_MEMORY_BUDGET_MB),
+        }
+    }
+
+    /// The export queue's limits with the disk budgets and archive age of the command line.
+    pub fn job_limits(&self) -> super::jobs::JobLimits {
+        super::jobs::JobLimits {
+            world_budget_bytes: self.export_world_budget << 20,
+            disk_budget_bytes: self.export_disk_budget << 20,
+            max_age: std::time::Duration::from_secs(self.export_max_age),
+            ..super::jobs::JobLimits::default()
         }
     }
 

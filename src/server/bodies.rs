@@ -91,6 +91,11 @@ impl BodyCache {
         Ok(product)
     }
 
+    /// Whether `key` is cached (neither a hit nor a miss is counted).
+    pub fn contains(&self, key: &BodyKey) -> bool {
+        self.memo.contains(key)
+    }
+
     /// Stores a product, evicting the least recently used ones beyond the budget.
     pub fn insert(&self, key: BodyKey, product: Arc<CachedProduct>) {
         self.memo.insert(key, product);

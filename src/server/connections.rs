@@ -9,6 +9,8 @@
 //!   upgraded from it keeps the slot until its session ends ([`ConnectionSlot`]). A connection
 //!   beyond the limit is answered `503` with the JSON error `too_many_connections` and
 //!   `Retry-After: 1`, and closed.
+//! - Each request carries its peer address (`axum::extract::ConnectInfo<SocketAddr>`), which the
+//!   rate limits key ([`super::rate_limit`]).
 //! - When `stopping` is cancelled the listener closes, every connection finishes its request in
 //!   flight and closes, and [`serve`] waits up to [`super::SESSION_DRAIN_TIMEOUT`] for them.
 
@@ -53,7 +55,7 @@ pub async fn serve(
         let stream = tokio::select! {
             () = stopping.cancelled() => break,
             accepted = listener.accept() => match accepted {
-                Ok((stream, _)) => stream,
+                Ok(accepted) => accepted,
                 Err(e) => {
                     // Out of file descriptors, for instance: wait instead of spinning.
                     tracing::warn!("accept failed: {e}");
@@ -62,6 +64,7 @@ pub async fn serve(
                 }
             },
         };
+        let (stream, peer) = stream;
         let Ok(permit) = slots.clone().try_acquire_owned() else {
             connections.spawn(refuse(stream, limits.max_connections));
             continue;
@@ -73,6 +76,8 @@ pub async fn serve(
             .clone()
             .map_request(move |mut req: hyper::Request<Incoming>| {
                 req.extensions_mut().insert(slot.clone());
+                req.extensions_mut()
+                    .insert(axum::extract::ConnectInfo(peer));
                 req.map(Body::new)
             });
         let conn = http

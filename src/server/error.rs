@@ -79,6 +79,17 @@ pub mod code {
     pub const JOB_NOT_DONE: &str = "job_not_done";
     /// The export job failed: there is no archive.
     pub const JOB_FAILED: &str = "job_failed";
+    /// The export job's archive expired and was deleted.
+    pub const JOB_EXPIRED: &str = "job_expired";
+    /// The export's archive may be larger than a disk budget allows; `field` is `/region` and
+    /// the message names the budget and its bytes.
+    pub const EXPORT_TOO_LARGE: &str = "export_too_large";
+    /// The export's archive does not fit the disk budget beside the archives already held;
+    /// `field` names the budget; retry after `Retry-After` seconds.
+    pub const EXPORT_QUOTA_EXCEEDED: &str = "export_quota_exceeded";
+    /// The client (its address or its token) made more expensive requests than the rate limit
+    /// allows; `field` names the limit; retry after `Retry-After` seconds.
+    pub const RATE_LIMITED: &str = "rate_limited";
 }
 
 /// An error answered to the client.
@@ -93,6 +104,8 @@ pub struct AppError {
     pub message: String,
     /// The offending request parameter or JSON pointer, if one is to blame.
     pub field: Option<Cow<'static, str>>,
+    /// Seconds for the `Retry-After` header, if the client should retry later.
+    pub retry_after_s: Option<u64>,
 }
 
 #[derive(Serialize)]
@@ -119,12 +132,19 @@ impl AppError {
             code,
             message: message.into(),
             field: Some(field.into()),
+            retry_after_s: None,
         }
     }
 
     /// The same error blaming `field`.
     pub fn with_field(mut self, field: impl Into<Cow<'static, str>>) -> Self {
         self.field = Some(field.into());
+        self
+    }
+
+    /// The same error with `Retry-After: seconds`.
+    pub fn with_retry_after(mut self, seconds: u64) -> Self {
+        self.retry_after_s = Some(seconds);
         self
     }
 
@@ -135,6 +155,7 @@ impl AppError {
             code: code::NOT_FOUND,
             message: format!("no route or file for {}", truncate(path, 200)),
             field: None,
+            retry_after_s: None,
         }
     }
 
@@ -145,6 +166,7 @@ impl AppError {
             code: code::INTERNAL,
             message: message.into(),
             field: None,
+            retry_after_s: None,
         }
     }
 
@@ -155,6 +177,7 @@ impl AppError {
             code,
             message: message.into(),
             field: None,
+            retry_after_s: None,
         }
     }
 }
@@ -190,7 +213,9 @@ impl IntoResponse for AppError {
                 HeaderValue::from_static("Bearer realm=\"strata\""),
             );
         }
-        if self.status == StatusCode::SERVICE_UNAVAILABLE {
+        if let Some(s) = self.retry_after_s {
+            h.insert(header::RETRY_AFTER, HeaderValue::from(s));
+        } else if self.status == StatusCode::SERVICE_UNAVAILABLE {
             h.insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
         }
         res

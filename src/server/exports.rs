@@ -3,7 +3,7 @@
 //!
 //! | route | who | answer |
 //! |---|---|---|
-//! | `POST /v1/worlds/{id}/exports` `{lod, region, products, formats?, v?, shard?}` | edit | 202 `{job, world, version, status, total, status_url, events_url, download_url}` |
+//! | `POST /v1/worlds/{id}/exports` `{lod, region, products, formats?, v?, shard?}` | edit | 202 `{job, world, version, status, total, max_bytes, status_url, events_url, download_url}` |
 //! | `GET /v1/jobs/{job}` | read on the job's world | `{id, world, version, shard, status, done, total, error?, download_url?}` |
 //! | `GET /v1/jobs/{job}/events` | read on the job's world | `text/event-stream`: `progress`, then `done` or `failed` |
 //! | `GET /v1/jobs/{job}/archive` | read on the job's world | the tar (`application/x-tar`); 409 before it is done |
@@ -19,7 +19,13 @@
 //! total}` is sent first with the current state (so a late client catches up), then whenever
 //! the state changes (tile progress is published at most every
 //! [`super::jobs::PROGRESS_INTERVAL`], plus the final count); the stream ends with `done`
-//! `{done, total, download_url}` or `failed` `{done, total, error}`.
+//! `{done, total, download_url}`, `failed` `{done, total, error}` or, for a job whose archive
+//! has expired, `expired` `{done, total}`.
+//!
+//! Disk budgets ([`super::jobs::quota`]): a job whose archive may exceed a budget is 400
+//! `export_too_large` (field `/region`); one that does not fit beside the archives already held
+//! is 429 `export_quota_exceeded` (field: the budget's name, `Retry-After`); an expired job's
+//! archive is 410 `job_expired`.
 
 use super::error::{code, AppError};
 use super::http::{authorize, authorized_body, json_response, store_error};
@@ -102,6 +108,7 @@ fn urls(job: &str) -> (String, String, String) {
 /// `POST /v1/worlds/{id}/exports`: needs the edit role, public world or not, since an export
 /// writes to the server's disk.
 async fn create(
+    _charge: super::rate_limit::Charge,
     State(st): State<AppState>,
     Path(id): Path<String>,
     headers: HeaderMap,
@@ -172,6 +179,28 @@ async fn create(
                 .insert(header::RETRY_AFTER, HeaderValue::from_static("5"));
             return Ok(res);
         }
+        Err(e @ SubmitError::TooLarge { .. }) => {
+            return Err(AppError::bad_request(
+                code::EXPORT_TOO_LARGE,
+                "/region",
+                e.to_string(),
+            ))
+        }
+        Err(
+            ref e @ SubmitError::OverQuota {
+                budget,
+                retry_after_s,
+                ..
+            },
+        ) => {
+            return Err(AppError::new(
+                StatusCode::TOO_MANY_REQUESTS,
+                code::EXPORT_QUOTA_EXCEEDED,
+                e.to_string(),
+            )
+            .with_field(budget.name())
+            .with_retry_after(retry_after_s))
+        }
         Err(e @ SubmitError::Random(_)) => {
             tracing::error!("export job: {e}");
             return Err(AppError::internal("cannot draw a job id"));
@@ -188,6 +217,7 @@ async fn create(
             "shard": shard_text(job.shard),
             "status": p.status,
             "total": p.total,
+            "max_bytes": job.reserved,
             "status_url": status_url,
             "events_url": events_url,
             "download_url": download_url,
@@ -292,6 +322,13 @@ impl Follow {
                 ));
                 self.end = true;
             }
+            Status::Expired => {
+                self.pending.push_back(event(
+                    "expired",
+                    &json!({ "done": p.done, "total": p.total }),
+                ));
+                self.end = true;
+            }
             Status::Queued | Status::Running => {}
         }
     }
@@ -348,6 +385,15 @@ async fn archive(
     let p = job.progress();
     let Some(path) = job.archive().map(|p| p.to_path_buf()) else {
         return Err(match p.status {
+            Status::Expired => AppError::new(
+                StatusCode::GONE,
+                code::JOB_EXPIRED,
+                format!(
+                    "the archive of export job {} expired {} s after it was done and was deleted",
+                    job.id,
+                    st.jobs.limits().max_age.as_secs()
+                ),
+            ),
             Status::Failed => AppError::new(
                 StatusCode::CONFLICT,
                 code::JOB_FAILED,

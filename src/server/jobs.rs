@@ -13,6 +13,10 @@
 //! finished ones beyond that and deletes their archives. Jobs live in memory: they do not
 //! survive a restart ([`Jobs::sweep`] deletes the archives a previous process left).
 //!
+//! Disk budgets ([`quota`]): a job is admitted only if the upper bound of its archive fits the
+//! world's and the server's budgets beside the archives already queued, running and stored, and
+//! archives are deleted [`JobLimits::max_age`] after they were finished ([`Jobs::expire`]).
+//!
 //! Dropping [`Jobs`] (the server shutting down, a test ending) cancels every job: queued ones
 //! fail at once, running ones at their next archive write.
 
@@ -23,9 +27,12 @@ use std::collections::HashMap;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::{Arc, Mutex, MutexGuard};
+use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 use std::time::{Duration, Instant};
 use tokio::sync::{watch, Semaphore};
+
+pub mod quota;
+pub use quota::Budget;
 
 /// Export jobs running at once (each on `cores / MAX_RUNNING_JOBS` threads, at least one).
 pub const MAX_RUNNING_JOBS: usize = 2;
@@ -45,6 +52,13 @@ pub struct JobLimits {
     pub max_queued: usize,
     /// Finished jobs kept ([`MAX_FINISHED_JOBS`]).
     pub max_finished: usize,
+    /// Archive bytes one world's jobs may hold, queued and running ones counted at their
+    /// bound ([`quota::DEFAULT_WORLD_BUDGET_MB`] MiB).
+    pub world_budget_bytes: u64,
+    /// Archive bytes all jobs together may hold ([`quota::DEFAULT_DISK_BUDGET_MB`] MiB).
+    pub disk_budget_bytes: u64,
+    /// How long a finished archive is kept ([`quota::DEFAULT_MAX_AGE_S`] seconds).
+    pub max_age: Duration,
 }
 
 impl Default for JobLimits {
@@ -53,6 +67,9 @@ impl Default for JobLimits {
             max_running: MAX_RUNNING_JOBS,
             max_queued: MAX_QUEUED_JOBS,
             max_finished: MAX_FINISHED_JOBS,
+            world_budget_bytes: quota::DEFAULT_WORLD_BUDGET_MB << 20,
+            disk_budget_bytes: quota::DEFAULT_DISK_BUDGET_MB << 20,
+            max_age: Duration::from_secs(quota::DEFAULT_MAX_AGE_S),
         }
     }
 }
@@ -69,6 +86,8 @@ pub enum Status {
     Done,
     /// It stopped; see [`Progress::error`].
     Failed,
+    /// It was done, and its archive was deleted [`JobLimits::max_age`] after.
+    Expired,
 }
 
 impl Status {
@@ -79,12 +98,13 @@ impl Status {
             Status::Running => "running",
             Status::Done => "done",
             Status::Failed => "failed",
+            Status::Expired => "expired",
         }
     }
 
     /// Whether the job has ended.
     pub fn is_finished(self) -> bool {
-        matches!(self, Status::Done | Status::Failed)
+        matches!(self, Status::Done | Status::Failed | Status::Expired)
     }
 }
 
@@ -117,6 +137,12 @@ pub struct Job {
     /// What every tile applies on top of the field: the solved authored regions and the
     /// `strata` elements of the world version.
     pub edits: crate::edits::TileEdits,
+    /// Upper bound of the archive, bytes ([`crate::export::size::archive_bound`]).
+    pub reserved: u64,
+    /// The archive's size once done, bytes.
+    stored: AtomicU64,
+    /// When the job was done.
+    finished: OnceLock<Instant>,
     seq: u64,
     path: PathBuf,
     state: watch::Sender<Progress>,
@@ -170,6 +196,38 @@ pub enum SubmitError {
         queued: usize,
         /// The limit.
         limit: usize,
+    },
+    /// The archive's bound is larger than a budget: it can never be admitted.
+    #[error(
+        "the archive may take up to {estimate} bytes, more than the {} of {limit} bytes",
+        budget.name()
+    )]
+    TooLarge {
+        /// The budget.
+        budget: Budget,
+        /// The archive's bound, bytes.
+        estimate: u64,
+        /// The budget, bytes.
+        limit: u64,
+    },
+    /// The budget holds too many archives now; older ones expire.
+    #[error(
+        "the {} of {limit} bytes holds {used} bytes of archives, and this one may take up to \
+         {estimate} bytes; retry once older archives expire",
+        budget.name()
+    )]
+    OverQuota {
+        /// The budget.
+        budget: Budget,
+        /// Bytes already charged to it.
+        used: u64,
+        /// The archive's bound, bytes.
+        estimate: u64,
+        /// The budget, bytes.
+        limit: u64,
+        /// Seconds until the oldest archive in the budget expires (or a short wait while only
+        /// running jobs fill it).
+        retry_after_s: u64,
     },
     /// No job id could be drawn.
     #[error("the OS random source failed: {0}")]
@@ -241,9 +299,45 @@ impl Jobs {
         self.jobs.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// The job `id`, if it is known.
+    /// The job `id`, if it is known (expiring old archives first).
     pub fn get(&self, id: &str) -> Option<Arc<Job>> {
+        self.expire();
         self.jobs().get(id).cloned()
+    }
+
+    /// Deletes the archives finished more than [`JobLimits::max_age`] ago and marks their jobs
+    /// `expired`; how many. Blocking file I/O (one unlink per archive).
+    pub fn expire(&self) -> usize {
+        let now = Instant::now();
+        let stale: Vec<Arc<Job>> = self
+            .jobs()
+            .values()
+            .filter(|j| j.is_stale(self.limits.max_age, now))
+            .cloned()
+            .collect();
+        for job in &stale {
+            job.state.send_modify(|p| p.status = Status::Expired);
+            if let Err(e) = std::fs::remove_file(&job.path) {
+                if e.kind() != io::ErrorKind::NotFound {
+                    tracing::warn!("cannot delete {}: {e}", job.path.display());
+                }
+            }
+            tracing::info!(job = %job.id, world = %job.world, "export archive expired");
+        }
+        stale.len()
+    }
+
+    /// Bytes charged to the budgets now: `(world's, all jobs')`.
+    pub fn charged(&self, world: &str) -> (u64, u64) {
+        self.expire();
+        let jobs = self.jobs();
+        let all = jobs.values().map(|j| j.charge()).sum();
+        let own = jobs
+            .values()
+            .filter(|j| j.world == world)
+            .map(|j| j.charge())
+            .sum();
+        (own, all)
     }
 
     /// `(queued, running, finished)` job counts.
@@ -253,7 +347,7 @@ impl Jobs {
             match j.state.borrow().status {
                 Status::Queued => c.0 += 1,
                 Status::Running => c.1 += 1,
-                Status::Done | Status::Failed => c.2 += 1,
+                Status::Done | Status::Failed | Status::Expired => c.2 += 1,
             }
         }
         c
@@ -307,8 +401,11 @@ impl Jobs {
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
         let total = spec.keys(shard).len();
+        let reserved = export::size::archive_bound(&plan, &spec, shard);
+        self.expire();
         let evicted = {
             let mut jobs = self.jobs();
+            quota::admit(&jobs, world, reserved, &self.limits)?;
             let queued = jobs
                 .values()
                 .filter(|j| j.state.borrow().status == Status::Queued)
@@ -333,6 +430,9 @@ impl Jobs {
                 spec,
                 shard,
                 edits,
+                reserved,
+                stored: AtomicU64::new(0),
+                finished: OnceLock::new(),
                 seq: self.seq.fetch_add(1, Ordering::Relaxed),
                 state: watch::Sender::new(Progress {
                     status: Status::Queued,
@@ -427,6 +527,8 @@ async fn run(
                 job = %job.id, bytes, ms = started.elapsed().as_millis() as u64,
                 "export job done"
             );
+            job.stored.store(bytes, Ordering::Relaxed);
+            let _ = job.finished.set(Instant::now());
             job.state.send_modify(|p| {
                 p.status = Status::Done;
                 p.done = p.total;

@@ -46,6 +46,7 @@ pub mod metrics;
 pub mod overrun;
 pub mod params;
 mod plans;
+pub mod rate_limit;
 pub mod region_io;
 pub mod regions;
 pub mod rivers;
@@ -145,6 +146,8 @@ pub struct AppState {
     pub sessions: Sessions,
     /// Origins besides the server's own that may call every route from a browser.
     pub cors: cors::CorsOrigins,
+    /// Rate limits of the expensive routes (see [`rate_limit`]).
+    pub rate: Arc<rate_limit::RateLimits>,
     limits: Limits,
     budget: budget::MemoryBudget,
     plans: Arc<PlanCache>,
@@ -178,6 +181,7 @@ impl AppState {
             volumes: Arc::default(),
             sessions: Sessions::default(),
             cors: cors::CorsOrigins::default(),
+            rate: Arc::default(),
             limits,
             budget: budget::MemoryBudget::default(),
             plans: Arc::new(PlanCache::new(
@@ -238,6 +242,13 @@ impl AppState {
         self
     }
 
+    /// Allows `per_minute` expensive requests per minute per client address and per token (see
+    /// [`rate_limit`]; default [`rate_limit::DEFAULT_RATE_LIMIT_PER_MINUTE`]).
+    pub fn with_rate_limit(mut self, per_minute: u32) -> Self {
+        self.rate = Arc::new(rate_limit::RateLimits::new(per_minute));
+        self
+    }
+
     /// Serves `dir` at `/`.
     pub fn with_web(mut self, dir: impl Into<PathBuf>) -> Self {
         self.web = Some(dir.into());
@@ -288,6 +299,20 @@ impl AppState {
         self.compute
             .tile_cached(&self.cache, hash, view.plan.clone(), key, seams, edits)
             .await
+    }
+
+    /// Whether tile `key` with `seams` of the world `view` encoded in `format` of `version` is
+    /// in the body cache (so that answering it costs a memory read).
+    pub fn tile_is_cached(
+        &self,
+        view: &view::WorldView,
+        key: TileKey,
+        seams: [bool; 4],
+        format: crate::encode::Format,
+        version: crate::encode::TileVersion,
+    ) -> bool {
+        self.bodies
+            .contains(&(view.tile_hash(key, seams), version.tag(format)))
     }
 
     /// Tile `key` with `seams` of the world `view` encoded in `format` of `version`, from the
@@ -492,7 +517,9 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     let mut state = AppState::with_limits(compute, limits)
         .with_memory_budget(budget)
         .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose))
-        .with_jobs_dir(args.data.join("exports"));
+        .with_job_limits(args.job_limits())
+        .with_jobs_dir(args.data.join("exports"))
+        .with_rate_limit(args.rate_limit);
     match state.jobs.sweep() {
         Ok(0) => {}
         Ok(n) => tracing::info!("deleted {n} export archives of a previous run"),
@@ -533,6 +560,7 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         tracing::info!(origins = ?origins.origins(), "cross-origin requests allowed");
     }
     state = state.with_cors_origins(origins);
+    tokio::spawn(expire_archives(state.jobs.clone()));
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);
     let sessions = state.sessions.clone();
@@ -553,6 +581,26 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     }
     Ok(())
 }
+
+/// Deletes expired export archives every [`EXPIRY_SWEEP_INTERVAL`] (or `max_age`, if shorter),
+/// so they go even when no request looks at the jobs.
+async fn expire_archives(jobs: Arc<jobs::Jobs>) {
+    let every = jobs.limits().max_age.min(EXPIRY_SWEEP_INTERVAL);
+    let mut tick = tokio::time::interval(every);
+    loop {
+        tick.tick().await;
+        let jobs = jobs.clone();
+        if tokio::task::spawn_blocking(move || jobs.expire())
+            .await
+            .is_err()
+        {
+            return;
+        }
+    }
+}
+
+/// Longest time between two sweeps of expired export archives.
+pub const EXPIRY_SWEEP_INTERVAL: Duration = Duration::from_secs(60);
 
 async fn shutdown_signal() {
     let ctrl_c = async {

@@ -175,6 +175,7 @@ impl RegionPng for GradientsPng {
 /// access, `P` encodes it on the blocking pool, and the answer is [`png_response`]. An encoding
 /// failure is 500 `internal` with the message `"{P::WHAT}: {error}"`.
 async fn region_png<P: RegionPng>(
+    _charge: super::rate_limit::Charge,
     world: WorldAt,
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,
@@ -326,6 +327,7 @@ fn parse_points(text: &str, field: &'static str) -> Result<Vec<[f64; 2]>, AppErr
 /// (degrees) of the authored region's heights over a point, a curve or a rectangle (Guérin et al.
 /// §6.3).
 pub(super) async fn region_stats(
+    _charge: super::rate_limit::Charge,
     world: WorldAt,
     State(st): State<AppState>,
     Path((id, rid)): Path<(String, String)>,

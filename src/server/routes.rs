@@ -2,6 +2,7 @@
 
 use super::error::{code, AppError};
 use super::params::{parse_seams, parse_tile_path, parse_tile_version};
+use super::rate_limit::{Charge, Client};
 use super::view::WorldAt;
 use super::{AppState, MAX_BODY_BYTES};
 use crate::encode::{self, Format, TileVersion};
@@ -126,6 +127,11 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "header_read_timeout_ms": limits.header_read_timeout.as_millis() as u64,
             "body_read_timeout_ms": limits.body_read_timeout.as_millis() as u64,
             "max_connections": limits.max_connections,
+            "max_export_tiles": crate::export::MAX_EXPORT_TILES,
+            "export_world_budget_bytes": st.jobs.limits().world_budget_bytes,
+            "export_disk_budget_bytes": st.jobs.limits().disk_budget_bytes,
+            "export_max_age_s": st.jobs.limits().max_age.as_secs(),
+            "rate_limit_per_minute": st.rate.per_minute(),
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),
@@ -170,7 +176,9 @@ pub(super) fn segments<T>(path: PathSegments<T>) -> Result<T, AppError> {
 
 /// `GET /v1/seeds/{seed}/tiles/{lod}/{x}/{z}.{ext}` and
 /// `GET /v1/worlds/{id}/tiles/{lod}/{x}/{z}.{ext}[?v=N]`, both `[?seams=n,e,s,w][&format=1|2]`.
+/// A tile whose body is not cached is charged to the client's rate limit ([`super::rate_limit`]).
 pub(super) async fn tile(
+    client: Client,
     world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
@@ -181,6 +189,9 @@ pub(super) async fn tile(
     let (key, format) = parse_tile_path(&world.view.plan, &lod, &x, &z_ext)?;
     let seams = parse_seams(query.as_deref())?;
     let version = parse_tile_version(query.as_deref(), format)?;
+    if !st.tile_is_cached(&world.view, key, seams, format, version) {
+        st.rate.check(&client)?;
+    }
     let product = st
         .tile_product(&world.view, key, seams, format, version)
         .await?;
@@ -190,6 +201,7 @@ pub(super) async fn tile(
 /// `GET /v1/seeds/{seed}/scatter/{lod}/{x}/{z}.json` and
 /// `GET /v1/worlds/{id}/scatter/{lod}/{x}/{z}.json[?v=N]`.
 pub(super) async fn scatter(
+    _charge: Charge,
     world: WorldAt,
     State(st): State<AppState>,
     path: Segments,

@@ -96,6 +96,7 @@ fn volume_input(inputs: &crate::scene::SceneInputs, vid: &str) -> Option<VolumeI
 
 /// `GET /v1/worlds/{id}/volumes/{vid}/mesh.glb[?v=N]`.
 async fn mesh_glb(
+    _charge: super::rate_limit::Charge,
     world: WorldAt,
     State(st): State<AppState>,
     Path((id, vid)): Path<(String, String)>,

@@ -40,6 +40,7 @@ async fn jobs_queue_run_finish_and_are_evicted() {
         max_running: 1,
         max_queued: 1,
         max_finished: 2,
+        ..JobLimits::default()
     };
     let jobs = Jobs::new(dir.path().join("exports"), limits);
     // A long job holds the only run slot, the next one waits, a third is refused.
