@@ -2,7 +2,10 @@
 //! their bounded answers, and the server's resident set stays within its memory budget.
 //!
 //! The other findings are replayed where their fix is tested:
-//! 3 (anonymous exports) `tests/exports.rs::exports_need_an_edit_token_and_following_them_needs_read`;
+//! 2 (scatter burning CPU) also `tests/rate_limit.rs` (the expensive routes' rate limits);
+//! 3 (anonymous exports, disk fill) `tests/exports.rs::exports_need_an_edit_token_and_following_them_needs_read`,
+//! `tests/export_size.rs` (an archive's size bound, checked before a job is accepted) and
+//! `tests/export_quota.rs` (per-world and per-server disk budgets, expiry);
 //! 5 (read timeouts, the connection cap) `tests/connections.rs`;
 //! 6 (SIGTERM with open streams) `tests/shutdown.rs`;
 //! 7 (integer overflow) `tests/numeric_params.rs`;

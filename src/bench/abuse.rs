@@ -16,8 +16,9 @@
 //!    a view and never read: the resident set before and [`SILENT_SECONDS`] s after, per client,
 //!    and how many of them the server had closed by then.
 //!
-//! The server runs in this process on loopback with the CPU backend and a SQLite store in a
-//! temporary directory, like `strata serve`'s defaults; `wrk` is a separate process
+//! The server runs in this process on loopback with the CPU backend, a SQLite store in a
+//! temporary directory and the accept loop of `strata serve`, with its defaults (the rate
+//! limits included); `wrk` is a separate process
 //! (`apt-get install wrk`).
 
 use super::emit;
@@ -129,9 +130,15 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
     let state = AppState::new(Compute::cpu()).with_worlds(store, None);
     let listener = rt.block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))?;
     let addr = listener.local_addr()?.to_string();
-    rt.spawn(async move {
-        let _ = axum::serve(listener, app(state)).await;
-    });
+    // The accept loop of `strata serve`: client addresses (which the rate limits key on), read
+    // timeouts and the connection cap as a deployed server has them.
+    let limits = state.limits();
+    rt.spawn(crate::server::connections::serve(
+        listener,
+        app(state),
+        limits,
+        tokio_util::sync::CancellationToken::new(),
+    ));
 
     // A public world with the heaviest region a scene may hold: 2049² samples over 8 km and a
     // hydraulic-erosion brush at the region's budget (droplets × steps = 4 194 304).
