@@ -122,6 +122,12 @@ async fn a_burst_of_scatter_is_refused_per_address_and_per_token() {
     limited(&get(addr, "127.0.0.2", scatter, None).await);
     // Another address is unaffected.
     assert_eq!(get(addr, "127.0.0.3", scatter, None).await.status, 200);
+    // Volume chunks are meshed on every request, so they are charged too.
+    let chunk = "/v1/seeds/42/chunks/2/0/0/0.bin";
+    for _ in 0..LIMIT {
+        assert_eq!(get(addr, "127.0.0.5", chunk, None).await.status, 200);
+    }
+    limited(&get(addr, "127.0.0.5", chunk, None).await);
     // A world and two of its tokens (world creation is not rate-limited).
     let created = request(
         addr,

@@ -11,10 +11,14 @@
 //! 2. **Noisy neighbours.** Cached-tile requests per second from `wrk` with
 //!    [`CONNECTIONS`] connections alone, then while [`CONNECTIONS`] more connections hammer the
 //!    most expensive anonymous route of (1) with a new key per request; the target is at least
-//!    [`TARGET_HAMMERED_RATIO`] of the quiet figure.
-//! 3. **Clients that never read.** [`SILENT_CLIENTS`] WebSocket clients of a seed's stream send
-//!    a view and never read: the resident set before and [`SILENT_SECONDS`] s after, per client,
-//!    and how many of them the server had closed by then.
+//!    [`TARGET_HAMMERED_RATIO`] of the quiet figure. The peer in the same run: the cached-tile
+//!    figure while the same connections ask for `/healthz`, the cheapest route, which is what
+//!    any load costs on this machine (the `wrk`s share its cores with the server).
+//! 3. **Clients that never read.** [`SILENT_CLIENTS`] WebSocket clients, each of its own seed,
+//!    connect, then send a view and never read: the resident set, less the caches' growth (which
+//!    their budget bounds), per client once connected and [`SILENT_SECONDS`] s after the views,
+//!    against [`crate::stream::session::CLIENT_MEMORY_BOUND`], and how many of them the server
+//!    had closed by then.
 //!
 //! The server runs in this process on loopback with the CPU backend, a SQLite store in a
 //! temporary directory and the accept loop of `strata serve`, with its defaults (the rate
@@ -274,6 +278,17 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
     rt.block_on(http_get(&addr, CACHED_TILE))?;
     let cached_url = format!("http://{addr}{CACHED_TILE}");
     let (quiet, _) = wrk(&cached_url, 8, None)?;
+    // The peer: the same load on the cheapest route there is (`/healthz`), so the figure below
+    // can be read as what any 64 connections take from 2 cores shared with two `wrk`s.
+    let control_thread = {
+        let url = format!("http://{addr}/healthz");
+        std::thread::spawn(move || wrk(&url, 12, None))
+    };
+    std::thread::sleep(Duration::from_secs(2));
+    let (control, _) = wrk(&cached_url, 8, None)?;
+    control_thread
+        .join()
+        .map_err(|_| anyhow::anyhow!("control thread panicked"))??;
     let (_, hammer) = worst.context("no anonymous route to hammer")?;
     let (prefix, suffix) = hammer.walk.clone().context("walk")?;
     let script = dir.join("hammer.lua");
@@ -286,61 +301,115 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
         .join()
         .map_err(|_| anyhow::anyhow!("hammer thread panicked"))??;
     let ratio = loud / quiet;
+    let control_ratio = control / quiet;
     emit(
         args,
         json!({"bench":"abuse","figure":"noisy_neighbour","connections":CONNECTIONS,"hammered_route":hammer.name,
                "quiet_requests_per_s":quiet,"hammered_requests_per_s":loud,"ratio":ratio,
                "hammer_requests_per_s":hammer_rps,"hammer_refused":hammer_refused,
+               "healthz_loaded_requests_per_s":control,"healthz_loaded_ratio":control_ratio,
                "target_ratio":TARGET_HAMMERED_RATIO,"meets_target":ratio >= TARGET_HAMMERED_RATIO}),
         format!(
-            "  cached tile, {CONNECTIONS} connections: {quiet:.0} req/s alone, {loud:.0} req/s while {CONNECTIONS} more hammer \"{}\" ({hammer_rps:.0} req/s, {hammer_refused} refused): ratio {ratio:.2} (target ≥ {TARGET_HAMMERED_RATIO})",
+            "  cached tile, {CONNECTIONS} connections: {quiet:.0} req/s alone, {loud:.0} req/s while {CONNECTIONS} more hammer \"{}\" ({hammer_rps:.0} req/s, {hammer_refused} refused): ratio {ratio:.2} (target ≥ {TARGET_HAMMERED_RATIO}); \
+             {control:.0} req/s while {CONNECTIONS} more ask for /healthz: ratio {control_ratio:.2}",
             hammer.name
         ),
     );
 
-    // Clients that never read.
-    let before = rss_bytes() as f64;
-    let (after, closed) = rt.block_on(silent_clients(&addr))?;
-    let per_client = (after - before) / SILENT_CLIENTS as f64;
+    // Clients that never read: first connected (each on its own seed, so each holds its own
+    // world plan), then each with a view it never reads. The caches' growth (within their
+    // budget) is taken out of the per-client figure.
+    let silent = rt.block_on(silent_clients(&addr))?;
+    let per_client = |a: &Snapshot, b: &Snapshot| {
+        ((b.rss - a.rss) - (b.caches - a.caches)) / SILENT_CLIENTS as f64
+    };
+    let (connected, viewing) = (
+        per_client(&silent[0], &silent[1]),
+        per_client(&silent[1], &silent[2]),
+    );
+    let bound = crate::stream::session::CLIENT_MEMORY_BOUND as f64;
+    let closed = silent[2].closed;
     emit(
         args,
         json!({"bench":"abuse","figure":"silent_stream_clients","clients":SILENT_CLIENTS,"seconds":SILENT_SECONDS,
-               "rss_before_mib":mib(before),"rss_after_mib":mib(after),"per_client_kib":per_client / 1024.0,
-               "closed_by_server":closed}),
+               "rss_before_mib":mib(silent[0].rss),"rss_after_mib":mib(silent[2].rss),
+               "cache_growth_mib":mib(silent[2].caches - silent[0].caches),
+               "connected_per_client_kib":connected / 1024.0,"viewing_per_client_kib":viewing / 1024.0,
+               "client_memory_bound_kib":bound / 1024.0,"closed_by_server":closed,
+               "meets_target":viewing <= bound}),
         format!(
-            "  {SILENT_CLIENTS} stream clients that never read, after {SILENT_SECONDS} s: resident {:.0} → {:.0} MiB ({:.0} KiB a client), {closed} closed by the server",
-            mib(before),
-            mib(after),
-            per_client / 1024.0
+            "  {SILENT_CLIENTS} stream clients of distinct seeds that never read: resident {:.0} → {:.0} MiB, caches +{:.0} MiB; \
+             per client {:.0} KiB connected (its seed's plan), {:.0} KiB more with a view after {SILENT_SECONDS} s \
+             (bound {:.0} KiB); {closed} closed by the server",
+            mib(silent[0].rss),
+            mib(silent[2].rss),
+            mib(silent[2].caches - silent[0].caches),
+            connected / 1024.0,
+            viewing / 1024.0,
+            bound / 1024.0
         ),
     );
     Ok(())
 }
 
-/// Connects [`SILENT_CLIENTS`] stream clients that each send one view and never read; returns
-/// the resident set after [`SILENT_SECONDS`] and how many connections the server had closed
-/// (a write to a closed connection fails).
-async fn silent_clients(addr: &str) -> anyhow::Result<(f64, usize)> {
+/// The process's resident set and the caches' bytes at one moment, and how many silent clients
+/// the server had closed by then.
+struct Snapshot {
+    rss: f64,
+    caches: f64,
+    closed: usize,
+}
+
+/// The bytes the server's caches count (`strata_cache_bytes` summed over caches, from
+/// `/metrics`).
+async fn cache_bytes(addr: &str) -> anyhow::Result<f64> {
+    let (_, body) = http_get(addr, "/metrics").await?;
+    Ok(String::from_utf8_lossy(&body)
+        .lines()
+        .filter(|l| l.starts_with("strata_cache_bytes{"))
+        .filter_map(|l| l.rsplit(' ').next()?.parse::<f64>().ok())
+        .sum())
+}
+
+async fn snapshot(addr: &str, closed: usize) -> anyhow::Result<Snapshot> {
+    Ok(Snapshot {
+        rss: rss_bytes() as f64,
+        caches: cache_bytes(addr).await?,
+        closed,
+    })
+}
+
+/// Connects [`SILENT_CLIENTS`] stream clients of distinct seeds; then each sends one view and
+/// never reads. Snapshots before, once connected, and [`SILENT_SECONDS`] after the views (with
+/// how many connections the server had closed: a write to a closed connection fails).
+async fn silent_clients(addr: &str) -> anyhow::Result<[Snapshot; 3]> {
+    let start = snapshot(addr, 0).await?;
     let mut clients = Vec::with_capacity(SILENT_CLIENTS);
     for i in 0..SILENT_CLIENTS {
-        let (mut ws, _) =
+        let (ws, _) =
             tokio_tungstenite::connect_async(format!("ws://{addr}/v1/seeds/{}/stream", 100 + i))
                 .await
                 .context("connecting a stream client")?;
+        clients.push(ws);
+    }
+    tokio::time::sleep(Duration::from_secs(1)).await;
+    let connected = snapshot(addr, 0).await?;
+    for ws in &mut clients {
         ws.send(Message::Text(
             json!({"type":"view","x":0,"z":0,"rings":[2,2,2,2,2,2,2]})
                 .to_string()
                 .into(),
         ))
         .await?;
-        clients.push(ws);
     }
     tokio::time::sleep(Duration::from_secs(SILENT_SECONDS)).await;
-    let after = rss_bytes() as f64;
     let mut closed = 0;
+    let viewing_rss = rss_bytes() as f64;
     for ws in &mut clients {
         let ping = ws.send(Message::Ping(Vec::new().into())).await;
         closed += usize::from(ping.is_err());
     }
-    Ok((after, closed))
+    let mut viewing = snapshot(addr, closed).await?;
+    viewing.rss = viewing_rss;
+    Ok([start, connected, viewing])
 }

@@ -67,7 +67,7 @@ pub struct ServeArgs {
     #[arg(long, value_name = "SECONDS", default_value_t = super::jobs::quota::DEFAULT_MAX_AGE_S,
           value_parser = clap::value_parser!(u64).range(1..=10 * 365 * 86_400))]
     pub export_max_age: u64,
-    /// Expensive requests (export creation, scatter, region PNGs and stats, volume meshes,
+    /// Expensive requests (export creation, scatter, volume chunks, region PNGs and stats, volume meshes,
     /// tiles not yet cached) each client address and each token may make per minute, in a burst
     /// or spread out; further ones are refused (429 `rate_limited` with `Retry-After`).
     #[arg(long, value_name = "PER_MINUTE",

@@ -192,8 +192,11 @@ async fn product(
 }
 
 /// `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{ext}` and
-/// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`.
+/// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`. Every request meshes its chunk
+/// (chunk bodies are not cached; their tiles are), so each is charged to the client's rate
+/// limit ([`super::rate_limit`]).
 async fn chunk(
+    _charge: super::rate_limit::Charge,
     world: WorldAt,
     State(st): State<AppState>,
     path: Segments,
