@@ -48,6 +48,7 @@ mod plans;
 pub mod region_io;
 pub mod regions;
 pub mod rivers;
+pub mod route_table;
 pub mod routes;
 pub mod solved;
 pub mod stream_routes;
