@@ -1,0 +1,105 @@
+//! Inputs found by fuzzing (`fuzz/`, README's testing section) that once cost far more than
+//! their size, kept as tests so the bounds that fixed them stay.
+//!
+//! The glb reader (`volume::mesh_import`) was bounded by its file size, node visits and
+//! triangle budget, yet a small file could still make it loop: a mesh of thousands of
+//! primitives reached through thousands of node visits, each re-reading a large accessor while
+//! yielding no triangle. Each case below is refused with an error naming its bound, and quickly.
+
+use serde_json::json;
+use std::time::{Duration, Instant};
+use strata::volume::mesh_import::{
+    glb_triangles, write_glb, MAX_ACCESSOR_ELEMENTS, MAX_NODE_VISITS, MAX_PRIMITIVE_VISITS,
+};
+
+/// Far more than any of these cases needs once bounded; the unbounded reader took minutes.
+const QUICK: Duration = Duration::from_secs(5);
+
+/// `positions` little-endian `FLOAT` `VEC3` positions at the origin, as a glb binary chunk.
+fn positions_bin(positions: usize) -> Vec<u8> {
+    vec![0u8; positions * 12]
+}
+
+/// A glb whose node 0 has `visits` children, each node 1, which holds mesh 0 of `primitives`
+/// primitives that all read the POSITION accessor 0 of `positions` positions, in `mode`.
+fn fan_out(visits: usize, primitives: usize, positions: usize, mode: u64) -> Vec<u8> {
+    let bin = positions_bin(positions);
+    let doc = json!({
+        "asset": {"version": "2.0"},
+        "nodes": [{"children": vec![1; visits]}, {"mesh": 0}],
+        "meshes": [{"primitives": vec![json!({"attributes": {"POSITION": 0}, "mode": mode}); primitives]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": positions, "type": "VEC3"}],
+        "bufferViews": [{"buffer": 0, "byteLength": bin.len()}],
+        "buffers": [{"byteLength": bin.len()}],
+    });
+    write_glb(&doc, &bin)
+}
+
+fn refused_quickly(glb: &[u8], needle: &str) {
+    let start = Instant::now();
+    let err = glb_triangles(glb, None, 1 << 20).expect_err("the file is refused");
+    assert!(err.0.contains(needle), "{err}");
+    assert!(start.elapsed() < QUICK, "took {:?}", start.elapsed());
+}
+
+#[test]
+fn thousands_of_primitives_under_thousands_of_visits_are_refused() {
+    // Points (mode 0) yield no triangle and were skipped without counting.
+    let visits = MAX_NODE_VISITS - 2;
+    let primitives = MAX_PRIMITIVE_VISITS / visits + 1;
+    let glb = fan_out(visits, primitives, 1, 0);
+    refused_quickly(
+        &glb,
+        &format!("more than {MAX_PRIMITIVE_VISITS} mesh primitives"),
+    );
+}
+
+#[test]
+fn rereading_a_large_accessor_through_many_primitives_is_refused() {
+    // 3 positions per read would be a triangle; 2 (a strip's first two) yield none.
+    let positions = 2;
+    let reads = MAX_ACCESSOR_ELEMENTS / positions + 1;
+    let primitives = 128;
+    let glb = fan_out(reads / primitives + 1, primitives, positions, 5);
+    refused_quickly(
+        &glb,
+        &format!("more than {MAX_ACCESSOR_ELEMENTS} accessor elements"),
+    );
+    // One large accessor read through a few visits.
+    let positions = 40_000;
+    let glb = fan_out(MAX_ACCESSOR_ELEMENTS / positions + 1, 1, positions, 0);
+    refused_quickly(
+        &glb,
+        &format!("more than {MAX_ACCESSOR_ELEMENTS} accessor elements"),
+    );
+}
+
+#[test]
+fn a_node_listing_itself_as_its_child_thousands_of_times_is_refused() {
+    let doc = json!({
+        "asset": {"version": "2.0"},
+        "nodes": [{"children": vec![0; 50_000]}],
+    });
+    refused_quickly(&write_glb(&doc, &[]), "node visits");
+}
+
+#[test]
+fn a_mesh_within_every_bound_is_still_read() {
+    // 3 positions, one triangle, under 1000 visits of one primitive each.
+    let doc = json!({
+        "asset": {"version": "2.0"},
+        "nodes": [{"children": vec![1; 1000]}, {"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36}],
+    });
+    let mut bin = positions_bin(3);
+    bin[12..16].copy_from_slice(&1f32.to_le_bytes());
+    bin[28..32].copy_from_slice(&1f32.to_le_bytes());
+    let glb = write_glb(&doc, &bin);
+    assert_eq!(
+        glb_triangles(&glb, None, 1 << 20).expect("read").len(),
+        1000
+    );
+}
