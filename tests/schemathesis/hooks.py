@@ -4,7 +4,8 @@ Generated path parameters almost never name a world, region or job that exists, 
 these hooks every world route would answer 404 before its handler ran. run.sh creates a world
 (with an authored region) and an export job and passes their ids in the environment; here each
 generated `id`, `rid` and `job` is replaced by the existing one half of the time, so both the
-handlers and the 404 answers are exercised.
+handlers and the 404 answers are exercised. Glb uploads (`model/gltf-binary`) are sent as the
+raw bytes generated for them, as `application/octet-stream` bodies are.
 """
 
 import os
@@ -19,8 +20,13 @@ EXISTING = {
 }
 
 
+schemathesis.serializer.alias("model/gltf-binary", "application/octet-stream")
+
+
 @schemathesis.hook
 def flatmap_path_parameters(context, path_parameters):
+    if not path_parameters:
+        return st.just(path_parameters)
     choices = []
     for name, existing in EXISTING.items():
         if existing and name in path_parameters:
