@@ -4,8 +4,8 @@
 # content type or body the specification does not allow.
 #
 # The server runs on a free loopback port with a temporary data directory and an admin token;
-# a world (with an authored region) and an export job are created first, so the hooks
-# (hooks.py) can send path parameters that resolve. Schemathesis is installed, pinned, into a
+# a world (with an authored region and a subsurface) and an export job are created first, so
+# the hooks (hooks.py) can send path parameters that resolve. Schemathesis is installed, pinned, into a
 # virtual environment under the build directory. The budget is bounded by --max-examples per
 # operation (SCHEMATHESIS_MAX_EXAMPLES, default 60: a few thousand cases in all).
 #
@@ -59,7 +59,7 @@ world="$(curl -fs -XPOST "$base/v1/worlds" "${auth[@]}" -H 'Content-Type: applic
   -d '{"seed": 42, "public": true}' | json_field '["id"]')"
 curl -fs -XPOST "$base/v1/worlds/$world/edits" "${auth[@]}" \
   -H 'Content-Type: application/json-patch+json' \
-  -d '[{"op":"add","path":"/regions/-","value":{"id":"peak","bbox":{"min":[0,0],"max":[256,256]},"samples":65,"ops":[{"op":"elevation","shape":{"point":[128,128]},"elevation_m":400,"radius_m":6}]}}]' \
+  -d '[{"op":"add","path":"/regions/-","value":{"id":"peak","bbox":{"min":[0,0],"max":[256,256]},"samples":65,"ops":[{"op":"elevation","shape":{"point":[128,128]},"elevation_m":400,"radius_m":6}]}},{"op":"add","path":"/strata/-","value":{"id":"rock","bbox":{"min":[-500,-500],"max":[500,500]},"preset":"B3"}}]' \
   >/dev/null
 job="$(curl -fs -XPOST "$base/v1/worlds/$world/exports" "${auth[@]}" -H 'Content-Type: application/json' \
   -d '{"lod":4,"region":[0,0,1,1],"products":["tiles"],"formats":["bin"]}' | json_field '["job"]')"
