@@ -15,22 +15,37 @@ use strata::volume::mesh_import::{
 /// Far more than any of these cases needs once bounded; the unbounded reader took minutes.
 const QUICK: Duration = Duration::from_secs(5);
 
-/// `positions` little-endian `FLOAT` `VEC3` positions at the origin, as a glb binary chunk.
-fn positions_bin(positions: usize) -> Vec<u8> {
-    vec![0u8; positions * 12]
-}
-
 /// A glb whose node 0 has `visits` children, each node 1, which holds mesh 0 of `primitives`
-/// primitives that all read the POSITION accessor 0 of `positions` positions, in `mode`.
-fn fan_out(visits: usize, primitives: usize, positions: usize, mode: u64) -> Vec<u8> {
-    let bin = positions_bin(positions);
+/// primitives in `mode` that all read the POSITION accessor 0 of `positions` positions (at the
+/// origin). With `one_index` each primitive also reads an index accessor of one index, so it
+/// yields no triangle whatever its mode.
+fn fan_out(
+    visits: usize,
+    primitives: usize,
+    positions: usize,
+    mode: u64,
+    one_index: bool,
+) -> Vec<u8> {
+    let mut bin = vec![0u8; positions * 12 + 4];
+    let n = bin.len();
+    let mut primitive = json!({"attributes": {"POSITION": 0}, "mode": mode});
+    if one_index {
+        primitive["indices"] = json!(1);
+    }
     let doc = json!({
         "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
         "nodes": [{"children": vec![1; visits]}, {"mesh": 0}],
-        "meshes": [{"primitives": vec![json!({"attributes": {"POSITION": 0}, "mode": mode}); primitives]}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": positions, "type": "VEC3"}],
-        "bufferViews": [{"buffer": 0, "byteLength": bin.len()}],
-        "buffers": [{"byteLength": bin.len()}],
+        "meshes": [{"primitives": vec![primitive; primitives]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": positions, "type": "VEC3"},
+            {"bufferView": 1, "componentType": 5121, "count": 1, "type": "SCALAR"}
+        ],
+        "bufferViews": [
+            {"buffer": 0, "byteLength": positions * 12},
+            {"buffer": 0, "byteOffset": positions * 12, "byteLength": 4}
+        ],
+        "buffers": [{"byteLength": n}],
     });
     write_glb(&doc, &bin)
 }
@@ -47,7 +62,7 @@ fn thousands_of_primitives_under_thousands_of_visits_are_refused() {
     // Points (mode 0) yield no triangle and were skipped without counting.
     let visits = MAX_NODE_VISITS - 2;
     let primitives = MAX_PRIMITIVE_VISITS / visits + 1;
-    let glb = fan_out(visits, primitives, 1, 0);
+    let glb = fan_out(visits, primitives, 1, 0, false);
     refused_quickly(
         &glb,
         &format!("more than {MAX_PRIMITIVE_VISITS} mesh primitives"),
@@ -56,18 +71,20 @@ fn thousands_of_primitives_under_thousands_of_visits_are_refused() {
 
 #[test]
 fn rereading_a_large_accessor_through_many_primitives_is_refused() {
-    // 3 positions per read would be a triangle; 2 (a strip's first two) yield none.
-    let positions = 2;
-    let reads = MAX_ACCESSOR_ELEMENTS / positions + 1;
-    let primitives = 128;
-    let glb = fan_out(reads / primitives + 1, primitives, positions, 5);
+    // Each primitive reads 16 positions and one index: 17 elements and no triangle, within the
+    // primitive bound.
+    let positions = 16;
+    let reads = MAX_ACCESSOR_ELEMENTS / (positions + 1) + 1;
+    let primitives = 64;
+    assert!(reads <= MAX_PRIMITIVE_VISITS);
+    let glb = fan_out(reads / primitives + 1, primitives, positions, 4, true);
     refused_quickly(
         &glb,
         &format!("more than {MAX_ACCESSOR_ELEMENTS} accessor elements"),
     );
     // One large accessor read through a few visits.
     let positions = 40_000;
-    let glb = fan_out(MAX_ACCESSOR_ELEMENTS / positions + 1, 1, positions, 0);
+    let glb = fan_out(MAX_ACCESSOR_ELEMENTS / positions + 1, 1, positions, 4, true);
     refused_quickly(
         &glb,
         &format!("more than {MAX_ACCESSOR_ELEMENTS} accessor elements"),
@@ -78,6 +95,7 @@ fn rereading_a_large_accessor_through_many_primitives_is_refused() {
 fn a_node_listing_itself_as_its_child_thousands_of_times_is_refused() {
     let doc = json!({
         "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
         "nodes": [{"children": vec![0; 50_000]}],
     });
     refused_quickly(&write_glb(&doc, &[]), "node visits");
@@ -94,7 +112,7 @@ fn a_mesh_within_every_bound_is_still_read() {
         "bufferViews": [{"buffer": 0, "byteLength": 36}],
         "buffers": [{"byteLength": 36}],
     });
-    let mut bin = positions_bin(3);
+    let mut bin = vec![0u8; 36];
     bin[12..16].copy_from_slice(&1f32.to_le_bytes());
     bin[28..32].copy_from_slice(&1f32.to_le_bytes());
     let glb = write_glb(&doc, &bin);

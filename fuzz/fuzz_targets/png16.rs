@@ -12,6 +12,8 @@ fuzz_target!(|data: &[u8]| {
         assert!(image.values.iter().all(|h| (-100.0..=1000.0).contains(h)));
     }
     if let Ok(image) = import_gradient_map(data, 1.0) {
-        assert_eq!(image.values.len(), image.width * image.height);
+        let (gx, gz) = &image.values;
+        assert_eq!(gx.len(), image.width * image.height);
+        assert_eq!(gz.len(), image.width * image.height);
     }
 });
