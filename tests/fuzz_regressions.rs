@@ -26,7 +26,7 @@ fn fan_out(
     mode: u64,
     one_index: bool,
 ) -> Vec<u8> {
-    let mut bin = vec![0u8; positions * 12 + 4];
+    let bin = vec![0u8; positions * 12 + 4];
     let n = bin.len();
     let mut primitive = json!({"attributes": {"POSITION": 0}, "mode": mode});
     if one_index {
