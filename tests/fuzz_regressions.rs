@@ -5,9 +5,15 @@
 //! triangle budget, yet a small file could still make it loop: a mesh of thousands of
 //! primitives reached through thousands of node visits, each re-reading a large accessor while
 //! yielding no triangle. Each case below is refused with an error naming its bound, and quickly.
+//!
+//! An edit's JSON Patch (`store::patch_scene`) panicked inside json-patch when an operation
+//! failed after a `copy` to the end of an array, since its undo of the copy failed; a panic in
+//! the store's writer is a 500 for an edit token holder's request.
 
 use serde_json::json;
 use std::time::{Duration, Instant};
+use strata::scene::Scene;
+use strata::store::{canonical_scene, patch_scene, StoreError};
 use strata::volume::mesh_import::{
     glb_triangles, write_glb, MAX_ACCESSOR_ELEMENTS, MAX_NODE_VISITS, MAX_PRIMITIVE_VISITS,
 };
@@ -119,5 +125,21 @@ fn a_mesh_within_every_bound_is_still_read() {
     assert_eq!(
         glb_triangles(&glb, None, 1 << 20).expect("read").len(),
         1000
+    );
+}
+
+#[test]
+fn a_failing_patch_after_a_copy_to_the_end_of_an_array_is_refused_without_a_panic() {
+    let doc = canonical_scene(&json!({})).expect("a new scene");
+    let old = Scene::from_value(&doc).expect("it parses");
+    let patch: json_patch::Patch = serde_json::from_value(json!([
+        {"op": "copy", "from": "/regions", "path": "/regions/-"},
+        {"op": "move", "from": "/regions", "path": "/regi/regions/0/id"}
+    ]))
+    .expect("a JSON Patch");
+    let err = patch_scene(doc, &old, &patch).expect_err("the second operation fails");
+    assert!(
+        matches!(err, StoreError::Patch { operation: 1, .. }),
+        "{err:?}"
     );
 }
