@@ -17,6 +17,7 @@
 
 use super::error::{code, AppError};
 use super::params::{parse_coord, parse_format, parse_lod, split_extension};
+use super::route_table::RouteTable;
 use super::routes::{segments, CachedProduct, PathSegments};
 use super::view::{WorldAt, WorldView};
 use super::AppState;
@@ -33,22 +34,21 @@ use crate::volume::mesh::QuadMesh;
 use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::Response;
-use axum::routing::get;
-use axum::Router;
 use std::sync::Arc;
 
 /// The volume-chunk routes.
-pub fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z_ext}", get(chunk))
-        .route("/v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z_ext}", get(chunk))
+pub fn routes() -> RouteTable {
+    RouteTable::new()
+        .get("/v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z_ext}", chunk)
+        .get("/v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z_ext}", chunk)
 }
 
 /// The five path segments of a chunk route (`{seed|id}/{lod}/{x}/{y}/{z_ext}`).
 type Segments = PathSegments<(String, String, String, String, String)>;
 
-/// Parses `lod`, `x`, `y`, `z.ext` and checks the chunk limits against `plan`.
-fn parse_chunk(
+/// Parses `lod`, `x`, `y`, `z.ext` and checks the chunk limits against `plan`. Public for the
+/// fuzz target `path_params`.
+pub fn parse_chunk(
     plan: &WorldPlan,
     lod: &str,
     x: &str,

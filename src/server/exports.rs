@@ -30,6 +30,7 @@
 use super::error::{code, AppError};
 use super::http::{authorize, authorized_body, json_response, store_error};
 use super::jobs::{valid_job_id, Job, Progress, Status, SubmitError};
+use super::route_table::RouteTable;
 use super::AppState;
 use crate::export::{ExportSpec, Product, Shard};
 use crate::store::{Role, StoreError};
@@ -38,8 +39,6 @@ use axum::extract::{Path, State};
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::sse::{Event, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
-use axum::routing::{get, post};
-use axum::Router;
 use serde::Deserialize;
 use serde_json::{json, Value};
 use std::collections::VecDeque;
@@ -52,12 +51,12 @@ use tokio::sync::{mpsc, watch};
 const ARCHIVE_CHUNK: usize = 64 << 10;
 
 /// The routes of this module (merged into the service's router).
-pub(super) fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/worlds/{id}/exports", post(create))
-        .route("/v1/jobs/{job}", get(status))
-        .route("/v1/jobs/{job}/events", get(events))
-        .route("/v1/jobs/{job}/archive", get(archive))
+pub(super) fn routes() -> RouteTable {
+    RouteTable::new()
+        .post("/v1/worlds/{id}/exports", create)
+        .get("/v1/jobs/{job}", status)
+        .get("/v1/jobs/{job}/events", events)
+        .get("/v1/jobs/{job}/archive", archive)
 }
 
 #[derive(Deserialize)]

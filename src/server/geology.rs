@@ -18,6 +18,7 @@
 use super::error::{code, truncate, AppError};
 use super::http::query_param;
 use super::params::parse_coord;
+use super::route_table::RouteTable;
 use super::view::{WorldAt, WorldView};
 use super::AppState;
 use crate::subsurface::chunk::{Chunk, ChunkKey};
@@ -29,8 +30,6 @@ use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use axum::routing::{get, post};
-use axum::Router;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -47,10 +46,10 @@ pub const MAX_QUERY_TILES: usize = 64;
 pub const MAX_QUERY_BYTES: usize = 512 * 1024;
 
 /// The subsurface routes.
-pub fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/worlds/{id}/columns/{x}/{z_ext}", get(columns))
-        .route("/v1/worlds/{id}/materials/query", post(query))
+pub fn routes() -> RouteTable {
+    RouteTable::new()
+        .get("/v1/worlds/{id}/columns/{x}/{z_ext}", columns)
+        .post("/v1/worlds/{id}/materials/query", query)
 }
 
 /// The largest `|x|`, `|z|` of a column chunk of `size` voxels of `voxel_m` metres: chunk `c`

@@ -50,6 +50,7 @@ pub mod rate_limit;
 pub mod region_io;
 pub mod regions;
 pub mod rivers;
+pub mod route_table;
 pub mod routes;
 pub mod solved;
 pub mod stream_routes;

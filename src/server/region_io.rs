@@ -22,6 +22,7 @@ use super::error::{code, truncate, AppError};
 use super::http::{
     authorize, check_content_type, json_response, parse_if_match, query_param, set_version_headers,
 };
+use super::route_table::RouteTable;
 use super::view::{WorldAt, WorldView};
 use super::AppState;
 use crate::authoring::exchange::{export_gradient_map, export_png16, ExchangeError};
@@ -32,8 +33,6 @@ use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use axum::routing::get;
-use axum::Router;
 use serde_json::{json, Value};
 use std::sync::Arc;
 
@@ -47,15 +46,16 @@ pub const HI_HEADER: &str = "x-strata-hi-m";
 pub const GRADIENT_M_HEADER: &str = "x-strata-gradient-m";
 
 /// The routes of this module (merged into the service's router).
-pub(super) fn routes() -> Router<AppState> {
-    Router::new()
-        .route(
+pub(super) fn routes() -> RouteTable {
+    RouteTable::new()
+        .get(
             "/v1/worlds/{id}/regions/{rid}/heightmap.png",
-            get(region_png::<HeightmapPng>).post(heightmap_in),
+            region_png::<HeightmapPng>,
         )
-        .route(
+        .post("/v1/worlds/{id}/regions/{rid}/heightmap.png", heightmap_in)
+        .get(
             "/v1/worlds/{id}/regions/{rid}/gradients.png",
-            get(region_png::<GradientsPng>),
+            region_png::<GradientsPng>,
         )
 }
 

@@ -18,6 +18,7 @@
 
 use super::error::{code, AppError};
 use super::params::{check_bounds, parse_coord, parse_format, parse_lod, split_extension};
+use super::route_table::RouteTable;
 use super::routes::{blocking, segments, CachedProduct, Segments};
 use super::view::{WorldAt, WorldView};
 use super::AppState;
@@ -28,22 +29,21 @@ use crate::terrain::TileKey;
 use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::Response;
-use axum::routing::get;
-use axum::Router;
 use std::sync::Arc;
 
 /// The body cache's format tag of river lines.
 const BODY_TAG: &str = "rivers.json";
 
 /// The river-line routes.
-pub fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/seeds/{seed}/rivers/{lod}/{x}/{z_ext}", get(lines))
-        .route("/v1/worlds/{id}/rivers/{lod}/{x}/{z_ext}", get(lines))
+pub fn routes() -> RouteTable {
+    RouteTable::new()
+        .get("/v1/seeds/{seed}/rivers/{lod}/{x}/{z_ext}", lines)
+        .get("/v1/worlds/{id}/rivers/{lod}/{x}/{z_ext}", lines)
 }
 
-/// Parses `lod` (at most [`MAX_CARVE_LOD`]), `x` and `z.json`.
-fn parse_key(lod: &str, x: &str, z_ext: &str) -> Result<TileKey, AppError> {
+/// Parses `lod` (at most [`MAX_CARVE_LOD`]), `x` and `z.json`. Public for the fuzz target
+/// `path_params`.
+pub fn parse_key(lod: &str, x: &str, z_ext: &str) -> Result<TileKey, AppError> {
     let lod = parse_lod(lod)?;
     if lod as usize > MAX_CARVE_LOD {
         return Err(AppError::bad_request(

@@ -3,6 +3,7 @@
 use super::error::{code, AppError};
 use super::params::{parse_seams, parse_tile_path, parse_tile_version};
 use super::rate_limit::{Charge, Client};
+use super::route_table::RouteTable;
 use super::view::WorldAt;
 use super::{AppState, MAX_BODY_BYTES};
 use crate::encode::{self, Format, TileVersion};
@@ -15,7 +16,6 @@ use axum::extract::{DefaultBodyLimit, Path, RawQuery, Request, State};
 use axum::http::{header, HeaderMap, HeaderName, HeaderValue, StatusCode, Uri};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
-use axum::routing::get;
 use axum::{Json, Router};
 use serde_json::json;
 use std::sync::Arc;
@@ -36,14 +36,16 @@ pub const ETAG_HEX_DIGITS: usize = 32;
 /// JSON responses at least this long are gzip-compressed when the client accepts gzip.
 pub const COMPRESS_MIN_BYTES: u16 = 256;
 
-/// Builds the router (see the module docs of [`super`] for the route table).
-pub fn router(state: AppState) -> Router {
-    let routes = Router::new()
-        .route("/healthz", get(healthz))
-        .route("/v1/info", get(info))
-        .route("/v1/seeds/{seed}/tiles/{lod}/{x}/{z_ext}", get(tile))
-        .route("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", get(scatter))
-        .route("/metrics", get(super::metrics::render))
+/// Every route the server serves, as the router is built from it (the module docs of [`super`]
+/// describe them; `tests/openapi_routes.rs` compares them with `api/openapi.yaml`). The viewer
+/// directory is the router's fallback, not a route.
+pub fn table() -> RouteTable {
+    RouteTable::new()
+        .get("/healthz", healthz)
+        .get("/v1/info", info)
+        .get("/v1/seeds/{seed}/tiles/{lod}/{x}/{z_ext}", tile)
+        .get("/v1/seeds/{seed}/scatter/{lod}/{x}/{z_ext}", scatter)
+        .get("/metrics", super::metrics::render)
         .merge(super::rivers::routes())
         .merge(super::worlds::routes())
         .merge(super::region_io::routes())
@@ -52,6 +54,12 @@ pub fn router(state: AppState) -> Router {
         .merge(super::volume_routes::routes())
         .merge(super::geology::routes())
         .merge(super::stream_routes::router())
+}
+
+/// Builds the router from [`table`], with the viewer directory as its fallback.
+pub fn router(state: AppState) -> Router {
+    let routes = table()
+        .into_router()
         .method_not_allowed_fallback(method_not_allowed);
     let routes = match &state.web {
         Some(dir) => {

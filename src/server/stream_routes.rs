@@ -3,6 +3,7 @@
 //! products through the stage and body caches).
 
 use super::edit_service::{StreamView, WorldEdit};
+use super::route_table::RouteTable;
 use super::routes::CachedProduct;
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
@@ -17,10 +18,10 @@ use std::sync::Arc;
 use tokio::sync::broadcast;
 
 /// Routes of this module, to merge into the app's router.
-pub fn router() -> axum::Router<AppState> {
-    axum::Router::new()
-        .route("/v1/seeds/{seed}/stream", axum::routing::get(seed_stream))
-        .route("/v1/worlds/{id}/stream", axum::routing::get(world_stream))
+pub fn router() -> RouteTable {
+    RouteTable::new()
+        .get("/v1/seeds/{seed}/stream", seed_stream)
+        .get("/v1/worlds/{id}/stream", world_stream)
 }
 
 impl From<AppError> for StreamError {

@@ -33,6 +33,7 @@ use super::http::{
     authorize, check_content_type, json_response, parse_if_match, query_param, readable_version,
     set_version_headers, store_error,
 };
+use super::route_table::RouteTable;
 use super::routes::CachedProduct;
 use super::view::WorldAt;
 use super::AppState;
@@ -45,22 +46,18 @@ use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{HeaderMap, StatusCode};
 use axum::response::Response;
-use axum::routing::{get, post};
-use axum::Router;
 use serde_json::{json, Value};
 
 /// Media type of glb uploads and exports.
 pub const GLB_CONTENT_TYPE: &str = "model/gltf-binary";
 
 /// The volume routes.
-pub fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/worlds/{id}/volumes/{vid}/mesh.glb", get(mesh_glb))
-        .route(
-            "/v1/worlds/{id}/volumes/{vid}/curves.json",
-            get(get_curves).put(put_curves),
-        )
-        .route("/v1/worlds/{id}/volumes/{vid}/meshes", post(upload_mesh))
+pub fn routes() -> RouteTable {
+    RouteTable::new()
+        .get("/v1/worlds/{id}/volumes/{vid}/mesh.glb", mesh_glb)
+        .get("/v1/worlds/{id}/volumes/{vid}/curves.json", get_curves)
+        .put("/v1/worlds/{id}/volumes/{vid}/curves.json", put_curves)
+        .post("/v1/worlds/{id}/volumes/{vid}/meshes", upload_mesh)
 }
 
 fn no_volume(id: &str, vid: &str, version: u64) -> AppError {

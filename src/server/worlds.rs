@@ -26,6 +26,7 @@ use super::http::{
     authorize, authorized_body, check_content_type, json_response, parse_body, parse_if_match,
     parse_version, query_param, set_version_headers, store_error, JSON_PATCH,
 };
+use super::route_table::RouteTable;
 use super::routes::IMMUTABLE;
 use super::view::WorldView;
 use super::AppState;
@@ -39,8 +40,6 @@ use axum::body::Bytes;
 use axum::extract::{Path, RawQuery, State};
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::Response;
-use axum::routing::{get, post};
-use axum::Router;
 use serde::Deserialize;
 use serde_json::{json, Value};
 use std::sync::atomic::Ordering;
@@ -232,25 +231,27 @@ impl VersionPlans {
 }
 
 /// The routes of this module (merged into the service's router).
-pub(super) fn routes() -> Router<AppState> {
-    Router::new()
-        .route("/v1/worlds", post(create).get(list))
-        .route("/v1/worlds/{id}", get(show))
-        .route("/v1/worlds/{id}/versions/{v}", get(version))
-        .route("/v1/worlds/{id}/edits", post(edit).get(edit_log))
-        .route("/v1/worlds/{id}/tokens", post(mint_token))
-        .route("/v1/worlds/{id}/access", post(set_access))
-        .route(
+pub(super) fn routes() -> RouteTable {
+    RouteTable::new()
+        .post("/v1/worlds", create)
+        .get("/v1/worlds", list)
+        .get("/v1/worlds/{id}", show)
+        .get("/v1/worlds/{id}/versions/{v}", version)
+        .post("/v1/worlds/{id}/edits", edit)
+        .get("/v1/worlds/{id}/edits", edit_log)
+        .post("/v1/worlds/{id}/tokens", mint_token)
+        .post("/v1/worlds/{id}/access", set_access)
+        .get(
             "/v1/worlds/{id}/tiles/{lod}/{x}/{z_ext}",
-            get(super::routes::tile),
+            super::routes::tile,
         )
-        .route(
+        .get(
             "/v1/worlds/{id}/scatter/{lod}/{x}/{z_ext}",
-            get(super::routes::scatter),
+            super::routes::scatter,
         )
-        .route(
+        .get(
             "/v1/worlds/{id}/regions/{rid}/stats",
-            get(super::region_io::region_stats),
+            super::region_io::region_stats,
         )
 }
 

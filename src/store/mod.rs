@@ -277,6 +277,40 @@ pub fn canonical_scene(doc: &Value) -> Result<Value, StoreError> {
     Ok(scene.to_value())
 }
 
+/// Applies an edit's JSON Patch to the scene document `doc` whose parsed form is `old`, and
+/// checks the result as an edit must be: a valid scene ([`Scene::from_value`]), within the cost
+/// limits for what the edit added or changed ([`Scene::check_costs`]) and at most
+/// [`MAX_SCENE_BYTES`]. Returns the new document as stored (compact JSON) and its parsed form.
+/// Pure, so the store commits only what this accepted and the fuzz target `scene_patch` drives
+/// the same code.
+///
+/// # Errors
+/// [`StoreError::Patch`], [`StoreError::Invalid`] or [`StoreError::TooLarge`].
+pub fn patch_scene(
+    mut doc: Value,
+    old: &Scene,
+    patch: &json_patch::Patch,
+) -> Result<(String, Scene), StoreError> {
+    // Not `json_patch::patch`: on a failing operation it undoes the ones applied, and json-patch
+    // 5.0.0 panics when an undo fails (a `copy` to `/regions/-`, then a failing operation: found
+    // by the fuzz target `scene_patch`). The document is ours and dropped on error, so nothing
+    // needs undoing.
+    json_patch::patch_unsafe(&mut doc, &patch.0).map_err(|e| StoreError::Patch {
+        operation: e.operation,
+        message: format!("{} at {:?}", e.kind, e.path.as_str()),
+    })?;
+    let new = Scene::from_value(&doc).map_err(StoreError::Invalid)?;
+    new.check_costs(Some(old)).map_err(StoreError::Invalid)?;
+    let text = serde_json::to_string(&doc).map_err(|e| StoreError::Backend(e.to_string()))?;
+    if text.len() > MAX_SCENE_BYTES {
+        return Err(StoreError::TooLarge {
+            bytes: text.len(),
+            limit: MAX_SCENE_BYTES,
+        });
+    }
+    Ok((text, new))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -26,8 +26,8 @@
 //! ```
 
 use super::{
-    canonical_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError, TokenGrant,
-    TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES, SNAPSHOT_EVERY,
+    canonical_scene, patch_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
+    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES, SNAPSHOT_EVERY,
 };
 use crate::scene::{dirty_region, Scene};
 use async_trait::async_trait;
@@ -312,7 +312,8 @@ fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, Sto
         }
         let patch: json_patch::Patch = serde_json::from_str(&patch)
             .map_err(|e| StoreError::Backend(format!("stored patch {v}: {e}")))?;
-        json_patch::patch(&mut doc, &patch.0)
+        // The document is dropped on error, so no undo is needed (see `patch_scene`).
+        json_patch::patch_unsafe(&mut doc, &patch.0)
             .map_err(|e| StoreError::Backend(format!("replaying edit {v}: {e}")))?;
         expect += 1;
         last_hash = Some(hash);
@@ -425,23 +426,11 @@ impl SceneStore for SqliteStore {
                     });
                 }
             }
-            let mut doc = parse_json(&text, "scene")?;
+            let doc = parse_json(&text, "scene")?;
             let old = Scene::from_value(&doc).map_err(|e| {
                 StoreError::Backend(format!("stored scene of {id} v{version} is invalid: {e}"))
             })?;
-            json_patch::patch(&mut doc, &patch.0).map_err(|e| StoreError::Patch {
-                operation: e.operation,
-                message: format!("{} at {:?}", e.kind, e.path.as_str()),
-            })?;
-            let new = Scene::from_value(&doc).map_err(StoreError::Invalid)?;
-            new.check_costs(Some(&old)).map_err(StoreError::Invalid)?;
-            let text = serde_json::to_string(&doc).map_err(backend)?;
-            if text.len() > MAX_SCENE_BYTES {
-                return Err(StoreError::TooLarge {
-                    bytes: text.len(),
-                    limit: MAX_SCENE_BYTES,
-                });
-            }
+            let (text, new) = patch_scene(doc, &old, &patch)?;
             let next = version + 1;
             let t = now();
             let patch_text = serde_json::to_string(&patch).map_err(backend)?;

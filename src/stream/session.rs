@@ -428,8 +428,9 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
     let _ = writer.await;
 }
 
-/// Validates a view message.
-fn view_of(
+/// Validates a view message: its position within the world, its rings and format; returns the
+/// tiles it selects and the format. Public for the fuzz target `stream_message`.
+pub fn view_of(
     x: f64,
     z: f64,
     rings: &[u32],

@@ -10,6 +10,8 @@
 //! - the scene `scene` (or the first of `scenes`; without scenes, every root node), its nodes and
 //!   their children recursively (at most [`MAX_NODE_DEPTH`] deep and [`MAX_NODE_VISITS`] visits),
 //!   each with its local `matrix` or `translation`/`rotation`/`scale`, composed parent first;
+//!   at most [`MAX_PRIMITIVE_VISITS`] primitives and [`MAX_ACCESSOR_ELEMENTS`] accessor elements
+//!   are read in one traversal;
 //! - of each mesh primitive of mode 4 (triangles), 5 (strip) or 6 (fan): `POSITION` (`FLOAT`
 //!   `VEC3`, no sparse storage) and the optional `indices` (`UNSIGNED_BYTE`, `_SHORT` or `_INT`),
 //!   through buffer views of buffer 0, which must be the GLB's own BIN chunk (no external or
@@ -32,6 +34,15 @@ pub const MAX_GLB_BYTES: usize = 512 * 1024;
 pub const MAX_NODE_DEPTH: usize = 32;
 /// Most node visits in one scene traversal (a node reached twice counts twice).
 pub const MAX_NODE_VISITS: usize = 4096;
+/// Most mesh primitives visited in one scene traversal, of any mode (a primitive reached through
+/// two nodes counts twice). Without it, a 512 KiB file of thousands of primitives under
+/// thousands of node visits made the reader loop for minutes while producing no triangle.
+pub const MAX_PRIMITIVE_VISITS: usize = 65_536;
+/// Most accessor elements (positions and indices) read in one scene traversal, counted per
+/// read: an accessor read again through another node or primitive counts again. It bounds the
+/// work of primitives that read large accessors yet yield few triangles (an index count below 3,
+/// points reused), which the triangle budget alone does not.
+pub const MAX_ACCESSOR_ELEMENTS: usize = 524_288;
 
 use crate::glb::{CHUNK_BIN, CHUNK_JSON, GLB_MAGIC};
 
@@ -153,10 +164,12 @@ fn node_matrix(node: &Value, at: &str) -> Result<Mat4, GlbError> {
     Ok(m)
 }
 
-/// The parsed container: the JSON document and the BIN chunk.
+/// The parsed container: the JSON document and the BIN chunk, and the accessor elements read
+/// from it so far (checked against [`MAX_ACCESSOR_ELEMENTS`]).
 struct Glb<'a> {
     doc: Value,
     bin: &'a [u8],
+    elements_read: std::cell::Cell<usize>,
 }
 
 fn u32_at(b: &[u8], at: usize) -> Option<u32> {
@@ -209,7 +222,11 @@ fn parse_container(bytes: &[u8]) -> Result<Glb<'_>, GlbError> {
     if !doc.is_object() {
         return Err(bad("the glb's JSON must be an object"));
     }
-    Ok(Glb { doc, bin })
+    Ok(Glb {
+        doc,
+        bin,
+        elements_read: std::cell::Cell::new(0),
+    })
 }
 
 fn index_of(v: &Value, key: &str, at: &str) -> Result<Option<usize>, GlbError> {
@@ -261,6 +278,13 @@ impl Glb<'_> {
             acc.get("count")
                 .and_then(Value::as_u64)
                 .ok_or_else(|| bad(format!("{at}.count must be a number")))? as usize;
+        let read = self.elements_read.get().saturating_add(count);
+        if read > MAX_ACCESSOR_ELEMENTS {
+            return Err(bad(format!(
+                "{at}: reading its {count} elements would read more than {MAX_ACCESSOR_ELEMENTS} accessor elements in all"
+            )));
+        }
+        self.elements_read.set(read);
         let comp = match ct {
             5121 => 1,
             5123 => 2,
@@ -420,13 +444,23 @@ pub fn glb_triangles(
         .rev()
         .map(|n| (n, *transform.unwrap_or(&IDENTITY), 0))
         .collect();
+    let too_many = || {
+        bad(format!(
+            "the node hierarchy is deeper than {MAX_NODE_DEPTH} or has more than {MAX_NODE_VISITS} node visits (a cycle?)"
+        ))
+    };
     let mut visits = 0;
+    let mut primitive_visits = 0usize;
+    // Every node on the stack will be visited, so a stack longer than the visits left is refused
+    // before it grows: a node listing itself as its child thousands of times would otherwise
+    // push millions of entries before the depth limit ends the walk.
+    if stack.len() > MAX_NODE_VISITS {
+        return Err(too_many());
+    }
     while let Some((n, parent, depth)) = stack.pop() {
         visits += 1;
         if visits > MAX_NODE_VISITS || depth >= MAX_NODE_DEPTH {
-            return Err(bad(format!(
-                "the node hierarchy is deeper than {MAX_NODE_DEPTH} or has more than {MAX_NODE_VISITS} node visits (a cycle?)"
-            )));
+            return Err(too_many());
         }
         let at = format!("nodes[{n}]");
         let node = glb.item("nodes", n)?;
@@ -436,6 +470,9 @@ pub fn glb_triangles(
                 .as_array()
                 .and_then(|a| a.iter().map(|x| x.as_u64().map(|i| i as usize)).collect())
                 .ok_or_else(|| bad(format!("{at}.children must be indices")))?;
+            if visits + stack.len() + kids.len() > MAX_NODE_VISITS {
+                return Err(too_many());
+            }
             stack.extend(kids.into_iter().rev().map(|k| (k, world, depth + 1)));
         }
         let Some(m) = index_of(node, "mesh", &at)? else {
@@ -447,6 +484,12 @@ pub fn glb_triangles(
             .get("primitives")
             .and_then(Value::as_array)
             .ok_or_else(|| bad(format!("meshes[{m}].primitives must be an array")))?;
+        primitive_visits = primitive_visits.saturating_add(prims.len());
+        if primitive_visits > MAX_PRIMITIVE_VISITS {
+            return Err(bad(format!(
+                "the scene visits more than {MAX_PRIMITIVE_VISITS} mesh primitives"
+            )));
+        }
         for (pi, p) in prims.iter().enumerate() {
             let pat = format!("meshes[{m}].primitives[{pi}]");
             let mode = p.get("mode").and_then(Value::as_u64).unwrap_or(4);
