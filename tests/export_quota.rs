@@ -5,7 +5,7 @@
 //! (`--export-world-budget`, `--export-disk-budget`, `--export-max-age`) reach `/v1/info` of the
 //! real binary.
 
-use axum::http::{Method, StatusCode};
+use axum::http::StatusCode;
 use axum::Router;
 use serde_json::{json, Value};
 use std::time::Duration;
@@ -16,38 +16,8 @@ use strata::server::{app, AppState};
 use strata::terrain::{WorldParams, WorldPlan};
 
 mod common;
-use common::oneshot::{send, Reply};
 
-async fn post(app: &Router, uri: &str, token: Option<&str>, body: &Value) -> Reply {
-    let mut headers = vec![("content-type", "application/json".to_string())];
-    if let Some(t) = token {
-        headers.push(("authorization", format!("Bearer {t}")));
-    }
-    send(
-        app,
-        Method::POST,
-        uri,
-        &headers,
-        Some(body.to_string().as_bytes()),
-    )
-    .await
-}
-
-async fn get(app: &Router, uri: &str, token: &str) -> Reply {
-    let headers = [("authorization", format!("Bearer {token}"))];
-    send(app, Method::GET, uri, &headers, None).await
-}
-
-async fn world(app: &Router, seed: u64) -> (String, String) {
-    let v = post(app, "/v1/worlds", None, &json!({ "seed": seed }))
-        .await
-        .status_is(StatusCode::CREATED)
-        .json();
-    (
-        v["id"].as_str().expect("id").into(),
-        v["tokens"]["admin"].as_str().expect("token").into(),
-    )
-}
+use common::oneshot::{get_as as get, post_json as post, private_world as world, Reply};
 
 /// Two binary tiles at LOD 0.
 fn body() -> Value {

@@ -4,7 +4,7 @@
 //! bound exceeds a disk budget is refused with 400 `export_too_large` naming `/region` and the
 //! budget's bytes, before any tile is synthesised.
 
-use axum::http::{Method, StatusCode};
+use axum::http::StatusCode;
 use axum::Router;
 use serde_json::{json, Value};
 use std::time::Duration;
@@ -13,39 +13,8 @@ use strata::server::jobs::JobLimits;
 use strata::server::{app, AppState};
 
 mod common;
-use common::oneshot::{send, Reply};
 
-async fn post(app: &Router, uri: &str, token: Option<&str>, body: &Value) -> Reply {
-    let mut headers = vec![("content-type", "application/json".to_string())];
-    if let Some(t) = token {
-        headers.push(("authorization", format!("Bearer {t}")));
-    }
-    send(
-        app,
-        Method::POST,
-        uri,
-        &headers,
-        Some(body.to_string().as_bytes()),
-    )
-    .await
-}
-
-async fn get(app: &Router, uri: &str, token: &str) -> Reply {
-    let headers = [("authorization", format!("Bearer {token}"))];
-    send(app, Method::GET, uri, &headers, None).await
-}
-
-/// A private world of `seed`: its id and admin token.
-async fn world(app: &Router, seed: u64) -> (String, String) {
-    let v = post(app, "/v1/worlds", None, &json!({ "seed": seed }))
-        .await
-        .status_is(StatusCode::CREATED)
-        .json();
-    (
-        v["id"].as_str().expect("id").into(),
-        v["tokens"]["admin"].as_str().expect("token").into(),
-    )
-}
+use common::oneshot::{get_as as get, post_json as post, private_world as world};
 
 /// Runs an export to the end: the 202 answer and the archive.
 async fn export(app: &Router, id: &str, token: &str, body: &Value) -> (Value, Vec<u8>) {

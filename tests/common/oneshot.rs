@@ -94,3 +94,42 @@ pub async fn send<H: AsRef<str>>(
         body,
     }
 }
+
+/// `POST uri` with a JSON `body`, as the bearer of `token` if any.
+pub async fn post_json(app: &Router, uri: &str, token: Option<&str>, body: &Value) -> Reply {
+    let mut headers = vec![("content-type", "application/json".to_string())];
+    if let Some(t) = token {
+        headers.push(("authorization", format!("Bearer {t}")));
+    }
+    send(
+        app,
+        Method::POST,
+        uri,
+        &headers,
+        Some(body.to_string().as_bytes()),
+    )
+    .await
+}
+
+/// `GET uri` as the bearer of `token`.
+pub async fn get_as(app: &Router, uri: &str, token: &str) -> Reply {
+    let headers = [("authorization", format!("Bearer {token}"))];
+    send(app, Method::GET, uri, &headers, None).await
+}
+
+/// A new private world of `seed`: its id and admin token.
+pub async fn private_world(app: &Router, seed: u64) -> (String, String) {
+    let v = post_json(
+        app,
+        "/v1/worlds",
+        None,
+        &serde_json::json!({ "seed": seed }),
+    )
+    .await
+    .status_is(StatusCode::CREATED)
+    .json();
+    (
+        v["id"].as_str().expect("id").into(),
+        v["tokens"]["admin"].as_str().expect("token").into(),
+    )
+}
