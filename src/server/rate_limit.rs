@@ -115,7 +115,8 @@ impl RateLimits {
     }
 
     /// Charges one request to `client`'s address and token: 429 `rate_limited` when either has
-    /// used up its rate.
+    /// used up its rate. The address is charged first, so a request its token's limit refuses
+    /// has still used one of its address's allowance.
     pub fn check(&self, client: &Client) -> Result<(), AppError> {
         if self.checks.fetch_add(1, Ordering::Relaxed) % PRUNE_EVERY == PRUNE_EVERY - 1 {
             self.by_addr.retain_recent();
