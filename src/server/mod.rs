@@ -302,18 +302,15 @@ impl AppState {
             .await
     }
 
-    /// Whether tile `key` with `seams` of the world `view` encoded in `format` of `version` is
-    /// in the body cache (so that answering it costs a memory read).
+    /// Whether the tile whose input hash is `hash` ([`view::WorldView::tile_hash`]) encoded in
+    /// `format` of `version` is in the body cache (so that answering it costs a memory read).
     pub fn tile_is_cached(
         &self,
-        view: &view::WorldView,
-        key: TileKey,
-        seams: [bool; 4],
+        hash: [u8; 32],
         format: crate::encode::Format,
         version: crate::encode::TileVersion,
     ) -> bool {
-        self.bodies
-            .contains(&(view.tile_hash(key, seams), version.tag(format)))
+        self.bodies.contains(&(hash, version.tag(format)))
     }
 
     /// Tile `key` with `seams` of the world `view` encoded in `format` of `version`, from the
@@ -328,6 +325,22 @@ impl AppState {
         version: crate::encode::TileVersion,
     ) -> Result<Arc<routes::CachedProduct>, AppError> {
         let hash = view.tile_hash(key, seams);
+        self.tile_product_hashed(view, hash, key, seams, format, version)
+            .await
+    }
+
+    /// [`AppState::tile_product`] of a tile whose input hash the caller has computed
+    /// ([`view::WorldView::tile_hash`] of the same key and seams), so a handler that first asks
+    /// [`AppState::tile_is_cached`] hashes the tile once.
+    pub async fn tile_product_hashed(
+        &self,
+        view: &Arc<view::WorldView>,
+        hash: [u8; 32],
+        key: TileKey,
+        seams: [bool; 4],
+        format: crate::encode::Format,
+        version: crate::encode::TileVersion,
+    ) -> Result<Arc<routes::CachedProduct>, AppError> {
         let body_key = (hash, version.tag(format));
         let (state, view) = (self.clone(), view.clone());
         self.bodies

@@ -197,11 +197,12 @@ pub(super) async fn tile(
     let (key, format) = parse_tile_path(&world.view.plan, &lod, &x, &z_ext)?;
     let seams = parse_seams(query.as_deref())?;
     let version = parse_tile_version(query.as_deref(), format)?;
-    if !st.tile_is_cached(&world.view, key, seams, format, version) {
+    let hash = world.view.tile_hash(key, seams);
+    if !st.tile_is_cached(hash, format, version) {
         st.rate.check(&client)?;
     }
     let product = st
-        .tile_product(&world.view, key, seams, format, version)
+        .tile_product_hashed(&world.view, hash, key, seams, format, version)
         .await?;
     Ok(world.finish(product.respond(&headers)))
 }
