@@ -17,7 +17,9 @@ use strata::terrain::{WorldParams, WorldPlan};
 
 mod common;
 
-use common::oneshot::{get_as as get, post_json as post, private_world as world, Reply};
+use common::oneshot::{
+    get_as as get, post_json as post, private_world as world, wait_job_done as wait_done, Reply,
+};
 
 /// Two binary tiles at LOD 0.
 fn body() -> Value {
@@ -47,22 +49,6 @@ async fn export(app: &Router, id: &str, token: &str) -> Reply {
         &body(),
     )
     .await
-}
-
-async fn wait_done(app: &Router, status_url: &str, token: &str) {
-    let deadline = tokio::time::Instant::now() + Duration::from_secs(300);
-    loop {
-        let v = get(app, status_url, token)
-            .await
-            .status_is(StatusCode::OK)
-            .json();
-        if v["status"] == "done" {
-            return;
-        }
-        assert_ne!(v["status"], "failed", "{v}");
-        assert!(tokio::time::Instant::now() < deadline, "job stuck: {v}");
-        tokio::time::sleep(Duration::from_millis(20)).await;
-    }
 }
 
 fn refused(r: &Reply, budget: &str) {

@@ -7,14 +7,15 @@
 use axum::http::StatusCode;
 use axum::Router;
 use serde_json::{json, Value};
-use std::time::Duration;
 use strata::compute::Compute;
 use strata::server::jobs::JobLimits;
 use strata::server::{app, AppState};
 
 mod common;
 
-use common::oneshot::{get_as as get, post_json as post, private_world as world};
+use common::oneshot::{
+    get_as as get, post_json as post, private_world as world, wait_job_done as wait_done,
+};
 
 /// Runs an export to the end: the 202 answer and the archive.
 async fn export(app: &Router, id: &str, token: &str, body: &Value) -> (Value, Vec<u8>) {
@@ -23,20 +24,7 @@ async fn export(app: &Router, id: &str, token: &str, body: &Value) -> (Value, Ve
         .status_is(StatusCode::ACCEPTED)
         .json();
     let status_url = started["status_url"].as_str().expect("status url");
-    let deadline = tokio::time::Instant::now() + Duration::from_secs(300);
-    loop {
-        let v = get(app, status_url, token)
-            .await
-            .status_is(StatusCode::OK)
-            .json();
-        match v["status"].as_str() {
-            Some("done") => break,
-            Some("failed") => panic!("export failed: {v}"),
-            _ => {}
-        }
-        assert!(tokio::time::Instant::now() < deadline, "job stuck: {v}");
-        tokio::time::sleep(Duration::from_millis(20)).await;
-    }
+    wait_done(app, status_url, token).await;
     let url = started["download_url"].as_str().expect("download url");
     let archive = get(app, url, token)
         .await

@@ -133,3 +133,21 @@ pub async fn private_world(app: &Router, seed: u64) -> (String, String) {
         v["tokens"]["admin"].as_str().expect("token").into(),
     )
 }
+
+/// Polls the export job at `status_url` as the bearer of `token` until it is done (5 minutes
+/// at most); a failed job fails the test.
+pub async fn wait_job_done(app: &Router, status_url: &str, token: &str) {
+    let deadline = tokio::time::Instant::now() + std::time::Duration::from_secs(300);
+    loop {
+        let v = get_as(app, status_url, token)
+            .await
+            .status_is(StatusCode::OK)
+            .json();
+        if v["status"] == "done" {
+            return;
+        }
+        assert_ne!(v["status"], "failed", "{v}");
+        assert!(tokio::time::Instant::now() < deadline, "job stuck: {v}");
+        tokio::time::sleep(std::time::Duration::from_millis(20)).await;
+    }
+}
