@@ -54,7 +54,16 @@ struct EarthParams {
     ocean_depth_m: f32,
     // `earth::EarthPlan::inv_relief_max`.
     inv_relief_max: f32,
-    _pad: u32,
+    // The LOD's lattice split (`earth::lattice`): samples per lattice spacing (0: none), the
+    // layers the nodes hold, and the uploaded nodes' first column, first row and columns.
+    lattice_step: u32,
+    prefix: u32,
+    node_i0: i32,
+    node_k0: i32,
+    nodes_w: u32,
+    _pad0: u32,
+    _pad1: u32,
+    _pad2: u32,
 }
 
 // `earth::NoiseOctave`.
@@ -91,6 +100,10 @@ const WORKGROUP: u32 = 64u;
 @group(0) @binding(3) var<storage, read> relief: array<vec2<f32>>;
 // Output: heights (w × h, row-major).
 @group(0) @binding(4) var<storage, read_write> heights: array<f32>;
+// The lattice split's nodes, two per node: (elevation, amplitude, ridge mix, layer sum) and
+// (gradient x, gradient z, 0, 0), row-major from (node_i0, node_k0); one unread node when the
+// LOD has no split. The host computes them with the CPU reference (`earth::lattice::nodes`).
+@group(0) @binding(5) var<storage, read> nodes: array<vec4<f32>>;
 
 // `noise::corner_hashes`: the lattice hashes of the cell's corners
 // [(ix, iz), (ix + 1, iz), (ix, iz + 1), (ix + 1, iz + 1)].
@@ -301,6 +314,74 @@ fn incise(nd: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(v, rn(nd.y * dsig), rn(nd.z * dsig));
 }
 
+// `rn` of each component.
+fn rn_v4(x: vec4<f32>) -> vec4<f32> {
+    return bitcast<vec4<f32>>(bitcast<vec4<u32>>(x) ^ vec4<u32>(rounding_key));
+}
+
+fn rn_v2(x: vec2<f32>) -> vec2<f32> {
+    return bitcast<vec2<f32>>(bitcast<vec2<u32>>(x) ^ vec2<u32>(rounding_key));
+}
+
+// `lattice::weights`: the uniform Catmull–Rom weights at offset t.
+fn cr_weights(t: f32) -> vec4<f32> {
+    let t2 = rn(t * t);
+    let t3 = rn(t2 * t);
+    return vec4<f32>(
+        rn(0.5 * (rn(rn(2.0 * t2) - t3) - t)),
+        rn(0.5 * (rn(rn(3.0 * t3) - rn(5.0 * t2)) + 2.0)),
+        rn(0.5 * (rn(rn(4.0 * t2) - rn(3.0 * t3)) + t)),
+        rn(0.5 * (t3 - t2)),
+    );
+}
+
+// `lattice::locate`: the node of sample g and its offset from it in [0, 1).
+fn locate(g: i32, step: i32) -> vec2<f32> {
+    var n = g / step;
+    if (g - n * step < 0) {
+        n -= 1;
+    }
+    return vec2<f32>(f32(n), div_rn(f32(g - n * step), f32(step)));
+}
+
+// One node's values: elevation, amplitude, ridge mix, layer sum, gradient x, gradient z.
+struct NodeValues {
+    a: vec4<f32>,
+    b: vec2<f32>,
+}
+
+fn node_values(a: i32, b: i32) -> NodeValues {
+    let i = u32((b - params.node_k0) * i32(params.nodes_w) + (a - params.node_i0)) * 2u;
+    return NodeValues(nodes[i], nodes[i + 1u].xy);
+}
+
+// `lattice::Interpolated::at`: rows first, each sum left to right from its first product.
+fn interpolate_nodes(gx: i32, gz: i32) -> NodeValues {
+    let step = i32(params.lattice_step);
+    let lx = locate(gx, step);
+    let lz = locate(gz, step);
+    let wx = cr_weights(lx.y);
+    let wz = cr_weights(lz.y);
+    let a0 = i32(lx.x) - 1;
+    let b0 = i32(lz.x) - 1;
+    var out = NodeValues(vec4<f32>(0.0), vec2<f32>(0.0));
+    for (var b = 0; b < 4; b++) {
+        var ra = rn_v4(wx[0] * node_values(a0, b0 + b).a);
+        var rb = rn_v2(wx[0] * node_values(a0, b0 + b).b);
+        for (var a = 1; a < 4; a++) {
+            let v = node_values(a0 + a, b0 + b);
+            ra = ra + rn_v4(wx[a] * v.a);
+            rb = rb + rn_v2(wx[a] * v.b);
+        }
+        if (b == 0) {
+            out = NodeValues(rn_v4(wz[0] * ra), rn_v2(wz[0] * rb));
+        } else {
+            out = NodeValues(out.a + rn_v4(wz[b] * ra), out.b + rn_v2(wz[b] * rb));
+        }
+    }
+    return out;
+}
+
 // Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).
 fn invocation(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
     return gid.y * nwg.x * WORKGROUP + gid.x;
@@ -320,14 +401,30 @@ fn earth_heights(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
     let er = relief[idx];
     let erosion = er.x;
     let rough = er.y;
-    let m = macro_fields(x, z);
-    let elev = m.x;
-    let amp = m.y;
-    let ridge = m.z;
+    var elev = 0.0;
+    var amp = 0.0;
+    var ridge = 0.0;
     var h = 0.0;
     var gx = 0.0;
     var gz = 0.0;
-    for (var i = 0u; i < params.layer_count; i++) {
+    var first = 0u;
+    if (params.lattice_step > 0u) {
+        // The lattice split: the nodes' part interpolated, the later layers below.
+        let v = interpolate_nodes(params.gx0 + i32(idx % params.w), params.gz0 + i32(idx / params.w));
+        elev = v.a.x;
+        amp = v.a.y;
+        ridge = v.a.z;
+        h = v.a.w;
+        gx = v.b.x;
+        gz = v.b.y;
+        first = params.prefix;
+    } else {
+        let m = macro_fields(x, z);
+        elev = m.x;
+        amp = m.y;
+        ridge = m.z;
+    }
+    for (var i = first; i < params.layer_count; i++) {
         let layer = layers[i];
         let o = layer.octave;
         if (layer.kind == LAYER_RELIEF) {

@@ -159,6 +159,11 @@ fn gpu_earth_field_matches_cpu() {
         key(12, -1, -1),
         key(12, 2, -3),
     ];
+    // LODs 0 and 3 run the lattice split (`earth::lattice`): the host uploads the nodes and
+    // the kernel interpolates them before the later layers.
+    let lods = &plan.earth.as_ref().expect("earth").lods;
+    assert!(lods[0].lattice.is_some() && lods[3].lattice.is_some());
+    assert!(lods[6].lattice.is_none());
     let (mut max_dh, mut differing, mut samples) = (0.0f32, 0, 0);
     let mut mountain_relief = 0.0f32;
     for k in cases {

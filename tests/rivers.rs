@@ -472,7 +472,7 @@ fn a_floodplain_valley_is_flat_to_its_edge_then_climbs_walls_and_leaves_the_land
 
 /// Two shortcuts of the tile path against the full river job, over tiles that hold river lines
 /// at LOD 0, 3 and 6 in every named area: the carve with each bin pruned to the pieces that can
-/// reach its highest sample (`RiverJob::prune_bins`) gives every height of the full job, and the
+/// reach its highest sample (`RiverJob::pruned`, `RiverJob::carve_pruned`) gives every height of the full job, and the
 /// water job (`water_job_for`: wet channels only) gives every sample's water surface and kind,
 /// bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
 #[test]
@@ -508,18 +508,17 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
                 };
                 let full = job_for(earth, rp, spacing, gx0, gz0, n, n);
                 let raised: Vec<f32> = t.heights.iter().map(|h| h + 40.0).collect();
-                let mut pruned = full.clone();
-                pruned.prune_bins(raised.iter().enumerate().map(|(v, h)| {
+                let pruned = full.pruned(raised.iter().enumerate().map(|(v, h)| {
                     let (x, z) = at(v);
                     (x, z, *h)
                 }));
-                left_out += full.bin_pieces.len() - pruned.bin_pieces.len();
+                left_out += full.bin_pieces.len() - pruned.entries.len();
                 let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
                 let sea = p.params.sea_level_m;
                 for (v, h) in raised.iter().enumerate() {
                     let (x, z) = at(v);
                     assert_eq!(
-                        pruned.carve_one(x, z, *h).to_bits(),
+                        full.carve_pruned(&pruned, x, z, *h).to_bits(),
                         full.carve_one(x, z, *h).to_bits(),
                         "{name} {key:?} vertex {v}: the pruned carve differs"
                     );

@@ -317,7 +317,12 @@ fn earth_structs_match_the_wgsl_layout() {
             seafloor_relief_m,
             interior_height_m,
             ocean_depth_m,
-            inv_relief_max
+            inv_relief_max,
+            lattice_step,
+            prefix,
+            node_i0,
+            node_k0,
+            nodes_w
         ]
     );
 }

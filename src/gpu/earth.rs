@@ -6,11 +6,14 @@
 //! a Voronoi map on a 4 km lattice with an elevation lapse and a blur) stay on the CPU: the host
 //! computes them, derives each sample's erosion strength and roughness from them exactly as
 //! `earth::field` does, and uploads those two numbers per sample; the returned field's weights
-//! are the CPU's, bit for bit.
+//! are the CPU's, bit for bit. At LODs with a lattice split (`earth::lattice`) the host also
+//! computes the nodes (`lattice::nodes`, one per 16² LOD-0 samples) and uploads them; the kernel
+//! interpolates them and evaluates the layers after the split's prefix.
 //!
 //! Where the world has rivers and the LOD carves them (`rivers::MAX_CARVE_LOD`), the second
 //! pipeline, `shaders/rivers.wgsl`, carves the heights in place in the same command encoder,
-//! before they are copied out: the twin of `earth::carve` (`rivers::RiverJob::carve_one`), one
+//! before they are copied out: the twin of `earth::carve` (`rivers::RiverJob::carve_one`, which the CPU reaches through
+//! `RiverJob::pruned` bins), one
 //! invocation per sample. The river job (the drainage network, its pieces and their bins) is
 //! built on the CPU by `rivers::job_for`, as `earth::field` builds it, and uploaded: the pieces as
 //! `rivers::Piece` itself, the bins in their CSR form, and the bin grid in
@@ -32,7 +35,7 @@ use super::layout::{GpuCarveParams, GpuEarthLayer, GpuEarthOctave, GpuEarthParam
 use super::scopes::Scopes;
 use super::tile::{COMMON_WGSL, MAX_BUFFER_BYTES};
 use crate::terrain::earth::rivers::{self, Piece, RiverJob};
-use crate::terrain::earth::{climate, kernel, EarthPlan};
+use crate::terrain::earth::{climate, kernel, lattice, EarthPlan};
 use crate::terrain::tile::{Field, FieldJob};
 use crate::terrain::WorldPlan;
 use anyhow::{anyhow, bail, Context};
@@ -165,6 +168,22 @@ pub fn earth_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuEarthP
     }
     let m = &earth.macro_plan;
     let count = |v: &Vec<_>| v.len() as u32;
+    let (lattice_step, prefix, node_i0, node_k0, nodes_w) = match el.lattice {
+        Some(lat) => {
+            let (i0, k0, nw, _) = lattice::node_window(job, lat.step);
+            let int = |v: i64| {
+                i32::try_from(v).map_err(|_| anyhow!("node index {v} does not fit in i32"))
+            };
+            (
+                lat.step as u32,
+                lat.prefix as u32,
+                int(i0)?,
+                int(k0)?,
+                nw as u32,
+            )
+        }
+        None => (0, 0, 0, 0, 0),
+    };
     Ok(GpuEarthParams {
         gx0: gx0 as i32,
         gz0: gz0 as i32,
@@ -189,7 +208,14 @@ pub fn earth_params(plan: &WorldPlan, job: FieldJob) -> anyhow::Result<GpuEarthP
         interior_height_m: m.interior_height_m,
         ocean_depth_m: m.ocean_depth_m,
         inv_relief_max: earth.inv_relief_max,
-        _pad: 0,
+        lattice_step,
+        prefix,
+        node_i0,
+        node_k0,
+        nodes_w,
+        _pad0: 0,
+        _pad1: 0,
+        _pad2: 0,
     })
 }
 
@@ -266,23 +292,6 @@ fn macro_octaves(earth: &EarthPlan) -> Vec<GpuEarthOctave> {
         .collect()
 }
 
-/// Per sample `(erosion, roughness)` from the biome weights, summed over the biomes in order
-/// from 0.0 as `earth::field` does.
-fn sample_relief(earth: &EarthPlan, weights: &[f32], n: usize) -> Vec<[f32; 2]> {
-    let k = earth.climate.count;
-    (0..n)
-        .map(|v| {
-            let wv = &weights[v * k..(v + 1) * k];
-            let (mut e, mut r) = (0.0f32, 0.0f32);
-            for ((w, eb), rb) in wv.iter().zip(&earth.erosion).zip(&earth.roughness) {
-                e += w * eb;
-                r += w * rb;
-            }
-            [e, r]
-        })
-        .collect()
-}
-
 /// The compiled pipelines of `earth.wgsl` and `rivers.wgsl`, for one device.
 #[derive(Debug)]
 pub struct EarthKernels {
@@ -300,7 +309,8 @@ impl EarthKernels {
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
         let scopes = Scopes::push(device);
-        // Both programs bind a uniform, three read-only arrays and the heights.
+        // Both programs bind a uniform, three read-only arrays and the heights; the earth
+        // program also the lattice split's nodes.
         let bindings = [
             Binding::Uniform,
             Binding::Read,
@@ -308,11 +318,19 @@ impl EarthKernels {
             Binding::Read,
             Binding::ReadWrite,
         ];
+        let earth_bindings = [
+            Binding::Uniform,
+            Binding::Read,
+            Binding::Read,
+            Binding::Read,
+            Binding::ReadWrite,
+            Binding::Read,
+        ];
         let program = Program::new(
             device,
             "strata earth.wgsl",
             &earth_shader_source(),
-            &bindings,
+            &earth_bindings,
         );
         let carve = Program::new(
             device,
@@ -355,7 +373,16 @@ impl EarthKernels {
         let spacing = plan.lods[job.lod as usize].spacing_m;
         let n = job.w * job.h;
         let weights = climate::weights(earth, spacing, job);
-        let relief = sample_relief(earth, &weights, n);
+        let relief: Vec<[f32; 2]> = lattice::relief_of(earth, &weights)
+            .into_iter()
+            .map(|(e, r)| [e, r])
+            .collect();
+        // The nodes of the LOD's lattice split, computed here as the climate weights are (one
+        // node per 16² samples at LOD 0), or one unread node.
+        let nodes = match earth.lods[job.lod as usize].lattice {
+            Some(lat) => lattice::nodes(earth, job.lod as usize, spacing, lat, job).values,
+            None => vec![[0.0f32; lattice::NODE_FIELDS]],
+        };
         let octaves = macro_octaves(earth);
         let mut layers: Vec<GpuEarthLayer> = earth.lods[job.lod as usize]
             .layers
@@ -396,6 +423,7 @@ impl EarthKernels {
             storage_usage,
         );
         let layer_buf = init("earth layers", bytemuck::cast_slice(&layers), storage_usage);
+        let node_buf = init("earth nodes", bytemuck::cast_slice(&nodes), storage_usage);
         let relief_buf = init("earth relief", bytemuck::cast_slice(&relief), storage_usage);
         let bytes = n as u64 * 4;
         let heights = storage(device, "earth heights", bytes, wgpu::BufferUsages::COPY_SRC);
@@ -439,7 +467,14 @@ impl EarthKernels {
             device,
             &self.layout,
             "strata earth job",
-            &[&params_buf, &octave_buf, &layer_buf, &relief_buf, &heights],
+            &[
+                &params_buf,
+                &octave_buf,
+                &layer_buf,
+                &relief_buf,
+                &heights,
+                &node_buf,
+            ],
         );
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("strata earth field"),

@@ -294,8 +294,23 @@ pub struct GpuEarthParams {
     pub ocean_depth_m: f32,
     /// `EarthPlan::inv_relief_max`.
     pub inv_relief_max: f32,
+    /// Samples per lattice spacing of the LOD's split (`earth::lattice::Lattice::step`), or 0
+    /// when every layer is evaluated at every sample.
+    pub lattice_step: u32,
+    /// Leading layers whose sum the nodes hold (`Lattice::prefix`).
+    pub prefix: u32,
+    /// First node column of the uploaded nodes (world lattice index).
+    pub node_i0: i32,
+    /// First node row of the uploaded nodes.
+    pub node_k0: i32,
+    /// Node columns of the uploaded nodes.
+    pub nodes_w: u32,
     /// Padding to a multiple of 16 bytes.
-    pub _pad: u32,
+    pub _pad0: u32,
+    /// Padding.
+    pub _pad1: u32,
+    /// Padding.
+    pub _pad2: u32,
 }
 
 /// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 48 bytes): the rectangle of the heights

@@ -99,19 +99,45 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
     let mut nodes = vec![0.0f32; nw * nh * k];
     blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut nodes);
     let mut out = vec![0.0f32; job.w * job.h * k];
+    // Each column's node and offset, computed once for all rows.
+    let cols: Vec<(usize, f32)> = (0..job.w)
+        .map(|i| {
+            let xf = node(job.gx0 + i as i64);
+            let ni = xf.floor();
+            ((ni as i64 - i0) as usize, (xf - ni) as f32)
+        })
+        .collect();
+    // A node cell whose four corners hold the same weights gives every sample in it those
+    // weights: the lerps below add `(a − a) · t = +0` to `a` (never −0: blurred weights are sums
+    // of non-negative products), so copying them is the same bits, and most tiles lie in one.
+    let node_at = |n: usize| &nodes[n * k..(n + 1) * k];
+    let uniform: Vec<bool> = (0..nw * nh)
+        .map(|n| {
+            let (ri, rj) = (n % nw, n / nw);
+            ri + 1 < nw
+                && rj + 1 < nh
+                && [n + 1, n + nw, n + nw + 1].iter().all(|&m| {
+                    node_at(n).iter().zip(node_at(m)).all(|(a, b)| {
+                        a.to_bits() == b.to_bits() && a.to_bits() != (-0.0f32).to_bits()
+                    })
+                })
+        })
+        .collect();
     for j in 0..job.h {
         let zf = node(job.gz0 + j as i64);
         let nj = zf.floor();
         let tz = (zf - nj) as f32;
         let rj = (nj as i64 - j0) as usize;
-        for i in 0..job.w {
-            let xf = node(job.gx0 + i as i64);
-            let ni = xf.floor();
-            let tx = (xf - ni) as f32;
-            let ri = (ni as i64 - i0) as usize;
+        for (i, &(ri, tx)) in cols.iter().enumerate() {
             let at = |di: usize, dj: usize| ((rj + dj) * nw + ri + di) * k;
             let (a, b, c, d) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
             let v = (j * job.w + i) * k;
+            if uniform[rj * nw + ri] {
+                for bi in 0..k {
+                    out[v + bi] = nodes[a + bi].clamp(0.0, 1.0);
+                }
+                continue;
+            }
             for bi in 0..k {
                 let top = nodes[a + bi] + (nodes[b + bi] - nodes[a + bi]) * tx;
                 let bottom = nodes[c + bi] + (nodes[d + bi] - nodes[c + bi]) * tx;

@@ -31,7 +31,7 @@ use super::super::fractal::{gaussian_fast, inv_sqrt, lattice_index};
 use super::super::hash::mix32;
 use super::super::noise::{corner_hashes, fade};
 use super::trig::sincos_turns;
-use super::{EarthPlan, LayerKind, MacroPlan, NoiseOctave};
+use super::{EarthPlan, Layer, LayerKind, MacroPlan, NoiseOctave};
 
 /// Samples evaluated together.
 pub const LANES: usize = 64;
@@ -306,8 +306,140 @@ fn incise(v: &mut L, dx: &mut L, dz: &mut L) {
     }
 }
 
-/// Heights (metres) of a batch at one LOD: `erosion[l]` and `rough[l]` are the climate's
-/// erosion strength and roughness at each sample.
+/// The state of a batch part-way through the height sum: the macro fields and the layers summed
+/// so far with their gradient. [`heights`] is [`Partial::start`], [`Partial::add_layers`] over
+/// the LOD's layers and [`Partial::finish`]; the lattice split ([`super::lattice`]) builds the
+/// first part at the nodes of a world lattice and interpolates it instead.
+#[derive(Clone, Debug)]
+pub(crate) struct Partial {
+    /// Continent elevation `e(c)`, metres.
+    pub elev: L,
+    /// Relief amplitude `A`, metres.
+    pub amp: L,
+    /// Ridge mix `ρ`.
+    pub ridge: L,
+    /// Layers summed so far, metres.
+    pub h: L,
+    /// Their gradient along x (rise over run).
+    pub gx: L,
+    /// Their gradient along z.
+    pub gz: L,
+}
+
+impl Partial {
+    /// All zeros.
+    pub(crate) fn zero() -> Self {
+        Self {
+            elev: [0.0; LANES],
+            amp: [0.0; LANES],
+            ridge: [0.0; LANES],
+            h: [0.0; LANES],
+            gx: [0.0; LANES],
+            gz: [0.0; LANES],
+        }
+    }
+
+    /// The macro fields of a batch and no layers yet.
+    #[inline(always)]
+    pub(crate) fn start(plan: &EarthPlan, xs: &L, zs: &L) -> Self {
+        let mut p = Self::zero();
+        macro_fields(
+            &plan.macro_plan,
+            xs,
+            zs,
+            &mut p.elev,
+            &mut p.amp,
+            &mut p.ridge,
+        );
+        p
+    }
+
+    /// Adds `layers` in order: `erosion[l]` and `rough[l]` are the climate's erosion strength
+    /// and roughness at each sample.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn add_layers(
+        &mut self,
+        plan: &EarthPlan,
+        layers: &[Layer],
+        xs: &L,
+        zs: &L,
+        erosion: &L,
+        rough: &L,
+    ) {
+        let (amp, ridge) = (&self.amp, &self.ridge);
+        let (h, gx, gz) = (&mut self.h, &mut self.gx, &mut self.gz);
+        let mut qx = [0.0; LANES];
+        let mut qz = [0.0; LANES];
+        let mut n = [0.0; LANES];
+        let mut dx = [0.0; LANES];
+        let mut dz = [0.0; LANES];
+        for layer in layers {
+            let o = &layer.octave;
+            match layer.kind {
+                LayerKind::Relief { fine, ridged } => {
+                    octave_coords(o, xs, zs, &mut qx, &mut qz);
+                    gradient_d(&qx, &qz, o.seed, &mut n, &mut dx, &mut dz);
+                    for l in 0..LANES {
+                        // Lattice derivative → world: d/dp = freq · Rᵀ · d/dq.
+                        let wdx = (o.cos * dx[l] + o.sin * dz[l]) * o.freq;
+                        let wdz = (o.cos * dz[l] - o.sin * dx[l]) * o.freq;
+                        // Ridged: t = 1 − |n|_ε with a smooth absolute value, so crests are
+                        // rounded over about ε of the octave's wavelength instead of one-sample
+                        // creases.
+                        let an = (n[l] * n[l] + RIDGE_EPS2).sqrt();
+                        let t = (1.0 - an).max(0.0);
+                        let dan = n[l] / an;
+                        let r = if ridged { ridge[l] } else { 0.0 };
+                        // (1 − ρ)·n + ρ·2(t² − 0.4), and its derivative.
+                        let sig = (1.0 - r) * n[l] + r * 2.0 * (t * t - 0.4);
+                        let dsig = (1.0 - r) - r * 4.0 * t * dan;
+                        let damp = 1.0 / (1.0 + DAMPING * (gx[l] * gx[l] + gz[l] * gz[l]));
+                        let rough_l = if fine { rough[l] } else { 1.0 };
+                        let a = amp[l] * layer.amp * damp * rough_l;
+                        h[l] += a * sig;
+                        gx[l] += a * dsig * wdx;
+                        gz[l] += a * dsig * wdz;
+                    }
+                }
+                LayerKind::Gully { incised } => {
+                    gullies(o, xs, zs, gx, gz, &mut n, &mut dx, &mut dz);
+                    if incised {
+                        incise(&mut n, &mut dx, &mut dz);
+                    }
+                    for l in 0..LANES {
+                        // The slope relative to the local relief: plains get valleys on their
+                        // gentle slopes as mountains do on their steep ones.
+                        let slope = (gx[l] * gx[l] + gz[l] * gz[l]).sqrt();
+                        let fadein =
+                            smoothstep(0.0, GULLY_SLOPE * amp[l] * plan.inv_relief_max, slope);
+                        let a = amp[l] * layer.amp * erosion[l] * fadein;
+                        h[l] += a * n[l];
+                        gx[l] += a * dx[l];
+                        gz[l] += a * dz[l];
+                    }
+                }
+            }
+        }
+    }
+
+    /// The heights (metres): the continent elevation plus the layers' sum, whose part below the
+    /// base level is compressed towards the valley floor.
+    #[inline(always)]
+    pub(crate) fn finish(&self, out: &mut L) {
+        for (l, o) in out.iter_mut().enumerate() {
+            // Valley floors: below the base level the relief is compressed towards a floor at
+            // `−VALLEY_FLOOR · A` (`f(r) = r / (1 − r / s)`, C¹ and 1-Lipschitz), as sediment
+            // fills basins; closed hollows keep at most a fraction of their depth.
+            let s = VALLEY_FLOOR * self.amp[l] + 1e-3;
+            let r = self.h[l];
+            let floor = r / (1.0 - r / s);
+            *o = self.elev[l] + if r < 0.0 { floor } else { r };
+        }
+    }
+}
+
+/// Heights (metres) of a batch at one LOD, every layer evaluated at every sample: `erosion[l]`
+/// and `rough[l]` are the climate's erosion strength and roughness at each sample.
 pub(super) fn heights(
     plan: &EarthPlan,
     lod: usize,
@@ -317,72 +449,9 @@ pub(super) fn heights(
     rough: &L,
     out: &mut L,
 ) {
-    let mut elev = [0.0; LANES];
-    let mut amp = [0.0; LANES];
-    let mut ridge = [0.0; LANES];
-    macro_fields(&plan.macro_plan, xs, zs, &mut elev, &mut amp, &mut ridge);
-    let mut h = [0.0f32; LANES];
-    let mut gx = [0.0f32; LANES];
-    let mut gz = [0.0f32; LANES];
-    let mut qx = [0.0; LANES];
-    let mut qz = [0.0; LANES];
-    let mut n = [0.0; LANES];
-    let mut dx = [0.0; LANES];
-    let mut dz = [0.0; LANES];
-    for layer in &plan.lods[lod].layers {
-        let o = &layer.octave;
-        match layer.kind {
-            LayerKind::Relief { fine, ridged } => {
-                octave_coords(o, xs, zs, &mut qx, &mut qz);
-                gradient_d(&qx, &qz, o.seed, &mut n, &mut dx, &mut dz);
-                for l in 0..LANES {
-                    // Lattice derivative → world: d/dp = freq · Rᵀ · d/dq.
-                    let wdx = (o.cos * dx[l] + o.sin * dz[l]) * o.freq;
-                    let wdz = (o.cos * dz[l] - o.sin * dx[l]) * o.freq;
-                    // Ridged: t = 1 − |n|_ε with a smooth absolute value, so crests are rounded
-                    // over about ε of the octave's wavelength instead of one-sample creases.
-                    let an = (n[l] * n[l] + RIDGE_EPS2).sqrt();
-                    let t = (1.0 - an).max(0.0);
-                    let dan = n[l] / an;
-                    let r = if ridged { ridge[l] } else { 0.0 };
-                    // (1 − ρ)·n + ρ·2(t² − 0.4), and its derivative.
-                    let sig = (1.0 - r) * n[l] + r * 2.0 * (t * t - 0.4);
-                    let dsig = (1.0 - r) - r * 4.0 * t * dan;
-                    let damp = 1.0 / (1.0 + DAMPING * (gx[l] * gx[l] + gz[l] * gz[l]));
-                    let rough_l = if fine { rough[l] } else { 1.0 };
-                    let a = amp[l] * layer.amp * damp * rough_l;
-                    h[l] += a * sig;
-                    gx[l] += a * dsig * wdx;
-                    gz[l] += a * dsig * wdz;
-                }
-            }
-            LayerKind::Gully { incised } => {
-                gullies(o, xs, zs, &gx, &gz, &mut n, &mut dx, &mut dz);
-                if incised {
-                    incise(&mut n, &mut dx, &mut dz);
-                }
-                for l in 0..LANES {
-                    // The slope relative to the local relief: plains get valleys on their
-                    // gentle slopes as mountains do on their steep ones.
-                    let slope = (gx[l] * gx[l] + gz[l] * gz[l]).sqrt();
-                    let fadein = smoothstep(0.0, GULLY_SLOPE * amp[l] * plan.inv_relief_max, slope);
-                    let a = amp[l] * layer.amp * erosion[l] * fadein;
-                    h[l] += a * n[l];
-                    gx[l] += a * dx[l];
-                    gz[l] += a * dz[l];
-                }
-            }
-        }
-    }
-    for l in 0..LANES {
-        // Valley floors: below the base level the relief is compressed towards a floor at
-        // `−VALLEY_FLOOR · A` (`f(r) = r / (1 − r / s)`, C¹ and 1-Lipschitz), as sediment fills
-        // basins; closed hollows keep at most a fraction of their depth.
-        let s = VALLEY_FLOOR * amp[l] + 1e-3;
-        let r = h[l];
-        let floor = r / (1.0 - r / s);
-        out[l] = elev[l] + if r < 0.0 { floor } else { r };
-    }
+    let mut p = Partial::start(plan, xs, zs);
+    p.add_layers(plan, &plan.lods[lod].layers, xs, zs, erosion, rough);
+    p.finish(out);
 }
 
 /// Depth of the valley floors below the base level, in units of the local relief.

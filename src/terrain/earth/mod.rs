@@ -31,12 +31,17 @@
 //! [`EarthLod::bound_m`] = `Σ_i (w_i⁰ − w_i^k) · a_i · A_max · S_i`, with `S_i` the layer's largest
 //! value times the largest erosion or roughness factor.
 //!
+//! **Lattice split** ([`lattice`], worlds with `lattice_cells`): at LODs finer than the lattice, the
+//! macro fields and the leading layers of long wavelength are evaluated at the nodes of a world
+//! lattice and interpolated; the later layers at every sample.
+//!
 //! Seams: every value is a function of the vertex's world position (its lattice index times the
 //! spacing, exact in `f32`), so neighbouring tiles share edge vertices bit for bit, as with the
 //! classic generator.
 
 pub mod climate;
 pub(crate) mod kernel;
+pub mod lattice;
 pub mod params;
 pub mod rivers;
 pub mod trig;
@@ -163,6 +168,9 @@ pub struct EarthLod {
     pub layers: Vec<Layer>,
     /// Largest difference of a vertex's height from LOD 0, metres (module docs).
     pub bound_m: f32,
+    /// How the LOD splits its sum between a coarse lattice and the samples ([`lattice`]); `None`
+    /// evaluates every layer at every sample.
+    pub lattice: Option<lattice::Lattice>,
 }
 
 /// Everything the `earth-1` kernels read, built once per world.
@@ -331,9 +339,14 @@ impl EarthPlan {
                         });
                     }
                 }
+                let lattice = e.lattice_cells.and_then(|c| {
+                    let lattice_m = c as f64 * params.cell_m as f64;
+                    lattice::Lattice::for_lod(&layers, spacing, lattice_m)
+                });
                 EarthLod {
                     layers,
                     bound_m: bound as f32,
+                    lattice,
                 }
             })
             .collect();
@@ -440,30 +453,34 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         w,
         h,
     } = job;
-    let k = plan.climate.count;
     let weights = climate::weights(plan, spacing_m, job);
+    let relief = lattice::relief_of(plan, &weights);
     let n = w * h;
     let mut heights = vec![0.0f32; n];
-    let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
-    let (mut ero, mut rough, mut out) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
-    for start in (0..n).step_by(LANES) {
-        let m = (n - start).min(LANES);
-        for l in 0..m {
-            let v = start + l;
-            let (i, j) = ((v % w) as i64, (v / w) as i64);
-            x[l] = (gx0 + i) as f32 * spacing_m;
-            z[l] = (gz0 + j) as f32 * spacing_m;
-            let wv = &weights[v * k..(v + 1) * k];
-            let (mut e, mut r) = (0.0f32, 0.0f32);
-            for ((w, eb), rb) in wv.iter().zip(&plan.erosion).zip(&plan.roughness) {
-                e += w * eb;
-                r += w * rb;
+    if let Some(lat) = plan.lods[lod as usize].lattice {
+        lattice::heights(
+            plan,
+            lod as usize,
+            spacing_m,
+            lat,
+            job,
+            &relief,
+            &mut heights,
+        );
+    } else {
+        let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
+        let (mut ero, mut rough, mut out) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        for start in (0..n).step_by(LANES) {
+            let m = (n - start).min(LANES);
+            for l in 0..m {
+                let v = start + l;
+                x[l] = (gx0 + (v % w) as i64) as f32 * spacing_m;
+                z[l] = (gz0 + (v / w) as i64) as f32 * spacing_m;
+                (ero[l], rough[l]) = relief[v];
             }
-            ero[l] = e;
-            rough[l] = r;
+            kernel::heights(plan, lod as usize, &x, &z, &ero, &rough, &mut out);
+            heights[start..start + m].copy_from_slice(&out[..m]);
         }
-        kernel::heights(plan, lod as usize, &x, &z, &ero, &rough, &mut out);
-        heights[start..start + m].copy_from_slice(&out[..m]);
     }
     if let Some(rp) = plan
         .rivers
@@ -492,14 +509,13 @@ pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut
         )
     };
     // Only the pieces that can reach each bin at its highest sample (the same result, faster).
-    let mut rj = rj.clone();
-    rj.prune_bins(heights.iter().enumerate().map(|(v, h)| {
+    let pruned = rj.pruned(heights.iter().enumerate().map(|(v, h)| {
         let (x, z) = at(v);
         (x, z, *h)
     }));
     for (v, h) in heights.iter_mut().enumerate() {
         let (x, z) = at(v);
-        *h = rj.carve_one(x, z, *h);
+        *h = rj.carve_pruned(&pruned, x, z, *h);
     }
 }
 

@@ -61,6 +61,12 @@ pub struct EarthParams {
         skip_serializing_if = "EarthParams::is_first_gullies"
     )]
     pub gullies: u32,
+    /// Spacing of the world lattice on which the large-scale part of the height is evaluated and
+    /// interpolated at finer LODs ([`super::lattice`]), in LOD-0 vertex spacings (`cell_m`): a
+    /// power of two in [2, 256]. Absent in worlds stored before it existed, which evaluate every
+    /// layer at every vertex and keep their bytes; new worlds: 16 (16 m at the default 1 m cell).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lattice_cells: Option<u32>,
     /// Latitude of the origin as a distance from the pole, metres: the Voronoi map of
     /// Choroś & Topolski is read at `z + latitude_offset_m`, so the origin sits this far towards
     /// the equator.
@@ -172,6 +178,7 @@ impl Default for EarthParams {
             gully_scale_m: 8000.0,
             gully_octaves: 6,
             gullies: 2,
+            lattice_cells: Some(16),
             latitude_offset_m: 1_024_000.0,
             lapse_m: 10_000.0,
             rivers: Some(RiverParams::default()),
@@ -313,6 +320,13 @@ impl EarthParams {
             "lapse_m",
             &format!("{m} [100, 1e6]"),
         )?;
+        if let Some(c) = self.lattice_cells {
+            check(
+                (2..=256).contains(&c) && c.is_power_of_two(),
+                "lattice_cells",
+                "must be a power of two in [2, 256]",
+            )?;
+        }
         if let Some(r) = &self.rivers {
             r.validate(cell_m)?;
         }

@@ -289,7 +289,8 @@ impl Network<'_> {
         let bins_w = (((x1 - x0) / bin_m).floor() as usize) + 1;
         let bins_h = (((z1 - z0) / bin_m).floor() as usize) + 1;
         let half_diag = bin_m * std::f32::consts::FRAC_1_SQRT_2;
-        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); bins_w * bins_h];
+        // (bin, piece) pairs in piece order, then sorted by bin with a stable counting sort.
+        let mut pairs: Vec<(u32, u32)> = Vec::new();
         for (pi, p) in pieces.iter().enumerate() {
             let reach = reach_of(p);
             let bx0 = ((p.ax.min(p.bx) - reach - x0) / bin_m).floor();
@@ -304,18 +305,24 @@ impl Network<'_> {
                     let cx = x0 + (bx as f32 + 0.5) * bin_m;
                     let cz = z0 + (bz as f32 + 0.5) * bin_m;
                     if point_distance(p, cx, cz) < reach + half_diag {
-                        lists[bz * bins_w + bx].push(pi as u32);
+                        pairs.push(((bz * bins_w + bx) as u32, pi as u32));
                     }
                 }
             }
         }
-        let mut bin_start = Vec::with_capacity(lists.len() + 1);
-        let mut bin_pieces = Vec::new();
-        for l in &lists {
-            bin_start.push(bin_pieces.len() as u32);
-            bin_pieces.extend_from_slice(l);
+        let mut bin_start = vec![0u32; bins_w * bins_h + 1];
+        for &(b, _) in &pairs {
+            bin_start[b as usize + 1] += 1;
         }
-        bin_start.push(bin_pieces.len() as u32);
+        for b in 0..bins_w * bins_h {
+            bin_start[b + 1] += bin_start[b];
+        }
+        let mut fill = bin_start.clone();
+        let mut bin_pieces = vec![0u32; pairs.len()];
+        for &(b, pi) in &pairs {
+            bin_pieces[fill[b as usize] as usize] = pi;
+            fill[b as usize] += 1;
+        }
         // Lake levels of the nodes around the rectangle (a vertex reads the four around it).
         let li0 = ((x0 / s) - 0.5).floor() as i64 - 1;
         let li1 = ((x1 / s) - 0.5).floor() as i64 + 2;
@@ -376,6 +383,12 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
+    profile_at_foot(p, t, d2, h)
+}
+
+/// [`profile`] given the sample's foot on the piece ([`foot`]).
+#[inline(always)]
+fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
         return (h, None);
     }
@@ -399,6 +412,16 @@ pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
         }
     }
     (c, water)
+}
+
+/// The pieces of each bin of a [`RiverJob`] that can change its samples, each with the squared
+/// distance beyond which it changes none of them ([`RiverJob::pruned`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PrunedBins {
+    /// `bins + 1` offsets into `entries` (CSR).
+    pub start: Vec<u32>,
+    /// Piece index and squared radius, m², of each bin's pieces, in piece order.
+    pub entries: Vec<(u32, f32)>,
 }
 
 impl RiverJob {
@@ -454,14 +477,15 @@ impl RiverJob {
         best
     }
 
-    /// Leaves out of each bin the pieces that cannot change its samples, given the samples'
-    /// heights `(x, z, h)`: a piece reaches no farther than its valley widened for the bin's
-    /// highest sample (`profile`'s `V'`, with a margin for rounding) or its channel. The carve
-    /// of every sample is unchanged, bit for bit: the pieces left out would have returned it
-    /// unchanged, and the lowest of the rest does not depend on their order. In mountains a
-    /// bin's highest sample is far below the tile's, so this keeps a few pieces of the many
-    /// within reach.
-    pub fn prune_bins(&mut self, samples: impl Iterator<Item = (f32, f32, f32)>) {
+    /// The pieces of each bin that can change its samples, given the samples' heights
+    /// `(x, z, h)`: a piece reaches no farther than its valley widened for the bin's highest
+    /// sample (`profile`'s `V'`, with a margin for rounding) or its channel, and that distance
+    /// is kept with it. [`RiverJob::carve_pruned`] then gives every sample the carve of
+    /// [`RiverJob::carve_one`], bit for bit: a piece left out, or farther from a sample than its
+    /// radius, would have returned the height unchanged, and the lowest of the rest does not
+    /// depend on their order. In mountains a bin's highest sample is far below the tile's, so
+    /// this keeps a few pieces of the many within reach.
+    pub fn pruned(&self, samples: impl Iterator<Item = (f32, f32, f32)>) -> PrunedBins {
         let bins = self.bin_start.len().saturating_sub(1);
         let mut h_max = vec![f32::NEG_INFINITY; bins];
         for (x, z, h) in samples {
@@ -469,19 +493,18 @@ impl RiverJob {
                 h_max[b] = h_max[b].max(h);
             }
         }
-        let mut bin_pieces = Vec::with_capacity(self.bin_pieces.len());
-        let mut start = 0usize;
+        let mut start = Vec::with_capacity(bins + 1);
+        let mut entries = Vec::new();
         for (b, &top) in h_max.iter().enumerate() {
+            start.push(entries.len() as u32);
+            if top == f32::NEG_INFINITY {
+                continue;
+            }
             let (bx, bz) = ((b % self.bins_w) as f32, (b / self.bins_w) as f32);
             let rx0 = self.x0 + bx * self.bin_m;
             let rz0 = self.z0 + bz * self.bin_m;
             let (rx1, rz1) = (rx0 + self.bin_m, rz0 + self.bin_m);
-            let range = start..self.bin_start[b + 1] as usize;
-            start = range.end;
-            self.bin_start[b] = bin_pieces.len() as u32;
-            if top == f32::NEG_INFINITY {
-                continue;
-            }
+            let range = self.bin_start[b] as usize..self.bin_start[b + 1] as usize;
             for &i in &self.bin_pieces[range] {
                 let p = &self.pieces[i as usize];
                 let w_min = p.wa.min(p.wb);
@@ -491,15 +514,32 @@ impl RiverJob {
                 } else {
                     p.half_width
                 };
-                if rect_distance(p, rx0, rz0, rx1, rz1) < v * 1.001 + 1.0 {
-                    bin_pieces.push(i);
+                let r = v.max(p.half_width) * 1.001 + 1.0;
+                if rect_distance(p, rx0, rz0, rx1, rz1) < r {
+                    entries.push((i, r * r));
                 }
             }
         }
-        if bins > 0 {
-            self.bin_start[bins] = bin_pieces.len() as u32;
+        start.push(entries.len() as u32);
+        PrunedBins { start, entries }
+    }
+
+    /// [`RiverJob::carve_one`] through the pruned bins of [`RiverJob::pruned`] (the same bits
+    /// for every sample whose height is at most its bin's highest).
+    pub fn carve_pruned(&self, pruned: &PrunedBins, x: f32, z: f32, h: f32) -> f32 {
+        let Some(b) = self.bin_index(x, z) else {
+            return h.max(h - CARVE_MAX_M);
+        };
+        let mut c = h;
+        let range = pruned.start[b] as usize..pruned.start[b + 1] as usize;
+        for &(i, r2) in &pruned.entries[range] {
+            let p = &self.pieces[i as usize];
+            let (t, d2) = foot(p, x, z);
+            if d2 < r2 {
+                c = c.min(profile_at_foot(p, t, d2, h).0);
+            }
         }
-        self.bin_pieces = bin_pieces;
+        c.max(h - CARVE_MAX_M)
     }
 
     /// Lake level over `(x, z)`: the highest of the four nodes around it.

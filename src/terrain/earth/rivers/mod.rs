@@ -58,7 +58,9 @@ mod carve;
 mod lines;
 mod network;
 
-pub use carve::{job_for, profile, water_at, water_job_for, Edge, Piece, RiverJob, PIECE_LEN2_EPS};
+pub use carve::{
+    job_for, profile, water_at, water_job_for, Edge, Piece, PrunedBins, RiverJob, PIECE_LEN2_EPS,
+};
 pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
 
