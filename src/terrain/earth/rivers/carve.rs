@@ -359,6 +359,11 @@ impl Network<'_> {
     }
 }
 
+/// Margin of [`RiverJob::carve_pruned`]'s test that a piece cannot lower a sample further, metres:
+/// far above the rounding of a water level interpolated between a piece's ends (below a
+/// millimetre at the heights a world reaches).
+const SKIP_MARGIN_M: f32 = 0.01;
+
 /// Added to a piece's squared length before the division that projects a sample onto it, so a
 /// piece of zero length divides by a positive number (the WGSL twin reads it from its preamble).
 pub const PIECE_LEN2_EPS: f32 = 1e-6;
@@ -535,7 +540,13 @@ impl RiverJob {
         for &(i, r2) in &pruned.entries[range] {
             let p = &self.pieces[i as usize];
             let (t, d2) = foot(p, x, z);
-            if d2 < r2 {
+            // Outside its channel a piece lowers a sample to its water level at most, which is
+            // no lower than its ends' lower level (less a centimetre for rounding): a sample
+            // already carved below that keeps its height, as `min` would keep it. The channel
+            // test is widened by a thousandth, so rounding in `profile`'s own test (on the
+            // distance, not its square) never finds a sample in the channel that this does not.
+            let in_channel = d2 <= p.half_width * p.half_width * 1.001;
+            if d2 < r2 && (in_channel || c > p.wa.min(p.wb) - SKIP_MARGIN_M) {
                 c = c.min(profile_at_foot(p, t, d2, h).0);
             }
         }
