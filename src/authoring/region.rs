@@ -4,6 +4,7 @@
 use super::grid::{Procedural, RegionGrid};
 use super::raster::Canvas;
 use super::spec::RegionSpec;
+use crate::terrain::cancel::{Cancel, Cancelled};
 use crate::terrain::lattice::Window;
 use crate::terrain::offload::{CpuOnly, PoissonOffload};
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
@@ -14,7 +15,10 @@ use crate::terrain::WorldPlan;
 pub enum RegionError {
     /// The solver refused the problem.
     #[error("region solver: {0}")]
-    Solver(#[from] PoissonError),
+    Solver(PoissonError),
+    /// The solve's cancellation flag was set ([`solve_region_on`]); nothing was solved.
+    #[error("region solve cancelled")]
+    Cancelled,
     /// An operation's input could not be used (a copy-paste source unreadable, a network node
     /// without an elevation): the operation index and the reason.
     #[error("/ops/{op}: {message}")]
@@ -24,6 +28,21 @@ pub enum RegionError {
         /// Why.
         message: String,
     },
+}
+
+impl From<PoissonError> for RegionError {
+    fn from(e: PoissonError) -> Self {
+        match e {
+            PoissonError::Cancelled => Self::Cancelled,
+            e => Self::Solver(e),
+        }
+    }
+}
+
+impl From<Cancelled> for RegionError {
+    fn from(_: Cancelled) -> Self {
+        Self::Cancelled
+    }
 }
 
 /// A solved region: the displacement `d` to add to procedural heights (see [`super`]).
@@ -87,6 +106,8 @@ pub struct Raster<'a> {
     pub canvas: Canvas,
     /// The `basis` operations' summed weights at the samples, computed by the first of them.
     pub basis_total: Option<Vec<f64>>,
+    /// Polled by the solver's cycles and the erosion brushes' loops.
+    pub cancel: Cancel,
     gspec: GridSpec,
     solver: Solver,
     /// Where the solver's cycles may run besides the CPU.
@@ -117,18 +138,21 @@ impl<'a> Raster<'a> {
         plan: &'a WorldPlan,
         spec: &'a RegionSpec,
         offload: &'a dyn PoissonOffload,
+        cancel: &Cancel,
     ) -> Result<Self, RegionError> {
         let grid = RegionGrid::of(spec);
         let base = Procedural::sample(plan, &grid).heights;
         let canvas = Canvas::new(grid, base);
         let gspec = GridSpec::new(grid.n, grid.n, grid.spacing_m)?;
-        let solver = Solver::new(gspec, SolveOptions::default())?;
+        let mut solver = Solver::new(gspec, SolveOptions::default())?;
+        solver.set_cancel(cancel.clone());
         Ok(Self {
             plan,
             spec,
             index: 0,
             canvas,
             basis_total: None,
+            cancel: cancel.clone(),
             gspec,
             solver,
             offload,
@@ -186,21 +210,22 @@ impl<'a> Raster<'a> {
 /// # Errors
 /// [`RegionError`] if the solver refuses the problem or an operation's input is unusable.
 pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement, RegionError> {
-    solve_region_on(plan, spec, &CpuOnly)
+    solve_region_on(plan, spec, &CpuOnly, &Cancel::never())
 }
 
 /// [`solve_region`] with the solver's cycles offered to `offload` ([`Solver::solve_on`]): the
 /// result meets the same stopping test and differs from the CPU's only within the solver's
-/// tolerance.
+/// tolerance. The solver's cycles and the erosion brushes poll `cancel` ([`Cancel`]).
 ///
 /// # Errors
-/// As [`solve_region`].
+/// As [`solve_region`], and [`RegionError::Cancelled`] once `cancel` is set.
 pub fn solve_region_on(
     plan: &WorldPlan,
     spec: &RegionSpec,
     offload: &dyn PoissonOffload,
+    cancel: &Cancel,
 ) -> Result<Displacement, RegionError> {
-    let mut r = Raster::new(plan, spec, offload)?;
+    let mut r = Raster::new(plan, spec, offload, cancel)?;
     for (index, op) in spec.ops.iter().enumerate() {
         r.index = index;
         let tool = op.tool();

@@ -272,6 +272,19 @@ mod tests {
     }
 
     #[test]
+    fn a_stored_region_of_the_largest_grid_keeps_loading_and_editing() {
+        let mut v = Scene::default().to_value();
+        v["regions"] = json!([{"id": "r", "bbox": {"min": [0, 0], "max": [8192, 8192]},
+            "samples": 2049, "ops": []}]);
+        let stored = Scene::from_value(&v).expect("a stored 2049² region reads");
+        assert_eq!(stored.check_costs(Some(&stored)), Ok(()));
+        let e = stored
+            .check_costs(Some(&Scene::default()))
+            .expect_err("added by an edit");
+        assert_eq!(e.pointer, "/regions/0/samples");
+    }
+
+    #[test]
     fn param_pointers() {
         assert_eq!(
             param_pointer("/world", "biomes[2].generator.hurst"),

@@ -140,6 +140,9 @@ pub enum PoissonError {
         /// What is wrong with it.
         message: String,
     },
+    /// The solve's cancellation flag was set ([`Solver::set_cancel`]); nothing was solved.
+    #[error("cancelled")]
+    Cancelled,
 }
 
 impl PoissonError {
