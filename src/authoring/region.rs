@@ -106,7 +106,8 @@ pub struct Raster<'a> {
     pub canvas: Canvas,
     /// The `basis` operations' summed weights at the samples, computed by the first of them.
     pub basis_total: Option<Vec<f64>>,
-    /// Polled by the solver's cycles and the erosion brushes' loops.
+    /// Polled while the world is sampled (the base, a copy-paste source), by the solver's
+    /// cycles and by the erosion brushes' loops.
     pub cancel: Cancel,
     gspec: GridSpec,
     solver: Solver,
@@ -141,7 +142,7 @@ impl<'a> Raster<'a> {
         cancel: &Cancel,
     ) -> Result<Self, RegionError> {
         let grid = RegionGrid::of(spec);
-        let base = Procedural::sample(plan, &grid).heights;
+        let base = Procedural::sample_on(plan, &grid, cancel)?.heights;
         let canvas = Canvas::new(grid, base);
         let gspec = GridSpec::new(grid.n, grid.n, grid.spacing_m)?;
         let mut solver = Solver::new(gspec, SolveOptions::default())?;
@@ -186,7 +187,8 @@ impl<'a> Raster<'a> {
     /// unless nothing changed since the last solve.
     ///
     /// # Errors
-    /// [`RegionError::Solver`] if the solver refuses the problem.
+    /// [`RegionError::Solver`] if the solver refuses the problem, [`RegionError::Cancelled`]
+    /// once the region's flag is set.
     pub fn solved(&mut self) -> Result<(&mut Canvas, &[f32]), RegionError> {
         if !self.solved {
             self.solve()?;
@@ -215,7 +217,8 @@ pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement,
 
 /// [`solve_region`] with the solver's cycles offered to `offload` ([`Solver::solve_on`]): the
 /// result meets the same stopping test and differs from the CPU's only within the solver's
-/// tolerance. The solver's cycles and the erosion brushes poll `cancel` ([`Cancel`]).
+/// tolerance. The sampling of the world, the solver's cycles and the erosion brushes poll
+/// `cancel` ([`Cancel`]).
 ///
 /// # Errors
 /// As [`solve_region`], and [`RegionError::Cancelled`] once `cancel` is set.

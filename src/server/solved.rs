@@ -13,6 +13,7 @@ use crate::cache::Memo;
 use crate::terrain::cancel::Cancel;
 use futures::future::{BoxFuture, FutureExt, Shared};
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// What a solution holds, bytes (its arrays' capacities; approximate where a type says so).
@@ -39,6 +40,8 @@ type Runs<T> = Arc<Mutex<HashMap<Key, Running<T>>>>;
 pub struct SolvedCache<T> {
     memo: Memo<Key, Option<Arc<T>>>,
     runs: Runs<T>,
+    /// Solves whose blocking work has not ended, cancelled ones included until they stop.
+    working: Arc<AtomicUsize>,
 }
 
 impl<T> std::fmt::Debug for SolvedCache<T> {
@@ -84,6 +87,7 @@ impl<T: Weigh + Send + Sync + 'static> SolvedCache<T> {
                 v.as_ref().map_or(0, |v| v.weight())
             }),
             runs: Arc::default(),
+            working: Arc::default(),
         }
     }
 
@@ -93,9 +97,10 @@ impl<T: Weigh + Send + Sync + 'static> SolvedCache<T> {
         (s.entries, s.bytes, s.budget_bytes)
     }
 
-    /// Solves under way (for tests: a cancelled or finished solve is not counted).
+    /// Solves whose work is still running on the blocking pool, those cancelled included until
+    /// they have stopped at a check of their flag.
     pub fn running(&self) -> usize {
-        lock(&self.runs).len()
+        self.working.load(Ordering::Acquire)
     }
 
     /// The solution under `key`, running `solve` on the blocking pool if there is none yet
@@ -117,7 +122,7 @@ impl<T: Weigh + Send + Sync + 'static> SolvedCache<T> {
             let mut runs = lock(&self.runs);
             let run = runs.entry(key).or_insert_with(|| {
                 self.memo.count_miss();
-                start(what, solve)
+                start(what, solve, &self.working)
             });
             run.waiters += 1;
             run.outcome.clone()
@@ -137,14 +142,34 @@ impl<T: Weigh + Send + Sync + 'static> SolvedCache<T> {
     }
 }
 
-/// Starts `solve` on the blocking pool with a fresh cancellation flag.
+/// Counts one solve in [`SolvedCache::running`] until it is dropped.
+struct Working(Arc<AtomicUsize>);
+
+impl Working {
+    fn new(count: &Arc<AtomicUsize>) -> Self {
+        count.fetch_add(1, Ordering::AcqRel);
+        Self(count.clone())
+    }
+}
+
+impl Drop for Working {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::AcqRel);
+    }
+}
+
+/// Starts `solve` on the blocking pool with a fresh cancellation flag, counted in `working`
+/// until it returns.
 fn start<T: Send + Sync + 'static, E: std::fmt::Display + Send + 'static>(
     what: &'static str,
     solve: impl FnOnce(&Cancel) -> Result<T, E> + Send + 'static,
+    working: &Arc<AtomicUsize>,
 ) -> Running<T> {
     let cancel = Cancel::new();
     let flag = cancel.clone();
+    let working = Working::new(working);
     let task = tokio::task::spawn_blocking(move || {
+        let _working = working;
         let r = solve(&flag);
         // A solve stopped by its flag answers whatever error; the flag says why.
         match flag.check() {
