@@ -117,6 +117,10 @@ pub struct Raster<'a> {
     current: Vec<f32>,
     /// Whether `current` solves the canvas as it is.
     solved: bool,
+    /// Whether the operation being applied declares that it reads the solved heights
+    /// ([`super::tools::Tool::reads_solution`]): only such an operation may solve, since the
+    /// region's work budget counts a solve for it alone.
+    reads: bool,
     /// Whether no solve ran yet (the next one starts cold).
     first: bool,
     /// Finest-level cycles of the last solve.
@@ -159,6 +163,7 @@ impl<'a> Raster<'a> {
             offload,
             current: vec![0.0f32; grid.n * grid.n],
             solved: true,
+            reads: false,
             first: true,
             cycles: 0,
         })
@@ -190,6 +195,11 @@ impl<'a> Raster<'a> {
     /// [`RegionError::Solver`] if the solver refuses the problem, [`RegionError::Cancelled`]
     /// once the region's flag is set.
     pub fn solved(&mut self) -> Result<(&mut Canvas, &[f32]), RegionError> {
+        debug_assert!(
+            self.solved || self.reads,
+            "operation {} solves without declaring Tool::reads_solution",
+            self.index
+        );
         if !self.solved {
             self.solve()?;
         }
@@ -232,6 +242,7 @@ pub fn solve_region_on(
     for (index, op) in spec.ops.iter().enumerate() {
         r.index = index;
         let tool = op.tool();
+        r.reads = tool.reads_solution();
         tool.apply(&mut r)?;
         r.solved = tool.keeps_solution();
     }

@@ -29,7 +29,9 @@
 //!    `#[serde(deny_unknown_fields)]`, whose fields are the operation's JSON fields, and
 //!    `impl Tool` for it: [`Tool::check`] with the [`Check`] helpers, [`Tool::apply`] on the
 //!    [`Raster`] (its canvas, the world plan, the heights solved so far), and
-//!    [`Tool::droplet_steps`] or [`Tool::keeps_solution`] where the defaults do not hold.
+//!    [`Tool::droplet_steps`], [`Tool::grid_sweeps`], [`Tool::reads_solution`] (a tool that
+//!    calls [`Raster::solved`]: its solve counts in the region's work budget) or
+//!    [`Tool::keeps_solution`] where the defaults do not hold.
 //! 2. One line at the end of the `tools!` list below: `mod my_family: MyTool,` declares the new
 //!    file's module and registers the tool (a further tool of an existing family's file is
 //!    `my_family: MyOtherTool,`, without `mod`). The tool's name in snake case is its `op` tag
