@@ -117,14 +117,18 @@ impl RegionSpec {
     /// The cost limits a region meets when it is accepted (not when a stored scene is read, so a
     /// world accepted under older limits keeps loading): its work, [`Self::cell_steps`] (its
     /// solves, thermal sweeps and droplet steps), is at most [`MAX_REGION_CELL_STEPS`] (the
-    /// operation that crosses it is named), and its `samples` at most [`MAX_ACCEPTED_SAMPLES`].
+    /// operation that adds work and crosses it is named), and its `samples` at most
+    /// [`MAX_ACCEPTED_SAMPLES`].
     pub fn check_cost(&self) -> Result<(), SpecError> {
         let cells = (self.samples as u64).saturating_mul(self.samples as u64);
         let mut work = cells.saturating_mul(SOLVE_CELL_STEPS);
         for (i, op) in self.ops.iter().enumerate() {
             let tool = op.tool();
-            work = work.saturating_add(op_cell_steps(tool, cells));
-            if work <= MAX_REGION_CELL_STEPS {
+            let added = op_cell_steps(tool, cells);
+            work = work.saturating_add(added);
+            // An operation that adds no work is not named: the region's own solve crossed the
+            // budget, which only a grid beyond `MAX_ACCEPTED_SAMPLES` does (refused below).
+            if work <= MAX_REGION_CELL_STEPS || added == 0 {
                 continue;
             }
             let field = if tool.droplet_steps() > 0 {

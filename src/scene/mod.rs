@@ -139,7 +139,8 @@ impl Scene {
     /// - a region's bbox lies within the world (|coordinate| ≤ `WORLD_LIMIT_CELLS · cell_m`),
     ///   since its procedural base is sampled over the whole bbox (finding 1: ±1e9 m grew the
     ///   process to 13 GB);
-    /// - a region's hydraulic erosion is within its budget
+    /// - a region's work (its solves, thermal sweeps and droplet steps) is within its budget and
+    ///   its `samples` within the accepted maximum
     ///   ([`crate::authoring::RegionSpec::check_cost`]).
     pub fn check_costs(&self, before: Option<&Scene>) -> Result<(), SceneError> {
         let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);

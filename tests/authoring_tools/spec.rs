@@ -118,6 +118,16 @@ fn the_largest_grid_loads_but_is_refused_when_accepted() {
     assert!(region(MAX_ACCEPTED_SAMPLES).check_cost().is_ok());
     let e = region(2049).check_cost().expect_err("2049² when accepted");
     assert_eq!(e.pointer, "/samples");
+    // Its solve alone crosses the work budget; an operation that adds no work is not blamed.
+    let amplify = json!({"op": "amplify", "center": [50, 50], "radius_m": 20, "factor": 1.5});
+    let e = parse(
+        json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "samples": 2049,
+        "ops": [amplify]}),
+    )
+    .expect("a valid region")
+    .check_cost()
+    .expect_err("2049² when accepted");
+    assert_eq!(e.pointer, "/samples");
     assert!(
         e.message.contains(&MAX_ACCEPTED_SAMPLES.to_string()),
         "{}",
