@@ -19,6 +19,19 @@ fn heavy_scene() -> serde_json::Value {
             {"op": "erosion", "center": [2048.0, 2048.0], "radius_m": 2000.0, "iterations": 100}]}]})
 }
 
+/// Creates a public world of seed 42 with [`heavy_scene`] on `router`; its id.
+async fn heavy_world(router: &axum::Router) -> String {
+    let created = post_json(
+        router,
+        "/v1/worlds",
+        None,
+        &json!({"seed": 42, "public": true, "scene": heavy_scene()}),
+    )
+    .await;
+    created.status_is(StatusCode::CREATED);
+    created.json()["id"].as_str().expect("id").to_string()
+}
+
 fn metric(text: &str, name: &str) -> f64 {
     text.lines()
         .find_map(|l| l.strip_prefix(name)?.trim().parse().ok())
@@ -34,15 +47,7 @@ async fn a_timed_out_synthesis_stops_frees_its_slot_and_caches_nothing() {
     };
     let st = AppState::with_limits(Compute::cpu(), limits);
     let router = app(st.clone());
-    let created = post_json(
-        &router,
-        "/v1/worlds",
-        None,
-        &json!({"seed": 42, "public": true, "scene": heavy_scene()}),
-    )
-    .await;
-    created.status_is(StatusCode::CREATED);
-    let id = created.json()["id"].as_str().expect("id").to_string();
+    let id = heavy_world(&router).await;
     let tile = format!("/v1/worlds/{id}/tiles/0/16/16.bin");
 
     let reply = send::<&str>(&router, axum::http::Method::GET, &tile, &[], None).await;
@@ -89,14 +94,7 @@ async fn a_timed_out_synthesis_stops_frees_its_slot_and_caches_nothing() {
     after.ok();
     let fresh = AppState::new(Compute::cpu());
     let fresh_router = app(fresh);
-    let created = post_json(
-        &fresh_router,
-        "/v1/worlds",
-        None,
-        &json!({"seed": 42, "public": true, "scene": heavy_scene()}),
-    )
-    .await;
-    let fresh_id = created.json()["id"].as_str().expect("id").to_string();
+    let fresh_id = heavy_world(&fresh_router).await;
     let reference = send::<&str>(
         &fresh_router,
         axum::http::Method::GET,

@@ -9,6 +9,7 @@
 //! thread stops within a bounded time and its memory is returned. A cancelled solve is never
 //! kept, and a request arriving after the cancellation starts a new one.
 
+use crate::cache::memo::lock;
 use crate::cache::Memo;
 use crate::terrain::cancel::Cancel;
 use futures::future::{BoxFuture, FutureExt, Shared};
@@ -50,10 +51,6 @@ impl<T> std::fmt::Debug for SolvedCache<T> {
             .field("memo", &self.memo)
             .finish_non_exhaustive()
     }
-}
-
-fn lock<R>(runs: &Mutex<R>) -> std::sync::MutexGuard<'_, R> {
-    runs.lock().unwrap_or_else(|p| p.into_inner())
 }
 
 /// One request's interest in a running solve: dropping it (the request answered or gone)
