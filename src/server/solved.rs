@@ -6,8 +6,9 @@
 //! A solve is shared by every request waiting for it and cancelled when the last of them has
 //! gone (its request timed out or its client left): the waiters are counted, and the one whose
 //! departure leaves none sets the solve's [`Cancel`], which the solver polls, so the blocking
-//! thread stops within a bounded time and its memory is returned. A cancelled solve is never
-//! kept, and a request arriving after the cancellation starts a new one.
+//! thread stops within a bounded time and its memory is returned (a volume region's pipeline
+//! polls it only before it starts, and then runs to its end). A cancelled solve is never kept,
+//! and a request arriving after the cancellation starts a new one.
 
 use crate::cache::memo::lock;
 use crate::cache::Memo;
@@ -68,7 +69,8 @@ impl<T> Drop for Waiter<T> {
         };
         run.waiters -= 1;
         if run.waiters == 0 {
-            // A finished solve is already in the memo; an unfinished one nobody needs stops.
+            // A waiter that saw the solve finish has put it in the memo; a solve nobody needs
+            // any more stops (or, finished, is dropped).
             run.cancel.cancel();
             runs.remove(&self.key);
         }
