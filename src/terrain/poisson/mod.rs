@@ -129,7 +129,8 @@ pub use multigrid::{
 };
 pub use problem::{OwnedProblem, Problem};
 
-/// A problem or option the solver rejects, naming the offending field.
+/// A problem or option the solver rejects, naming the offending field, or a solve stopped by its
+/// cancellation flag.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PoissonError {
     /// A field is out of range.
