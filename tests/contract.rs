@@ -151,6 +151,14 @@ async fn every_error_is_the_json_shape() {
         info["limits"]["max_stream_message_bytes"],
         MAX_MESSAGE_BYTES
     );
+    assert_eq!(
+        info["limits"]["max_region_samples"],
+        strata::authoring::spec_tools::MAX_ACCEPTED_SAMPLES
+    );
+    assert_eq!(
+        info["limits"]["max_region_cell_steps"],
+        strata::authoring::spec_tools::MAX_REGION_CELL_STEPS
+    );
 
     // The edit log's documented maximum.
     let r = get(&app, &format!("/v1/worlds/{id}/edits?limit=1001"), none).await;

@@ -129,7 +129,7 @@ fn the_cost_findings_get_bounded_answers_and_memory_stays_within_the_budget() {
     let (status, body) = post_world(addr, json!({"regions": [heavy]}));
     let message = refused(status, &body, "/regions/0/ops/0");
     assert!(
-        message.contains("4194304"),
+        message.contains(&strata::authoring::spec_tools::MAX_REGION_CELL_STEPS.to_string()),
         "the message names the limit: {message}"
     );
 

@@ -17,6 +17,7 @@
 //! fills hollows.
 
 use super::raster::{dist, falloff, Canvas};
+use crate::terrain::cancel::{Cancel, Cancelled};
 
 /// Most erosion iterations of one brush.
 pub const MAX_EROSION_ITERATIONS: u32 = 500;
@@ -26,6 +27,10 @@ impl Canvas {
     /// steps of talus angle `talus_deg` (rate 0.25 of the excess per neighbour and step), keeping
     /// fixed samples, then adds the change of the heights' differences to the target gradient on
     /// the edges inside the brush.
+    ///
+    /// # Errors
+    /// [`Cancelled`] if `cancel` is set (polled before every sweep of the grid); the canvas is
+    /// then unchanged.
     pub fn erode(
         &mut self,
         center: [f64; 2],
@@ -33,7 +38,8 @@ impl Canvas {
         talus_deg: f64,
         iterations: u32,
         current: &[f32],
-    ) {
+        cancel: &Cancel,
+    ) -> Result<(), Cancelled> {
         let n = self.grid.n;
         let h = self.grid.spacing_m;
         let talus = talus_deg.to_radians().tan() * h;
@@ -44,6 +50,7 @@ impl Canvas {
         let start = heights.clone();
         let mut next = heights.clone();
         for _ in 0..iterations.min(MAX_EROSION_ITERATIONS) {
+            cancel.check()?;
             next.copy_from_slice(&heights);
             for j in 0..n {
                 for i in 0..n {
@@ -78,5 +85,6 @@ impl Canvas {
             let g = if is_x { &mut c.gx[e] } else { &mut c.gz[e] };
             *g = (f64::from(*g) + change) as f32;
         });
+        Ok(())
     }
 }

@@ -1,6 +1,7 @@
 //! A region's grid and the procedural heights beneath it.
 
 use super::spec::RegionSpec;
+use crate::terrain::cancel::{Cancel, Cancelled};
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::tile::{field, FieldJob};
 use crate::terrain::WorldPlan;
@@ -76,9 +77,50 @@ pub struct Procedural {
     pub lod: u32,
 }
 
+/// Lattice samples synthesised between two polls of the cancellation flag in
+/// [`Procedural::sample_on`]: a band of rows of about this many samples (a few milliseconds).
+const BAND_SAMPLES: usize = 1 << 16;
+
+/// The heights of the lattice rectangle `job`, synthesised in bands of whole rows of about
+/// [`BAND_SAMPLES`] samples with `cancel` polled before each. The field of a lattice sample
+/// does not depend on the rectangle it is synthesised in (tiles sharing an edge agree on it bit
+/// for bit), so the bands give the heights of one `field(plan, job)`.
+fn lattice_heights(
+    plan: &WorldPlan,
+    job: FieldJob,
+    cancel: &Cancel,
+) -> Result<Vec<f32>, Cancelled> {
+    let rows = (BAND_SAMPLES / job.w.max(1)).max(1);
+    let mut heights = Vec::with_capacity(job.w * job.h);
+    for j0 in (0..job.h).step_by(rows) {
+        cancel.check()?;
+        let band = FieldJob::new(
+            job.lod,
+            job.gx0,
+            job.gz0 + j0 as i64,
+            job.w,
+            rows.min(job.h - j0),
+        );
+        heights.extend_from_slice(&field(plan, band).heights);
+    }
+    Ok(heights)
+}
+
 impl Procedural {
     /// Samples the world `plan` beneath `grid`.
     pub fn sample(plan: &WorldPlan, grid: &RegionGrid) -> Self {
+        Self::sample_on(plan, grid, &Cancel::never()).expect("Cancel::never is never set")
+    }
+
+    /// [`Self::sample`], polling `cancel` between bands of the lattice's rows.
+    ///
+    /// # Errors
+    /// [`Cancelled`] once `cancel` is set.
+    pub fn sample_on(
+        plan: &WorldPlan,
+        grid: &RegionGrid,
+        cancel: &Cancel,
+    ) -> Result<Self, Cancelled> {
         let far = grid.position(grid.n - 1, grid.n - 1);
         let rect = |lod: u32| {
             let step = f64::from(plan.lods[lod as usize].spacing_m);
@@ -96,11 +138,11 @@ impl Procedural {
             lod += 1;
         }
         let (step, gx0, gz0, w, h) = rect(lod);
-        let f = field(plan, FieldJob::new(lod, gx0, gz0, w, h));
+        let lattice = lattice_heights(plan, FieldJob::new(lod, gx0, gz0, w, h), cancel)?;
         let at = |i: i64, j: i64| {
             let i = i.clamp(0, w as i64 - 1) as usize;
             let j = j.clamp(0, h as i64 - 1) as usize;
-            f.heights[j * w + i] as f64
+            lattice[j * w + i] as f64
         };
         let mut heights = Vec::with_capacity(grid.n * grid.n);
         for j in 0..grid.n {
@@ -115,6 +157,39 @@ impl Procedural {
                 heights.push((top * (1.0 - fv) + bottom * fv) as f32);
             }
         }
-        Self { heights, lod }
+        Ok(Self { heights, lod })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::WorldParams;
+
+    #[test]
+    fn the_bands_give_the_heights_of_one_field() {
+        for params in [WorldParams::classic(), WorldParams::earth()] {
+            let plan = WorldPlan::new(42, params).expect("plan");
+            for lod in [0, 3] {
+                // Rows of 301 samples: bands of 217 rows, the last one short.
+                let job = FieldJob::new(lod, -150, 200, 301, 700);
+                let banded = lattice_heights(&plan, job, &Cancel::never()).expect("not cancelled");
+                assert_eq!(banded, field(&plan, job).heights, "lod {lod}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_set_flag_stops_the_sampling() {
+        let plan = WorldPlan::new(42, WorldParams::earth()).expect("plan");
+        let grid = RegionGrid {
+            origin: [0.0, 0.0],
+            spacing_m: 1.0,
+            n: 1025,
+            max: [1024.0, 1024.0],
+        };
+        let cancel = Cancel::new();
+        cancel.cancel();
+        assert_eq!(Procedural::sample_on(&plan, &grid, &cancel), Err(Cancelled));
     }
 }

@@ -32,6 +32,7 @@
 //!   crossed, so the total height is conserved to rounding.
 
 use super::raster::Canvas;
+use crate::terrain::cancel::{Cancel, Cancelled};
 use crate::terrain::hash::{hash2, stream, unit};
 
 /// Hash purpose of the droplet seeds.
@@ -149,18 +150,30 @@ impl Field<'_> {
     }
 }
 
+/// Droplets run between two polls of the cancellation flag: at most 64 × 512 steps, a few
+/// milliseconds.
+const DROPLETS_PER_CHECK: u32 = 64;
+
 /// Runs the droplets over `field`, starting in the disc of `radius` (cells) around `center`
 /// (grid coordinates). Returns how many droplet steps visited each sample (the nearest sample
 /// to each position): the flow.
+///
+/// # Errors
+/// [`Cancelled`] if `cancel` is set (polled every [`DROPLETS_PER_CHECK`] droplets); `field` is
+/// then partly eroded.
 pub fn run_droplets(
     field: &mut Field<'_>,
     center: [f64; 2],
     radius: f64,
     p: &Droplets,
-) -> Vec<u32> {
+    cancel: &Cancel,
+) -> Result<Vec<u32>, Cancelled> {
     let n = field.n;
     let mut flow = vec![0u32; n * n];
     for k in 0..p.count {
+        if k % DROPLETS_PER_CHECK == 0 {
+            cancel.check()?;
+        }
         let key = k as i32;
         let r = radius * f64::from(unit(hash2(key, 0, p.seed))).sqrt();
         let a = std::f64::consts::TAU * f64::from(unit(hash2(key, 1, p.seed)));
@@ -215,7 +228,7 @@ pub fn run_droplets(
             }
         }
     }
-    flow
+    Ok(flow)
 }
 
 impl Canvas {
@@ -223,13 +236,17 @@ impl Canvas {
     /// module docs), keeping fixed samples; the erosion's change of every edge's height
     /// difference is then added to the edge's target gradient. Returns the eroded heights
     /// (metres) and the flow per sample.
+    ///
+    /// # Errors
+    /// [`Cancelled`] if `cancel` is set while the droplets run; the canvas is then unchanged.
     pub fn hydraulic_erode(
         &mut self,
         center: [f64; 2],
         radius: f64,
         droplets: &Droplets,
         current: &[f32],
-    ) -> (Vec<f64>, Vec<u32>) {
+        cancel: &Cancel,
+    ) -> Result<(Vec<f64>, Vec<u32>), Cancelled> {
         let n = self.grid.n;
         let h = self.grid.spacing_m;
         let weight = self.brush_weights(center, radius);
@@ -247,7 +264,8 @@ impl Canvas {
             [u, v],
             radius / h,
             droplets,
-        );
+            cancel,
+        )?;
         // The change, exactly 0 where the droplets did not touch (fixed samples included).
         let change: Vec<f64> = cells
             .iter()
@@ -264,7 +282,7 @@ impl Canvas {
         let heights = (0..n * n)
             .map(|v| f64::from(self.base[v]) + f64::from(current[v]) + change[v])
             .collect();
-        (heights, flow)
+        Ok((heights, flow))
     }
 }
 
@@ -320,7 +338,9 @@ mod tests {
             [32.0, 32.0],
             30.0,
             &p,
-        );
+            &Cancel::never(),
+        )
+        .expect("never cancelled");
         (before, heights, flow)
     }
 

@@ -15,6 +15,7 @@
 use super::exchange::Image;
 use super::grid::{Procedural, RegionGrid};
 use super::raster::Canvas;
+use crate::terrain::cancel::{Cancel, Cancelled};
 use crate::terrain::hash::stream;
 use crate::terrain::noise::lattice;
 use crate::terrain::WorldPlan;
@@ -41,6 +42,25 @@ impl PasteSource {
     pub fn sample(plan: &WorldPlan, min: [f64; 2], max: [f64; 2], spacing_m: f64) -> Self {
         let grid = source_grid(min, max, spacing_m);
         Self::over(grid, Procedural::sample(plan, &grid).heights)
+    }
+
+    /// [`Self::sample`], polling `cancel` while the world is sampled
+    /// ([`Procedural::sample_on`]).
+    ///
+    /// # Errors
+    /// [`Cancelled`] once `cancel` is set.
+    pub fn sample_on(
+        plan: &WorldPlan,
+        min: [f64; 2],
+        max: [f64; 2],
+        spacing_m: f64,
+        cancel: &Cancel,
+    ) -> Result<Self, Cancelled> {
+        let grid = source_grid(min, max, spacing_m);
+        Ok(Self::over(
+            grid,
+            Procedural::sample_on(plan, &grid, cancel)?.heights,
+        ))
     }
 
     /// Resamples (bilinearly, clamped at its edges) a heightmap image whose pixels lie

@@ -4,6 +4,7 @@
 use super::grid::{Procedural, RegionGrid};
 use super::raster::Canvas;
 use super::spec::RegionSpec;
+use crate::terrain::cancel::{Cancel, Cancelled};
 use crate::terrain::lattice::Window;
 use crate::terrain::offload::{CpuOnly, PoissonOffload};
 use crate::terrain::poisson::{GridSpec, PoissonError, Problem, SolveOptions, Solver, Start};
@@ -14,7 +15,10 @@ use crate::terrain::WorldPlan;
 pub enum RegionError {
     /// The solver refused the problem.
     #[error("region solver: {0}")]
-    Solver(#[from] PoissonError),
+    Solver(PoissonError),
+    /// The solve's cancellation flag was set ([`solve_region_on`]); nothing was solved.
+    #[error("region solve cancelled")]
+    Cancelled,
     /// An operation's input could not be used (a copy-paste source unreadable, a network node
     /// without an elevation): the operation index and the reason.
     #[error("/ops/{op}: {message}")]
@@ -24,6 +28,21 @@ pub enum RegionError {
         /// Why.
         message: String,
     },
+}
+
+impl From<PoissonError> for RegionError {
+    fn from(e: PoissonError) -> Self {
+        match e {
+            PoissonError::Cancelled => Self::Cancelled,
+            e => Self::Solver(e),
+        }
+    }
+}
+
+impl From<Cancelled> for RegionError {
+    fn from(_: Cancelled) -> Self {
+        Self::Cancelled
+    }
 }
 
 /// A solved region: the displacement `d` to add to procedural heights (see [`super`]).
@@ -87,6 +106,9 @@ pub struct Raster<'a> {
     pub canvas: Canvas,
     /// The `basis` operations' summed weights at the samples, computed by the first of them.
     pub basis_total: Option<Vec<f64>>,
+    /// Polled while the world is sampled (the base, a copy-paste source), by the solver's
+    /// cycles and by the erosion brushes' loops.
+    pub cancel: Cancel,
     gspec: GridSpec,
     solver: Solver,
     /// Where the solver's cycles may run besides the CPU.
@@ -95,6 +117,10 @@ pub struct Raster<'a> {
     current: Vec<f32>,
     /// Whether `current` solves the canvas as it is.
     solved: bool,
+    /// Whether the operation being applied declares that it reads the solved heights
+    /// ([`super::tools::Tool::reads_solution`]): only such an operation may solve, since the
+    /// region's work budget counts a solve for it alone.
+    reads: bool,
     /// Whether no solve ran yet (the next one starts cold).
     first: bool,
     /// Finest-level cycles of the last solve.
@@ -117,23 +143,27 @@ impl<'a> Raster<'a> {
         plan: &'a WorldPlan,
         spec: &'a RegionSpec,
         offload: &'a dyn PoissonOffload,
+        cancel: &Cancel,
     ) -> Result<Self, RegionError> {
         let grid = RegionGrid::of(spec);
-        let base = Procedural::sample(plan, &grid).heights;
+        let base = Procedural::sample_on(plan, &grid, cancel)?.heights;
         let canvas = Canvas::new(grid, base);
         let gspec = GridSpec::new(grid.n, grid.n, grid.spacing_m)?;
-        let solver = Solver::new(gspec, SolveOptions::default())?;
+        let mut solver = Solver::new(gspec, SolveOptions::default())?;
+        solver.set_cancel(cancel.clone());
         Ok(Self {
             plan,
             spec,
             index: 0,
             canvas,
             basis_total: None,
+            cancel: cancel.clone(),
             gspec,
             solver,
             offload,
             current: vec![0.0f32; grid.n * grid.n],
             solved: true,
+            reads: false,
             first: true,
             cycles: 0,
         })
@@ -162,8 +192,14 @@ impl<'a> Raster<'a> {
     /// unless nothing changed since the last solve.
     ///
     /// # Errors
-    /// [`RegionError::Solver`] if the solver refuses the problem.
+    /// [`RegionError::Solver`] if the solver refuses the problem, [`RegionError::Cancelled`]
+    /// once the region's flag is set.
     pub fn solved(&mut self) -> Result<(&mut Canvas, &[f32]), RegionError> {
+        debug_assert!(
+            self.solved || self.reads,
+            "operation {} solves without declaring Tool::reads_solution",
+            self.index
+        );
         if !self.solved {
             self.solve()?;
         }
@@ -186,24 +222,27 @@ impl<'a> Raster<'a> {
 /// # Errors
 /// [`RegionError`] if the solver refuses the problem or an operation's input is unusable.
 pub fn solve_region(plan: &WorldPlan, spec: &RegionSpec) -> Result<Displacement, RegionError> {
-    solve_region_on(plan, spec, &CpuOnly)
+    solve_region_on(plan, spec, &CpuOnly, &Cancel::never())
 }
 
 /// [`solve_region`] with the solver's cycles offered to `offload` ([`Solver::solve_on`]): the
 /// result meets the same stopping test and differs from the CPU's only within the solver's
-/// tolerance.
+/// tolerance. The sampling of the world, the solver's cycles and the erosion brushes poll
+/// `cancel` ([`Cancel`]).
 ///
 /// # Errors
-/// As [`solve_region`].
+/// As [`solve_region`], and [`RegionError::Cancelled`] once `cancel` is set.
 pub fn solve_region_on(
     plan: &WorldPlan,
     spec: &RegionSpec,
     offload: &dyn PoissonOffload,
+    cancel: &Cancel,
 ) -> Result<Displacement, RegionError> {
-    let mut r = Raster::new(plan, spec, offload)?;
+    let mut r = Raster::new(plan, spec, offload, cancel)?;
     for (index, op) in spec.ops.iter().enumerate() {
         r.index = index;
         let tool = op.tool();
+        r.reads = tool.reads_solution();
         tool.apply(&mut r)?;
         r.solved = tool.keeps_solution();
     }

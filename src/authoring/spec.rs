@@ -12,7 +12,9 @@
 
 pub use super::tools::{Op, Shape};
 
-use super::spec_tools::{MAX_REGION_DROPLET_STEPS, MAX_REGION_EROSION_CELL_STEPS};
+use super::spec_tools::{
+    DROPLET_STEP_CELLS, MAX_ACCEPTED_SAMPLES, MAX_REGION_CELL_STEPS, SOLVE_CELL_STEPS,
+};
 use super::tools::Check;
 use crate::element::Element;
 use serde::{Deserialize, Serialize};
@@ -72,6 +74,18 @@ pub(super) fn err(pointer: impl Into<String>, message: impl Into<String>) -> Spe
     }
 }
 
+/// The cell steps an operation adds to a region of `cells` grid samples.
+fn op_cell_steps(tool: &dyn super::tools::Tool, cells: u64) -> u64 {
+    let solve = if tool.reads_solution() {
+        cells.saturating_mul(SOLVE_CELL_STEPS)
+    } else {
+        0
+    };
+    solve
+        .saturating_add(tool.grid_sweeps().saturating_mul(cells))
+        .saturating_add(tool.droplet_steps().saturating_mul(DROPLET_STEP_CELLS))
+}
+
 pub(super) fn finite_in(pointer: String, v: f64, lo: f64, hi: f64) -> Result<(), SpecError> {
     if v.is_finite() && (lo..=hi).contains(&v) {
         Ok(())
@@ -101,47 +115,65 @@ impl RegionSpec {
     }
 
     /// The cost limits a region meets when it is accepted (not when a stored scene is read, so a
-    /// world accepted under older limits keeps loading): `droplets × steps` summed over its
-    /// hydraulic-erosion brushes is at most [`MAX_REGION_DROPLET_STEPS`], and
-    /// `iterations × samples²` summed over its thermal-erosion brushes at most
-    /// [`MAX_REGION_EROSION_CELL_STEPS`].
+    /// world accepted under older limits keeps loading): its work, [`Self::cell_steps`] (its
+    /// solves, thermal sweeps and droplet steps), is at most [`MAX_REGION_CELL_STEPS`] (the
+    /// operation that adds work and crosses it is named), and its `samples` at most
+    /// [`MAX_ACCEPTED_SAMPLES`].
     pub fn check_cost(&self) -> Result<(), SpecError> {
         let cells = (self.samples as u64).saturating_mul(self.samples as u64);
-        let (mut droplet_steps, mut cell_steps) = (0u64, 0u64);
+        let mut work = cells.saturating_mul(SOLVE_CELL_STEPS);
         for (i, op) in self.ops.iter().enumerate() {
             let tool = op.tool();
-            let steps = tool.droplet_steps();
-            if steps > 0 {
-                droplet_steps = droplet_steps.saturating_add(steps);
-                if droplet_steps > MAX_REGION_DROPLET_STEPS {
-                    return Err(err(
-                        format!("/ops/{i}/droplets"),
-                        format!(
-                            "droplets × steps over a region's hydraulic_erosion operations \
-                             total at most {MAX_REGION_DROPLET_STEPS}; with this one they reach \
-                             {droplet_steps}"
-                        ),
-                    ));
-                }
+            let added = op_cell_steps(tool, cells);
+            work = work.saturating_add(added);
+            // An operation that adds no work is not named: the region's own solve crossed the
+            // budget, which only a grid beyond `MAX_ACCEPTED_SAMPLES` does (refused below).
+            if work <= MAX_REGION_CELL_STEPS || added == 0 {
+                continue;
             }
-            let sweeps = tool.grid_sweeps();
-            if sweeps > 0 {
-                cell_steps = cell_steps.saturating_add(sweeps.saturating_mul(cells));
-                if cell_steps > MAX_REGION_EROSION_CELL_STEPS {
-                    return Err(err(
-                        format!("/ops/{i}/iterations"),
-                        format!(
-                            "iterations × samples² over a region's erosion operations total at \
-                             most {MAX_REGION_EROSION_CELL_STEPS} ({} iterations at {} samples); \
-                             with this one they reach {cell_steps}",
-                            MAX_REGION_EROSION_CELL_STEPS / cells.max(1),
-                            self.samples
-                        ),
-                    ));
-                }
-            }
+            let field = if tool.droplet_steps() > 0 {
+                "/droplets"
+            } else if tool.grid_sweeps() > 0 {
+                "/iterations"
+            } else {
+                ""
+            };
+            return Err(err(
+                format!("/ops/{i}{field}"),
+                format!(
+                    "a region's work is at most {MAX_REGION_CELL_STEPS} cell steps: \
+                     {SOLVE_CELL_STEPS} × samples² for its solve and for each freeze, \
+                     regularize, erosion and hydraulic_erosion operation, iterations × samples² \
+                     for its erosion operations, {DROPLET_STEP_CELLS} × droplets × steps for its \
+                     hydraulic_erosion operations ({} samples: {} erosion iterations or {} \
+                     droplet steps besides the solves); with this one it reaches {work}",
+                    self.samples,
+                    MAX_REGION_CELL_STEPS / cells.max(1),
+                    MAX_REGION_CELL_STEPS / DROPLET_STEP_CELLS,
+                ),
+            ));
+        }
+        if self.samples > MAX_ACCEPTED_SAMPLES {
+            return Err(err(
+                "/samples",
+                format!(
+                    "at most {MAX_ACCEPTED_SAMPLES} when a scene is accepted (a stored region of \
+                     {} samples keeps loading)",
+                    self.samples
+                ),
+            ));
         }
         Ok(())
+    }
+
+    /// The region's work in cell steps, as [`Self::check_cost`] counts it.
+    pub fn cell_steps(&self) -> u64 {
+        let cells = (self.samples as u64).saturating_mul(self.samples as u64);
+        self.ops
+            .iter()
+            .fold(cells.saturating_mul(SOLVE_CELL_STEPS), |w, op| {
+                w.saturating_add(op_cell_steps(op.tool(), cells))
+            })
     }
 
     fn validate(&self) -> Result<(), SpecError> {

@@ -22,14 +22,28 @@ pub const MAX_NETWORK_EDGES: usize = 1024;
 pub const MAX_DROPLETS: u32 = 200_000;
 /// Most steps of one droplet.
 pub const MAX_DROPLET_STEPS: u32 = 512;
-/// Most droplet steps (`droplets × steps`, summed over a region's hydraulic-erosion brushes): at
-/// about 0.2 µs a step (issue 18's probe: 200,000 × 512 took 21 s of CPU) about 1 s of one core.
-pub const MAX_REGION_DROPLET_STEPS: u64 = 1 << 22;
-/// Most cell steps of thermal erosion (`iterations × samples²`, summed over a region's `erosion`
-/// brushes: each iteration sweeps the whole region grid): at the 4.6 ns a cell step measured at
-/// 1025² samples (release build, one core), about 1.2 s of one core; 500 iterations at 2049²
-/// samples would take about 10 s per brush.
-pub const MAX_REGION_EROSION_CELL_STEPS: u64 = 1 << 28;
+/// The work of a region's solve, in cell steps (about 10 ns of one core each: a thermal-erosion
+/// step of one grid sample, measured at 1025² samples, release build, on 2 shared cores): each
+/// reconstruction counts [`SOLVE_CELL_STEPS`] per grid sample (the final one, and one before
+/// every operation that reads the solved heights: `freeze`, `regularize` and the erosion
+/// brushes), each thermal `erosion` iteration one per sample, each hydraulic-erosion droplet
+/// step [`DROPLET_STEP_CELLS`]. At most this much, about 0.7 s of one core, so with the 0.45 s
+/// of sampling a region's procedural base (bounded by `grid::MAX_LATTICE_SAMPLES`) the first
+/// tile over the heaviest region a scene may accept costs about 1.1 s of one core, within the
+/// 2 s a request may take (`strata bench abuse`). Before it, thermal erosion (2²⁸ cell steps)
+/// and hydraulic erosion (2²² droplet steps) had budgets of their own, solves had none, and a
+/// region of 2049² samples could cost 4.5 s with both brushes, and more with many brushes.
+pub const MAX_REGION_CELL_STEPS: u64 = 1 << 26;
+/// Cell steps a reconstruction costs per grid sample: a cold solve took 105–130 ns a sample at
+/// 1025² and 193 ns at 2049², a warm one after a brush 65–85 ns at 1025².
+pub const SOLVE_CELL_STEPS: u64 = 16;
+/// Cell steps one droplet step counts for: a droplet step took 112–171 ns (1025² and 2049²
+/// samples).
+pub const DROPLET_STEP_CELLS: u64 = 16;
+/// Largest `samples` a region may have when a scene is accepted: its solve at 2049² alone took
+/// 0.8 s of one core beside the 0.45 s of its procedural base. Stored scenes keep their 2049²
+/// regions (see [`super::spec::RegionSpec::check_cost`]).
+pub const MAX_ACCEPTED_SAMPLES: usize = 1025;
 /// Longest inline heightmap (`png_base64`), characters: 512 KiB of base64 (384 KiB of PNG), so
 /// a scene with one stays well below the store's 1 MiB scene limit.
 pub const MAX_HEIGHTMAP_BASE64: usize = 512 * 1024;

@@ -139,7 +139,8 @@ impl Scene {
     /// - a region's bbox lies within the world (|coordinate| ≤ `WORLD_LIMIT_CELLS · cell_m`),
     ///   since its procedural base is sampled over the whole bbox (finding 1: ±1e9 m grew the
     ///   process to 13 GB);
-    /// - a region's hydraulic erosion is within its budget
+    /// - a region's work (its solves, thermal sweeps and droplet steps) is within its budget and
+    ///   its `samples` within the accepted maximum
     ///   ([`crate::authoring::RegionSpec::check_cost`]).
     pub fn check_costs(&self, before: Option<&Scene>) -> Result<(), SceneError> {
         let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
@@ -269,6 +270,19 @@ mod tests {
             .check_costs(Some(&Scene::default()))
             .expect_err("added by the edit");
         assert_eq!(e.pointer, "/regions/0/bbox/min/0");
+    }
+
+    #[test]
+    fn a_stored_region_of_the_largest_grid_keeps_loading_and_editing() {
+        let mut v = Scene::default().to_value();
+        v["regions"] = json!([{"id": "r", "bbox": {"min": [0, 0], "max": [8192, 8192]},
+            "samples": 2049, "ops": []}]);
+        let stored = Scene::from_value(&v).expect("a stored 2049² region reads");
+        assert_eq!(stored.check_costs(Some(&stored)), Ok(()));
+        let e = stored
+            .check_costs(Some(&Scene::default()))
+            .expect_err("added by an edit");
+        assert_eq!(e.pointer, "/regions/0/samples");
     }
 
     #[test]

@@ -10,7 +10,7 @@
 //! | `strata_plan_cache_hits_total`, `strata_plan_cache_misses_total` (counters) | `cache`: `seeds`, `worlds` |
 //! | `strata_worlds_created_total` (counter) | |
 //! | `strata_edit_subscribers` (gauge) | |
-//! | `strata_synthesis_timeouts_total` (counter), `strata_synthesis_after_timeout` (gauge: syntheses still running whose request timed out, see [`super::overrun`]) | |
+//! | `strata_synthesis_timeouts_total` (counter), `strata_synthesis_after_timeout` (gauge: syntheses still running whose request timed out, until they are cancelled), `strata_synthesis_cancelled_total` (counter: started syntheses cancelled because no request waited for them; see [`super::overrun`]) | |
 //! | `strata_stage_cache_hits_total` (counter) | `tier`: `memory`, `disk`, `inflight` (joined a computation under way) |
 //! | `strata_stage_cache_misses_total` (counter): tiles computed | |
 //! | `strata_stage_runs_total` (counter) | `stage`: `field`, `snap`, `finish` |
@@ -311,7 +311,7 @@ fn stage_cache(out: &mut String, s: &crate::cache::CacheStats) {
 fn service_gauges(out: &mut String, st: &AppState) {
     use crate::stream::session::STATS;
     let (entries, bytes) = st.bodies.size();
-    let lines: [(&str, &str, &str, String); 11] = [
+    let lines: [(&str, &str, &str, String); 12] = [
         (
             "strata_body_cache_hits_total",
             "counter",
@@ -367,10 +367,20 @@ fn service_gauges(out: &mut String, st: &AppState) {
         (
             "strata_synthesis_after_timeout",
             "gauge",
-            "Syntheses running whose request timed out (each within its cost limits).",
+            "Syntheses running whose request timed out, until they are cancelled.",
             st.metrics
                 .overruns
                 .running
+                .load(Ordering::Relaxed)
+                .to_string(),
+        ),
+        (
+            "strata_synthesis_cancelled_total",
+            "counter",
+            "Started syntheses cancelled because no request waited for them any more.",
+            st.metrics
+                .overruns
+                .cancelled
                 .load(Ordering::Relaxed)
                 .to_string(),
         ),

@@ -75,8 +75,9 @@ use tokio::sync::Semaphore;
 /// Tile syntheses (plus their encoding) that may run at once; the rest queue.
 pub const MAX_CONCURRENT_SYNTHESES: usize = 16;
 /// A request whose synthesis has not finished (queueing included) within this time gets 503
-/// `synthesis_timeout`; a synthesis that had started finishes in the background, holding its
-/// slot, and is counted meanwhile ([`overrun`]); one still queued never starts.
+/// `synthesis_timeout`; a synthesis that had started is cancelled ([`overrun`]): it stops at
+/// its next await, releasing its slot, and the solves it waited for stop too unless another
+/// request waits for them ([`solved`]); one still queued never starts.
 pub const SYNTHESIS_TIMEOUT: Duration = Duration::from_secs(30);
 /// Largest request body accepted (a world's scene is at most [`crate::store::MAX_SCENE_BYTES`]).
 pub const MAX_BODY_BYTES: usize = 2 << 20;
@@ -370,7 +371,9 @@ impl AppState {
     }
 
     /// Runs `job` in one synthesis slot under the time limit. The job runs as its own task, so
-    /// on timeout the client is answered at once while the job completes and frees its slot.
+    /// on timeout the client is answered at once; the task is then cancelled (it drops `job` at
+    /// its next await, frees its slot and is counted in `strata_synthesis_cancelled_total`),
+    /// and nothing it had not finished is cached.
     pub async fn limited<T, F>(&self, job: F) -> Result<T, AppError>
     where
         T: Send + 'static,
@@ -379,6 +382,11 @@ impl AppState {
         let slots = self.slots.clone();
         let tracker = overrun::Tracker::new(self.metrics.overruns.clone());
         let started = tracker.clone();
+        let cancel = tokio_util::sync::CancellationToken::new();
+        let cancelled = cancel.clone();
+        // Cancels the task when the request's wait ends early (its timeout, or the request
+        // dropped because its client left); disarmed once the task has answered.
+        let on_drop = cancel.clone().drop_guard();
         let run = async move {
             let permit = slots
                 .acquire_owned()
@@ -386,8 +394,18 @@ impl AppState {
                 .map_err(|_| AppError::internal("synthesis slots closed"))?;
             let task = tokio::spawn(async move {
                 let _permit = permit;
-                let _running = started.start();
-                job.await
+                let running = started.start();
+                tokio::select! {
+                    r = job => r,
+                    () = cancelled.cancelled() => {
+                        running.cancelled();
+                        Err(AppError::new(
+                            axum::http::StatusCode::SERVICE_UNAVAILABLE,
+                            error::code::SYNTHESIS_TIMEOUT,
+                            "the synthesis was cancelled: no request waits for it",
+                        ))
+                    }
+                }
             });
             match task.await {
                 Ok(r) => r,
@@ -402,7 +420,11 @@ impl AppState {
                 )),
             }
         };
-        match tokio::time::timeout(self.limits.synthesis_timeout, run).await {
+        let answer = tokio::time::timeout(self.limits.synthesis_timeout, run).await;
+        if answer.is_ok() {
+            on_drop.disarm();
+        }
+        match answer {
             Ok(r) => r,
             Err(_) => Err({
                 tracker.timed_out();

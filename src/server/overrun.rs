@@ -1,10 +1,13 @@
-//! Work that outlives its request: a synthesis job whose request timed out after the job had
-//! started goes on to its end (it holds its synthesis slot, so the slots still bound the work
-//! running at once, and the scene's cost limits bound what it costs), and is counted meanwhile.
+//! Work whose request has gone: a synthesis job whose request timed out (or whose client left)
+//! after the job had started is cancelled ([`super::AppState::limited`]): it drops its work at
+//! its next await and frees its slot, and the solves it waited for stop at their next check of
+//! their cancellation flag unless another request waits for them ([`super::solved`]). Between
+//! the timeout and the job's end it is counted as running after its timeout.
 //!
 //! A job that had not yet taken a slot when its request timed out never starts: its future is
-//! dropped with the request's. `GET /metrics` shows `strata_synthesis_timeouts_total` and the
-//! gauge `strata_synthesis_after_timeout`, the jobs running now whose request has gone.
+//! dropped with the request's. `GET /metrics` shows `strata_synthesis_timeouts_total`, the gauge
+//! `strata_synthesis_after_timeout` (the jobs running now whose request has gone: back to 0 as
+//! soon as they are cancelled) and `strata_synthesis_cancelled_total`.
 
 use std::sync::atomic::{AtomicI64, AtomicU64, AtomicU8, Ordering};
 use std::sync::Arc;
@@ -21,6 +24,8 @@ pub struct Overruns {
     pub timeouts: AtomicU64,
     /// Jobs still running whose request timed out.
     pub running: AtomicI64,
+    /// Started jobs cancelled because no request waited for them any more.
+    pub cancelled: AtomicU64,
 }
 
 /// One job's state, shared by the request (which may time out) and the job's task.
@@ -65,6 +70,13 @@ impl Tracker {
 /// A started job; dropping it ends the job.
 #[derive(Debug)]
 pub struct Running(Arc<Tracker>);
+
+impl Running {
+    /// Counts the job as cancelled (it ends without its result).
+    pub fn cancelled(&self) {
+        self.0.counters.cancelled.fetch_add(1, Ordering::Relaxed);
+    }
+}
 
 impl Drop for Running {
     fn drop(&mut self) {

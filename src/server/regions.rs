@@ -8,10 +8,11 @@ use crate::terrain::WorldPlan;
 use std::sync::Arc;
 
 /// Default byte budget of solved regions (the share of [`super::budget::MemoryBudget`]); the
-/// least recently used go first. It holds the largest region a scene may hold (2049² samples
-/// of `d`, `base` and `fixed`: about 38 MB): a region heavier than the cache's budget is never
-/// kept, and every tile that reads it solves it again, so a `--memory-budget` under 320 MiB
-/// makes the largest regions cost a solve per tile.
+/// least recently used go first. It holds the largest region a stored scene may hold (2049²
+/// samples of `d`, `base` and `fixed`: about 38 MB; a scene accepts 1025² today, about 9.5 MB):
+/// a region heavier than the cache's budget is never kept, and every tile that reads it solves
+/// it again, so a `--memory-budget` under 320 MiB makes the largest regions cost a solve per
+/// tile.
 pub const REGION_CACHE_BYTES: usize = 64 << 20;
 
 /// Solved authored regions.
@@ -42,9 +43,11 @@ impl RegionCache {
         offload: Offload,
     ) -> Option<Arc<Displacement>> {
         let (p, spec) = (plan.clone(), region.spec.clone());
-        self.get_or_solve((plan.seed, region.digest), "authored region", move || {
-            solve_region_on(&p, &spec, &offload)
-        })
+        self.get_or_solve(
+            (plan.seed, region.digest),
+            "authored region",
+            move |cancel| solve_region_on(&p, &spec, &offload, cancel),
+        )
         .await
     }
 }

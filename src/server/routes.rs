@@ -140,6 +140,8 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "export_disk_budget_bytes": st.jobs.limits().disk_budget_bytes,
             "export_max_age_s": st.jobs.limits().max_age.as_secs(),
             "rate_limit_per_minute": st.rate.per_minute(),
+            "max_region_samples": crate::authoring::spec_tools::MAX_ACCEPTED_SAMPLES,
+            "max_region_cell_steps": crate::authoring::spec_tools::MAX_REGION_CELL_STEPS,
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),

@@ -80,8 +80,8 @@ impl VolumeCache {
         let edits = view.ground_edits(st, &rect).await;
         let (p, spec) = (plan.clone(), volume.spec.clone());
         let offload = st.compute.offload();
-        self.get_or_solve(key, "volume region", move || {
-            solve_volume_on(&p, &spec, &edits, &offload)
+        self.get_or_solve(key, "volume region", move |cancel| {
+            solve_volume_on(&p, &spec, &edits, &offload, cancel)
         })
         .await
     }

@@ -6,6 +6,7 @@
 
 pub mod biome;
 pub mod blur;
+pub mod cancel;
 pub mod earth;
 pub mod fractal;
 pub mod hash;

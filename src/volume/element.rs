@@ -417,20 +417,30 @@ pub fn solve_volume(
     spec: &VolumeSpec,
     edits: &dyn GroundEdits,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
-    solve_volume_on(plan, spec, edits, &super::offload::CpuOnly)
+    solve_volume_on(
+        plan,
+        spec,
+        edits,
+        &super::offload::CpuOnly,
+        &crate::terrain::cancel::Cancel::never(),
+    )
 }
 
 /// [`solve_volume`] with the pipeline's twinned stages offered to `dev`
-/// ([`super::offload`]).
+/// ([`super::offload`]), polling `cancel` before the ground is sampled and before the pipeline
+/// runs (not yet inside the pipeline's stages).
 ///
 /// # Errors
-/// As [`solve_volume`].
+/// As [`solve_volume`], and [`pipeline::PipelineError::Cancelled`] once `cancel` is set.
 pub fn solve_volume_on(
     plan: &WorldPlan,
     spec: &VolumeSpec,
     edits: &dyn GroundEdits,
     dev: &dyn super::offload::VolumeOffload,
+    cancel: &crate::terrain::cancel::Cancel,
 ) -> Result<SolvedVolume, pipeline::PipelineError> {
+    let cancelled = |_| pipeline::PipelineError::Cancelled;
+    cancel.check().map_err(cancelled)?;
     let window = ground_window(plan, spec);
     let mut field = crate::terrain::tile::field(
         plan,
@@ -459,6 +469,7 @@ pub fn solve_volume_on(
         expand: spec.expand,
         ..PipelineParams::default()
     };
+    cancel.check().map_err(cancelled)?;
     let fields = pipeline::generate_on(&spec.grid, &scene, &params, dev)?;
     Ok(SolvedVolume {
         spec: spec.clone(),

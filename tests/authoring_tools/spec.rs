@@ -3,7 +3,9 @@
 
 use serde_json::json;
 use strata::authoring::spec::{SpecError, DEFAULT_SAMPLES};
-use strata::authoring::spec_tools::{MAX_REGION_DROPLET_STEPS, MAX_REGION_EROSION_CELL_STEPS};
+use strata::authoring::spec_tools::{
+    DROPLET_STEP_CELLS, MAX_ACCEPTED_SAMPLES, MAX_REGION_CELL_STEPS, SOLVE_CELL_STEPS,
+};
 use strata::authoring::tools::fitting::Regularize;
 use strata::authoring::{Op, RegionSpec};
 use strata::element::Element;
@@ -23,26 +25,33 @@ fn a_regions_droplet_steps_are_bounded_before_any_work() {
     let region = |ops: Vec<serde_json::Value>| {
         parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "ops": ops}))
             .expect("a valid region")
-            .check_cost()
     };
-    let half = MAX_REGION_DROPLET_STEPS / 2 / 512;
-    assert!(region(vec![brush(half, 512), brush(half, 512)]).is_ok());
-    let e = region(vec![brush(200_000, 512)]).expect_err("the probe's brush");
+    // The default 257² grid: three solves (the final one and one before each brush).
+    let cells = (DEFAULT_SAMPLES * DEFAULT_SAMPLES) as u64;
+    let left = MAX_REGION_CELL_STEPS - 3 * SOLVE_CELL_STEPS * cells;
+    let half = left / 2 / DROPLET_STEP_CELLS / 512;
+    let at_limit = region(vec![brush(half, 512), brush(half, 512)]);
+    assert!(at_limit.check_cost().is_ok());
+    assert!(at_limit.cell_steps() <= MAX_REGION_CELL_STEPS);
+    let e = region(vec![brush(200_000, 512)])
+        .check_cost()
+        .expect_err("the probe's brush");
     assert_eq!(e.pointer, "/ops/0/droplets");
     assert!(
-        e.message.contains(&MAX_REGION_DROPLET_STEPS.to_string()),
+        e.message.contains(&MAX_REGION_CELL_STEPS.to_string()),
         "{}",
         e.message
     );
     let e = region(vec![brush(half, 512), brush(half, 512), brush(1, 1)])
+        .check_cost()
         .expect_err("the sum over brushes");
     assert_eq!(e.pointer, "/ops/2/droplets");
 }
 
 #[test]
 fn a_regions_thermal_erosion_is_bounded_before_any_work() {
-    // Thermal erosion sweeps the whole region grid every iteration: at the measured 4.6 ns a
-    // cell step, 500 iterations at 2049² samples take about 10 s per brush, and a region may
+    // Thermal erosion sweeps the whole region grid every iteration: at the measured 10 ns a
+    // cell step, 500 iterations at 2049² samples take about 20 s per brush, and a region may
     // hold 256 brushes.
     let brush = |iterations: u64| json!({"op": "erosion", "center": [50, 50], "radius_m": 20, "iterations": iterations});
     let region = |samples: u64, ops: Vec<serde_json::Value>| {
@@ -54,13 +63,12 @@ fn a_regions_thermal_erosion_is_bounded_before_any_work() {
         .check_cost()
     };
     let cells = 1025 * 1025;
-    let most = MAX_REGION_EROSION_CELL_STEPS / cells;
+    let most = (MAX_REGION_CELL_STEPS - 3 * SOLVE_CELL_STEPS * cells) / cells;
     assert!(region(1025, vec![brush(most / 2), brush(most / 2)]).is_ok());
     let e = region(2049, vec![brush(500)]).expect_err("500 iterations at 2049²");
     assert_eq!(e.pointer, "/ops/0/iterations");
     assert!(
-        e.message
-            .contains(&MAX_REGION_EROSION_CELL_STEPS.to_string()),
+        e.message.contains(&MAX_REGION_CELL_STEPS.to_string()),
         "{}",
         e.message
     );
@@ -71,7 +79,60 @@ fn a_regions_thermal_erosion_is_bounded_before_any_work() {
     .expect_err("the sum over brushes");
     assert_eq!(e.pointer, "/ops/2/iterations");
     // The same brushes on a small grid cost little.
-    assert!(region(257, vec![brush(500), brush(500)]).is_ok());
+    assert!(region(129, vec![brush(500), brush(500)]).is_ok());
+}
+
+#[test]
+fn every_solve_an_operation_forces_is_counted() {
+    // Twenty small brushes at 1025² took 2.7 s of CPU before solves were counted: each brush
+    // reads the heights solved before it, a reconstruction of the whole grid.
+    let freeze = json!({"op": "freeze", "center": [50, 50], "radius_m": 5});
+    let amplify = json!({"op": "amplify", "center": [50, 50], "radius_m": 20, "factor": 1.5});
+    let region = |ops: Vec<serde_json::Value>| {
+        parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "samples": 1025, "ops": ops}))
+            .expect("a valid region")
+    };
+    let cells = 1025 * 1025;
+    let solves = MAX_REGION_CELL_STEPS / (SOLVE_CELL_STEPS * cells);
+    let pairs = |n: u64| {
+        (0..n)
+            .flat_map(|_| [amplify.clone(), freeze.clone()])
+            .collect::<Vec<_>>()
+    };
+    // The final solve and one per freeze.
+    assert!(region(pairs(solves - 1)).check_cost().is_ok());
+    let e = region(pairs(solves))
+        .check_cost()
+        .expect_err("one solve too many");
+    assert_eq!(e.pointer, format!("/ops/{}", 2 * solves - 1));
+    // Operations that only rasterise cost no solve of their own.
+    assert!(region(vec![amplify; 200]).check_cost().is_ok());
+}
+
+#[test]
+fn the_largest_grid_loads_but_is_refused_when_accepted() {
+    let region = |samples: usize| {
+        parse(json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "samples": samples, "ops": []}))
+            .expect("every sample choice parses, so stored scenes keep loading")
+    };
+    assert!(region(MAX_ACCEPTED_SAMPLES).check_cost().is_ok());
+    let e = region(2049).check_cost().expect_err("2049² when accepted");
+    assert_eq!(e.pointer, "/samples");
+    // Its solve alone crosses the work budget; an operation that adds no work is not blamed.
+    let amplify = json!({"op": "amplify", "center": [50, 50], "radius_m": 20, "factor": 1.5});
+    let e = parse(
+        json!({"id": "a", "bbox": {"min": [0, 0], "max": [100, 100]}, "samples": 2049,
+        "ops": [amplify]}),
+    )
+    .expect("a valid region")
+    .check_cost()
+    .expect_err("2049² when accepted");
+    assert_eq!(e.pointer, "/samples");
+    assert!(
+        e.message.contains(&MAX_ACCEPTED_SAMPLES.to_string()),
+        "{}",
+        e.message
+    );
 }
 
 #[test]

@@ -115,6 +115,10 @@ impl Tool for Freeze {
         c.radius("/radius_m", self.radius_m)
     }
 
+    fn reads_solution(&self) -> bool {
+        true
+    }
+
     fn keeps_solution(&self) -> bool {
         true
     }

@@ -46,11 +46,16 @@ impl Tool for Erosion {
         Ok(())
     }
 
+    fn reads_solution(&self) -> bool {
+        true
+    }
+
     fn grid_sweeps(&self) -> u64 {
         u64::from(self.iterations)
     }
 
     fn apply(&self, r: &mut Raster) -> Result<(), RegionError> {
+        let cancel = r.cancel.clone();
         let (canvas, current) = r.solved()?;
         canvas.erode(
             self.center,
@@ -58,7 +63,8 @@ impl Tool for Erosion {
             self.talus_deg,
             self.iterations,
             current,
-        );
+            &cancel,
+        )?;
         Ok(())
     }
 }
@@ -109,6 +115,10 @@ impl Tool for HydraulicErosion {
         c.number("/erosion_rate", self.erosion_rate, 0.0, 1.0)
     }
 
+    fn reads_solution(&self) -> bool {
+        true
+    }
+
     fn droplet_steps(&self) -> u64 {
         u64::from(self.droplets) * u64::from(self.steps)
     }
@@ -120,8 +130,9 @@ impl Tool for HydraulicErosion {
             erosion_rate: self.erosion_rate,
             seed: droplet_seed(r.plan.seed, self.seed),
         };
+        let cancel = r.cancel.clone();
         let (canvas, current) = r.solved()?;
-        canvas.hydraulic_erode(self.center, self.radius_m, &d, current);
+        canvas.hydraulic_erode(self.center, self.radius_m, &d, current, &cancel)?;
         Ok(())
     }
 }

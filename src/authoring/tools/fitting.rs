@@ -79,6 +79,10 @@ impl Tool for Regularize {
         Ok(())
     }
 
+    fn reads_solution(&self) -> bool {
+        true
+    }
+
     fn apply(&self, r: &mut Raster) -> Result<(), RegionError> {
         let (canvas, current) = r.solved()?;
         canvas.regularize(current);

@@ -29,7 +29,9 @@
 //!    `#[serde(deny_unknown_fields)]`, whose fields are the operation's JSON fields, and
 //!    `impl Tool` for it: [`Tool::check`] with the [`Check`] helpers, [`Tool::apply`] on the
 //!    [`Raster`] (its canvas, the world plan, the heights solved so far), and
-//!    [`Tool::droplet_steps`] or [`Tool::keeps_solution`] where the defaults do not hold.
+//!    [`Tool::droplet_steps`], [`Tool::grid_sweeps`], [`Tool::reads_solution`] (a tool that
+//!    calls [`Raster::solved`]: its solve counts in the region's work budget) or
+//!    [`Tool::keeps_solution`] where the defaults do not hold.
 //! 2. One line at the end of the `tools!` list below: `mod my_family: MyTool,` declares the new
 //!    file's module and registers the tool (a further tool of an existing family's file is
 //!    `my_family: MyOtherTool,`, without `mod`). The tool's name in snake case is its `op` tag
@@ -54,19 +56,27 @@ pub trait Tool {
     /// [`SpecError`] naming the field and the reason.
     fn check(&self, c: &Check) -> Result<(), SpecError>;
 
-    /// Droplet steps (`droplets × steps`) the operation spends: the region's droplet budget,
-    /// [`super::spec_tools::MAX_REGION_DROPLET_STEPS`], is checked when a scene is accepted
+    /// Droplet steps (`droplets × steps`) the operation spends: each counts for
+    /// [`super::spec_tools::DROPLET_STEP_CELLS`] cell steps of the region's budget,
+    /// [`super::spec_tools::MAX_REGION_CELL_STEPS`], checked when a scene is accepted
     /// ([`RegionSpec::check_cost`], which names the operation's `droplets` field).
     fn droplet_steps(&self) -> u64 {
         0
     }
 
     /// Sweeps of the whole region grid the operation makes (thermal erosion: its iterations):
-    /// the region's budget of `sweeps × samples²` cell steps,
-    /// [`super::spec_tools::MAX_REGION_EROSION_CELL_STEPS`], is checked when a scene is accepted
+    /// `sweeps × samples²` cell steps of the region's budget,
+    /// [`super::spec_tools::MAX_REGION_CELL_STEPS`], checked when a scene is accepted
     /// ([`RegionSpec::check_cost`], which names the operation's `iterations` field).
     fn grid_sweeps(&self) -> u64 {
         0
+    }
+
+    /// Whether the operation reads the heights solved before it (so that the region is
+    /// reconstructed first, a solve counted in the region's budget,
+    /// [`super::spec_tools::MAX_REGION_CELL_STEPS`]).
+    fn reads_solution(&self) -> bool {
+        false
     }
 
     /// Whether the heights solved before the operation still solve the problem after it (a

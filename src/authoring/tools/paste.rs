@@ -104,9 +104,21 @@ impl Tool for CopyPaste {
             (None, Some(seed)) => {
                 let other = WorldPlan::new(*seed, plan.params.clone())
                     .map_err(|e| source_err(e.to_string()))?;
-                PasteSource::sample(&other, self.source_min, self.source_max, spacing)
+                PasteSource::sample_on(
+                    &other,
+                    self.source_min,
+                    self.source_max,
+                    spacing,
+                    &r.cancel,
+                )?
             }
-            (None, None) => PasteSource::sample(plan, self.source_min, self.source_max, spacing),
+            (None, None) => PasteSource::sample_on(
+                plan,
+                self.source_min,
+                self.source_max,
+                spacing,
+                &r.cancel,
+            )?,
         };
         let at = Placement {
             target: self.target,

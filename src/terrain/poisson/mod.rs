@@ -129,7 +129,8 @@ pub use multigrid::{
 };
 pub use problem::{OwnedProblem, Problem};
 
-/// A problem or option the solver rejects, naming the offending field.
+/// A problem or option the solver rejects, naming the offending field, or a solve stopped by its
+/// cancellation flag.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PoissonError {
     /// A field is out of range.
@@ -140,6 +141,9 @@ pub enum PoissonError {
         /// What is wrong with it.
         message: String,
     },
+    /// The solve's cancellation flag was set ([`Solver::set_cancel`]); nothing was solved.
+    #[error("cancelled")]
+    Cancelled,
 }
 
 impl PoissonError {

@@ -15,6 +15,7 @@ use super::ops::{
 };
 use super::problem::Problem;
 use super::PoissonError;
+use crate::terrain::cancel::Cancel;
 
 /// Default stopping tolerance on the relative residual `‖b − A h‖₂ / ‖b‖₂`.
 pub const DEFAULT_TOLERANCE: f64 = 1e-6;
@@ -173,6 +174,8 @@ pub struct Solver {
     /// within the tolerance).
     last_converged: bool,
     pool: Option<rayon::ThreadPool>,
+    /// Polled before every finest-level cycle ([`Self::set_cancel`]).
+    cancel: Cancel,
 }
 
 impl Solver {
@@ -220,7 +223,15 @@ impl Solver {
             has_solution: false,
             last_converged: false,
             pool,
+            cancel: Cancel::never(),
         })
+    }
+
+    /// Makes every later solve poll `cancel` before each finest-level cycle: once it is set,
+    /// the solve stops and answers [`PoissonError::Cancelled`], and the solver holds no
+    /// solution (the next solve starts cold).
+    pub fn set_cancel(&mut self, cancel: Cancel) {
+        self.cancel = cancel;
     }
 
     /// The grid.
@@ -327,7 +338,19 @@ impl Solver {
                 ));
             }
         }
-        Ok(self.on_pool(|s| s.run(problem, start)))
+        let report = self.on_pool(|s| s.run(problem, start));
+        self.cancelled()?;
+        Ok(report)
+    }
+
+    /// [`PoissonError::Cancelled`] (and no solution kept) if the cancellation flag is set.
+    fn cancelled(&mut self) -> Result<(), PoissonError> {
+        if self.cancel.is_cancelled() {
+            self.has_solution = false;
+            self.last_converged = false;
+            return Err(PoissonError::Cancelled);
+        }
+        Ok(())
     }
 
     /// [`Self::solve`] with the bulk of the work on `device`: the problem is loaded, the device
@@ -414,7 +437,7 @@ impl Solver {
             return self.solve(problem, Start::Warm);
         }
         problem.validate_rows(damage.j0, damage.j1)?;
-        Ok(self.on_pool(|s| {
+        let report = self.on_pool(|s| {
             let relaxed_before = s.relaxed();
             let mask_change = s.update_mask(problem, damage.j0, damage.j1);
             let (bb, load_change) = problem.load_rows(
@@ -439,7 +462,9 @@ impl Solver {
                 (a, b) => a.or(b),
             };
             s.finish(Start::Warm, bb, change, relaxed_before)
-        }))
+        });
+        self.cancelled()?;
+        Ok(report)
     }
 
     /// The solution in metres, row-major `nx · nz`, rounded to `f32` (fixed samples are exactly
@@ -675,7 +700,7 @@ impl Solver {
             loop {
                 let rel = residual(l, &mut r).sqrt() / bnorm;
                 history.push(rel);
-                if rel <= o.tolerance || done == o.max_cycles {
+                if rel <= o.tolerance || done == o.max_cycles || self.cancel.is_cancelled() {
                     return (done, history);
                 }
                 smooth(l, o.pre_smooth + o.post_smooth);
@@ -686,7 +711,7 @@ impl Solver {
             let (a, b) = self.levels.split_at_mut(1);
             let rel = residual_restrict(&a[0], &mut b[0]).sqrt() / bnorm;
             history.push(rel);
-            if rel <= o.tolerance || done == o.max_cycles {
+            if rel <= o.tolerance || done == o.max_cycles || self.cancel.is_cancelled() {
                 return (done, history);
             }
             let slow = done > 0 && rel > AUTO_SWITCH_FACTOR * history[history.len() - 2];
@@ -740,7 +765,7 @@ impl Solver {
             done += 1;
             let rel = rr.sqrt() / bnorm;
             history.push(rel);
-            if rel <= o.tolerance || done == max_cycles {
+            if rel <= o.tolerance || done == max_cycles || self.cancel.is_cancelled() {
                 break;
             }
             precondition(&mut kr.zl, &mut self.levels, &o, &mut self.scratch);

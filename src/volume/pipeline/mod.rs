@@ -65,6 +65,9 @@ pub enum PipelineError {
     /// No seed primitive touches the region, so `S` has nothing to propagate from.
     #[error("no seed primitive (seed curve, mesh or heightfield) intersects the region")]
     NoSurface,
+    /// The solve's cancellation flag was set ([`crate::terrain::cancel::Cancel`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 impl PipelineError {
