@@ -1035,3 +1035,56 @@ fn multigrid_cycles_reduce_the_residual_steadily() {
         r[0]
     );
 }
+
+/// A volume solve polls its cancellation flag between stages: a flag set while the first
+/// diffusion runs (here by the offload hook the normal diffusion calls) ends the solve with
+/// `Cancelled` before the next stage pair, a flag set before the start ends it at once, and a
+/// flag nobody sets gives `generate`'s fields.
+#[test]
+fn a_cancelled_solve_stops_between_stages() {
+    use strata::terrain::cancel::Cancel;
+    use strata::volume::offload::VolumeOffload;
+    use strata::volume::pipeline::generate_on;
+
+    struct CancelsOnFirstSweep(Cancel, std::sync::atomic::AtomicUsize);
+    impl VolumeOffload for CancelsOnFirstSweep {
+        fn pm_sweeps(
+            &self,
+            _: [usize; 3],
+            _: &[Vec<f32>],
+            _: &[u8],
+            _: f32,
+            _: u32,
+        ) -> Option<Vec<Vec<f32>>> {
+            self.1.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            self.0.cancel();
+            None
+        }
+    }
+    let (grid, scene, _) = scenes::arch([32, 16, 24]);
+    let params = PipelineParams::default();
+    let cancel = Cancel::new();
+    let hook = CancelsOnFirstSweep(cancel.clone(), Default::default());
+    assert_eq!(
+        generate_on(&grid, &scene, &params, &hook, &cancel).err(),
+        Some(PipelineError::Cancelled)
+    );
+    assert!(
+        hook.1.load(std::sync::atomic::Ordering::Relaxed) > 0,
+        "the diffusion ran"
+    );
+
+    let set = Cancel::new();
+    set.cancel();
+    let untouched = CancelsOnFirstSweep(Cancel::new(), Default::default());
+    assert_eq!(
+        generate_on(&grid, &scene, &params, &untouched, &set).err(),
+        Some(PipelineError::Cancelled)
+    );
+    assert_eq!(untouched.1.load(std::sync::atomic::Ordering::Relaxed), 0);
+
+    let never = strata::volume::offload::CpuOnly;
+    let a = generate_on(&grid, &scene, &params, &never, &Cancel::never()).expect("solves");
+    let b = generate(&grid, &scene, &params).expect("solves");
+    assert_eq!(a.surface, b.surface);
+}

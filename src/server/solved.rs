@@ -7,8 +7,8 @@
 //! gone (its request timed out or its client left): the waiters are counted, and the one whose
 //! departure leaves none sets the solve's [`Cancel`], which the solver polls, so the blocking
 //! thread stops within a bounded time and its memory is returned (a volume region's pipeline
-//! polls it only before it starts, and then runs to its end). A cancelled solve is never kept,
-//! and a request arriving after the cancellation starts a new one.
+//! polls it between its stages, so a stage already running ends first). A cancelled solve is
+//! never kept, and a request arriving after the cancellation starts a new one.
 
 use crate::cache::memo::lock;
 use crate::cache::Memo;

@@ -3,8 +3,8 @@
 //!
 //! The caller hands a [`Cancel`] to the `_on` entry points beside the offload hooks; the long
 //! loops poll it at bounded intervals (a band of lattice rows while a region samples the world,
-//! a multigrid cycle, 64 droplets, a thermal-erosion sweep; the volume pipeline only before it
-//! starts) and, once it is set, stop and answer [`Cancelled`]. A cancelled
+//! a multigrid cycle, 64 droplets, a thermal-erosion sweep; the volume pipeline between its
+//! stages) and, once it is set, stop and answer [`Cancelled`]. A cancelled
 //! computation returns no partial result, so its caller has nothing to keep. The flag is a
 //! plain atomic: whoever decides that nobody needs the result any more (the server, when every
 //! request waiting for it has gone) sets it with [`Cancel::cancel`].

@@ -427,8 +427,8 @@ pub fn solve_volume(
 }
 
 /// [`solve_volume`] with the pipeline's twinned stages offered to `dev`
-/// ([`super::offload`]), polling `cancel` before the ground is sampled and before the pipeline
-/// runs (not yet inside the pipeline's stages).
+/// ([`super::offload`]), polling `cancel` before the ground is sampled, before the pipeline runs
+/// and between its stages ([`pipeline::generate_on`]; not inside a stage).
 ///
 /// # Errors
 /// As [`solve_volume`], and [`pipeline::PipelineError::Cancelled`] once `cancel` is set.
@@ -470,7 +470,7 @@ pub fn solve_volume_on(
         ..PipelineParams::default()
     };
     cancel.check().map_err(cancelled)?;
-    let fields = pipeline::generate_on(&spec.grid, &scene, &params, dev)?;
+    let fields = pipeline::generate_on(&spec.grid, &scene, &params, dev, cancel)?;
     Ok(SolvedVolume {
         spec: spec.clone(),
         fields,

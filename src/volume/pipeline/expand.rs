@@ -79,6 +79,7 @@ use super::curve::{ConstraintPoint, FeatureCurve, MAX_CONTROL_POINTS};
 use super::grid::{add, cross, dot, length, normalize, scale, sub, Grid};
 use super::region::{PipelineParams, Scene};
 use super::PipelineError;
+use crate::terrain::cancel::Cancel;
 use crate::volume::offload::{CpuOnly, VolumeOffload};
 use serde::{Deserialize, Serialize};
 
@@ -607,20 +608,22 @@ pub fn expand_scene(
     params: &PipelineParams,
     expand: &ExpandParams,
 ) -> Result<Scene, PipelineError> {
-    expand_scene_on(grid, scene, params, expand, &CpuOnly)
+    expand_scene_on(grid, scene, params, expand, &CpuOnly, &Cancel::never())
 }
 
 /// [`expand_scene`] with the guidance pass's twinned stages and the smooth bitangents offered
-/// to `dev` ([`crate::volume::offload`]).
+/// to `dev` ([`crate::volume::offload`]), polling `cancel` in the guidance pass
+/// ([`super::generate_on`]) and after it.
 ///
 /// # Errors
-/// As [`expand_scene`].
+/// As [`expand_scene`], and [`PipelineError::Cancelled`] once `cancel` is set.
 pub fn expand_scene_on(
     grid: &Grid,
     scene: &Scene,
     params: &PipelineParams,
     expand: &ExpandParams,
     dev: &dyn VolumeOffload,
+    cancel: &Cancel,
 ) -> Result<Scene, PipelineError> {
     expand.validate().map_err(|e| e.within("expand_curves"))?;
     if scene.curves.is_empty() {
@@ -634,7 +637,9 @@ pub fn expand_scene_on(
             ..*params
         },
         dev,
+        cancel,
     )?;
+    cancel.check().map_err(|_| PipelineError::Cancelled)?;
     let b = dev
         .smooth_bitangents(grid.dims, &first.bitangent, BITANGENT_SWEEPS)
         .filter(|b| b.iter().all(|c| c.len() == grid.len()))

@@ -19,6 +19,7 @@ use super::propagate::{propagate_material, propagate_surface};
 use super::proxy::{curve_proxy, heightfield_proxy, mesh_proxy, Heightfield, InputMesh};
 use super::voxelize::{voxelize, Voxelized};
 use super::PipelineError;
+use crate::terrain::cancel::Cancel;
 use crate::volume::offload::{CpuOnly, VolumeOffload};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
@@ -326,33 +327,38 @@ pub fn generate(
     scene: &Scene,
     params: &PipelineParams,
 ) -> Result<RegionFields, PipelineError> {
-    generate_on(grid, scene, params, &CpuOnly)
+    generate_on(grid, scene, params, &CpuOnly, &Cancel::never())
 }
 
 /// [`generate`] with the twinned stages (Perona–Malik sweeps, surface propagation, smooth
-/// bitangents) offered to `dev` ([`crate::volume::offload`]).
+/// bitangents) offered to `dev` ([`crate::volume::offload`]), polling `cancel` between stages:
+/// before the voxelization, after it, and after each of the two overlapped pairs of stages.
 ///
 /// # Errors
-/// As [`generate`].
+/// As [`generate`], and [`PipelineError::Cancelled`] once `cancel` is set.
 pub fn generate_on(
     grid: &Grid,
     scene: &Scene,
     params: &PipelineParams,
     dev: &dyn VolumeOffload,
+    cancel: &Cancel,
 ) -> Result<RegionFields, PipelineError> {
+    let check = || cancel.check().map_err(|_| PipelineError::Cancelled);
+    check()?;
     if let Some(e) = &params.expand {
         // §5.1: expand the curves along a first guidance pass, then solve for the expanded ones.
-        let expanded = super::expand::expand_scene_on(grid, scene, params, e, dev)?;
+        let expanded = super::expand::expand_scene_on(grid, scene, params, e, dev, cancel)?;
         let params = PipelineParams {
             expand: None,
             ..*params
         };
-        return generate_on(grid, &expanded, &params, dev);
+        return generate_on(grid, &expanded, &params, dev, cancel);
     }
     let run = Stopwatch::start();
     let grid = Grid::new(grid.dims, grid.origin, grid.spacing)?;
     let mut times = Timing::default();
     let v = build_voxels(&grid, scene, params, &mut times)?;
+    check()?;
 
     // The stages after the voxelization form two chains: material propagation (§4.4) needs
     // only the voxelization, surface propagation (§4.5) needs the normals, the noise diffusion
@@ -376,6 +382,7 @@ pub fn generate_on(
             },
         ),
     );
+    check()?;
     let (surf, mut r) = overlapped(
         &mut times,
         (
@@ -391,6 +398,7 @@ pub fn generate_on(
             },
         ),
     );
+    check()?;
     let beta = r.pop().expect("beta");
     let alpha = r.pop().expect("alpha");
     Ok(finish(
