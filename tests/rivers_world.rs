@@ -49,6 +49,28 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     );
 }
 
+/// A world stored with `valleys: 2` and the lattice split (the default of new worlds from
+/// `b09fbec`) keeps its bytes (`tests/fixtures/valleys2-world/`).
+#[tokio::test]
+async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
+    const WORLD2: &str = "2e8854b197caf02ebd61ed80";
+    const FIXTURE2: &str = "valleys2-world";
+    let (_data, server) = common::fixture::serve(FIXTURE2);
+    let checked =
+        common::fixture::check_pinned(&server, FIXTURE2, "tiles.blake3", |format, key| {
+            let query = if format == "2" { "&format=2" } else { "" };
+            format!("/v1/worlds/{WORLD2}/tiles/{key}.bin?v=1{query}")
+        })
+        .await;
+    assert_eq!(checked, 20, "every fixture tile was checked");
+    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD2}/versions/1")).await;
+    assert_eq!(status, 200);
+    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
+    let earth = &doc["scene"]["world"]["earth"];
+    assert_eq!(earth["rivers"]["valleys"], 2, "{earth}");
+    assert_eq!(earth["lattice_cells"], 16, "{earth}");
+}
+
 #[test]
 fn new_scenes_carve_the_second_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
