@@ -8,7 +8,7 @@
 // and removes at most CARVE_MAX_M.
 //
 // The river job itself (the drainage network, its pieces and their binning) is built on the CPU
-// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (twelve f32), `bin_start` and
+// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (seventeen f32), `bin_start` and
 // `bin_pieces` are the job's bins in CSR form, and `CarveParams` is
 // `gpu::layout::GpuCarveParams`, field for field.
 //
@@ -33,10 +33,15 @@ struct CarveParams {
     bin_m: f32,
     bins_w: u32,
     bins_h: u32,
-    _pad: u32,
+    // Amplitude and stream seed of the walls' width noise (`RiverJob::wall_noise`, 0: none).
+    wall_noise: f32,
+    wall_seed: u32,
+    _pad0: u32,
+    _pad1: u32,
 }
 
-// `rivers::Piece`: one straight piece of a river's centre line and its valley.
+// `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
+// slopes `sa` and `sb`, straight where both are zero) and its valley.
 struct Piece {
     ax: f32,
     az: f32,
@@ -51,6 +56,10 @@ struct Piece {
     reach: f32,
     inv_len2: f32,
     floodplain: f32,
+    sax: f32,
+    saz: f32,
+    sbx: f32,
+    sbz: f32,
 }
 
 const WORKGROUP: u32 = 64u;
@@ -90,14 +99,28 @@ fn sqrt0(x: f32) -> f32 {
     return sqrt(x);
 }
 
-// `rivers::profile` (its height only): piece `p` applied to a sample at `(x, z)` of height `h`.
-// Beyond the reach, or the widened valley, the height is returned unchanged, bit for bit.
-fn profile(p: Piece, x: f32, z: f32, h: f32) -> f32 {
+// `RiverJob::wall_factor`: the walls' width factor at `(x, z)`, exactly 1 without wall noise.
+fn wall_factor(x: f32, z: f32) -> f32 {
+    if (params.wall_noise == 0.0) {
+        return 1.0;
+    }
+    let n = lattice(rn(x * WALL_NOISE_INV_M), rn(z * WALL_NOISE_INV_M), params.wall_seed);
+    return 1.0 + rn(params.wall_noise * clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP));
+}
+
+// `rivers::profile` (its height only, `carve::profile_at_foot` with the walls' width factor
+// `wall`): piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the
+// widened valley, the height is returned unchanged, bit for bit.
+fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
     let abx = p.bx - p.ax;
     let abz = p.bz - p.az;
     let t = clamp01(rn((rn((x - p.ax) * abx) + rn((z - p.az) * abz)) * p.inv_len2));
-    let dx = x - (p.ax + rn(t * abx));
-    let dz = z - (p.az + rn(t * abz));
+    // `carve::foot`: the distance to the curve's point at `t`.
+    let k = rn(t * (1.0 - t));
+    let ka = rn(k * (1.0 - t));
+    let kb = rn(k * t);
+    let dx = x - ((p.ax + rn(t * abx)) + (rn(ka * p.sax) + rn(kb * p.sbx)));
+    let dz = z - ((p.az + rn(t * abz)) + (rn(ka * p.saz) + rn(kb * p.sbz)));
     let d2 = rn(dx * dx) + rn(dz * dz);
     if (d2 >= rn(p.reach * p.reach)) {
         return h;
@@ -111,7 +134,7 @@ fn profile(p: Piece, x: f32, z: f32, h: f32) -> f32 {
         if (p.floodplain > floor) {
             floor = p.floodplain;
         }
-        let v = clamp_to(floor + div_rn(h - w, WALL_SLOPE), p.valley, p.reach);
+        let v = clamp_to(floor + rn(div_rn(h - w, WALL_SLOPE) * wall), p.valley, p.reach);
         if (d < v) {
             let g = smoothstep_rn(floor, v, d);
             c = w + rn((h - w) * g);
@@ -169,8 +192,12 @@ fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workg
     let h = heights[idx];
     var c = h;
     let range = bin_range(x, z);
+    var wall = 1.0;
+    if (range.x < range.y) {
+        wall = wall_factor(x, z);
+    }
     for (var k = range.x; k < range.y; k++) {
-        c = min(c, profile(pieces[bin_pieces[k]], x, z, h));
+        c = min(c, profile(pieces[bin_pieces[k]], x, z, h, wall));
     }
     heights[idx] = max(c, h - CARVE_MAX_M);
 }

@@ -240,7 +240,7 @@ fn gpu_river_carve_matches_cpu() {
         key(0, -43, 72),
         key(0, 968, 600),
         key(0, -47, 72),
-        key(0, -37, 72),
+        key(0, -38, 72),
     ];
     let (mut max_dh, mut differing, mut samples, mut clamped) = (0.0f32, 0, 0, 0);
     let mut beyond_by_lod = std::collections::BTreeMap::new();

@@ -429,6 +429,10 @@ fn floodplain_piece() -> strata::terrain::earth::rivers::Piece {
         reach: 1000.0,
         inv_len2: 1.0 / (100.0 * 100.0 + strata::terrain::earth::rivers::PIECE_LEN2_EPS),
         floodplain: 60.0,
+        sax: 0.0,
+        saz: 0.0,
+        sbx: 0.0,
+        sbz: 0.0,
     }
 }
 
@@ -538,4 +542,62 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
     assert!(tiles >= 8, "only {tiles} tiles with river lines");
     assert!(wet > 0, "no sample of the tiles lies in a river channel");
     assert!(left_out > 0, "the pruning left no piece out of any bin");
+}
+
+/// Largest turn, degrees, between the end of each piece and the start of the next along the
+/// edges out of the `n × n` nodes from `(i0, k0)`: the direction of a piece at its ends is the
+/// tangent of its parabola, `(b − a) ± s`, and for straight pieces the chord.
+fn turns(plan: &WorldPlan, i0: i64, k0: i64, n: i64) -> Vec<f32> {
+    let (e, rp) = parts(plan);
+    let mut net = Network::new(e, rp);
+    let mut out = Vec::new();
+    for k in k0..k0 + n {
+        for i in i0..i0 + n {
+            let Some(edge) = net.edge(i, k) else { continue };
+            // The piece's direction at an end: the chord plus the offset's slope there.
+            let tangent = |j: usize, end: bool| {
+                let (a, b, s) = (edge.points[j], edge.points[j + 1], edge.bends[j]);
+                if end {
+                    (b[0] - a[0] - s[2], b[1] - a[1] - s[3])
+                } else {
+                    (b[0] - a[0] + s[0], b[1] - a[1] + s[1])
+                }
+            };
+            for j in 0..edge.bends.len() - 1 {
+                let (ux, uz) = tangent(j, true);
+                let (vx, vz) = tangent(j + 1, false);
+                let cos = (ux * vx + uz * vz) / (ux.hypot(uz) * vx.hypot(vz));
+                out.push(cos.clamp(-1.0, 1.0).acos().to_degrees());
+            }
+        }
+    }
+    out.sort_by(f32::total_cmp);
+    out
+}
+
+/// `valleys: 3` (the default) bends each piece so that it leaves and reaches its ends along the
+/// river curve's tangents: consecutive pieces meet without a corner (below a degree at the 99th
+/// percentile; only hairpins, whose tangents are clamped to 45° off the chord, turn more) where
+/// `valleys: 2`'s eight straight pieces turn corners of about ten degrees, so the valley walls
+/// follow the curve without a facet per piece.
+#[test]
+fn bent_pieces_meet_their_neighbours_without_corners() {
+    let new = plan();
+    let mut old_params = WorldParams::default();
+    old_params
+        .earth
+        .as_mut()
+        .and_then(|e| e.rivers.as_mut())
+        .expect("rivers")
+        .valleys = 2;
+    let old = WorldPlan::new(42, old_params).expect("valleys 2 world");
+    let (bent, straight) = (turns(&new, -20, -20, 40), turns(&old, -20, -20, 40));
+    assert!(bent.len() > 1000, "{} joins", bent.len());
+    let p = |v: &[f32], q: f64| v[((v.len() - 1) as f64 * q) as usize];
+    let report = format!(
+        "turns at joins, degrees: bent p50 {:.2} p99 {:.2} max {:.2}; straight p50 {:.2} p99 {:.2} max {:.2}",
+        p(&bent, 0.5), p(&bent, 0.99), p(&bent, 1.0), p(&straight, 0.5), p(&straight, 0.99), p(&straight, 1.0)
+    );
+    assert!(p(&bent, 0.99) < 1.0, "{report}");
+    assert!(p(&straight, 0.5) > 5.0, "{report}");
 }

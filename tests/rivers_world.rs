@@ -1,7 +1,7 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 2` and `gullies: 2`,
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 3` and `gullies: 2`,
 //! whose tiles differ.
 
 mod common;
@@ -34,7 +34,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let earth = &doc["world"]["earth"];
     assert!(earth.get("gullies").is_none(), "{earth}");
 
-    // A bare seed is the new default, `valleys: 2`: the carved tile over a river differs.
+    // A bare seed is the new default, `valleys: 3`: the carved tile over a river differs.
     let stored = expected
         .lines()
         .find(|l| l.starts_with("1 3/-24/50 "))
@@ -45,11 +45,11 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     assert_ne!(
         blake3::hash(&bare).to_hex().as_str(),
         stored,
-        "bare seeds carve valleys: 2 and incised gullies"
+        "bare seeds carve valleys: 3 and incised gullies"
     );
 }
 
-/// A world stored with `valleys: 2` and the lattice split (the default of new worlds from
+/// A world stored with `valleys: 2` and the lattice split (the default of new worlds at
 /// `b09fbec`) keeps its bytes (`tests/fixtures/valleys2-world/`).
 #[tokio::test]
 async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
@@ -72,12 +72,12 @@ async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
 }
 
 #[test]
-fn new_scenes_carve_the_second_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_third_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 2);
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 3);
     assert_eq!(scene["world"]["earth"]["gullies"], 2);
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(3);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 3 is refused");
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(4);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 4 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
 }

@@ -345,13 +345,18 @@ fn river_carve_structs_match_the_wgsl_layout() {
             z0,
             bin_m,
             bins_w,
-            bins_h
+            bins_h,
+            wall_noise,
+            wall_seed
         ]
     );
     check_layout!(
         &module,
         "Piece",
         Piece,
-        [ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2, floodplain]
+        [
+            ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2, floodplain,
+            sax, saz, sbx, sbz
+        ]
     );
 }

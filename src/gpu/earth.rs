@@ -98,6 +98,8 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("CARVE_MAX_M", rivers::CARVE_MAX_M),
         ("PIECE_LEN2_EPS", rivers::PIECE_LEN2_EPS),
         ("WALL_SLOPE", rivers::WALL_SLOPE),
+        ("WALL_NOISE_INV_M", rivers::WALL_NOISE_INV_M),
+        ("WALL_NOISE_CLAMP", rivers::WALL_NOISE_CLAMP),
     ]
 }
 
@@ -269,7 +271,10 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         bin_m: rj.bin_m,
         bins_w,
         bins_h,
-        _pad: 0,
+        wall_noise: rj.wall_noise,
+        wall_seed: rj.wall_seed,
+        _pad0: 0,
+        _pad1: 0,
     })
 }
 

@@ -313,8 +313,8 @@ pub struct GpuEarthParams {
     pub _pad2: u32,
 }
 
-/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 48 bytes): the rectangle of the heights
-/// and the bin grid of `terrain::earth::rivers::RiverJob`. The pieces are uploaded as
+/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 64 bytes): the rectangle of the heights,
+/// the bin grid of `terrain::earth::rivers::RiverJob` and its walls' width noise. The pieces are uploaded as
 /// `rivers::Piece` itself, whose `#[repr(C)]` layout is the WGSL `Piece`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -341,6 +341,12 @@ pub struct GpuCarveParams {
     pub bins_w: u32,
     /// `RiverJob::bins_h`, or 0 when the job has no bins.
     pub bins_h: u32,
+    /// `RiverJob::wall_noise`: amplitude of the walls' width noise (0: none).
+    pub wall_noise: f32,
+    /// `RiverJob::wall_seed`.
+    pub wall_seed: u32,
     /// Padding to a multiple of 16 bytes.
-    pub _pad: u32,
+    pub _pad0: u32,
+    /// Padding.
+    pub _pad1: u32,
 }

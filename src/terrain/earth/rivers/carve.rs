@@ -2,15 +2,19 @@
 //! (module docs of [`super`], step 6).
 
 use super::super::super::hash::{hash2, signed_unit};
+use super::super::super::noise::lattice;
 use super::super::EarthPlan;
 use super::network::{Network, Node};
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, VALLEY_MIN, WALL_SLOPE,
+    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M, WALL_SLOPE,
 };
 
-/// One straight piece of a river's centre line, with the profile of its valley. Thirteen `f32`,
-/// the layout of the WGSL twin's storage array.
+/// One piece of a river's centre line, with the profile of its valley: the cubic
+/// `a + t·(b − a) + t·(1 − t)·((1 − t)·sa + t·sb)`, `t ∈ [0, 1]`, whose offset from the chord
+/// leaves `a` with slope `sa` and reaches `b` with slope `−sb` (metres per unit `t`), so its
+/// tangents at the ends are the river curve's (straight where both are zero, as in every world
+/// before `valleys: 3`). Seventeen `f32`, the layout of the WGSL twin's storage array.
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 #[repr(C)]
 pub struct Piece {
@@ -43,6 +47,27 @@ pub struct Piece {
     /// walls rise from the channel's edge): the valley floor is the water level out to the
     /// larger of it and the channel's half-width.
     pub floodplain: f32,
+    /// Slope `sa` of the offset at `a`, metres per unit `t`, normal to the chord (`valleys: 3`;
+    /// 0 before).
+    pub sax: f32,
+    /// Slope `sa`, second component.
+    pub saz: f32,
+    /// Slope `sb` of the offset at `b` (with the sign that makes the offset `t·(1 − t)·sb` near
+    /// `b`), metres per unit `t`, normal to the chord.
+    pub sbx: f32,
+    /// Slope `sb`, second component.
+    pub sbz: f32,
+}
+
+impl Piece {
+    /// Farthest the piece's curve strays from its chord, metres (`max(|sa|, |sb|) / 4`; 0 for a
+    /// straight piece): the distances the carve measures ([`foot`]) are at least the chord's
+    /// less this.
+    pub fn bulge(&self) -> f32 {
+        let a = (self.sax * self.sax + self.saz * self.saz).sqrt();
+        let b = (self.sbx * self.sbx + self.sbz * self.sbz).sqrt();
+        0.25 * a.max(b)
+    }
 }
 
 /// The rivers and lakes that can touch a rectangle of samples: pieces binned on a grid, and the
@@ -79,29 +104,59 @@ pub struct RiverJob {
     pub lakes_w: usize,
     /// Lake level of each node of the window (NaN: none), row-major.
     pub lakes: Vec<f32>,
+    /// `RiverPlan::wall_noise`: amplitude of the walls' width noise (0: none).
+    pub wall_noise: f32,
+    /// `RiverPlan::wall_seed`.
+    pub wall_seed: u32,
 }
 
-/// The foot of the point `(x, z)` on piece `p`: its parameter `t` in `[0, 1]` and the squared
-/// distance, m².
+/// The foot of the point `(x, z)` on piece `p`: its parameter `t` in `[0, 1]`, the projection of
+/// the point on the chord, and the squared distance to the curve's point at `t`, m². For a
+/// straight piece that is the distance to the segment; for a bent one the distance along the
+/// chord's normal to the curve (close to the true distance for the gentle bends of a piece),
+/// which is at least the distance to the segment less [`Piece::bulge`] and, as the pieces'
+/// tangents agree where they meet, joins the next piece's without a crease. With zero slopes
+/// the added term is `+0`, so straight pieces give the bits they gave before bends existed.
 #[inline(always)]
 fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
     let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
     let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
-    let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
+    let k = t * (1.0 - t);
+    let (ka, kb) = (k * (1.0 - t), k * t);
+    let (dx, dz) = (
+        x - (p.ax + t * abx + (ka * p.sax + kb * p.sbx)),
+        z - (p.az + t * abz + (ka * p.saz + kb * p.sbz)),
+    );
     (t, dx * dx + dz * dz)
 }
 
-/// Distance from piece `p`'s segment to the point `(x, z)`, metres.
+/// Distance from piece `p`'s chord (the segment from `a` to `b`) to the point `(x, z)`, metres.
 fn point_distance(p: &Piece, x: f32, z: f32) -> f32 {
-    foot(p, x, z).1.sqrt()
+    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
+    let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
+    let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
+    (dx * dx + dz * dz).sqrt()
 }
 
-/// A lower bound of the distance from piece `p` to the rectangle `[x0, x1] × [z0, z1]`: the
-/// distance between their bounding boxes.
+/// A lower bound of the distance from piece `p`'s chord to the rectangle `[x0, x1] × [z0, z1]`:
+/// the distance between their bounding boxes.
 fn rect_distance(p: &Piece, x0: f32, z0: f32, x1: f32, z1: f32) -> f32 {
     let dx = (x0 - p.ax.max(p.bx)).max(p.ax.min(p.bx) - x1).max(0.0);
     let dz = (z0 - p.az.max(p.bz)).max(p.az.min(p.bz) - z1).max(0.0);
     (dx * dx + dz * dz).sqrt()
+}
+
+/// Derivative by `t` of [`catmull_rom`] at `t`.
+fn catmull_rom_tangent(p: [(f32, f32); 4], t: f32) -> (f32, f32) {
+    let f = |a: f32, b: f32, c: f32, d: f32| {
+        0.5 * ((c - a)
+            + 2.0 * (2.0 * a - 5.0 * b + 4.0 * c - d) * t
+            + 3.0 * (3.0 * b - a - 3.0 * c + d) * t * t)
+    };
+    (
+        f(p[0].0, p[1].0, p[2].0, p[3].0),
+        f(p[0].1, p[1].1, p[2].1, p[3].1),
+    )
 }
 
 /// Catmull–Rom point of the uniform spline through `p0..p3` at `t`.
@@ -128,6 +183,9 @@ pub struct Edge {
     pub to: Node,
     /// The centre line, `RiverPlan::pieces + 1` points (x, z, water level), metres.
     pub points: Vec<[f32; 3]>,
+    /// The offset slopes `[sa, sb]` of each piece between consecutive points, metres per unit
+    /// `t` ([`Piece::sax`]): zero before `valleys: 3`, whose pieces are straight.
+    pub bends: Vec<[f32; 4]>,
 }
 
 impl Network<'_> {
@@ -157,7 +215,23 @@ impl Network<'_> {
         let bend = self.plan.meander
             * signed_unit(hash2(i as i32, k as i32, self.plan.seed ^ 0x7c15_9e3d));
         let pieces = self.plan.pieces;
-        let points = (0..=pieces)
+        // `valleys: 3` bends with `16·t²·(1 − t)²`, flat at the nodes, so the centre line keeps
+        // the Catmull–Rom curve's tangent there instead of turning a corner at every node.
+        let smooth_bend = self.plan.valleys >= 3;
+        let curve = |t: f32| {
+            let (cx, cz) = catmull_rom([p0, p1, p2, p3], t);
+            let u = 4.0 * t * (1.0 - t);
+            let b = if smooth_bend { bend * u * u } else { bend * u };
+            (cx - ez * b, cz + ex * b)
+        };
+        // The direction of `curve` at `t` (`valleys: 3` only).
+        let tangent = |t: f32| {
+            let (cx, cz) = catmull_rom_tangent([p0, p1, p2, p3], t);
+            let u = 4.0 * t * (1.0 - t);
+            let db = bend * 8.0 * u * (1.0 - 2.0 * t);
+            (cx - ez * db, cz + ex * db)
+        };
+        let points: Vec<[f32; 3]> = (0..=pieces)
             .map(|j| {
                 let t = j as f32 / pieces as f32;
                 let (x, z) = if j == 0 {
@@ -165,14 +239,49 @@ impl Network<'_> {
                 } else if j == pieces {
                     p2
                 } else {
-                    let (cx, cz) = catmull_rom([p0, p1, p2, p3], t);
-                    let b = bend * 4.0 * t * (1.0 - t);
-                    (cx - ez * b, cz + ex * b)
+                    curve(t)
                 };
                 [x, z, w0 + (to.w - w0) * t]
             })
             .collect();
-        Some(Edge { from, to, points })
+        // `valleys: 3`: each piece's offset from its chord leaves and reaches its ends along
+        // the curve's tangents there (at most 45° off the chord), so consecutive pieces meet
+        // without a corner. The offset is across the chord only: then the foot of a point of
+        // the piece on its chord is the piece's own parameter, and the carve's distance
+        // ([`foot`]) is nil along the whole centre line.
+        let bends = (0..pieces)
+            .map(|j| {
+                if self.plan.valleys < 3 {
+                    return [0.0; 4];
+                }
+                let (a, b) = (points[j], points[j + 1]);
+                let (abx, abz) = (b[0] - a[0], b[1] - a[1]);
+                let len = (abx * abx + abz * abz).sqrt();
+                if len < 1e-3 {
+                    return [0.0; 4];
+                }
+                let (ux, uz) = (abx / len, abz / len);
+                let (nx, nz) = (-uz, ux);
+                // Metres across the chord per unit `t` of a curve heading along `(tx, tz)`.
+                let slope = |(tx, tz): (f32, f32)| {
+                    let (along, across) = (tx * ux + tz * uz, tx * nx + tz * nz);
+                    if along <= 0.0 {
+                        len * across.signum()
+                    } else {
+                        len * (across / along).clamp(-1.0, 1.0)
+                    }
+                };
+                let sa = slope(tangent(j as f32 / pieces as f32));
+                let sb = -slope(tangent((j + 1) as f32 / pieces as f32));
+                [sa * nx, sa * nz, sb * nx, sb * nz]
+            })
+            .collect();
+        Some(Edge {
+            from,
+            to,
+            points,
+            bends,
+        })
     }
 
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
@@ -211,7 +320,7 @@ impl Network<'_> {
                 } else {
                     (0.0, valley)
                 };
-                for p in edge.points.windows(2) {
+                for (p, bend) in edge.points.windows(2).zip(&edge.bends) {
                     let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
                     pieces.push(Piece {
                         ax: p[0][0],
@@ -227,6 +336,10 @@ impl Network<'_> {
                         reach,
                         inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
                         floodplain,
+                        sax: bend[0],
+                        saz: bend[1],
+                        sbx: bend[2],
+                        sbz: bend[3],
                     });
                 }
             }
@@ -280,7 +393,7 @@ impl Network<'_> {
                 pieces.extend(
                     cached
                         .iter()
-                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < reach_of(p)),
+                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < reach_of(p) + p.bulge()),
                 );
             }
         }
@@ -292,7 +405,8 @@ impl Network<'_> {
         // (bin, piece) pairs in piece order, then sorted by bin with a stable counting sort.
         let mut pairs: Vec<(u32, u32)> = Vec::new();
         for (pi, p) in pieces.iter().enumerate() {
-            let reach = reach_of(p);
+            // A bent piece reaches as far beyond its chord's reach as it strays from the chord.
+            let reach = reach_of(p) + p.bulge();
             let bx0 = ((p.ax.min(p.bx) - reach - x0) / bin_m).floor();
             let bx1 = ((p.ax.max(p.bx) + reach - x0) / bin_m).floor();
             let bz0 = ((p.az.min(p.bz) - reach - z0) / bin_m).floor();
@@ -355,6 +469,8 @@ impl Network<'_> {
             lk0,
             lakes_w,
             lakes,
+            wall_noise: self.plan.wall_noise,
+            wall_seed: self.plan.wall_seed,
         }
     }
 }
@@ -388,12 +504,14 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
-    profile_at_foot(p, t, d2, h)
+    profile_at_foot(p, t, d2, h, 1.0)
 }
 
-/// [`profile`] given the sample's foot on the piece ([`foot`]).
+/// [`profile`] given the sample's foot on the piece ([`foot`]) and the walls' width factor at
+/// the sample ([`RiverJob::wall_factor`]; 1 where the world has no wall noise, which leaves
+/// every bit as it was).
 #[inline(always)]
-fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32) -> (f32, Option<f32>) {
+fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
         return (h, None);
     }
@@ -402,7 +520,7 @@ fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32) -> (f32, Option<f32>) {
     let mut c = h;
     if h > w {
         let floor = p.half_width.max(p.floodplain);
-        let v = (floor + (h - w) / WALL_SLOPE).clamp(p.valley, p.reach);
+        let v = (floor + (h - w) / WALL_SLOPE * wall).clamp(p.valley, p.reach);
         if d < v {
             let g = smoothstep(floor, v, d);
             c = w + (h - w) * g;
@@ -456,12 +574,32 @@ impl RiverJob {
         self.bin(x, z).iter().map(|&i| &self.pieces[i as usize])
     }
 
+    /// The factor of the walls' widths at `(x, z)`: `1 + wall_noise·n`, `n` the value noise
+    /// of [`super::WALL_NOISE_M`] clamped to ±[`super::WALL_NOISE_CLAMP`]; exactly 1 in worlds
+    /// without wall noise.
+    #[inline(always)]
+    pub fn wall_factor(&self, x: f32, z: f32) -> f32 {
+        if self.wall_noise == 0.0 {
+            return 1.0;
+        }
+        let n = lattice(x * WALL_NOISE_INV_M, z * WALL_NOISE_INV_M, self.wall_seed);
+        1.0 + self.wall_noise * n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP)
+    }
+
+    /// The largest [`RiverJob::wall_factor`] anywhere.
+    fn wall_factor_max(&self) -> f32 {
+        1.0 + self.wall_noise * WALL_NOISE_CLAMP
+    }
+
     /// The carved height of a sample at `(x, z)` with height `h`: the lowest of the pieces'
-    /// carves ([`profile`]), removing at most [`CARVE_MAX_M`].
+    /// carves ([`profile`], with the walls' width factor there), removing at most
+    /// [`CARVE_MAX_M`].
     pub fn carve_one(&self, x: f32, z: f32, h: f32) -> f32 {
+        let wall = self.wall_factor(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
-            c = c.min(profile(p, x, z, h).0);
+            let (t, d2) = foot(p, x, z);
+            c = c.min(profile_at_foot(p, t, d2, h, wall).0);
         }
         c.max(h - CARVE_MAX_M)
     }
@@ -500,6 +638,7 @@ impl RiverJob {
         }
         let mut start = Vec::with_capacity(bins + 1);
         let mut entries = Vec::new();
+        let wall_max = self.wall_factor_max();
         for (b, &top) in h_max.iter().enumerate() {
             start.push(entries.len() as u32);
             if top == f32::NEG_INFINITY {
@@ -515,12 +654,12 @@ impl RiverJob {
                 let w_min = p.wa.min(p.wb);
                 let v = if top > w_min {
                     let floor = p.half_width.max(p.floodplain);
-                    (floor + (top - w_min) / WALL_SLOPE).clamp(p.valley, p.reach)
+                    (floor + (top - w_min) / WALL_SLOPE * wall_max).clamp(p.valley, p.reach)
                 } else {
                     p.half_width
                 };
                 let r = v.max(p.half_width) * 1.001 + 1.0;
-                if rect_distance(p, rx0, rz0, rx1, rz1) < r {
+                if rect_distance(p, rx0, rz0, rx1, rz1) < r + p.bulge() {
                     entries.push((i, r * r));
                 }
             }
@@ -537,6 +676,11 @@ impl RiverJob {
         };
         let mut c = h;
         let range = pruned.start[b] as usize..pruned.start[b + 1] as usize;
+        let wall = if range.is_empty() {
+            1.0
+        } else {
+            self.wall_factor(x, z)
+        };
         for &(i, r2) in &pruned.entries[range] {
             let p = &self.pieces[i as usize];
             let (t, d2) = foot(p, x, z);
@@ -547,7 +691,7 @@ impl RiverJob {
             // distance, not its square) never finds a sample in the channel that this does not.
             let in_channel = d2 <= p.half_width * p.half_width * 1.001;
             if d2 < r2 && (in_channel || c > p.wa.min(p.wb) - SKIP_MARGIN_M) {
-                c = c.min(profile_at_foot(p, t, d2, h).0);
+                c = c.min(profile_at_foot(p, t, d2, h, wall).0);
             }
         }
         c.max(h - CARVE_MAX_M)

@@ -45,13 +45,13 @@ pub struct RiverLine {
 impl Network<'_> {
     /// The river lines that reach into `[x0, x1] × [z0, z1]` (metres).
     pub fn lines(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> Vec<RiverLine> {
-        let s = self.plan.spacing_m;
+        let s_m = self.plan.spacing_m;
         let wet = self.plan.wet_q;
-        let margin = 2.0 * s;
-        let ni0 = ((x0 - margin) / s).floor() as i64;
-        let ni1 = ((x1 + margin) / s).floor() as i64;
-        let nk0 = ((z0 - margin) / s).floor() as i64;
-        let nk1 = ((z1 + margin) / s).floor() as i64;
+        let margin = 2.0 * s_m;
+        let ni0 = ((x0 - margin) / s_m).floor() as i64;
+        let ni1 = ((x1 + margin) / s_m).floor() as i64;
+        let nk0 = ((z0 - margin) / s_m).floor() as i64;
+        let nk1 = ((z1 + margin) / s_m).floor() as i64;
         // The wet edges whose curve (with its channel) touches the rectangle.
         let mut edges: Vec<Edge> = Vec::new();
         for k in nk0..=nk1 {
@@ -63,10 +63,25 @@ impl Network<'_> {
                 if e.from.sea {
                     continue;
                 }
+                // `valleys: 3`: a piece touches when the box around its chord, widened by the
+                // channel and the piece's bulge, meets the rectangle (a piece may cross a small
+                // tile between its points). Before, a point within the channel's half-width of
+                // it did, and stored worlds keep that test and their bytes.
                 let hw = channel(e.from.q).0;
-                let touches = e.points.iter().any(|p| {
+                let near_point = |p: &[f32; 3]| {
                     p[0] >= x0 - hw && p[0] <= x1 + hw && p[1] >= z0 - hw && p[1] <= z1 + hw
-                });
+                };
+                let touches = if self.plan.valleys < 3 {
+                    e.points.iter().any(near_point)
+                } else {
+                    e.points.windows(2).zip(&e.bends).any(|(p, b)| {
+                        let m = hw + 0.25 * b[0].hypot(b[1]).max(b[2].hypot(b[3]));
+                        p[0][0].min(p[1][0]) - m <= x1
+                            && p[0][0].max(p[1][0]) + m >= x0
+                            && p[0][1].min(p[1][1]) - m <= z1
+                            && p[0][1].max(p[1][1]) + m >= z0
+                    })
+                };
                 if touches {
                     edges.push(e);
                 }
@@ -109,6 +124,19 @@ impl Network<'_> {
                 let e = &edges[n];
                 let skip = usize::from(!line.points.is_empty());
                 for (j, p) in e.points.iter().enumerate().skip(skip) {
+                    // A bent piece (`valleys: 3`) adds its middle, on the curve the carve
+                    // follows, before its downstream end.
+                    if j > 0 && e.bends[j - 1] != [0.0; 4] {
+                        // The piece's offset at its middle is `(sa + sb) / 8`.
+                        let (a, s) = (e.points[j - 1], e.bends[j - 1]);
+                        line.points.push([
+                            0.5 * (a[0] + p[0]) + 0.125 * (s[0] + s[2]),
+                            0.5 * (a[1] + p[1]) + 0.125 * (s[1] + s[3]),
+                            0.5 * (a[2] + p[2]),
+                        ]);
+                        line.width_m.push(2.0 * channel(e.from.q).0);
+                        line.discharge_m3s.push(discharge_m3s(e.from.q, s_m));
+                    }
                     // Width and discharge change at the downstream node of the edge.
                     let q = if j + 1 == e.points.len() {
                         e.to.q
@@ -117,7 +145,7 @@ impl Network<'_> {
                     };
                     line.points.push(*p);
                     line.width_m.push(2.0 * channel(q).0);
-                    line.discharge_m3s.push(discharge_m3s(q, s));
+                    line.discharge_m3s.push(discharge_m3s(q, s_m));
                 }
                 last = n;
                 at = next[n];

@@ -24,7 +24,10 @@
 //!    Rivers end in the lake; lakes do not spill into further rivers.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
-//!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it. Each piece
+//!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
+//!    `valleys: 3` (the default of new worlds) into [`PIECES_3`] pieces that each bend through
+//!    the curve's point halfway along them (a parabola over the chord, [`Piece::sx`]), so the
+//!    valley's walls follow the curve instead of showing a facet per piece. Each piece
 //!    lowers the samples within its reach (at most [`REACH`] spacings) to its valley profile: the
 //!    parabola `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c` depth, from the
 //!    discharge, `d` the distance to the piece) and the walls below outside it; a sample takes
@@ -37,7 +40,7 @@
 //!    (`F = b`) and the narrowest valley `V` is [`VALLEY_MIN`], growing by discharge to the
 //!    reach (a kilometre and more): every sample between rivers lies in a valley, pulled down
 //!    towards the planes of their water levels, which draws straight facets across the plains.
-//!    With `valleys: 2` (the default of new worlds) the floor is a flat floodplain at `W`
+//!    With `valleys: 2` and `3` the floor is a flat floodplain at `W`
 //!    ([`FLOODPLAIN`] channel half-widths plus [`FLOODPLAIN_MIN_M`]), `V` twice that, so a
 //!    valley is as wide as its walls need and the land beyond keeps its own shape; and the flat
 //!    floor keeps a valley sampled at 64 m from reading as a chain of pits.
@@ -90,6 +93,10 @@ pub const PIECES: usize = 4;
 /// the corners of four pieces, so the centre line follows its curve closer (eight, not more:
 /// the carve's cost grows with the pieces a sample is tested against).
 pub const PIECES_2: usize = 8;
+/// Bent pieces per river edge in `valleys: 3` worlds: each is a parabola through the curve's
+/// point halfway along it, whose ends' tangents nearly agree with its neighbours', so four
+/// follow the curve without the facets of eight straight ones, at half their cost.
+pub const PIECES_3: usize = 4;
 /// A lake's flood visits at most this many nodes.
 pub const LAKE_MAX_NODES: usize = 256;
 /// A lake's flood stays within this many spacings of its pit (Chebyshev distance).
@@ -104,6 +111,17 @@ pub const REACH: f32 = 1.5;
 /// Mean slope of the valley walls the carve makes where the valley is deep (rise over run,
 /// about 25°; the smoothstep's steepest point is 1.5 times that).
 pub const WALL_SLOPE: f32 = 0.47;
+/// Amplitude of the `valleys: 3` walls' width noise: a wall is as wide as the height it climbs
+/// over [`WALL_SLOPE`] times `1 + WALL_NOISE·n`, with `n` value noise of wavelength
+/// [`WALL_NOISE_M`] clamped to ±[`WALL_NOISE_CLAMP`], so the walls reach out in embayments and
+/// in between fall steeper as spurs, instead of running as a canal's even banks.
+pub const WALL_NOISE: f32 = 0.2;
+/// Wavelength of the walls' width noise, metres.
+pub const WALL_NOISE_M: f32 = 192.0;
+/// `1 / WALL_NOISE_M`, 1/m: the noise is read at `(x, z) · WALL_NOISE_INV_M` (CPU and WGSL).
+pub const WALL_NOISE_INV_M: f32 = 1.0 / WALL_NOISE_M;
+/// Largest magnitude of the walls' noise value `n`.
+pub const WALL_NOISE_CLAMP: f32 = 1.5;
 /// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
 pub const FLOODPLAIN: f32 = 4.0;
 /// Half-width of the smallest `valleys: 2` floodplain, metres.
@@ -170,10 +188,15 @@ pub struct RiverPlan {
     pub fingerprint: u64,
     /// `RiverParams::valleys` (step 6): 1 for the first valleys, 2 for floodplain valleys.
     pub valleys: u32,
-    /// Straight pieces per edge: [`PIECES`], or [`PIECES_2`] with `valleys: 2`.
+    /// Pieces per edge: [`PIECES`], [`PIECES_2`] with `valleys: 2`, [`PIECES_3`] with
+    /// `valleys: 3`.
     pub pieces: usize,
     /// Largest bend of an edge: [`MEANDER`], or [`MEANDER_2`] with `valleys: 2`.
     pub meander: f32,
+    /// Amplitude of the walls' width noise: [`WALL_NOISE`] with `valleys: 3`, else 0.
+    pub wall_noise: f32,
+    /// Stream seed of the walls' width noise.
+    pub wall_seed: u32,
 }
 
 impl RiverPlan {
@@ -207,16 +230,18 @@ impl RiverPlan {
             sea_level_m,
             erosion,
             fingerprint,
+            wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
+            wall_seed: stream(seed, purpose::EARTH, 401),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {
                 MEANDER_2
             } else {
                 MEANDER
             },
-            pieces: if params.valleys >= 2 {
-                PIECES_2
-            } else {
-                PIECES
+            pieces: match params.valleys {
+                1 => PIECES,
+                2 => PIECES_2,
+                _ => PIECES_3,
             },
         }
     }
