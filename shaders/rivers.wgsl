@@ -99,17 +99,18 @@ fn sqrt0(x: f32) -> f32 {
     return sqrt(x);
 }
 
-// `RiverJob::wall_factor`: the walls' width factor at `(x, z)`, exactly 1 without wall noise.
-fn wall_factor(x: f32, z: f32) -> f32 {
+// `RiverJob::wall_width`: the width added to the walls at `(x, z)`, metres, exactly 0 without
+// wall noise.
+fn wall_width(x: f32, z: f32) -> f32 {
     if (params.wall_noise == 0.0) {
-        return 1.0;
+        return 0.0;
     }
     let n = lattice(rn(x * WALL_NOISE_INV_M), rn(z * WALL_NOISE_INV_M), params.wall_seed);
-    return 1.0 + rn(params.wall_noise * clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP));
+    return params.wall_noise * (clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP);
 }
 
-// `rivers::profile` (its height only, `carve::profile_at_foot` with the walls' width factor
-// `wall`): piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the
+// `rivers::profile` (its height only, `carve::profile_at_foot` with the walls' added width
+// `wall`, metres): piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the
 // widened valley, the height is returned unchanged, bit for bit.
 fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
     let abx = p.bx - p.ax;
@@ -134,7 +135,7 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
         if (p.floodplain > floor) {
             floor = p.floodplain;
         }
-        let v = clamp_to(floor + rn(div_rn(h - w, WALL_SLOPE) * wall), p.valley, p.reach);
+        let v = clamp_to(floor + div_rn(h - w, WALL_SLOPE) + wall, p.valley, p.reach);
         if (d < v) {
             let g = smoothstep_rn(floor, v, d);
             c = w + rn((h - w) * g);
@@ -192,9 +193,9 @@ fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workg
     let h = heights[idx];
     var c = h;
     let range = bin_range(x, z);
-    var wall = 1.0;
+    var wall = 0.0;
     if (range.x < range.y) {
-        wall = wall_factor(x, z);
+        wall = wall_width(x, z);
     }
     for (var k = range.x; k < range.y; k++) {
         c = min(c, profile(pieces[bin_pieces[k]], x, z, h, wall));

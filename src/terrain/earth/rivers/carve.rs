@@ -104,7 +104,7 @@ pub struct RiverJob {
     pub lakes_w: usize,
     /// Lake level of each node of the window (NaN: none), row-major.
     pub lakes: Vec<f32>,
-    /// `RiverPlan::wall_noise`: amplitude of the walls' width noise (0: none).
+    /// `RiverPlan::wall_noise`: amplitude of the walls' width noise, metres (0: none).
     pub wall_noise: f32,
     /// `RiverPlan::wall_seed`.
     pub wall_seed: u32,
@@ -220,8 +220,13 @@ impl Network<'_> {
         let smooth_bend = self.plan.valleys >= 3;
         let curve = |t: f32| {
             let (cx, cz) = catmull_rom([p0, p1, p2, p3], t);
-            let u = 4.0 * t * (1.0 - t);
-            let b = if smooth_bend { bend * u * u } else { bend * u };
+            // Before `valleys: 3` the bend is `bend·4·t·(1 − t)`, evaluated in that order.
+            let b = if smooth_bend {
+                let u = 4.0 * t * (1.0 - t);
+                bend * u * u
+            } else {
+                bend * 4.0 * t * (1.0 - t)
+            };
             (cx - ez * b, cz + ex * b)
         };
         // The direction of `curve` at `t` (`valleys: 3` only).
@@ -504,12 +509,12 @@ fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
-    profile_at_foot(p, t, d2, h, 1.0)
+    profile_at_foot(p, t, d2, h, 0.0)
 }
 
-/// [`profile`] given the sample's foot on the piece ([`foot`]) and the walls' width factor at
-/// the sample ([`RiverJob::wall_factor`]; 1 where the world has no wall noise, which leaves
-/// every bit as it was).
+/// [`profile`] given the sample's foot on the piece ([`foot`]) and the walls' added width at
+/// the sample ([`RiverJob::wall_width`], metres; 0 where the world has no wall noise, which
+/// leaves every bit as it was).
 #[inline(always)]
 fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
@@ -520,7 +525,7 @@ fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Optio
     let mut c = h;
     if h > w {
         let floor = p.half_width.max(p.floodplain);
-        let v = (floor + (h - w) / WALL_SLOPE * wall).clamp(p.valley, p.reach);
+        let v = (floor + (h - w) / WALL_SLOPE + wall).clamp(p.valley, p.reach);
         if d < v {
             let g = smoothstep(floor, v, d);
             c = w + (h - w) * g;
@@ -574,28 +579,28 @@ impl RiverJob {
         self.bin(x, z).iter().map(|&i| &self.pieces[i as usize])
     }
 
-    /// The factor of the walls' widths at `(x, z)`: `1 + wall_noise·n`, `n` the value noise
-    /// of [`super::WALL_NOISE_M`] clamped to ±[`super::WALL_NOISE_CLAMP`]; exactly 1 in worlds
-    /// without wall noise.
+    /// The width added to the walls at `(x, z)`, metres: `wall_noise·(n + WALL_NOISE_CLAMP)`,
+    /// `n` the value noise of [`super::WALL_NOISE_M`] clamped to ±[`super::WALL_NOISE_CLAMP`],
+    /// so at least 0; exactly 0 in worlds without wall noise.
     #[inline(always)]
-    pub fn wall_factor(&self, x: f32, z: f32) -> f32 {
+    pub fn wall_width(&self, x: f32, z: f32) -> f32 {
         if self.wall_noise == 0.0 {
-            return 1.0;
+            return 0.0;
         }
         let n = lattice(x * WALL_NOISE_INV_M, z * WALL_NOISE_INV_M, self.wall_seed);
-        1.0 + self.wall_noise * n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP)
+        self.wall_noise * (n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP)
     }
 
-    /// The largest [`RiverJob::wall_factor`] anywhere.
-    fn wall_factor_max(&self) -> f32 {
-        1.0 + self.wall_noise * WALL_NOISE_CLAMP
+    /// The largest [`RiverJob::wall_width`] anywhere, metres (0 without wall noise).
+    fn wall_width_max(&self) -> f32 {
+        self.wall_noise * (2.0 * WALL_NOISE_CLAMP)
     }
 
     /// The carved height of a sample at `(x, z)` with height `h`: the lowest of the pieces'
-    /// carves ([`profile`], with the walls' width factor there), removing at most
+    /// carves ([`profile`], with the walls' added width there), removing at most
     /// [`CARVE_MAX_M`].
     pub fn carve_one(&self, x: f32, z: f32, h: f32) -> f32 {
-        let wall = self.wall_factor(x, z);
+        let wall = self.wall_width(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
             let (t, d2) = foot(p, x, z);
@@ -638,7 +643,7 @@ impl RiverJob {
         }
         let mut start = Vec::with_capacity(bins + 1);
         let mut entries = Vec::new();
-        let wall_max = self.wall_factor_max();
+        let wall_max = self.wall_width_max();
         for (b, &top) in h_max.iter().enumerate() {
             start.push(entries.len() as u32);
             if top == f32::NEG_INFINITY {
@@ -654,7 +659,7 @@ impl RiverJob {
                 let w_min = p.wa.min(p.wb);
                 let v = if top > w_min {
                     let floor = p.half_width.max(p.floodplain);
-                    (floor + (top - w_min) / WALL_SLOPE * wall_max).clamp(p.valley, p.reach)
+                    (floor + (top - w_min) / WALL_SLOPE + wall_max).clamp(p.valley, p.reach)
                 } else {
                     p.half_width
                 };
@@ -677,9 +682,9 @@ impl RiverJob {
         let mut c = h;
         let range = pruned.start[b] as usize..pruned.start[b + 1] as usize;
         let wall = if range.is_empty() {
-            1.0
+            0.0
         } else {
-            self.wall_factor(x, z)
+            self.wall_width(x, z)
         };
         for &(i, r2) in &pruned.entries[range] {
             let p = &self.pieces[i as usize];

@@ -25,9 +25,11 @@
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
-//!    `valleys: 3` (the default of new worlds) into [`PIECES_3`] pieces that each bend through
-//!    the curve's point halfway along them (a parabola over the chord, [`Piece::sx`]), so the
-//!    valley's walls follow the curve instead of showing a facet per piece. Each piece
+//!    `valleys: 3` (the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
+//!    from its chord that leaves and reaches its ends along the curve's tangents
+//!    ([`Piece::sax`]; the edge's hashed bend is flat at the nodes), so the centre line has no
+//!    corner and the valley's walls follow the curve instead of showing a facet per piece.
+//!    Each piece
 //!    lowers the samples within its reach (at most [`REACH`] spacings) to its valley profile: the
 //!    parabola `W − c·(1 − (d/b)²)` inside the channel (`b` half-width, `c` depth, from the
 //!    discharge, `d` the distance to the piece) and the walls below outside it; a sample takes
@@ -43,7 +45,9 @@
 //!    With `valleys: 2` and `3` the floor is a flat floodplain at `W`
 //!    ([`FLOODPLAIN`] channel half-widths plus [`FLOODPLAIN_MIN_M`]), `V` twice that, so a
 //!    valley is as wide as its walls need and the land beyond keeps its own shape; and the flat
-//!    floor keeps a valley sampled at 64 m from reading as a chain of pits.
+//!    floor keeps a valley sampled at 64 m from reading as a chain of pits. With `valleys: 3`
+//!    `V'` grows by 0 to 90 m of value noise ([`WALL_NOISE`]), so the walls of valleys in the
+//!    plains reach out in embayments between spurs instead of running as even banks.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -111,11 +115,14 @@ pub const REACH: f32 = 1.5;
 /// Mean slope of the valley walls the carve makes where the valley is deep (rise over run,
 /// about 25°; the smoothstep's steepest point is 1.5 times that).
 pub const WALL_SLOPE: f32 = 0.47;
-/// Amplitude of the `valleys: 3` walls' width noise: a wall is as wide as the height it climbs
-/// over [`WALL_SLOPE`] times `1 + WALL_NOISE·n`, with `n` value noise of wavelength
-/// [`WALL_NOISE_M`] clamped to ±[`WALL_NOISE_CLAMP`], so the walls reach out in embayments and
-/// in between fall steeper as spurs, instead of running as a canal's even banks.
-pub const WALL_NOISE: f32 = 0.2;
+/// Amplitude of the `valleys: 3` walls' width noise, metres: a wall is as wide as the height it
+/// climbs over [`WALL_SLOPE`] plus `WALL_NOISE·(n + WALL_NOISE_CLAMP)`, with `n` value noise of
+/// wavelength [`WALL_NOISE_M`] clamped to ±[`WALL_NOISE_CLAMP`] (0 to 90 m more), so the walls
+/// of valleys in plains reach out in embayments and keep the design slope at the spurs between
+/// them, instead of running as a canal's even banks; no wall is steeper than without the
+/// noise, and the deep valleys of mountains, whose walls are hundreds of metres wide, barely
+/// change.
+pub const WALL_NOISE: f32 = 30.0;
 /// Wavelength of the walls' width noise, metres.
 pub const WALL_NOISE_M: f32 = 192.0;
 /// `1 / WALL_NOISE_M`, 1/m: the noise is read at `(x, z) · WALL_NOISE_INV_M` (CPU and WGSL).
@@ -193,7 +200,7 @@ pub struct RiverPlan {
     pub pieces: usize,
     /// Largest bend of an edge: [`MEANDER`], or [`MEANDER_2`] with `valleys: 2`.
     pub meander: f32,
-    /// Amplitude of the walls' width noise: [`WALL_NOISE`] with `valleys: 3`, else 0.
+    /// Amplitude of the walls' width noise, metres: [`WALL_NOISE`] with `valleys: 3`, else 0.
     pub wall_noise: f32,
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
