@@ -2,7 +2,8 @@
 //! for edits built from the scene they change), then announced: to the stream sessions of the
 //! edited world with the new version's view, built once ([`EditChannels::subscribe_world`],
 //! [`WorldEdit`]), and on an in-process broadcast of every world's edits ([`EditEvent`],
-//! [`EditChannels::subscribe`]). A store that notifies other replicas plugs in here.
+//! [`EditChannels::subscribe`]). Edits other replicas commit are announced here too
+//! (`server::replicas`).
 
 use super::error::{code, AppError};
 use super::http::{json_response, set_version_headers, store_error};
@@ -144,6 +145,8 @@ pub struct EditChannels {
     all: broadcast::Sender<EditEvent>,
     /// Per world with stream sessions: the channel its edits reach them on.
     worlds: Mutex<HashMap<String, broadcast::Sender<WorldEdit>>>,
+    /// Per world: the highest version announced, for the catch-up of `server::replicas`.
+    announced: Mutex<HashMap<String, u64>>,
 }
 
 impl Default for EditChannels {
@@ -151,6 +154,7 @@ impl Default for EditChannels {
         Self {
             all: broadcast::channel(EDIT_CHANNEL_CAPACITY).0,
             worlds: Mutex::default(),
+            announced: Mutex::default(),
         }
     }
 }
@@ -180,10 +184,35 @@ impl EditChannels {
             .subscribe()
     }
 
-    /// Announces the edit that made `version` of world `id`: to every subscriber, and to the
-    /// world's stream sessions with the version's view from `worlds`, built once for all of them
-    /// (not built when no session streams the world).
-    async fn announce(&self, worlds: &Worlds, id: &str, version: u64, dirty: &Dirty) {
+    /// The worlds stream sessions of this process follow, each with the highest version
+    /// announced to them (0 when none was since they joined).
+    pub fn streamed_worlds(&self) -> Vec<(String, u64)> {
+        let streamed: Vec<String> = self
+            .worlds()
+            .iter()
+            .filter(|(_, tx)| tx.receiver_count() > 0)
+            .map(|(id, _)| id.clone())
+            .collect();
+        let announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+        streamed
+            .into_iter()
+            .map(|id| {
+                let v = announced.get(&id).copied().unwrap_or(0);
+                (id, v)
+            })
+            .collect()
+    }
+
+    /// Announces the edit that made `version` of world `id` (committed here, or by another
+    /// replica: `server::replicas`): to every subscriber, and to the world's stream sessions with
+    /// the version's view from `worlds`, built once for all of them (not built when no session
+    /// streams the world).
+    pub(super) async fn announce(&self, worlds: &Worlds, id: &str, version: u64, dirty: &Dirty) {
+        {
+            let mut announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+            let v = announced.entry(id.to_owned()).or_insert(0);
+            *v = (*v).max(version);
+        }
         let stream = self
             .worlds()
             .get(id)

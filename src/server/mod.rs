@@ -49,6 +49,7 @@ mod plans;
 pub mod rate_limit;
 pub mod region_io;
 pub mod regions;
+mod replicas;
 pub mod rivers;
 pub mod route_table;
 pub mod routes;
@@ -510,15 +511,23 @@ async fn open_compute(choice: crate::gpu::BackendChoice) -> anyhow::Result<Compu
     })
 }
 
+/// The scene store and, for PostgreSQL, the feed of the edits other replicas commit.
+type OpenedStore = (
+    Arc<dyn crate::store::SceneStore>,
+    Option<tokio::sync::mpsc::Receiver<crate::store::FeedEvent>>,
+);
+
 /// Opens the scene store the command line asks for: PostgreSQL at `--store` or
-/// `STRATA_DATABASE_URL` ([`ServeArgs::database_url`]), else SQLite in `<data>/strata.db`.
-async fn open_store(args: &ServeArgs) -> anyhow::Result<Arc<dyn crate::store::SceneStore>> {
+/// `STRATA_DATABASE_URL` ([`ServeArgs::database_url`]), listening for other replicas' edits,
+/// else SQLite in `<data>/strata.db`.
+async fn open_store(args: &ServeArgs) -> anyhow::Result<OpenedStore> {
     if let Some(url) = args.database_url()? {
         let store = crate::store::PostgresStore::connect(url.expose())
             .await
             .map_err(|e| anyhow::anyhow!("cannot open the PostgreSQL scene store: {e}"))?;
         tracing::info!(database = %store.target(), "scene store: PostgreSQL");
-        return Ok(Arc::new(store));
+        let feed = store.follow_edits();
+        return Ok((Arc::new(store), Some(feed)));
     }
     let store = crate::store::SqliteStore::open_in_dir(&args.data).map_err(|e| {
         anyhow::anyhow!(
@@ -527,7 +536,7 @@ async fn open_store(args: &ServeArgs) -> anyhow::Result<Arc<dyn crate::store::Sc
         )
     })?;
     tracing::info!(path = %args.data.join("strata.db").display(), "scene store");
-    Ok(Arc::new(store))
+    Ok((Arc::new(store), None))
 }
 
 /// Runs the server until Ctrl-C or SIGTERM.
@@ -540,7 +549,7 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     })?;
     let compute = open_compute(args.backend).await?;
     tracing::info!(backend = ?compute.info(), "compute backend");
-    let store = open_store(&args).await?;
+    let (store, feed) = open_store(&args).await?;
     let admin = args.admin_token.clone().or_else(|| {
         std::env::var("STRATA_ADMIN_TOKEN")
             .ok()
@@ -610,6 +619,9 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         tracing::info!(origins = ?origins.origins(), "cross-origin requests allowed");
     }
     state = state.with_cors_origins(origins);
+    if let Some(feed) = feed {
+        tokio::spawn(replicas::follow(feed, state.worlds.clone()));
+    }
     tokio::spawn(expire_archives(state.jobs.clone()));
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);

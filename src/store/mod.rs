@@ -26,6 +26,7 @@ mod postgres;
 mod shared;
 mod sqlite;
 
+pub use postgres::notify::{FeedEvent, RemoteEdit};
 pub use postgres::{is_postgres_url, PostgresStore, POOL_SIZE};
 pub use sqlite::SqliteStore;
 

@@ -14,8 +14,11 @@
 //!   so they see one snapshot.
 //! - **Connections** come from a pool of [`POOL_SIZE`]; the connection is plain TCP or a Unix
 //!   socket (no TLS: a URL with `sslmode=require` is refused at connect).
+//! - **Replicas.** Each edit's transaction also sends a `NOTIFY` ([`notify`]), delivered at its
+//!   commit; [`PostgresStore::follow_edits`] listens for the other replicas' edits.
 
 mod migrate;
+pub mod notify;
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
@@ -40,6 +43,10 @@ pub struct PostgresStore {
     pool: Pool,
     /// Where it connects, without the password.
     target: String,
+    /// The connection settings, for the listening connection of [`Self::follow_edits`].
+    config: tokio_postgres::Config,
+    /// This store's id in its edits' notifications (random per connect).
+    origin: String,
 }
 
 impl std::fmt::Debug for PostgresStore {
@@ -73,7 +80,7 @@ impl PostgresStore {
             .map_err(|e| StoreError::Backend(format!("the database URL is invalid: {e}")))?;
         let target = describe(&config);
         let manager = Manager::from_config(
-            config,
+            config.clone(),
             NoTls,
             ManagerConfig {
                 recycling_method: RecyclingMethod::Fast,
@@ -86,10 +93,24 @@ impl PostgresStore {
             .create_timeout(Some(POOL_TIMEOUT))
             .build()
             .map_err(backend)?;
-        let store = Self { pool, target };
+        let store = Self {
+            pool,
+            target,
+            config,
+            origin: super::random_hex(8)?,
+        };
         let mut client = store.client().await?;
         migrate::migrate(&mut client).await?;
         Ok(store)
+    }
+
+    /// Starts listening for the edits other replicas commit (a connection of its own, made again
+    /// when lost) and returns what it hears ([`notify::FeedEvent`]); it stops when the receiver is
+    /// dropped. This store's own edits are not reported.
+    pub fn follow_edits(&self) -> tokio::sync::mpsc::Receiver<notify::FeedEvent> {
+        let (tx, rx) = tokio::sync::mpsc::channel(1024);
+        tokio::spawn(notify::follow(self.config.clone(), self.origin.clone(), tx));
+        rx
     }
 
     /// The user, host, port and database it connects to (never the password).
@@ -333,6 +354,16 @@ impl SceneStore for PostgresStore {
         )
         .await
         .map_err(db)?;
+        let payload = notify::Payload {
+            origin: self.origin.clone(),
+            world: id.to_string(),
+            version: edit.version,
+            dirty: Some(edit.applied.dirty.clone()),
+        }
+        .text()?;
+        tx.execute("SELECT pg_notify($1, $2)", &[&notify::CHANNEL, &payload])
+            .await
+            .map_err(db)?;
         tx.commit().await.map_err(db)?;
         Ok(edit.applied)
     }
