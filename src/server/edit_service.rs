@@ -145,7 +145,8 @@ pub struct EditChannels {
     all: broadcast::Sender<EditEvent>,
     /// Per world with stream sessions: the channel its edits reach them on.
     worlds: Mutex<HashMap<String, broadcast::Sender<WorldEdit>>>,
-    /// Per world: the highest version announced, for the catch-up of `server::replicas`.
+    /// Per streamed world: the highest version announced to its sessions, for the catch-up of
+    /// `server::replicas`.
     announced: Mutex<HashMap<String, u64>>,
 }
 
@@ -178,6 +179,10 @@ impl EditChannels {
     pub fn subscribe_world(&self, id: &str) -> broadcast::Receiver<WorldEdit> {
         let mut worlds = self.worlds();
         worlds.retain(|_, tx| tx.receiver_count() > 0);
+        self.announced
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .retain(|w, _| worlds.contains_key(w));
         worlds
             .entry(id.to_owned())
             .or_insert_with(|| broadcast::channel(EDIT_CHANNEL_CAPACITY).0)
@@ -185,7 +190,7 @@ impl EditChannels {
     }
 
     /// The worlds stream sessions of this process follow, each with the highest version
-    /// announced to them (0 when none was since they joined).
+    /// announced to them (0 when none is recorded).
     pub fn streamed_worlds(&self) -> Vec<(String, u64)> {
         let streamed: Vec<String> = self
             .worlds()
@@ -208,17 +213,19 @@ impl EditChannels {
     /// the version's view from `worlds`, built once for all of them (not built when no session
     /// streams the world).
     pub(super) async fn announce(&self, worlds: &Worlds, id: &str, version: u64, dirty: &Dirty) {
-        {
-            let mut announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
-            let v = announced.entry(id.to_owned()).or_insert(0);
-            *v = (*v).max(version);
-        }
         let stream = self
             .worlds()
             .get(id)
             .filter(|tx| tx.receiver_count() > 0)
             .cloned();
         if let Some(tx) = stream {
+            // Only worlds with sessions are recorded (and `subscribe_world` forgets the others),
+            // so the record stays as small as the streamed worlds.
+            {
+                let mut announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+                let v = announced.entry(id.to_owned()).or_insert(0);
+                *v = (*v).max(version);
+            }
             match worlds.view_of(id, version).await {
                 // A session that left since is not an error.
                 Ok(view) => {
