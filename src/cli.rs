@@ -1,9 +1,10 @@
 //! Command-line interface: the `strata` command and its subcommands. Each subcommand's options
 //! belong to the module that runs it ([`ServeArgs`] to `server`, [`BenchArgs`] to `bench`,
-//! [`ExportArgs`] to `export`), so no module imports this one; only `src/main.rs` does.
+//! [`ExportArgs`] and [`JoinArgs`] to `export`), so no module imports this one; only `src/main.rs` does.
 
 use crate::bench::BenchArgs;
 use crate::export::cli::ExportArgs;
+use crate::export::join::JoinArgs;
 use crate::server::ServeArgs;
 use clap::{Parser, Subcommand};
 
@@ -25,6 +26,8 @@ pub enum Command {
     Bench(BenchArgs),
     /// Export a region to a tar archive locally, optionally one shard of N.
     Export(ExportArgs),
+    /// Join the archives of an export's shards into the archive of the whole export.
+    ExportJoin(JoinArgs),
 }
 
 /// Runs a parsed command line.
@@ -50,6 +53,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Command::Bench(args) => crate::bench::run(&args),
         Command::Export(args) => crate::export::cli::run(&args),
+        Command::ExportJoin(args) => crate::export::join::run(&args),
     }
 }
 

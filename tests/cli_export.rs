@@ -177,3 +177,76 @@ fn export_help_reads_cleanly() {
         );
     }
 }
+
+/// Shards `i/3` of seed 7's LOD 1 tiles over `region`, written into `dir` as `s{i}.tar`.
+fn shards(dir: &std::path::Path, seed: &str, region: &str) -> Vec<String> {
+    (1..=3)
+        .map(|i| {
+            let out = dir.join(format!("s{seed}-{i}.tar"));
+            let out = out.to_str().expect("utf-8 path").to_string();
+            let shard = format!("{i}/3");
+            let o = strata(&[
+                "export", "--seed", seed, "--lod", "1", "--region", region, "--shard", &shard,
+                "-o", &out,
+            ]);
+            assert!(o.status.success(), "{}", stderr(&o));
+            out
+        })
+        .collect()
+}
+
+#[test]
+fn export_join_writes_the_whole_export_and_refuses_an_incomplete_or_mixed_set() {
+    let dir = tempfile::tempdir().expect("tmp");
+    let parts = shards(dir.path(), "7", "-2,-1,1,1");
+    let whole = dir.path().join("whole.tar");
+    let o = strata(&[
+        "export",
+        "--seed",
+        "7",
+        "--lod",
+        "1",
+        "--region",
+        "-2,-1,1,1",
+        "-o",
+        whole.to_str().expect("utf-8 path"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let joined = dir.path().join("joined.tar");
+    let joined = joined.to_str().expect("utf-8 path");
+    let o = strata(&["export-join", "-o", joined, &parts[2], &parts[0], &parts[1]]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        std::fs::read(joined).expect("joined") == std::fs::read(&whole).expect("whole"),
+        "the joined shards are the unsharded archive, byte for byte"
+    );
+    let other = shards(dir.path(), "8", "-2,-1,1,1");
+    let whole_path = whole.to_str().expect("utf-8 path");
+    for (set, says) in [
+        (
+            vec![&parts[0], &parts[1]],
+            "each of 1..=3 must be given once",
+        ),
+        (
+            vec![&parts[0], &parts[1], &parts[1]],
+            "each of 1..=3 must be given once",
+        ),
+        (vec![&parts[0], &parts[1], &other[2]], "another export"),
+        (
+            vec![&parts[0], &parts[1], &parts[2], &whole_path.to_string()],
+            "another export",
+        ),
+    ] {
+        let mut args = vec!["export-join", "-o", joined];
+        args.extend(set.iter().map(|s| s.as_str()));
+        let o = strata(&args);
+        assert_eq!(o.status.code(), Some(1), "{set:?}");
+        assert!(stderr(&o).contains(says), "{set:?}: {}", stderr(&o));
+    }
+    assert!(
+        std::fs::read(joined).expect("joined") == std::fs::read(&whole).expect("whole"),
+        "a refused join leaves the earlier output as it was"
+    );
+    let o = strata(&["export-join", "-o", joined]);
+    assert_eq!(o.status.code(), Some(2), "no shards is a usage error");
+}

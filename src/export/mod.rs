@@ -6,10 +6,11 @@
 //! `scatter/{lod}/{x}/{z}.json`, followed by `manifest.json` (the spec, the shard, and a blake3 hash
 //! per member). Shard `i` of `N` takes the contiguous tiles `[i·T/N, (i+1)·T/N)` of the `T` tiles
 //! in canonical order, so the members of shards `0..N` in order are exactly the members of the
-//! unsharded export, byte for byte. Every member is the same bytes the HTTP API serves for the
-//! same key.
+//! unsharded export, byte for byte, and [`join`] writes the whole archive from the shards'.
+//! Every member is the same bytes the HTTP API serves for the same key.
 
 pub mod cli;
+pub mod join;
 pub mod size;
 pub mod tar;
 

@@ -13,6 +13,11 @@ pub struct ServeArgs {
     /// Data directory (scene store, caches).
     #[arg(long, default_value = "data")]
     pub data: PathBuf,
+    /// Scene store: a PostgreSQL URL (`postgres://user:password@host:5432/strata`), for replicas
+    /// sharing one database. Read from `STRATA_DATABASE_URL` when not given. Without one, the
+    /// embedded SQLite file `<data>/strata.db`.
+    #[arg(long, value_name = "URL", value_parser = check_store)]
+    pub store: Option<super::access::Secret>,
     /// Compute backend.
     #[arg(long, value_enum, default_value_t = BackendChoice::Auto)]
     pub backend: BackendChoice,
@@ -76,6 +81,18 @@ pub struct ServeArgs {
     pub rate_limit: u32,
 }
 
+fn check_store(s: &str) -> Result<super::access::Secret, String> {
+    if crate::store::is_postgres_url(s) {
+        Ok(super::access::Secret::new(s))
+    } else {
+        Err(
+            "the store must be a postgres:// or postgresql:// URL (without --store, worlds live \
+             in <data>/strata.db)"
+                .into(),
+        )
+    }
+}
+
 fn check_origin(s: &str) -> Result<String, String> {
     super::cors::parse_origin(s).map(|_| s.to_owned())
 }
@@ -110,6 +127,24 @@ impl ServeArgs {
             disk_budget_bytes: self.export_disk_budget << 20,
             max_age: std::time::Duration::from_secs(self.export_max_age),
             ..super::jobs::JobLimits::default()
+        }
+    }
+
+    /// The PostgreSQL URL of `--store`, else of `STRATA_DATABASE_URL` (when set and not empty);
+    /// `None` means the embedded SQLite store.
+    ///
+    /// # Errors
+    /// `STRATA_DATABASE_URL` is not a PostgreSQL URL.
+    pub fn database_url(&self) -> anyhow::Result<Option<super::access::Secret>> {
+        if let Some(url) = &self.store {
+            return Ok(Some(url.clone()));
+        }
+        match std::env::var("STRATA_DATABASE_URL") {
+            Ok(v) if v.trim().is_empty() => Ok(None),
+            Ok(v) => check_store(v.trim())
+                .map(Some)
+                .map_err(|e| anyhow::anyhow!("STRATA_DATABASE_URL: {e}")),
+            Err(_) => Ok(None),
         }
     }
 

@@ -2,7 +2,8 @@
 //! for edits built from the scene they change), then announced: to the stream sessions of the
 //! edited world with the new version's view, built once ([`EditChannels::subscribe_world`],
 //! [`WorldEdit`]), and on an in-process broadcast of every world's edits ([`EditEvent`],
-//! [`EditChannels::subscribe`]). A store that notifies other replicas plugs in here.
+//! [`EditChannels::subscribe`]). Edits other replicas commit are announced here too
+//! (`server::replicas`).
 
 use super::error::{code, AppError};
 use super::http::{json_response, set_version_headers, store_error};
@@ -144,6 +145,9 @@ pub struct EditChannels {
     all: broadcast::Sender<EditEvent>,
     /// Per world with stream sessions: the channel its edits reach them on.
     worlds: Mutex<HashMap<String, broadcast::Sender<WorldEdit>>>,
+    /// Per streamed world: the highest version announced to its sessions, for the catch-up of
+    /// `server::replicas`.
+    announced: Mutex<HashMap<String, u64>>,
 }
 
 impl Default for EditChannels {
@@ -151,6 +155,7 @@ impl Default for EditChannels {
         Self {
             all: broadcast::channel(EDIT_CHANNEL_CAPACITY).0,
             worlds: Mutex::default(),
+            announced: Mutex::default(),
         }
     }
 }
@@ -174,22 +179,53 @@ impl EditChannels {
     pub fn subscribe_world(&self, id: &str) -> broadcast::Receiver<WorldEdit> {
         let mut worlds = self.worlds();
         worlds.retain(|_, tx| tx.receiver_count() > 0);
+        self.announced
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .retain(|w, _| worlds.contains_key(w));
         worlds
             .entry(id.to_owned())
             .or_insert_with(|| broadcast::channel(EDIT_CHANNEL_CAPACITY).0)
             .subscribe()
     }
 
-    /// Announces the edit that made `version` of world `id`: to every subscriber, and to the
-    /// world's stream sessions with the version's view from `worlds`, built once for all of them
-    /// (not built when no session streams the world).
-    async fn announce(&self, worlds: &Worlds, id: &str, version: u64, dirty: &Dirty) {
+    /// The worlds stream sessions of this process follow, each with the highest version
+    /// announced to them (0 when none is recorded).
+    pub fn streamed_worlds(&self) -> Vec<(String, u64)> {
+        let streamed: Vec<String> = self
+            .worlds()
+            .iter()
+            .filter(|(_, tx)| tx.receiver_count() > 0)
+            .map(|(id, _)| id.clone())
+            .collect();
+        let announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+        streamed
+            .into_iter()
+            .map(|id| {
+                let v = announced.get(&id).copied().unwrap_or(0);
+                (id, v)
+            })
+            .collect()
+    }
+
+    /// Announces the edit that made `version` of world `id` (committed here, or by another
+    /// replica: `server::replicas`): to every subscriber, and to the world's stream sessions with
+    /// the version's view from `worlds`, built once for all of them (not built when no session
+    /// streams the world).
+    pub(super) async fn announce(&self, worlds: &Worlds, id: &str, version: u64, dirty: &Dirty) {
         let stream = self
             .worlds()
             .get(id)
             .filter(|tx| tx.receiver_count() > 0)
             .cloned();
         if let Some(tx) = stream {
+            // Only worlds with sessions are recorded (and `subscribe_world` forgets the others),
+            // so the record stays as small as the streamed worlds.
+            {
+                let mut announced = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+                let v = announced.entry(id.to_owned()).or_insert(0);
+                *v = (*v).max(version);
+            }
             match worlds.view_of(id, version).await {
                 // A session that left since is not an error.
                 Ok(view) => {

@@ -49,6 +49,7 @@ mod plans;
 pub mod rate_limit;
 pub mod region_io;
 pub mod regions;
+mod replicas;
 pub mod rivers;
 pub mod route_table;
 pub mod routes;
@@ -510,6 +511,34 @@ async fn open_compute(choice: crate::gpu::BackendChoice) -> anyhow::Result<Compu
     })
 }
 
+/// The scene store and, for PostgreSQL, the feed of the edits other replicas commit.
+type OpenedStore = (
+    Arc<dyn crate::store::SceneStore>,
+    Option<tokio::sync::mpsc::Receiver<crate::store::FeedEvent>>,
+);
+
+/// Opens the scene store the command line asks for: PostgreSQL at `--store` or
+/// `STRATA_DATABASE_URL` ([`ServeArgs::database_url`]), listening for other replicas' edits,
+/// else SQLite in `<data>/strata.db`.
+async fn open_store(args: &ServeArgs) -> anyhow::Result<OpenedStore> {
+    if let Some(url) = args.database_url()? {
+        let store = crate::store::PostgresStore::connect(url.expose())
+            .await
+            .map_err(|e| anyhow::anyhow!("cannot open the PostgreSQL scene store: {e}"))?;
+        tracing::info!(database = %store.target(), "scene store: PostgreSQL");
+        let feed = store.follow_edits();
+        return Ok((Arc::new(store), Some(feed)));
+    }
+    let store = crate::store::SqliteStore::open_in_dir(&args.data).map_err(|e| {
+        anyhow::anyhow!(
+            "cannot open the scene store in {}: {e}",
+            args.data.display()
+        )
+    })?;
+    tracing::info!(path = %args.data.join("strata.db").display(), "scene store");
+    Ok((Arc::new(store), None))
+}
+
 /// Runs the server until Ctrl-C or SIGTERM.
 pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     std::fs::create_dir_all(&args.data).map_err(|e| {
@@ -520,13 +549,7 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     })?;
     let compute = open_compute(args.backend).await?;
     tracing::info!(backend = ?compute.info(), "compute backend");
-    let store = crate::store::SqliteStore::open_in_dir(&args.data).map_err(|e| {
-        anyhow::anyhow!(
-            "cannot open the scene store in {}: {e}",
-            args.data.display()
-        )
-    })?;
-    tracing::info!(path = %args.data.join("strata.db").display(), "scene store");
+    let (store, feed) = open_store(&args).await?;
     let admin = args.admin_token.clone().or_else(|| {
         std::env::var("STRATA_ADMIN_TOKEN")
             .ok()
@@ -552,7 +575,7 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
     );
     let mut state = AppState::with_limits(compute, limits)
         .with_memory_budget(budget)
-        .with_worlds(Arc::new(store), admin.as_ref().map(access::Secret::expose))
+        .with_worlds(store, admin.as_ref().map(access::Secret::expose))
         .with_job_limits(args.job_limits())
         .with_jobs_dir(args.data.join("exports"))
         .with_rate_limit(args.rate_limit);
@@ -596,6 +619,9 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         tracing::info!(origins = ?origins.origins(), "cross-origin requests allowed");
     }
     state = state.with_cors_origins(origins);
+    if let Some(feed) = feed {
+        tokio::spawn(replicas::follow(feed, state.worlds.clone()));
+    }
     tokio::spawn(expire_archives(state.jobs.clone()));
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);

@@ -1,17 +1,19 @@
 //! Durable worlds: scenes, their versions, the edit log and access tokens.
 //!
-//! [`SceneStore`] is the interface the server uses; [`SqliteStore`] is the embedded default
-//! (`<data>/strata.db`) and the only store today. A PostgreSQL store for many replicas would
-//! implement the same trait with the same tables (see `sqlite.rs` for the schema and its
-//! PostgreSQL reading) and add `LISTEN/NOTIFY` for edit fan-out; the trait's contract is what
-//! any store must honour:
+//! [`SceneStore`] is the interface the server uses. Two stores implement it with the same
+//! tables: [`SqliteStore`], the embedded default (`<data>/strata.db`), and [`PostgresStore`]
+//! (`strata serve --store postgres://…`), which several replicas can share. What they compute
+//! alike (an edit's checks, the log's replay) lives in `shared.rs`. The trait's contract is what
+//! any store must honour, and `tests/store_contract.rs` checks it on both:
 //!
 //! - **Versions.** A world is created at version 1; every accepted edit yields `version + 1`.
 //!   Versions are never rewritten or removed.
 //! - **Atomic, durable edits.** [`SceneStore::apply_edit`] reads the latest scene, checks the
 //!   expected version, applies the JSON Patch, validates the result ([`Scene::from_value`]) and
 //!   commits, all under one write transaction; it returns only after the commit is durable (for
-//!   SQLite: WAL with `synchronous=FULL`, so the WAL is fsynced by the commit). A refused edit
+//!   SQLite: WAL with `synchronous=FULL`, so the WAL is fsynced by the commit; for PostgreSQL:
+//!   its default `synchronous_commit = on`). Edits of one world are serialised (SQLite: one
+//!   writer; PostgreSQL: the world's row locked by `SELECT … FOR UPDATE`). A refused edit
 //!   changes nothing.
 //! - **History.** The patch of every version is kept, with a content hash of the scene it made,
 //!   and full snapshots at version 1 and every [`SNAPSHOT_EVERY`] versions, so any past version
@@ -20,8 +22,12 @@
 //! - **Tokens** are stored as `blake3(token)` only ([`hash_token`]); tokens are 32 random bytes
 //!   from the OS, so an unsalted fast hash is enough (no dictionary to attack).
 
+mod postgres;
+mod shared;
 mod sqlite;
 
+pub use postgres::notify::{FeedEvent, RemoteEdit};
+pub use postgres::{is_postgres_url, PostgresStore, POOL_SIZE};
 pub use sqlite::SqliteStore;
 
 use crate::scene::{Dirty, Scene, SceneError};

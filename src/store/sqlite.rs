@@ -8,9 +8,8 @@
 //!   of other connections (WAL lets them run beside the writer); an in-memory store (tests) uses
 //!   the writer for everything.
 //!
-//! Schema (`PRAGMA user_version = 1`); a PostgreSQL store (none exists yet) would use the same
-//! tables with `BIGINT`, `BOOLEAN`, `JSONB` and `BYTEA`, `SELECT … FOR UPDATE` on the world row
-//! in place of the single writer, and `NOTIFY` after each edit commit:
+//! Schema (`PRAGMA user_version = 1`); the PostgreSQL store ([`super::PostgresStore`]) has the
+//! same tables with `BIGINT`, `BOOLEAN` and `BYTEA` (`migrations/postgres/`):
 //!
 //! ```sql
 //! worlds    (id TEXT PK, seed INTEGER  -- the u64 seed's bits as i64
@@ -25,11 +24,11 @@
 //!            , world_id, role TEXT, created_at)
 //! ```
 
+use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, patch_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
-    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES, SNAPSHOT_EVERY,
+    canonical_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError, TokenGrant,
+    TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES,
 };
-use crate::scene::{dirty_region, Scene};
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
 use serde_json::Value;
@@ -90,21 +89,6 @@ impl std::fmt::Debug for SqliteStore {
             .field("path", &self.inner.path)
             .finish_non_exhaustive()
     }
-}
-
-fn backend(e: impl std::fmt::Display) -> StoreError {
-    StoreError::Backend(e.to_string())
-}
-
-fn now() -> i64 {
-    std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_secs() as i64)
-        .unwrap_or(0)
-}
-
-fn scene_hash(text: &str) -> Vec<u8> {
-    blake3::hash(text.as_bytes()).as_bytes().to_vec()
 }
 
 fn configure(conn: &Connection) -> rusqlite::Result<()> {
@@ -255,10 +239,6 @@ fn load_meta(conn: &Connection, id: &str) -> Result<WorldMeta, StoreError> {
     .ok_or_else(|| StoreError::WorldNotFound(id.to_string()))
 }
 
-fn parse_json(text: &str, what: &str) -> Result<Value, StoreError> {
-    serde_json::from_str(text).map_err(|e| StoreError::Backend(format!("stored {what}: {e}")))
-}
-
 fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, StoreError> {
     let meta = load_meta(conn, id)?;
     if version == 0 || version > meta.version {
@@ -285,7 +265,6 @@ fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, Sto
         .optional()
         .map_err(backend)?
         .ok_or_else(|| StoreError::Backend(format!("world {id} has no snapshot")))?;
-    let mut doc = parse_json(&text, "snapshot")?;
     let mut stmt = conn
         .prepare(
             "SELECT version, patch, scene_hash FROM edits
@@ -295,44 +274,19 @@ fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, Sto
     let rows = stmt
         .query_map(params![id, base, version as i64], |r| {
             Ok((
-                r.get::<_, i64>(0)?,
+                r.get::<_, i64>(0)? as u64,
                 r.get::<_, String>(1)?,
                 r.get::<_, Vec<u8>>(2)?,
             ))
         })
         .map_err(backend)?;
-    let mut expect = base + 1;
-    let mut last_hash = None;
-    for row in rows {
-        let (v, patch, hash) = row.map_err(backend)?;
-        if v != expect {
-            return Err(StoreError::Backend(format!(
-                "world {id}: edit {expect} is missing from the log"
-            )));
-        }
-        let patch: json_patch::Patch = serde_json::from_str(&patch)
-            .map_err(|e| StoreError::Backend(format!("stored patch {v}: {e}")))?;
-        // The document is dropped on error, so no undo is needed (see `patch_scene`).
-        json_patch::patch_unsafe(&mut doc, &patch.0)
-            .map_err(|e| StoreError::Backend(format!("replaying edit {v}: {e}")))?;
-        expect += 1;
-        last_hash = Some(hash);
-    }
-    if expect != version as i64 + 1 {
-        return Err(StoreError::Backend(format!(
-            "world {id}: edit {expect} is missing from the log"
-        )));
-    }
-    if let Some(hash) = last_hash {
-        let text = serde_json::to_string(&doc).map_err(backend)?;
-        if scene_hash(&text) != hash {
-            return Err(StoreError::Backend(format!(
-                "world {id}: replaying the log to version {version} does not give the scene it \
-                 recorded"
-            )));
-        }
-    }
-    Ok(doc)
+    replay(
+        id,
+        base as u64,
+        &text,
+        rows.map(|r| r.map_err(backend)),
+        version,
+    )
 }
 
 #[async_trait]
@@ -417,45 +371,27 @@ impl SceneStore for SqliteStore {
                 .optional()
                 .map_err(backend)?
                 .ok_or_else(|| StoreError::WorldNotFound(id.clone()))?;
-            let version = version as u64;
-            if let Some(expected) = expected {
-                if expected != version {
-                    return Err(StoreError::Conflict {
-                        expected,
-                        latest: version,
-                    });
-                }
-            }
-            let doc = parse_json(&text, "scene")?;
-            let old = Scene::from_value(&doc).map_err(|e| {
-                StoreError::Backend(format!("stored scene of {id} v{version} is invalid: {e}"))
-            })?;
-            let (text, new) = patch_scene(doc, &old, &patch)?;
-            let next = version + 1;
+            let edit = prepare_edit(&id, version as u64, &text, expected, &patch)?;
             let t = now();
-            let patch_text = serde_json::to_string(&patch).map_err(backend)?;
             tx.execute(
                 "INSERT INTO edits (world_id, version, patch, scene_hash, created_at)
                  VALUES (?1, ?2, ?3, ?4, ?5)",
-                params![id, next as i64, patch_text, scene_hash(&text), t],
+                params![id, edit.version as i64, edit.patch, edit.scene_hash, t],
             )
             .map_err(backend)?;
-            if next.is_multiple_of(SNAPSHOT_EVERY) {
+            if edit.snapshot {
                 tx.execute(
                     "INSERT INTO snapshots (world_id, version, scene) VALUES (?1, ?2, ?3)",
-                    params![id, next as i64, text],
+                    params![id, edit.version as i64, edit.scene],
                 )
                 .map_err(backend)?;
             }
             tx.execute(
                 "UPDATE worlds SET version = ?2, scene = ?3, updated_at = ?4 WHERE id = ?1",
-                params![id, next as i64, text, t],
+                params![id, edit.version as i64, edit.scene, t],
             )
             .map_err(backend)?;
-            Ok(EditApplied {
-                version: next,
-                dirty: dirty_region(&old, &new),
-            })
+            Ok(edit.applied)
         })
         .await
     }
@@ -563,6 +499,3 @@ impl SceneStore for SqliteStore {
         .await
     }
 }
-
-#[cfg(test)]
-mod tests;

@@ -3,7 +3,8 @@
 //! in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a quad mesh's
 //! Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element
 //! ([`arch`]), the Khronos glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the
-//! Node packages of the browser tests ([`js`]) and tiles with river and lake water ([`water`]).
+//! Node packages of the browser tests ([`js`]), tiles with river and lake water ([`water`]) and a
+//! throwaway PostgreSQL cluster ([`postgres`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
@@ -14,6 +15,7 @@ pub mod fixture;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
+pub mod postgres;
 pub mod raw;
 pub mod seams;
 pub mod topology;

@@ -1,0 +1,367 @@
+//! The scene store's contract (`src/store/mod.rs`), run against every backend: SQLite in a
+//! temporary directory and PostgreSQL in a throwaway cluster (`common::postgres`; these fail,
+//! never skip, without PostgreSQL). Each contract test is one function over a [`Backend`]; the
+//! `contract!` macro makes a `sqlite` and a `postgres` test of it.
+
+mod common;
+
+use serde_json::{json, Value};
+use std::sync::Arc;
+use strata::scene::{Dirty, Rect};
+use strata::store::{
+    hash_token, new_world_id, NewWorld, PostgresStore, Role, SceneStore, SqliteStore, StoreError,
+    TokenGrant, SNAPSHOT_EVERY,
+};
+
+/// Where a contract test's store lives; [`Backend::open`] may be called again to reopen it.
+enum Backend {
+    Sqlite(tempfile::TempDir),
+    Postgres(String),
+}
+
+impl Backend {
+    async fn sqlite() -> Self {
+        Backend::Sqlite(tempfile::tempdir().expect("tmp"))
+    }
+
+    async fn postgres() -> Self {
+        Backend::Postgres(common::postgres::database().await)
+    }
+
+    /// A new handle on the store: a new SQLite connection or a new PostgreSQL pool.
+    async fn open(&self) -> Arc<dyn SceneStore> {
+        match self {
+            Backend::Sqlite(dir) => Arc::new(SqliteStore::open_in_dir(dir.path()).expect("open")),
+            Backend::Postgres(url) => Arc::new(PostgresStore::connect(url).await.expect("connect")),
+        }
+    }
+}
+
+/// `sqlite` and `postgres` tests of the contract test `$name`.
+macro_rules! contract {
+    ($($name:ident),* $(,)?) => {$(
+        mod $name {
+            #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+            async fn sqlite() {
+                super::$name(super::Backend::sqlite().await).await;
+            }
+
+            #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+            async fn postgres() {
+                super::$name(super::Backend::postgres().await).await;
+            }
+        }
+    )*};
+}
+
+contract!(
+    versions_replay_across_snapshots_and_reopen,
+    refused_edits_change_nothing,
+    racing_edits_with_one_expected_version_one_wins,
+    concurrent_edits_each_get_their_own_version,
+    tokens_and_access,
+    missing_worlds_and_duplicate_ids,
+    the_edit_log_pages_by_version,
+);
+
+fn patch(v: Value) -> json_patch::Patch {
+    serde_json::from_value(v).expect("patch")
+}
+
+async fn world(store: &dyn SceneStore) -> String {
+    let id = new_world_id().expect("id");
+    store
+        .create_world(NewWorld {
+            id: id.clone(),
+            seed: u64::MAX,
+            scene: json!({}),
+            public: false,
+            admin_token: hash_token(&format!("t{id}")),
+        })
+        .await
+        .expect("create");
+    id
+}
+
+/// Boxes with decimal fractions, so a scene that drifted by a float parse/print cycle would
+/// fail the replay's hash check.
+fn add_region(i: u64) -> json_patch::Patch {
+    let x = i as f64 * 0.1 + 0.03;
+    patch(json!([{"op": "add", "path": "/regions/-", "value":
+        {"id": format!("r{i}"), "bbox": {"min": [x, 0.7], "max": [x + 1.0, 1.3]}}}]))
+}
+
+/// Every version replays from its snapshot and log to the scene it was, after the store is
+/// reopened; the seed's 64 bits survive.
+async fn versions_replay_across_snapshots_and_reopen(backend: Backend) {
+    let store = backend.open().await;
+    let id = world(&*store).await;
+    let n = 2 * SNAPSHOT_EVERY + 5;
+    for i in 2..=n {
+        let a = store.apply_edit(&id, add_region(i), Some(i - 1)).await;
+        assert_eq!(a.expect("edit").version, i);
+    }
+    let meta = store.meta(&id).await.expect("meta");
+    assert_eq!((meta.version, meta.seed), (n, u64::MAX));
+    drop(store);
+    let store = backend.open().await;
+    for v in 1..=n {
+        let s = store.scene_at(&id, v).await.expect("version");
+        let regions = s["regions"].as_array().expect("array");
+        assert_eq!(regions.len() as u64, v - 1, "version {v}");
+        if v > 1 {
+            assert_eq!(regions[v as usize - 2]["id"], json!(format!("r{v}")));
+        }
+    }
+    assert_eq!(
+        store.head(&id).await.expect("head").scene,
+        store.scene_at(&id, n).await.expect("latest")
+    );
+    assert!(matches!(
+        store.scene_at(&id, n + 1).await,
+        Err(StoreError::VersionNotFound { latest, .. }) if latest == n
+    ));
+    assert!(matches!(
+        store.scene_at(&id, 0).await,
+        Err(StoreError::VersionNotFound { version: 0, .. })
+    ));
+}
+
+/// A conflicting, failing or invalid edit leaves the world as it was; the next good one makes
+/// version 2 and reports what it changed.
+async fn refused_edits_change_nothing(backend: Backend) {
+    let store = backend.open().await;
+    let id = world(&*store).await;
+    assert_eq!(
+        store.apply_edit(&id, add_region(1), Some(7)).await,
+        Err(StoreError::Conflict {
+            expected: 7,
+            latest: 1
+        })
+    );
+    let bad = patch(json!([{"op": "add", "path": "/regions/-", "value":
+        {"id": "ok", "bbox": {"min": [0, 0], "max": [1, 1]}}},
+        {"op": "remove", "path": "/nope"}]));
+    assert!(matches!(
+        store.apply_edit(&id, bad, None).await,
+        Err(StoreError::Patch { operation: 1, .. })
+    ));
+    let invalid = patch(json!([{"op": "replace",
+        "path": "/world/earth/gain", "value": 5}]));
+    match store.apply_edit(&id, invalid, None).await {
+        Err(StoreError::Invalid(e)) => assert_eq!(e.pointer, "/world/earth/gain"),
+        other => panic!("{other:?}"),
+    }
+    let head = store.head(&id).await.expect("head");
+    assert_eq!(head.meta.version, 1);
+    assert_eq!(head.scene["regions"], json!([]));
+    assert!(store.edit_log(&id, 0, 10).await.expect("log").is_empty());
+    let a = store
+        .apply_edit(&id, add_region(3), None)
+        .await
+        .expect("ok");
+    assert_eq!(a.version, 2);
+    assert_eq!(
+        a.dirty,
+        Dirty::Rects(vec![Rect {
+            min: [3.0 * 0.1 + 0.03, 0.7],
+            max: [3.0 * 0.1 + 0.03 + 1.0, 1.3]
+        }])
+    );
+}
+
+/// Eight editors send an edit expecting version 1 at once, each through its own handle on the
+/// store (as replicas would): exactly one is applied, the others are told version 2 is there.
+async fn racing_edits_with_one_expected_version_one_wins(backend: Backend) {
+    let first = backend.open().await;
+    let id = world(&*first).await;
+    let mut stores = vec![first];
+    for _ in 1..8 {
+        stores.push(backend.open().await);
+    }
+    let tasks: Vec<_> = stores
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let (s, id) = (s.clone(), id.clone());
+            tokio::spawn(async move { s.apply_edit(&id, add_region(i as u64), Some(1)).await })
+        })
+        .collect();
+    let mut won = 0;
+    for t in tasks {
+        match t.await.expect("task") {
+            Ok(a) => {
+                assert_eq!(a.version, 2);
+                won += 1;
+            }
+            Err(e) => assert_eq!(
+                e,
+                StoreError::Conflict {
+                    expected: 1,
+                    latest: 2
+                }
+            ),
+        }
+    }
+    assert_eq!(won, 1);
+    let head = stores[0].head(&id).await.expect("head");
+    assert_eq!(head.meta.version, 2);
+    assert_eq!(head.scene["regions"].as_array().map(Vec::len), Some(1));
+}
+
+/// Edits without an expected version, sent at once through several handles, are all applied,
+/// each as its own version, and the log and scene hold every one of them.
+async fn concurrent_edits_each_get_their_own_version(backend: Backend) {
+    let first = backend.open().await;
+    let id = world(&*first).await;
+    let mut tasks = Vec::new();
+    for i in 0..8u64 {
+        let s = if i % 2 == 0 {
+            first.clone()
+        } else {
+            backend.open().await
+        };
+        let id = id.clone();
+        tasks.push(tokio::spawn(async move {
+            s.apply_edit(&id, add_region(i), None).await
+        }));
+    }
+    let mut versions = Vec::new();
+    for t in tasks {
+        versions.push(t.await.expect("task").expect("edit").version);
+    }
+    versions.sort_unstable();
+    assert_eq!(versions, (2..=9).collect::<Vec<u64>>());
+    let log = first.edit_log(&id, 0, 100).await.expect("log");
+    assert_eq!(
+        log.iter().map(|e| e.version).collect::<Vec<_>>(),
+        (2..=9).collect::<Vec<u64>>()
+    );
+    let scene = first.scene_at(&id, 9).await.expect("scene");
+    let mut ids: Vec<String> = scene["regions"]
+        .as_array()
+        .expect("regions")
+        .iter()
+        .map(|r| r["id"].as_str().expect("id").to_string())
+        .collect();
+    ids.sort();
+    assert_eq!(ids, (0..8).map(|i| format!("r{i}")).collect::<Vec<_>>());
+}
+
+/// Tokens are found by their hash with their role; visibility changes; every world is listed.
+async fn tokens_and_access(backend: Backend) {
+    let store = backend.open().await;
+    let id = world(&*store).await;
+    let other = world(&*store).await;
+    assert_eq!(
+        store
+            .token(hash_token(&format!("t{id}")))
+            .await
+            .expect("token"),
+        Some(TokenGrant {
+            world: id.clone(),
+            role: Role::Admin
+        })
+    );
+    store
+        .add_token(&id, hash_token("r"), Role::Read)
+        .await
+        .expect("add");
+    store
+        .add_token(&other, hash_token("e"), Role::Edit)
+        .await
+        .expect("add");
+    assert_eq!(
+        store.token(hash_token("r")).await.expect("token"),
+        Some(TokenGrant {
+            world: id.clone(),
+            role: Role::Read
+        })
+    );
+    assert_eq!(
+        store.token(hash_token("e")).await.expect("token"),
+        Some(TokenGrant {
+            world: other.clone(),
+            role: Role::Edit
+        })
+    );
+    assert_eq!(store.token(hash_token("x")).await.expect("token"), None);
+    assert!(store.set_public(&id, true).await.expect("public").public);
+    assert!(store.meta(&id).await.expect("meta").public);
+    assert!(!store.set_public(&id, false).await.expect("private").public);
+    let mut listed: Vec<String> = store
+        .list_worlds()
+        .await
+        .expect("list")
+        .into_iter()
+        .map(|m| m.id)
+        .collect();
+    listed.sort();
+    let mut both = vec![id, other];
+    both.sort();
+    assert_eq!(listed, both);
+}
+
+/// Every operation on an unknown world says so; a taken id is refused and the first world is
+/// left as it was.
+async fn missing_worlds_and_duplicate_ids(backend: Backend) {
+    let store = backend.open().await;
+    let gone = || StoreError::WorldNotFound("nope".into());
+    assert_eq!(store.meta("nope").await, Err(gone()));
+    assert_eq!(store.head("nope").await.map(|h| h.meta), Err(gone()));
+    assert_eq!(store.scene_at("nope", 1).await, Err(gone()));
+    assert_eq!(
+        store.apply_edit("nope", add_region(1), None).await,
+        Err(gone())
+    );
+    assert_eq!(store.edit_log("nope", 0, 10).await, Err(gone()));
+    assert_eq!(store.set_public("nope", true).await, Err(gone()));
+    assert_eq!(
+        store.add_token("nope", hash_token("n"), Role::Read).await,
+        Err(gone())
+    );
+    assert_eq!(store.token(hash_token("n")).await, Ok(None));
+    let id = world(&*store).await;
+    let again = store
+        .create_world(NewWorld {
+            id: id.clone(),
+            seed: 7,
+            scene: json!({}),
+            public: true,
+            admin_token: hash_token("other"),
+        })
+        .await;
+    assert_eq!(again.map(|m| m.id), Err(StoreError::Duplicate(id.clone())));
+    let meta = store.meta(&id).await.expect("meta");
+    assert_eq!((meta.seed, meta.public, meta.version), (u64::MAX, false, 1));
+    assert_eq!(store.token(hash_token("other")).await, Ok(None));
+}
+
+/// The log returns the patches after a version, oldest first, at most `limit` of them.
+async fn the_edit_log_pages_by_version(backend: Backend) {
+    let store = backend.open().await;
+    let id = world(&*store).await;
+    for i in 2..=6 {
+        store
+            .apply_edit(&id, add_region(i), Some(i - 1))
+            .await
+            .expect("edit");
+    }
+    let page = store.edit_log(&id, 1, 2).await.expect("log");
+    assert_eq!(page.iter().map(|e| e.version).collect::<Vec<_>>(), [2, 3]);
+    assert_eq!(
+        page[0].patch,
+        serde_json::to_value(add_region(2)).expect("json")
+    );
+    let rest = store.edit_log(&id, 3, 10).await.expect("log");
+    assert_eq!(
+        rest.iter().map(|e| e.version).collect::<Vec<_>>(),
+        [4, 5, 6]
+    );
+    assert!(store.edit_log(&id, 6, 10).await.expect("log").is_empty());
+    assert!(store
+        .edit_log(&id, u64::MAX, 10)
+        .await
+        .expect("log")
+        .is_empty());
+}
