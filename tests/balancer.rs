@@ -9,6 +9,7 @@
 
 mod common;
 
+use common::replica::{create_world, next_json, request, session, Ws};
 use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
 use std::path::Path;
@@ -17,9 +18,6 @@ use std::time::{Duration, Instant};
 use tokio_tungstenite::tungstenite::Message;
 
 const ADMIN: &str = "st_balancer_admin";
-
-type Ws =
-    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
 
 /// nginx in the foreground, killed when dropped.
 struct Nginx {
@@ -107,6 +105,7 @@ http {{
     Nginx { child, addr }
 }
 
+/// An HTTP request to `addr` with the server's admin token: the status and the body.
 async fn call(
     addr: &str,
     method: &'static str,
@@ -114,16 +113,7 @@ async fn call(
     headers: Vec<(&'static str, String)>,
     body: Vec<u8>,
 ) -> (u16, Vec<u8>) {
-    let addr = addr.to_string();
-    tokio::task::spawn_blocking(move || {
-        let bearer = format!("Bearer {ADMIN}");
-        let mut h: Vec<(&str, &str)> = vec![("authorization", &bearer)];
-        h.extend(headers.iter().map(|(k, v)| (*k, v.as_str())));
-        common::raw::request(&addr, method, &path, &h, &body)
-            .unwrap_or_else(|e| panic!("{method} {path}: {e}"))
-    })
-    .await
-    .expect("request task")
+    request(addr, ADMIN, method, path, headers, body).await
 }
 
 async fn edit(addr: &str, id: &str, if_match: u64, region: &str) -> (u16, Value) {
@@ -141,19 +131,6 @@ async fn edit(addr: &str, id: &str, if_match: u64, region: &str) -> (u16, Value)
     )
     .await;
     (status, serde_json::from_slice(&body).unwrap_or(Value::Null))
-}
-
-async fn next_json(ws: &mut Ws) -> Value {
-    loop {
-        let m = tokio::time::timeout(Duration::from_secs(60), ws.next())
-            .await
-            .expect("a message within 60 s")
-            .expect("stream open")
-            .expect("message");
-        if let Message::Text(t) = m {
-            return serde_json::from_str(&t).expect("JSON");
-        }
-    }
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -179,38 +156,12 @@ async fn three_replicas_behind_nginx_share_edits_streams_and_bytes() {
     let addrs: Vec<&str> = replicas.iter().map(|r| r.addr.as_str()).collect();
     let lb = nginx(dirs[3].path(), &addrs);
 
-    let (status, body) = call(
-        &lb.addr,
-        "POST",
-        "/v1/worlds".into(),
-        vec![("content-type", "application/json".into())],
-        br#"{"seed": 11}"#.to_vec(),
-    )
-    .await;
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&body));
-    let w: Value = serde_json::from_slice(&body).expect("json");
-    let id = w["id"].as_str().expect("id").to_string();
-    let token = w["tokens"]["admin"].as_str().expect("token").to_string();
+    let (id, token) = create_world(&lb.addr, ADMIN, 11).await;
 
     // Three sessions through the balancer: round robin spreads them over the replicas.
     let mut sessions = Vec::new();
     for _ in 0..3 {
-        let (mut ws, _) = tokio_tungstenite::connect_async(format!(
-            "ws://{}/v1/worlds/{id}/stream?token={token}",
-            lb.addr
-        ))
-        .await
-        .expect("connect through nginx");
-        assert_eq!(next_json(&mut ws).await["type"], "hello");
-        ws.send(Message::Text(
-            json!({"type": "view", "x": 16, "z": 16, "rings": [1]})
-                .to_string()
-                .into(),
-        ))
-        .await
-        .expect("send");
-        while next_json(&mut ws).await["type"] != "idle" {}
-        sessions.push(ws);
+        sessions.push(session(&lb.addr, &id, &token).await);
     }
 
     // Two editors through the balancer, both expecting version 1: one wins.
@@ -396,18 +347,7 @@ async fn kill_during_edit_streams(url: &str, victim: usize) {
     let addrs: Vec<String> = replicas.iter().map(|r| r.addr.clone()).collect();
     let addr_refs: Vec<&str> = addrs.iter().map(String::as_str).collect();
     let lb = nginx(dirs[3].path(), &addr_refs);
-    let (status, body) = call(
-        &lb.addr,
-        "POST",
-        "/v1/worlds".into(),
-        vec![("content-type", "application/json".into())],
-        br#"{"seed": 12}"#.to_vec(),
-    )
-    .await;
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&body));
-    let w: Value = serde_json::from_slice(&body).expect("json");
-    let id = w["id"].as_str().expect("id").to_string();
-    let token = w["tokens"]["admin"].as_str().expect("token").to_string();
+    let (id, token) = create_world(&lb.addr, ADMIN, 12).await;
 
     let acks = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
     let per_editor = 10;

@@ -5,15 +5,10 @@
 
 mod common;
 
-use futures::{SinkExt, StreamExt};
+use common::replica::{create_world, next_json, request, session, Ws};
 use serde_json::{json, Value};
-use std::time::Duration;
-use tokio_tungstenite::tungstenite::Message;
 
 const ADMIN: &str = "st_replicas_admin";
-
-type Ws =
-    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
 
 fn serve(url: &str) -> (common::Server, tempfile::TempDir) {
     let dir = tempfile::tempdir().expect("tmp");
@@ -31,7 +26,7 @@ fn serve(url: &str) -> (common::Server, tempfile::TempDir) {
     (server, dir)
 }
 
-/// An HTTP request to `addr` with the server's admin token, on the blocking pool.
+/// An HTTP request to `addr` with the server's admin token: the status and the JSON body.
 async fn call(
     addr: &str,
     method: &'static str,
@@ -39,22 +34,17 @@ async fn call(
     ctype: &'static str,
     body: Value,
 ) -> (u16, Value) {
-    let addr = addr.to_string();
-    tokio::task::spawn_blocking(move || {
-        let bearer = format!("Bearer {ADMIN}");
-        let bytes = serde_json::to_vec(&body).expect("json");
-        let (status, body) = common::raw::request(
-            &addr,
-            method,
-            &path,
-            &[("authorization", &bearer), ("content-type", ctype)],
-            &bytes,
-        )
-        .unwrap_or_else(|e| panic!("{method} {path}: {e}"));
-        (status, serde_json::from_slice(&body).unwrap_or(Value::Null))
-    })
-    .await
-    .expect("request task")
+    let bytes = serde_json::to_vec(&body).expect("json");
+    let (status, body) = request(
+        addr,
+        ADMIN,
+        method,
+        path,
+        vec![("content-type", ctype.into())],
+        bytes,
+    )
+    .await;
+    (status, serde_json::from_slice(&body).unwrap_or(Value::Null))
 }
 
 /// Adds a region near the origin through `addr`; returns the version it made.
@@ -73,38 +63,6 @@ async fn edit(addr: &str, id: &str, region: &str) -> u64 {
     body["version"].as_u64().expect("version")
 }
 
-async fn next_json(ws: &mut Ws) -> Value {
-    loop {
-        let m = tokio::time::timeout(Duration::from_secs(60), ws.next())
-            .await
-            .expect("a message within 60 s")
-            .expect("stream open")
-            .expect("message");
-        if let Message::Text(t) = m {
-            return serde_json::from_str(&t).expect("JSON");
-        }
-    }
-}
-
-/// A stream session on `addr` of world `id`, with its view sent and every tile received.
-async fn session(addr: &str, id: &str, token: &str) -> Ws {
-    let (mut ws, _) = tokio_tungstenite::connect_async(format!(
-        "ws://{addr}/v1/worlds/{id}/stream?token={token}"
-    ))
-    .await
-    .expect("connect");
-    assert_eq!(next_json(&mut ws).await["type"], "hello");
-    ws.send(Message::Text(
-        json!({"type": "view", "x": 16, "z": 16, "rings": [1]})
-            .to_string()
-            .into(),
-    ))
-    .await
-    .expect("send");
-    while next_json(&mut ws).await["type"] != "idle" {}
-    ws
-}
-
 /// Reads until an `invalidate` of `version` (or later): every tile the session holds near the
 /// origin is touched by the edits these tests make.
 async fn invalidated(ws: &mut Ws, version: u64) {
@@ -117,22 +75,9 @@ async fn invalidated(ws: &mut Ws, version: u64) {
     }
 }
 
-/// Two replicas on one database and a world created through the first; returns the world's id
-/// and read token.
+/// A world created through `a`: its id and admin token.
 async fn world(a: &str) -> (String, String) {
-    let (status, w) = call(
-        a,
-        "POST",
-        "/v1/worlds".into(),
-        "application/json",
-        json!({"seed": 5}),
-    )
-    .await;
-    assert_eq!(status, 201, "{w}");
-    (
-        w["id"].as_str().expect("id").to_string(),
-        w["tokens"]["admin"].as_str().expect("token").to_string(),
-    )
+    create_world(a, ADMIN, 5).await
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

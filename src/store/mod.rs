@@ -307,14 +307,22 @@ pub fn patch_scene(
     })?;
     let new = Scene::from_value(&doc).map_err(StoreError::Invalid)?;
     new.check_costs(Some(old)).map_err(StoreError::Invalid)?;
-    let text = serde_json::to_string(&doc).map_err(|e| StoreError::Backend(e.to_string()))?;
+    Ok((scene_text(&doc)?, new))
+}
+
+/// A scene document as stored: compact JSON of at most [`MAX_SCENE_BYTES`].
+///
+/// # Errors
+/// [`StoreError::TooLarge`] beyond the limit.
+pub fn scene_text(doc: &Value) -> Result<String, StoreError> {
+    let text = serde_json::to_string(doc).map_err(|e| StoreError::Backend(e.to_string()))?;
     if text.len() > MAX_SCENE_BYTES {
         return Err(StoreError::TooLarge {
             bytes: text.len(),
             limit: MAX_SCENE_BYTES,
         });
     }
-    Ok((text, new))
+    Ok(text)
 }
 
 #[cfg(test)]

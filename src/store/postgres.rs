@@ -22,8 +22,8 @@ pub mod notify;
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError, TokenGrant,
-    TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES,
+    canonical_scene, scene_text, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
+    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use deadpool_postgres::{GenericClient, Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
@@ -241,13 +241,7 @@ impl PostgresStore {
 impl SceneStore for PostgresStore {
     async fn create_world(&self, world: NewWorld) -> Result<WorldMeta, StoreError> {
         let scene = canonical_scene(&world.scene)?;
-        let text = serde_json::to_string(&scene).map_err(backend)?;
-        if text.len() > MAX_SCENE_BYTES {
-            return Err(StoreError::TooLarge {
-                bytes: text.len(),
-                limit: MAX_SCENE_BYTES,
-            });
-        }
+        let text = scene_text(&scene)?;
         let mut client = self.client().await?;
         let tx = client.transaction().await.map_err(db)?;
         let t = now();

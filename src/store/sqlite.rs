@@ -26,8 +26,8 @@
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError, TokenGrant,
-    TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES, MAX_SCENE_BYTES,
+    canonical_scene, scene_text, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
+    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
@@ -293,13 +293,7 @@ fn load_scene_at(conn: &Connection, id: &str, version: u64) -> Result<Value, Sto
 impl SceneStore for SqliteStore {
     async fn create_world(&self, world: NewWorld) -> Result<WorldMeta, StoreError> {
         let scene = canonical_scene(&world.scene)?;
-        let text = serde_json::to_string(&scene).map_err(backend)?;
-        if text.len() > MAX_SCENE_BYTES {
-            return Err(StoreError::TooLarge {
-                bytes: text.len(),
-                limit: MAX_SCENE_BYTES,
-            });
-        }
+        let text = scene_text(&scene)?;
         self.write(move |tx| {
             let t = now();
             let inserted = tx

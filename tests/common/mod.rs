@@ -17,6 +17,7 @@ pub mod js;
 pub mod oneshot;
 pub mod postgres;
 pub mod raw;
+pub mod replica;
 pub mod seams;
 pub mod topology;
 pub mod water;
