@@ -1,5 +1,6 @@
 // The strata viewer: streams height tiles and volume chunks over strata.stream.v2 (credits: a slow
-// client is slowed, not dropped) and renders them with three.js.
+// client is slowed, not dropped), decodes them in a worker (./decode.worker.ts) and renders them
+// with three.js.
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
@@ -9,8 +10,11 @@
 // as ribbons along the server's river lines (see ./rivers.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
-import { buildChunkMesh, chunkKey, decodeChunk } from "./chunk";
-import { decodeFrame, decodeTile, KIND_CHUNK, KIND_TILE, type Tile } from "./frame";
+import { ChunkLayer } from "./chunk";
+import { chunkKey } from "./chunkFormat";
+import type { Decoded } from "./decoded";
+import { decodeTile, type Tile } from "./frame";
+import { groundSample as sampleGround } from "./ground";
 import { buildMesh, disposeMesh } from "./mesh";
 import { RiverLayer } from "./rivers";
 import { selectView, tileKey } from "./view";
@@ -296,52 +300,19 @@ function groundOrUndefined(x: number, z: number): number | undefined {
 
 /** Ground height at world (x, z) and the LOD of the finest held tile it comes from. */
 function groundSample(x: number, z: number): { height: number; lod: number } | undefined {
-  let best: Held | undefined;
-  for (const h of held.values()) {
-    const t = h.tile;
-    const extent = (t.size - 1) * t.spacing;
-    if (x < t.originX || z < t.originZ || x > t.originX + extent || z > t.originZ + extent) continue;
-    if (!best || t.lod < best.tile.lod) best = h;
-  }
-  if (!best) return undefined;
-  const t = best.tile;
-  const fi = Math.min((x - t.originX) / t.spacing, t.size - 1.0001);
-  const fj = Math.min((z - t.originZ) / t.spacing, t.size - 1.0001);
-  const i = Math.floor(fi);
-  const j = Math.floor(fj);
-  const u = fi - i;
-  const w = fj - j;
-  const h = (a: number, b: number) => t.heights[b * t.size + a];
-  const height = (1 - w) * ((1 - u) * h(i, j) + u * h(i + 1, j)) + w * ((1 - u) * h(i, j + 1) + u * h(i + 1, j + 1));
-  return { height, lod: t.lod };
+  return sampleGround(heldTiles(), x, z);
+}
+
+/** The held tiles (not the retiring ones). */
+function* heldTiles(): Iterable<Tile> {
+  for (const h of held.values()) yield h.tile;
 }
 
 // ---- volume chunks -----------------------------------------------------------------------------------
 // Where the world's surface is not a heightfield (volume regions), the server streams chunk meshes;
 // the tiles hide the vertices the chunks override.
-const volumes = new THREE.Group();
-scene.add(volumes);
-const chunkMeshes = new Map<string, THREE.Mesh | undefined>();
+const chunks = new ChunkLayer(scene);
 let wantedChunks = new Set<string>();
-
-function removeChunk(key: string): void {
-  if (!chunkMeshes.has(key)) return;
-  const mesh = chunkMeshes.get(key);
-  if (mesh) {
-    volumes.remove(mesh);
-    mesh.geometry.dispose();
-  }
-  chunkMeshes.delete(key);
-  state.heldChunks = chunkMeshes.size;
-}
-
-function putChunk(key: string, payload: DataView): void {
-  removeChunk(key);
-  const mesh = buildChunkMesh(decodeChunk(payload));
-  if (mesh) volumes.add(mesh);
-  chunkMeshes.set(key, mesh);
-  state.heldChunks = chunkMeshes.size;
-}
 
 const addressKey = (a: number[]) => chunkKey(a[0], a[1], a[2], a[3]);
 
@@ -435,31 +406,10 @@ function connect(): void {
     sendView(true);
     ws.send(JSON.stringify({ type: "credit", frames: CREDIT_WINDOW }));
   };
+  // Every message goes through the decoding worker, which answers in order (./decode.worker.ts).
   ws.onmessage = (ev) => {
-    if (typeof ev.data === "string") {
-      onControl(JSON.parse(ev.data));
-      return;
-    }
-    // Every binary frame spent a credit: give it back once the frame is handled.
-    owe();
-    try {
-      const frame = decodeFrame(ev.data as ArrayBuffer);
-      if (frame.format !== 2) throw new Error(`unexpected payload format ${frame.format}`);
-      state.inFlight = Math.max(0, state.inFlight - 1);
-      if (frame.kind === KIND_CHUNK) {
-        state.chunks++;
-        const key = chunkKey(frame.lod, frame.x, frame.y, frame.z);
-        if (wantedChunks.has(key)) putChunk(key, frame.payload);
-        return;
-      }
-      if (frame.kind !== KIND_TILE) return; // a kind this viewer does not draw (Ptex pages, kind 3)
-      state.tiles++;
-      const key = tileKey(frame.lod, frame.x, frame.z);
-      if (!wanted.has(key)) return; // sent for a view we have since left
-      putTile(decodeTile(frame.payload), frame.version);
-    } catch (e) {
-      showError(`bad frame: ${(e as Error).message}`);
-    }
+    if (typeof ev.data === "string") decoder.postMessage(ev.data);
+    else decoder.postMessage(ev.data, [ev.data as ArrayBuffer]);
   };
   ws.onclose = (ev) => {
     if (socket !== ws) return;
@@ -482,6 +432,43 @@ function connect(): void {
   };
 }
 
+// Decoding off the main thread: frames are decoded in a worker; meshes are built here from the
+// typed arrays it transfers back.
+const decoder = new Worker(new URL("./decode.worker.ts", import.meta.url), { type: "module" });
+decoder.onmessage = (ev: MessageEvent<Decoded>) => onDecoded(ev.data);
+decoder.onerror = (e) => showError(`decoding worker: ${e.message}`);
+
+function onDecoded(m: Decoded): void {
+  if (m.type === "text") {
+    onControl(JSON.parse(m.text));
+    return;
+  }
+  // Every binary frame spent a credit: give it back once the frame is handled.
+  owe();
+  switch (m.type) {
+    case "error":
+      showError(`bad frame: ${m.message}`);
+      return;
+    case "chunk": {
+      state.inFlight = Math.max(0, state.inFlight - 1);
+      state.chunks++;
+      const key = chunkKey(m.lod, m.x, m.y, m.z);
+      if (wantedChunks.has(key)) state.heldChunks = chunks.put(key, m.chunk);
+      return;
+    }
+    case "tile": {
+      state.inFlight = Math.max(0, state.inFlight - 1);
+      state.tiles++;
+      const key = tileKey(m.lod, m.x, m.z);
+      if (!wanted.has(key)) return; // sent for a view we have since left
+      putTile(m.tile, m.version);
+      return;
+    }
+    default:
+      return; // a kind this viewer does not draw (Ptex pages, kind 3)
+  }
+}
+
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 function onControl(m: any): void {
   switch (m.type) {
@@ -495,7 +482,7 @@ function onControl(m: any): void {
       state.idle = false;
       pruneToView();
       wantedChunks = new Set((m.chunks ?? []).map(addressKey));
-      for (const key of [...chunkMeshes.keys()]) if (!wantedChunks.has(key)) removeChunk(key);
+      state.heldChunks = chunks.keep(wantedChunks);
       break;
     case "idle":
       state.idle = true;
@@ -509,7 +496,7 @@ function onControl(m: any): void {
       state.inFlight += m.tiles.length + (m.chunks ?? []).length;
       for (const a of m.dropped ?? []) {
         wantedChunks.delete(addressKey(a));
-        removeChunk(addressKey(a));
+        state.heldChunks = chunks.remove(addressKey(a));
       }
       break;
     case "ack":
