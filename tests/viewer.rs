@@ -6,6 +6,10 @@
 //! `tests/js/edit.mjs` creates a world, opens the viewer on it with an edit token, raises the
 //! terrain with the UI's raise tool and a click, and compares screenshots before and after
 //! (`target/viewer-edit-{before,after}.png`): changed around the click, unchanged far away.
+//! `tests/js/errors.mjs` opens a bad seed and an unknown world: the server's error is shown and
+//! the viewer stops reconnecting; `tests/js/volume.mjs` opens worlds with and without the arch
+//! volume element: chunk frames arrive for the arch and it shows
+//! (`target/viewer-{arch,no-arch}.png`).
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
@@ -95,6 +99,16 @@ fn run_node(script: &str, args: &[&str]) -> (bool, String) {
     (out.status.success(), text)
 }
 
+/// The arch volume element standing on the ground of seed 7 at (32, 24), as `volume.mjs` places
+/// it in a world.
+fn arch_element() -> serde_json::Value {
+    use strata::edits::{synthesize, TileEdits};
+    use strata::terrain::{TileKey, WorldParams, WorldPlan};
+    let plan = WorldPlan::new(7, WorldParams::default()).expect("default world");
+    let tile = synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 }, &TileEdits::default());
+    common::arch::arch_element(tile.heights[24 * 65 + 32])
+}
+
 #[test]
 fn viewer_streams_and_draws_terrain_in_headless_chromium() {
     require_node();
@@ -126,9 +140,24 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
         "edit.mjs",
         &[server.addr.as_str(), path(&before), path(&after)],
     );
+    // Issue 19, Done-when 3: a bad seed or world shows the server's error and stops.
+    let errors = run_node("errors.mjs", &[server.addr.as_str()]);
+    // Issue 19, Done-when 1 (the arch): chunk frames arrive and the arch shows.
+    let arch = arch_element().to_string();
+    let with = root().join("target").join("viewer-arch.png");
+    let without = root().join("target").join("viewer-no-arch.png");
+    let volume = run_node(
+        "volume.mjs",
+        &[server.addr.as_str(), &arch, path(&with), path(&without)],
+    );
     drop(server);
     let _ = std::fs::remove_dir_all(&data);
-    for (name, (ok, out)) in [("viewer.mjs", viewer), ("edit.mjs", edit)] {
+    for (name, (ok, out)) in [
+        ("viewer.mjs", viewer),
+        ("edit.mjs", edit),
+        ("errors.mjs", errors),
+        ("volume.mjs", volume),
+    ] {
         assert!(ok, "{name} failed:\n{out}");
     }
     assert!(shot.is_file(), "no screenshot at {}", shot.display());

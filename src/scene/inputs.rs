@@ -284,6 +284,11 @@ impl SceneInputs {
         }
     }
 
+    /// The volume regions, in document order.
+    pub fn volumes(&self) -> &[VolumeInput] {
+        &self.volumes
+    }
+
     /// The volume regions whose box meets the world-space box `[lo, hi]` (metres, `[x, y, z]`),
     /// in document order.
     pub fn volumes_meeting(&self, lo: [f64; 3], hi: [f64; 3]) -> Vec<VolumeInput> {

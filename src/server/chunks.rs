@@ -120,8 +120,9 @@ fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
     )
 }
 
-/// Meshes and encodes chunk `key` of the world `view` in one synthesis slot.
-async fn product(
+/// Meshes and encodes chunk `key` of the world `view` in one synthesis slot (the chunk route's
+/// body; the stream's chunk frames carry the same bytes).
+pub(super) async fn product(
     st: &AppState,
     view: Arc<WorldView>,
     key: ChunkKey,

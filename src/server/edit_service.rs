@@ -53,6 +53,21 @@ impl crate::stream::session::SourceView for StreamView {
     fn plan(&self) -> &Arc<WorldPlan> {
         &self.view.plan
     }
+
+    fn volume_boxes(&self) -> Vec<crate::stream::chunks::Box3> {
+        self.view
+            .inputs
+            .volumes()
+            .iter()
+            .map(|v| {
+                let s = &v.spec;
+                [
+                    [s.min[0], f64::from(s.y_m[0]), s.min[1]],
+                    [s.max[0], f64::from(s.y_m[1]), s.max[1]],
+                ]
+            })
+            .collect()
+    }
 }
 
 /// An edit of one world as its stream sessions receive it.

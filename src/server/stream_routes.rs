@@ -7,9 +7,10 @@ use super::route_table::RouteTable;
 use super::routes::CachedProduct;
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
-use crate::stream::protocol::TileFrame;
+use crate::stream::protocol::{ChunkFrame, Protocol, TileFrame};
 use crate::stream::session::{run, StreamError, StreamSource, MAX_MESSAGE_BYTES};
 use crate::terrain::TileKey;
+use crate::volume::chunk::{tiles_needed, ChunkKey};
 use axum::body::Bytes;
 use axum::extract::ws::rejection::WebSocketUpgradeRejection;
 use axum::extract::{Path, State, WebSocketUpgrade};
@@ -74,6 +75,55 @@ async fn tile_frame(
     Ok(frame.body.clone())
 }
 
+/// The frame of volume chunk `key` of the world `view` in `format`: the chunk route's body
+/// behind a frame header, kept in the body cache under a key made of the input hashes of the
+/// tiles the chunk reads (which cover the volume regions and `strata` elements in their reach),
+/// the chunk's address and the world version, so clients streaming one area share each frame.
+async fn chunk_frame(
+    state: &AppState,
+    view: &StreamView,
+    key: ChunkKey,
+    format: Format,
+) -> Result<Bytes, StreamError> {
+    let tag = match format {
+        Format::Json => "chunk.json",
+        Format::Glb => "chunk.glb",
+        _ => "chunk.bin",
+    };
+    let mut h = blake3::Hasher::new();
+    h.update(b"strata.stream.v2 chunk frame");
+    for (x, z) in tiles_needed(key) {
+        let tile = TileKey { lod: key.lod, x, z };
+        h.update(&view.view.tile_hash(tile, [false; 4]));
+    }
+    h.update(&key.lod.to_le_bytes());
+    for c in [key.x, key.y, key.z] {
+        h.update(&c.to_le_bytes());
+    }
+    h.update(&view.version.to_le_bytes());
+    let frame_key = (*h.finalize().as_bytes(), tag);
+    let frame = state
+        .bodies
+        .get_or_encode(frame_key, || async {
+            let product = Box::pin(super::chunks::product(
+                state,
+                view.view.clone(),
+                key,
+                format,
+            ))
+            .await?;
+            let bytes = ChunkFrame::encode_parts(key, format, view.version, &product.body);
+            Ok(Arc::new(CachedProduct {
+                body: bytes.into(),
+                hash: String::new(),
+                content_type: "application/octet-stream",
+                extra: Vec::new(),
+            }))
+        })
+        .await?;
+    Ok(frame.body.clone())
+}
+
 /// A stored world: the latest version, its edit events, edits by callers with the edit role.
 struct WorldSource {
     state: AppState,
@@ -122,6 +172,15 @@ impl StreamSource for WorldSource {
         tile_frame(&self.state, view, key, seams, format).await
     }
 
+    async fn chunk_frame(
+        &self,
+        view: &StreamView,
+        key: ChunkKey,
+        format: Format,
+    ) -> Result<Bytes, StreamError> {
+        chunk_frame(&self.state, view, key, format).await
+    }
+
     async fn edit(
         &self,
         patch: serde_json::Value,
@@ -161,10 +220,34 @@ fn upgrade_required(e: &WebSocketUpgradeRejection) -> Response {
     res
 }
 
-/// `?token=` for browsers, which cannot set headers on a WebSocket.
+/// `?token=` for browsers, which cannot set headers on a WebSocket, and `?protocol=`.
 #[derive(serde::Deserialize)]
 struct TokenQuery {
     token: Option<String>,
+    protocol: Option<String>,
+}
+
+/// `?protocol=`: the stream protocol version the client speaks, `1` (the default) or `2`.
+#[derive(serde::Deserialize)]
+struct ProtocolQuery {
+    protocol: Option<String>,
+}
+
+/// The protocol `?protocol=` names: absent or `1` is v1, `2` is v2; anything else is a 400
+/// naming the field.
+fn protocol_of(q: Option<&str>) -> Result<Protocol, AppError> {
+    match q {
+        None | Some("1") => Ok(Protocol::V1),
+        Some("2") => Ok(Protocol::V2),
+        Some(other) => Err(AppError::bad_request(
+            crate::server::error::code::BAD_PARAMETER,
+            "protocol",
+            format!(
+                "protocol must be 1 or 2 (strata.stream.v1 or v2), got {:?}",
+                other.chars().take(40).collect::<String>()
+            ),
+        )),
+    }
 }
 
 async fn world_stream(
@@ -176,6 +259,7 @@ async fn world_stream(
     ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
     state.cors.check_upgrade(&headers)?;
+    let protocol = protocol_of(q.protocol.as_deref())?;
     let mut headers = headers;
     if let Some(token) = q
         .token
@@ -204,7 +288,9 @@ async fn world_stream(
         .on_upgrade(move |socket| async move {
             // The connection's slot stays taken while the session runs.
             let _slot = slot;
-            sessions.track(|closing| run(socket, source, closing)).await;
+            sessions
+                .track(|closing| run(socket, source, closing, protocol))
+                .await;
         }))
 }
 
@@ -236,6 +322,15 @@ impl StreamSource for SeedSource {
         tile_frame(&self.state, view, key, seams, format).await
     }
 
+    async fn chunk_frame(
+        &self,
+        view: &StreamView,
+        key: ChunkKey,
+        format: Format,
+    ) -> Result<Bytes, StreamError> {
+        chunk_frame(&self.state, view, key, format).await
+    }
+
     async fn edit(
         &self,
         _patch: serde_json::Value,
@@ -253,10 +348,12 @@ impl StreamSource for SeedSource {
 async fn seed_stream(
     State(state): State<AppState>,
     Path(seed): Path<String>,
+    axum::extract::Query(q): axum::extract::Query<ProtocolQuery>,
     slot: Option<axum::Extension<super::connections::ConnectionSlot>>,
     ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, AppError> {
     let seed = crate::server::params::parse_seed(&seed)?;
+    let protocol = protocol_of(q.protocol.as_deref())?;
     let ws = match ws {
         Ok(ws) => ws,
         Err(e) => return Ok(upgrade_required(&e)),
@@ -272,6 +369,8 @@ async fn seed_stream(
         .on_upgrade(move |socket| async move {
             // The connection's slot stays taken while the session runs.
             let _slot = slot;
-            sessions.track(|closing| run(socket, source, closing)).await;
+            sessions
+                .track(|closing| run(socket, source, closing, protocol))
+                .await;
         }))
 }

@@ -1,12 +1,39 @@
-//! Messages and frames of `api/stream_protocol_v1.md`.
+//! Messages and frames of `api/stream_protocol_v1.md` and `api/stream_protocol_v2.md`.
 //!
 //! Client → server: JSON text messages ([`ClientMessage`]). Server → client: JSON text messages
-//! ([`ServerMessage`]) for control, and binary tile frames ([`TileFrame`]) with a 44-byte
-//! little-endian header followed by the tile in the requested format.
+//! ([`ServerMessage`]) for control, and binary frames with a 44-byte little-endian header
+//! followed by the product: tiles ([`TileFrame`]) and, in v2, volume chunks ([`ChunkFrame`]).
+//! Version 2 adds flow control (`credit`), chunk rings and asked chunks to the view; a v1
+//! session parses and answers exactly as before.
 
 use crate::encode::Format;
 use crate::terrain::TileKey;
+use crate::volume::chunk::ChunkKey;
 use serde::{Deserialize, Serialize};
+
+/// The protocol version of a session, chosen by the client when it connects (`?protocol=2`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Protocol {
+    /// `strata.stream.v1`: tiles, server-side backpressure.
+    V1,
+    /// `strata.stream.v2`: tiles and volume chunks, client-granted credits.
+    V2,
+}
+
+impl Protocol {
+    /// The name the `hello` message carries.
+    pub fn name(self) -> &'static str {
+        match self {
+            Protocol::V1 => "strata.stream.v1",
+            Protocol::V2 => "strata.stream.v2",
+        }
+    }
+}
+
+/// Frame kind of a volume chunk (protocol v2).
+pub const KIND_CHUNK: u8 = 2;
+/// Most frames one `credit` message may grant, and most credits a client may hold unspent.
+pub const MAX_CREDITS: u32 = 1024;
 
 /// Frame magic.
 pub const FRAME_MAGIC: &[u8; 4] = b"STRF";
@@ -32,6 +59,14 @@ pub enum ClientMessage {
         /// Tile format (`bin` by default).
         #[serde(default)]
         format: Option<String>,
+        /// What a v2 view adds; `None` in v1.
+        #[serde(skip)]
+        volume: Option<VolumeView>,
+    },
+    /// Protocol v2: the client will accept `frames` more binary frames.
+    Credit {
+        /// Frames granted, 1 to [`MAX_CREDITS`].
+        frames: u32,
     },
     /// An RFC 6902 JSON Patch for the world (world streams only; needs an edit token).
     Edit {
@@ -64,6 +99,20 @@ impl BadMessage {
     }
 }
 
+/// The volume part of a v2 view: where the camera is in height, which chunk rings to stream
+/// around it and which chunks the client asks for by address.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+pub struct VolumeView {
+    /// Camera height, metres (0 when not given).
+    pub y: f64,
+    /// Chunk rings per chunk LOD, finest first (none: no ring chunks).
+    pub chunk_rings: Vec<u32>,
+    /// Chunks asked for by `[lod, x, y, z]`, streamed whether or not a volume region meets them.
+    pub chunks: Vec<[i64; 4]>,
+    /// Chunk format: `bin` (default), `json` or `glb`.
+    pub chunk_format: Option<String>,
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ViewFields {
@@ -76,6 +125,30 @@ struct ViewFields {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
+struct ViewFieldsV2 {
+    x: f64,
+    z: f64,
+    rings: Vec<u32>,
+    #[serde(default)]
+    format: Option<String>,
+    #[serde(default)]
+    y: Option<f64>,
+    #[serde(default)]
+    chunk_rings: Vec<u32>,
+    #[serde(default)]
+    chunks: Vec<[i64; 4]>,
+    #[serde(default)]
+    chunk_format: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CreditFields {
+    frames: u32,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct EditFields {
     id: String,
     patch: serde_json::Value,
@@ -84,8 +157,9 @@ struct EditFields {
 }
 
 impl ClientMessage {
-    /// Parses a text message, blaming the field that is missing, unknown or of the wrong type.
-    pub fn parse(text: &str) -> Result<Self, BadMessage> {
+    /// Parses a text message of `protocol`, blaming the field that is missing, unknown or of
+    /// the wrong type.
+    pub fn parse(text: &str, protocol: Protocol) -> Result<Self, BadMessage> {
         let value: serde_json::Value = serde_json::from_str(text)
             .map_err(|e| BadMessage::new("type", format!("not a JSON message: {e}")))?;
         let serde_json::Value::Object(mut fields) = value else {
@@ -96,22 +170,51 @@ impl ClientMessage {
             _ => {
                 return Err(BadMessage::new(
                     "type",
-                    "`type` must be \"view\" or \"edit\"",
+                    match protocol {
+                        Protocol::V1 => "`type` must be \"view\" or \"edit\"",
+                        Protocol::V2 => "`type` must be \"view\", \"credit\" or \"edit\"",
+                    },
                 ))
             }
         };
         let rest = serde_json::Value::Object(fields);
-        match kind.as_str() {
-            "view" => {
+        match (kind.as_str(), protocol) {
+            ("view", Protocol::V1) => {
                 let f: ViewFields = fields_of(&rest)?;
                 Ok(ClientMessage::View {
                     x: f.x,
                     z: f.z,
                     rings: f.rings,
                     format: f.format,
+                    volume: None,
                 })
             }
-            "edit" => {
+            ("view", Protocol::V2) => {
+                let f: ViewFieldsV2 = fields_of(&rest)?;
+                Ok(ClientMessage::View {
+                    x: f.x,
+                    z: f.z,
+                    rings: f.rings,
+                    format: f.format,
+                    volume: Some(VolumeView {
+                        y: f.y.unwrap_or(0.0),
+                        chunk_rings: f.chunk_rings,
+                        chunks: f.chunks,
+                        chunk_format: f.chunk_format,
+                    }),
+                })
+            }
+            ("credit", Protocol::V2) => {
+                let f: CreditFields = fields_of(&rest)?;
+                if f.frames == 0 || f.frames > MAX_CREDITS {
+                    return Err(BadMessage::new(
+                        "frames",
+                        format!("frames must be 1 to {MAX_CREDITS}"),
+                    ));
+                }
+                Ok(ClientMessage::Credit { frames: f.frames })
+            }
+            ("edit", _) => {
                 let f: EditFields = fields_of(&rest)?;
                 Ok(ClientMessage::Edit {
                     id: f.id,
@@ -119,11 +222,15 @@ impl ClientMessage {
                     if_match: f.if_match,
                 })
             }
-            other => Err(BadMessage::new(
+            (other, _) => Err(BadMessage::new(
                 "type",
                 format!(
-                    "unknown message type {:?}; known: view, edit",
-                    other.chars().take(40).collect::<String>()
+                    "unknown message type {:?}; known: {}",
+                    other.chars().take(40).collect::<String>(),
+                    match protocol {
+                        Protocol::V1 => "view, edit",
+                        Protocol::V2 => "view, credit, edit",
+                    }
                 ),
             )),
         }
@@ -160,19 +267,25 @@ fn fields_of<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Resul
 pub enum ServerMessage {
     /// First message: what the stream is.
     Hello {
-        /// Protocol name and version, `strata.stream.v1`.
+        /// Protocol name and version, `strata.stream.v1` or `strata.stream.v2`.
         protocol: &'static str,
         /// Current world version (1 for a bare seed).
         version: u64,
         /// Frame queue bound: at most this many frames are buffered for the client.
         queue_frames: usize,
+        /// v2: the credits the client holds now (0: nothing is sent before a `credit`).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        credits: Option<u32>,
     },
-    /// The view was accepted; `tiles` will arrive nearest first.
+    /// The view was accepted; `tiles` (and in v2 `chunks`) will arrive nearest first.
     View {
         /// Tiles in the view.
         tiles: usize,
-        /// Tiles that will be sent (those the client does not hold at the current version).
+        /// Frames that will be sent (products the client does not hold at the current version).
         sending: usize,
+        /// v2: `[lod, x, y, z]` of the view's chunks, nearest first.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        chunks: Option<Vec<[i64; 4]>>,
     },
     /// Every tile of the current view has been sent.
     Idle {
@@ -185,6 +298,14 @@ pub enum ServerMessage {
         version: u64,
         /// `[lod, x, z]` of each invalidated tile the client holds.
         tiles: Vec<[i64; 3]>,
+        /// v2: `[lod, x, y, z]` of each invalidated chunk the client holds (fresh frames follow
+        /// for those still in the view).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        chunks: Option<Vec<[i64; 4]>>,
+        /// v2: `[lod, x, y, z]` of held chunks the edit took out of the view (no volume region
+        /// meets them any more): the client drops them.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        dropped: Option<Vec<[i64; 4]>>,
     },
     /// An edit sent on this socket was accepted.
     Ack {
@@ -305,6 +426,77 @@ impl TileFrame {
     }
 }
 
+/// `[lod, x, y, z]` of a chunk, as messages carry it.
+pub fn chunk_address(key: ChunkKey) -> [i64; 4] {
+    [i64::from(key.lod), key.x, key.y, key.z]
+}
+
+/// A volume chunk frame (protocol v2): the tile frame's 44-byte header with kind 2, the chunk's
+/// `y` as an `i32` at offset 36 (where tiles carry seam flags), then the chunk's bytes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ChunkFrame {
+    /// Address.
+    pub key: ChunkKey,
+    /// Payload format (`json`, `bin` or `glb`).
+    pub format: Format,
+    /// World version the chunk is of.
+    pub version: u64,
+    /// The chunk in `format` (`api/chunk_format_v1.md`).
+    pub payload: Vec<u8>,
+}
+
+impl ChunkFrame {
+    /// The bytes of the frame of chunk `key` of world `version`, its `payload` in `format`.
+    pub fn encode_parts(key: ChunkKey, format: Format, version: u64, payload: &[u8]) -> Vec<u8> {
+        let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + payload.len());
+        out.extend_from_slice(FRAME_MAGIC);
+        out.extend_from_slice(&FRAME_VERSION.to_le_bytes());
+        out.push(KIND_CHUNK);
+        out.push(format_code(format));
+        out.extend_from_slice(&key.lod.to_le_bytes());
+        out.extend_from_slice(&key.x.to_le_bytes());
+        out.extend_from_slice(&key.z.to_le_bytes());
+        out.extend_from_slice(&version.to_le_bytes());
+        // Chunk y is within ±511 (`volume::chunk::max_chunk_y`), so it fits an i32.
+        let y = i32::try_from(key.y).unwrap_or(if key.y < 0 { i32::MIN } else { i32::MAX });
+        out.extend_from_slice(&y.to_le_bytes());
+        out.extend_from_slice(&(payload.len() as u32).to_le_bytes());
+        out.extend_from_slice(payload);
+        out
+    }
+
+    /// Parses a chunk frame (the client side, for tests and tools).
+    pub fn decode(bytes: &[u8]) -> Option<Self> {
+        if bytes.len() < FRAME_HEADER_BYTES || &bytes[..4] != FRAME_MAGIC || bytes[6] != KIND_CHUNK
+        {
+            return None;
+        }
+        let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().unwrap_or_default());
+        let i64_at = |o: usize| i64::from_le_bytes(bytes[o..o + 8].try_into().unwrap_or_default());
+        let format = match bytes[7] {
+            1 => Format::Json,
+            2 => Format::Bin,
+            4 => Format::Glb,
+            _ => return None,
+        };
+        let len = u32_at(40) as usize;
+        if bytes.len() != FRAME_HEADER_BYTES + len {
+            return None;
+        }
+        Some(ChunkFrame {
+            key: ChunkKey {
+                lod: u32_at(8),
+                x: i64_at(12),
+                y: i64::from(u32_at(36) as i32),
+                z: i64_at(20),
+            },
+            format,
+            version: i64_at(28) as u64,
+            payload: bytes[FRAME_HEADER_BYTES..].to_vec(),
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -326,6 +518,50 @@ mod tests {
         assert_eq!(bytes.len(), FRAME_HEADER_BYTES + 3);
         assert_eq!(TileFrame::decode(&bytes), Some(f));
         assert_eq!(TileFrame::decode(&bytes[..20]), None);
+    }
+
+    #[test]
+    fn chunk_frames_round_trip_and_are_not_tiles() {
+        let f = ChunkFrame {
+            key: ChunkKey {
+                lod: 2,
+                x: -5,
+                y: -3,
+                z: 1 << 33,
+            },
+            format: Format::Bin,
+            version: 4,
+            payload: vec![9; 5],
+        };
+        let bytes = ChunkFrame::encode_parts(f.key, f.format, f.version, &f.payload);
+        assert_eq!(bytes.len(), FRAME_HEADER_BYTES + 5);
+        assert_eq!(ChunkFrame::decode(&bytes), Some(f));
+        assert_eq!(TileFrame::decode(&bytes), None);
+    }
+
+    #[test]
+    fn v2_messages_parse_and_v1_refuses_them() {
+        let credit = r#"{"type":"credit","frames":3}"#;
+        assert_eq!(
+            ClientMessage::parse(credit, Protocol::V2),
+            Ok(ClientMessage::Credit { frames: 3 })
+        );
+        assert_eq!(
+            ClientMessage::parse(credit, Protocol::V1).map_err(|e| e.field),
+            Err("type".to_string())
+        );
+        let zero = ClientMessage::parse(r#"{"type":"credit","frames":0}"#, Protocol::V2);
+        assert_eq!(zero.map_err(|e| e.field), Err("frames".to_string()));
+        let view = r#"{"type":"view","x":1,"z":2,"rings":[1],"y":30,"chunk_rings":[2]}"#;
+        match ClientMessage::parse(view, Protocol::V2) {
+            Ok(ClientMessage::View {
+                volume: Some(v), ..
+            }) => assert_eq!((v.y, v.chunk_rings), (30.0, vec![2])),
+            other => panic!("a v2 view: {other:?}"),
+        }
+        let with_y = r#"{"type":"view","x":1,"z":2,"rings":[1],"y":30}"#;
+        let refused = ClientMessage::parse(with_y, Protocol::V1).map_err(|e| e.field);
+        assert_eq!(refused, Err("y".to_string()));
     }
 
     #[test]

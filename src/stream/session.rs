@@ -1,56 +1,76 @@
-//! One WebSocket client: its view, the tiles it holds, a bounded frame queue.
+//! One WebSocket client: its view, the products it holds, a bounded outbox.
 //!
-//! Three things happen concurrently, in one `select!` loop plus a writer task:
-//! - client messages: a new view replaces the pending work (tiles no longer in view are never
-//!   produced), an edit is applied and acknowledged;
-//! - edit events: held tiles whose reach (footprint plus the margin their inputs are read from,
-//!   `scene::tile_reach`) meets the dirty region are invalidated (one text
-//!   message) and queued again, ahead of the rest, in view order;
-//! - production: while work is pending and the queue has room, the next tile is synthesised and
-//!   queued. A full queue stops production (backpressure); a client that does not take a frame
-//!   within [`SEND_TIMEOUT`] is disconnected (the kernel's socket buffers take the first frames,
-//!   so a client that never reads is closed [`SEND_TIMEOUT`] after they fill).
+//! Three things happen concurrently, in one `select!` loop plus a writer task
+//! ([`super::writer`]):
+//! - client messages: a new view replaces the pending work (products no longer in view are never
+//!   produced, their queued frames are withdrawn), an edit is applied and acknowledged, a v2
+//!   `credit` lets more frames go;
+//! - edit events: held products whose reach (footprint plus the margin their inputs are read
+//!   from, `scene::tile_reach`) meets the dirty region are invalidated (one text message); their
+//!   queued frames are withdrawn (superseded frames are coalesced) and they are queued again,
+//!   ahead of the rest, in view order;
+//! - production: while work is pending, the outbox has room and (v2) the client has credit, the
+//!   next product is synthesised and queued. A full outbox or no credit stops production: the
+//!   client is slowed, never dropped for it. A v2 client that holds no credit while frames wait
+//!   and sends nothing for [`SEND_TIMEOUT`] is closed with [`POLICY_VIOLATION`] and a reason;
+//!   a client whose socket takes no frame for [`SEND_TIMEOUT`] (it does not read) likewise.
 //!
-//! **Memory per client** is bounded: the queue holds at most [`QUEUE_FRAMES`] frames and
-//! [`QUEUE_BYTES`] bytes of them (production waits for room), the WebSocket's write buffer one
-//! frame more plus its 128 KiB write buffer, and the view's bookkeeping at most
-//! [`super::view::MAX_VIEW_TILES`] entries: [`CLIENT_MEMORY_BOUND`] in all. Frames are
+//! **Memory per client** is bounded: the outbox holds at most [`QUEUE_FRAMES`] items and
+//! [`QUEUE_BYTES`] bytes of frames plus the one frame that crossed the byte bound (production
+//! waits for room), the WebSocket's write buffer one frame more plus its 128 KiB write buffer,
+//! and the view's bookkeeping at most [`super::view::MAX_VIEW_TILES`] tiles and
+//! [`super::chunks::MAX_VIEW_CHUNKS`] chunks: [`CLIENT_MEMORY_BOUND`] in all. No frame over
+//! [`MAX_FRAME_BYTES`] is queued (a larger chunk is refused with an `error`). Frames are
 //! reference-counted bytes the source shares between clients (the server's body cache holds
 //! them), so clients of one area hold one copy of each frame, not one each.
 //!
 //! At shutdown the server cancels the session's token: production stops at once and the client
 //! gets a close frame with code [`GOING_AWAY`].
 
+use super::chunks::{chunk_view_of, select_chunks, sort_nearest, within_limits, Box3};
+use super::outbox::{Outbox, Outgoing};
 #[cfg(doc)]
 use super::protocol::TileFrame;
-use super::protocol::{ClientMessage, ServerMessage};
+use super::protocol::{
+    chunk_address, ClientMessage, Protocol, ServerMessage, VolumeView, MAX_CREDITS,
+};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
+use super::work::{merge, Product, Work};
 use crate::encode::Format;
-use crate::scene::Dirty;
-use crate::terrain::{TileKey, WorldPlan};
+use crate::scene::{Dirty, Rect};
+use crate::terrain::{TileKey, WorldParams, WorldPlan};
+use crate::volume::chunk::{tiles_needed, ChunkKey};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
-use futures::{SinkExt, StreamExt};
+use futures::StreamExt;
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::Arc;
 use std::time::Duration;
-use tokio::sync::{broadcast, mpsc, OwnedSemaphorePermit, Semaphore};
+use tokio::sync::broadcast;
+use tokio::time::Instant;
 use tokio_util::sync::CancellationToken;
 
 /// Frames buffered per client.
 pub const QUEUE_FRAMES: usize = 16;
 /// Bytes of frames buffered per client: production waits while the queue holds more.
 pub const QUEUE_BYTES: usize = 1 << 20;
-/// Largest tile frame, bytes: a LOD-0 JSON tile with every optional layer (about 0.4 MiB),
-/// rounded up.
+/// Largest frame, bytes: a LOD-0 JSON tile with every optional layer (about 0.4 MiB), rounded
+/// up. A chunk frame over it is not sent (the client gets an `error` naming the chunk).
 pub const MAX_FRAME_BYTES: usize = 1 << 20;
-/// Memory one client may hold, bytes: the queued frames, one frame in production and one in
-/// the WebSocket's buffers with its 128 KiB write buffer, and the view's bookkeeping (a tile
-/// key and its seams per view tile, two hash maps of them).
-pub const CLIENT_MEMORY_BOUND: usize =
-    QUEUE_BYTES + 2 * MAX_FRAME_BYTES + (128 << 10) + MAX_VIEW_TILES * 256;
-/// A client that does not accept a frame for this long is disconnected.
+/// Memory one client may hold, bytes: the queued frames, the one frame that crossed the byte
+/// bound and one in the WebSocket's buffers with its 128 KiB write buffer, and the view's
+/// bookkeeping (a product's address and its seams per view tile and chunk, in a few lists and
+/// hash maps).
+pub const CLIENT_MEMORY_BOUND: usize = QUEUE_BYTES
+    + 2 * MAX_FRAME_BYTES
+    + (128 << 10)
+    + (MAX_VIEW_TILES + super::chunks::MAX_VIEW_CHUNKS + super::chunks::MAX_ASKED_CHUNKS) * 256;
+/// A client whose socket takes no frame for this long, or (v2) that holds no credit while
+/// frames wait and sends nothing for this long, is disconnected with [`POLICY_VIOLATION`].
 pub const SEND_TIMEOUT: Duration = Duration::from_secs(10);
+/// Close code of a client that neither reads nor grants credit for [`SEND_TIMEOUT`] (RFC 6455
+/// "policy violation").
+pub const POLICY_VIOLATION: u16 = 1008;
 /// Largest client message, bytes.
 pub const MAX_MESSAGE_BYTES: usize = 256 * 1024;
 /// Close code after a client message over [`MAX_MESSAGE_BYTES`] (RFC 6455 "message too big").
@@ -108,6 +128,9 @@ pub trait SourceView: Send + Sync + 'static {
     fn version(&self) -> u64;
     /// The version's plan.
     fn plan(&self) -> &Arc<WorldPlan>;
+    /// The boxes where the world's surface is not a heightfield (its volume regions), metres:
+    /// the chunk rings of a v2 view stream the chunks meeting them.
+    fn volume_boxes(&self) -> Vec<Box3>;
 }
 
 /// An edit of the stream's world, with the view of the version it made, so a session reads
@@ -146,6 +169,15 @@ pub trait StreamSource: Send + Sync + 'static {
         seams: [bool; 4],
         format: Format,
     ) -> Result<axum::body::Bytes, StreamError>;
+    /// The frame of volume chunk `key` of the world `view` in `format` (its bytes as
+    /// [`super::protocol::ChunkFrame::encode_parts`] writes them, with the view's version),
+    /// shared between clients like tile frames.
+    async fn chunk_frame(
+        &self,
+        view: &Self::View,
+        key: ChunkKey,
+        format: Format,
+    ) -> Result<axum::body::Bytes, StreamError>;
 }
 
 fn error_message(e: &StreamError, id: Option<String>) -> ServerMessage {
@@ -180,104 +212,140 @@ fn is_too_large(e: &axum::Error) -> bool {
     e.to_string().contains("Space limit exceeded")
 }
 
-/// A queued message and, for a frame, its share of [`QUEUE_BYTES`], returned once it is sent.
-type Queued = (Message, Option<OwnedSemaphorePermit>);
-
-fn text(msg: &ServerMessage) -> Queued {
-    (
-        Message::Text(serde_json::to_string(msg).unwrap_or_default().into()),
-        None,
-    )
+fn text(msg: &ServerMessage) -> Outgoing {
+    Outgoing::Text(serde_json::to_string(msg).unwrap_or_default())
 }
 
-/// Runs a session until the client leaves or is dropped, or until `closing` is cancelled (the
-/// server is shutting down): then the client gets the text messages already queued (acks, errors)
-/// and a close frame with code 1001 (going away), within [`GOING_AWAY_TIMEOUT`].
-pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: CancellationToken) {
+/// The ground rectangle whose edits may change chunk `key`: the union of the reaches of the
+/// height tiles it reads its columns from (their reaches hold the chunk's volume regions and
+/// `strata` elements too).
+fn chunk_reach(params: &WorldParams, key: ChunkKey) -> Rect {
+    let mut reach: Option<Rect> = None;
+    for (x, z) in tiles_needed(key) {
+        let r = crate::scene::tile_reach(params, TileKey { lod: key.lod, x, z });
+        reach = Some(match reach {
+            None => r,
+            Some(a) => Rect {
+                min: [a.min[0].min(r.min[0]), a.min[1].min(r.min[1])],
+                max: [a.max[0].max(r.max[0]), a.max[1].max(r.max[1])],
+            },
+        });
+    }
+    reach.unwrap_or(Rect {
+        min: [0.0; 2],
+        max: [0.0; 2],
+    })
+}
+
+/// What a client's current view asks for.
+#[derive(Default)]
+struct ViewState {
+    /// Camera `[x, y, z]`, metres.
+    camera: [f64; 3],
+    /// Tiles of the view, nearest first.
+    tiles: Vec<ViewTile>,
+    /// v2: chunk rings, asked chunks and the chunk format.
+    rings: Vec<u32>,
+    asked: Vec<ChunkKey>,
+    chunk_format: Option<Format>,
+    /// Chunks of the view (rings meeting volume regions, and asked), nearest first.
+    chunks: Vec<ChunkKey>,
+}
+
+impl ViewState {
+    /// The chunks of this view in the world `view`: the rings' chunks meeting its volume
+    /// regions and the asked ones, nearest first.
+    fn chunks_in<V: SourceView>(&self, view: &V) -> Vec<ChunkKey> {
+        if self.chunk_format.is_none() {
+            return Vec::new();
+        }
+        let plan = view.plan();
+        let cell_m = f64::from(plan.params.cell_m);
+        let mut chunks = select_chunks(
+            self.camera,
+            &self.rings,
+            cell_m,
+            &view.volume_boxes(),
+            |k| within_limits(plan, k),
+        );
+        for k in &self.asked {
+            if !chunks.contains(k) {
+                chunks.push(*k);
+            }
+        }
+        sort_nearest(&mut chunks, self.camera, cell_m);
+        chunks
+    }
+
+    /// Every product of the view, nearest first.
+    fn work(&self, cell_m: f64) -> Vec<Work> {
+        merge(
+            self.tiles.iter().copied(),
+            self.chunks.iter().copied(),
+            self.camera,
+            cell_m,
+        )
+    }
+}
+
+/// Runs a session of `protocol` until the client leaves or is dropped, or until `closing` is
+/// cancelled (the server is shutting down): then the client gets the text messages already
+/// queued (acks, errors) and a close frame with code 1001 (going away), within
+/// [`GOING_AWAY_TIMEOUT`].
+pub async fn run<S: StreamSource>(
+    socket: WebSocket,
+    source: Arc<S>,
+    closing: CancellationToken,
+    protocol: Protocol,
+) {
     STATS
         .sessions
         .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let _guard = SessionGuard;
-    let (mut sink, mut incoming) = socket.split();
-    let (tx, mut rx) = mpsc::channel::<Queued>(QUEUE_FRAMES);
-    let queued_bytes = Arc::new(Semaphore::new(QUEUE_BYTES));
-    let writer_closing = closing.clone();
-    let writer = tokio::spawn(async move {
-        loop {
-            let msg = tokio::select! {
-                biased;
-                () = writer_closing.cancelled() => break,
-                msg = rx.recv() => msg,
-            };
-            let Some((msg, _bytes)) = msg else {
-                let _ = sink.close().await;
-                return;
-            };
-            match tokio::time::timeout(SEND_TIMEOUT, sink.send(msg)).await {
-                Ok(Ok(())) => {}
-                Ok(Err(_)) => return,
-                Err(_) => {
-                    tracing::info!("stream client too slow; disconnecting");
-                    STATS
-                        .dropped_slow
-                        .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let close = CloseFrame {
-                        code: 1008,
-                        reason: "client too slow".into(),
-                    };
-                    let _ = tokio::time::timeout(
-                        Duration::from_secs(1),
-                        sink.send(Message::Close(Some(close))),
-                    )
-                    .await;
-                    return;
-                }
-            }
-        }
-        rx.close();
-        let going_away = async {
-            while let Some((msg, _bytes)) = rx.recv().await {
-                if matches!(msg, Message::Text(_)) {
-                    sink.send(msg).await?;
-                }
-            }
-            let close = CloseFrame {
-                code: GOING_AWAY,
-                reason: "server shutting down".into(),
-            };
-            sink.send(Message::Close(Some(close))).await
-        };
-        let _ = tokio::time::timeout(GOING_AWAY_TIMEOUT, going_away).await;
-    });
+    let (sink, mut incoming) = socket.split();
+    let outbox = Arc::new(Outbox::new(QUEUE_FRAMES, QUEUE_BYTES));
+    let writer = tokio::spawn(super::writer::write(sink, outbox.clone(), closing.clone()));
     let mut edits = source.subscribe_edits();
     let mut current = match source.current().await {
         Ok(v) => v,
         Err(e) => {
-            let _ = tx.send(text(&error_message(&e, None))).await;
-            drop(tx);
+            outbox.push(text(&error_message(&e, None))).await;
+            outbox.close();
             let _ = writer.await;
             return;
         }
     };
     let mut version = current.version();
     let cell_m = current.plan().params.cell_m as f64;
+    let v2 = protocol == Protocol::V2;
+    // v1 has no flow control: unlimited credit, never spent.
+    let mut credits: u32 = if v2 { 0 } else { u32::MAX };
     let hello = ServerMessage::Hello {
-        protocol: "strata.stream.v1",
+        protocol: protocol.name(),
         version,
         queue_frames: QUEUE_FRAMES,
+        credits: v2.then_some(0),
     };
-    if tx.send(text(&hello)).await.is_err() {
+    if !outbox.push(text(&hello)).await {
         return;
     }
     let mut format = Format::Bin;
-    let mut view: Vec<ViewTile> = Vec::new();
-    let mut held: HashMap<TileKey, u64> = HashMap::new();
-    let mut pending: VecDeque<ViewTile> = VecDeque::new();
+    let mut view = ViewState::default();
+    let mut held: HashMap<Product, u64> = HashMap::new();
+    let mut pending: VecDeque<Work> = VecDeque::new();
     let mut idle_sent = true;
+    // Since when frames have waited for a credit the client does not grant (v2).
+    let mut starved_since: Option<Instant> = None;
     loop {
-        if writer.is_finished() {
+        if writer.is_finished() || outbox.is_closed() {
             break;
         }
+        if credits == 0 && !pending.is_empty() {
+            starved_since.get_or_insert_with(Instant::now);
+        } else {
+            starved_since = None;
+        }
+        let starved_until = starved_since.map(|t| t + SEND_TIMEOUT);
         let edit_event = async {
             match edits.as_mut() {
                 Some(rx) => rx.recv().await,
@@ -287,15 +355,16 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
         tokio::select! {
             () = closing.cancelled() => break,
             msg = incoming.next() => {
+                starved_since = None;
                 let msg = match msg {
                     None => break,
                     Some(Ok(msg)) => msg,
                     Some(Err(e)) => {
                         if is_too_large(&e) {
                             let e = too_large();
-                            let _ = tx.send(text(&error_message(&e, None))).await;
+                            outbox.push(text(&error_message(&e, None))).await;
                             let close = CloseFrame { code: MESSAGE_TOO_BIG, reason: "message too large".into() };
-                            let _ = tx.send((Message::Close(Some(close)), None)).await;
+                            outbox.push_now(Outgoing::Close(close));
                         }
                         break;
                     }
@@ -305,37 +374,68 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                     Message::Close(_) => break,
                     Message::Binary(_) => {
                         let e = refused("bad_message", "type", "send JSON text messages");
-                        let _ = tx.send(text(&error_message(&e, None))).await;
+                        outbox.push(text(&error_message(&e, None))).await;
                         continue;
                     }
                     _ => continue,
                 };
-                match ClientMessage::parse(&text_msg) {
+                match ClientMessage::parse(&text_msg, protocol) {
                     Err(bad) => {
                         let e = StreamError {
                             code: "bad_message",
-                            message: format!("not a strata.stream.v1 message: {}", bad.message),
+                            message: format!("not a {} message: {}", protocol.name(), bad.message),
                             field: Some(bad.field.into()),
                         };
-                        let _ = tx.send(text(&error_message(&e, None))).await;
+                        outbox.push(text(&error_message(&e, None))).await;
                     }
-                    Ok(ClientMessage::View { x, z, rings, format: f }) => {
-                        let reply = match view_of(x, z, &rings, f.as_deref(), cell_m) {
+                    Ok(ClientMessage::Credit { frames }) => {
+                        credits = credits.saturating_add(frames).min(MAX_CREDITS);
+                    }
+                    Ok(ClientMessage::View { x, z, rings, format: f, volume }) => {
+                        let accepted = view_of(x, z, &rings, f.as_deref(), cell_m).and_then(|(tiles, fmt)| {
+                            let chunks = match &volume {
+                                Some(vol) => Some(chunk_view_of(vol, current.plan())?),
+                                None => None,
+                            };
+                            Ok((tiles, fmt, chunks))
+                        });
+                        let reply = match accepted {
                             Err(e) => error_message(&e, None),
-                            Ok((tiles, fmt)) => {
+                            Ok((tiles, fmt, chunks)) => {
                                 if fmt != format {
-                                    held.clear();
+                                    held.retain(|p, _| matches!(p, Product::Chunk(_)));
                                     format = fmt;
                                 }
-                                let keys: HashSet<TileKey> = tiles.iter().map(|t| t.key).collect();
-                                held.retain(|k, _| keys.contains(k));
-                                pending = tiles.iter().filter(|t| held.get(&t.key) != Some(&version)).copied().collect();
-                                view = tiles;
+                                let vol = volume.unwrap_or_default();
+                                if let Some((_, cf)) = &chunks {
+                                    if view.chunk_format != Some(*cf) {
+                                        held.retain(|p, _| matches!(p, Product::Tile(_)));
+                                    }
+                                }
+                                let VolumeView { y, chunk_rings, .. } = vol;
+                                let (asked, chunk_format) = match chunks {
+                                    Some((asked, cf)) => (asked, Some(cf)),
+                                    None => (Vec::new(), None),
+                                };
+                                view = ViewState { camera: [x, y, z], tiles, rings: chunk_rings, asked, chunk_format, chunks: Vec::new() };
+                                view.chunks = view.chunks_in(&current);
+                                let work = view.work(cell_m);
+                                let in_view: HashSet<Product> = work.iter().map(Work::product).collect();
+                                held.retain(|p, _| in_view.contains(p));
+                                let gone = outbox.withdraw_unless(&in_view);
+                                if v2 {
+                                    credits = credits.saturating_add(gone as u32).min(MAX_CREDITS);
+                                }
+                                pending = work.into_iter().filter(|w| held.get(&w.product()) != Some(&version)).collect();
                                 idle_sent = false;
-                                ServerMessage::View { tiles: view.len(), sending: pending.len() }
+                                ServerMessage::View {
+                                    tiles: view.tiles.len(),
+                                    sending: pending.len(),
+                                    chunks: v2.then(|| view.chunks.iter().map(|k| chunk_address(*k)).collect()),
+                                }
                             }
                         };
-                        if tx.send(text(&reply)).await.is_err() {
+                        if !outbox.push(text(&reply)).await {
                             break;
                         }
                     }
@@ -344,7 +444,7 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                             Ok(v) => ServerMessage::Ack { id, version: v },
                             Err(e) => error_message(&e, Some(id)),
                         };
-                        if tx.send(text(&reply)).await.is_err() {
+                        if !outbox.push(text(&reply)).await {
                             break;
                         }
                     }
@@ -361,70 +461,123 @@ pub async fn run<S: StreamSource>(socket: WebSocket, source: Arc<S>, closing: Ca
                     Err(broadcast::error::RecvError::Closed) => { edits = None; continue; }
                 };
                 // Edits of one world may arrive out of order (their views are built
-                // concurrently): an older one still invalidates what it touched, and tiles are
-                // produced from the newest version seen, which includes it.
+                // concurrently): an older one still invalidates what it touched, and products
+                // are produced from the newest version seen, which includes it.
                 if next.version() > version {
                     current = next;
                     version = current.version();
                 }
                 let params = &current.plan().params;
-                let stale: Vec<ViewTile> = view.iter().filter(|t| held.contains_key(&t.key) && dirty.touches(&crate::scene::tile_reach(params, t.key))).copied().collect();
-                // Tiles not held stay pending; held tiles the edit does not touch are current.
+                // The edit may add or remove volume regions: the view's chunks follow.
+                let old_chunks = std::mem::take(&mut view.chunks);
+                view.chunks = view.chunks_in(&current);
+                let now_in: HashSet<ChunkKey> = view.chunks.iter().copied().collect();
+                let dropped: Vec<ChunkKey> = old_chunks.into_iter().filter(|k| !now_in.contains(k) && held.remove(&Product::Chunk(*k)).is_some()).collect();
+                let work = view.work(cell_m);
+                let stale: Vec<Work> = work.iter().filter(|w| held.contains_key(&w.product()) && match w {
+                    Work::Tile(t) => dirty.touches(&crate::scene::tile_reach(params, t.key)),
+                    Work::Chunk(c) => dirty.touches(&chunk_reach(params, *c)),
+                }).copied().collect();
+                // Products not held stay pending; held products the edit does not touch are
+                // current.
                 for v in held.values_mut() {
                     *v = version;
                 }
-                if !stale.is_empty() {
-                    let tiles = stale.iter().map(|t| [t.key.lod as i64, t.key.x, t.key.z]).collect();
-                    if tx.send(text(&ServerMessage::Invalidate { version, tiles })).await.is_err() {
+                let stale_set: HashSet<Product> = stale.iter().map(Work::product).collect();
+                if !stale.is_empty() || !dropped.is_empty() {
+                    let tiles = stale.iter().filter_map(|w| match w {
+                        Work::Tile(t) => Some([t.key.lod as i64, t.key.x, t.key.z]),
+                        Work::Chunk(_) => None,
+                    }).collect();
+                    let chunks = stale.iter().filter_map(|w| match w {
+                        Work::Chunk(c) => Some(chunk_address(*c)),
+                        Work::Tile(_) => None,
+                    }).collect();
+                    let msg = ServerMessage::Invalidate {
+                        version,
+                        tiles,
+                        chunks: v2.then_some(chunks),
+                        dropped: v2.then(|| dropped.iter().map(|k| chunk_address(*k)).collect()),
+                    };
+                    // Queued frames of stale products are superseded: withdrawn, and their
+                    // credit returned, so the fresh frame replaces them.
+                    let gone = outbox.withdraw(&stale_set);
+                    if v2 {
+                        credits = credits.saturating_add(gone as u32).min(MAX_CREDITS);
+                    }
+                    if !outbox.push(text(&msg)).await {
                         break;
                     }
-                    let again: HashSet<TileKey> = stale.iter().map(|t| t.key).collect();
-                    pending.retain(|t| !again.contains(&t.key));
-                    for t in stale.iter().rev() {
-                        held.remove(&t.key);
-                        pending.push_front(*t);
+                    for p in &stale_set {
+                        held.remove(p);
                     }
-                    idle_sent = false;
                 }
+                let fresh = work.iter().filter(|w| stale_set.contains(&w.product()));
+                let rest = work.iter().filter(|w| !stale_set.contains(&w.product()) && !held.contains_key(&w.product()));
+                let next_pending: VecDeque<Work> = fresh.chain(rest).copied().collect();
+                if next_pending != pending {
+                    idle_sent = idle_sent && next_pending.is_empty();
+                }
+                pending = next_pending;
             }
-            permit = tx.reserve(), if !pending.is_empty() => {
-                let Ok(permit) = permit else { break };
-                let Some(t) = pending.pop_front() else { continue };
+            () = outbox.frame_room(), if !pending.is_empty() && credits > 0 => {
+                let Some(w) = pending.pop_front() else { continue };
                 let produced = tokio::select! {
-                    r = source.frame(&current, t.key, t.seams, format) => r,
+                    r = async {
+                        match w {
+                            Work::Tile(t) => source.frame(&current, t.key, t.seams, format).await,
+                            Work::Chunk(c) => source.chunk_frame(&current, c, view.chunk_format.unwrap_or(Format::Bin)).await,
+                        }
+                    } => r,
                     () = closing.cancelled() => break,
                 };
                 match produced {
-                    Ok(frame) => {
-                        // Room in the byte budget: the writer returns a frame's share once it is
-                        // sent, or drops them all when it gives up on the client.
-                        let share = u32::try_from(frame.len().min(QUEUE_BYTES)).unwrap_or(u32::MAX);
-                        let bytes = tokio::select! {
-                            b = queued_bytes.clone().acquire_many_owned(share) => b,
-                            () = closing.cancelled() => break,
+                    Ok(frame) if frame.len() > MAX_FRAME_BYTES => {
+                        let e = StreamError {
+                            code: "frame_too_large",
+                            message: format!("the frame of {:?} has {} bytes; frames are limited to {MAX_FRAME_BYTES}", w.product(), frame.len()),
+                            field: Some(match w { Work::Tile(_) => "rings", Work::Chunk(_) => "chunks" }.into()),
                         };
-                        let Ok(bytes) = bytes else { break };
-                        permit.send((Message::Binary(frame), Some(bytes)));
-                        held.insert(t.key, version);
+                        outbox.push_now(text(&error_message(&e, None)));
+                    }
+                    Ok(frame) => {
+                        outbox.push_now(Outgoing::Frame { product: w.product(), bytes: frame });
+                        held.insert(w.product(), version);
+                        if v2 {
+                            credits -= 1;
+                        }
                         STATS.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     }
-                    Err(e) => permit.send(text(&error_message(&e, None))),
+                    Err(e) => {
+                        outbox.push_now(text(&error_message(&e, None)));
+                    }
                 }
+            }
+            () = async {
+                match starved_until {
+                    Some(t) => tokio::time::sleep_until(t).await,
+                    None => std::future::pending().await,
+                }
+            } => {
+                tracing::info!("stream client granted no credit for {SEND_TIMEOUT:?}; disconnecting");
+                STATS.dropped_slow.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let close = CloseFrame {
+                    code: POLICY_VIOLATION,
+                    reason: format!("no credit granted for {} s while frames were waiting", SEND_TIMEOUT.as_secs()).into(),
+                };
+                outbox.push_now(Outgoing::Close(close));
+                break;
             }
             _ = tokio::time::sleep(Duration::from_millis(250)), if pending.is_empty() && !idle_sent => {}
         }
         if pending.is_empty() && !idle_sent {
             idle_sent = true;
-            if tx
-                .send(text(&ServerMessage::Idle { version }))
-                .await
-                .is_err()
-            {
+            if !outbox.push(text(&ServerMessage::Idle { version })).await {
                 break;
             }
         }
     }
-    drop(tx);
+    outbox.close();
     let _ = writer.await;
 }
 

@@ -6,6 +6,9 @@
 // variance above a threshold, and both sky and terrain present), and river ribbons are drawn: the
 // test's place (seed 42 around (-12 km, 26 km)) has a river through the view, so once every held
 // tile's river lines have arrived at least one ribbon with MIN_RIVER_M of centre line is drawn.
+// The viewer speaks strata.stream.v2. Flying 2.5 km east opens no holes (sky in the lower half of
+// sampled frames at most SKY_MAX), and the camera stays above the ground, also opened with
+// `&dist=300` at this place (the orbit distance is measured from the ground, not from y = 0).
 import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
 import { copyFileSync, mkdirSync } from "node:fs";
@@ -20,6 +23,22 @@ const MIN_TILES = 50;
 const TILE_TIMEOUT_MS = 45_000;
 const MIN_VARIANCE = 150; // per-channel luminance variance over the image, 0…65025
 const MIN_RIVER_M = 1000; // river centre line drawn as ribbons in the first view, metres
+const SKY_MAX = 0.01; // fraction of sky-coloured pixels in the lower half while flying
+const SKY = [158, 189, 219]; // the viewer's sky (sRGB 0.62, 0.74, 0.86)
+
+/** The fraction of the lower half's pixels within 6 levels of the sky colour. */
+function skyFraction(img) {
+  let sky = 0;
+  let n = 0;
+  for (let y = Math.floor(img.height / 2); y < img.height; y++) {
+    for (let x = 0; x < img.width; x++) {
+      const p = 4 * (y * img.width + x);
+      n++;
+      if (SKY.every((c, i) => Math.abs(img.data[p + i] - c) <= 6)) sky++;
+    }
+  }
+  return sky / n;
+}
 
 
 const failures = [];
@@ -65,6 +84,7 @@ try {
     if (!s.webgl2) failures.push("no WebGL2 context");
     if (s.errors.length) failures.push(`the viewer shows errors: ${s.errors.join(" | ")}`);
     if (s.held < 1) failures.push("no tile meshes held");
+    if (s.protocol !== "strata.stream.v2") failures.push(`the viewer speaks ${s.protocol}, not strata.stream.v2`);
     console.log(
       `rivers: ${s.rivers} ribbons, ${(s.riverLength / 1000).toFixed(2)} km of centre line, ` +
         `lines for ${s.riverTiles} tiles, ${s.riverPending} requests left`,
@@ -131,6 +151,28 @@ try {
   if (moved && after.held !== after.viewTiles)
     failures.push(`idle with ${after.held} meshes held for a view of ${after.viewTiles} tiles`);
   if (after.errors.length) failures.push(`the viewer shows errors: ${after.errors.join(" | ")}`);
+
+  // Fly 2.5 km east (issue 19, Done-when 2): while the new view streams in, the tiles that left
+  // it stay until their replacements cover them, so the lower half of the picture (ground at this
+  // pitch) shows at most SKY_MAX of sky-coloured pixels in every sampled frame.
+  await page.evaluate(() => window.__strata.moveBy(2500, 0));
+  for (let sample = 0; sample < 3; sample++) {
+    await page.waitForTimeout(1500);
+    const frame = PNG.sync.read(await page.screenshot());
+    const sky = skyFraction(frame);
+    console.log(`2.5 km east, sample ${sample}: ${(100 * sky).toFixed(2)} % sky below the horizon`);
+    if (sky > SKY_MAX) failures.push(`a hole while moving: ${(100 * sky).toFixed(2)} % sky in the lower half`);
+  }
+  const flown = await page.evaluate(() => window.__strata);
+  if (!(flown.minClearance > 0)) failures.push(`the camera went ${flown.minClearance} m below the ground`);
+  await page.goto(`${url}&dist=300`, { waitUntil: "load" });
+  await page
+    .waitForFunction(() => window.__strata && window.__strata.tiles >= 20, null, { timeout: 45_000, polling: 250 })
+    .catch(() => failures.push("dist=300: fewer than 20 tiles"));
+  await page.waitForTimeout(1000);
+  const close300 = await page.evaluate(() => window.__strata.minClearance);
+  console.log(`dist=300: lowest clearance ${close300.toFixed(1)} m`);
+  if (!(close300 > 0)) failures.push(`dist=300: the camera went ${close300} m below the ground`);
 } finally {
   await close();
 }

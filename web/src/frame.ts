@@ -1,8 +1,16 @@
-// Decoding of stream frames (api/stream_protocol_v1.md) and STRT v1 tiles (api/tile_format_v1.md).
+// Decoding of stream frames (api/stream_protocol_v1.md, _v2.md) and STRT v1 tiles
+// (api/tile_format_v1.md).
+
+/** Frame kinds: a height tile, a volume chunk (v2). */
+export const KIND_TILE = 1;
+export const KIND_CHUNK = 2;
 
 export interface Frame {
+  kind: number;
   lod: number;
   x: number;
+  /** A chunk's y (0 for tiles). */
+  y: number;
   z: number;
   version: number;
   seams: number;
@@ -27,6 +35,8 @@ export interface Tile {
   weights: Uint8Array;
   materials: Uint8Array;
   waterDepth: Float32Array;
+  /** 1 where a volume chunk gives the surface (the tile hides those vertices); empty when none. */
+  volumeOverride: Uint8Array;
 }
 
 const FRAME_HEADER = 44;
@@ -35,22 +45,24 @@ function magic(v: DataView, at: number): string {
   return String.fromCharCode(v.getUint8(at), v.getUint8(at + 1), v.getUint8(at + 2), v.getUint8(at + 3));
 }
 
-/** The 44-byte little-endian frame header and its payload. */
+/** The 44-byte little-endian frame header and its payload (a tile's seams or a chunk's y at 36). */
 export function decodeFrame(buf: ArrayBuffer): Frame {
   const v = new DataView(buf);
   if (buf.byteLength < FRAME_HEADER || magic(v, 0) !== "STRF") throw new Error("not a STRF frame");
   const layout = v.getUint16(4, true);
   if (layout !== 1) throw new Error(`unknown frame layout ${layout}`);
-  if (v.getUint8(6) !== 1) throw new Error(`unknown frame kind ${v.getUint8(6)}`);
+  const kind = v.getUint8(6);
   const len = v.getUint32(40, true);
   if (FRAME_HEADER + len > buf.byteLength) throw new Error("truncated frame");
   return {
+    kind,
     format: v.getUint8(7),
     lod: v.getUint32(8, true),
     x: Number(v.getBigInt64(12, true)),
+    y: kind === KIND_CHUNK ? v.getInt32(36, true) : 0,
     z: Number(v.getBigInt64(20, true)),
     version: Number(v.getBigUint64(28, true)),
-    seams: v.getUint8(36),
+    seams: kind === KIND_TILE ? v.getUint8(36) : 0,
     payload: new DataView(buf, FRAME_HEADER, len),
   };
 }
@@ -87,5 +99,6 @@ export function decodeTile(p: DataView): Tile {
     weights: bytes(p.getUint32(88, true), n * biomeCount),
     materials: bytes(p.getUint32(92, true), n),
     waterDepth: f32(p.getUint32(96, true), n),
+    volumeOverride: p.getUint32(104, true) ? bytes(p.getUint32(104, true), n) : new Uint8Array(0),
   };
 }

@@ -1,13 +1,20 @@
-// The strata viewer: streams height tiles over strata.stream.v1 and renders them with three.js.
+// The strata viewer: streams height tiles and volume chunks over strata.stream.v2 (credits: a slow
+// client is slowed, not dropped), decodes them in a worker (./decode.worker.ts) and renders them
+// with three.js.
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8 the LOD rings
-// of the view. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
+// of the view, ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
+// with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
 // as ribbons along the server's river lines (see ./rivers.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
-import { decodeFrame, decodeTile, type Tile } from "./frame";
+import { ChunkLayer } from "./chunk";
+import { chunkKey } from "./chunkFormat";
+import type { Decoded } from "./decoded";
+import { decodeTile, type Tile } from "./frame";
+import { groundSample as sampleGround } from "./ground";
 import { buildMesh, disposeMesh } from "./mesh";
 import { RiverLayer } from "./rivers";
 import { selectView, tileKey } from "./view";
@@ -41,6 +48,13 @@ interface StrataState {
   riverLength: number; // their centre lines' total length, metres
   riverPending: number; // river-line requests queued or open
   riverTiles: number; // held tiles whose river lines have arrived
+  chunks: number; // chunk frames received since the page loaded
+  heldChunks: number; // chunk meshes in the scene
+  closed: string; // why the stream stopped for good ("" while it runs or reconnects)
+  reconnects: number; // reconnection attempts
+  retiring: number; // tiles that left the view, kept until their replacements cover them
+  minClearance: number; // lowest camera height above the ground before the collision check, metres
+  protocol: string; // the stream protocol the server speaks
 }
 
 declare global {
@@ -70,6 +84,13 @@ const state: StrataState = {
   riverLength: 0,
   riverPending: 0,
   riverTiles: 0,
+  chunks: 0,
+  heldChunks: 0,
+  closed: "",
+  reconnects: 0,
+  retiring: 0,
+  minClearance: Infinity,
+  protocol: "",
 };
 window.__strata = state;
 
@@ -78,6 +99,15 @@ const seed = q.get("seed") ?? "42";
 const world = q.get("world");
 const token = q.get("token");
 const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
+// Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions.
+const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
+  .split(",")
+  .slice(0, 4)
+  .map((s) => Math.max(0, Math.min(4, parseInt(s, 10) || 0)));
+// Frames the viewer lets the server send ahead of what it has decoded (stream protocol v2 credits).
+const CREDIT_WINDOW = 16;
+// The camera keeps at least this height above the ground under it, metres.
+const MIN_CLEARANCE_M = 8;
 const startX = Number(q.get("x") ?? 0) || 0;
 const startZ = Number(q.get("z") ?? 0) || 0;
 const startDist = Math.max(50, Math.min(20000, Number(q.get("dist") ?? 4600) || 4600));
@@ -186,16 +216,48 @@ const rivers = new RiverLayer(
 function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
   removeMesh(key);
+  disposeRetiring(key);
   const mesh = buildMesh(tile);
   terrain.add(mesh);
   held.set(key, { mesh, tile, version });
   state.held = held.size;
   rivers.put(key, mesh, tile, version);
+  settleRetiring(false);
 }
 
-/** Frees the tile `key` and its river lines. */
-function dropTile(key: string): void {
-  if (removeMesh(key)) rivers.drop(key);
+// Tiles that left the view stay drawn (a little lower, so their replacements win the depth test)
+// until the view's tiles that cover their ground have all arrived: moving never opens holes.
+const retiring = new Map<string, Held>();
+
+function disposeRetiring(key: string): void {
+  const h = retiring.get(key);
+  if (!h) return;
+  terrain.remove(h.mesh);
+  disposeMesh(h.mesh);
+  retiring.delete(key);
+  state.retiring = retiring.size;
+  state.freed++;
+}
+
+/** Frees the retiring tiles whose ground the view's held tiles cover (all of them when `all`). */
+function settleRetiring(all: boolean): void {
+  if (retiring.size === 0) return;
+  const view = [...wanted].map((k) => k.split("/").map(Number));
+  for (const [key, h] of [...retiring]) {
+    const t = h.tile;
+    const s = 2 ** t.lod;
+    const [x0, z0, x1, z1] = [t.x * s, t.z * s, (t.x + 1) * s, (t.z + 1) * s];
+    let covered = true;
+    for (const [lod, x, z] of view) {
+      const w = 2 ** lod;
+      if (x * w >= x1 || (x + 1) * w <= x0 || z * w >= z1 || (z + 1) * w <= z0) continue;
+      if (!held.has(tileKey(lod, x, z))) {
+        covered = false;
+        break;
+      }
+    }
+    if (all || covered) disposeRetiring(key);
+  }
 }
 
 /** Removes and disposes the mesh of `key` (its water and ribbons with it); whether there was one. */
@@ -210,31 +272,49 @@ function removeMesh(key: string): boolean {
   return true;
 }
 
-/** Frees the meshes the current view no longer holds. */
+/** Retires the meshes the current view no longer holds: they are freed once covered. */
 function pruneToView(): void {
-  for (const key of [...held.keys()]) if (!wanted.has(key)) dropTile(key);
+  for (const [key, h] of [...held]) {
+    if (wanted.has(key)) continue;
+    rivers.drop(key);
+    held.delete(key);
+    disposeRetiring(key);
+    h.mesh.position.y = -2 * 2 ** h.tile.lod;
+    h.mesh.updateMatrix();
+    retiring.set(key, h);
+  }
+  state.held = held.size;
+  state.retiring = retiring.size;
+  settleRetiring(false);
 }
 
 /** Ground height at world (x, z) from the finest held tile, bilinear; 0 when none covers it. */
 function groundAt(x: number, z: number): number {
-  let best: Held | undefined;
-  for (const h of held.values()) {
-    const t = h.tile;
-    const extent = (t.size - 1) * t.spacing;
-    if (x < t.originX || z < t.originZ || x > t.originX + extent || z > t.originZ + extent) continue;
-    if (!best || t.lod < best.tile.lod) best = h;
-  }
-  if (!best) return 0;
-  const t = best.tile;
-  const fi = Math.min((x - t.originX) / t.spacing, t.size - 1.0001);
-  const fj = Math.min((z - t.originZ) / t.spacing, t.size - 1.0001);
-  const i = Math.floor(fi);
-  const j = Math.floor(fj);
-  const u = fi - i;
-  const w = fj - j;
-  const h = (a: number, b: number) => t.heights[b * t.size + a];
-  return (1 - w) * ((1 - u) * h(i, j) + u * h(i + 1, j)) + w * ((1 - u) * h(i, j + 1) + u * h(i + 1, j + 1));
+  return groundOrUndefined(x, z) ?? 0;
 }
+
+/** Ground height at world (x, z) from the finest held tile, bilinear; `undefined` when none covers it. */
+function groundOrUndefined(x: number, z: number): number | undefined {
+  return groundSample(x, z)?.height;
+}
+
+/** Ground height at world (x, z) and the LOD of the finest held tile it comes from. */
+function groundSample(x: number, z: number): { height: number; lod: number } | undefined {
+  return sampleGround(heldTiles(), x, z);
+}
+
+/** The held tiles (not the retiring ones). */
+function* heldTiles(): Iterable<Tile> {
+  for (const h of held.values()) yield h.tile;
+}
+
+// ---- volume chunks -----------------------------------------------------------------------------------
+// Where the world's surface is not a heightfield (volume regions), the server streams chunk meshes;
+// the tiles hide the vertices the chunks override.
+const chunks = new ChunkLayer(scene);
+let wantedChunks = new Set<string>();
+
+const addressKey = (a: number[]) => chunkKey(a[0], a[1], a[2], a[3]);
 
 // ---- the stream -------------------------------------------------------------------------------------
 let socket: WebSocket | undefined;
@@ -242,12 +322,58 @@ let lastCell = "";
 let lastSent = 0;
 let biomes: string[] = ["arctic", "tundra", "grassland", "desert"];
 
-function streamUrl(): string {
-  const proto = location.protocol === "https:" ? "wss:" : "ws:";
-  const path = world
-    ? `/v1/worlds/${encodeURIComponent(world)}/stream${token ? `?token=${encodeURIComponent(token)}` : ""}`
-    : `/v1/seeds/${encodeURIComponent(seed)}/stream`;
-  return new URL(path, `${proto}//${location.host}${location.pathname}`).toString();
+/** The stream's URL (protocol v2), over `ws:`/`wss:` or, to read a refusal's JSON, `http:`/`https:`. */
+function streamUrl(http = false): string {
+  const proto = http ? location.protocol : location.protocol === "https:" ? "wss:" : "ws:";
+  const query = new URLSearchParams({ protocol: "2" });
+  if (world && token) query.set("token", token);
+  const path = world ? `/v1/worlds/${encodeURIComponent(world)}/stream` : `/v1/seeds/${encodeURIComponent(seed)}/stream`;
+  return new URL(`${path}?${query}`, `${proto}//${location.host}${location.pathname}`).toString();
+}
+
+/**
+ * Why the server refuses the stream, when it does: a browser learns nothing from a failed
+ * WebSocket handshake (close code 1006), so the same URL is asked over plain HTTP, where a bad
+ * seed, an unknown world or a missing token is a 4xx JSON error (426 means the route is fine).
+ */
+async function refusal(): Promise<string | undefined> {
+  try {
+    const r = await fetch(streamUrl(true));
+    if (r.status < 400 || r.status >= 500 || r.status === 426) return undefined;
+    const e = (await r.json().catch(() => undefined))?.error;
+    return e
+      ? `server refused the stream: ${e.code}: ${e.message}${e.field ? ` (field ${e.field})` : ""}`
+      : `server refused the stream: HTTP ${r.status}`;
+  } catch {
+    return undefined;
+  }
+}
+
+/** Stops streaming for good and says why. */
+function stop(reason: string): void {
+  state.closed = reason;
+  showError(`${reason}; not reconnecting (reload the page to try again)`);
+}
+
+// Credits owed to the server: one per handled frame, granted together once the frames waiting
+// in the socket are handled (a task later), so the server sends no faster than this page
+// decodes and meshes, and a hidden tab (no animation frames) still grants.
+let owed = 0;
+let grantScheduled = false;
+
+function grant(): void {
+  grantScheduled = false;
+  if (owed === 0 || !socket || socket.readyState !== WebSocket.OPEN) return;
+  socket.send(JSON.stringify({ type: "credit", frames: owed }));
+  owed = 0;
+}
+
+function owe(): void {
+  owed++;
+  if (!grantScheduled) {
+    grantScheduled = true;
+    setTimeout(grant, 0);
+  }
 }
 
 function sendView(force = false): void {
@@ -255,7 +381,8 @@ function sendView(force = false): void {
   const x = camera.position.x;
   const z = camera.position.z;
   const size = 64 * cellM;
-  const cell = `${Math.floor(x / size)},${Math.floor(z / size)}`;
+  // The chunk rings are centred on the camera in 3D: climbing a LOD-0 chunk (32 cells) is a new view.
+  const cell = `${Math.floor(x / size)},${Math.floor(z / size)},${Math.floor(camera.position.y / (32 * cellM))}`;
   if (!force && cell === lastCell) return;
   const now = performance.now();
   if (!force && now - lastSent < 250) {
@@ -265,7 +392,8 @@ function sendView(force = false): void {
   lastSent = now;
   wanted = selectView(x, z, rings, cellM);
   state.viewTiles = wanted.size;
-  socket.send(JSON.stringify({ type: "view", x, z, rings, format: "bin" }));
+  const y = camera.position.y;
+  socket.send(JSON.stringify({ type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings }));
 }
 
 function connect(): void {
@@ -274,31 +402,71 @@ function connect(): void {
   socket = ws;
   ws.onopen = () => {
     lastCell = "";
+    owed = 0;
     sendView(true);
+    ws.send(JSON.stringify({ type: "credit", frames: CREDIT_WINDOW }));
   };
+  // Every message goes through the decoding worker, which answers in order (./decode.worker.ts).
   ws.onmessage = (ev) => {
-    if (typeof ev.data === "string") {
-      onControl(JSON.parse(ev.data));
-      return;
-    }
-    try {
-      const frame = decodeFrame(ev.data as ArrayBuffer);
-      if (frame.format !== 2) throw new Error(`unexpected payload format ${frame.format}`);
-      state.tiles++;
-      state.inFlight = Math.max(0, state.inFlight - 1);
-      const key = tileKey(frame.lod, frame.x, frame.z);
-      if (!wanted.has(key)) return; // sent for a view we have since left
-      putTile(decodeTile(frame.payload), frame.version);
-    } catch (e) {
-      showError(`bad frame: ${(e as Error).message}`);
-    }
+    if (typeof ev.data === "string") decoder.postMessage(ev.data);
+    else decoder.postMessage(ev.data, [ev.data as ArrayBuffer]);
   };
   ws.onclose = (ev) => {
     if (socket !== ws) return;
-    showError(`stream closed (${ev.code}${ev.reason ? ` ${ev.reason}` : ""}); reconnecting in 3 s`);
     state.inFlight = 0;
-    setTimeout(connect, 3000);
+    // 1008 (no credit, too slow), 1009 (message too big), 1003 (unacceptable data): the server
+    // closed on purpose and says why; reconnecting would end the same way.
+    if (ev.code === 1008 || ev.code === 1009 || ev.code === 1003) {
+      stop(`stream closed by the server (${ev.code}): ${ev.reason || "no reason given"}`);
+      return;
+    }
+    void refusal().then((why) => {
+      if (why) {
+        stop(why);
+        return;
+      }
+      showError(`stream closed (${ev.code}${ev.reason ? ` ${ev.reason}` : ""}); reconnecting in 3 s`);
+      state.reconnects++;
+      setTimeout(connect, 3000);
+    });
   };
+}
+
+// Decoding off the main thread: frames are decoded in a worker; meshes are built here from the
+// typed arrays it transfers back.
+const decoder = new Worker(new URL("./decode.worker.ts", import.meta.url), { type: "module" });
+decoder.onmessage = (ev: MessageEvent<Decoded>) => onDecoded(ev.data);
+decoder.onerror = (e) => showError(`decoding worker: ${e.message}`);
+
+function onDecoded(m: Decoded): void {
+  if (m.type === "text") {
+    onControl(JSON.parse(m.text));
+    return;
+  }
+  // Every binary frame spent a credit: give it back once the frame is handled.
+  owe();
+  switch (m.type) {
+    case "error":
+      showError(`bad frame: ${m.message}`);
+      return;
+    case "chunk": {
+      state.inFlight = Math.max(0, state.inFlight - 1);
+      state.chunks++;
+      const key = chunkKey(m.lod, m.x, m.y, m.z);
+      if (wantedChunks.has(key)) state.heldChunks = chunks.put(key, m.chunk);
+      return;
+    }
+    case "tile": {
+      state.inFlight = Math.max(0, state.inFlight - 1);
+      state.tiles++;
+      const key = tileKey(m.lod, m.x, m.z);
+      if (!wanted.has(key)) return; // sent for a view we have since left
+      putTile(m.tile, m.version);
+      return;
+    }
+    default:
+      return; // a kind this viewer does not draw (Ptex pages, kind 3)
+  }
 }
 
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
@@ -306,22 +474,30 @@ function onControl(m: any): void {
   switch (m.type) {
     case "hello":
       state.version = m.version;
+      state.protocol = m.protocol;
       break;
     case "view":
       state.views++;
       state.inFlight = m.sending;
       state.idle = false;
       pruneToView();
+      wantedChunks = new Set((m.chunks ?? []).map(addressKey));
+      state.heldChunks = chunks.keep(wantedChunks);
       break;
     case "idle":
       state.idle = true;
       state.inFlight = 0;
       state.version = m.version;
+      settleRetiring(true);
       break;
     case "invalidate":
       // Fresh frames follow; the held meshes stay until they arrive and replace them.
       state.version = m.version;
-      state.inFlight += m.tiles.length;
+      state.inFlight += m.tiles.length + (m.chunks ?? []).length;
+      for (const a of m.dropped ?? []) {
+        wantedChunks.delete(addressKey(a));
+        state.heldChunks = chunks.remove(addressKey(a));
+      }
       break;
     case "ack":
       onAck(m.id, m.version);
@@ -349,7 +525,47 @@ fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
     }
   })
   .catch((e: Error) => showError(e.message));
-connect();
+void pickStart().finally(connect);
+
+/**
+ * Without `?x=`/`?z=`, the view opens on land with relief rather than at (0, 0), which may be
+ * seabed: the 16 km LOD-8 tile at the origin is searched for the land vertex (above 30 m) with
+ * the most relief around it, and camera and target move there. Any failure keeps (0, 0).
+ */
+async function pickStart(): Promise<void> {
+  if (q.has("x") || q.has("z")) return;
+  const base = world ? `v1/worlds/${encodeURIComponent(world)}` : `v1/seeds/${encodeURIComponent(seed)}`;
+  try {
+    const r = await fetch(new URL(`${base}/tiles/8/0/0.bin`, `${location.origin}${location.pathname}`), {
+      headers: token ? { authorization: `Bearer ${token}` } : {},
+    });
+    if (!r.ok) return;
+    const t = decodeTile(new DataView(await r.arrayBuffer()));
+    let best = { score: 0, i: 0, j: 0 };
+    for (let j = 2; j < t.size - 2; j++) {
+      for (let i = 2; i < t.size - 2; i++) {
+        const h = t.heights[j * t.size + i];
+        if (h < 30) continue;
+        let lo = h;
+        let hi = h;
+        for (let b = -2; b <= 2; b++) {
+          for (let a = -2; a <= 2; a++) {
+            const n = t.heights[(j + b) * t.size + i + a];
+            lo = Math.min(lo, n);
+            hi = Math.max(hi, n);
+          }
+        }
+        // Relief, unless the neighbourhood dips into the sea (a coast is not the goal).
+        const score = lo < 0 ? 0 : hi - lo;
+        if (score > best.score) best = { score, i, j };
+      }
+    }
+    if (best.score === 0) return;
+    state.moveBy(t.originX + best.i * t.spacing - controls.target.x, t.originZ + best.j * t.spacing - controls.target.z);
+  } catch {
+    // Keep (0, 0).
+  }
+}
 
 // ---- editing ------------------------------------------------------------------------------------------
 // Each edit is one region element added over the socket; `pending` maps the edit message's id to
@@ -527,6 +743,35 @@ function probe(): string {
   return `${hit.point.y.toFixed(1)} m, slope ${slope.toFixed(0)}°, ${biomes[best] ?? `biome ${best}`} (LOD ${t.lod})`;
 }
 
+/** The orbit target rides on the ground (camera and target move together), so the orbit distance
+ * is measured from the ground, not from y = 0. It is put back on the ground when it moves over
+ * the ground or a finer tile arrives under it, not when an edit changes the ground under a still
+ * target (an edit does not move the camera). */
+let followed = "";
+function followGround(): void {
+  const g = groundSample(controls.target.x, controls.target.z);
+  if (g === undefined) return;
+  const at = `${controls.target.x.toFixed(1)},${controls.target.z.toFixed(1)},${g.lod}`;
+  if (at === followed) return;
+  followed = at;
+  const dy = g.height - controls.target.y;
+  controls.target.y += dy;
+  camera.position.y += dy;
+}
+
+/** Collision: the camera never goes below the ground under it (plus a small clearance). The
+ * clearance before this correction is recorded: with the target on the ground it stays positive
+ * unless the ground rises between target and camera. */
+function keepAboveGround(): void {
+  // Not before the target is on the ground: raising the camera first and then the target with it
+  // would lift the camera twice.
+  if (followed === "") return;
+  const g = groundOrUndefined(camera.position.x, camera.position.z);
+  if (g === undefined) return;
+  state.minClearance = Math.min(state.minClearance, camera.position.y - g);
+  if (camera.position.y < g + MIN_CLEARANCE_M) camera.position.y = g + MIN_CLEARANCE_M;
+}
+
 let fps = 0;
 let fpsFrames = 0;
 let fpsSince = performance.now();
@@ -537,7 +782,9 @@ function frame(now: number): void {
   const dt = Math.min(0.1, (now - last) / 1000);
   last = now;
   fly(dt);
+  followGround();
   controls.update();
+  keepAboveGround();
   sendView(false); // throttled: only when the camera crossed a LOD-0 tile
   renderer.render(scene, camera);
   state.frames++;
@@ -560,7 +807,7 @@ function frame(now: number): void {
       `camera  x ${p.x.toFixed(0)}  y ${p.y.toFixed(0)}  z ${p.z.toFixed(0)} m`,
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
-      `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · v${state.version}`,
+      `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · chunks ${state.heldChunks} · v${state.version}`,
       `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
       `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–4: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");

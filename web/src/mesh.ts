@@ -55,6 +55,19 @@ function indices(size: number): Uint16Array {
   return arr;
 }
 
+/** The triangles of `idx` that touch no vertex a volume chunk overrides (`marks[v] === 1`); the
+ * chunks draw the surface there. Skirt vertices (past the marks) are never hidden. */
+function visible(idx: Uint16Array, marks: Uint8Array): Uint16Array {
+  if (!marks.some((m) => m === 1)) return idx;
+  const out: number[] = [];
+  const hidden = (v: number) => v < marks.length && marks[v] === 1;
+  for (let t = 0; t < idx.length; t += 3) {
+    if (hidden(idx[t]) || hidden(idx[t + 1]) || hidden(idx[t + 2])) continue;
+    out.push(idx[t], idx[t + 1], idx[t + 2]);
+  }
+  return new Uint16Array(out);
+}
+
 /** Edge `e` (n, e, s, w) position `t` as a surface vertex index. */
 function edgeVertex(e: number, t: number, size: number): number {
   const q = size - 1;
@@ -164,7 +177,7 @@ export function buildMesh(tile: Tile): THREE.Mesh {
     }
   }
   const geo = new THREE.BufferGeometry();
-  geo.setIndex(new THREE.BufferAttribute(indices(size), 1));
+  geo.setIndex(new THREE.BufferAttribute(visible(indices(size), tile.volumeOverride), 1));
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));

@@ -1,0 +1,322 @@
+//! Stream protocol v2 (`api/stream_protocol_v2.md`) with a real client (tokio-tungstenite)
+//! against the app on a real socket: flow control by credits (a slow but live client is slowed,
+//! never dropped, and never gets more frames than it granted; a client that grants nothing is
+//! closed with 1008 and a reason), volume chunks of a world's volume region (the same bytes as
+//! the HTTP chunk route, re-sent after an edit), and v1 still served by default.
+
+use futures::{SinkExt, StreamExt};
+use serde_json::{json, Value};
+use std::time::Duration;
+use strata::compute::Compute;
+use strata::edits::{synthesize, TileEdits};
+use strata::server::{app, AppState};
+use strata::stream::protocol::{ChunkFrame, TileFrame};
+use strata::stream::session::SEND_TIMEOUT;
+use strata::stream::view::select;
+use strata::terrain::{TileKey, WorldParams, WorldPlan};
+use strata::volume::chunk::ChunkKey;
+use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
+use tokio_tungstenite::tungstenite::Message;
+
+mod common;
+
+type Ws =
+    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
+
+/// The app on a real socket; returns `host:port`.
+async fn serve() -> String {
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
+        .await
+        .expect("bind");
+    let addr = listener.local_addr().expect("addr");
+    tokio::spawn(async move {
+        axum::serve(listener, app(AppState::new(Compute::cpu())))
+            .await
+            .expect("serve");
+    });
+    addr.to_string()
+}
+
+async fn connect(addr: &str, path: &str) -> Ws {
+    tokio_tungstenite::connect_async(format!("ws://{addr}{path}"))
+        .await
+        .expect("connect")
+        .0
+}
+
+async fn next(ws: &mut Ws, limit: Duration) -> Message {
+    tokio::time::timeout(limit, ws.next())
+        .await
+        .expect("a message in time")
+        .expect("stream open")
+        .expect("message")
+}
+
+async fn send(ws: &mut Ws, msg: Value) {
+    ws.send(Message::Text(msg.to_string().into()))
+        .await
+        .expect("send");
+}
+
+fn json_text(m: &Message) -> Option<Value> {
+    match m {
+        Message::Text(t) => Some(serde_json::from_str(t).expect("JSON")),
+        _ => None,
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn v1_is_the_default_and_v2_is_asked_for_by_query() {
+    let addr = serve().await;
+    let mut v1 = connect(&addr, "/v1/seeds/3/stream").await;
+    let hello = json_text(&next(&mut v1, Duration::from_secs(30)).await).expect("hello");
+    assert_eq!(hello["protocol"], "strata.stream.v1");
+    assert!(hello.get("credits").is_none(), "v1's hello is unchanged");
+    // A v1 session refuses v2 messages, naming the field.
+    send(&mut v1, json!({"type": "credit", "frames": 1})).await;
+    let m = json_text(&next(&mut v1, Duration::from_secs(30)).await).expect("error");
+    assert_eq!(
+        (m["code"].as_str(), m["field"].as_str()),
+        (Some("bad_message"), Some("type"))
+    );
+    let mut v2 = connect(&addr, "/v1/seeds/3/stream?protocol=2").await;
+    let hello = json_text(&next(&mut v2, Duration::from_secs(30)).await).expect("hello");
+    assert_eq!(hello["protocol"], "strata.stream.v2");
+    assert_eq!(hello["credits"], 0);
+    // A bad protocol is a 400 naming the field, before the upgrade.
+    let (status, body) =
+        strata::bench::http::http(&addr, "GET", "/v1/seeds/3/stream?protocol=9", &[], "")
+            .await
+            .expect("HTTP");
+    let body: Value = serde_json::from_slice(&body).expect("JSON error");
+    assert_eq!(status, 400);
+    assert_eq!(body["error"]["field"], "protocol");
+}
+
+/// Done-when item 3 of issue 19: a client that takes one frame every 2 s, granting one credit
+/// at a time, stays connected for 60 s (six times the timeout) and gets every frame of its view,
+/// never more than it granted.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_slow_client_granting_one_credit_at_a_time_is_slowed_not_dropped() {
+    let addr = serve().await;
+    let mut ws = connect(&addr, "/v1/seeds/11/stream?protocol=2").await;
+    next(&mut ws, Duration::from_secs(30)).await;
+    let rings = [3u32];
+    send(
+        &mut ws,
+        json!({"type": "view", "x": 0, "z": 0, "rings": rings}),
+    )
+    .await;
+    let want: Vec<TileKey> = select(0.0, 0.0, &rings, 1.0)
+        .iter()
+        .map(|t| t.key)
+        .collect();
+    const SLOW: usize = 30;
+    assert!(want.len() > SLOW);
+    let (mut granted, mut got) = (0usize, Vec::new());
+    send(&mut ws, json!({"type": "credit", "frames": 1})).await;
+    granted += 1;
+    loop {
+        match next(&mut ws, Duration::from_secs(60)).await {
+            Message::Binary(b) => {
+                got.push(TileFrame::decode(&b).expect("a tile frame").key);
+                assert!(
+                    got.len() <= granted,
+                    "{} frames arrived with {granted} granted",
+                    got.len()
+                );
+                if got.len() < SLOW {
+                    tokio::time::sleep(Duration::from_secs(2)).await;
+                    send(&mut ws, json!({"type": "credit", "frames": 1})).await;
+                    granted += 1;
+                } else if got.len() == SLOW {
+                    // The rest at once.
+                    let rest = want.len() - SLOW;
+                    send(&mut ws, json!({"type": "credit", "frames": rest})).await;
+                    granted += rest;
+                }
+            }
+            Message::Text(t) => {
+                let m: Value = serde_json::from_str(&t).expect("JSON");
+                assert_ne!(m["type"], "error", "{m}");
+                if m["type"] == "idle" {
+                    break;
+                }
+            }
+            Message::Close(c) => panic!("a slow but live client was closed: {c:?}"),
+            _ => {}
+        }
+    }
+    assert_eq!(got, want, "every frame of the view, nearest first");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_client_that_grants_nothing_is_closed_with_1008_and_a_reason() {
+    let addr = serve().await;
+    let mut ws = connect(&addr, "/v1/seeds/12/stream?protocol=2").await;
+    next(&mut ws, Duration::from_secs(30)).await;
+    send(
+        &mut ws,
+        json!({"type": "view", "x": 0, "z": 0, "rings": [1]}),
+    )
+    .await;
+    loop {
+        match next(&mut ws, SEND_TIMEOUT * 3).await {
+            Message::Binary(_) => panic!("a frame without credit"),
+            Message::Close(Some(c)) => {
+                assert_eq!(c.code, CloseCode::Policy, "{c:?}");
+                assert!(c.reason.contains("no credit"), "{c:?}");
+                break;
+            }
+            Message::Close(None) => panic!("closed without a code"),
+            _ => {}
+        }
+    }
+}
+
+const SEED: u64 = 7;
+
+fn ground_at(x: i64, z: i64) -> f32 {
+    let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
+    let t = synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 }, &TileEdits::default());
+    t.heights[(z * 65 + x) as usize]
+}
+
+/// Reads frames until `idle`: the chunk frames and the control messages.
+async fn until_idle(ws: &mut Ws) -> (Vec<ChunkFrame>, usize, Vec<Value>) {
+    let (mut chunks, mut tiles, mut msgs) = (Vec::new(), 0, Vec::new());
+    loop {
+        match next(ws, Duration::from_secs(300)).await {
+            Message::Binary(b) => match ChunkFrame::decode(&b) {
+                Some(c) => chunks.push(c),
+                None => {
+                    TileFrame::decode(&b).expect("a tile or chunk frame");
+                    tiles += 1;
+                }
+            },
+            m => {
+                if let Some(v) = json_text(&m) {
+                    assert_ne!(v["type"], "error", "{v}");
+                    let idle = v["type"] == "idle";
+                    msgs.push(v);
+                    if idle {
+                        return (chunks, tiles, msgs);
+                    }
+                }
+            }
+        }
+    }
+}
+
+async fn http_chunk(addr: &str, id: &str, key: ChunkKey, v: u64) -> Vec<u8> {
+    let path = format!(
+        "/v1/worlds/{id}/chunks/{}/{}/{}/{}.bin?v={v}",
+        key.lod, key.x, key.y, key.z
+    );
+    let (status, body) = strata::bench::http::http(addr, "GET", &path, &[], "")
+        .await
+        .expect("HTTP");
+    assert_eq!(status, 200, "{path}: {}", String::from_utf8_lossy(&body));
+    body
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_volume_region_streams_its_chunks_and_an_edit_resends_them() {
+    let addr = serve().await;
+    let ground = ground_at(32, 24);
+    let body = json!({"seed": SEED, "public": true,
+                      "scene": {"volumes": [common::arch::arch_element(ground)]}});
+    let (status, text) = strata::bench::http::http(
+        &addr,
+        "POST",
+        "/v1/worlds",
+        &[("Content-Type", "application/json")],
+        &body.to_string(),
+    )
+    .await
+    .expect("HTTP");
+    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
+    let doc: Value = serde_json::from_slice(&text).expect("JSON");
+    let id = doc["id"].as_str().expect("id").to_string();
+    let token = doc["tokens"]["admin"].as_str().expect("token").to_string();
+
+    let mut ws = connect(
+        &addr,
+        &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),
+    )
+    .await;
+    next(&mut ws, Duration::from_secs(30)).await;
+    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    let y = f64::from(ground) + 10.0;
+    send(
+        &mut ws,
+        json!({"type": "view", "x": 32, "z": 24, "y": y, "rings": [1], "chunk_rings": [2]}),
+    )
+    .await;
+    let (chunks, tiles, msgs) = until_idle(&mut ws).await;
+    let view = msgs
+        .iter()
+        .find(|m| m["type"] == "view")
+        .expect("view reply");
+    let listed = view["chunks"]
+        .as_array()
+        .expect("the view lists its chunks")
+        .len();
+    assert_eq!(tiles, select(32.0, 24.0, &[1], 1.0).len());
+    assert!(!chunks.is_empty(), "the arch's chunks arrive");
+    assert_eq!(chunks.len(), listed, "every listed chunk arrives");
+    // Only chunks meeting the region's box: x in [0, 64), z in [0, 48), y in y_m.
+    let (lo, hi) = (f64::from(ground) - 12.0, f64::from(ground) + 36.0);
+    for c in &chunks {
+        let k = c.key;
+        assert_eq!(k.lod, 0, "two rings of LOD 0 cover the region");
+        assert!((0..2).contains(&k.x) && (0..2).contains(&k.z), "{k:?}");
+        let (y0, y1) = (k.y as f64 * 32.0, (k.y + 1) as f64 * 32.0);
+        assert!(y0 < hi && y1 > lo, "{k:?} misses the region's heights");
+        assert_eq!(c.version, 1);
+        assert_eq!(
+            c.payload,
+            http_chunk(&addr, &id, k, 1).await,
+            "{k:?}: the chunk route's bytes"
+        );
+    }
+    assert!(
+        chunks.iter().any(|c| c.payload.len() > 96),
+        "some chunk has a surface"
+    );
+
+    // An edit in the region's reach: an authored region inside the box.
+    let patch = json!([{"op": "add", "path": "/regions/-",
+                        "value": {"id": "r1", "bbox": {"min": [10.0, 10.0], "max": [20.0, 20.0]}}}]);
+    send(
+        &mut ws,
+        json!({"type": "edit", "id": "e1", "patch": patch, "if_match": 1}),
+    )
+    .await;
+    let (fresh, _, msgs) = until_idle(&mut ws).await;
+    let inv = msgs
+        .iter()
+        .find(|m| m["type"] == "invalidate")
+        .expect("invalidate");
+    let stale: Vec<ChunkKey> = inv["chunks"]
+        .as_array()
+        .expect("chunks")
+        .iter()
+        .map(|a| ChunkKey {
+            lod: a[0].as_u64().expect("lod") as u32,
+            x: a[1].as_i64().expect("x"),
+            y: a[2].as_i64().expect("y"),
+            z: a[3].as_i64().expect("z"),
+        })
+        .collect();
+    assert!(!stale.is_empty(), "{inv}");
+    let resent: Vec<ChunkKey> = fresh.iter().map(|c| c.key).collect();
+    assert_eq!(
+        resent, stale,
+        "each invalidated chunk comes again, nearest first"
+    );
+    for c in &fresh {
+        assert_eq!(c.version, 2);
+        assert_eq!(c.payload, http_chunk(&addr, &id, c.key, 2).await);
+    }
+}
