@@ -374,54 +374,33 @@ impl TileFrame {
         seams: [bool; 4],
         payload: &[u8],
     ) -> Vec<u8> {
-        let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + payload.len());
-        out.extend_from_slice(FRAME_MAGIC);
-        out.extend_from_slice(&FRAME_VERSION.to_le_bytes());
-        out.push(KIND_TILE);
-        out.push(format_code(format));
-        out.extend_from_slice(&key.lod.to_le_bytes());
-        out.extend_from_slice(&key.x.to_le_bytes());
-        out.extend_from_slice(&key.z.to_le_bytes());
-        out.extend_from_slice(&version.to_le_bytes());
         let bits = seams
             .iter()
             .enumerate()
             .fold(0u8, |b, (i, s)| b | ((*s as u8) << i));
-        out.push(bits);
-        out.extend_from_slice(&[0, 0, 0]);
-        out.extend_from_slice(&(payload.len() as u32).to_le_bytes());
-        out.extend_from_slice(payload);
-        out
+        let head = Header {
+            lod: key.lod,
+            x: key.x,
+            z: key.z,
+            version,
+            at36: [bits, 0, 0, 0],
+        };
+        head.frame(KIND_TILE, format, payload)
     }
 
     /// Parses a frame (the client side, for tests and tools).
     pub fn decode(bytes: &[u8]) -> Option<Self> {
-        if bytes.len() < FRAME_HEADER_BYTES || &bytes[..4] != FRAME_MAGIC || bytes[6] != KIND_TILE {
-            return None;
-        }
-        let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().unwrap_or_default());
-        let i64_at = |o: usize| i64::from_le_bytes(bytes[o..o + 8].try_into().unwrap_or_default());
-        let format = match bytes[7] {
-            1 => Format::Json,
-            2 => Format::Bin,
-            3 => Format::Png,
-            4 => Format::Glb,
-            _ => return None,
-        };
-        let len = u32_at(40) as usize;
-        if bytes.len() != FRAME_HEADER_BYTES + len {
-            return None;
-        }
+        let (head, format, payload) = Header::read(bytes, KIND_TILE)?;
         Some(TileFrame {
             key: TileKey {
-                lod: u32_at(8),
-                x: i64_at(12),
-                z: i64_at(20),
+                lod: head.lod,
+                x: head.x,
+                z: head.z,
             },
             format,
-            version: i64_at(28) as u64,
-            seams: [0, 1, 2, 3].map(|i| bytes[36] & (1 << i) != 0),
-            payload: bytes[FRAME_HEADER_BYTES..].to_vec(),
+            version: head.version,
+            seams: [0, 1, 2, 3].map(|i| head.at36[0] & (1 << i) != 0),
+            payload: payload.to_vec(),
         })
     }
 }
@@ -448,27 +427,73 @@ pub struct ChunkFrame {
 impl ChunkFrame {
     /// The bytes of the frame of chunk `key` of world `version`, its `payload` in `format`.
     pub fn encode_parts(key: ChunkKey, format: Format, version: u64, payload: &[u8]) -> Vec<u8> {
+        // Chunk y is within ±511 (`volume::chunk::max_chunk_y`), so it fits an i32.
+        let y = i32::try_from(key.y).unwrap_or(if key.y < 0 { i32::MIN } else { i32::MAX });
+        let head = Header {
+            lod: key.lod,
+            x: key.x,
+            z: key.z,
+            version,
+            at36: y.to_le_bytes(),
+        };
+        head.frame(KIND_CHUNK, format, payload)
+    }
+
+    /// Parses a chunk frame (the client side, for tests and tools).
+    pub fn decode(bytes: &[u8]) -> Option<Self> {
+        let (head, format, payload) = Header::read(bytes, KIND_CHUNK)?;
+        if format == Format::Png {
+            return None;
+        }
+        Some(ChunkFrame {
+            key: ChunkKey {
+                lod: head.lod,
+                x: head.x,
+                y: i64::from(i32::from_le_bytes(head.at36)),
+                z: head.z,
+            },
+            format,
+            version: head.version,
+            payload: payload.to_vec(),
+        })
+    }
+}
+
+/// The fields of the 44-byte frame header that tile and chunk frames share (little-endian):
+/// magic, frame version, kind and format at 0–7, then `lod` (u32) at 8, `x` (i64) at 12, `z`
+/// (i64) at 20, the world version (u64) at 28, four kind-specific bytes at 36 and the payload's
+/// length (u32) at 40.
+struct Header {
+    lod: u32,
+    x: i64,
+    z: i64,
+    version: u64,
+    /// Bytes 36–39: a tile's seam flags and three zeros, or a chunk's `y` as an i32.
+    at36: [u8; 4],
+}
+
+impl Header {
+    /// The frame: this header with `kind` and `format`, then `payload`.
+    fn frame(&self, kind: u8, format: Format, payload: &[u8]) -> Vec<u8> {
         let mut out = Vec::with_capacity(FRAME_HEADER_BYTES + payload.len());
         out.extend_from_slice(FRAME_MAGIC);
         out.extend_from_slice(&FRAME_VERSION.to_le_bytes());
-        out.push(KIND_CHUNK);
+        out.push(kind);
         out.push(format_code(format));
-        out.extend_from_slice(&key.lod.to_le_bytes());
-        out.extend_from_slice(&key.x.to_le_bytes());
-        out.extend_from_slice(&key.z.to_le_bytes());
-        out.extend_from_slice(&version.to_le_bytes());
-        // Chunk y is within ±511 (`volume::chunk::max_chunk_y`), so it fits an i32.
-        let y = i32::try_from(key.y).unwrap_or(if key.y < 0 { i32::MIN } else { i32::MAX });
-        out.extend_from_slice(&y.to_le_bytes());
+        out.extend_from_slice(&self.lod.to_le_bytes());
+        out.extend_from_slice(&self.x.to_le_bytes());
+        out.extend_from_slice(&self.z.to_le_bytes());
+        out.extend_from_slice(&self.version.to_le_bytes());
+        out.extend_from_slice(&self.at36);
         out.extend_from_slice(&(payload.len() as u32).to_le_bytes());
         out.extend_from_slice(payload);
         out
     }
 
-    /// Parses a chunk frame (the client side, for tests and tools).
-    pub fn decode(bytes: &[u8]) -> Option<Self> {
-        if bytes.len() < FRAME_HEADER_BYTES || &bytes[..4] != FRAME_MAGIC || bytes[6] != KIND_CHUNK
-        {
+    /// The header, format and payload of a frame of `kind`; `None` for another kind, a bad
+    /// magic or format, or a length that is not the payload's.
+    fn read(bytes: &[u8], kind: u8) -> Option<(Header, Format, &[u8])> {
+        if bytes.len() < FRAME_HEADER_BYTES || &bytes[..4] != FRAME_MAGIC || bytes[6] != kind {
             return None;
         }
         let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().unwrap_or_default());
@@ -476,24 +501,23 @@ impl ChunkFrame {
         let format = match bytes[7] {
             1 => Format::Json,
             2 => Format::Bin,
+            3 => Format::Png,
             4 => Format::Glb,
             _ => return None,
         };
-        let len = u32_at(40) as usize;
-        if bytes.len() != FRAME_HEADER_BYTES + len {
+        if bytes.len() != FRAME_HEADER_BYTES + u32_at(40) as usize {
             return None;
         }
-        Some(ChunkFrame {
-            key: ChunkKey {
-                lod: u32_at(8),
-                x: i64_at(12),
-                y: i64::from(u32_at(36) as i32),
-                z: i64_at(20),
-            },
-            format,
+        let mut at36 = [0u8; 4];
+        at36.copy_from_slice(&bytes[36..40]);
+        let head = Header {
+            lod: u32_at(8),
+            x: i64_at(12),
+            z: i64_at(20),
             version: i64_at(28) as u64,
-            payload: bytes[FRAME_HEADER_BYTES..].to_vec(),
-        })
+            at36,
+        };
+        Some((head, format, &bytes[FRAME_HEADER_BYTES..]))
     }
 }
 
