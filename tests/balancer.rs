@@ -133,11 +133,9 @@ async fn edit(addr: &str, id: &str, if_match: u64, region: &str) -> (u16, Value)
     (status, serde_json::from_slice(&body).unwrap_or(Value::Null))
 }
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn three_replicas_behind_nginx_share_edits_streams_and_bytes() {
-    let url = common::postgres::database().await;
-    let dirs: Vec<tempfile::TempDir> = (0..4).map(|_| tempfile::tempdir().expect("tmp")).collect();
-    let replicas: Vec<common::Server> = dirs[..3]
+/// Three `strata serve` processes on the database `url`, with data directories `dirs[0..3]`.
+fn three_replicas(url: &str, dirs: &[tempfile::TempDir]) -> Vec<common::Server> {
+    dirs[..3]
         .iter()
         .map(|d| {
             common::start(
@@ -147,12 +145,19 @@ async fn three_replicas_behind_nginx_share_edits_streams_and_bytes() {
                     "--admin-token",
                     ADMIN,
                     "--store",
-                    &url,
+                    url,
                 ],
                 &[],
             )
         })
-        .collect();
+        .collect()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn three_replicas_behind_nginx_share_edits_streams_and_bytes() {
+    let url = common::postgres::database().await;
+    let dirs: Vec<tempfile::TempDir> = (0..4).map(|_| tempfile::tempdir().expect("tmp")).collect();
+    let replicas = three_replicas(&url, &dirs);
     let addrs: Vec<&str> = replicas.iter().map(|r| r.addr.as_str()).collect();
     let lb = nginx(dirs[3].path(), &addrs);
 
@@ -328,22 +333,7 @@ async fn a_replica_killed_during_four_edit_streams_loses_no_acknowledged_edit() 
 /// `victim` SIGKILLed once eight edits are acknowledged.
 async fn kill_during_edit_streams(url: &str, victim: usize) {
     let dirs: Vec<tempfile::TempDir> = (0..4).map(|_| tempfile::tempdir().expect("tmp")).collect();
-    let mut replicas: Vec<common::Server> = dirs[..3]
-        .iter()
-        .map(|d| {
-            common::start(
-                [
-                    "--data",
-                    d.path().to_str().expect("utf-8"),
-                    "--admin-token",
-                    ADMIN,
-                    "--store",
-                    url,
-                ],
-                &[],
-            )
-        })
-        .collect();
+    let mut replicas = three_replicas(url, &dirs);
     let addrs: Vec<String> = replicas.iter().map(|r| r.addr.clone()).collect();
     let addr_refs: Vec<&str> = addrs.iter().map(String::as_str).collect();
     let lb = nginx(dirs[3].path(), &addr_refs);

@@ -196,15 +196,7 @@ async fn next_text(ws: &mut Ws) -> Value {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn stream_errors_name_the_field_and_oversized_messages_close_the_stream() {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
-        .await
-        .expect("bind");
-    let addr = listener.local_addr().expect("addr");
-    tokio::spawn(async move {
-        axum::serve(listener, app(AppState::new(Compute::cpu())))
-            .await
-            .expect("serve");
-    });
+    let addr = common::oneshot::serve_cpu().await;
     let (mut ws, _) = tokio_tungstenite::connect_async(format!("ws://{addr}/v1/seeds/1/stream"))
         .await
         .expect("connect");

@@ -3,28 +3,20 @@
 use futures::{SinkExt, StreamExt};
 use std::sync::atomic::Ordering;
 use std::time::Duration;
-use strata::compute::Compute;
-use strata::server::{app, AppState};
 use strata::stream::protocol::TileFrame;
 use strata::stream::session::STATS;
 use strata::stream::view::select;
 use strata::terrain::TileKey;
 use tokio_tungstenite::tungstenite::Message;
 
+mod common;
+
 /// The frame counter is process-wide: tests of this binary run one at a time.
 static SERIAL: tokio::sync::Mutex<()> = tokio::sync::Mutex::const_new(());
 
+/// The app on a real socket; returns `ws://host:port`.
 async fn serve() -> String {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
-        .await
-        .expect("bind");
-    let addr = listener.local_addr().expect("addr");
-    tokio::spawn(async move {
-        axum::serve(listener, app(AppState::new(Compute::cpu())))
-            .await
-            .expect("serve");
-    });
-    format!("ws://{addr}")
+    format!("ws://{}", common::oneshot::serve_cpu().await)
 }
 
 type Ws =

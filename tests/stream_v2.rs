@@ -7,9 +7,7 @@
 use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
 use std::time::Duration;
-use strata::compute::Compute;
 use strata::edits::{synthesize, TileEdits};
-use strata::server::{app, AppState};
 use strata::stream::protocol::{ChunkFrame, TileFrame};
 use strata::stream::session::SEND_TIMEOUT;
 use strata::stream::view::select;
@@ -25,16 +23,7 @@ type Ws =
 
 /// The app on a real socket; returns `host:port`.
 async fn serve() -> String {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
-        .await
-        .expect("bind");
-    let addr = listener.local_addr().expect("addr");
-    tokio::spawn(async move {
-        axum::serve(listener, app(AppState::new(Compute::cpu())))
-            .await
-            .expect("serve");
-    });
-    addr.to_string()
+    common::oneshot::serve_cpu().await
 }
 
 async fn connect(addr: &str, path: &str) -> Ws {

@@ -64,12 +64,7 @@ async fn tile_frame(
                 Box::pin(state.tile_product(&view.view, key, seams, format, TileVersion::V1))
                     .await?;
             let bytes = TileFrame::encode_parts(key, format, view.version, seams, &product.body);
-            Ok(Arc::new(CachedProduct {
-                body: bytes.into(),
-                hash: String::new(),
-                content_type: "application/octet-stream",
-                extra: Vec::new(),
-            }))
+            Ok(frame_product(bytes))
         })
         .await?;
     Ok(frame.body.clone())
@@ -113,12 +108,7 @@ async fn chunk_frame(
             ))
             .await?;
             let bytes = ChunkFrame::encode_parts(key, format, view.version, &product.body);
-            Ok(Arc::new(CachedProduct {
-                body: bytes.into(),
-                hash: String::new(),
-                content_type: "application/octet-stream",
-                extra: Vec::new(),
-            }))
+            Ok(frame_product(bytes))
         })
         .await?;
     Ok(frame.body.clone())
@@ -373,4 +363,14 @@ async fn seed_stream(
                 .track(|closing| run(socket, source, closing, protocol))
                 .await;
         }))
+}
+
+/// A stream frame as the body cache keeps it.
+fn frame_product(bytes: Vec<u8>) -> Arc<CachedProduct> {
+    Arc::new(CachedProduct {
+        body: bytes.into(),
+        hash: String::new(),
+        content_type: "application/octet-stream",
+        extra: Vec::new(),
+    })
 }

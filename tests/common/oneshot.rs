@@ -151,3 +151,19 @@ pub async fn wait_job_done(app: &Router, status_url: &str, token: &str) {
         tokio::time::sleep(std::time::Duration::from_millis(20)).await;
     }
 }
+
+/// A default CPU app (`strata::server::app`) served on a loopback socket in this process, for
+/// tests that need a real connection (WebSockets); returns `host:port`.
+pub async fn serve_cpu() -> String {
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
+        .await
+        .expect("bind");
+    let addr = listener.local_addr().expect("addr");
+    tokio::spawn(async move {
+        let state = strata::server::AppState::new(strata::compute::Compute::cpu());
+        axum::serve(listener, strata::server::app(state))
+            .await
+            .expect("serve");
+    });
+    addr.to_string()
+}
