@@ -110,6 +110,14 @@ pub struct RiverJob {
     pub wall_seed: u32,
 }
 
+/// The projection of `(x, z)` on piece `p`'s chord, clamped to `[0, 1]`, and the chord `b − a`.
+#[inline(always)]
+fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
+    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
+    let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
+    (t, abx, abz)
+}
+
 /// The foot of the point `(x, z)` on piece `p`: its parameter `t` in `[0, 1]`, the projection of
 /// the point on the chord, and the squared distance to the curve's point at `t`, m². For a
 /// straight piece that is the distance to the segment; for a bent one the distance along the
@@ -119,8 +127,7 @@ pub struct RiverJob {
 /// the added term is `+0`, so straight pieces give the bits they gave before bends existed.
 #[inline(always)]
 fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
-    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
-    let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
+    let (t, abx, abz) = chord_t(p, x, z);
     let k = t * (1.0 - t);
     let (ka, kb) = (k * (1.0 - t), k * t);
     let (dx, dz) = (
@@ -132,8 +139,7 @@ fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
 
 /// Distance from piece `p`'s chord (the segment from `a` to `b`) to the point `(x, z)`, metres.
 fn point_distance(p: &Piece, x: f32, z: f32) -> f32 {
-    let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
-    let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
+    let (t, abx, abz) = chord_t(p, x, z);
     let (dx, dz) = (x - (p.ax + t * abx), z - (p.az + t * abz));
     (dx * dx + dz * dz).sqrt()
 }
@@ -395,11 +401,12 @@ impl Network<'_> {
         for bz in bz0..=bz1 {
             for bx in bx0..=bx1 {
                 let cached = self.pieces((bx, bz));
-                pieces.extend(
-                    cached
-                        .iter()
-                        .filter(|p| rect_distance(p, x0, z0, x1, z1) < reach_of(p) + p.bulge()),
-                );
+                pieces.extend(cached.iter().filter(|p| {
+                    // A piece that reaches nowhere (a dry one, for the water job) stays
+                    // out however far it bends.
+                    let reach = reach_of(p);
+                    reach > 0.0 && rect_distance(p, x0, z0, x1, z1) < reach + p.bulge()
+                }));
             }
         }
         // A piece goes into every bin it can reach: the distance from the piece to the bin's
