@@ -476,9 +476,10 @@ fn a_floodplain_valley_is_flat_to_its_edge_then_climbs_walls_and_leaves_the_land
 
 /// Two shortcuts of the tile path against the full river job, over tiles that hold river lines
 /// at LOD 0, 3 and 6 in every named area: the carve with each bin pruned to the pieces that can
-/// reach its highest sample (`RiverJob::pruned`, `RiverJob::carve_pruned`) gives every height of the full job, and the
-/// water job (`water_job_for`: wet channels only) gives every sample's water surface and kind,
-/// bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
+/// reach its highest sample (`RiverJob::pruned`, `RiverJob::carve_pruned`, and the same a bin
+/// at a time, `RiverJob::carve_grid`) gives every height of the full job, and the
+/// water job (`water_job_for`: wet channels only, and the same for a whole grid,
+/// `RiverJob::water_grid`) gives every sample's water surface and kind, bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
 #[test]
 fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
     use strata::terrain::earth::rivers::{job_for, water_at, water_job_for};
@@ -517,14 +518,32 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
                     (x, z, *h)
                 }));
                 left_out += full.bin_pieces.len() - pruned.entries.len();
+                let mut lanes = raised.clone();
+                let xs: Vec<f32> = (0..n).map(|i| at(i).0).collect();
+                let zs: Vec<f32> = (0..n).map(|j| at(j * n).1).collect();
+                full.carve_grid(&xs, &zs, &mut lanes);
                 let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
                 let sea = p.params.sea_level_m;
+                let (mut grid_surface, mut grid_kinds) = (Vec::new(), Vec::new());
+                water.water_grid(
+                    sea,
+                    &xs,
+                    &zs,
+                    &t.heights,
+                    &mut grid_surface,
+                    &mut grid_kinds,
+                );
                 for (v, h) in raised.iter().enumerate() {
                     let (x, z) = at(v);
                     assert_eq!(
                         full.carve_pruned(&pruned, x, z, *h).to_bits(),
                         full.carve_one(x, z, *h).to_bits(),
                         "{name} {key:?} vertex {v}: the pruned carve differs"
+                    );
+                    assert_eq!(
+                        lanes[v].to_bits(),
+                        full.carve_one(x, z, *h).to_bits(),
+                        "{name} {key:?} vertex {v}: the carve of eight lanes differs"
                     );
                     let carved = t.heights[v];
                     let (s_full, k_full) = water_at(&full, sea, x, z, carved);
@@ -533,6 +552,11 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
                         (s.to_bits(), k),
                         (s_full.to_bits(), k_full),
                         "{name} {key:?} vertex {v}: the water job's water differs"
+                    );
+                    assert_eq!(
+                        (grid_surface[v].to_bits(), grid_kinds[v]),
+                        (s.to_bits(), k),
+                        "{name} {key:?} vertex {v}: the grid's water differs"
                     );
                     wet += usize::from(k == kind::RIVER);
                 }

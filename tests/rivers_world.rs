@@ -71,6 +71,26 @@ async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
     assert_eq!(earth["lattice_cells"], 16, "{earth}");
 }
 
+/// A world stored with `valleys: 3` (the default of new worlds at `9c11dba`) keeps its bytes
+/// (`tests/fixtures/valleys3-world/`).
+#[tokio::test]
+async fn a_world_stored_with_the_third_valleys_serves_the_same_tile_bytes() {
+    const WORLD3: &str = "f78fa8d5daf52fef3cc7abe5";
+    const FIXTURE3: &str = "valleys3-world";
+    let (_data, server) = common::fixture::serve(FIXTURE3);
+    let checked =
+        common::fixture::check_pinned(&server, FIXTURE3, "tiles.blake3", |format, key| {
+            let query = if format == "2" { "&format=2" } else { "" };
+            format!("/v1/worlds/{WORLD3}/tiles/{key}.bin?v=1{query}")
+        })
+        .await;
+    assert_eq!(checked, 26, "every fixture tile was checked");
+    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD3}/versions/1")).await;
+    assert_eq!(status, 200);
+    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
+    assert_eq!(doc["scene"]["world"]["earth"]["rivers"]["valleys"], 3);
+}
+
 #[test]
 fn new_scenes_carve_the_third_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();

@@ -123,26 +123,42 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
                 })
         })
         .collect();
+    // Each column's lerps along x on the node row above and below it, computed once for all
+    // rows in the same node row: `(top, bottom)` of biome `bi` at `[(i · k + bi) · 2]`.
+    let mut lerps = vec![0.0f32; job.w * k * 2];
+    let mut lerps_row = usize::MAX;
     for j in 0..job.h {
         let zf = node(job.gz0 + j as i64);
         let nj = zf.floor();
         let tz = (zf - nj) as f32;
         let rj = (nj as i64 - j0) as usize;
-        for (i, &(ri, tx)) in cols.iter().enumerate() {
-            let at = |di: usize, dj: usize| ((rj + dj) * nw + ri + di) * k;
-            let (a, b, c, d) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
-            let v = (j * job.w + i) * k;
-            if uniform[rj * nw + ri] {
+        if rj != lerps_row {
+            lerps_row = rj;
+            for (i, &(ri, tx)) in cols.iter().enumerate() {
+                let at = |di: usize, dj: usize| ((rj + dj) * nw + ri + di) * k;
+                let (a, b, c, d) = (at(0, 0), at(1, 0), at(0, 1), at(1, 1));
                 for bi in 0..k {
-                    out[v + bi] = nodes[a + bi].clamp(0.0, 1.0);
+                    let top = nodes[a + bi] + (nodes[b + bi] - nodes[a + bi]) * tx;
+                    let bottom = nodes[c + bi] + (nodes[d + bi] - nodes[c + bi]) * tx;
+                    lerps[(i * k + bi) * 2] = top;
+                    lerps[(i * k + bi) * 2 + 1] = bottom;
+                }
+            }
+        }
+        let row = &mut out[j * job.w * k..(j + 1) * job.w * k];
+        for (i, &(ri, _)) in cols.iter().enumerate() {
+            let v = i * k;
+            if uniform[rj * nw + ri] {
+                let a = (rj * nw + ri) * k;
+                for bi in 0..k {
+                    row[v + bi] = nodes[a + bi].clamp(0.0, 1.0);
                 }
                 continue;
             }
             for bi in 0..k {
-                let top = nodes[a + bi] + (nodes[b + bi] - nodes[a + bi]) * tx;
-                let bottom = nodes[c + bi] + (nodes[d + bi] - nodes[c + bi]) * tx;
+                let (top, bottom) = (lerps[(v + bi) * 2], lerps[(v + bi) * 2 + 1]);
                 // Clamped: a lerp of values in [0, 1] can round a last bit above 1.
-                out[v + bi] = (top + (bottom - top) * tz).clamp(0.0, 1.0);
+                row[v + bi] = (top + (bottom - top) * tz).clamp(0.0, 1.0);
             }
         }
     }

@@ -410,20 +410,25 @@ pub fn snow_shift(
     spacing_m: f32,
     normals: &[[f32; 3]],
 ) -> Vec<f32> {
+    const N: usize = 8;
     let n = super::plan::TILE_VERTS;
     let seed = plan.snow_seed;
-    normals
-        .iter()
-        .enumerate()
-        .map(|(v, nrm)| {
+    let mut out = Vec::with_capacity(normals.len());
+    let (mut xs, mut zs, mut noise) = ([0.0f32; N], [0.0f32; N], [0.0f32; N]);
+    for (c, chunk) in normals.chunks(N).enumerate() {
+        for l in 0..N {
+            let v = (c * N + l).min(normals.len() - 1);
             let gx = key.x * super::plan::TILE_QUADS + (v % n) as i64;
             let gz = key.z * super::plan::TILE_QUADS + (v / n) as i64;
-            let x = gx as f32 * spacing_m / SNOW_NOISE_SCALE_M;
-            let z = gz as f32 * spacing_m / SNOW_NOISE_SCALE_M;
-            let noise = super::noise::lattice(x, z, seed);
-            SNOW_ASPECT_M * nrm[2] + SNOW_NOISE_M * noise
-        })
-        .collect()
+            xs[l] = gx as f32 * spacing_m / SNOW_NOISE_SCALE_M;
+            zs[l] = gz as f32 * spacing_m / SNOW_NOISE_SCALE_M;
+        }
+        super::fractal::lattice_n(&xs, &zs, seed, &mut noise);
+        for (nrm, noise) in chunk.iter().zip(noise) {
+            out.push(SNOW_ASPECT_M * nrm[2] + SNOW_NOISE_M * noise);
+        }
+    }
+    out
 }
 
 /// Large-scale elevation (continent and mean mountain relief, metres) at world positions, for
@@ -501,22 +506,15 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
 /// Carves the rivers of `rj` into a job's heights: the CPU reference of the carve (the WGSL twin
 /// is `shaders/rivers.wgsl`).
 pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
-    let at = |v: usize| {
-        let (i, j) = ((v % job.w) as i64, (v / job.w) as i64);
-        (
-            (job.gx0 + i) as f32 * spacing_m,
-            (job.gz0 + j) as f32 * spacing_m,
-        )
-    };
-    // Only the pieces that can reach each bin at its highest sample (the same result, faster).
-    let pruned = rj.pruned(heights.iter().enumerate().map(|(v, h)| {
-        let (x, z) = at(v);
-        (x, z, *h)
-    }));
-    for (v, h) in heights.iter_mut().enumerate() {
-        let (x, z) = at(v);
-        *h = rj.carve_pruned(&pruned, x, z, *h);
-    }
+    let xs: Vec<f32> = (0..job.w as i64)
+        .map(|i| (job.gx0 + i) as f32 * spacing_m)
+        .collect();
+    let zs: Vec<f32> = (0..job.h as i64)
+        .map(|j| (job.gz0 + j) as f32 * spacing_m)
+        .collect();
+    // Only the pieces that can reach each bin at its highest sample, a bin's samples side by
+    // side (the same result, faster).
+    rj.carve_grid(&xs, &zs, heights);
 }
 
 /// Water surface (metres) and kind ([`rivers::kind`]) of tile `key`'s vertices, from their
@@ -542,15 +540,14 @@ pub fn tile_water(
     } else {
         rivers::RiverJob::default()
     };
-    let mut surface = Vec::with_capacity(heights.len());
-    let mut kinds = Vec::with_capacity(heights.len());
-    for (v, &h) in heights.iter().enumerate() {
-        let x = (gx0 + (v % n) as i64) as f32 * spacing_m;
-        let z = (gz0 + (v / n) as i64) as f32 * spacing_m;
-        let (s, k) = rivers::water_at(&rj, sea_level_m, x, z, h);
-        surface.push(s);
-        kinds.push(k);
-    }
+    let xs: Vec<f32> = (0..n as i64)
+        .map(|i| (gx0 + i) as f32 * spacing_m)
+        .collect();
+    let zs: Vec<f32> = (0..n as i64)
+        .map(|j| (gz0 + j) as f32 * spacing_m)
+        .collect();
+    let (mut surface, mut kinds) = (Vec::new(), Vec::new());
+    rj.water_grid(sea_level_m, &xs, &zs, heights, &mut surface, &mut kinds);
     (surface, kinds)
 }
 

@@ -112,7 +112,7 @@ pub struct RiverJob {
 
 /// The projection of `(x, z)` on piece `p`'s chord, clamped to `[0, 1]`, and the chord `b − a`.
 #[inline(always)]
-fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
+pub(super) fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
     let (abx, abz) = (p.bx - p.ax, p.bz - p.az);
     let t = (((x - p.ax) * abx + (z - p.az) * abz) * p.inv_len2).clamp(0.0, 1.0);
     (t, abx, abz)
@@ -126,7 +126,7 @@ fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
 /// tangents agree where they meet, joins the next piece's without a crease. With zero slopes
 /// the added term is `+0`, so straight pieces give the bits they gave before bends existed.
 #[inline(always)]
-fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
+pub(super) fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
     let (t, abx, abz) = chord_t(p, x, z);
     let k = t * (1.0 - t);
     let (ka, kb) = (k * (1.0 - t), k * t);
@@ -490,14 +490,14 @@ impl Network<'_> {
 /// Margin of [`RiverJob::carve_pruned`]'s test that a piece cannot lower a sample further, metres:
 /// far above the rounding of a water level interpolated between a piece's ends (below a
 /// millimetre at the heights a world reaches).
-const SKIP_MARGIN_M: f32 = 0.01;
+pub(super) const SKIP_MARGIN_M: f32 = 0.01;
 
 /// Added to a piece's squared length before the division that projects a sample onto it, so a
 /// piece of zero length divides by a positive number (the WGSL twin reads it from its preamble).
 pub const PIECE_LEN2_EPS: f32 = 1e-6;
 
 #[inline(always)]
-fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
 }
@@ -561,7 +561,7 @@ pub struct PrunedBins {
 
 impl RiverJob {
     /// The bin of a sample at `(x, z)`, if it lies on the grid.
-    fn bin_index(&self, x: f32, z: f32) -> Option<usize> {
+    pub(super) fn bin_index(&self, x: f32, z: f32) -> Option<usize> {
         if self.bin_start.is_empty() {
             return None;
         }
@@ -648,6 +648,12 @@ impl RiverJob {
                 h_max[b] = h_max[b].max(h);
             }
         }
+        self.pruned_for(&h_max)
+    }
+
+    /// [`RiverJob::pruned`] given each bin's highest sample, `h_max[b]` (−∞: no sample).
+    pub(super) fn pruned_for(&self, h_max: &[f32]) -> PrunedBins {
+        let bins = h_max.len();
         let mut start = Vec::with_capacity(bins + 1);
         let mut entries = Vec::new();
         let wall_max = self.wall_width_max();

@@ -62,8 +62,10 @@
 //! the minimum over pieces keeps that — so their bound stands.)
 
 mod carve;
+mod lanes;
 mod lines;
 mod network;
+mod water;
 
 pub use carve::{
     job_for, profile, water_at, water_job_for, Edge, Piece, PrunedBins, RiverJob, PIECE_LEN2_EPS,

@@ -1,0 +1,170 @@
+//! The carve of a whole job's samples, up to [`LANES`] at a time: the samples are grouped by bin, and
+//! each bin's pruned pieces ([`RiverJob::pruned`]) are applied to its samples side by side, in
+//! loops with no branch that depends on a lane, so LLVM vectorises them.
+//!
+//! Every lane performs [`RiverJob::carve_pruned`]'s operations in its order (Rust never
+//! contracts `a * b + c` into a fused multiply-add), and a branch of the scalar code becomes a
+//! select between the values both of its arms compute, so every sample gets
+//! [`RiverJob::carve_pruned`]'s bits (tested against [`RiverJob::carve_one`] in
+//! `tests/rivers.rs`). Samples in a bin no piece reaches, or outside the bins, keep their height,
+//! which is what the scalar carve returns for them (`h.max(h − CARVE_MAX_M)` is `h`).
+
+use super::super::super::fractal::lattice_n;
+use super::carve::{foot, smoothstep, RiverJob, SKIP_MARGIN_M};
+use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M, WALL_SLOPE};
+
+/// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
+/// it unrolls a loop of eight and then does not).
+pub const LANES: usize = 64;
+
+type L = [f32; LANES];
+
+/// `x.clamp(lo, hi)` without the check that `lo ≤ hi` (which the scalar code makes only where it
+/// uses the value): the same two comparisons in the same order, so the same bits.
+#[inline(always)]
+fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
+    let x = if x < lo { lo } else { x };
+    if x > hi {
+        hi
+    } else {
+        x
+    }
+}
+
+impl RiverJob {
+    /// Carves the grid of samples at `(xs[i], zs[j])` (metres) whose heights are
+    /// `heights[j · xs.len() + i]`: each gets [`RiverJob::carve_pruned`] with the bins pruned
+    /// for these heights ([`RiverJob::pruned`]), bit for bit.
+    pub fn carve_grid(&self, xs: &[f32], zs: &[f32], heights: &mut [f32]) {
+        assert_eq!(heights.len(), xs.len() * zs.len(), "a grid of heights");
+        if self.bin_start.is_empty() {
+            return;
+        }
+        // `bin_index` one axis at a time: a sample's bin is its row's bin row and its column's
+        // bin column.
+        let axis = |v: &[f32], origin: f32, n: usize| -> Vec<Option<usize>> {
+            v.iter()
+                .map(|&c| {
+                    let b = ((c - origin) / self.bin_m).floor();
+                    (b >= 0.0 && b < n as f32).then_some(b as usize)
+                })
+                .collect()
+        };
+        let cols = axis(xs, self.x0, self.bins_w);
+        let rows = axis(zs, self.z0, self.bins_h);
+        let bins = self.bin_start.len() - 1;
+        let bin_of = |v: usize| -> Option<usize> {
+            let (i, j) = (v % xs.len(), v / xs.len());
+            Some(rows[j]? * self.bins_w + cols[i]?)
+        };
+        let mut h_max = vec![f32::NEG_INFINITY; bins];
+        for (j, row) in heights.chunks(xs.len()).enumerate() {
+            let Some(r) = rows[j] else { continue };
+            for (i, &h) in row.iter().enumerate() {
+                if let Some(c) = cols[i] {
+                    let b = r * self.bins_w + c;
+                    h_max[b] = h_max[b].max(h);
+                }
+            }
+        }
+        let pruned = self.pruned_for(&h_max);
+        // The samples of each bin that some piece reaches, grouped by a counting sort.
+        let reached = |b: usize| pruned.start[b] < pruned.start[b + 1];
+        let mut first = vec![0u32; bins + 1];
+        for v in 0..heights.len() {
+            if let Some(b) = bin_of(v).filter(|&b| reached(b)) {
+                first[b + 1] += 1;
+            }
+        }
+        for b in 0..bins {
+            first[b + 1] += first[b];
+        }
+        let mut next = first.clone();
+        let mut order = vec![0u32; first[bins] as usize];
+        for v in 0..heights.len() {
+            if let Some(b) = bin_of(v).filter(|&b| reached(b)) {
+                order[next[b] as usize] = v as u32;
+                next[b] += 1;
+            }
+        }
+        for b in (0..bins).filter(|&b| reached(b)) {
+            let entries = &pruned.entries[pruned.start[b] as usize..pruned.start[b + 1] as usize];
+            for group in order[first[b] as usize..first[b + 1] as usize].chunks(LANES) {
+                let (mut x, mut z, mut h) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+                for (l, &v) in group.iter().enumerate() {
+                    let v = v as usize;
+                    (x[l], z[l]) = (xs[v % xs.len()], zs[v / xs.len()]);
+                    h[l] = heights[v];
+                }
+                let c = self.carve_lanes(entries, &x, &z, &h);
+                for (l, &v) in group.iter().enumerate() {
+                    heights[v as usize] = c[l];
+                }
+            }
+        }
+    }
+
+    /// [`RiverJob::wall_width`] of `LANES` samples.
+    fn wall_lanes(&self, x: &L, z: &L) -> L {
+        let mut wall = [0.0; LANES];
+        if self.wall_noise == 0.0 {
+            return wall;
+        }
+        let (mut qx, mut qz, mut n) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+        for l in 0..LANES {
+            qx[l] = x[l] * WALL_NOISE_INV_M;
+            qz[l] = z[l] * WALL_NOISE_INV_M;
+        }
+        lattice_n(&qx, &qz, self.wall_seed, &mut n);
+        for l in 0..LANES {
+            wall[l] = self.wall_noise
+                * (n[l].clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP);
+        }
+        wall
+    }
+
+    /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
+    /// `entries`: the lowest of the pieces' profiles, each applied where the scalar code applies
+    /// it, at most [`CARVE_MAX_M`] below the height.
+    fn carve_lanes(&self, entries: &[(u32, f32)], x: &L, z: &L, h: &L) -> L {
+        let wall = self.wall_lanes(x, z);
+        let mut c = *h;
+        for &(i, r2) in entries {
+            // A copy: LLVM does not vectorise the loop below while it reads the piece through a
+            // reference it cannot prove unaliased with `c`.
+            let p = &{ self.pieces[i as usize] };
+            let floor = p.half_width.max(p.floodplain);
+            let reach2 = p.reach * p.reach;
+            let channel2 = p.half_width * p.half_width * 1.001;
+            let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
+            for l in 0..LANES {
+                let (t, d2) = foot(p, x[l], z[l]);
+                let (hl, cl) = (h[l], c[l]);
+                // `profile_at_foot`, both arms of each branch computed.
+                let d = d2.sqrt();
+                let w = p.wa + (p.wb - p.wa) * t;
+                let v = clamp(floor + (hl - w) / WALL_SLOPE + wall[l], p.valley, p.reach);
+                let g = smoothstep(floor, v, d);
+                let walled = if (hl > w) & (d < v) {
+                    w + (hl - w) * g
+                } else {
+                    hl
+                };
+                let r = d / p.half_width;
+                let cut = if d < p.half_width {
+                    walled.min(w - p.depth * (1.0 - r * r))
+                } else {
+                    walled
+                };
+                let profile = if d2 >= reach2 { hl } else { cut };
+                // `carve_pruned`'s test of whether the piece can lower the sample.
+                let applies = (d2 < r2) & ((d2 <= channel2) | (cl > floor_w));
+                c[l] = if applies { cl.min(profile) } else { cl };
+            }
+        }
+        for l in 0..LANES {
+            c[l] = c[l].max(h[l] - CARVE_MAX_M);
+        }
+        c
+    }
+}

@@ -1,0 +1,100 @@
+//! The water of a whole grid of samples ([`water_at`] for each), with the bins and the lake
+//! nodes of each row and column found once instead of once per sample.
+//!
+//! A sample's bin is its row's bin row and its column's bin column, and the four lake nodes
+//! around it are its column's and its row's, so both are computed per axis with the formulas
+//! of [`RiverJob::bin_index`] and [`RiverJob::lake_level`]; the river levels and the lake levels
+//! are then read in the scalar code's order, so every sample gets [`water_at`]'s bits (tested
+//! against it in `tests/rivers.rs`).
+
+use super::carve::{water_at, RiverJob};
+use super::kind;
+
+impl RiverJob {
+    /// The water surface (metres) and kind ([`kind`]) of each sample of the grid at
+    /// `(xs[i], zs[j])` (metres) whose carved heights are `carved[j · xs.len() + i]`, appended
+    /// to `surface` and `kinds`: [`water_at`] of each, bit for bit.
+    pub fn water_grid(
+        &self,
+        sea_level_m: f32,
+        xs: &[f32],
+        zs: &[f32],
+        carved: &[f32],
+        surface: &mut Vec<f32>,
+        kinds: &mut Vec<u8>,
+    ) {
+        assert_eq!(carved.len(), xs.len() * zs.len(), "a grid of heights");
+        let bins = |v: &[f32], origin: f32, n: usize| -> Vec<Option<usize>> {
+            v.iter()
+                .map(|&c| {
+                    let b = ((c - origin) / self.bin_m).floor();
+                    (!self.bin_start.is_empty() && b >= 0.0 && b < n as f32).then_some(b as usize)
+                })
+                .collect()
+        };
+        let (cols, rows) = (
+            bins(xs, self.x0, self.bins_w),
+            bins(zs, self.z0, self.bins_h),
+        );
+        let lake_rows = self.lakes.len() / self.lakes_w.max(1);
+        let nodes = |v: &[f32], origin: i64, n: usize| -> Vec<[Option<usize>; 2]> {
+            v.iter()
+                .map(|&c| {
+                    let i = ((c / self.spacing_m) - 0.5).floor() as i64 - origin;
+                    [i, i + 1].map(|a| (a >= 0 && (a as usize) < n).then_some(a as usize))
+                })
+                .collect()
+        };
+        // No lake around (an empty window): no node is read.
+        let (lake_cols, lake_rows) = if self.lakes.is_empty() {
+            (Vec::new(), Vec::new())
+        } else {
+            (
+                nodes(xs, self.li0, self.lakes_w),
+                nodes(zs, self.lk0, lake_rows),
+            )
+        };
+        surface.reserve(carved.len());
+        kinds.reserve(carved.len());
+        for (j, row) in carved.chunks(xs.len()).enumerate() {
+            for (i, &h) in row.iter().enumerate() {
+                let (x, z) = (xs[i], zs[j]);
+                let bin = rows[j].zip(cols[i]).map(|(r, c)| r * self.bins_w + c);
+                let pieces = match bin {
+                    Some(b) => {
+                        &self.bin_pieces[self.bin_start[b] as usize..self.bin_start[b + 1] as usize]
+                    }
+                    None => &[],
+                };
+                if !pieces.is_empty() {
+                    let (s, k) = water_at(self, sea_level_m, x, z, h);
+                    surface.push(s);
+                    kinds.push(k);
+                    continue;
+                }
+                // No piece: `water_at` with no river, the lake read as `lake_level` reads it.
+                let (mut s, mut k) = (h, kind::NONE);
+                if h < sea_level_m {
+                    (s, k) = (sea_level_m, kind::SEA);
+                }
+                if !self.lakes.is_empty() {
+                    let mut best: Option<f32> = None;
+                    for (dk, di) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+                        let (Some(a), Some(b)) = (lake_cols[i][di], lake_rows[j][dk]) else {
+                            continue;
+                        };
+                        let l = self.lakes[b * self.lakes_w + a];
+                        if !l.is_nan() {
+                            best = Some(best.map_or(l, |o| o.max(l)));
+                        }
+                    }
+                    if let Some(l) = best.filter(|&l| l > h && l > s) {
+                        (s, k) = (l, kind::LAKE);
+                    }
+                }
+                surface.push(s);
+                kinds.push(k);
+            }
+        }
+    }
+}
