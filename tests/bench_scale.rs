@@ -50,12 +50,17 @@ fn bench_scale_prints_every_figure() {
             "cached_p99_ms",
             "cached_over_one_replica",
             "cached_over_nginx_static",
-            "uncached_requests_per_s",
-            "uncached_p99_ms",
-            "uncached_over_one_replica",
         ] {
             positive(t, key);
         }
+        // An uncached tile may take longer than a one-second run on a loaded machine: the figure
+        // is there, and its ratio is a number or null (no request completed with one replica).
+        let uncached = t["uncached_requests_per_s"]
+            .as_f64()
+            .expect("uncached figure");
+        assert!(uncached >= 0.0, "{t}");
+        let r = &t["uncached_over_one_replica"];
+        assert!(r.is_null() || r.as_f64().is_some_and(|r| r >= 0.0), "{t}");
     }
     assert_eq!(tiles[0]["cached_over_one_replica"], 1.0);
     let ratio =
@@ -73,6 +78,20 @@ fn bench_scale_prints_every_figure() {
         Some(100 * inv["edits"].as_u64().expect("edits"))
     );
     assert_eq!(inv["target_p99_ms"], 100.0);
-    assert!(positive(inv, "p50_ms") <= positive(inv, "p99_ms"));
-    assert!(positive(inv, "p99_ms") <= positive(inv, "max_ms"));
+    // Subscriber i is on replica i mod 3: 66 of the 100 are on the replicas the edits (made on
+    // the first) reach through PostgreSQL.
+    assert_eq!(
+        inv["other_replicas_samples"].as_u64(),
+        Some(66 * inv["edits"].as_u64().expect("edits"))
+    );
+    let ms = |key: &str| {
+        let x = inv[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key} missing: {inv}"));
+        assert!(x >= 0.0 && x.is_finite(), "{key} = {x}");
+        x
+    };
+    assert!(ms("p50_ms") <= ms("p99_ms") && ms("p99_ms") <= ms("max_ms"));
+    assert!(ms("other_replicas_p50_ms") <= ms("other_replicas_p99_ms"));
+    assert!(ms("other_replicas_p99_ms") <= ms("max_ms"));
 }

@@ -2,8 +2,8 @@
 //! one PostgreSQL database (a throwaway cluster, `common::postgres`) and one shared archive
 //! directory; an export started on one replica, which is SIGKILLed mid-job, is taken over by
 //! another once its lease lapses, and its archive, served by every live replica, is byte for
-//! byte the archive of the same export run uninterrupted. Fails, never skips, without
-//! PostgreSQL.
+//! byte the archive of the same export run uninterrupted. The same holds for one server on
+//! SQLite, SIGKILLed and started again. Fails, never skips, without PostgreSQL.
 
 mod common;
 
@@ -166,4 +166,50 @@ async fn an_export_job_survives_the_death_of_its_replica() {
     let mut want = vec![format!("{whole}.tar"), format!("{job}.tar")];
     want.sort();
     assert_eq!(left, want);
+}
+
+/// One server on SQLite, SIGKILLed mid-export and started again on the same data directory:
+/// it takes its own job over once the lease lapses and the archive is the uninterrupted run's.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn an_export_job_survives_a_restart_of_a_single_server() {
+    let data = tempfile::tempdir().expect("tmp");
+    let args = [
+        "--data",
+        data.path().to_str().expect("utf-8"),
+        "--admin-token",
+        ADMIN,
+        "--export-lease",
+        LEASE_S,
+    ];
+    let mut server = common::start(args, &[]);
+    let (world, _) = create_world(&server.addr, ADMIN, 22).await;
+    let spec = json!({"lod": 1, "region": [-4, 0, 4, 6], "products": ["tiles", "scatter"],
+                      "formats": ["bin", "png"]});
+    let whole = start_export(&server.addr, &world, &spec).await;
+    wait_done(&server.addr, &whole).await;
+    let expected = archive(&server.addr, &whole).await;
+
+    let job = start_export(&server.addr, &world, &spec).await;
+    let deadline = Instant::now() + Duration::from_secs(300);
+    let at_kill = loop {
+        let s = status(&server.addr, &job).await;
+        if s["done"].as_u64().expect("done") > 0 {
+            break s;
+        }
+        assert!(Instant::now() < deadline, "no progress: {s}");
+        tokio::time::sleep(Duration::from_millis(10)).await;
+    };
+    server.child.kill().expect("SIGKILL the server");
+    let _ = server.child.wait();
+    assert_eq!(at_kill["status"], "running", "killed mid-job: {at_kill}");
+    assert!(at_kill["done"].as_u64() < at_kill["total"].as_u64());
+
+    let again = common::start(args, &[]);
+    wait_done(&again.addr, &job).await;
+    assert!(
+        archive(&again.addr, &job).await == expected,
+        "the archive redone after the restart differs from the uninterrupted one"
+    );
+    // The first run's archive outlived the restart too.
+    assert!(archive(&again.addr, &whole).await == expected);
 }

@@ -242,11 +242,16 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         ),
     );
 
-    let lat = rt.block_on(invalidation_latency(
-        addr.to_string(),
-        &[addr.to_string()],
-        20,
-    ))?;
+    let mut lat: Vec<f64> = rt
+        .block_on(invalidation_latency(
+            addr.to_string(),
+            &[addr.to_string()],
+            20,
+        ))?
+        .into_iter()
+        .map(|(_, ms)| ms)
+        .collect();
+    lat.sort_by(f64::total_cmp);
     let pct = |p: f64| lat[((lat.len() as f64 - 1.0) * p).round() as usize];
     let (p50, p99, max) = (pct(0.5), pct(0.99), lat[lat.len() - 1]);
     emit(
@@ -262,14 +267,15 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Latencies (ms, sorted) from the acknowledgement of each of `edits` edits made through `addr`
-/// to each of [`SUBSCRIBERS`] subscribers' `invalidate`, the subscribers spread round robin over
-/// `subscribe_at` (replicas of `addr`'s store, or `addr` itself).
+/// Latencies from the acknowledgement of each of `edits` edits made through `addr` to each of
+/// [`SUBSCRIBERS`] subscribers' `invalidate`, the subscribers spread round robin over
+/// `subscribe_at` (replicas of `addr`'s store, or `addr` itself): `(index in subscribe_at,
+/// milliseconds)` per delivery, 0 for one that came before the acknowledgement.
 pub(crate) async fn invalidation_latency(
     addr: String,
     subscribe_at: &[String],
     edits: usize,
-) -> anyhow::Result<Vec<f64>> {
+) -> anyhow::Result<Vec<(usize, f64)>> {
     anyhow::ensure!(!subscribe_at.is_empty(), "no address to subscribe at");
     let (status, body) = http(
         &addr,
@@ -287,10 +293,11 @@ pub(crate) async fn invalidation_latency(
         .context("admin token")?
         .to_string();
     // Subscribers: each holds the one LOD-0 tile under the edits.
-    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(u64, Instant)>();
+    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(usize, u64, Instant)>();
     let mut ready = Vec::new();
     for i in 0..SUBSCRIBERS {
-        let at = &subscribe_at[i % subscribe_at.len().max(1)];
+        let replica = i % subscribe_at.len();
+        let at = &subscribe_at[replica];
         let (mut ws, _) =
             tokio_tungstenite::connect_async(format!("ws://{at}/v1/worlds/{id}/stream")).await?;
         ws.send(Message::Text(
@@ -316,7 +323,8 @@ pub(crate) async fn invalidation_latency(
                             }
                         }
                         Some("invalidate") => {
-                            let _ = tx.send((m["version"].as_u64().unwrap_or(0), Instant::now()));
+                            let version = m["version"].as_u64().unwrap_or(0);
+                            let _ = tx.send((replica, version, Instant::now()));
                         }
                         _ => {}
                     }
@@ -356,18 +364,20 @@ pub(crate) async fn invalidation_latency(
             .context("version")?;
         let mut got = 0;
         while got < SUBSCRIBERS {
-            let (v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
+            let (replica, v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
                 .await
                 .context("invalidation timed out")?
                 .context("subscribers gone")?;
             if v == version {
-                out.push(at.saturating_duration_since(acked).as_secs_f64() * 1e3);
+                out.push((
+                    replica,
+                    at.saturating_duration_since(acked).as_secs_f64() * 1e3,
+                ));
                 got += 1;
             }
         }
         // Let the fresh tiles go out before the next edit.
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
-    out.sort_by(f64::total_cmp);
     Ok(out)
 }

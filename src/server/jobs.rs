@@ -272,6 +272,9 @@ pub struct Jobs {
     jobs: Mutex<HashMap<String, Arc<Job>>>,
     seq: AtomicU64,
     ledger: Option<Ledger>,
+    /// Set when the queue is dropped (the server stopping): the jobs it cancels then are left
+    /// unfinished in the store, for another replica (or this server, restarted) to take over.
+    closing: Arc<AtomicBool>,
 }
 
 fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
@@ -322,6 +325,7 @@ impl Jobs {
             jobs: Mutex::new(HashMap::new()),
             seq: AtomicU64::new(0),
             ledger: None,
+            closing: Arc::new(AtomicBool::new(false)),
         }
     }
 
@@ -668,7 +672,7 @@ impl Jobs {
             self.slots.clone(),
             self.dir.clone(),
             self.threads,
-            self.ledger.clone(),
+            self.ledger.clone().map(|l| (l, self.closing.clone())),
             owner.unwrap_or_else(|| "local".into()),
         ));
     }
@@ -695,6 +699,7 @@ fn evict(jobs: &mut HashMap<String, Arc<Job>>, keep: usize) -> Vec<PathBuf> {
 
 impl Drop for Jobs {
     fn drop(&mut self) {
+        self.closing.store(true, Ordering::SeqCst);
         self.slots.close();
         for job in self.jobs().values() {
             job.cancel();
@@ -703,18 +708,22 @@ impl Drop for Jobs {
 }
 
 /// Waits for a run slot, then writes the archive on the blocking pool; with a ledger, writes
-/// the final state to the store at once.
+/// the final state to the store at once, unless the queue is closing (then the job stays
+/// unfinished there, to be taken over).
 async fn run(
     job: Arc<Job>,
     plan: Arc<WorldPlan>,
     slots: Arc<Semaphore>,
     dir: PathBuf,
     threads: usize,
-    ledger: Option<Ledger>,
+    ledger: Option<(Ledger, Arc<AtomicBool>)>,
     owner: String,
 ) {
     execute(&job, plan, slots, dir, threads, owner).await;
-    if let Some(ledger) = ledger {
+    if let Some((ledger, closing)) = ledger {
+        if closing.load(Ordering::SeqCst) {
+            return;
+        }
         if let Err(e) = ledger.push(&job).await {
             tracing::warn!(job = %job.id, "cannot store the end of the export job: {e}");
         }

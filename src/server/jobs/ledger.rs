@@ -9,6 +9,9 @@
 //! - **Lost lease.** A renewal the store refuses means another replica claimed the job (this
 //!   one stalled for longer than a lease): the local run is cancelled and forgotten, and the
 //!   job is answered from the store.
+//! - **Stopping.** A server that stops (its queue dropped) cancels its jobs without writing
+//!   their end: they stay queued or running in the store and are taken over once their leases
+//!   lapse, by another replica or by the server itself, restarted.
 //! - **Takeover** (`src/server/takeover.rs`): every half lease, a replica claims the stale jobs
 //!   ([`crate::store::SceneStore::claim_job`]) and redoes them from the start: the archive is a
 //!   pure function of world, version and spec, so it is the same bytes as the first owner's.
