@@ -22,7 +22,7 @@ pub struct Nginx {
 impl Drop for Nginx {
     fn drop(&mut self) {
         // `-s stop` makes a master stop its workers (a killed master would orphan them).
-        let _ = Command::new(&self.child_bin())
+        let _ = Command::new(self.child_bin())
             .arg("-p")
             .arg(&self.dir)
             .arg("-c")

@@ -523,7 +523,6 @@ impl Jobs {
     /// Runs again, under this process's ownership, the job `record` another process owned
     /// (already claimed in the store): queued like a new job, but past the budgets, which the
     /// job was admitted under. A job of the same id in this process is replaced.
-    #[allow(clippy::too_many_arguments)]
     pub fn resume(
         &self,
         record: &crate::store::JobRecord,
