@@ -156,6 +156,21 @@ async fn an_export_job_survives_the_death_of_its_replica() {
             bytes == expected,
             "{addr}: the resumed archive differs from the uninterrupted one"
         );
+        // The events of the job, whichever replica ran it (the other reads them from the store).
+        // (An SSE body is chunked: read raw, the chunk sizes left in.)
+        let bearer = format!("Bearer {ADMIN}");
+        let (code, events) = strata::bench::http::http(
+            addr,
+            "GET",
+            &format!("/v1/jobs/{job}/events"),
+            &[("Authorization", &bearer)],
+            "",
+        )
+        .await
+        .expect("events");
+        let events = String::from_utf8_lossy(&events);
+        assert_eq!(code, 200, "{addr}: {events}");
+        assert!(events.contains("event: done"), "{addr}: {events}");
     }
     // The dead replica's partial archive is gone; the two archives remain.
     let mut left: Vec<String> = std::fs::read_dir(&shared)
