@@ -13,96 +13,16 @@ use common::replica::{create_world, next_json, request, session, Ws};
 use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
+use strata::harness::nginx::Nginx;
 use tokio_tungstenite::tungstenite::Message;
 
 const ADMIN: &str = "st_balancer_admin";
 
-/// nginx in the foreground, killed when dropped.
-struct Nginx {
-    child: Child,
-    addr: String,
-}
-
-impl Drop for Nginx {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-fn free_port() -> u16 {
-    std::net::TcpListener::bind("127.0.0.1:0")
-        .and_then(|l| l.local_addr())
-        .expect("a free port")
-        .port()
-}
-
 /// nginx on a free loopback port, proxying HTTP and WebSockets round robin to `upstreams`.
 fn nginx(dir: &Path, upstreams: &[&str]) -> Nginx {
-    let bin = ["/usr/sbin/nginx", "/usr/bin/nginx"]
-        .into_iter()
-        .find(|p| Path::new(p).is_file())
-        .unwrap_or_else(|| {
-            panic!("the balancer tests need nginx: apt-get install nginx-light (.ci/run does)")
-        });
-    let port = free_port();
-    let servers: String = upstreams.iter().map(|u| format!("server {u};\n")).collect();
-    let d = dir.display();
-    let conf = format!(
-        "daemon off;
-master_process off;
-pid {d}/nginx.pid;
-error_log {d}/error.log warn;
-events {{ worker_connections 1024; }}
-http {{
-  access_log off;
-  client_body_temp_path {d}/body;
-  proxy_temp_path {d}/proxy;
-  fastcgi_temp_path {d}/fastcgi;
-  uwsgi_temp_path {d}/uwsgi;
-  scgi_temp_path {d}/scgi;
-  upstream strata {{ {servers} }}
-  map $http_upgrade $connection_upgrade {{ default upgrade; '' close; }}
-  server {{
-    listen 127.0.0.1:{port};
-    location / {{
-      proxy_pass http://strata;
-      proxy_http_version 1.1;
-      proxy_set_header Upgrade $http_upgrade;
-      proxy_set_header Connection $connection_upgrade;
-      proxy_read_timeout 300s;
-    }}
-  }}
-}}
-"
-    );
-    let path = dir.join("nginx.conf");
-    std::fs::write(&path, conf).expect("write nginx.conf");
-    let child = Command::new(bin)
-        .arg("-p")
-        .arg(dir)
-        .arg("-c")
-        .arg(&path)
-        .arg("-e")
-        .arg(dir.join("error.log"))
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("start nginx");
-    let addr = format!("127.0.0.1:{port}");
-    let deadline = Instant::now() + Duration::from_secs(30);
-    while std::net::TcpStream::connect(&addr).is_err() {
-        assert!(
-            Instant::now() < deadline,
-            "nginx does not listen: {}",
-            std::fs::read_to_string(dir.join("error.log")).unwrap_or_default()
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    Nginx { child, addr }
+    strata::harness::nginx::balancer(dir, upstreams)
+        .unwrap_or_else(|e| panic!("the balancer tests: {e:#}"))
 }
 
 /// An HTTP request to `addr` with the server's admin token: the status and the body.

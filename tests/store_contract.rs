@@ -9,8 +9,8 @@ use serde_json::{json, Value};
 use std::sync::Arc;
 use strata::scene::{Dirty, Rect};
 use strata::store::{
-    hash_token, new_world_id, NewWorld, PostgresStore, Role, SceneStore, SqliteStore, StoreError,
-    TokenGrant, SNAPSHOT_EVERY,
+    hash_token, new_world_id, JobRecord, JobUpdate, NewWorld, PostgresStore, Role, SceneStore,
+    SqliteStore, StoreError, TokenGrant, SNAPSHOT_EVERY,
 };
 
 /// Where a contract test's store lives; [`Backend::open`] may be called again to reopen it.
@@ -62,6 +62,8 @@ contract!(
     tokens_and_access,
     missing_worlds_and_duplicate_ids,
     the_edit_log_pages_by_version,
+    export_jobs_are_kept_and_updated_only_by_their_owner,
+    a_stale_export_job_is_claimed_by_exactly_one_replica,
 );
 
 fn patch(v: Value) -> json_patch::Patch {
@@ -364,4 +366,156 @@ async fn the_edit_log_pages_by_version(backend: Backend) {
         .await
         .expect("log")
         .is_empty());
+}
+
+/// A queued job of world `world` owned by `owner` until `lease_until_ms`.
+fn job(id: &str, world: &str, owner: &str, lease_until_ms: i64, created_at: i64) -> JobRecord {
+    JobRecord {
+        id: id.to_string(),
+        world: world.to_string(),
+        version: 1,
+        spec: r#"{"spec":{"lod":0},"shard":{"index":0,"count":1}}"#.to_string(),
+        status: "queued".to_string(),
+        done: 0,
+        total: 12,
+        error: None,
+        reserved: 1 << 40,
+        bytes: 0,
+        owner: owner.to_string(),
+        lease_until_ms,
+        created_at,
+        finished_at: None,
+    }
+}
+
+fn progress(status: &str, done: u64, lease_until_ms: i64) -> JobUpdate {
+    JobUpdate {
+        status: status.to_string(),
+        done,
+        total: 12,
+        error: None,
+        bytes: 0,
+        lease_until_ms,
+        finished_at: None,
+    }
+}
+
+/// A stored job reads back as written (after a reopen), its id is unique, it needs its world,
+/// and only its owner may change it.
+async fn export_jobs_are_kept_and_updated_only_by_their_owner(backend: Backend) {
+    let store = backend.open().await;
+    let w = world(&*store).await;
+    let a = job(&"a1".repeat(16), &w, "owner-a", 5_000, 100);
+    store.insert_job(&a).await.expect("insert");
+    assert_eq!(
+        store.insert_job(&a).await,
+        Err(StoreError::Duplicate(a.id.clone()))
+    );
+    assert_eq!(
+        store
+            .insert_job(&job(&"b2".repeat(16), "nope", "o", 0, 0))
+            .await,
+        Err(StoreError::WorldNotFound("nope".into()))
+    );
+    assert_eq!(store.job(&a.id).await, Ok(Some(a.clone())));
+    assert_eq!(store.job(&"c3".repeat(16)).await, Ok(None));
+
+    // Another owner's write is refused and changes nothing.
+    let running = progress("running", 5, 9_000);
+    assert_eq!(
+        store.update_job(&a.id, "owner-b", &running).await,
+        Ok(false)
+    );
+    assert_eq!(store.job(&a.id).await, Ok(Some(a.clone())));
+    assert_eq!(store.update_job(&a.id, "owner-a", &running).await, Ok(true));
+    let done = JobUpdate {
+        status: "done".into(),
+        done: 12,
+        bytes: 123_456,
+        finished_at: Some(1_700_000_000),
+        ..running
+    };
+    assert_eq!(store.update_job(&a.id, "owner-a", &done).await, Ok(true));
+    let reopened = backend.open().await;
+    let stored = reopened.job(&a.id).await.expect("job").expect("kept");
+    assert_eq!(
+        (
+            stored.status.as_str(),
+            stored.done,
+            stored.bytes,
+            stored.lease_until_ms,
+            stored.finished_at
+        ),
+        ("done", 12, 123_456, 9_000, Some(1_700_000_000))
+    );
+    assert_eq!((stored.reserved, stored.spec), (a.reserved, a.spec));
+    // A finished job is never claimed, however old its lease.
+    assert_eq!(reopened.claim_job("owner-c", i64::MAX, 1).await, Ok(None));
+}
+
+/// Only queued or running jobs whose lease has passed are claimed, oldest first; the claim makes
+/// the job the claimer's, queued from the start, and locks the old owner out; of many replicas
+/// claiming at once, each job goes to exactly one.
+async fn a_stale_export_job_is_claimed_by_exactly_one_replica(backend: Backend) {
+    let store = backend.open().await;
+    let w = world(&*store).await;
+    let old = job(&"01".repeat(16), &w, "dead", 1_000, 10);
+    let young = job(&"02".repeat(16), &w, "dead", 1_000, 20);
+    let live = job(&"03".repeat(16), &w, "alive", 50_000, 5);
+    for j in [&old, &young, &live] {
+        store.insert_job(j).await.expect("insert");
+    }
+    assert_eq!(
+        store
+            .update_job(&old.id, "dead", &progress("running", 7, 1_000))
+            .await,
+        Ok(true)
+    );
+    // Before the leases end, nothing is claimed.
+    assert_eq!(store.claim_job("c", 1_000, 2_000).await, Ok(None));
+
+    // Eight claimers at once, on their own connections: the two stale jobs go to two of them.
+    let mut tasks = Vec::new();
+    for k in 0..8 {
+        let s = backend.open().await;
+        tasks.push(tokio::spawn(async move {
+            s.claim_job(&format!("c{k}"), 2_000, 60_000).await
+        }));
+    }
+    let mut claimed = Vec::new();
+    for t in tasks {
+        if let Some(r) = t.await.expect("task").expect("claim") {
+            claimed.push(r);
+        }
+    }
+    claimed.sort_by_key(|r| r.created_at);
+    assert_eq!(
+        claimed.iter().map(|r| r.id.as_str()).collect::<Vec<_>>(),
+        [old.id.as_str(), young.id.as_str()]
+    );
+    assert_ne!(claimed[0].owner, claimed[1].owner);
+    for r in &claimed {
+        assert_eq!(
+            (r.status.as_str(), r.done, r.lease_until_ms),
+            ("queued", 0, 60_000)
+        );
+    }
+    // The old owner is locked out; the new one writes.
+    assert_eq!(
+        store
+            .update_job(&old.id, "dead", &progress("running", 9, 70_000))
+            .await,
+        Ok(false)
+    );
+    assert_eq!(
+        store
+            .update_job(&old.id, &claimed[0].owner, &progress("running", 1, 70_000))
+            .await,
+        Ok(true)
+    );
+    assert_eq!(store.claim_job("late", 2_000, 60_000).await, Ok(None));
+    assert_eq!(
+        store.job(&live.id).await.expect("job").map(|r| r.owner),
+        Some("alive".into())
+    );
 }

@@ -41,13 +41,16 @@ const TILE_PATH: &str = "/v1/seeds/42/tiles/0/3/-2.bin";
 
 /// What `wrk` reported.
 #[derive(Debug, Clone, Copy)]
-struct WrkFigures {
-    requests_per_s: f64,
-    p50_ms: f64,
-    p99_ms: f64,
+pub(crate) struct WrkFigures {
+    /// Requests per second.
+    pub requests_per_s: f64,
+    /// Median latency, milliseconds.
+    pub p50_ms: f64,
+    /// 99th percentile latency, milliseconds.
+    pub p99_ms: f64,
 }
 
-fn need(tool: &str) -> anyhow::Result<()> {
+pub(crate) fn need(tool: &str) -> anyhow::Result<()> {
     match Command::new(tool)
         .arg("-v")
         .stdout(Stdio::null())
@@ -72,12 +75,12 @@ fn parse_ms(s: &str) -> Option<f64> {
     })
 }
 
-fn wrk(url: &str, seconds: u32) -> anyhow::Result<WrkFigures> {
+pub(crate) fn wrk(url: &str, seconds: u32) -> anyhow::Result<WrkFigures> {
     wrk_with(url, seconds, None)
 }
 
 /// `wrk` with a request script, if any.
-fn wrk_with(
+pub(crate) fn wrk_with(
     url: &str,
     seconds: u32,
     script: Option<&std::path::Path>,
@@ -117,7 +120,13 @@ fn wrk_with(
     Ok(f)
 }
 
-/// A tile key per request, distinct across wrk's threads: every request misses every cache.
+/// A `wrk` script asking for a tile key of seed `seed` per request, distinct across wrk's
+/// threads: every request misses every cache.
+pub(crate) fn uncached_script(seed: u64) -> String {
+    UNCACHED_SCRIPT.replace("/v1/seeds/43/", &format!("/v1/seeds/{seed}/"))
+}
+
+/// [`uncached_script`] of seed 43.
 const UNCACHED_SCRIPT: &str = r#"
 local threads = 0
 function setup(thread)
@@ -175,57 +184,10 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         anyhow::Ok(body)
     })?;
     std::fs::write(&tile_file, &body)?;
-    let nginx_port = {
-        let l = std::net::TcpListener::bind("127.0.0.1:0")?;
-        l.local_addr()?.port()
-    };
-    std::fs::create_dir_all(dir.join("logs"))?;
-    let conf = dir.join("nginx.conf");
-    std::fs::write(
-        &conf,
-        format!(
-            "worker_processes auto;\ndaemon off;\npid {pid};\nerror_log {err} warn;\nevents {{ worker_connections 1024; }}\nhttp {{\n  access_log off;\n  sendfile on;\n  keepalive_requests 100000;\n  server {{\n    listen 127.0.0.1:{nginx_port};\n    root {root};\n    location / {{ etag on; add_header Cache-Control \"public, max-age=31536000, immutable\"; }}\n  }}\n}}\n",
-            pid = dir.join("nginx.pid").display(),
-            err = dir.join("logs/error.log").display(),
-            root = root.display(),
-        ),
-    )?;
-    let mut nginx = Command::new("nginx")
-        .args([
-            "-p",
-            &dir.display().to_string(),
-            "-c",
-            &conf.display().to_string(),
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .context("starting nginx")?;
-    std::thread::sleep(Duration::from_millis(500));
-
+    let nginx = crate::harness::nginx::static_files(&dir, &root)?;
     let ours = wrk(&format!("http://{addr}{TILE_PATH}"), seconds);
-    let theirs = wrk(
-        &format!("http://127.0.0.1:{nginx_port}{TILE_PATH}"),
-        seconds,
-    );
-    // `-s stop` makes the master stop its workers; a killed master would orphan them.
-    let _ = Command::new("nginx")
-        .args([
-            "-p",
-            &dir.display().to_string(),
-            "-c",
-            &conf.display().to_string(),
-            "-s",
-            "stop",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status();
-    if tokio::runtime::Handle::try_current().is_err() {
-        std::thread::sleep(Duration::from_millis(200));
-    }
-    let _ = nginx.kill();
-    let _ = nginx.wait();
+    let theirs = wrk(&format!("http://{}{TILE_PATH}", nginx.addr), seconds);
+    drop(nginx);
     let _ = std::fs::remove_dir_all(&dir);
     let (ours, theirs) = (ours?, theirs?);
     let ratio = ours.requests_per_s / theirs.requests_per_s;
@@ -280,7 +242,16 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         ),
     );
 
-    let lat = rt.block_on(invalidation_latency(addr.to_string(), 20))?;
+    let mut lat: Vec<f64> = rt
+        .block_on(invalidation_latency(
+            addr.to_string(),
+            &[addr.to_string()],
+            20,
+        ))?
+        .into_iter()
+        .map(|(_, ms)| ms)
+        .collect();
+    lat.sort_by(f64::total_cmp);
     let pct = |p: f64| lat[((lat.len() as f64 - 1.0) * p).round() as usize];
     let (p50, p99, max) = (pct(0.5), pct(0.99), lat[lat.len() - 1]);
     emit(
@@ -296,8 +267,16 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Latencies (ms, sorted) from each edit's acknowledgement to each subscriber's `invalidate`.
-async fn invalidation_latency(addr: String, edits: usize) -> anyhow::Result<Vec<f64>> {
+/// Latencies from the acknowledgement of each of `edits` edits made through `addr` to each of
+/// [`SUBSCRIBERS`] subscribers' `invalidate`, the subscribers spread round robin over
+/// `subscribe_at` (replicas of `addr`'s store, or `addr` itself): `(index in subscribe_at,
+/// milliseconds)` per delivery, 0 for one that came before the acknowledgement.
+pub(crate) async fn invalidation_latency(
+    addr: String,
+    subscribe_at: &[String],
+    edits: usize,
+) -> anyhow::Result<Vec<(usize, f64)>> {
+    anyhow::ensure!(!subscribe_at.is_empty(), "no address to subscribe at");
     let (status, body) = http(
         &addr,
         "POST",
@@ -314,11 +293,13 @@ async fn invalidation_latency(addr: String, edits: usize) -> anyhow::Result<Vec<
         .context("admin token")?
         .to_string();
     // Subscribers: each holds the one LOD-0 tile under the edits.
-    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(u64, Instant)>();
+    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(usize, u64, Instant)>();
     let mut ready = Vec::new();
-    for _ in 0..SUBSCRIBERS {
+    for i in 0..SUBSCRIBERS {
+        let replica = i % subscribe_at.len();
+        let at = &subscribe_at[replica];
         let (mut ws, _) =
-            tokio_tungstenite::connect_async(format!("ws://{addr}/v1/worlds/{id}/stream")).await?;
+            tokio_tungstenite::connect_async(format!("ws://{at}/v1/worlds/{id}/stream")).await?;
         ws.send(Message::Text(
             json!({"type":"view","x":32,"z":32,"rings":[0]})
                 .to_string()
@@ -342,7 +323,8 @@ async fn invalidation_latency(addr: String, edits: usize) -> anyhow::Result<Vec<
                             }
                         }
                         Some("invalidate") => {
-                            let _ = tx.send((m["version"].as_u64().unwrap_or(0), Instant::now()));
+                            let version = m["version"].as_u64().unwrap_or(0);
+                            let _ = tx.send((replica, version, Instant::now()));
                         }
                         _ => {}
                     }
@@ -382,18 +364,20 @@ async fn invalidation_latency(addr: String, edits: usize) -> anyhow::Result<Vec<
             .context("version")?;
         let mut got = 0;
         while got < SUBSCRIBERS {
-            let (v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
+            let (replica, v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
                 .await
                 .context("invalidation timed out")?
                 .context("subscribers gone")?;
             if v == version {
-                out.push(at.saturating_duration_since(acked).as_secs_f64() * 1e3);
+                out.push((
+                    replica,
+                    at.saturating_duration_since(acked).as_secs_f64() * 1e3,
+                ));
                 got += 1;
             }
         }
         // Let the fresh tiles go out before the next edit.
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
-    out.sort_by(f64::total_cmp);
     Ok(out)
 }

@@ -72,6 +72,16 @@ pub struct ServeArgs {
     #[arg(long, value_name = "SECONDS", default_value_t = super::jobs::quota::DEFAULT_MAX_AGE_S,
           value_parser = clap::value_parser!(u64).range(1..=10 * 365 * 86_400))]
     pub export_max_age: u64,
+    /// Directory of the export archives, shared by the replicas of one store (a network file
+    /// system or a shared volume) so that any replica serves any archive. Read from
+    /// `STRATA_SHARED_DIR` when not given; default `<data>/exports`.
+    #[arg(long, value_name = "DIR")]
+    pub shared_dir: Option<PathBuf>,
+    /// Seconds an export job's replica may go without renewing its hold on the job before
+    /// another replica of the same store takes the job over and redoes it.
+    #[arg(long, value_name = "SECONDS", default_value_t = super::jobs::ledger::DEFAULT_LEASE_S,
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    pub export_lease: u64,
     /// Expensive requests (export creation, scatter, volume chunks, region PNGs and stats, volume meshes,
     /// tiles not yet cached) each client address and each token may make per minute, in a burst
     /// or spread out; further ones are refused (429 `rate_limited` with `Retry-After`).
@@ -145,6 +155,18 @@ impl ServeArgs {
                 .map(Some)
                 .map_err(|e| anyhow::anyhow!("STRATA_DATABASE_URL: {e}")),
             Err(_) => Ok(None),
+        }
+    }
+
+    /// The export archive directory: `--shared-dir`, else `STRATA_SHARED_DIR` (when set and not
+    /// empty), else `<data>/exports`.
+    pub fn shared_dir(&self) -> PathBuf {
+        if let Some(dir) = &self.shared_dir {
+            return dir.clone();
+        }
+        match std::env::var("STRATA_SHARED_DIR") {
+            Ok(v) if !v.trim().is_empty() => PathBuf::from(v.trim()),
+            _ => self.data.join("exports"),
         }
     }
 

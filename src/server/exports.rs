@@ -22,6 +22,11 @@
 //! `{done, total, download_url}`, `failed` `{done, total, error}` or, for a job whose archive
 //! has expired, `expired` `{done, total}`.
 //!
+//! Replicas ([`super::jobs::ledger`]): the `GET` routes answer for any job of the store, not
+//! only this process's; another replica's job is read from the store (its events polled every
+//! [`REMOTE_POLL`]) and its archive from the shared directory. The disk budgets are counted per
+//! process, over the jobs it runs.
+//!
 //! Disk budgets ([`super::jobs::quota`]): a job whose archive may exceed a budget is 400
 //! `export_too_large` (field `/region`); one that does not fit beside the archives already held
 //! is 429 `export_quota_exceeded` (field: the budget's name, `Retry-After`); an expired job's
@@ -164,7 +169,8 @@ async fn create(
     let edits = view.edits_over(&st, &spec.keys(shard)).await;
     let job = match st
         .jobs
-        .submit_with(&meta.id, version, plan, edits, spec, shard)
+        .submit_shared(&meta.id, version, plan, edits, spec, shard)
+        .await
     {
         Ok(job) => job,
         Err(e @ SubmitError::TooMany { .. }) => {
@@ -204,6 +210,10 @@ async fn create(
             tracing::error!("export job: {e}");
             return Err(AppError::internal("cannot draw a job id"));
         }
+        Err(e @ SubmitError::Store(_)) => {
+            tracing::error!("export job: {e}");
+            return Err(AppError::internal("the export job cannot be stored"));
+        }
     };
     let (status_url, events_url, download_url) = urls(&job.id);
     let p = job.progress();
@@ -242,14 +252,45 @@ fn job_not_found(id: &str) -> AppError {
     .with_field("id")
 }
 
-/// The job `id`, after checking that the caller may read its world.
-async fn find(st: &AppState, headers: &HeaderMap, id: &str) -> Result<Arc<Job>, AppError> {
-    let job = valid_job_id(id)
-        .then(|| st.jobs.get(id))
-        .flatten()
-        .ok_or_else(|| job_not_found(id))?;
+/// The job `id`, after checking that the caller may read its world: this process's, or
+/// another replica's as the store has it (then `true`).
+async fn find(st: &AppState, headers: &HeaderMap, id: &str) -> Result<(Arc<Job>, bool), AppError> {
+    if !valid_job_id(id) {
+        return Err(job_not_found(id));
+    }
+    let found = match (st.jobs.get(id), st.jobs.ledger()) {
+        (Some(job), _) => Some((job, false)),
+        (None, Some(ledger)) => ledger
+            .store
+            .job(id)
+            .await
+            .map_err(store_error)?
+            .and_then(|r| st.jobs.remote(&r))
+            .map(|job| (job, true)),
+        (None, None) => None,
+    };
+    let (job, remote) = found.ok_or_else(|| job_not_found(id))?;
     authorize(st, headers, &job.world, Role::Read).await?;
-    Ok(job)
+    Ok((job, remote))
+}
+
+/// How often the events of another replica's job are read from the store.
+const REMOTE_POLL: std::time::Duration = std::time::Duration::from_millis(250);
+
+/// Publishes the state of another replica's job, read from the store every [`REMOTE_POLL`],
+/// until it ends or nobody follows it.
+async fn poll_remote(st: AppState, job: Arc<Job>) {
+    let Some(ledger) = st.jobs.ledger().cloned() else {
+        return;
+    };
+    while !job.progress().status.is_finished() && job.followers() > 0 {
+        tokio::time::sleep(REMOTE_POLL).await;
+        match ledger.store.job(&job.id).await {
+            Ok(Some(r)) => job.publish(super::jobs::ledger::progress_of(&r)),
+            Ok(None) => return,
+            Err(e) => tracing::warn!(job = %job.id, "cannot read the export job: {e}"),
+        }
+    }
 }
 
 /// `GET /v1/jobs/{job}`.
@@ -258,7 +299,7 @@ async fn status(
     Path(id): Path<String>,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let job = find(&st, &headers, &id).await?;
+    let (job, _) = find(&st, &headers, &id).await?;
     let p = job.progress();
     let mut doc = json!({
         "id": job.id,
@@ -356,9 +397,13 @@ async fn events(
     Path(id): Path<String>,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let job = find(&st, &headers, &id).await?;
+    let (job, remote) = find(&st, &headers, &id).await?;
+    let rx = job.subscribe();
+    if remote {
+        tokio::spawn(poll_remote(st.clone(), job.clone()));
+    }
     let follow = Follow {
-        rx: job.subscribe(),
+        rx,
         job,
         last: None,
         pending: VecDeque::new(),
@@ -380,7 +425,7 @@ async fn archive(
     Path(id): Path<String>,
     headers: HeaderMap,
 ) -> Result<Response, AppError> {
-    let job = find(&st, &headers, &id).await?;
+    let (job, _) = find(&st, &headers, &id).await?;
     let p = job.progress();
     let Some(path) = job.archive().map(|p| p.to_path_buf()) else {
         return Err(match p.status {

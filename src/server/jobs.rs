@@ -10,8 +10,13 @@
 //! Limits ([`JobLimits`]): at most [`MAX_RUNNING_JOBS`] jobs run at once; at most
 //! [`MAX_QUEUED_JOBS`] wait, and a job beyond that is refused ([`SubmitError::TooMany`]); the
 //! newest [`MAX_FINISHED_JOBS`] finished jobs are kept, and admitting a job forgets the oldest
-//! finished ones beyond that and deletes their archives. Jobs live in memory: they do not
-//! survive a restart ([`Jobs::sweep`] deletes the archives a previous process left).
+//! finished ones beyond that and deletes their archives.
+//!
+//! Shared state ([`ledger`]): with a [`Ledger`] (what `strata serve` sets up), each job's state
+//! is also kept in the scene store and its archive in the shared archive directory, so every
+//! replica on the same store answers for it, and one whose replica died (or restarted) is redone
+//! by another ([`Jobs::resume`]) with the same bytes. Without one (tests of the queue), jobs live
+//! in memory only. [`Jobs::sweep`] deletes the archives and partial archives no job needs.
 //!
 //! Disk budgets ([`quota`]): a job is admitted only if the upper bound of its archive fits the
 //! world's and the server's budgets beside the archives already queued, running and stored, and
@@ -31,7 +36,9 @@ use std::sync::{Arc, Mutex, MutexGuard, OnceLock};
 use std::time::{Duration, Instant};
 use tokio::sync::{watch, Semaphore};
 
+pub mod ledger;
 pub mod quota;
+pub use ledger::Ledger;
 pub use quota::Budget;
 
 /// Export jobs running at once (each on `cores / MAX_RUNNING_JOBS` threads, at least one).
@@ -143,6 +150,10 @@ pub struct Job {
     stored: AtomicU64,
     /// When the job was done.
     finished: OnceLock<Instant>,
+    /// When the job was done or failed, seconds since the Unix epoch.
+    finished_unix: OnceLock<i64>,
+    /// The status last written to the [`Ledger`].
+    synced: Mutex<Option<Status>>,
     seq: u64,
     path: PathBuf,
     state: watch::Sender<Progress>,
@@ -167,6 +178,20 @@ impl Job {
         (self.state.borrow().status == Status::Done).then_some(self.path.as_path())
     }
 
+    /// How many receivers of its state changes there are.
+    pub fn followers(&self) -> usize {
+        self.state.receiver_count()
+    }
+
+    /// Replaces the published state (a job another replica runs, as read from the store).
+    pub(crate) fn publish(&self, progress: Progress) {
+        self.state.send_if_modified(|p| {
+            let changed = *p != progress;
+            *p = progress;
+            changed
+        });
+    }
+
     /// Asks the job to stop: a queued job fails before it runs, a running one at its next write.
     pub fn cancel(&self) {
         self.cancel.store(true, Ordering::Relaxed);
@@ -179,6 +204,7 @@ impl Job {
     fn fail(&self, error: impl Into<String>) {
         let error = error.into();
         tracing::warn!(job = %self.id, world = %self.world, "export failed: {error}");
+        let _ = self.finished_unix.set(unix_now());
         self.state.send_modify(|p| {
             p.status = Status::Failed;
             p.error = Some(error);
@@ -232,6 +258,9 @@ pub enum SubmitError {
     /// No job id could be drawn.
     #[error("the OS random source failed: {0}")]
     Random(String),
+    /// The job could not be stored ([`Jobs::submit_shared`]).
+    #[error("the export job cannot be stored: {0}")]
+    Store(String),
 }
 
 /// The export jobs of a server.
@@ -242,6 +271,19 @@ pub struct Jobs {
     slots: Arc<Semaphore>,
     jobs: Mutex<HashMap<String, Arc<Job>>>,
     seq: AtomicU64,
+    ledger: Option<Ledger>,
+    /// Set when the queue is dropped (the server stopping): the jobs it cancels then are left
+    /// unfinished in the store, for another replica (or this server, restarted) to take over.
+    closing: Arc<AtomicBool>,
+}
+
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// Seconds since the Unix epoch.
+fn unix_now() -> i64 {
+    crate::store::now_ms() / 1000
 }
 
 impl std::fmt::Debug for Jobs {
@@ -282,7 +324,34 @@ impl Jobs {
             slots: Arc::new(Semaphore::new(limits.max_running)),
             jobs: Mutex::new(HashMap::new()),
             seq: AtomicU64::new(0),
+            ledger: None,
+            closing: Arc::new(AtomicBool::new(false)),
         }
+    }
+
+    /// Keeps the jobs' state in `ledger`'s store too (see [`ledger`]). Call it before the first
+    /// job, then [`Jobs::start_renewing`] once the queue is in its `Arc`.
+    pub fn with_ledger(mut self, ledger: Ledger) -> Self {
+        self.ledger = Some(ledger);
+        self
+    }
+
+    /// Starts renewing the leases of this queue's jobs ([`ledger::renew`]) until it is dropped.
+    /// Needs a tokio runtime; does nothing without a ledger.
+    pub fn start_renewing(self: &Arc<Self>) {
+        if self.ledger.is_some() {
+            tokio::spawn(ledger::renew(Arc::downgrade(self)));
+        }
+    }
+
+    /// The ledger, if the jobs' state is kept in the store.
+    pub fn ledger(&self) -> Option<&Ledger> {
+        self.ledger.as_ref()
+    }
+
+    /// Forgets job `id` (its archive stays).
+    fn forget(&self, id: &str) {
+        self.jobs().remove(id);
     }
 
     /// The archive directory.
@@ -296,7 +365,7 @@ impl Jobs {
     }
 
     fn jobs(&self) -> MutexGuard<'_, HashMap<String, Arc<Job>>> {
-        self.jobs.lock().unwrap_or_else(|p| p.into_inner())
+        lock(&self.jobs)
     }
 
     /// The job `id`, if it is known (expiring old archives first).
@@ -353,9 +422,11 @@ impl Jobs {
         c
     }
 
-    /// Deletes the archives (`<32 hex>.tar` and `.tar.part`) in the directory that no job of
-    /// this process owns: those a previous process left behind. Blocking file I/O.
-    pub fn sweep(&self) -> io::Result<usize> {
+    /// Deletes the archives (`<32 hex>.tar`) and partial archives (`<32 hex>.<owner>.part`) in
+    /// the directory that no job needs: those of no job of this process and, with a ledger, of
+    /// no job the store has done (archives) or unfinished (partial archives). Run at start, it
+    /// deletes what a previous process left behind and keeps what other replicas share.
+    pub async fn sweep(&self) -> io::Result<usize> {
         let entries = match std::fs::read_dir(&self.dir) {
             Ok(e) => e,
             Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(0),
@@ -366,13 +437,31 @@ impl Jobs {
             let entry = entry?;
             let name = entry.file_name();
             let Some(name) = name.to_str() else { continue };
-            let stem = name
-                .strip_suffix(".tar.part")
-                .or_else(|| name.strip_suffix(".tar"));
-            if stem.is_some_and(|s| valid_job_id(s) && self.get(s).is_none()) {
-                std::fs::remove_file(entry.path())?;
-                removed += 1;
+            let (stem, part) = match (name.strip_suffix(".tar"), name.strip_suffix(".part")) {
+                (Some(stem), _) => (stem, false),
+                (None, Some(rest)) => (rest.split('.').next().unwrap_or(""), true),
+                (None, None) => continue,
+            };
+            if !valid_job_id(stem) || self.get(stem).is_some() {
+                continue;
             }
+            if let Some(ledger) = &self.ledger {
+                let status = match ledger.store.job(stem).await {
+                    Ok(r) => r.map(|r| ledger::parse_status(&r.status)),
+                    // Unknown: keep it rather than delete another replica's archive.
+                    Err(_) => continue,
+                };
+                let needed = match status {
+                    Some(Status::Done) => !part,
+                    Some(Status::Queued | Status::Running) => part,
+                    _ => false,
+                };
+                if needed {
+                    continue;
+                }
+            }
+            std::fs::remove_file(entry.path())?;
+            removed += 1;
         }
         Ok(removed)
     }
@@ -400,8 +489,114 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
+        let job = self.admit(world, version, &plan, edits, spec, shard)?;
+        self.start(job.clone(), plan);
+        Ok(job)
+    }
+
+    /// [`Jobs::submit_with`] that, with a ledger, stores the job before it starts, so that every
+    /// replica knows it once this returns.
+    ///
+    /// # Errors
+    /// What [`Jobs::submit_with`] refuses, or the store's failure (the job is then forgotten).
+    pub async fn submit_shared(
+        &self,
+        world: &str,
+        version: u64,
+        plan: Arc<WorldPlan>,
+        edits: crate::edits::TileEdits,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Result<Arc<Job>, SubmitError> {
+        let job = self.admit(world, version, &plan, edits, spec, shard)?;
+        if let Some(ledger) = &self.ledger {
+            if let Err(e) = ledger.store.insert_job(&ledger.record(&job)).await {
+                self.forget(&job.id);
+                return Err(SubmitError::Store(e.to_string()));
+            }
+            *lock(&job.synced) = Some(Status::Queued);
+        }
+        self.start(job.clone(), plan);
+        Ok(job)
+    }
+
+    /// Runs again, under this process's ownership, the job `record` another process owned
+    /// (already claimed in the store): queued like a new job, but past the budgets, which the
+    /// job was admitted under. A job of the same id in this process is replaced.
+    pub fn resume(
+        &self,
+        record: &crate::store::JobRecord,
+        plan: Arc<WorldPlan>,
+        edits: crate::edits::TileEdits,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Arc<Job> {
         let total = spec.keys(shard).len();
-        let reserved = export::size::archive_bound(&plan, &spec, shard);
+        let job = Arc::new(Job {
+            path: self.dir.join(format!("{}.tar", record.id)),
+            id: record.id.clone(),
+            world: record.world.clone(),
+            version: record.version,
+            spec,
+            shard,
+            edits,
+            reserved: record.reserved,
+            stored: AtomicU64::new(0),
+            finished: OnceLock::new(),
+            finished_unix: OnceLock::new(),
+            synced: Mutex::new(Some(Status::Queued)),
+            seq: self.seq.fetch_add(1, Ordering::Relaxed),
+            state: watch::Sender::new(Progress {
+                status: Status::Queued,
+                done: 0,
+                total,
+                error: None,
+            }),
+            cancel: AtomicBool::new(false),
+        });
+        if let Some(old) = self.jobs().insert(job.id.clone(), job.clone()) {
+            old.cancel();
+        }
+        tracing::info!(job = %job.id, world = %job.world, "export job taken over");
+        self.start(job.clone(), plan);
+        job
+    }
+
+    /// A job of another replica, as the store has it ([`ledger::progress_of`]): not run here,
+    /// its archive read from the shared directory once done. `None` if its spec is unreadable.
+    pub fn remote(&self, record: &crate::store::JobRecord) -> Option<Arc<Job>> {
+        let stored = ledger::StoredSpec::parse(&record.spec).ok()?;
+        Some(Arc::new(Job {
+            path: self.dir.join(format!("{}.tar", record.id)),
+            id: record.id.clone(),
+            world: record.world.clone(),
+            version: record.version,
+            spec: stored.spec,
+            shard: stored.shard,
+            edits: Default::default(),
+            reserved: record.reserved,
+            stored: AtomicU64::new(record.bytes),
+            finished: OnceLock::new(),
+            finished_unix: OnceLock::new(),
+            synced: Mutex::new(None),
+            seq: 0,
+            state: watch::Sender::new(ledger::progress_of(record)),
+            cancel: AtomicBool::new(false),
+        }))
+    }
+
+    /// Admits a job without starting it.
+    fn admit(
+        &self,
+        world: &str,
+        version: u64,
+        plan: &WorldPlan,
+        edits: crate::edits::TileEdits,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Result<Arc<Job>, SubmitError> {
+        let total = spec.keys(shard).len();
+        let reserved = export::size::archive_bound(plan, &spec, shard);
         self.expire();
         let evicted = {
             let mut jobs = self.jobs();
@@ -433,6 +628,8 @@ impl Jobs {
                 reserved,
                 stored: AtomicU64::new(0),
                 finished: OnceLock::new(),
+                finished_unix: OnceLock::new(),
+                synced: Mutex::new(None),
                 seq: self.seq.fetch_add(1, Ordering::Relaxed),
                 state: watch::Sender::new(Progress {
                     status: Status::Queued,
@@ -462,14 +659,21 @@ impl Jobs {
             job = %job.id, world, version, tiles = total,
             shard = format!("{}/{}", shard.index + 1, shard.count), "export job queued"
         );
+        Ok(job)
+    }
+
+    /// Starts an admitted job in the background. Needs a tokio runtime.
+    fn start(&self, job: Arc<Job>, plan: Arc<WorldPlan>) {
+        let owner = self.ledger.as_ref().map(|l| l.owner.clone());
         tokio::spawn(run(
-            job.clone(),
+            job,
             plan,
             self.slots.clone(),
             self.dir.clone(),
             self.threads,
+            self.ledger.clone().map(|l| (l, self.closing.clone())),
+            owner.unwrap_or_else(|| "local".into()),
         ));
-        Ok(job)
     }
 }
 
@@ -494,6 +698,7 @@ fn evict(jobs: &mut HashMap<String, Arc<Job>>, keep: usize) -> Vec<PathBuf> {
 
 impl Drop for Jobs {
     fn drop(&mut self) {
+        self.closing.store(true, Ordering::SeqCst);
         self.slots.close();
         for job in self.jobs().values() {
             job.cancel();
@@ -501,13 +706,36 @@ impl Drop for Jobs {
     }
 }
 
-/// Waits for a run slot, then writes the archive on the blocking pool.
+/// Waits for a run slot, then writes the archive on the blocking pool; with a ledger, writes
+/// the final state to the store at once, unless the queue is closing (then the job stays
+/// unfinished there, to be taken over).
 async fn run(
     job: Arc<Job>,
     plan: Arc<WorldPlan>,
     slots: Arc<Semaphore>,
     dir: PathBuf,
     threads: usize,
+    ledger: Option<(Ledger, Arc<AtomicBool>)>,
+    owner: String,
+) {
+    execute(&job, plan, slots, dir, threads, owner).await;
+    if let Some((ledger, closing)) = ledger {
+        if closing.load(Ordering::SeqCst) {
+            return;
+        }
+        if let Err(e) = ledger.push(&job).await {
+            tracing::warn!(job = %job.id, "cannot store the end of the export job: {e}");
+        }
+    }
+}
+
+async fn execute(
+    job: &Arc<Job>,
+    plan: Arc<WorldPlan>,
+    slots: Arc<Semaphore>,
+    dir: PathBuf,
+    threads: usize,
+    owner: String,
 ) {
     let Ok(_permit) = slots.acquire_owned().await else {
         job.fail("the server is shutting down");
@@ -520,7 +748,7 @@ async fn run(
     job.state.send_modify(|p| p.status = Status::Running);
     let started = Instant::now();
     let j = job.clone();
-    let result = tokio::task::spawn_blocking(move || write(&j, &plan, &dir, threads)).await;
+    let result = tokio::task::spawn_blocking(move || write(&j, &plan, &dir, threads, &owner)).await;
     match result {
         Ok(Ok(bytes)) => {
             tracing::info!(
@@ -529,6 +757,7 @@ async fn run(
             );
             job.stored.store(bytes, Ordering::Relaxed);
             let _ = job.finished.set(Instant::now());
+            let _ = job.finished_unix.set(unix_now());
             job.state.send_modify(|p| {
                 p.status = Status::Done;
                 p.done = p.total;
@@ -537,6 +766,18 @@ async fn run(
         Ok(Err(e)) => job.fail(format!("{e:#}")),
         Err(e) if e.is_panic() => job.fail(format!("the export panicked: {e}")),
         Err(_) => job.fail("cancelled: the server is shutting down"),
+    }
+}
+
+/// Deletes the partial archives of job `id` that replicas which ran it before left behind.
+fn remove_parts(dir: &Path, id: &str) {
+    let prefix = format!("{id}.");
+    for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        if name.starts_with(&prefix) && name.ends_with(".part") {
+            let _ = std::fs::remove_file(entry.path());
+        }
     }
 }
 
@@ -559,11 +800,18 @@ impl<W: Write> Write for Cancellable<'_, W> {
     }
 }
 
-/// Writes the job's archive; its size in bytes.
-fn write(job: &Job, plan: &WorldPlan, dir: &Path, threads: usize) -> anyhow::Result<u64> {
+/// Writes the job's archive to `<id>.<owner>.part`, then renames it `<id>.tar`; its size in
+/// bytes. Replicas redoing a job each write their own partial archive, and the same bytes.
+fn write(
+    job: &Job,
+    plan: &WorldPlan,
+    dir: &Path,
+    threads: usize,
+    owner: &str,
+) -> anyhow::Result<u64> {
     use anyhow::Context;
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let part = job.path.with_extension("tar.part");
+    let part = dir.join(format!("{}.{owner}.part", job.id));
     let attempt = || -> anyhow::Result<u64> {
         let file =
             std::fs::File::create(&part).with_context(|| format!("creating {}", part.display()))?;
@@ -596,6 +844,7 @@ fn write(job: &Job, plan: &WorldPlan, dir: &Path, threads: usize) -> anyhow::Res
         let bytes = file.metadata()?.len();
         std::fs::rename(&part, &job.path)
             .with_context(|| format!("renaming {}", part.display()))?;
+        remove_parts(dir, &job.id);
         Ok(bytes)
     };
     let result = attempt();

@@ -55,6 +55,7 @@ pub mod route_table;
 pub mod routes;
 pub mod solved;
 pub mod stream_routes;
+mod takeover;
 pub mod view;
 pub mod volume_routes;
 pub mod volumes;
@@ -206,6 +207,17 @@ impl AppState {
     /// queue, so call it before serving.
     pub fn with_job_limits(mut self, limits: jobs::JobLimits) -> Self {
         self.jobs = Arc::new(jobs::Jobs::new(self.jobs.dir().to_path_buf(), limits));
+        self
+    }
+
+    /// Keeps the export jobs' state in `ledger`'s store ([`jobs::ledger`]), so that replicas
+    /// sharing the store and the archive directory answer for each other's jobs and take over
+    /// those of a replica that died. Replaces the job queue, so call it after
+    /// [`AppState::with_jobs_dir`] and [`AppState::with_job_limits`], before serving.
+    pub fn with_job_ledger(mut self, ledger: jobs::Ledger) -> Self {
+        self.jobs = Arc::new(
+            jobs::Jobs::new(self.jobs.dir().to_path_buf(), self.jobs.limits()).with_ledger(ledger),
+        );
         self
     }
 
@@ -573,15 +585,19 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         bodies_mb = budget.bodies >> 20,
         "cache memory budget"
     );
+    let ledger = jobs::Ledger::new(store.clone(), Duration::from_secs(args.export_lease))
+        .map_err(|e| anyhow::anyhow!("export jobs: {e}"))?;
     let mut state = AppState::with_limits(compute, limits)
         .with_memory_budget(budget)
         .with_worlds(store, admin.as_ref().map(access::Secret::expose))
         .with_job_limits(args.job_limits())
-        .with_jobs_dir(args.data.join("exports"))
-        .with_rate_limit(args.rate_limit);
-    match state.jobs.sweep() {
+        .with_jobs_dir(args.shared_dir())
+        .with_job_ledger(ledger);
+    state = state.with_rate_limit(args.rate_limit);
+    tracing::info!(dir = %state.jobs.dir().display(), "export archives");
+    match state.jobs.sweep().await {
         Ok(0) => {}
-        Ok(n) => tracing::info!("deleted {n} export archives of a previous run"),
+        Ok(n) => tracing::info!("deleted {n} export archives no job needs"),
         Err(e) => tracing::warn!("cannot sweep {}: {e}", state.jobs.dir().display()),
     }
     if let Some(dir) = &args.cache_dir {
@@ -623,6 +639,8 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         tokio::spawn(replicas::follow(feed, state.worlds.clone()));
     }
     tokio::spawn(expire_archives(state.jobs.clone()));
+    state.jobs.start_renewing();
+    tokio::spawn(takeover::run(state.clone()));
     let listener = tokio::net::TcpListener::bind(args.addr).await?;
     tracing::info!("listening on http://{}", listener.local_addr()?);
     let sessions = state.sessions.clone();

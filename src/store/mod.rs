@@ -21,10 +21,16 @@
 //!   latest scene is also kept whole.
 //! - **Tokens** are stored as `blake3(token)` only ([`hash_token`]); tokens are 32 random bytes
 //!   from the OS, so an unsalted fast hash is enough (no dictionary to attack).
+//! - **Export jobs** ([`jobs`]): a job row is changed only by the replica holding its lease
+//!   ([`SceneStore::update_job`]); a row whose lease has passed while queued or running is
+//!   claimed by exactly one caller of [`SceneStore::claim_job`].
 
+pub mod jobs;
 mod postgres;
 mod shared;
 mod sqlite;
+
+pub use jobs::{now_ms, JobRecord, JobUpdate};
 
 pub use postgres::notify::{FeedEvent, RemoteEdit};
 pub use postgres::{is_postgres_url, PostgresStore, POOL_SIZE};
@@ -273,6 +279,32 @@ pub trait SceneStore: Send + Sync + std::fmt::Debug {
 
     /// All worlds, oldest first.
     async fn list_worlds(&self) -> Result<Vec<WorldMeta>, StoreError>;
+
+    /// Stores a new export job; [`StoreError::Duplicate`] if its id is taken,
+    /// [`StoreError::WorldNotFound`] without its world.
+    async fn insert_job(&self, job: &JobRecord) -> Result<(), StoreError>;
+
+    /// The export job `id`, if it is known.
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError>;
+
+    /// Writes `update` to job `id` if `owner` still owns it; whether it did (`false`: another
+    /// replica claimed it, or there is no such job).
+    async fn update_job(
+        &self,
+        id: &str,
+        owner: &str,
+        update: &JobUpdate,
+    ) -> Result<bool, StoreError>;
+
+    /// Takes over the oldest queued or running job whose lease ended before `now_ms`: it becomes
+    /// `owner`'s until `lease_until_ms`, `queued` with no tile written, and is returned. At most
+    /// one of any number of concurrent callers gets a given job.
+    async fn claim_job(
+        &self,
+        owner: &str,
+        now_ms: i64,
+        lease_until_ms: i64,
+    ) -> Result<Option<JobRecord>, StoreError>;
 }
 
 /// Validates a new world's scene document, cost limits included ([`Scene::check_costs`]), and

@@ -15,15 +15,17 @@
 //! - **Connections** come from a pool of [`POOL_SIZE`]; the connection is plain TCP or a Unix
 //!   socket (no TLS: a URL with `sslmode=require` is refused at connect).
 //! - **Replicas.** Each edit's transaction also sends a `NOTIFY` ([`notify`]), delivered at its
-//!   commit; [`PostgresStore::follow_edits`] listens for the other replicas' edits.
+//!   commit; [`PostgresStore::follow_edits`] listens for the other replicas' edits. Export jobs
+//!   live in `export_jobs` ([`jobs`]), claimed with `SELECT … FOR UPDATE SKIP LOCKED`.
 
+mod jobs;
 mod migrate;
 pub mod notify;
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, scene_text, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
-    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
+    canonical_scene, scene_text, EditApplied, EditRecord, JobRecord, JobUpdate, NewWorld, Role,
+    SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use deadpool_postgres::{GenericClient, Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
@@ -456,5 +458,31 @@ impl SceneStore for PostgresStore {
             .await
             .map_err(db)?;
         Ok(rows.iter().map(meta_row).collect())
+    }
+
+    async fn insert_job(&self, job: &JobRecord) -> Result<(), StoreError> {
+        jobs::insert(&self.client().await?, job).await
+    }
+
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError> {
+        jobs::get(&self.client().await?, id).await
+    }
+
+    async fn update_job(
+        &self,
+        id: &str,
+        owner: &str,
+        update: &JobUpdate,
+    ) -> Result<bool, StoreError> {
+        jobs::update(&self.client().await?, id, owner, update).await
+    }
+
+    async fn claim_job(
+        &self,
+        owner: &str,
+        now_ms: i64,
+        lease_until_ms: i64,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        jobs::claim(&self.client().await?, owner, now_ms, lease_until_ms).await
     }
 }

@@ -22,12 +22,16 @@
 //! snapshots (world_id, version, scene TEXT; PK (world_id, version))  -- v1 and every 32nd
 //! tokens    (hash BLOB PK  -- blake3(token)
 //!            , world_id, role TEXT, created_at)
+//! export_jobs (id TEXT PK, world_id, version, spec TEXT, status TEXT, done, total, error,
+//!            reserved, bytes, owner TEXT, lease_until_ms, created_at, finished_at)  -- v2
 //! ```
+//!
+//! Version 2 added `export_jobs` ([`super::jobs`]); a version 1 file is migrated when opened.
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, scene_text, EditApplied, EditRecord, NewWorld, Role, SceneStore, StoreError,
-    TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
+    canonical_scene, scene_text, EditApplied, EditRecord, JobRecord, JobUpdate, NewWorld, Role,
+    SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
@@ -68,8 +72,34 @@ CREATE TABLE IF NOT EXISTS tokens (
     role TEXT NOT NULL CHECK (role IN ('read', 'edit', 'admin')),
     created_at INTEGER NOT NULL
 ) STRICT, WITHOUT ROWID;
-PRAGMA user_version = 1;
 ";
+
+/// Migration to schema version 2: export jobs (the PostgreSQL store's
+/// `migrations/postgres/0002_export_jobs.sql`).
+const MIGRATION_2: &str = "
+CREATE TABLE IF NOT EXISTS export_jobs (
+    id TEXT PRIMARY KEY,
+    world_id TEXT NOT NULL REFERENCES worlds(id),
+    version INTEGER NOT NULL,
+    spec TEXT NOT NULL,
+    status TEXT NOT NULL CHECK (status IN ('queued', 'running', 'done', 'failed', 'expired')),
+    done INTEGER NOT NULL,
+    total INTEGER NOT NULL,
+    error TEXT,
+    reserved INTEGER NOT NULL,
+    bytes INTEGER NOT NULL,
+    owner TEXT NOT NULL,
+    lease_until_ms INTEGER NOT NULL,
+    created_at INTEGER NOT NULL,
+    finished_at INTEGER
+) STRICT, WITHOUT ROWID;
+CREATE INDEX IF NOT EXISTS export_jobs_unfinished ON export_jobs (lease_until_ms, created_at, id)
+    WHERE status IN ('queued', 'running');
+PRAGMA user_version = 2;
+";
+
+/// The schema version this build writes.
+const SCHEMA_VERSION: i64 = 2;
 
 /// The SQLite [`SceneStore`]; cheap to clone.
 #[derive(Clone)]
@@ -137,12 +167,13 @@ impl SqliteStore {
         let version: i64 = conn
             .query_row("PRAGMA user_version", [], |r| r.get(0))
             .map_err(backend)?;
-        if version > 1 {
+        if version > SCHEMA_VERSION {
             return Err(StoreError::Backend(format!(
-                "the database has schema version {version}; this build knows 1"
+                "the database has schema version {version}; this build knows {SCHEMA_VERSION}"
             )));
         }
-        conn.execute_batch(SCHEMA).map_err(backend)?;
+        conn.execute_batch(&format!("BEGIN IMMEDIATE; {SCHEMA} {MIGRATION_2} COMMIT;"))
+            .map_err(backend)?;
         Ok(Self {
             inner: Arc::new(Inner {
                 path,
@@ -492,4 +523,146 @@ impl SceneStore for SqliteStore {
         })
         .await
     }
+
+    async fn insert_job(&self, job: &JobRecord) -> Result<(), StoreError> {
+        let job = job.clone();
+        self.write(move |tx| {
+            load_meta(tx, &job.world)?;
+            let inserted = tx
+                .execute(
+                    &format!(
+                        "INSERT INTO export_jobs ({JOB_COLUMNS}) VALUES
+                         (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14)
+                         ON CONFLICT (id) DO NOTHING"
+                    ),
+                    params![
+                        job.id,
+                        job.world,
+                        job.version as i64,
+                        job.spec,
+                        job.status,
+                        job.done as i64,
+                        job.total as i64,
+                        job.error,
+                        job.reserved as i64,
+                        job.bytes as i64,
+                        job.owner,
+                        job.lease_until_ms,
+                        job.created_at,
+                        job.finished_at,
+                    ],
+                )
+                .map_err(backend)?;
+            if inserted == 0 {
+                return Err(StoreError::Duplicate(job.id));
+            }
+            Ok(())
+        })
+        .await
+    }
+
+    async fn job(&self, id: &str) -> Result<Option<JobRecord>, StoreError> {
+        let id = id.to_string();
+        self.read(move |c| {
+            c.query_row(
+                &format!("SELECT {JOB_COLUMNS} FROM export_jobs WHERE id = ?1"),
+                params![id],
+                job_row,
+            )
+            .optional()
+            .map_err(backend)
+        })
+        .await
+    }
+
+    async fn update_job(
+        &self,
+        id: &str,
+        owner: &str,
+        update: &JobUpdate,
+    ) -> Result<bool, StoreError> {
+        let (id, owner, u) = (id.to_string(), owner.to_string(), update.clone());
+        self.write(move |tx| {
+            let n = tx
+                .execute(
+                    "UPDATE export_jobs SET status = ?3, done = ?4, total = ?5, error = ?6,
+                     bytes = ?7, lease_until_ms = ?8, finished_at = ?9
+                     WHERE id = ?1 AND owner = ?2",
+                    params![
+                        id,
+                        owner,
+                        u.status,
+                        u.done as i64,
+                        u.total as i64,
+                        u.error,
+                        u.bytes as i64,
+                        u.lease_until_ms,
+                        u.finished_at,
+                    ],
+                )
+                .map_err(backend)?;
+            Ok(n == 1)
+        })
+        .await
+    }
+
+    async fn claim_job(
+        &self,
+        owner: &str,
+        now_ms: i64,
+        lease_until_ms: i64,
+    ) -> Result<Option<JobRecord>, StoreError> {
+        let owner = owner.to_string();
+        // One writer: the select and the update below are one transaction no other writer
+        // interleaves with.
+        self.write(move |tx| {
+            let id: Option<String> = tx
+                .query_row(
+                    "SELECT id FROM export_jobs
+                     WHERE status IN ('queued', 'running') AND lease_until_ms < ?1
+                     ORDER BY created_at, id LIMIT 1",
+                    params![now_ms],
+                    |r| r.get(0),
+                )
+                .optional()
+                .map_err(backend)?;
+            let Some(id) = id else { return Ok(None) };
+            tx.execute(
+                "UPDATE export_jobs SET owner = ?2, lease_until_ms = ?3, status = 'queued',
+                 done = 0 WHERE id = ?1",
+                params![id, owner, lease_until_ms],
+            )
+            .map_err(backend)?;
+            tx.query_row(
+                &format!("SELECT {JOB_COLUMNS} FROM export_jobs WHERE id = ?1"),
+                params![id],
+                job_row,
+            )
+            .map(Some)
+            .map_err(backend)
+        })
+        .await
+    }
+}
+
+const JOB_COLUMNS: &str = "id, world_id, version, spec, status, done, total, error, reserved, \
+                           bytes, owner, lease_until_ms, created_at, finished_at";
+
+fn job_row(r: &rusqlite::Row<'_>) -> rusqlite::Result<JobRecord> {
+    Ok(JobRecord {
+        id: r.get(0)?,
+        world: r.get(1)?,
+        version: r.get::<_, i64>(2)? as u64,
+        spec: r.get(3)?,
+        status: r.get(4)?,
+        done: r.get::<_, i64>(5)? as u64,
+        total: r.get::<_, i64>(6)? as u64,
+        error: r.get(7)?,
+        reserved: r.get::<_, i64>(8)? as u64,
+        bytes: r.get::<_, i64>(9)? as u64,
+        owner: r.get(10)?,
+        lease_until_ms: r.get(11)?,
+        created_at: r.get(12)?,
+        finished_at: r.get(13)?,
+    })
 }

@@ -118,12 +118,8 @@ where
             .next()
             .expect("server exited before listening")
             .expect("read server output");
-        if let Some(rest) = line.split("listening on http://").nth(1) {
-            break rest
-                .split(|c: char| c.is_whitespace() || c == '\u{1b}')
-                .next()
-                .unwrap_or_default()
-                .to_string();
+        if let Some(addr) = strata::harness::replica::listening_addr(&line) {
+            break addr;
         }
     };
     match log {

@@ -97,7 +97,7 @@ async fn jobs_queue_run_finish_and_are_evicted() {
     // A stray archive of a previous process is swept; the jobs' own are kept.
     let stray = jobs.dir().join(format!("{}.tar", "ab".repeat(16)));
     std::fs::write(&stray, b"x").expect("write");
-    assert_eq!(jobs.sweep().expect("sweep"), 1);
+    assert_eq!(jobs.sweep().await.expect("sweep"), 1);
     assert!(!stray.exists() && fourth.archive().expect("done").exists());
 }
 

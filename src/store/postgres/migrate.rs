@@ -7,10 +7,16 @@ use super::super::StoreError;
 
 /// Every migration, `(version, SQL)`, in order; a database that records a later version than
 /// the last is refused (it was migrated by a newer build).
-const MIGRATIONS: &[(i64, &str)] = &[(
-    1,
-    include_str!("../../../migrations/postgres/0001_init.sql"),
-)];
+const MIGRATIONS: &[(i64, &str)] = &[
+    (
+        1,
+        include_str!("../../../migrations/postgres/0001_init.sql"),
+    ),
+    (
+        2,
+        include_str!("../../../migrations/postgres/0002_export_jobs.sql"),
+    ),
+];
 
 /// The key of the transaction-level advisory lock taken while migrating (`"strata"` in ASCII).
 const LOCK_KEY: i64 = 0x7374_7261_7461;
