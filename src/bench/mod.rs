@@ -18,6 +18,7 @@ pub mod http;
 pub mod poisson;
 pub mod realism;
 pub mod serve;
+mod serve_edits;
 pub mod strata;
 pub mod volume;
 
