@@ -4,8 +4,9 @@
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
-// horizon, 90 straight down) from how high; ?rings=2,1,2,4,8 the LOD rings
-// of the view, ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
+// horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
+// (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
+// it), ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
 // with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
 // as ribbons along the server's river lines (see ./rivers.ts).
 import * as THREE from "three";
@@ -109,7 +110,7 @@ const q = new URLSearchParams(location.search);
 const seed = q.get("seed") ?? "42";
 const world = q.get("world");
 const token = q.get("token");
-const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
+const rings = (q.get("rings") ?? "2,1,2,4,8,0,1,0,1").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
 // Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions.
 const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
   .split(",")

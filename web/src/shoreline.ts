@@ -6,6 +6,7 @@
 // here draws: it states where the shoreline of the heights is, to compare with a screenshot.
 import * as THREE from "three";
 import type { Tile } from "./frame";
+import { finestTile } from "./ground";
 import { groundHeight } from "./tileGround";
 
 /** A `cols`×`rows` grid of screen points (row-major, top row first). */
@@ -27,16 +28,6 @@ export interface ShoreSamples {
 /** Fixed-point steps from the ray's point at one level to the surface there: enough for views
  * within 45° of straight down over slopes under 45°. */
 const STEPS = 10;
-
-function finest(tiles: Tile[], x: number, z: number): Tile | undefined {
-  let best: Tile | undefined;
-  for (const t of tiles) {
-    const extent = (t.size - 1) * t.spacing;
-    if (x < t.originX || z < t.originZ || x > t.originX + extent || z > t.originZ + extent) continue;
-    if (!best || t.lod < best.lod) best = t;
-  }
-  return best;
-}
 
 /** The surface at `(x, z)` of `t` (the water level where wet, else the ground), whether it is
  * wet, the ground and the level of its quad's wet corners (`NaN` when none is). */
@@ -77,7 +68,7 @@ export function shoreSamples(tiles: Tile[], camera: THREE.Camera, cols: number, 
         const t = (y - o.y) / d.y;
         x = o.x + t * d.x;
         z = o.z + t * d.z;
-        tile = finest(tiles, x, z);
+        tile = finestTile(tiles, x, z);
         if (!tile) break;
         const here = surface(tile, x, z);
         y = here.y;
