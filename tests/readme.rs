@@ -436,6 +436,11 @@ const RULES: &[(&str, Check)] = &[
 
 #[test]
 fn the_readme_walk_through_runs_in_order_and_every_answer_shows_something() {
+    let curl = Command::new("curl").arg("--version").output();
+    assert!(
+        curl.is_ok_and(|o| o.status.success()),
+        "the README's commands use curl: apt-get install curl"
+    );
     write_examples();
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
     let port = std::net::TcpListener::bind("127.0.0.1:0")
