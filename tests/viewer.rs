@@ -15,88 +15,18 @@
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 mod common;
 
-use common::Server;
+use common::js::{arg as path, browser_ready, serve_viewer};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn start(data: &Path, web: &Path) -> Server {
-    common::start(
-        [
-            std::ffi::OsStr::new("--data"),
-            data.as_os_str(),
-            std::ffi::OsStr::new("--web"),
-            web.as_os_str(),
-        ],
-        &[],
-    )
-}
-
-fn require_node() {
-    match Command::new("node").arg("--version").output() {
-        Ok(out) if out.status.success() => {
-            println!("node {}", String::from_utf8_lossy(&out.stdout).trim());
-        }
-        Ok(out) => panic!(
-            "`node --version` failed ({}): {}",
-            out.status,
-            String::from_utf8_lossy(&out.stderr)
-        ),
-        Err(e) => panic!(
-            "Node.js is required for the browser viewer test but `node` could not be started \
-             ({e}). Install Node.js 18 or newer (with npm) and put it on PATH."
-        ),
-    }
-}
-
-fn require_chromium() {
-    let chromium = Path::new("/usr/bin/chromium");
-    assert!(
-        chromium.exists(),
-        "{} is missing: the viewer test drives Debian's Chromium headless \
-         (`apt-get install -y chromium`; .ci/run installs it). It never downloads a browser.",
-        chromium.display()
-    );
-}
-
-fn path(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
-}
-
-/// Runs `node tests/js/<script> <args>` with a time limit (a hung browser must not hang the
-/// suite); returns whether it succeeded and its output.
 fn run_node(script: &str, args: &[&str]) -> (bool, String) {
-    let t0 = Instant::now();
-    let mut child = Command::new("node")
-        .arg(root().join("tests").join("js").join(script))
-        .args(args)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("start node tests/js/{script}: {e}"));
-    let limit = Duration::from_secs(360);
-    while child.try_wait().expect("wait for node").is_none() {
-        if t0.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("node tests/js/{script} did not finish within {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    let out = child.wait_with_output().expect("node output");
-    let text = format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    println!("{script} took {:.1} s:\n{text}", t0.elapsed().as_secs_f64());
-    (out.status.success(), text)
+    common::js::run_node(script, args, Duration::from_secs(480))
 }
 
 /// The arch volume element standing on the ground of seed 7 at (32, 24), as `volume.mjs` places
@@ -111,23 +41,15 @@ fn arch_element() -> serde_json::Value {
 
 #[test]
 fn viewer_streams_and_draws_terrain_in_headless_chromium() {
-    require_node();
-    require_chromium();
-    common::js::ensure_packages(&["playwright-core", "pngjs"]);
-    let web = root().join("web").join("dist");
-    assert!(
-        web.join("index.html").is_file(),
-        "{} is missing: build the viewer with `npm ci --prefix web && npm run --prefix web build`",
-        web.display()
-    );
+    let web = browser_ready();
 
     let data =
         Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("viewer-{}", std::process::id()));
-    let server = start(&data, &web);
+    let server = serve_viewer(&data, &web);
     // Seed 42 around (-12 km, 26 km): plains and terraced highlands. Rings out to LOD 6 with few
     // tiles per level, so the whole view (187 tiles) arrives within the test's time.
     let url = format!(
-        "http://{}/?seed=42&x=-12000&z=26000&rings=1,1,1,1,1,1,2",
+        "http://{}/?seed=42&x=-12000&z=26000&rings=1,1,1,1,1,1,2,0,1",
         server.addr
     );
     let shot = root().join("target").join("viewer.png");

@@ -19,6 +19,7 @@ pub mod poisson;
 pub mod realism;
 pub mod scale;
 pub mod serve;
+mod serve_edits;
 pub mod strata;
 pub mod volume;
 

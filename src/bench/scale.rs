@@ -13,7 +13,7 @@
 //! 2. **Uncached tiles** through the balancer: every request a new tile key, a new seed for each
 //!    replica count so that no replica's cache holds it (its plan built on every replica
 //!    before the run); ratio to the 1-replica figure.
-//! 3. **Edit → invalidation across replicas**: [`super::serve::SUBSCRIBERS`] stream subscribers
+//! 3. **Edit → invalidation across replicas**: [`super::serve_edits::SUBSCRIBERS`] stream subscribers
 //!    spread round robin over the three replicas, edits made on the first; the time from each
 //!    edit's acknowledgement to each subscriber's `invalidate`, p50 and p99 against
 //!    [`TARGET_INVALIDATION_P99_MS`].
@@ -23,7 +23,8 @@
 
 use super::emit;
 use super::http::http_get;
-use super::serve::{invalidation_latency, need, uncached_script, wrk, wrk_with, SUBSCRIBERS};
+use super::serve::{need, uncached_script, wrk, wrk_with};
+use super::serve_edits::{tile_latency_across, SUBSCRIBERS};
 use crate::bench::BenchArgs;
 use crate::harness::{nginx, postgres::Cluster, replica};
 use anyhow::Context;
@@ -164,7 +165,7 @@ fn measure(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
         );
     }
 
-    let deliveries = rt.block_on(invalidation_latency(addrs[0].clone(), &addrs, EDITS))?;
+    let deliveries = rt.block_on(tile_latency_across(addrs[0].clone(), &addrs, EDITS))?;
     let all = percentiles(deliveries.iter().map(|d| d.1).collect())?;
     // The subscribers of the other replicas: the edit reaches them through PostgreSQL.
     let remote = percentiles(

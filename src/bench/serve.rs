@@ -4,7 +4,8 @@
 //!    with `wrk` against this server, and the same load against Debian's nginx serving the same
 //!    tile bytes from files, in the same run; the ratio's target is ≥ 0.5.
 //! 2. The time from an edit's acknowledgement (the HTTP 200) to its invalidation reaching each of
-//!    100 subscribed WebSocket clients; the target is p99 ≤ 50 ms.
+//!    100 subscribed WebSocket clients, for tiles and for volume chunks (`serve_edits.rs`); the
+//!    target is p99 ≤ 50 ms.
 //!
 //! 3. Resident memory under an uncached load: `wrk` asks for a new tile with every request (a
 //!    script walks the keys), so every cache fills to its share of the memory budget
@@ -17,25 +18,19 @@
 //! and `nginx` are separate processes (`apt-get install wrk nginx-light`).
 
 use super::emit;
-use super::http::{http, http_get};
+use super::http::http_get;
+use super::serve_edits::{self, SUBSCRIBERS, TARGET_INVALIDATION_P99_MS};
 use crate::bench::BenchArgs;
 use crate::compute::Compute;
 use crate::server::{app, AppState};
 use anyhow::{bail, Context};
-use futures::{SinkExt, StreamExt};
 use serde_json::json;
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
-use tokio_tungstenite::tungstenite::Message;
 
 /// Target: our requests per second over nginx's.
 pub const TARGET_RATIO: f64 = 0.5;
-/// Target: p99 edit-to-invalidation latency, milliseconds.
-pub const TARGET_INVALIDATION_P99_MS: f64 = 50.0;
 /// Concurrent connections of the throughput test.
 pub const CONNECTIONS: usize = 64;
-/// Subscribed clients of the invalidation test.
-pub const SUBSCRIBERS: usize = 100;
 /// The tile requested by the throughput test.
 const TILE_PATH: &str = "/v1/seeds/42/tiles/0/3/-2.bin";
 
@@ -242,142 +237,29 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         ),
     );
 
-    let mut lat: Vec<f64> = rt
-        .block_on(invalidation_latency(
-            addr.to_string(),
-            &[addr.to_string()],
-            20,
-        ))?
-        .into_iter()
-        .map(|(_, ms)| ms)
-        .collect();
-    lat.sort_by(f64::total_cmp);
-    let pct = |p: f64| lat[((lat.len() as f64 - 1.0) * p).round() as usize];
-    let (p50, p99, max) = (pct(0.5), pct(0.99), lat[lat.len() - 1]);
-    emit(
-        args,
-        json!({"bench":"serve","figure":"edit_to_invalidation","subscribers":SUBSCRIBERS,"samples":lat.len(),
-               "p50_ms":p50,"p99_ms":p99,"max_ms":max,"target_p99_ms":TARGET_INVALIDATION_P99_MS,
-               "meets_target":p99 <= TARGET_INVALIDATION_P99_MS}),
-        format!(
-            "  edit → invalidation at {SUBSCRIBERS} clients: p50 {p50:.2} ms, p99 {p99:.2} ms, max {max:.2} ms over {} deliveries (target p99 ≤ {TARGET_INVALIDATION_P99_MS} ms)",
-            lat.len()
+    for (figure, what, lat) in [
+        (
+            "edit_to_invalidation",
+            "tiles",
+            rt.block_on(serve_edits::tile_latency(addr.to_string(), 20))?,
         ),
-    );
-    Ok(())
-}
-
-/// Latencies from the acknowledgement of each of `edits` edits made through `addr` to each of
-/// [`SUBSCRIBERS`] subscribers' `invalidate`, the subscribers spread round robin over
-/// `subscribe_at` (replicas of `addr`'s store, or `addr` itself): `(index in subscribe_at,
-/// milliseconds)` per delivery, 0 for one that came before the acknowledgement.
-pub(crate) async fn invalidation_latency(
-    addr: String,
-    subscribe_at: &[String],
-    edits: usize,
-) -> anyhow::Result<Vec<(usize, f64)>> {
-    anyhow::ensure!(!subscribe_at.is_empty(), "no address to subscribe at");
-    let (status, body) = http(
-        &addr,
-        "POST",
-        "/v1/worlds",
-        &[("Content-Type", "application/json")],
-        r#"{"seed":42,"public":true}"#,
-    )
-    .await?;
-    anyhow::ensure!(status == 201, "creating the world answered {status}");
-    let created: serde_json::Value = serde_json::from_slice(&body)?;
-    let id = created["id"].as_str().context("world id")?.to_string();
-    let token = created["tokens"]["admin"]
-        .as_str()
-        .context("admin token")?
-        .to_string();
-    // Subscribers: each holds the one LOD-0 tile under the edits.
-    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<(usize, u64, Instant)>();
-    let mut ready = Vec::new();
-    for i in 0..SUBSCRIBERS {
-        let replica = i % subscribe_at.len();
-        let at = &subscribe_at[replica];
-        let (mut ws, _) =
-            tokio_tungstenite::connect_async(format!("ws://{at}/v1/worlds/{id}/stream")).await?;
-        ws.send(Message::Text(
-            json!({"type":"view","x":32,"z":32,"rings":[0]})
-                .to_string()
-                .into(),
-        ))
-        .await?;
-        let tx = tx.clone();
-        let (ready_tx, ready_rx) = tokio::sync::oneshot::channel::<()>();
-        ready.push(ready_rx);
-        tokio::spawn(async move {
-            let mut ready_tx = Some(ready_tx);
-            while let Some(Ok(msg)) = ws.next().await {
-                if let Message::Text(t) = msg {
-                    let Ok(m) = serde_json::from_str::<serde_json::Value>(&t) else {
-                        continue;
-                    };
-                    match m["type"].as_str() {
-                        Some("idle") => {
-                            if let Some(r) = ready_tx.take() {
-                                let _ = r.send(());
-                            }
-                        }
-                        Some("invalidate") => {
-                            let version = m["version"].as_u64().unwrap_or(0);
-                            let _ = tx.send((replica, version, Instant::now()));
-                        }
-                        _ => {}
-                    }
-                }
-            }
-        });
-    }
-    for r in ready {
-        tokio::time::timeout(Duration::from_secs(60), r)
-            .await
-            .context("a subscriber never became idle")??;
-    }
-    let auth = format!("Bearer {token}");
-    let mut out = Vec::with_capacity(edits * SUBSCRIBERS);
-    for e in 0..edits {
-        let patch = json!([{"op":"add","path":"/regions/-","value":{"id":format!("bench{e}"),"bbox":{"min":[10.0,10.0],"max":[20.0,20.0]}}}]).to_string();
-        let path = format!("/v1/worlds/{id}/edits");
-        let (status, body) = http(
-            &addr,
-            "POST",
-            &path,
-            &[
-                ("Content-Type", "application/json-patch+json"),
-                ("Authorization", &auth),
-            ],
-            &patch,
-        )
-        .await?;
-        let acked = Instant::now();
-        anyhow::ensure!(
-            status == 200,
-            "edit answered {status}: {}",
-            String::from_utf8_lossy(&body)
+        (
+            "edit_to_chunk_invalidation",
+            "chunks",
+            rt.block_on(serve_edits::chunk_latency(addr.to_string(), 10))?,
+        ),
+    ] {
+        let (p50, p99, max) = serve_edits::percentiles(&lat);
+        emit(
+            args,
+            json!({"bench":"serve","figure":figure,"subscribers":SUBSCRIBERS,"samples":lat.len(),
+                   "p50_ms":p50,"p99_ms":p99,"max_ms":max,"target_p99_ms":TARGET_INVALIDATION_P99_MS,
+                   "meets_target":p99 <= TARGET_INVALIDATION_P99_MS}),
+            format!(
+                "  edit → invalidation of {what} at {SUBSCRIBERS} clients: p50 {p50:.2} ms, p99 {p99:.2} ms, max {max:.2} ms over {} deliveries (target p99 ≤ {TARGET_INVALIDATION_P99_MS} ms)",
+                lat.len()
+            ),
         );
-        let version = serde_json::from_slice::<serde_json::Value>(&body)?["version"]
-            .as_u64()
-            .context("version")?;
-        let mut got = 0;
-        while got < SUBSCRIBERS {
-            let (replica, v, at) = tokio::time::timeout(Duration::from_secs(10), rx.recv())
-                .await
-                .context("invalidation timed out")?
-                .context("subscribers gone")?;
-            if v == version {
-                out.push((
-                    replica,
-                    at.saturating_duration_since(acked).as_secs_f64() * 1e3,
-                ));
-                got += 1;
-            }
-        }
-        // Let the fresh tiles go out before the next edit.
-        tokio::time::sleep(Duration::from_millis(50)).await;
     }
-    Ok(out)
+    Ok(())
 }

@@ -4,8 +4,9 @@
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
-// horizon, 90 straight down) from how high; ?rings=2,1,2,4,8 the LOD rings
-// of the view, ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
+// horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
+// (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
+// it), ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
 // with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
 // as ribbons along the server's river lines (see ./rivers.ts).
 import * as THREE from "three";
@@ -17,6 +18,7 @@ import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
 import { buildMesh, disposeMesh } from "./mesh";
 import { RiverLayer } from "./rivers";
+import { shoreSamples, type ShoreSamples } from "./shoreline";
 import { selectView, tileKey } from "./view";
 import { addPatch, crestRegion, pointRegion, removePatch, TOOLS, type GroundPoint, type Tool } from "./edit";
 
@@ -40,6 +42,10 @@ interface StrataState {
   freed: number; // meshes freed because they left the view or were replaced
   /** Moves camera and target by (dx, dz) metres: lets tests fly without synthesising input. */
   moveBy: (dx: number, dz: number) => void;
+  /** The water the held tiles' heights give under a `cols`×`rows` grid of screen points (tests). */
+  shore: (cols: number, rows: number) => ShoreSamples;
+  /** Shows or hides the water (sheets and ribbons): lets tests see what the water covers. */
+  showWater: (on: boolean) => void;
   tool: string; // the edit tool in use, "" when not editing
   edits: number; // edits the server acknowledged (durable)
   pendingEdits: number; // edits sent and not yet acknowledged
@@ -54,6 +60,8 @@ interface StrataState {
   reconnects: number; // reconnection attempts
   retiring: number; // tiles that left the view, kept until their replacements cover them
   minClearance: number; // lowest camera height above the ground before the collision check, metres
+  flySpeed: number; // how fast WASD flies now, metres per second (it grows with the height above the ground)
+  horizon: number; // the horizon line's row as a fraction of the picture's height from the top (0 when above it)
   protocol: string; // the stream protocol the server speaks
 }
 
@@ -76,6 +84,8 @@ const state: StrataState = {
   viewTiles: 0,
   freed: 0,
   moveBy: () => {},
+  shore: () => ({ cols: 0, rows: 0, wet: [], x: [], z: [], span: [], ground: [], level: [] }),
+  showWater: () => {},
   tool: "",
   edits: 0,
   pendingEdits: 0,
@@ -90,6 +100,8 @@ const state: StrataState = {
   reconnects: 0,
   retiring: 0,
   minClearance: Infinity,
+  flySpeed: 0,
+  horizon: 0,
   protocol: "",
 };
 window.__strata = state;
@@ -98,7 +110,7 @@ const q = new URLSearchParams(location.search);
 const seed = q.get("seed") ?? "42";
 const world = q.get("world");
 const token = q.get("token");
-const rings = (q.get("rings") ?? "2,1,2,4,8").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
+const rings = (q.get("rings") ?? "2,1,2,4,8,0,1,0,1").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
 // Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions.
 const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
   .split(",")
@@ -163,6 +175,13 @@ state.moveBy = (dx, dz) => {
   controls.target.z += dz;
 };
 
+state.shore = (cols, rows) => shoreSamples([...heldTiles()], camera, cols, rows);
+state.showWater = (on) => {
+  terrain.traverse((o) => {
+    if (o.name === "water" || o.name === "rivers") o.visible = on;
+  });
+};
+
 window.addEventListener("resize", () => {
   camera.aspect = window.innerWidth / window.innerHeight;
   camera.updateProjectionMatrix();
@@ -173,6 +192,22 @@ window.addEventListener("resize", () => {
 const keys = new Set<string>();
 window.addEventListener("keydown", (e) => keys.add(e.key.toLowerCase()));
 window.addEventListener("keyup", (e) => keys.delete(e.key.toLowerCase()));
+/** WASD's speed, metres per second: 1.2 times the height above the ground, at least 60. */
+function flySpeed(): number {
+  return Math.max(50, camera.position.y - groundAt(camera.position.x, camera.position.z)) * 1.2;
+}
+
+/** The row of the horizon (the camera's height, far ahead) as a fraction of the picture from the top. */
+function horizonRow(): number {
+  const ahead = new THREE.Vector3();
+  camera.getWorldDirection(ahead);
+  ahead.y = 0;
+  if (ahead.lengthSq() < 1e-9) return 0;
+  ahead.normalize().multiplyScalar(1e7).add(camera.position);
+  const ndc = ahead.project(camera);
+  return Math.max(0, Math.min(1, (1 - ndc.y) / 2));
+}
+
 function fly(dt: number): void {
   const forward = new THREE.Vector3();
   camera.getWorldDirection(forward);
@@ -188,7 +223,7 @@ function fly(dt: number): void {
   if (keys.has("r")) move.y += 1;
   if (keys.has("f")) move.y -= 1;
   if (move.lengthSq() === 0) return;
-  const speed = Math.max(50, camera.position.y - groundAt(camera.position.x, camera.position.z)) * 1.2;
+  const speed = flySpeed();
   move.normalize().multiplyScalar(speed * dt);
   camera.position.add(move);
   controls.target.add(move);
@@ -788,6 +823,8 @@ function frame(now: number): void {
   sendView(false); // throttled: only when the camera crossed a LOD-0 tile
   renderer.render(scene, camera);
   state.frames++;
+  state.flySpeed = flySpeed();
+  state.horizon = horizonRow();
   fpsFrames++;
   if (now - fpsSince >= 1000) {
     fps = (fpsFrames * 1000) / (now - fpsSince);

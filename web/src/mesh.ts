@@ -1,9 +1,9 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
 // api/tile_format_v1.md), vertex colours from biome weights and materials, water as a translucent
-// sheet at each vertex's water surface (sea, lake or river) over the quads that hold water, less
-// the quads whose water a river ribbon draws (see ./rivers.ts).
+// sheet cut along the shoreline (see ./water.ts).
 import * as THREE from "three";
 import type { Tile } from "./frame";
+import { setWater, waterMaterial } from "./water";
 
 // Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
 const MATERIAL = [
@@ -84,52 +84,6 @@ function edgeVertex(e: number, t: number, size: number): number {
 }
 
 const terrainMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
-export const waterMaterial = new THREE.MeshLambertMaterial({
-  color: new THREE.Color().setRGB(0.12, 0.32, 0.5, THREE.SRGBColorSpace),
-  transparent: true,
-  opacity: 0.72,
-  depthWrite: false,
-});
-
-/**
- * The water sheet of a tile: its vertices at the water surface (`h + water_depth`) where the
- * ground is under water (sea, lake or river), and at the ground elsewhere, so the sheet dips into
- * the banks and the ground hides its edge; only the quads with a wet corner are drawn, except
- * those whose wet corners are all flagged in `river` (water a ribbon draws). `undefined` when no
- * quad is left.
- */
-export function waterGeometry(tile: Tile, river?: Uint8Array): THREE.BufferGeometry | undefined {
-  const { size, heights, waterDepth } = tile;
-  const idx: number[] = [];
-  for (let j = 0; j + 1 < size; j++) {
-    for (let i = 0; i + 1 < size; i++) {
-      const a = j * size + i;
-      const corners = [a, a + 1, a + size, a + size + 1];
-      const wet = corners.filter((v) => waterDepth[v] > 0);
-      if (wet.length === 0) continue;
-      if (river && wet.every((v) => river[v] === 1)) continue;
-      const [, b, c, d] = corners;
-      idx.push(a, c, b, b, c, d);
-    }
-  }
-  if (idx.length === 0) return undefined;
-  const pos = new Float32Array(3 * size * size);
-  for (let j = 0; j < size; j++) {
-    for (let i = 0; i < size; i++) {
-      const v = j * size + i;
-      pos[3 * v] = i * tile.spacing;
-      pos[3 * v + 1] = heights[v] + Math.max(waterDepth[v], 0);
-      pos[3 * v + 2] = j * tile.spacing;
-    }
-  }
-  const geo = new THREE.BufferGeometry();
-  geo.setIndex(idx);
-  geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
-  geo.computeVertexNormals();
-  geo.computeBoundingSphere();
-  return geo;
-}
-
 export function buildMesh(tile: Tile): THREE.Mesh {
   const { size, heights, normals, weights, materials, biomeCount: k } = tile;
   const n = size * size;
@@ -189,24 +143,6 @@ export function buildMesh(tile: Tile): THREE.Mesh {
   mesh.updateMatrix();
   setWater(mesh, tile);
   return mesh;
-}
-
-/** Replaces the water sheet under the tile's `mesh`, leaving out the quads `river` flags. */
-export function setWater(mesh: THREE.Mesh, tile: Tile, river?: Uint8Array): void {
-  for (const child of [...mesh.children]) {
-    if (child instanceof THREE.Mesh && child.name === "water") {
-      mesh.remove(child);
-      child.geometry.dispose();
-    }
-  }
-  const sheet = waterGeometry(tile, river);
-  if (sheet === undefined) return;
-  const water = new THREE.Mesh(sheet, waterMaterial);
-  water.name = "water";
-  water.renderOrder = 1;
-  water.matrixAutoUpdate = false;
-  water.updateMatrix();
-  mesh.add(water);
 }
 
 export function disposeMesh(mesh: THREE.Mesh): void {

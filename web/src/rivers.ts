@@ -12,7 +12,7 @@
 // without a point inside gets no line for it, which left gaps in the ribbons on LOD 0–2 tiles.
 import * as THREE from "three";
 import type { Tile } from "./frame";
-import { setWater, waterMaterial } from "./mesh";
+import { setWater, waterMaterial } from "./water";
 import { buildRibbons } from "./ribbon";
 import { RiverLoader, type RiverLine } from "./riverLines";
 import { riverVertices } from "./riverMask";

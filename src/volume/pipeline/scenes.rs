@@ -155,3 +155,20 @@ pub fn overhang(dims: [usize; 3]) -> (Grid, Scene, PipelineParams) {
     };
     (grid, scene, PipelineParams::default())
 }
+
+/// The arch of [`arch`] as a `volumes` scene element (id `arch`, a 64 m × 48 m box from the
+/// origin, 1 m spacing), its curves lifted so their feet stand on `ground` metres (the scene's
+/// curves stand on `y = 4`): what the world tests and `strata bench serve` place on the ground.
+pub fn arch_element(ground: f32) -> serde_json::Value {
+    let (_, scene, _) = arch([64, 32, 48]);
+    let mut curves = serde_json::to_value(&scene.curves).expect("curves serialise");
+    for c in curves.as_array_mut().into_iter().flatten() {
+        for p in c["control_points"].as_array_mut().into_iter().flatten() {
+            let y = p[1].as_f64().unwrap_or(0.0);
+            p[1] = serde_json::json!(y - 4.0 + f64::from(ground));
+        }
+    }
+    serde_json::json!({"id": "arch", "bbox": {"min": [0, 0], "max": [64, 48]},
+           "y_m": [ground - 12.0, ground + 36.0], "spacing_m": 1.0, "dead_zone_m": 6.0,
+           "curves": curves})
+}
