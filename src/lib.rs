@@ -19,6 +19,7 @@ pub mod encode;
 pub mod export;
 pub mod glb;
 pub mod gpu;
+pub mod ptex;
 pub mod scene;
 pub mod server;
 pub mod store;
