@@ -3,7 +3,7 @@
 /// `strata bench` options.
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
-    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume`, `realism` or `abuse`.
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume`, `realism`, `abuse` or `ptex`.
     pub name: String,
     /// Print one JSON object per line instead of a table.
     #[arg(long)]

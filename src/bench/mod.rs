@@ -10,12 +10,13 @@
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`]; `strata bench realism` (issue 17, the world against real DEMs) in
 //! [`realism`]; `strata bench abuse` (issue 18, the cost of requests at their limits) in
-//! [`abuse`].
+//! [`abuse`]; `strata bench ptex` (issue 20, the Ptex bake) in [`ptex`].
 
 pub mod abuse;
 mod args;
 pub mod http;
 pub mod poisson;
+pub mod ptex;
 pub mod realism;
 pub mod serve;
 pub mod strata;
@@ -64,8 +65,9 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "volume" => volume::run(args),
         "realism" => realism::run(args),
         "abuse" => abuse::run(args),
+        "ptex" => ptex::run(args),
         other => anyhow::bail!(
-            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism, abuse"
+            "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism, abuse, ptex"
         ),
     }
 }

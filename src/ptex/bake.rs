@@ -278,8 +278,8 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
         for (axis, w) in wd.iter().enumerate() {
             let t = pattern(mats, id, a, pt.p, axis, kmax);
             let k = pt.weights[m] * w;
-            for c in 0..3 {
-                albedo[c] += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
+            for (c, a) in albedo.iter_mut().enumerate() {
+                *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
             }
             rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
         }

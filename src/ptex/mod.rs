@@ -17,12 +17,15 @@
 //! - [`bake`]: the §4.7 bake of a face's interior texels (the CPU reference of
 //!   `shaders/ptex.wgsl`);
 //! - [`border`]: the one-texel borders taken from the neighbours;
+//! - [`budget`]: the level-of-detail budget: a vista level for every face, detail levels for
+//!   the nearest faces in view, slots reused;
 //! - [`pages`]: the baked texels of a set of faces, the layout of `api/ptex_pages_v1.md`.
 //!
 //! Units: metres, world axes x east, y up, z south.
 
 pub mod bake;
 pub mod border;
+pub mod budget;
 pub mod face;
 pub mod material;
 pub mod noise;
