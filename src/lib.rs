@@ -20,6 +20,7 @@ pub mod export;
 pub mod glb;
 pub mod gpu;
 pub mod harness;
+pub mod ptex;
 pub mod scene;
 pub mod server;
 pub mod store;

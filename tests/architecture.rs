@@ -27,6 +27,7 @@ fn pure_modules_import_no_tokio_axum_or_wgpu() {
         ("src/authoring", 4),
         ("src/subsurface", 3),
         ("src/volume", 2),
+        ("src/ptex", 4),
         ("src/edits.rs", 1),
     ] {
         let mut files = Vec::new();

@@ -37,6 +37,7 @@ fn bound() -> u64 {
         z1: 1,
         products: vec![Product::Tiles],
         formats: vec!["bin".into()],
+        ptex_res: None,
     };
     archive_bound(&plan, &spec, Shard::WHOLE)
 }

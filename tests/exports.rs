@@ -298,6 +298,7 @@ async fn three_shard_jobs_equal_the_whole_job_and_the_cli() {
         z1: 2,
         products: vec![Product::Tiles, Product::Scatter],
         formats: vec!["bin".into(), "png".into()],
+        ptex_res: None,
     };
     let mut local = Vec::new();
     export::write_archive(

@@ -417,6 +417,18 @@ const RULES: &[(&str, Check)] = &[
             "an empty chunk: {out}"
         );
     }),
+    ("/ptex/0/0/8/0", |_, _, ctx| {
+        let pack = file(ctx, "chunk.stpx");
+        assert_eq!(&pack[..4], b"STPX");
+        let faces = u32::from_le_bytes(pack[52..56].try_into().expect("face count"));
+        assert!(faces > 100, "the arch's chunk has quads: {faces} faces");
+    }),
+    ("/ptex/tiles/", |_, _, ctx| {
+        let pack = file(ctx, "tile.stpx");
+        assert_eq!(&pack[..4], b"STPX");
+        let faces = u32::from_le_bytes(pack[52..56].try_into().expect("face count"));
+        assert_eq!(faces, 16, "a tile's 4 × 4 faces");
+    }),
     ("@docs/examples/rock.glb", |out, cmd, _| {
         let doc = json_of(out, cmd);
         assert_eq!(doc["version"], 8, "{out}");

@@ -3,8 +3,8 @@
 /// `strata bench` options.
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
-    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume`, `realism`, `abuse` or
-    /// `scale`.
+    /// Benchmark name: `tiles`, `serve`, `strata`, `poisson`, `volume`, `realism`, `abuse`,
+    /// `scale` or `ptex`.
     pub name: String,
     /// Print one JSON object per line instead of a table.
     #[arg(long)]

@@ -10,12 +10,14 @@
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
 //! subsurface) in [`strata`]; `strata bench realism` (issue 17, the world against real DEMs) in
 //! [`realism`]; `strata bench abuse` (issue 18, the cost of requests at their limits) in
-//! [`abuse`]; `strata bench scale` (issue 21, replicas behind a load balancer) in [`scale`].
+//! [`abuse`]; `strata bench scale` (issue 21, replicas behind a load balancer) in [`scale`];
+//! `strata bench ptex` (issue 20, the Ptex bake) in [`ptex`].
 
 pub mod abuse;
 mod args;
 pub mod http;
 pub mod poisson;
+pub mod ptex;
 pub mod realism;
 pub mod scale;
 pub mod serve;
@@ -67,9 +69,10 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "realism" => realism::run(args),
         "abuse" => abuse::run(args),
         "scale" => scale::run(args),
+        "ptex" => ptex::run(args),
         other => anyhow::bail!(
             "unknown benchmark {other:?}; known: tiles, serve, strata, poisson, volume, realism, \
-             abuse, scale"
+             abuse, scale, ptex"
         ),
     }
 }

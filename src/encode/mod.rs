@@ -15,7 +15,8 @@
 //! lines. The normative description of the tile formats is `api/tile_format_v1.md`; `json` and
 //! `bin` also have a [`TileVersion::V2`] (`?format=2`, `api/tile_format_v2.md`) that adds each
 //! vertex's water surface height and water kind ([`water`]). The river lines are specified in
-//! `api/rivers_v1.md`.
+//! `api/rivers_v1.md`. [`ptex`] writes the Ptex pages of `api/ptex_pages_v1.md` and [`ptx`]
+//! Disney's Ptex file format.
 
 pub mod bin;
 pub mod chunk;
@@ -23,6 +24,8 @@ pub mod chunk_glb;
 pub mod glb;
 pub mod heightmap;
 pub mod json;
+pub mod ptex;
+pub mod ptx;
 pub mod region_glb;
 pub mod rivers;
 pub mod scatter;

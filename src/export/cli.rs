@@ -33,6 +33,9 @@ pub struct ExportArgs {
     /// make the whole export.
     #[arg(long, value_name = "I/N", value_parser = Shard::parse)]
     pub shard: Option<Shard>,
+    /// Texels per Ptex face side of the `ptex` product (a power of two in 8..=256).
+    #[arg(long, default_value_t = 64)]
+    pub ptex_res: u32,
     /// Output archive (tar).
     #[arg(long, short, value_name = "FILE")]
     pub out: PathBuf,
@@ -88,6 +91,8 @@ pub enum ProductName {
     Tiles,
     /// Scatter points (JSON).
     Scatter,
+    /// Each tile's 4 × 4 Ptex faces as a `.ptx` file at `--ptex-res`.
+    Ptex,
 }
 
 /// A tile format of `--formats`.
@@ -133,6 +138,7 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         .map(|p| match p {
             ProductName::Tiles => Product::Tiles,
             ProductName::Scatter => Product::Scatter,
+            ProductName::Ptex => Product::Ptex,
         })
         .collect();
     let spec = ExportSpec {
@@ -147,6 +153,10 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
             .iter()
             .map(|f| f.extension().to_string())
             .collect(),
+        ptex_res: args
+            .products
+            .contains(&ProductName::Ptex)
+            .then_some(args.ptex_res),
     };
     let shard = args.shard.unwrap_or(Shard::WHOLE);
     let threads = args

@@ -2,8 +2,8 @@
 //! deterministic tar archive, optionally one shard of N.
 //!
 //! Members are written in canonical order — rows `z` ascending, then columns `x`, then products
-//! (`tiles` before `scatter`), then formats in the order asked — as `tiles/{lod}/{x}/{z}.{ext}` and
-//! `scatter/{lod}/{x}/{z}.json`, followed by `manifest.json` (the spec, the shard, and a blake3 hash
+//! (`tiles` before `scatter`), then formats in the order asked — as `tiles/{lod}/{x}/{z}.{ext}`,
+//! `scatter/{lod}/{x}/{z}.json` and `ptex/{lod}/{x}/{z}.ptx`, followed by `manifest.json` (the spec, the shard, and a blake3 hash
 //! per member). Shard `i` of `N` takes the contiguous tiles `[i·T/N, (i+1)·T/N)` of the `T` tiles
 //! in canonical order, so the members of shards `0..N` in order are exactly the members of the
 //! unsharded export, byte for byte, and [`join`] writes the whole archive from the shards'.
@@ -30,6 +30,9 @@ pub enum Product {
     Tiles,
     /// Scatter points (JSON).
     Scatter,
+    /// The tile's 4 × 4 Ptex faces as a `.ptx` file (Disney's Ptex format, [`encode::ptx`]) at
+    /// [`ExportSpec::ptex_res`].
+    Ptex,
 }
 
 /// What to export.
@@ -50,6 +53,9 @@ pub struct ExportSpec {
     pub products: Vec<Product>,
     /// Tile formats by extension (`json`, `bin`, `png`, `glb`), in member order.
     pub formats: Vec<String>,
+    /// Texels per Ptex face side of the `ptex` product (a power of two in 8..=256).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ptex_res: Option<u32>,
 }
 
 /// One shard of an export: `index` in `0..count`.
@@ -130,7 +136,10 @@ impl ExportSpec {
             );
         }
         if self.products.is_empty() {
-            return err("products", "name at least one of tiles, scatter".into());
+            return err(
+                "products",
+                "name at least one of tiles, scatter, ptex".into(),
+            );
         }
         if self.products.contains(&Product::Scatter) {
             if let Some(message) = crate::terrain::scatter::cost_error(plan, self.lod) {
@@ -141,6 +150,14 @@ impl ExportSpec {
             return err(
                 "formats",
                 "tiles need at least one of json, bin, png, glb".into(),
+            );
+        }
+        if self.products.contains(&Product::Ptex)
+            && !self.ptex_res.is_some_and(crate::ptex::valid_res)
+        {
+            return err(
+                "ptex_res",
+                "ptex needs ptex_res, a power of two in 8..=256".into(),
             );
         }
         for f in &self.formats {
@@ -209,9 +226,26 @@ pub fn members(
                 format!("scatter/{}/{}/{}.json", k.lod, k.x, k.z),
                 encode::scatter::encode(plan, tile),
             )),
+            Product::Ptex => out.push((
+                format!("ptex/{}/{}/{}.ptx", k.lod, k.x, k.z),
+                ptx_member(plan, tile, spec.ptex_res.unwrap_or(crate::ptex::MIN_RES)),
+            )),
         }
     }
     Ok(out)
+}
+
+/// The `.ptx` of a tile's 4 × 4 Ptex faces at `res`: their interiors, a function of the tile
+/// alone, are the HTTP pages' interior texels; adjacency within the tile.
+pub fn ptx_member(plan: &WorldPlan, tile: &Tile, res: u32) -> Vec<u8> {
+    use crate::ptex::face::TileFacePlan;
+    let faces = TileFacePlan::new(tile.key, [false; 4], plan.lods.len() as u32 - 1);
+    let mats = crate::ptex::MaterialSet::default_ground(plan.seed);
+    let mut set = faces.build(|t| (t == tile.key).then_some(tile), &mats);
+    set.output = set.faces.len();
+    let mut pages = crate::ptex::Pages::default();
+    crate::ptex::bake_interior(&set, &mats, res, &mut pages);
+    encode::ptx::write(&pages, &encode::ptx::adjacency(&set))
 }
 
 /// Manifest entry of one member.
@@ -325,6 +359,7 @@ mod tests {
             z1: 2,
             products: vec![Product::Tiles, Product::Scatter],
             formats: vec!["bin".into(), "png".into()],
+            ptex_res: None,
         }
     }
 

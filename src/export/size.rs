@@ -114,8 +114,28 @@ pub fn tile_bound(plan: &WorldPlan, spec: &ExportSpec) -> u64 {
                 .map(|f| member(tile_member_bound(plan, f)))
                 .sum(),
             Product::Scatter => member(scatter_member_bound(plan, spec.lod)),
+            Product::Ptex => member(ptx_member_bound(
+                spec.ptex_res.unwrap_or(crate::ptex::MIN_RES),
+            )),
         })
         .sum()
+}
+
+/// Upper bound of a tile's `.ptx` at `res` ([`crate::encode::ptx`]): its fixed blocks and every
+/// zlib block's data (16 faces, 8 `f32` channels, every level) with deflate's worst-case growth
+/// (stored blocks: 5 bytes per 65,535, plus the zlib header and checksum, bounded by 1/1000 + 64
+/// bytes a block).
+pub fn ptx_member_bound(res: u32) -> u64 {
+    let faces = (crate::ptex::TILE_FACES * crate::ptex::TILE_FACES) as u64;
+    let levels = u64::from(res.max(1).trailing_zeros()) + 1;
+    let mut raw = faces * (20 + 4 * crate::encode::ptx::CHANNELS as u64);
+    let mut blocks = 2;
+    for l in 0..levels {
+        let side = u64::from(res >> l);
+        raw += faces * (4 * crate::encode::ptx::CHANNELS as u64 * side * side + 4);
+        blocks += faces + 1;
+    }
+    104 + 16 * levels + 8 + raw + raw / 1000 + 64 * blocks
 }
 
 /// Upper bound of the archive of `shard` of `spec` (a validated spec), bytes.

@@ -60,6 +60,7 @@ pub mod jobs;
 mod kit;
 pub mod layout;
 pub mod poisson;
+pub mod ptex;
 mod scopes;
 pub mod tile;
 pub mod volume;

@@ -27,8 +27,8 @@ use crate::scene::Rect;
 use crate::subsurface::carve::mesh_world_chunk;
 use crate::terrain::{TileKey, WorldPlan};
 use crate::volume::chunk::{
-    gather_columns, max_chunk_xz, max_chunk_y, tiles_needed, ChunkKey, TileColumns, CHUNK_CELLS,
-    MAX_CHUNK_LOD,
+    gather_columns, max_chunk_xz, max_chunk_y, tiles_needed, ChunkKey, ChunkMesh, TileColumns,
+    CHUNK_CELLS, MAX_CHUNK_LOD,
 };
 use crate::volume::mesh::QuadMesh;
 use axum::extract::State;
@@ -120,6 +120,62 @@ fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
     )
 }
 
+/// Meshes chunk `key` of the world `view` (its tiles through the stage cache, its strata and
+/// volume elements), on the blocking pool; the caller holds the synthesis slot.
+pub(super) async fn mesh(
+    st: &AppState,
+    view: &Arc<WorldView>,
+    key: ChunkKey,
+) -> Result<ChunkMesh, AppError> {
+    let mut tiles = Vec::new();
+    for (tx, tz) in tiles_needed(key) {
+        let tk = TileKey {
+            lod: key.lod,
+            x: tx,
+            z: tz,
+        };
+        tiles.push(((tx, tz), st.tile(view, tk, [false; 4]).await));
+    }
+    let plan = &view.plan;
+    let spacing_m = plan.lods[key.lod as usize].spacing_m;
+    let strata = view
+        .inputs
+        .strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
+    let (lo, hi) = chunk_box(key, spacing_m);
+    let mut volumes = Vec::new();
+    for v in view.inputs.volumes_meeting(lo, hi) {
+        if let Some(solved) = st.volumes.get(st, view, &v).await {
+            volumes.push(solved);
+        }
+    }
+    let offload = st.compute.offload();
+    tokio::task::spawn_blocking(move || {
+        let views: Vec<TileColumns<'_>> = tiles
+            .iter()
+            .map(|(t, tile)| TileColumns {
+                tile: *t,
+                heights: &tile.heights,
+                normals: &tile.normals,
+                materials: &tile.materials,
+            })
+            .collect();
+        let cols = gather_columns(key, &views)
+            .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
+        mesh_world_chunk(
+            key,
+            spacing_m,
+            &cols,
+            &volumes,
+            &strata,
+            &mut QuadMesh::default(),
+            &offload,
+        )
+        .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))
+    })
+    .await
+    .map_err(|e| AppError::internal(format!("chunk synthesis failed: {e}")))?
+}
+
 /// Meshes and encodes chunk `key` of the world `view` in one synthesis slot (the chunk route's
 /// body; the stream's chunk frames carry the same bytes).
 pub(super) async fn product(
@@ -130,64 +186,22 @@ pub(super) async fn product(
 ) -> Result<CachedProduct, AppError> {
     let state = st.clone();
     st.limited(async move {
-        let mut tiles = Vec::new();
-        for (tx, tz) in tiles_needed(key) {
-            let tk = TileKey {
-                lod: key.lod,
-                x: tx,
-                z: tz,
-            };
-            tiles.push(((tx, tz), state.tile(&view, tk, [false; 4]).await));
-        }
-        let plan = &view.plan;
-        let spacing_m = plan.lods[key.lod as usize].spacing_m;
-        let strata = view
-            .inputs
-            .strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
-        let (lo, hi) = chunk_box(key, spacing_m);
-        let mut volumes = Vec::new();
-        for v in view.inputs.volumes_meeting(lo, hi) {
-            if let Some(solved) = state.volumes.get(&state, &view, &v).await {
-                volumes.push(solved);
-            }
-        }
+        let mesh = mesh(&state, &view, key).await?;
         let info = ChunkInfo {
-            seed: plan.seed,
+            seed: view.plan.seed,
             key,
-            spacing_m,
+            spacing_m: view.plan.lods[key.lod as usize].spacing_m,
         };
-        let offload = state.compute.offload();
         tokio::task::spawn_blocking(move || {
-            let views: Vec<TileColumns<'_>> = tiles
-                .iter()
-                .map(|(t, tile)| TileColumns {
-                    tile: *t,
-                    heights: &tile.heights,
-                    normals: &tile.normals,
-                    materials: &tile.materials,
-                })
-                .collect();
-            let cols = gather_columns(key, &views)
-                .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
-            let mesh = mesh_world_chunk(
-                key,
-                spacing_m,
-                &cols,
-                &volumes,
-                &strata,
-                &mut QuadMesh::default(),
-                &offload,
-            )
-            .map_err(|e| AppError::internal(format!("chunk meshing failed: {e}")))?;
             let (body, content_type) = match format {
                 Format::Json => (encode_json(&info, &mesh), Format::Json.content_type()),
                 Format::Bin => (encode_bin(&info, &mesh), BIN_CONTENT_TYPE),
                 _ => (chunk_glb::encode(&info, &mesh), Format::Glb.content_type()),
             };
-            Ok(CachedProduct::new(body, content_type, Vec::new()))
+            CachedProduct::new(body, content_type, Vec::new())
         })
         .await
-        .map_err(|e| AppError::internal(format!("chunk synthesis failed: {e}")))?
+        .map_err(|e| AppError::internal(format!("chunk encoding failed: {e}")))
     })
     .await
 }

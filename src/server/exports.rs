@@ -76,6 +76,8 @@ struct ExportBody {
     v: Option<u64>,
     #[serde(default)]
     shard: Option<String>,
+    #[serde(default)]
+    ptex_res: Option<u32>,
 }
 
 fn invalid(field: &'static str, message: impl Into<String>) -> AppError {
@@ -92,6 +94,7 @@ fn pointer(spec_field: &str) -> &'static str {
         "z1" => "/region/3",
         "products" => "/products",
         "formats" => "/formats",
+        "ptex_res" => "/ptex_res",
         _ => "body",
     }
 }
@@ -160,6 +163,7 @@ async fn create(
         z1,
         products: req.products,
         formats: req.formats,
+        ptex_res: req.ptex_res,
     };
     let view = st.worlds.view(&meta, version).await?;
     let plan = view.plan.clone();

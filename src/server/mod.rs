@@ -46,6 +46,7 @@ pub mod metrics;
 pub mod overrun;
 pub mod params;
 mod plans;
+pub mod ptex_routes;
 pub mod rate_limit;
 pub mod region_io;
 pub mod regions;

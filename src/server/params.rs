@@ -149,7 +149,7 @@ pub fn check_bounds(plan: &WorldPlan, key: TileKey) -> Result<(), AppError> {
 
 /// Decodes `%XX` escapes and `+` (as a space, form style); `None` if an escape is malformed or the
 /// result is not UTF-8.
-fn percent_decode(s: &str) -> Option<String> {
+pub(super) fn percent_decode(s: &str) -> Option<String> {
     let b = s.as_bytes();
     let mut out = Vec::with_capacity(b.len());
     let mut i = 0;

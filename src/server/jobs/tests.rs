@@ -13,6 +13,7 @@ fn spec(x1: i64) -> ExportSpec {
         z1: 1,
         products: vec![Product::Tiles],
         formats: vec!["bin".into()],
+        ptex_res: None,
     }
 }
 

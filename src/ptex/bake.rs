@@ -1,0 +1,306 @@
+//! The §4.7 bake of a face's texels (the CPU reference of `shaders/ptex.wgsl`).
+//!
+//! For texel `(i, j)` of a face at resolution `res` (centre `uv = ((i + ½)/res, (j + ½)/res)`):
+//!
+//! 1. **Interpolation.** Bilinear in the face's control grid: position `p`, normal `n`
+//!    (normalised; `+Y` when it vanishes), noise amplitude `a`, and the weight of each material
+//!    id among the four surrounding samples (equal ids merged, in corner order `00, 10, 01, 11`).
+//! 2. **Octave cut.** A texel is `τ = size_m/res` metres; octaves of frequency above `1/(2τ)`
+//!    are left out (the finest is `kmax = ⌊log2(1/(2τ))⌋`), so a coarse page is the filtered
+//!    version of a fine one rather than its alias.
+//! 3. **Displacement** `D(q) = a·fbm3(q) + Σₘ bₘ Σ_axis w_axis(n)·reliefₘ(q)`: the world-space
+//!    noise of the [`MaterialSet`] plus the materials' relief, projected tri-planarly with the
+//!    weights `w_axis = n_axis⁴ / Σ n⁴` of the interpolated normal.
+//! 4. **Displaced normal.** With the tangent frame `t₁ = normalize(h × n)`, `t₂ = n × t₁` (`h` =
+//!    `+Y`, or `+X` where `|n_y| ≥ 0.9`) and the step `δ = τ/2`: `n' = normalize(n − g₁t₁ −
+//!    g₂t₂)`, `gₖ = (D(p + δtₖ) − D(p))/δ`.
+//! 5. **Tri-planar blend** with the displaced normal's weights `w(n')`: albedo and roughness of
+//!    each material's pattern on the three projection planes (X: `(y, z)`, Y: `(z, x)`, Z:
+//!    `(x, y)`), weighted by `bₘ·w_axis(n')`.
+//! 6. **Quantisation**: `⌊255·clamp(x, 0, 1) + ½⌋` for albedo and roughness, `⌊127·clamp(n, −1,
+//!    1) + ½⌋` as a signed byte for the normal, the dominant material id (largest `bₘ`, the
+//!    lower id on a tie), `D(p)` as `f32` metres.
+//!
+//! Every input is an `f32` function of the face; no state, no order dependence: the same face
+//! gives the same bytes in any set, on any thread.
+
+use super::border::fill_borders;
+use super::face::{Face, FaceSet};
+use super::material::MaterialSet;
+use super::noise::{exp2i, fbm2, fbm3, octave_count, MAX_FREQ_LOG2, MIN_FREQ_LOG2};
+use super::pages::Pages;
+use rayon::prelude::*;
+
+/// Bakes every face of `set` at `res` into `out` (interiors, then borders), keeping only the
+/// set's output faces.
+pub fn bake(set: &FaceSet, mats: &MaterialSet, res: u32, out: &mut Pages) {
+    bake_interior(set, mats, res, out);
+    fill_borders(set, out);
+    out.truncate(set.output);
+}
+
+/// Bakes the interior texels of every face of `set` at `res` into `out` (reset to the set's
+/// faces; borders left zero).
+pub fn bake_interior(set: &FaceSet, mats: &MaterialSet, res: u32, out: &mut Pages) {
+    out.reset(res, set.faces.len());
+    let per = out.texels_per_face();
+    let side = out.side();
+    let r = res as usize;
+    out.albedo
+        .par_chunks_mut(per)
+        .zip(out.normal.par_chunks_mut(per))
+        .zip(out.displacement.par_chunks_mut(per))
+        .enumerate()
+        .for_each(|(f, ((alb, nrm), disp))| {
+            for j in 0..r {
+                for i in 0..r {
+                    let t = texel(set, mats, f, res, i as u32, j as u32);
+                    let k = (j + 1) * side + i + 1;
+                    alb[k] = t.albedo;
+                    nrm[k] = t.normal;
+                    disp[k] = t.displacement;
+                }
+            }
+        });
+}
+
+/// One baked texel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Texel {
+    /// Albedo and roughness bytes.
+    pub albedo: [u8; 4],
+    /// Normal bytes and dominant material.
+    pub normal: [u8; 4],
+    /// Displacement, metres.
+    pub displacement: f32,
+}
+
+/// The finest octave exponent for a texel of `texel_m` metres: the largest `k` with
+/// `2^k·texel_m ≤ ½` (at most [`MAX_FREQ_LOG2`], at least `MIN_FREQ_LOG2 − 1`).
+pub fn finest_octave(texel_m: f32) -> i32 {
+    let mut k = MAX_FREQ_LOG2;
+    while k >= MIN_FREQ_LOG2 && exp2i(k) * texel_m > 0.5 {
+        k -= 1;
+    }
+    k
+}
+
+/// The per-face constants of a bake at `res`: `(kmax, δ)`.
+pub fn face_constants(face: &Face, res: u32) -> (i32, f32) {
+    let texel_m = face.size_m / res as f32;
+    (finest_octave(texel_m), texel_m * 0.5)
+}
+
+fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// `v/|v|`, or `fallback` when `|v|²` is below `1e-20`.
+fn normalize_or(v: [f32; 3], fallback: [f32; 3]) -> [f32; 3] {
+    let l2 = dot(v, v);
+    if l2 < 1e-20 {
+        return fallback;
+    }
+    let inv = 1.0 / l2.sqrt();
+    v.map(|c| c * inv)
+}
+
+/// Tri-planar weights `n_a⁴ / Σ n⁴`.
+fn triplanar(n: [f32; 3]) -> [f32; 3] {
+    let a = n.map(|c| {
+        let c2 = c * c;
+        c2 * c2
+    });
+    let s = a[0] + a[1] + a[2];
+    let inv = 1.0 / s;
+    a.map(|c| c * inv)
+}
+
+/// The projection plane `axis` of a point: `(y, z)`, `(z, x)`, `(x, y)`.
+fn plane<T: Copy>(v: [T; 3], axis: usize) -> [T; 2] {
+    [v[(axis + 1) % 3], v[(axis + 2) % 3]]
+}
+
+/// The pattern `t ∈ [0, 1]` of material `m` at `q` on plane `axis`.
+fn pattern(
+    mats: &MaterialSet,
+    m: usize,
+    anchor: [i32; 3],
+    q: [f32; 3],
+    axis: usize,
+    kmax: i32,
+) -> f32 {
+    let mat = &mats.materials[m];
+    let count = octave_count(mat.freq_log2, mat.octaves, kmax);
+    let seed = mats.seeds[m].wrapping_add(256 * axis as u32);
+    let v = fbm2(
+        plane(anchor, axis),
+        plane(q, axis),
+        mat.freq_log2,
+        count,
+        seed,
+    );
+    (0.5 + 0.5 * v).clamp(0.0, 1.0)
+}
+
+/// The interpolated inputs of a texel.
+struct Point {
+    p: [f32; 3],
+    n: [f32; 3],
+    amp: f32,
+    /// Merged material indices and weights, `count` of them.
+    ids: [usize; 4],
+    weights: [f32; 4],
+    count: usize,
+}
+
+fn interpolate(set: &FaceSet, mats: &MaterialSet, face: &Face, u: f32, v: f32) -> Point {
+    let n = face.n;
+    let last = (n - 2) as f32;
+    let gu = u * (n - 1) as f32;
+    let gv = v * (n - 1) as f32;
+    let cu = gu.floor().min(last);
+    let cv = gv.floor().min(last);
+    let (fu, fv) = (gu - cu, gv - cv);
+    let base = face.first as usize + cv as usize * n as usize + cu as usize;
+    let s = [
+        set.samples[base],
+        set.samples[base + 1],
+        set.samples[base + n as usize],
+        set.samples[base + n as usize + 1],
+    ];
+    let w = [
+        (1.0 - fu) * (1.0 - fv),
+        fu * (1.0 - fv),
+        (1.0 - fu) * fv,
+        fu * fv,
+    ];
+    let mix3 = |get: &dyn Fn(usize) -> [f32; 3]| -> [f32; 3] {
+        std::array::from_fn(|c| {
+            w[0] * get(0)[c] + w[1] * get(1)[c] + w[2] * get(2)[c] + w[3] * get(3)[c]
+        })
+    };
+    let p = mix3(&|k| s[k].position);
+    let nn = mix3(&|k| s[k].normal);
+    let amp = w[0] * s[0].noise_m + w[1] * s[1].noise_m + w[2] * s[2].noise_m + w[3] * s[3].noise_m;
+    let mut out = Point {
+        p,
+        n: normalize_or(nn, [0.0, 1.0, 0.0]),
+        amp,
+        ids: [0; 4],
+        weights: [0.0; 4],
+        count: 0,
+    };
+    for k in 0..4 {
+        let id = mats.index(s[k].material);
+        match out.ids[..out.count].iter().position(|&x| x == id) {
+            Some(at) => out.weights[at] += w[k],
+            None => {
+                out.ids[out.count] = id;
+                out.weights[out.count] = w[k];
+                out.count += 1;
+            }
+        }
+    }
+    out
+}
+
+/// `D(q)` with the geometric tri-planar weights `wg`.
+fn displacement(
+    mats: &MaterialSet,
+    pt: &Point,
+    anchor: [i32; 3],
+    q: [f32; 3],
+    wg: [f32; 3],
+    kmax: i32,
+) -> f32 {
+    let count = octave_count(mats.noise_freq_log2, mats.noise_octaves, kmax);
+    let mut d = pt.amp * fbm3(anchor, q, mats.noise_freq_log2, count, mats.noise_seed);
+    for m in 0..pt.count {
+        let id = pt.ids[m];
+        let relief = mats.materials[id].relief_m;
+        let mut r = 0.0f32;
+        for (axis, w) in wg.iter().enumerate() {
+            r += w * (pattern(mats, id, anchor, q, axis, kmax) - 0.5);
+        }
+        d += pt.weights[m] * (relief * r);
+    }
+    d
+}
+
+fn unorm8(x: f32) -> u8 {
+    (x.clamp(0.0, 1.0) * 255.0 + 0.5).floor() as u8
+}
+
+fn snorm8(x: f32) -> u8 {
+    ((x.clamp(-1.0, 1.0) * 127.0 + 0.5).floor() as i32 as i8) as u8
+}
+
+/// Bakes texel `(i, j)` of face `f` of `set` at `res`.
+pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u32) -> Texel {
+    let face = &set.faces[f];
+    let (kmax, step) = face_constants(face, res);
+    let r = res as f32;
+    let (u, v) = ((i as f32 + 0.5) / r, (j as f32 + 0.5) / r);
+    let pt = interpolate(set, mats, face, u, v);
+    let n = pt.n;
+    let helper = if n[1].abs() < 0.9 {
+        [0.0, 1.0, 0.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let t1 = normalize_or(cross(helper, n), [1.0, 0.0, 0.0]);
+    let t2 = cross(n, t1);
+    let wg = triplanar(n);
+    let a = face.anchor;
+    let at = |t: [f32; 3]| -> [f32; 3] { std::array::from_fn(|c| pt.p[c] + step * t[c]) };
+    let d0 = displacement(mats, &pt, a, pt.p, wg, kmax);
+    let d1 = displacement(mats, &pt, a, at(t1), wg, kmax);
+    let d2 = displacement(mats, &pt, a, at(t2), wg, kmax);
+    let inv = 1.0 / step;
+    let (g1, g2) = ((d1 - d0) * inv, (d2 - d0) * inv);
+    let nd = normalize_or(std::array::from_fn(|c| n[c] - g1 * t1[c] - g2 * t2[c]), n);
+    let wd = triplanar(nd);
+    let mut albedo = [0.0f32; 3];
+    let mut rough = 0.0f32;
+    let mut dominant = 0usize;
+    for m in 0..pt.count {
+        let id = pt.ids[m];
+        let mat = &mats.materials[id];
+        for (axis, w) in wd.iter().enumerate() {
+            let t = pattern(mats, id, a, pt.p, axis, kmax);
+            let k = pt.weights[m] * w;
+            for (c, a) in albedo.iter_mut().enumerate() {
+                *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
+            }
+            rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
+        }
+        let best = pt.weights[dominant];
+        if pt.weights[m] > best || (pt.weights[m] == best && id < pt.ids[dominant]) {
+            dominant = m;
+        }
+    }
+    Texel {
+        albedo: [
+            unorm8(albedo[0]),
+            unorm8(albedo[1]),
+            unorm8(albedo[2]),
+            unorm8(rough),
+        ],
+        normal: [
+            snorm8(nd[0]),
+            snorm8(nd[1]),
+            snorm8(nd[2]),
+            pt.ids[dominant] as u8,
+        ],
+        displacement: d0,
+    }
+}

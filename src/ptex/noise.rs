@@ -1,0 +1,166 @@
+//! Hashed value noise for the Ptex bake: lattice values from [`crate::terrain::hash`], quintic
+//! interpolation, octaves at power-of-two frequencies.
+//!
+//! # Exact lattice coordinates
+//!
+//! A face carries an integer anchor `A` (in units of [`ANCHOR_M`] = 256 m) and its sample
+//! positions `p` relative to `A·256 m`, as `f32`. An octave of frequency `f = 2^k` cycles per
+//! metre (`−8 ≤ k ≤ 8`) reads the lattice at `A·256·f + p·f`: the first term is an integer
+//! (computed with wrapping `i32` arithmetic), the second a product by a power of two, exact in
+//! `f32`. So the lattice cell and the fraction inside it are the same bits on every device, and
+//! the WGSL twin (`shaders/ptex.wgsl`) differs from this reference only in the rounding of the
+//! interpolation arithmetic.
+
+use crate::terrain::hash::{mix32, PRIME_X, PRIME_Z};
+
+/// The unit of face anchors, metres (a power of two, so anchors times any octave frequency of
+/// at least `1/256` cycles per metre are integers).
+pub const ANCHOR_M: f64 = 256.0;
+/// Odd multiplier that spreads the y lattice coordinate.
+pub const PRIME_Y: u32 = 0x9e37_79b1;
+/// Lowest octave exponent `k` (frequency `2^k` cycles per metre).
+pub const MIN_FREQ_LOG2: i32 = -8;
+/// Highest octave exponent.
+pub const MAX_FREQ_LOG2: i32 = 8;
+
+/// `2^k` as `f32` for `|k| ≤ 126`, built from its bits.
+pub fn exp2i(k: i32) -> f32 {
+    f32::from_bits(((k + 127) as u32) << 23)
+}
+
+/// Hash of a 3D lattice point.
+#[inline(always)]
+pub fn hash3(x: i32, y: i32, z: i32, seed: u32) -> u32 {
+    mix32(
+        (x as u32).wrapping_mul(PRIME_X)
+            ^ (y as u32).wrapping_mul(PRIME_Y)
+            ^ (z as u32).wrapping_mul(PRIME_Z)
+            ^ seed,
+    )
+}
+
+/// The lattice value of a hash, in `[−1, 1)`.
+#[inline(always)]
+fn value(h: u32) -> f32 {
+    (h >> 8) as f32 * (1.0 / 8_388_608.0) - 1.0
+}
+
+/// Quintic fade `t³(6t² − 15t + 10)`.
+#[inline(always)]
+pub fn fade(t: f32) -> f32 {
+    t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+}
+
+#[inline(always)]
+fn lerp(a: f32, b: f32, t: f32) -> f32 {
+    a + (b - a) * t
+}
+
+/// The integer lattice offset `A·256·2^k` of anchor component `a` (wrapping).
+#[inline(always)]
+pub fn anchor_lattice(a: i32, k: i32) -> i32 {
+    // 256·2^k = 2^(8 + k) with 8 + k ≥ 0 for k ≥ MIN_FREQ_LOG2.
+    a.wrapping_mul(1i32.wrapping_shl((8 + k) as u32))
+}
+
+/// Splits `x` into its lattice cell (plus `base`) and the fraction inside it.
+#[inline(always)]
+fn cell(base: i32, x: f32) -> (i32, f32) {
+    let fl = x.floor();
+    (base.wrapping_add(fl as i32), x - fl)
+}
+
+/// 3D value noise at `base + x` (lattice units), in `[−1, 1]`.
+pub fn value3(base: [i32; 3], x: [f32; 3], seed: u32) -> f32 {
+    let (ix, fx) = cell(base[0], x[0]);
+    let (iy, fy) = cell(base[1], x[1]);
+    let (iz, fz) = cell(base[2], x[2]);
+    let (u, v, w) = (fade(fx), fade(fy), fade(fz));
+    let c = |dx: i32, dy: i32, dz: i32| {
+        value(hash3(
+            ix.wrapping_add(dx),
+            iy.wrapping_add(dy),
+            iz.wrapping_add(dz),
+            seed,
+        ))
+    };
+    let x00 = lerp(c(0, 0, 0), c(1, 0, 0), u);
+    let x10 = lerp(c(0, 1, 0), c(1, 1, 0), u);
+    let x01 = lerp(c(0, 0, 1), c(1, 0, 1), u);
+    let x11 = lerp(c(0, 1, 1), c(1, 1, 1), u);
+    lerp(lerp(x00, x10, v), lerp(x01, x11, v), w)
+}
+
+/// 2D value noise at `base + x` (lattice units), in `[−1, 1]` (the 3D lattice at `z = 0`).
+pub fn value2(base: [i32; 2], x: [f32; 2], seed: u32) -> f32 {
+    let (ix, fx) = cell(base[0], x[0]);
+    let (iy, fy) = cell(base[1], x[1]);
+    let (u, v) = (fade(fx), fade(fy));
+    let c = |dx: i32, dy: i32| value(hash3(ix.wrapping_add(dx), iy.wrapping_add(dy), 0, seed));
+    lerp(lerp(c(0, 0), c(1, 0), u), lerp(c(0, 1), c(1, 1), u), v)
+}
+
+/// The octaves `k0, k0 + 1, …` of a sum, at most `octaves` of them and none above `kmax`.
+pub fn octave_count(k0: i32, octaves: u32, kmax: i32) -> u32 {
+    let room = (kmax.min(MAX_FREQ_LOG2) - k0 + 1).max(0) as u32;
+    octaves.min(room)
+}
+
+/// Fractal sum of 3D value noise at `anchor·256 m + p`: octave `o` has frequency `2^(k0 + o)`
+/// and amplitude `2^−o`, for `o < count`. Range `±(2 − 2^(1 − count))`.
+pub fn fbm3(anchor: [i32; 3], p: [f32; 3], k0: i32, count: u32, seed: u32) -> f32 {
+    let mut sum = 0.0f32;
+    for o in 0..count {
+        let k = k0 + o as i32;
+        let f = exp2i(k);
+        let base = anchor.map(|a| anchor_lattice(a, k));
+        let x = p.map(|c| c * f);
+        sum += exp2i(-(o as i32)) * value3(base, x, seed.wrapping_add(o));
+    }
+    sum
+}
+
+/// Fractal sum of 2D value noise at `anchor·256 m + p` (the 2D analogue of [`fbm3`]).
+pub fn fbm2(anchor: [i32; 2], p: [f32; 2], k0: i32, count: u32, seed: u32) -> f32 {
+    let mut sum = 0.0f32;
+    for o in 0..count {
+        let k = k0 + o as i32;
+        let f = exp2i(k);
+        let base = anchor.map(|a| anchor_lattice(a, k));
+        let x = p.map(|c| c * f);
+        sum += exp2i(-(o as i32)) * value2(base, x, seed.wrapping_add(o));
+    }
+    sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_anchor_shift_reads_the_same_lattice_as_the_local_offset() {
+        // The same world point, once as anchor 1 + p and once as anchor 0 + (p + 256 m).
+        for k in [-3, 0, 2] {
+            let count = 3;
+            let p = [3.25f32, 1.5, -7.75];
+            let a = fbm3([1, 0, 0], p, k, count, 9);
+            let b = fbm3([0, 0, 0], [p[0] + 256.0, p[1], p[2]], k, count, 9);
+            assert_eq!(a.to_bits(), b.to_bits(), "k = {k}");
+        }
+    }
+
+    #[test]
+    fn noise_is_continuous_and_bounded() {
+        let mut prev = value3([0; 3], [0.0, 0.3, 0.7], 4);
+        for i in 1..2000 {
+            let x = i as f32 * 0.001;
+            let v = value3([0; 3], [x, 0.3, 0.7], 4);
+            assert!(v.abs() <= 1.0);
+            assert!((v - prev).abs() < 0.01, "step at {x}");
+            prev = v;
+        }
+        assert_eq!(octave_count(-2, 4, 0), 3);
+        assert_eq!(octave_count(2, 4, 0), 0);
+        assert_eq!(exp2i(-3), 0.125);
+    }
+}
