@@ -1,5 +1,8 @@
 //! Issue 18's probe, replayed against the real binary: the findings about cost (1, 2 and 4) get
-//! their bounded answers, and the server's resident set stays within its memory budget.
+//! their bounded answers, and the server's resident set stays within its memory budget. And, in
+//! process with a short synthesis timeout: no work continues after a timeout
+//! (`strata_work_after_cancel` on `/metrics` back to 0, every abandoned computation stopped at
+//! a check of its flag, none run to its end).
 //!
 //! The other findings are replayed where their fix is tested:
 //! 2 (scatter burning CPU) also `tests/rate_limit.rs` (the expensive routes' rate limits);
@@ -16,8 +19,14 @@
 
 mod common;
 
+use axum::http::{Method, StatusCode};
+use common::oneshot::{post_json, send};
 use common::raw::{get, request};
 use serde_json::{json, Value};
+use std::time::{Duration, Instant};
+use strata::compute::Compute;
+use strata::server::{app, AppState, Limits};
+use strata::terrain::{TileKey, WorldParams, WorldPlan};
 
 /// Resident set of process `pid`, MiB.
 fn rss_mib(pid: u32) -> u64 {
@@ -137,5 +146,100 @@ fn the_cost_findings_get_bounded_answers_and_memory_stays_within_the_budget() {
     assert!(
         rss <= budget_mib,
         "resident set {rss} MiB after the findings' requests; the budget is {budget_mib} MiB"
+    );
+}
+
+/// The value of the metric line `name` (with its labels) in `/metrics` of `router`.
+async fn metric(router: &axum::Router, name: &str) -> f64 {
+    let reply = send::<&str>(router, Method::GET, "/metrics", &[], None).await;
+    let text = String::from_utf8_lossy(&reply.body).to_string();
+    text.lines()
+        .find_map(|l| l.strip_prefix(name)?.strip_prefix(' ')?.trim().parse().ok())
+        .unwrap_or_else(|| panic!("{name} missing from /metrics"))
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn no_work_continues_after_a_timeout() {
+    let limits = Limits {
+        synthesis_timeout: Duration::from_millis(100),
+        ..Limits::default()
+    };
+    let st = AppState::with_limits(Compute::cpu(), limits);
+    let router = app(st.clone());
+    // A world whose tiles 4 km out wait for the heaviest authored region a scene accepts (1025²
+    // samples, erosion with the rest of its work budget: about a second of one core) and whose
+    // chunks at the origin wait for a volume region (the arch, on the ground there).
+    let plan = WorldPlan::new(42, WorldParams::default()).expect("default world");
+    let ground =
+        strata::terrain::tile::synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 }).heights[0];
+    // The arch at half a metre: about 1.2 million samples, a solve of seconds.
+    let mut arch = common::arch::arch_element(ground);
+    arch["spacing_m"] = json!(0.5);
+    let scene = json!({
+        "regions": [{"id": "heavy", "bbox": {"min": [4096.0, 4096.0], "max": [8192.0, 8192.0]},
+            "samples": 1025, "ops": [
+                {"op": "amplify", "center": [6144.0, 6144.0], "radius_m": 1500.0, "factor": 1.5},
+                {"op": "erosion", "center": [6144.0, 6144.0], "radius_m": 2000.0, "iterations": 30}]}],
+        "volumes": [arch]});
+    let created = post_json(
+        &router,
+        "/v1/worlds",
+        None,
+        &json!({"seed": 42, "public": true, "scene": scene}),
+    )
+    .await;
+    created.status_is(StatusCode::CREATED);
+    let id = created.json()["id"].as_str().expect("id").to_string();
+    let y = (ground / 32.0).floor() as i64;
+    // The arch's chunk reads the tiles of its column first: a server sharing the caches, with
+    // the default time limit, caches them by meshing a chunk of that column above the arch.
+    let mut patient = AppState::new(Compute::cpu());
+    patient.worlds = st.worlds.clone();
+    patient.cache = st.cache.clone();
+    patient.volumes = st.volumes.clone();
+    send::<&str>(
+        &app(patient),
+        Method::GET,
+        &format!("/v1/worlds/{id}/chunks/0/0/{}/0.bin", y + 4),
+        &[],
+        None,
+    )
+    .await
+    .ok();
+    assert_eq!(
+        st.volumes.size().0,
+        0,
+        "the chunk above the arch solved no volume"
+    );
+    for uri in [
+        format!("/v1/worlds/{id}/tiles/0/96/96.bin"),
+        format!("/v1/worlds/{id}/chunks/0/0/{y}/0.bin"),
+    ] {
+        let reply = send::<&str>(&router, Method::GET, &uri, &[], None).await;
+        reply.error(StatusCode::SERVICE_UNAVAILABLE, "synthesis_timeout", None);
+    }
+    // Both solves were abandoned; each stops at its next check of its flag.
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while metric(&router, "strata_work_after_cancel").await > 0.0 {
+        assert!(
+            Instant::now() < deadline,
+            "abandoned work still running 20 s after its requests timed out"
+        );
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    assert_eq!(st.regions.running() + st.volumes.running(), 0);
+    assert_eq!(
+        metric(&router, "strata_synthesis_timeouts_total").await,
+        2.0
+    );
+    assert_eq!(
+        metric(&router, "strata_work_after_cancel_total{end=\"stopped\"}").await,
+        2.0,
+        "the region's and the volume's solves stopped at a check"
+    );
+    assert_eq!(
+        metric(&router, "strata_work_after_cancel_total{end=\"finished\"}").await,
+        0.0,
+        "no abandoned computation ran to its end"
     );
 }

@@ -18,6 +18,7 @@ use strata::encode::ptex::{encode, PackInfo, PackKind};
 use strata::export::{members, ExportSpec, Product};
 use strata::ptex::face::TileFacePlan;
 use strata::ptex::{bake, MaterialSet, Pages};
+use strata::server::ptex_routes::MAX_REQUEST_TEXELS;
 use strata::server::{app, AppState};
 use strata::terrain::tile::{synthesize, TileKey};
 use strata::terrain::world::WorldParams;
@@ -172,13 +173,61 @@ async fn chunk_pages_have_a_face_per_quad_and_big_bakes_are_refused_before_bakin
             json["classes"][q].as_u64().expect("class")
         );
     }
-    // 256² texels per face for every quad is over the budget: refused, naming res.
-    get(&app, &format!("/v1/seeds/{SEED}/ptex/0/0/{y}/0?res=256"))
-        .await
-        .error(StatusCode::BAD_REQUEST, "ptex_too_large", Some("res"));
+    // 128² texels per face for every quad is over the budget: refused, naming res, the limit
+    // and the largest res that fits.
+    let too_big = get(&app, &format!("/v1/seeds/{SEED}/ptex/0/0/{y}/0?res=128")).await;
+    too_big.error(StatusCode::BAD_REQUEST, "ptex_too_large", Some("res"));
+    let message = too_big.json()["error"]["message"]
+        .as_str()
+        .expect("message")
+        .to_string();
+    let fits = (0..6)
+        .map(|k| 128u64 >> k)
+        .find(|r| r * r * u64::from(quads) <= MAX_REQUEST_TEXELS)
+        .expect("some res fits");
+    assert!(
+        message.contains(&MAX_REQUEST_TEXELS.to_string())
+            && message.contains(&format!("res {fits} fits")),
+        "{message}"
+    );
     get(&app, &format!("/v1/seeds/{SEED}/ptex/4/0/0/0?res=8"))
         .await
         .error(StatusCode::BAD_REQUEST, "lod_out_of_range", Some("lod"));
+}
+
+#[tokio::test]
+async fn a_tile_page_costs_at_most_the_stated_texels_and_info_states_the_limits() {
+    let app = app(AppState::new(Compute::cpu()));
+    let info = get(&app, "/v1/info").await;
+    info.ok();
+    let limits = &info.json()["limits"];
+    assert_eq!(limits["max_ptex_texels"], MAX_REQUEST_TEXELS);
+    assert_eq!(MAX_REQUEST_TEXELS, 1 << 20);
+    assert!(limits["ptex_bake_threads"].as_u64().expect("threads") >= 1);
+    // A tile's 16 faces and the 16 neighbouring faces its borders read, at 256²: 2²¹ texels,
+    // refused before any work; at 128² they fit.
+    let refused = get(&app, &format!("/v1/seeds/{SEED}/ptex/tiles/0/1/1?res=256")).await;
+    refused.error(StatusCode::BAD_REQUEST, "ptex_too_large", Some("res"));
+    let message = refused.json()["error"]["message"]
+        .as_str()
+        .expect("message")
+        .to_string();
+    assert!(
+        message.contains("32 faces")
+            && message.contains("2097152")
+            && message.contains("1048576")
+            && message.contains("res 128 fits"),
+        "{message}"
+    );
+    let pages = get(&app, &format!("/v1/seeds/{SEED}/ptex/tiles/0/1/1?res=128")).await;
+    pages.ok();
+    assert_eq!(
+        (u32_at(&pages.body, 48), u32_at(&pages.body, 52)),
+        (128, 16)
+    );
+    let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
+    let key = TileKey { lod: 0, x: 1, z: 1 };
+    assert_eq!(pages.body, library_tile_pack(&plan, key, 128));
 }
 
 /// A `.ptx` file as the specification describes it.

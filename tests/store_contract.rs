@@ -9,8 +9,8 @@ use serde_json::{json, Value};
 use std::sync::Arc;
 use strata::scene::{Dirty, Rect};
 use strata::store::{
-    hash_token, new_world_id, JobRecord, JobUpdate, NewWorld, PostgresStore, Role, SceneStore,
-    SqliteStore, StoreError, TokenGrant, SNAPSHOT_EVERY,
+    hash_token, new_world_id, Admission, JobQuota, JobRecord, JobUpdate, NewWorld, PostgresStore,
+    Role, SceneStore, SqliteStore, StoreError, TokenGrant, SNAPSHOT_EVERY,
 };
 
 /// Where a contract test's store lives; [`Backend::open`] may be called again to reopen it.
@@ -64,6 +64,8 @@ contract!(
     the_edit_log_pages_by_version,
     export_jobs_are_kept_and_updated_only_by_their_owner,
     a_stale_export_job_is_claimed_by_exactly_one_replica,
+    admissions_count_every_stored_job_and_racing_ones_take_the_room_once,
+    done_jobs_expire_once_whoever_asks,
 );
 
 fn patch(v: Value) -> json_patch::Patch {
@@ -518,4 +520,124 @@ async fn a_stale_export_job_is_claimed_by_exactly_one_replica(backend: Backend) 
         store.job(&live.id).await.expect("job").map(|r| r.owner),
         Some("alive".into())
     );
+}
+
+/// Admission counts every stored job (queued and running at their bound, done at their bytes,
+/// failed at nothing), per world and in all, and the queued ones; of eight admissions racing
+/// on their own connections for room for two, exactly two are stored.
+async fn admissions_count_every_stored_job_and_racing_ones_take_the_room_once(backend: Backend) {
+    let store = backend.open().await;
+    let (w, other) = (world(&*store).await, world(&*store).await);
+    let sized = |id: &str, world: &str, reserved: u64| JobRecord {
+        reserved,
+        ..job(&id.repeat(16), world, "o", 1_000, 1)
+    };
+    let quota = JobQuota {
+        world_bytes: 1_000,
+        disk_bytes: 1_500,
+        max_queued: 4,
+    };
+    // A done job at its bytes, a failed one at nothing, a running one at its bound.
+    for (id, status, bytes, finished) in
+        [("d1", "done", 300, Some(50)), ("f1", "failed", 0, Some(60))]
+    {
+        let r = sized(id, &w, 700);
+        assert_eq!(store.admit_job(&r, &quota).await, Ok(Admission::Admitted));
+        let end = JobUpdate {
+            status: status.into(),
+            bytes,
+            finished_at: finished,
+            ..progress(status, 12, 1_000)
+        };
+        assert_eq!(store.update_job(&r.id, "o", &end).await, Ok(true));
+    }
+    assert_eq!(
+        store.admit_job(&sized("r1", &w, 400), &quota).await,
+        Ok(Admission::Admitted)
+    );
+    // The world holds 700 bytes: 301 more do not fit, and the refusal says what is held.
+    assert_eq!(
+        store.admit_job(&sized("x1", &w, 301), &quota).await,
+        Ok(Admission::OverQuota {
+            world: true,
+            used: 700,
+            oldest_done_s: Some(50)
+        })
+    );
+    // Another world: its own budget, the store's shared (700 held of 1500).
+    assert_eq!(
+        store.admit_job(&sized("x2", &other, 801), &quota).await,
+        Ok(Admission::OverQuota {
+            world: false,
+            used: 700,
+            oldest_done_s: Some(50)
+        })
+    );
+    assert_eq!(
+        store.job(&"x1".repeat(16)).await,
+        Ok(None),
+        "a refusal stores nothing"
+    );
+    // Eight racing admissions of 300 bytes in the other world: room for two (1500 - 700).
+    let mut tasks = Vec::new();
+    for k in 0..8 {
+        let s = backend.open().await;
+        let r = sized(&format!("{k}{k}"), &other, 300);
+        tasks.push(tokio::spawn(async move { s.admit_job(&r, &quota).await }));
+    }
+    let mut admitted = 0;
+    for t in tasks {
+        match t.await.expect("task").expect("admit") {
+            Admission::Admitted => admitted += 1,
+            Admission::OverQuota { world: false, .. } => {}
+            refused => panic!("unexpected {refused:?}"),
+        }
+    }
+    assert_eq!(admitted, 2);
+    // Four queued (r1 and the two admitted count; one more makes four): the fifth waits.
+    let small = JobQuota {
+        disk_bytes: u64::MAX,
+        world_bytes: u64::MAX,
+        ..quota
+    };
+    assert_eq!(
+        store.admit_job(&sized("q1", &w, 1), &small).await,
+        Ok(Admission::Admitted)
+    );
+    assert_eq!(
+        store.admit_job(&sized("q2", &w, 1), &small).await,
+        Ok(Admission::TooMany { queued: 4 })
+    );
+}
+
+/// Done jobs finished at or before the cut become expired, each reported to one caller only;
+/// others keep their status.
+async fn done_jobs_expire_once_whoever_asks(backend: Backend) {
+    let store = backend.open().await;
+    let w = world(&*store).await;
+    for (id, status, finished) in [
+        ("e1", "done", 100),
+        ("e2", "done", 200),
+        ("e3", "failed", 50),
+    ] {
+        let r = job(&id.repeat(16), &w, "o", 1_000, 1);
+        store.insert_job(&r).await.expect("insert");
+        let end = JobUpdate {
+            status: status.into(),
+            finished_at: Some(finished),
+            ..progress(status, 12, 1_000)
+        };
+        assert_eq!(store.update_job(&r.id, "o", &end).await, Ok(true));
+    }
+    let other = backend.open().await;
+    assert_eq!(other.expire_jobs(150).await, Ok(vec!["e1".repeat(16)]));
+    assert_eq!(store.expire_jobs(150).await, Ok(vec![]));
+    let status = |id: &str| {
+        let s = store.clone();
+        let id = id.repeat(16);
+        async move { s.job(&id).await.expect("job").expect("kept").status }
+    };
+    assert_eq!(status("e1").await, "expired");
+    assert_eq!(status("e2").await, "done");
+    assert_eq!(status("e3").await, "failed");
 }

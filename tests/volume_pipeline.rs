@@ -1088,3 +1088,69 @@ fn a_cancelled_solve_stops_between_stages() {
     let b = generate(&grid, &scene, &params).expect("solves");
     assert_eq!(a.surface, b.surface);
 }
+
+/// An offload that sets a flag when the anisotropic sweeps are asked of it and answers
+/// nothing, so the CPU would sweep.
+struct CancelsAtTheSweeps(strata::terrain::cancel::Cancel);
+
+impl strata::volume::offload::VolumeOffload for CancelsAtTheSweeps {
+    fn pm_sweeps(
+        &self,
+        _: [usize; 3],
+        _: &[Vec<f32>],
+        _: &[u8],
+        _: f32,
+        _: u32,
+    ) -> Option<Vec<Vec<f32>>> {
+        self.0.cancel();
+        None
+    }
+}
+
+#[test]
+fn a_cancelled_diffusion_stops_at_its_next_sweep_or_v_cycle() {
+    use strata::terrain::cancel::Cancel;
+    use strata::volume::pipeline::diffuse::{diffuse_normals, harmonic_fill_on, normalize_field};
+
+    let dims = [24, 12, 10];
+    let n = dims.iter().product::<usize>();
+    let hash = |i: usize, c: usize| ((i * 7919 + c * 104_729) % 1000) as f32 / 1000.0;
+    let chans: Vec<Vec<f32>> = (0..3)
+        .map(|c| {
+            (0..n)
+                .map(|i| [0.3, 0.9, 0.3][c] + 0.06 * (hash(i, c) - 0.5))
+                .collect()
+        })
+        .collect();
+    let fixed: Vec<u8> = (0..n).map(|i| u8::from(i % 13 == 0)).collect();
+    let p = DiffuseParams::default();
+    // Cancelled as the anisotropic sweeps start: none runs after the fill.
+    let cancel = Cancel::new();
+    let mut cut = chans.clone();
+    let hook = CancelsAtTheSweeps(cancel.clone());
+    diffuse_normals(dims, &mut cut, &fixed, &p, false, &hook, &cancel);
+    let mut want = chans.clone();
+    harmonic_fill(dims, &mut want, &fixed, &p);
+    normalize_field(&mut want, &fixed);
+    normalize_field(&mut want, &fixed);
+    assert_eq!(cut, want, "no sweep ran after the flag was set");
+    // Without the flag the sweeps run, and change the field.
+    let mut swept = chans.clone();
+    let cpu = strata::volume::offload::CpuOnly;
+    diffuse_normals(dims, &mut swept, &fixed, &p, false, &cpu, &Cancel::never());
+    assert_ne!(swept, want);
+    // A fill whose flag is set runs no V-cycle: the cascade alone.
+    let set = Cancel::new();
+    set.cancel();
+    let mut filled = chans.clone();
+    harmonic_fill_on(dims, &mut filled, &fixed, &p, &set);
+    let mut cascade = chans;
+    harmonic_fill(
+        dims,
+        &mut cascade,
+        &fixed,
+        &DiffuseParams { vcycles: 0, ..p },
+    );
+    assert!(p.vcycles > 0);
+    assert_eq!(filled, cascade);
+}

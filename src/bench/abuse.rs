@@ -3,8 +3,10 @@
 //!
 //! 1. **Worst case per route.** One request per product route at its limits (the finest and the
 //!    coarsest LOD, the largest sizes, a public world holding the heaviest region a scene may
-//!    accept: the most samples, erosion with the rest of its work budget), each on a server that
-//!    has cached nothing of it: the
+//!    accept: the most samples, erosion with the rest of its work budget; the Ptex pages of a
+//!    tile at the largest `res` that fits and over it, and of a chunk over its limit, then at
+//!    the largest `res` the refusal names), each on a server that has cached nothing of it (but
+//!    the chunk page at its limit, whose tiles its refusal cached): the
 //!    process CPU time the request took (the server runs in this process and nothing else does
 //!    meanwhile, so the process clock counts the request's work, its background work included,
 //!    and nothing else), its wall time and the growth of the resident set. Against
@@ -110,6 +112,7 @@ fn walking_script(prefix: &str, suffix: &str) -> String {
 }
 
 /// One route's worst case.
+#[derive(Clone)]
 struct Probe {
     name: &'static str,
     path: String,
@@ -223,6 +226,18 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
             )),
         },
         Probe {
+            name: "seed Ptex tile page, largest res (128)",
+            path: seed("/ptex/tiles/0/5/-3?res=128"),
+            anonymous: true,
+            walk: Some((seed("/ptex/tiles/0/"), "/-3?res=128".into())),
+        },
+        Probe {
+            name: "seed Ptex tile page, res 256 (over its limit)",
+            path: seed("/ptex/tiles/0/6/-3?res=256"),
+            anonymous: true,
+            walk: None,
+        },
+        Probe {
             name: "world tile over the heavy region (solves it)",
             path: w("/tiles/0/32/32.bin"),
             anonymous: true,
@@ -242,44 +257,36 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
         },
     ];
 
-    let mut worst: Option<(f64, &Probe)> = None;
+    let mut worst: Option<(f64, Probe)> = None;
     for p in &probes {
-        let (cpu0, rss0, t0) = (process_ms(), rss_bytes(), Instant::now());
-        let (status, bytes) = rt.block_on(http_get(&addr, &p.path))?;
-        let wall_ms = t0.elapsed().as_secs_f64() * 1e3;
-        // Work the request left behind (a timed-out solve, say) would still be running: wait a
-        // moment and count it too.
-        std::thread::sleep(Duration::from_millis(200));
-        let cpu_ms = process_ms() - cpu0;
-        let grew = rss_bytes() as f64 - rss0 as f64;
-        let ok = cpu_ms <= ROUTE_CPU_BUDGET_MS;
-        // A refusal names its code and field: what the limit answered.
-        let refusal = (status >= 400)
-            .then(|| serde_json::from_slice::<serde_json::Value>(&bytes).ok())
-            .flatten()
-            .map(|e| {
-                format!(
-                    " {} ({})",
-                    e["code"].as_str().unwrap_or("?"),
-                    e["field"].as_str().unwrap_or("-")
-                )
-            })
-            .unwrap_or_default();
-        if p.anonymous && p.walk.is_some() && worst.is_none_or(|(c, _)| cpu_ms > c) {
-            worst = Some((cpu_ms, p));
-        }
-        emit(
-            args,
-            json!({"bench":"abuse","figure":"route","route":p.name,"path":p.path,"status":status,
-                   "bytes":bytes.len(),"refusal":refusal.trim(),"cpu_ms":cpu_ms,"wall_ms":wall_ms,"rss_growth_mib":mib(grew),
-                   "budget_cpu_ms":ROUTE_CPU_BUDGET_MS,"meets_target":ok}),
-            format!(
-                "  {:<46} {status}  CPU {cpu_ms:>8.1} ms  wall {wall_ms:>8.1} ms  RSS {:+7.1} MiB  {}{refusal}",
-                p.name,
-                mib(grew),
-                if ok { "✓" } else { "✗ over budget" }
-            ),
-        );
+        measure(args, &rt, &addr, p, &mut worst)?;
+    }
+    // A Ptex chunk page: first over its limit (refused after meshing, naming the largest res
+    // that fits), then at that res (its tiles cached by the refusal; the bake is the cost).
+    let y = ground_chunk_y(PTEX_CHUNK_SEED)?;
+    let over = Probe {
+        name: "seed Ptex chunk page, res 256 (over its limit)",
+        path: format!("/v1/seeds/{PTEX_CHUNK_SEED}/ptex/0/0/{y}/0?res=256"),
+        anonymous: true,
+        walk: None,
+    };
+    let refusal = measure(args, &rt, &addr, &over, &mut worst)?;
+    let fits = refusal
+        .split("res ")
+        .last()
+        .and_then(|r| r.strip_suffix(" fits"))
+        .and_then(|r| r.parse::<u32>().ok());
+    if let Some(res) = fits {
+        let at_limit = Probe {
+            name: "seed Ptex chunk page, largest res that fits",
+            path: format!("/v1/seeds/{PTEX_CHUNK_SEED}/ptex/0/0/{y}/0?res={res}"),
+            anonymous: true,
+            walk: Some((
+                format!("/v1/seeds/{PTEX_CHUNK_SEED}/ptex/0/"),
+                format!("/{y}/0?res={res}"),
+            )),
+        };
+        measure(args, &rt, &addr, &at_limit, &mut worst)?;
     }
 
     // Noisy neighbours: the cached tile alone, then under the hammer.
@@ -298,6 +305,7 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
         .join()
         .map_err(|_| anyhow::anyhow!("control thread panicked"))??;
     let (_, hammer) = worst.context("no anonymous route to hammer")?;
+    let hammer = &hammer;
     let (prefix, suffix) = hammer.walk.clone().context("walk")?;
     let script = dir.join("hammer.lua");
     std::fs::write(&script, walking_script(&prefix, &suffix))?;
@@ -358,6 +366,72 @@ fn run_in(args: &BenchArgs, dir: &std::path::Path) -> anyhow::Result<()> {
         ),
     );
     Ok(())
+}
+
+/// Measures one request of `p` on the server at `addr` and prints its row; keeps in `worst`
+/// the costliest anonymous probe that can be hammered. The refusal's message, if refused.
+fn measure(
+    args: &BenchArgs,
+    rt: &tokio::runtime::Runtime,
+    addr: &str,
+    p: &Probe,
+    worst: &mut Option<(f64, Probe)>,
+) -> anyhow::Result<String> {
+    let (cpu0, rss0, t0) = (process_ms(), rss_bytes(), Instant::now());
+    let (status, bytes) = rt.block_on(http_get(addr, &p.path))?;
+    let wall_ms = t0.elapsed().as_secs_f64() * 1e3;
+    // Work the request left behind (a timed-out solve, say) would still be running: wait a
+    // moment and count it too.
+    std::thread::sleep(Duration::from_millis(200));
+    let cpu_ms = process_ms() - cpu0;
+    let grew = rss_bytes() as f64 - rss0 as f64;
+    let ok = cpu_ms <= ROUTE_CPU_BUDGET_MS;
+    // A refusal names its code and field: what the limit answered.
+    let error = (status >= 400)
+        .then(|| serde_json::from_slice::<serde_json::Value>(&bytes).ok())
+        .flatten()
+        .map(|e| e["error"].clone());
+    let refusal = error
+        .as_ref()
+        .map(|e| {
+            format!(
+                " {} ({})",
+                e["code"].as_str().unwrap_or("?"),
+                e["field"].as_str().unwrap_or("-")
+            )
+        })
+        .unwrap_or_default();
+    if p.anonymous && p.walk.is_some() && worst.as_ref().is_none_or(|(c, _)| cpu_ms > *c) {
+        *worst = Some((cpu_ms, p.clone()));
+    }
+    emit(
+        args,
+        json!({"bench":"abuse","figure":"route","route":p.name,"path":p.path,"status":status,
+               "bytes":bytes.len(),"refusal":refusal.trim(),"cpu_ms":cpu_ms,"wall_ms":wall_ms,"rss_growth_mib":mib(grew),
+               "budget_cpu_ms":ROUTE_CPU_BUDGET_MS,"meets_target":ok}),
+        format!(
+            "  {:<46} {status}  CPU {cpu_ms:>8.1} ms  wall {wall_ms:>8.1} ms  RSS {:+7.1} MiB  {}{refusal}",
+            p.name,
+            mib(grew),
+            if ok { "✓" } else { "✗ over budget" }
+        ),
+    );
+    Ok(error
+        .and_then(|e| e["message"].as_str().map(str::to_owned))
+        .unwrap_or_default())
+}
+
+/// The seed of the Ptex chunk probes; no other probe reads it.
+const PTEX_CHUNK_SEED: u64 = 9;
+
+/// The LOD-0 chunk layer `y` holding the ground at the middle of chunk column (0, 0) of `seed`,
+/// from one tile synthesised in this process (which warms the river network near it).
+fn ground_chunk_y(seed: u64) -> anyhow::Result<i64> {
+    let plan = crate::terrain::WorldPlan::new(seed, crate::terrain::WorldParams::default())
+        .map_err(|e| anyhow::anyhow!("the default world of seed {seed}: {e}"))?;
+    let tile =
+        crate::terrain::tile::synthesize(&plan, crate::terrain::TileKey { lod: 0, x: 0, z: 0 });
+    Ok((tile.heights[16 * 65 + 16] / 32.0).floor() as i64)
 }
 
 /// The process's resident set and the caches' bytes at one moment, and how many silent clients

@@ -13,8 +13,11 @@
 //! The other stages with a WGSL twin (the Poisson cycles of authored regions, the volume
 //! pipeline's diffusion, propagation and bitangents, surface nets) run inside the pure solvers,
 //! which ask the [`Offload`] of [`Compute::offload`] before computing on the CPU.
+//!
+//! Blocking work runs as a [`work::Work`], counted when it outlives the requests waiting for it.
 
 mod offload;
+pub mod work;
 
 pub use offload::Offload;
 
@@ -98,10 +101,7 @@ impl Compute {
                 }
             }
         }
-        joined(tokio::task::spawn_blocking(move || {
-            crate::terrain::tile::field(&plan, job)
-        }))
-        .await
+        work::run_to_end(move || crate::terrain::tile::field(&plan, job)).await
     }
 
     /// A finished tile, with edges snapped to coarser neighbours where `coarser` says so.
@@ -164,10 +164,7 @@ impl Compute {
             );
         }
         let started = std::time::Instant::now();
-        let t = joined(tokio::task::spawn_blocking(move || {
-            crate::edits::assemble(&plan, key, &fields, &edits)
-        }))
-        .await;
+        let t = work::run_to_end(move || crate::edits::assemble(&plan, key, &fields, &edits)).await;
         count(Stage::Finish, started);
         t
     }

@@ -90,7 +90,8 @@ pub mod code {
     /// The client (its address or its token) made more expensive requests than the rate limit
     /// allows; `field` names the limit; retry after `Retry-After` seconds.
     pub const RATE_LIMITED: &str = "rate_limited";
-    /// A Ptex bake of more than `MAX_PTEX_TEXELS` texels (`res² ×` faces); `field` is `res`.
+    /// A Ptex bake of more than `ptex_routes::MAX_REQUEST_TEXELS` texels (`res² ×` faces);
+    /// `field` is `res`.
     pub const PTEX_TOO_LARGE: &str = "ptex_too_large";
 }
 

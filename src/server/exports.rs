@@ -24,8 +24,9 @@
 //!
 //! Replicas ([`super::jobs::ledger`]): the `GET` routes answer for any job of the store, not
 //! only this process's; another replica's job is read from the store (its events polled every
-//! [`REMOTE_POLL`]) and its archive from the shared directory. The disk budgets are counted per
-//! process, over the jobs it runs.
+//! [`REMOTE_POLL`]) and its archive from the shared directory. The disk budgets and the queue
+//! limit are counted in the store, over every replica's jobs, and any replica expires any job's
+//! archive ([`super::jobs::quota`]).
 //!
 //! Disk budgets ([`super::jobs::quota`]): a job whose archive may exceed a budget is 400
 //! `export_too_large` (field `/region`); one that does not fit beside the archives already held

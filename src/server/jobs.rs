@@ -20,7 +20,10 @@
 //!
 //! Disk budgets ([`quota`]): a job is admitted only if the upper bound of its archive fits the
 //! world's and the server's budgets beside the archives already queued, running and stored, and
-//! archives are deleted [`JobLimits::max_age`] after they were finished ([`Jobs::expire`]).
+//! archives are deleted [`JobLimits::max_age`] after they were finished ([`Jobs::expire`]). With
+//! a ledger the budgets, the queue limit and the expiry are counted in the store over every
+//! replica's jobs ([`Jobs::expire_shared`]), so they hold across replicas; the newest
+//! [`MAX_FINISHED_JOBS`] finished jobs are still what each process keeps in memory.
 //!
 //! Dropping [`Jobs`] (the server shutting down, a test ending) cancels every job: queued ones
 //! fail at once, running ones at their next archive write.
@@ -508,16 +511,133 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
-        let job = self.admit(world, version, &plan, edits, spec, shard)?;
-        if let Some(ledger) = &self.ledger {
-            if let Err(e) = ledger.store.insert_job(&ledger.record(&job)).await {
-                self.forget(&job.id);
-                return Err(SubmitError::Store(e.to_string()));
+        let job = match &self.ledger {
+            Some(ledger) => {
+                self.admit_shared(ledger, world, version, &plan, edits, spec, shard)
+                    .await?
             }
-            *lock(&job.synced) = Some(Status::Queued);
-        }
+            None => self.admit(world, version, &plan, edits, spec, shard)?,
+        };
         self.start(job.clone(), plan);
         Ok(job)
+    }
+
+    /// Admits a job, without starting it, in the store of `ledger`: the budgets and the queue
+    /// limit are counted over every job the store holds, every replica's
+    /// ([`crate::store::SceneStore::admit_job`]). The oldest finished jobs beyond
+    /// [`JobLimits::max_finished`] are forgotten here, their archives left to the store's expiry.
+    #[allow(clippy::too_many_arguments)]
+    async fn admit_shared(
+        &self,
+        ledger: &Ledger,
+        world: &str,
+        version: u64,
+        plan: &WorldPlan,
+        edits: crate::edits::TileEdits,
+        spec: ExportSpec,
+        shard: Shard,
+    ) -> Result<Arc<Job>, SubmitError> {
+        let total = spec.keys(shard).len();
+        let reserved = export::size::archive_bound(plan, &spec, shard);
+        quota::too_large(reserved, &self.limits)?;
+        let id = new_job_id()?;
+        let job = Arc::new(Job {
+            path: self.dir.join(format!("{id}.tar")),
+            id: id.clone(),
+            world: world.to_string(),
+            version,
+            spec,
+            shard,
+            edits,
+            reserved,
+            stored: AtomicU64::new(0),
+            finished: OnceLock::new(),
+            finished_unix: OnceLock::new(),
+            synced: Mutex::new(Some(Status::Queued)),
+            seq: self.seq.fetch_add(1, Ordering::Relaxed),
+            state: watch::Sender::new(Progress {
+                status: Status::Queued,
+                done: 0,
+                total,
+                error: None,
+            }),
+            cancel: AtomicBool::new(false),
+        });
+        let quota = crate::store::JobQuota {
+            world_bytes: self.limits.world_budget_bytes,
+            disk_bytes: self.limits.disk_budget_bytes,
+            max_queued: self.limits.max_queued as u64,
+        };
+        let admission = ledger
+            .store
+            .admit_job(&ledger.record(&job), &quota)
+            .await
+            .map_err(|e| SubmitError::Store(e.to_string()))?;
+        match admission {
+            crate::store::Admission::Admitted => {}
+            crate::store::Admission::TooMany { queued } => {
+                return Err(SubmitError::TooMany {
+                    queued: queued as usize,
+                    limit: self.limits.max_queued,
+                })
+            }
+            crate::store::Admission::OverQuota {
+                world,
+                used,
+                oldest_done_s,
+            } => {
+                return Err(quota::over_quota_in_store(
+                    world,
+                    used,
+                    oldest_done_s,
+                    reserved,
+                    &self.limits,
+                ))
+            }
+        }
+        {
+            let mut jobs = self.jobs();
+            // Forgotten here only: whether their archives are kept is the store's to say.
+            evict(&mut jobs, self.limits.max_finished);
+            jobs.insert(id, job.clone());
+        }
+        tracing::info!(
+            job = %job.id, world, version, tiles = total,
+            shard = format!("{}/{}", shard.index + 1, shard.count), "export job queued"
+        );
+        Ok(job)
+    }
+
+    /// With a ledger, expires in the store every job done more than [`JobLimits::max_age`]
+    /// ago, whichever replica ran it (one that died included), and deletes their archives from
+    /// the shared directory; how many. Without one, [`Jobs::expire`].
+    pub async fn expire_shared(&self) -> usize {
+        let Some(ledger) = &self.ledger else {
+            return self.expire();
+        };
+        let max_age = i64::try_from(self.limits.max_age.as_secs()).unwrap_or(i64::MAX);
+        let before = unix_now().saturating_sub(max_age);
+        let ids = match ledger.store.expire_jobs(before).await {
+            Ok(ids) => ids,
+            Err(e) => {
+                tracing::warn!("cannot expire export jobs in the store: {e}");
+                return self.expire();
+            }
+        };
+        for id in &ids {
+            if let Some(job) = self.jobs().get(id) {
+                job.state.send_modify(|p| p.status = Status::Expired);
+                *lock(&job.synced) = Some(Status::Expired);
+            }
+            let path = self.dir.join(format!("{id}.tar"));
+            if let Err(e) = std::fs::remove_file(&path) {
+                if e.kind() != io::ErrorKind::NotFound {
+                    tracing::warn!("cannot delete {}: {e}", path.display());
+                }
+            }
+            tracing::info!(job = %id, "export archive expired");
+        }
+        ids.len() + self.expire()
     }
 
     /// Runs again, under this process's ownership, the job `record` another process owned

@@ -11,6 +11,7 @@
 //! | `strata_worlds_created_total` (counter) | |
 //! | `strata_edit_subscribers` (gauge) | |
 //! | `strata_synthesis_timeouts_total` (counter), `strata_synthesis_after_timeout` (gauge: syntheses still running whose request timed out, until they are cancelled), `strata_synthesis_cancelled_total` (counter: started syntheses cancelled because no request waited for them; see [`super::overrun`]) | |
+//! | `strata_work_after_cancel` (gauge: blocking computations — tile stages, region and volume solves, Ptex bakes — still running after every request waiting for them had gone), `strata_work_after_cancel_total` (counter: how those ended; see [`crate::compute::work`]) | `end`: `stopped` (at a check of their cancellation flag), `finished` (ran to their end) |
 //! | `strata_stage_cache_hits_total` (counter) | `tier`: `memory`, `disk`, `inflight` (joined a computation under way) |
 //! | `strata_stage_cache_misses_total` (counter): tiles computed | |
 //! | `strata_stage_runs_total` (counter) | `stage`: `field`, `snap`, `finish` |
@@ -446,6 +447,31 @@ fn cache_sizes(out: &mut String, st: &AppState, stage: &crate::cache::CacheStats
     );
 }
 
+/// Blocking work that outlived the requests waiting for it ([`crate::compute::work`]).
+fn abandoned_work(out: &mut String) {
+    let a = &crate::compute::work::ABANDONED;
+    single(
+        out,
+        "strata_work_after_cancel",
+        "gauge",
+        "Blocking computations still running after every request waiting for them had gone.",
+        a.running.load(Ordering::Relaxed),
+    );
+    labelled(
+        out,
+        (
+            "strata_work_after_cancel_total",
+            "counter",
+            "Blocking computations whose requests had all gone, by how they ended: stopped at a check of their cancellation flag, or finished (ran to their end).",
+        ),
+        "end",
+        [
+            ("stopped", a.stopped.load(Ordering::Relaxed)),
+            ("finished", a.finished.load(Ordering::Relaxed)),
+        ],
+    );
+}
+
 /// `GET /metrics`.
 pub async fn render(State(st): State<AppState>) -> Response {
     let (seed_hits, seed_misses) = st.plans.stats();
@@ -478,6 +504,7 @@ pub async fn render(State(st): State<AppState>) -> Response {
         "Receivers of the in-process edit broadcast.",
         st.worlds.edits.subscribers(),
     );
+    abandoned_work(&mut extra);
     let stage = st.cache.stats();
     stage_cache(&mut extra, &stage);
     device_jobs(&mut extra, st.compute.device_jobs());

@@ -664,19 +664,14 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
 }
 
 /// Deletes expired export archives every [`EXPIRY_SWEEP_INTERVAL`] (or `max_age`, if shorter),
-/// so they go even when no request looks at the jobs.
+/// so they go even when no request looks at the jobs: with a ledger, every job the store holds
+/// ([`jobs::Jobs::expire_shared`]), those of replicas that died included.
 async fn expire_archives(jobs: Arc<jobs::Jobs>) {
     let every = jobs.limits().max_age.min(EXPIRY_SWEEP_INTERVAL);
     let mut tick = tokio::time::interval(every);
     loop {
         tick.tick().await;
-        let jobs = jobs.clone();
-        if tokio::task::spawn_blocking(move || jobs.expire())
-            .await
-            .is_err()
-        {
-            return;
-        }
+        jobs.expire_shared().await;
     }
 }
 

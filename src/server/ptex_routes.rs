@@ -9,13 +9,19 @@
 //! | `GET /v1/worlds/{id}/ptex/tiles/{lod}/{x}/{z}?res=R[&v=N][&seams=…]` | likewise |
 //!
 //! `res` is required, a power of two in `8..=256` (else 400 `bad_parameter`, field `res`). The
-//! cost, `res² × faces baked`, is checked before baking against [`MAX_PTEX_TEXELS`] (else 400
-//! `ptex_too_large`, field `res`): for a tile before any work (its faces and the neighbouring
-//! faces its borders read are known from the key), for a chunk after meshing (its quads). Keys
-//! and their limits are those of the chunk and tile routes. Bodies are not cached (their tiles
-//! are), so every request is charged to the client's rate limit; responses carry a content-hash
-//! `ETag` and the world products' caching headers. Baking runs on the CPU reference
-//! ([`crate::ptex::bake`]) in one synthesis slot.
+//! cost, `res² × faces baked`, is checked before baking against [`MAX_REQUEST_TEXELS`] (else 400
+//! `ptex_too_large`, field `res`, the message naming the limit and the largest `res` that fits):
+//! for a tile before any work (its 16 faces and the neighbouring faces its borders read are
+//! known from the key: 32 without seams, so `res` 128 at most), for a chunk after meshing (its
+//! quads). Keys and their limits are those of the chunk and tile routes. Bodies are not cached
+//! (their tiles are), so every request is charged to the client's rate limit; responses carry a
+//! content-hash `ETag` and the world products' caching headers.
+//!
+//! Baking runs on the CPU reference ([`crate::ptex::bake`]) in one synthesis slot, on a pool of
+//! [`bake_threads`] threads shared by every request, so bakes together take at most that many
+//! cores whatever the load; a bake whose request has gone (timed out, or its client left) while
+//! it waited for the pool is skipped. A bake already running ends first (the bake polls no
+//! flag), and `/metrics` counts it in `strata_work_after_cancel_total{end="finished"}`.
 
 use super::chunks::{check_chunk_bounds, mesh};
 use super::error::{code, AppError};
@@ -24,15 +30,43 @@ use super::route_table::RouteTable;
 use super::routes::{segments, CachedProduct, PathSegments};
 use super::view::WorldAt;
 use super::AppState;
+use crate::compute::work;
 use crate::encode::ptex::{encode, PackInfo, PackKind, CONTENT_TYPE};
 use crate::ptex::face::{chunk_faces, TileFacePlan};
-use crate::ptex::{bake, valid_res, MaterialSet, Pages, MAX_PTEX_TEXELS};
+use crate::ptex::{bake, valid_res, MaterialSet, Pages, MIN_RES};
 use crate::terrain::TileKey;
 use crate::volume::chunk::{ChunkKey, MAX_CHUNK_LOD};
 use axum::extract::{RawQuery, State};
 use axum::http::HeaderMap;
 use axum::response::Response;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
+
+/// Most texels one request may bake, `res² ×` faces baked (a tile's 16 faces and the
+/// neighbouring faces its borders read, a chunk's quads): about a second of one core (`strata
+/// bench abuse` measured 1.09 s for a chunk's pages at the largest `res` its quads allow, 0.43 s
+/// for a tile's at `res` 128), so that a request stays within the 2 s of CPU every route is
+/// held to.
+pub const MAX_REQUEST_TEXELS: u64 = 1 << 20;
+
+/// Threads of the pool every bake of these routes runs on: half the cores, at least one.
+pub fn bake_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| (n.get() / 2).max(1))
+}
+
+/// The pool of [`bake_threads`] threads the routes bake on (`None` if it cannot be built: the
+/// bake then runs on the caller's thread).
+fn bake_pool() -> Option<&'static rayon::ThreadPool> {
+    static POOL: OnceLock<Option<rayon::ThreadPool>> = OnceLock::new();
+    POOL.get_or_init(|| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(bake_threads())
+            .thread_name(|i| format!("strata-ptex-{i}"))
+            .build()
+            .map_err(|e| tracing::warn!("no Ptex bake pool: {e}"))
+            .ok()
+    })
+    .as_ref()
+}
 
 /// The Ptex page routes.
 pub fn routes() -> RouteTable {
@@ -69,40 +103,56 @@ pub fn parse_res(query: Option<&str>) -> Result<u32, AppError> {
     found.ok_or_else(|| bad("res is required: a power of two in 8..=256".into()))
 }
 
-/// Refuses a bake of `faces` faces at `res` over [`MAX_PTEX_TEXELS`].
-fn check_cost(res: u32, faces: usize) -> Result<(), AppError> {
-    let texels = u64::from(res) * u64::from(res) * faces as u64;
-    if texels > MAX_PTEX_TEXELS {
-        return Err(AppError::bad_request(
-            code::PTEX_TOO_LARGE,
-            "res",
-            format!(
-                "{faces} faces at res {res} are {texels} texels; at most {MAX_PTEX_TEXELS} per request"
-            ),
-        ));
+/// Refuses a bake of `faces` faces at `res` over [`MAX_REQUEST_TEXELS`], naming the largest
+/// `res` that fits, if any.
+pub fn check_cost(res: u32, faces: usize) -> Result<(), AppError> {
+    let texels = |r: u32| u64::from(r) * u64::from(r) * faces as u64;
+    if texels(res) <= MAX_REQUEST_TEXELS {
+        return Ok(());
     }
-    Ok(())
+    let fits = (0..)
+        .map(|k| res >> k)
+        .take_while(|r| *r >= MIN_RES)
+        .find(|r| texels(*r) <= MAX_REQUEST_TEXELS);
+    let hint = match fits {
+        Some(r) => format!("; res {r} fits"),
+        None => String::new(),
+    };
+    Err(AppError::bad_request(
+        code::PTEX_TOO_LARGE,
+        "res",
+        format!(
+            "{faces} faces at res {res} are {} texels; at most {MAX_REQUEST_TEXELS} texels per request{hint}",
+            texels(res)
+        ),
+    ))
 }
 
-/// Bakes `set` at `res` and encodes its pack, on the blocking pool.
+/// Bakes `set` at `res` and encodes its pack on the bake pool, unless nobody waits for it any
+/// more by the time the pool takes it up.
 async fn bake_pack(
     set: crate::ptex::FaceSet,
     classes: Vec<u8>,
     info: PackInfo,
     res: u32,
 ) -> Result<CachedProduct, AppError> {
-    tokio::task::spawn_blocking(move || {
+    let run = move |cancel: &crate::terrain::cancel::Cancel| {
+        cancel.check()?;
         let mats = MaterialSet::default_ground(info.seed);
         let mut pages = Pages::default();
         bake(&set, &mats, res, &mut pages);
-        CachedProduct::new(
+        Ok(CachedProduct::new(
             encode(&info, &set, &classes, &pages),
             CONTENT_TYPE,
             Vec::new(),
-        )
+        ))
+    };
+    work::run(move |cancel| match bake_pool() {
+        Some(pool) => pool.install(|| run(cancel)),
+        None => run(cancel),
     })
     .await
-    .map_err(|e| AppError::internal(format!("ptex bake failed: {e}")))
+    .map_err(|_| AppError::internal("the Ptex bake was cancelled"))
 }
 
 /// `GET /v1/seeds/{seed}/ptex/{lod}/{x}/{y}/{z}?res=R` and its world twin.

@@ -12,8 +12,8 @@
 //! peer address (driven in-process, as the tests do with `oneshot`) are charged to their token
 //! only.
 //!
-//! Charged routes: export creation, scatter, volume chunks, a region's PNGs and stats, a
-//! volume's `mesh.glb`
+//! Charged routes: export creation, scatter, volume chunks, Ptex pages, a region's PNGs and
+//! stats, a volume's `mesh.glb`
 //! (each through the [`Charge`] extractor, before any other work), and a tile whose encoded body
 //! is not in the body cache ([`AppState::tile_product`] is asked first): a cached tile is a
 //! memory read and is never charged.

@@ -143,6 +143,8 @@ async fn info(State(st): State<AppState>) -> Result<Response, AppError> {
             "rate_limit_per_minute": st.rate.per_minute(),
             "max_region_samples": crate::authoring::spec_tools::MAX_ACCEPTED_SAMPLES,
             "max_region_cell_steps": crate::authoring::spec_tools::MAX_REGION_CELL_STEPS,
+            "max_ptex_texels": super::ptex_routes::MAX_REQUEST_TEXELS,
+            "ptex_bake_threads": super::ptex_routes::bake_threads(),
         },
         "formats": Format::ALL.iter().map(|f| json!({
             "extension": f.extension(),

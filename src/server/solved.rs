@@ -7,11 +7,15 @@
 //! gone (its request timed out or its client left): the waiters are counted, and the one whose
 //! departure leaves none sets the solve's [`Cancel`], which the solver polls, so the blocking
 //! thread stops within a bounded time and its memory is returned (a volume region's pipeline
-//! polls it between its stages, so a stage already running ends first). A cancelled solve is
-//! never kept, and a request arriving after the cancellation starts a new one.
+//! polls it between its stages and before each diffusion sweep and V-cycle, so only a stage
+//! without checks, the voxelization or a wavefront, runs to its end). A cancelled solve is
+//! never kept, and a request arriving after the cancellation starts a new one. Each solve is a
+//! [`crate::compute::work::Work`], so one that runs on after its cancellation is counted on
+//! `/metrics`.
 
 use crate::cache::memo::lock;
 use crate::cache::Memo;
+use crate::compute::work::Work;
 use crate::terrain::cancel::Cancel;
 use futures::future::{BoxFuture, FutureExt, Shared};
 use std::collections::HashMap;
@@ -28,10 +32,11 @@ type Key = (u64, [u8; 32]);
 /// A solve's outcome: the solution, a refusal (`None`), or `Err` once cancelled.
 type Outcome<T> = Result<Option<Arc<T>>, crate::terrain::cancel::Cancelled>;
 
-/// A solve under way: its shared outcome, its cancellation flag and the requests awaiting it.
+/// A solve under way: its shared outcome, its work (and cancellation flag) and the requests
+/// awaiting it.
 struct Running<T> {
     outcome: Shared<BoxFuture<'static, Outcome<T>>>,
-    cancel: Cancel,
+    work: Arc<Work>,
     waiters: usize,
 }
 
@@ -71,7 +76,7 @@ impl<T> Drop for Waiter<T> {
         if run.waiters == 0 {
             // A waiter that saw the solve finish has put it in the memo; a solve nobody needs
             // any more stops (or, finished, is dropped).
-            run.cancel.cancel();
+            run.work.abandon();
             runs.remove(&self.key);
         }
     }
@@ -164,13 +169,15 @@ fn start<T: Send + Sync + 'static, E: std::fmt::Display + Send + 'static>(
     solve: impl FnOnce(&Cancel) -> Result<T, E> + Send + 'static,
     working: &Arc<AtomicUsize>,
 ) -> Running<T> {
-    let cancel = Cancel::new();
-    let flag = cancel.clone();
+    let work = Work::new();
+    let on_thread = work.clone();
     let working = Working::new(working);
     let task = tokio::task::spawn_blocking(move || {
         let _working = working;
-        let r = solve(&flag);
+        let flag = on_thread.cancel();
+        let r = solve(flag);
         // A solve stopped by its flag answers whatever error; the flag says why.
+        on_thread.end(r.is_err() && flag.is_cancelled());
         match flag.check() {
             Ok(()) => Ok(r),
             Err(c) => Err(c),
@@ -189,7 +196,7 @@ fn start<T: Send + Sync + 'static, E: std::fmt::Display + Send + 'static>(
     .shared();
     Running {
         outcome,
-        cancel,
+        work,
         waiters: 0,
     }
 }

@@ -30,7 +30,7 @@ mod postgres;
 mod shared;
 mod sqlite;
 
-pub use jobs::{now_ms, JobRecord, JobUpdate};
+pub use jobs::{now_ms, Admission, JobQuota, JobRecord, JobUpdate};
 
 pub use postgres::notify::{FeedEvent, RemoteEdit};
 pub use postgres::{is_postgres_url, PostgresStore, POOL_SIZE};
@@ -295,6 +295,16 @@ pub trait SceneStore: Send + Sync + std::fmt::Debug {
         owner: &str,
         update: &JobUpdate,
     ) -> Result<bool, StoreError>;
+
+    /// Stores the new export job `job` if it fits `quota` beside every job already stored
+    /// ([`jobs`]: the world's and the store's bytes, the queued jobs), as one step no other
+    /// admission interleaves with; what it found. [`StoreError::Duplicate`] if its id is taken,
+    /// [`StoreError::WorldNotFound`] without its world.
+    async fn admit_job(&self, job: &JobRecord, quota: &JobQuota) -> Result<Admission, StoreError>;
+
+    /// Marks `expired` every `done` job finished at or before `before_s` (seconds since the
+    /// Unix epoch); their ids, each returned to one caller only, whose archives it deletes.
+    async fn expire_jobs(&self, before_s: i64) -> Result<Vec<String>, StoreError>;
 
     /// Takes over the oldest queued or running job whose lease ended before `now_ms`: it becomes
     /// `owner`'s until `lease_until_ms`, `queued` with no tile written, and is returned. At most

@@ -24,8 +24,9 @@ pub mod notify;
 
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, scene_text, EditApplied, EditRecord, JobRecord, JobUpdate, NewWorld, Role,
-    SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
+    canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
+    JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
+    MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use deadpool_postgres::{GenericClient, Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
@@ -475,6 +476,18 @@ impl SceneStore for PostgresStore {
         update: &JobUpdate,
     ) -> Result<bool, StoreError> {
         jobs::update(&self.client().await?, id, owner, update).await
+    }
+
+    async fn admit_job(&self, job: &JobRecord, quota: &JobQuota) -> Result<Admission, StoreError> {
+        let mut client = self.client().await?;
+        let tx = client.transaction().await.map_err(db)?;
+        let admitted = jobs::admit(&tx, job, quota).await?;
+        tx.commit().await.map_err(db)?;
+        Ok(admitted)
+    }
+
+    async fn expire_jobs(&self, before_s: i64) -> Result<Vec<String>, StoreError> {
+        jobs::expire(&self.client().await?, before_s).await
     }
 
     async fn claim_job(

@@ -28,10 +28,12 @@
 //!
 //! Version 2 added `export_jobs` ([`super::jobs`]); a version 1 file is migrated when opened.
 
+use super::jobs::{refusal, Held, CHARGE_SQL};
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
-    canonical_scene, scene_text, EditApplied, EditRecord, JobRecord, JobUpdate, NewWorld, Role,
-    SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta, MAX_LOG_ENTRIES,
+    canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
+    JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
+    MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
@@ -528,35 +530,7 @@ impl SceneStore for SqliteStore {
         let job = job.clone();
         self.write(move |tx| {
             load_meta(tx, &job.world)?;
-            let inserted = tx
-                .execute(
-                    &format!(
-                        "INSERT INTO export_jobs ({JOB_COLUMNS}) VALUES
-                         (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14)
-                         ON CONFLICT (id) DO NOTHING"
-                    ),
-                    params![
-                        job.id,
-                        job.world,
-                        job.version as i64,
-                        job.spec,
-                        job.status,
-                        job.done as i64,
-                        job.total as i64,
-                        job.error,
-                        job.reserved as i64,
-                        job.bytes as i64,
-                        job.owner,
-                        job.lease_until_ms,
-                        job.created_at,
-                        job.finished_at,
-                    ],
-                )
-                .map_err(backend)?;
-            if inserted == 0 {
-                return Err(StoreError::Duplicate(job.id));
-            }
-            Ok(())
+            insert_job_row(tx, &job)
         })
         .await
     }
@@ -606,6 +580,62 @@ impl SceneStore for SqliteStore {
         .await
     }
 
+    async fn admit_job(&self, job: &JobRecord, quota: &JobQuota) -> Result<Admission, StoreError> {
+        let (job, quota) = (job.clone(), *quota);
+        // One writer: the sums and the insert are one transaction no other admission
+        // interleaves with.
+        self.write(move |tx| {
+            load_meta(tx, &job.world)?;
+            let sums = |filter: &str| -> Result<(u64, Option<i64>), StoreError> {
+                tx.query_row(
+                    &format!(
+                        "SELECT COALESCE(SUM({CHARGE_SQL}), 0),
+                         MIN(CASE WHEN status = 'done' THEN finished_at END)
+                         FROM export_jobs {filter}"
+                    ),
+                    params![job.world],
+                    |r| Ok((r.get::<_, i64>(0)? as u64, r.get(1)?)),
+                )
+                .map_err(backend)
+            };
+            let held = Held {
+                world: sums("WHERE world_id = ?1")?,
+                all: sums("WHERE ?1 IS NOT NULL")?,
+                queued: tx
+                    .query_row(
+                        "SELECT COUNT(*) FROM export_jobs WHERE status = 'queued'",
+                        [],
+                        |r| r.get::<_, i64>(0),
+                    )
+                    .map_err(backend)? as u64,
+            };
+            if let Some(refused) = refusal(job.reserved, &quota, &held) {
+                return Ok(refused);
+            }
+            insert_job_row(tx, &job)?;
+            Ok(Admission::Admitted)
+        })
+        .await
+    }
+
+    async fn expire_jobs(&self, before_s: i64) -> Result<Vec<String>, StoreError> {
+        self.write(move |tx| {
+            let mut stmt = tx
+                .prepare(
+                    "UPDATE export_jobs SET status = 'expired'
+                     WHERE status = 'done' AND finished_at <= ?1 RETURNING id",
+                )
+                .map_err(backend)?;
+            let ids = stmt
+                .query_map(params![before_s], |r| r.get::<_, String>(0))
+                .map_err(backend)?
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(backend)?;
+            Ok(ids)
+        })
+        .await
+    }
+
     async fn claim_job(
         &self,
         owner: &str,
@@ -643,6 +673,39 @@ impl SceneStore for SqliteStore {
         })
         .await
     }
+}
+
+/// Inserts the row of `job`; [`StoreError::Duplicate`] if its id is taken.
+fn insert_job_row(tx: &rusqlite::Transaction<'_>, job: &JobRecord) -> Result<(), StoreError> {
+    let inserted = tx
+        .execute(
+            &format!(
+                "INSERT INTO export_jobs ({JOB_COLUMNS}) VALUES
+                 (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14)
+                 ON CONFLICT (id) DO NOTHING"
+            ),
+            params![
+                job.id,
+                job.world,
+                job.version as i64,
+                job.spec,
+                job.status,
+                job.done as i64,
+                job.total as i64,
+                job.error,
+                job.reserved as i64,
+                job.bytes as i64,
+                job.owner,
+                job.lease_until_ms,
+                job.created_at,
+                job.finished_at,
+            ],
+        )
+        .map_err(backend)?;
+    if inserted == 0 {
+        return Err(StoreError::Duplicate(job.id.clone()));
+    }
+    Ok(())
 }
 
 const JOB_COLUMNS: &str = "id, world_id, version, spec, status, done, total, error, reserved, \

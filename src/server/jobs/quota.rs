@@ -13,6 +13,11 @@
 //!
 //! Archives expire [`JobLimits::max_age`] after they were finished: the file is deleted and the
 //! job answers `expired` (HTTP 410 `job_expired` for its archive) until it is forgotten.
+//!
+//! With a [`super::Ledger`] (what `strata serve` runs) both the charges and the expiry are the
+//! store's ([`crate::store::SceneStore::admit_job`], [`crate::store::SceneStore::expire_jobs`]):
+//! they count every replica's jobs, and the archives of a replica that died expire too. Without
+//! one they count this process's jobs.
 
 use super::{Job, JobLimits, Status, SubmitError};
 use std::collections::HashMap;
@@ -68,8 +73,55 @@ impl Job {
     }
 }
 
+/// Refuses a job bounded by `estimate` bytes that is larger than a budget of `limits`: it
+/// could never be admitted.
+pub(super) fn too_large(estimate: u64, limits: &JobLimits) -> Result<(), SubmitError> {
+    for (budget, limit) in [
+        (Budget::World, limits.world_budget_bytes),
+        (Budget::Disk, limits.disk_budget_bytes),
+    ] {
+        if estimate > limit {
+            return Err(SubmitError::TooLarge {
+                budget,
+                estimate,
+                limit,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The refusal of a job bounded by `estimate` bytes that the store found over a budget
+/// ([`crate::store::Admission::OverQuota`]): `Retry-After` is the seconds until the oldest done
+/// archive charged to it expires, or a short wait while only queued and running jobs fill it.
+pub(super) fn over_quota_in_store(
+    world: bool,
+    used: u64,
+    oldest_done_s: Option<i64>,
+    estimate: u64,
+    limits: &JobLimits,
+) -> SubmitError {
+    let (budget, limit) = if world {
+        (Budget::World, limits.world_budget_bytes)
+    } else {
+        (Budget::Disk, limits.disk_budget_bytes)
+    };
+    let now_s = crate::store::now_ms() / 1000;
+    let max_age = i64::try_from(limits.max_age.as_secs()).unwrap_or(i64::MAX);
+    let retry_after_s = oldest_done_s.map_or(RETRY_WHILE_RUNNING_S, |t| {
+        t.saturating_add(max_age).saturating_sub(now_s).max(0) as u64 + 1
+    });
+    SubmitError::OverQuota {
+        budget,
+        used,
+        estimate,
+        limit,
+        retry_after_s,
+    }
+}
+
 /// Checks that a job of `world` bounded by `estimate` bytes fits both budgets of `limits`
-/// beside the `jobs` already admitted.
+/// beside the `jobs` already admitted (a server without a ledger: this process's jobs).
 pub(super) fn admit(
     jobs: &HashMap<String, Arc<Job>>,
     world: &str,

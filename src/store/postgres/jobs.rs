@@ -1,8 +1,10 @@
 //! The export jobs of the PostgreSQL store ([`super::super::jobs`]): the table of
 //! `migrations/postgres/0002_export_jobs.sql`. A stale job is claimed with `SELECT … FOR UPDATE
-//! SKIP LOCKED`, so replicas claiming at once each get a different job or none.
+//! SKIP LOCKED`, so replicas claiming at once each get a different job or none; admissions take
+//! a transaction-scoped advisory lock ([`ADMISSION_LOCK`]), so they run one at a time.
 
-use super::super::{JobRecord, JobUpdate, StoreError};
+use super::super::jobs::{refusal, Held, CHARGE_SQL};
+use super::super::{Admission, JobQuota, JobRecord, JobUpdate, StoreError};
 use super::{db, load_meta};
 use deadpool_postgres::GenericClient;
 use tokio_postgres::Row;
@@ -125,4 +127,67 @@ pub(super) async fn claim(
     .await
     .map_err(db)?
     .map(|r| job_row(&r)))
+}
+
+/// The advisory lock key admissions hold for their transaction ("strata export admission").
+pub(super) const ADMISSION_LOCK: i64 = 0x5354_5241_5441_4558;
+
+/// [`super::super::SceneStore::admit_job`], in the transaction `tx`.
+pub(super) async fn admit(
+    tx: &deadpool_postgres::Transaction<'_>,
+    job: &JobRecord,
+    quota: &JobQuota,
+) -> Result<Admission, StoreError> {
+    tx.execute("SELECT pg_advisory_xact_lock($1)", &[&ADMISSION_LOCK])
+        .await
+        .map_err(db)?;
+    load_meta(tx, &job.world).await?;
+    let sums = |filter: &'static str| async move {
+        let r = tx
+            .query_one(
+                &format!(
+                    "SELECT COALESCE(SUM({CHARGE_SQL}), 0)::BIGINT,
+                     MIN(CASE WHEN status = 'done' THEN finished_at END)
+                     FROM export_jobs WHERE {filter}"
+                ),
+                &[&job.world],
+            )
+            .await
+            .map_err(db)?;
+        Ok::<_, StoreError>((r.get::<_, i64>(0) as u64, r.get::<_, Option<i64>>(1)))
+    };
+    let held = Held {
+        world: sums("world_id = $1").await?,
+        all: sums("$1::TEXT IS NOT NULL").await?,
+        queued: tx
+            .query_one(
+                "SELECT COUNT(*) FROM export_jobs WHERE status = 'queued'",
+                &[],
+            )
+            .await
+            .map_err(db)?
+            .get::<_, i64>(0) as u64,
+    };
+    if let Some(refused) = refusal(job.reserved, quota, &held) {
+        return Ok(refused);
+    }
+    insert(tx, job).await?;
+    Ok(Admission::Admitted)
+}
+
+/// [`super::super::SceneStore::expire_jobs`]: one statement.
+pub(super) async fn expire(
+    c: &impl GenericClient,
+    before_s: i64,
+) -> Result<Vec<String>, StoreError> {
+    Ok(c.query(
+        "UPDATE export_jobs SET status = 'expired'
+             WHERE status = 'done' AND finished_at <= $1 RETURNING id",
+        &[&before_s],
+    )
+    .await
+    .map_err(db)?
+    .iter()
+    .map(|r| r.get(0))
+    .collect())
 }

@@ -63,8 +63,9 @@
 //! so their results are bit-identical (tested); only the speed differs.
 
 use super::grid::par_slabs_multi;
-pub use super::multigrid::harmonic_fill;
 use super::multigrid::harmonic_fill_with;
+pub use super::multigrid::{harmonic_fill, harmonic_fill_on};
+use crate::terrain::cancel::Cancel;
 use rayon::prelude::*;
 
 /// Most samples of the coarsest level of the cascade and the V-cycles.
@@ -581,10 +582,12 @@ pub fn sweeps(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], pm: Option
         return;
     }
     let mut other: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0; c.len()]).collect();
-    sweeps_with(dims, chans, fixed, pm, n, &mut other);
+    sweeps_with(dims, chans, fixed, pm, n, &mut other, &Cancel::never());
 }
 
-/// [`sweeps`] ping-ponging through a caller-owned scratch field of the same shape as `chans`.
+/// [`sweeps`] ping-ponging through a caller-owned scratch field of the same shape as `chans`,
+/// stopping before the next sweep once `cancel` is set (the field is then left part-way, for a
+/// caller that discards it).
 fn sweeps_with(
     dims: [usize; 3],
     chans: &mut [Vec<f32>],
@@ -592,8 +595,12 @@ fn sweeps_with(
     pm: Option<f32>,
     n: u32,
     other: &mut [Vec<f32>],
+    cancel: &Cancel,
 ) {
     for _ in 0..n {
+        if cancel.is_cancelled() {
+            return;
+        }
         {
             let src: Vec<&[f32]> = chans.iter().map(|c| c.as_slice()).collect();
             let mut dst: Vec<&mut [f32]> = other.iter_mut().map(|c| c.as_mut_slice()).collect();
@@ -679,7 +686,9 @@ pub fn normalize_field(n: &mut [Vec<f32>], fixed: &[u8]) {
 /// Stage 2 of §4.1: the dense normal field. Harmonic fill of the free samples (cascadic, or the
 /// caller's warm-start values when `warm` is set), normalisation, `pm_sweeps` anisotropic sweeps,
 /// normalisation. `n` holds the constraints in `Ω_N` (and, with `warm`, the initial guess
-/// elsewhere). The anisotropic sweeps come from `dev` when it answers.
+/// elsewhere). The anisotropic sweeps come from `dev` when it answers. Once `cancel` is set
+/// the stage stops at its next sweep or V-cycle and leaves `n` part-way: the caller checks
+/// `cancel` and discards it.
 pub fn diffuse_normals(
     dims: [usize; 3],
     n: &mut [Vec<f32>],
@@ -687,13 +696,17 @@ pub fn diffuse_normals(
     p: &DiffuseParams,
     warm: bool,
     dev: &dyn crate::volume::offload::VolumeOffload,
+    cancel: &Cancel,
 ) {
     // One scratch field for the fill and the sweeps.
     let mut tmp: Vec<Vec<f32>> = n.iter().map(|c| vec![0.0f32; c.len()]).collect();
     if warm {
-        sweeps_with(dims, n, fixed, None, p.fine_sweeps, &mut tmp);
+        sweeps_with(dims, n, fixed, None, p.fine_sweeps, &mut tmp, cancel);
     } else {
-        harmonic_fill_with(dims, n, fixed, p, &mut tmp);
+        harmonic_fill_with(dims, n, fixed, p, &mut tmp, cancel);
+    }
+    if cancel.is_cancelled() {
+        return;
     }
     normalize_field(n, fixed);
     match dev.pm_sweeps(dims, n, fixed, p.k, p.pm_sweeps) {
@@ -702,7 +715,7 @@ pub fn diffuse_normals(
                 *c = s;
             }
         }
-        _ => sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp),
+        _ => sweeps_with(dims, n, fixed, Some(p.k), p.pm_sweeps, &mut tmp, cancel),
     }
     normalize_field(n, fixed);
 }

@@ -43,6 +43,7 @@
 
 use super::diffuse::{keep_fixed, laplace_sweep, rows, DiffuseParams, COARSEST};
 use super::grid::par_slabs_multi;
+use crate::terrain::cancel::Cancel;
 
 /// Smoothing step of the finest level's V-cycle sweeps: `ω/6` with `ω = 6/7`, the optimal
 /// damping of Jacobi for the 7-point Laplacian.
@@ -765,11 +766,23 @@ fn vcycle_coarse(levels: &mut [Level], p: &DiffuseParams) {
 /// fixed ones: the cascade, then `p.vcycles` V-cycles (module docs). Channels without any fixed
 /// sample become 0.
 pub fn harmonic_fill(dims: [usize; 3], chans: &mut [Vec<f32>], fixed: &[u8], p: &DiffuseParams) {
-    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
-    harmonic_fill_with(dims, chans, fixed, p, &mut tmp);
+    harmonic_fill_on(dims, chans, fixed, p, &Cancel::never());
 }
 
-/// [`harmonic_fill`] with a caller-owned scratch field of the same shape as `chans` (its
+/// [`harmonic_fill`] that stops before its next V-cycle once `cancel` is set, leaving `chans`
+/// part-way (for a caller that checks `cancel` and discards them).
+pub fn harmonic_fill_on(
+    dims: [usize; 3],
+    chans: &mut [Vec<f32>],
+    fixed: &[u8],
+    p: &DiffuseParams,
+    cancel: &Cancel,
+) {
+    let mut tmp: Vec<Vec<f32>> = chans.iter().map(|c| vec![0.0f32; c.len()]).collect();
+    harmonic_fill_with(dims, chans, fixed, p, &mut tmp, cancel);
+}
+
+/// [`harmonic_fill_on`] with a caller-owned scratch field of the same shape as `chans` (its
 /// contents are overwritten).
 pub(crate) fn harmonic_fill_with(
     dims: [usize; 3],
@@ -777,6 +790,7 @@ pub(crate) fn harmonic_fill_with(
     fixed: &[u8],
     p: &DiffuseParams,
     tmp: &mut [Vec<f32>],
+    cancel: &Cancel,
 ) {
     if chans.is_empty() {
         return;
@@ -802,6 +816,9 @@ pub(crate) fn harmonic_fill_with(
         relax(dims, chans, tmp, None, fixed, 1.0 / 6.0, p.coarsest_sweeps);
     }
     for _ in 0..p.vcycles {
+        if cancel.is_cancelled() {
+            return;
+        }
         vcycle(dims, chans, tmp, fixed, &mut levels, p);
     }
 }

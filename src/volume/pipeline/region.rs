@@ -12,7 +12,7 @@
 //! influence of a local edit decays with distance, and `warm_margin` bounds what is ignored.
 
 use super::curve::FeatureCurve;
-use super::diffuse::{diffuse_normals, harmonic_fill, DiffuseParams};
+use super::diffuse::{diffuse_normals, harmonic_fill, harmonic_fill_on, DiffuseParams};
 use super::filter::gaussian_of;
 use super::grid::Grid;
 use super::propagate::{propagate_material, propagate_surface};
@@ -376,7 +376,15 @@ pub fn generate_on(
             |t| &mut t.normal_diffusion_ms,
             || {
                 let mut n: Vec<Vec<f32>> = v.normal.to_vec();
-                diffuse_normals(grid.dims, &mut n, &v.omega_n, &params.diffuse, false, dev);
+                diffuse_normals(
+                    grid.dims,
+                    &mut n,
+                    &v.omega_n,
+                    &params.diffuse,
+                    false,
+                    dev,
+                    cancel,
+                );
                 let [n0, n1, n2]: [Vec<f32>; 3] = n.try_into().expect("three components");
                 [n0, n1, n2]
             },
@@ -393,7 +401,7 @@ pub fn generate_on(
             |t| &mut t.noise_diffusion_ms,
             || {
                 let mut r = vec![v.alpha.clone(), v.beta.clone()];
-                harmonic_fill(grid.dims, &mut r, &v.omega_r, &params.diffuse);
+                harmonic_fill_on(grid.dims, &mut r, &v.omega_r, &params.diffuse, cancel);
                 r
             },
         ),
@@ -529,7 +537,7 @@ pub fn regenerate(
     let dp = params.diffuse;
     if let Some((lo, hi)) = changed {
         solve_box(&grid, &mut n, &v.omega_n, lo, hi, |d, c, f| {
-            diffuse_normals(d, c, f, &dp, false, &CpuOnly)
+            diffuse_normals(d, c, f, &dp, false, &CpuOnly, &Cancel::never())
         });
         times.record(sw, |t| &mut t.normal_diffusion_ms);
         let sw = Stopwatch::start();
