@@ -554,3 +554,33 @@ async fn a_session_the_servers_budget_cannot_hold_is_refused_naming_the_field() 
         "the budget came back when the first session ended"
     );
 }
+
+#[test]
+fn the_budgets_come_from_the_flags_or_the_environment() {
+    use clap::Parser;
+    use strata::cli::{Cli, Command};
+    let settings = |argv: &[&str]| {
+        let cli = Cli::try_parse_from(argv).expect("a valid command line");
+        let Command::Serve(args) = cli.command else {
+            panic!("not serve")
+        };
+        args.ptex_settings()
+    };
+    let s = settings(&[
+        "strata",
+        "serve",
+        "--ptex-session-budget",
+        "8",
+        "--ptex-server-budget",
+        "100",
+    ]);
+    assert_eq!((s.session_bytes, s.server_bytes), (8 << 20, 100 << 20));
+    let d = settings(&["strata", "serve"]);
+    assert_eq!(d, PtexSettings::default());
+    assert!(Cli::try_parse_from(["strata", "serve", "--ptex-session-budget", "0"]).is_err());
+    // The environment, when no flag is given (no other test here reads these variables).
+    std::env::set_var("STRATA_PTEX_SESSION_BUDGET", "16");
+    let e = settings(&["strata", "serve"]);
+    std::env::remove_var("STRATA_PTEX_SESSION_BUDGET");
+    assert_eq!(e.session_bytes, 16 << 20);
+}
