@@ -214,3 +214,64 @@ fn an_edit_rebakes_only_the_touched_faces_and_an_oversized_vista_is_refused() {
     assert_eq!(got, want);
     assert!(Budget::new(BudgetConfig { bytes: 1000, ..cfg }, faces.len()).is_err());
 }
+
+#[test]
+fn held_faces_come_and_go_within_the_budget_and_evicted_slots_are_announced() {
+    let n = 40;
+    let faces = ground(n);
+    // Room for the vista pages of every face and a few slots of each detail level.
+    let cfg = BudgetConfig {
+        bytes: faces.len() as u64 * page_bytes(8) + 12 * page_bytes(256),
+        thresholds_m: [2000.0, 900.0, 400.0, 160.0, 60.0],
+    };
+    let mut budget = Budget::new(cfg, 0).expect("no faces fit");
+    assert_eq!(budget.held(), 0);
+    // Hold the half of the faces ahead of the first view: the detail levels share what their
+    // vista pages leave.
+    let half = faces.len() / 2;
+    for f in half..faces.len() {
+        budget.hold(f).expect("fits");
+    }
+    let few = budget.capacity();
+    budget.update(&faces, &view(0, n));
+    assert!(budget.bytes_held() <= cfg.bytes);
+    let detailed: Vec<usize> = (0..faces.len()).filter(|&f| budget.level(f) > 0).collect();
+    assert!(!detailed.is_empty(), "near faces hold detail pages");
+    assert!(
+        detailed.iter().all(|&f| f >= half),
+        "faces not held are not classified"
+    );
+    // Holding every face shrinks the detail levels; the faces in slots that went away are
+    // back at the vista level and listed by the next update.
+    for f in 0..faces.len() {
+        budget.hold(f).expect("the vista level of every face fits");
+    }
+    let many = budget.capacity();
+    assert!(many.iter().zip(few).all(|(m, f)| *m <= f) && many != few);
+    assert!(budget.bytes_held() <= cfg.bytes);
+    let next = budget.update(&faces, &view(0, n));
+    for f in &detailed {
+        if budget.level(*f) == 0 {
+            assert!(
+                next.to_vista.contains(&(*f as u32)),
+                "face {f} lost its slot"
+            );
+        }
+    }
+    // Releasing a face frees its slot; a released face is not classified or re-baked.
+    let top = (0..faces.len())
+        .find(|&f| budget.level(f) > 0)
+        .expect("a face at a detail level");
+    budget.release(top);
+    assert!(!budget.is_held(top) && budget.level(top) == 0);
+    assert!(budget.invalidate(&[top as u32]).is_empty());
+    budget.update(&faces, &view(0, n));
+    assert_eq!(budget.level(top), 0);
+    // More faces than the vista level holds are refused.
+    let full = faces.len() as u64 * page_bytes(8);
+    let mut tight = Budget::new(BudgetConfig { bytes: full, ..cfg }, 0).expect("fits");
+    for f in 0..faces.len() {
+        tight.hold(f).expect("exactly fits");
+    }
+    assert!(tight.hold(faces.len()).is_err());
+}

@@ -11,13 +11,15 @@
 //! subsurface) in [`strata`]; `strata bench realism` (issue 17, the world against real DEMs) in
 //! [`realism`]; `strata bench abuse` (issue 18, the cost of requests at their limits) in
 //! [`abuse`]; `strata bench scale` (issue 21, replicas behind a load balancer) in [`scale`];
-//! `strata bench ptex` (issue 20, the Ptex bake) in [`ptex`].
+//! `strata bench ptex` (issue 20, the Ptex bake) in [`ptex`], its level-of-detail update in
+//! [`ptex_update`].
 
 pub mod abuse;
 mod args;
 pub mod http;
 pub mod poisson;
 pub mod ptex;
+pub mod ptex_update;
 pub mod realism;
 pub mod scale;
 pub mod serve;

@@ -8,21 +8,11 @@
 //! ratio is the peer's time over ours (above 1: the bake is faster than the same work with the
 //! crate). No target is set for the bake alone.
 //!
-//! Then the level-of-detail update ([`crate::ptex::budget`]) over a scene of 349² = 121,801
-//! height-tile faces (about the paper's Table 2 scene, 121,696 primitives) with the paper's
-//! budget split (125 MB of vista pages need 146 MB with our 12-byte texels and borders, so the
-//! vista level gets what it needs and the detail levels 537 MB), along a scripted fly-through
-//! of 200 views: the distance computation alone and the complete update (distance,
-//! classification, slot assignment), average and maximum, beside Table 2's GTX 1080 figures,
-//! and the pages each update asks to bake. Their baking is not timed here: the CPU cost of a
-//! page follows from the bake figures above (the paper bakes on the GPU in 1.04 ms on average).
-//! Target of the issue: the complete update ≤ 11 ms on average.
+//! Then the level-of-detail update over about the paper's Table 2 scene
+//! ([`super::ptex_update`]).
 
 use super::{emit, median};
 use crate::bench::BenchArgs;
-use crate::ptex::budget::{
-    distance_in_view, page_bytes, Budget, BudgetConfig, FaceBounds, View, LEVEL_RES,
-};
 use crate::ptex::face::TileFacePlan;
 use crate::ptex::{bake_interior, FaceSet, MaterialSet, Pages};
 use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
@@ -113,83 +103,5 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             ),
         );
     }
-    update(args)
-}
-
-/// Target of the issue: the complete update's average, milliseconds.
-pub const TARGET_UPDATE_MS: f64 = 11.0;
-
-/// The level-of-detail update over about Table 2's scene.
-fn update(args: &BenchArgs) -> anyhow::Result<()> {
-    let n = 349usize;
-    let faces: Vec<FaceBounds> = (0..n * n)
-        .map(|i| FaceBounds {
-            centre: [
-                (i % n) as f32 * 16.0 + 8.0,
-                0.0,
-                (i / n) as f32 * 16.0 + 8.0,
-            ],
-            radius: 11.4,
-        })
-        .collect();
-    let vista = faces.len() as u64 * page_bytes(LEVEL_RES[0]);
-    let config = BudgetConfig {
-        bytes: vista + 537_000_000,
-        thresholds_m: [3000.0, 1200.0, 500.0, 200.0, 80.0],
-    };
-    let mut budget = Budget::new(config, faces.len())?;
-    let side = n as f32 * 16.0;
-    let view = |t: usize| {
-        let a = t as f32 * 0.02;
-        let (dx, dz) = (-a.sin(), a.cos());
-        let f = [dx * 0.94, -0.34, dz * 0.94];
-        let l = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
-        View {
-            eye: [
-                side * (0.5 + 0.3 * a.cos()),
-                40.0,
-                side * (0.5 + 0.3 * a.sin()),
-            ],
-            forward: f.map(|c| c / l),
-            cos_half_angle: 0.8,
-            far_m: 4000.0,
-        }
-    };
-    let (mut dist, mut full, mut pages) = (Vec::new(), Vec::new(), Vec::new());
-    for t in 0..200 {
-        let v = view(t);
-        let start = Instant::now();
-        let visible = faces.iter().filter_map(|b| distance_in_view(b, &v)).count();
-        dist.push(start.elapsed().as_secs_f64() * 1e3);
-        black_box(visible);
-        let start = Instant::now();
-        let changed = budget.update(&faces, &v);
-        full.push(start.elapsed().as_secs_f64() * 1e3);
-        pages.push(changed.bake.len() as f64);
-    }
-    let avg = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let max = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
-    let (d_avg, u_avg, u_max) = (avg(&dist), avg(&full), max(&full));
-    emit(
-        args,
-        json!({"bench":"ptex","figure":"update","faces":faces.len(),"views":full.len(),
-               "vista_bytes":vista,"detail_bytes":537_000_000u64,"capacity":budget.capacity(),
-               "distance_ms_avg":d_avg,"distance_ms_max":max(&dist),
-               "update_ms_avg":u_avg,"update_ms_max":u_max,
-               "pages_per_update_avg":avg(&pages),"pages_per_update_max":max(&pages),
-               "paper_distance_ms":6.36,"paper_classification_ms_avg":3.62,
-               "paper_classification_ms_max":11.45,"paper_complete_ms_avg":11.02,
-               "paper_complete_ms_max":19.94,"target_update_ms_avg":TARGET_UPDATE_MS,
-               "bake_timed":false,"meets_target_without_baking":u_avg <= TARGET_UPDATE_MS}),
-        format!(
-            "update over {} faces, {} views (vista {:.0} MB, detail 537 MB, slots {:?}):\n  distance {d_avg:.2} ms avg (paper 6.36 ms)\n  distance + classification + slots {u_avg:.2} ms avg, {u_max:.2} ms max (paper complete update 11.02 / 19.94 ms, classification 3.62 / 11.45 ms)\n  pages to bake per update {:.0} avg, {:.0} max (paper 508 / 2232); their baking is not timed here (target ≤ {TARGET_UPDATE_MS} ms for the complete update)",
-            faces.len(),
-            full.len(),
-            vista as f64 / 1e6,
-            budget.capacity(),
-            avg(&pages),
-            max(&pages)
-        ),
-    );
-    Ok(())
+    super::ptex_update::run(args)
 }

@@ -67,18 +67,23 @@ pub fn border_source(set: &FaceSet, res: u32, f: usize, k: usize, j: u32) -> (us
     (n, i.clamp(0, last), jj.clamp(0, last))
 }
 
+/// The border texel `(i, j)` (one of them −1 or `res`) that border texel `j` of edge `k` is.
+pub fn border_texel(res: u32, k: usize, j: u32) -> (i32, i32) {
+    let t = (j as f32 + 0.5) / res as f32;
+    let e = edge_point(k, t);
+    let out = outward(k);
+    let half = 0.5 / res as f32;
+    texel_of([e[0] + out[0] * half, e[1] + out[1] * half], res)
+}
+
 /// Fills the borders of every face of `pages` (baked from `set`, interiors complete).
 pub fn fill_borders(set: &FaceSet, pages: &mut Pages) {
     let res = pages.res;
     let r = res as i32;
     for f in 0..pages.faces {
         for k in 0..4 {
-            let out = outward(k);
             for j in 0..res {
-                let t = (j as f32 + 0.5) / res as f32;
-                let e = edge_point(k, t);
-                let half = 0.5 / res as f32;
-                let (bi, bj) = texel_of([e[0] + out[0] * half, e[1] + out[1] * half], res);
+                let (bi, bj) = border_texel(res, k, j);
                 let (sf, si, sj) = border_source(set, res, f, k, j);
                 let (dst, src) = (pages.at(f, bi, bj), pages.at(sf, si, sj));
                 pages.copy(dst, src);

@@ -21,6 +21,13 @@
 //!   client's copy of the slots stays exact.
 //! - **Edits**: [`Budget::invalidate`] lists exactly the touched faces' pages (vista and, where
 //!   they hold one, their detail slot) for re-baking.
+//! - **Held faces** (a stream session's faces come and go with its tiles): [`Budget::hold`] adds
+//!   a face at the vista level, refused when the vista pages of the held faces would exceed the
+//!   budget; [`Budget::release`] frees a face and its slot. The detail levels share what the
+//!   held faces' vista pages leave, so their slot counts follow the held faces: when they shrink,
+//!   the faces in the slots beyond the new count fall back to the vista level (listed in the
+//!   next update's `to_vista`). Faces never held (indices past the held ones, or released) are
+//!   not classified.
 //!
 //! Pure and deterministic: the same faces and views give the same assignments.
 
@@ -108,6 +115,12 @@ pub struct Budget {
     slot: Vec<u32>,
     /// Which face holds each slot of each detail level.
     owners: [Vec<Option<u32>>; 5],
+    /// Whether each face is held.
+    held: Vec<bool>,
+    /// Faces held.
+    held_count: usize,
+    /// Faces that fell back to the vista level outside an update (their slots shrank away).
+    evicted: Vec<u32>,
 }
 
 impl Budget {
@@ -124,15 +137,125 @@ impl Budget {
                 budget: config.bytes,
             });
         }
-        let share = (config.bytes - need) / 5;
-        let capacity = std::array::from_fn(|l| (share / page_bytes(LEVEL_RES[l + 1])) as usize);
+        let capacity = Self::capacity_for(&config, faces);
         Ok(Self {
             config,
             capacity,
             level: vec![0; faces],
             slot: vec![u32::MAX; faces],
             owners: std::array::from_fn(|l| vec![None; capacity[l]]),
+            held: vec![true; faces],
+            held_count: faces,
+            evicted: Vec::new(),
         })
+    }
+
+    /// A budget holding no face yet (see [`Budget::hold`]).
+    pub fn empty(config: BudgetConfig) -> Self {
+        let capacity = Self::capacity_for(&config, 0);
+        Self {
+            config,
+            capacity,
+            level: Vec::new(),
+            slot: Vec::new(),
+            owners: std::array::from_fn(|l| vec![None; capacity[l]]),
+            held: Vec::new(),
+            held_count: 0,
+            evicted: Vec::new(),
+        }
+    }
+
+    /// Slots per detail level when `faces` faces hold vista pages: each level gets a fifth of
+    /// the rest of the budget.
+    fn capacity_for(config: &BudgetConfig, faces: usize) -> [usize; 5] {
+        let need = faces as u64 * page_bytes(LEVEL_RES[0]);
+        let share = config.bytes.saturating_sub(need) / 5;
+        std::array::from_fn(|l| (share / page_bytes(LEVEL_RES[l + 1])) as usize)
+    }
+
+    /// The settings.
+    pub fn config(&self) -> &BudgetConfig {
+        &self.config
+    }
+
+    /// Faces held.
+    pub fn held(&self) -> usize {
+        self.held_count
+    }
+
+    /// Whether face `f` is held.
+    pub fn is_held(&self, f: usize) -> bool {
+        self.held.get(f).copied().unwrap_or(false)
+    }
+
+    /// Holds face `f` at the vista level (its vista page is the caller's to bake). Holding a held
+    /// face changes nothing.
+    ///
+    /// # Errors
+    /// The vista pages of the held faces and this one would exceed the budget.
+    pub fn hold(&mut self, f: usize) -> Result<(), BudgetError> {
+        if self.is_held(f) {
+            return Ok(());
+        }
+        let need = (self.held_count as u64 + 1) * page_bytes(LEVEL_RES[0]);
+        if need > self.config.bytes {
+            return Err(BudgetError {
+                faces: self.held_count + 1,
+                need,
+                budget: self.config.bytes,
+            });
+        }
+        if f >= self.level.len() {
+            self.level.resize(f + 1, 0);
+            self.slot.resize(f + 1, u32::MAX);
+            self.held.resize(f + 1, false);
+        }
+        self.held[f] = true;
+        self.held_count += 1;
+        self.recapacity();
+        Ok(())
+    }
+
+    /// Releases face `f` and its detail slot, if it holds one.
+    pub fn release(&mut self, f: usize) {
+        if !self.is_held(f) {
+            return;
+        }
+        self.free_slot(f);
+        self.held[f] = false;
+        self.held_count -= 1;
+        self.evicted.retain(|&e| e as usize != f);
+        self.recapacity();
+    }
+
+    /// Frees face `f`'s detail slot; it is at the vista level after.
+    fn free_slot(&mut self, f: usize) {
+        let old = self.level[f];
+        if old > 0 {
+            let owners = &mut self.owners[old as usize - 1];
+            if let Some(o) = owners.get_mut(self.slot[f] as usize) {
+                *o = None;
+            }
+            self.slot[f] = u32::MAX;
+            self.level[f] = 0;
+        }
+    }
+
+    /// Sizes the detail levels for the held faces; faces in slots that no longer exist fall
+    /// back to the vista level.
+    fn recapacity(&mut self) {
+        let capacity = Self::capacity_for(&self.config, self.held_count);
+        for (l, &cap) in capacity.iter().enumerate() {
+            while self.owners[l].len() > cap {
+                if let Some(Some(f)) = self.owners[l].pop() {
+                    self.level[f as usize] = 0;
+                    self.slot[f as usize] = u32::MAX;
+                    self.evicted.push(f);
+                }
+            }
+            self.owners[l].resize(cap, None);
+        }
+        self.capacity = capacity;
     }
 
     /// Slots per detail level (16² … 256²).
@@ -145,9 +268,15 @@ impl Budget {
         self.level[f]
     }
 
-    /// Bytes of the pages held now: every vista page and every occupied detail slot.
+    /// The detail slot of face `f`, if it holds one.
+    pub fn slot(&self, f: usize) -> Option<u32> {
+        self.slot.get(f).copied().filter(|&s| s != u32::MAX)
+    }
+
+    /// Bytes of the pages held now: every held face's vista page and every occupied detail
+    /// slot.
     pub fn bytes_held(&self) -> u64 {
-        let vista = self.level.len() as u64 * page_bytes(LEVEL_RES[0]);
+        let vista = self.held_count as u64 * page_bytes(LEVEL_RES[0]);
         let detail: u64 = (0..5)
             .map(|l| {
                 self.owners[l].iter().filter(|o| o.is_some()).count() as u64
@@ -157,9 +286,10 @@ impl Budget {
         vista + detail
     }
 
-    /// The vista pages of every face (the first bake of a session).
+    /// The vista pages of every held face (the first bake of a session).
     pub fn vista(&self) -> Vec<Bake> {
         (0..self.level.len() as u32)
+            .filter(|&f| self.held[f as usize])
             .map(|f| Bake {
                 face: f,
                 level: 0,
@@ -172,10 +302,22 @@ impl Budget {
     /// vista level. `faces` longer or shorter than the budget's face count reads only the common
     /// part.
     pub fn update(&mut self, faces: &[FaceBounds], view: &View) -> Update {
-        let n = faces.len().min(self.level.len());
+        self.update_with(|f| faces.get(f).copied(), view)
+    }
+
+    /// [`Budget::update`] over the held faces whose bounds `bounds(f)` knows (a face without
+    /// bounds is classified out of view).
+    pub fn update_with(
+        &mut self,
+        bounds: impl Fn(usize) -> Option<FaceBounds>,
+        view: &View,
+    ) -> Update {
         let mut visible: Vec<(f32, u32)> = Vec::new();
-        for (f, b) in faces.iter().take(n).enumerate() {
-            if let Some(d) = distance_in_view(b, view) {
+        for f in 0..self.level.len() {
+            if !self.held[f] {
+                continue;
+            }
+            if let Some(d) = bounds(f).and_then(|b| distance_in_view(&b, view)) {
                 visible.push((d, f as u32));
             }
         }
@@ -194,7 +336,7 @@ impl Budget {
             }
         }
         // Free the slots of faces leaving their level, then fill the entering ones.
-        let mut to_vista = Vec::new();
+        let mut to_vista = std::mem::take(&mut self.evicted);
         for (f, &new) in wanted.iter().enumerate() {
             let old = self.level[f];
             if old != new && old > 0 {
@@ -225,6 +367,10 @@ impl Budget {
             }
         }
         bakes.sort_by(|a, b| b.level.cmp(&a.level).then(a.face.cmp(&b.face)));
+        // An evicted face that took a slot again is not back at the vista level.
+        to_vista.retain(|&f| self.level[f as usize] == 0);
+        to_vista.sort_unstable();
+        to_vista.dedup();
         Update {
             bake: bakes,
             to_vista,
@@ -239,6 +385,9 @@ impl Budget {
             let Some(&level) = self.level.get(f as usize) else {
                 continue;
             };
+            if !self.held[f as usize] {
+                continue;
+            }
             out.push(Bake {
                 face: f,
                 level: 0,

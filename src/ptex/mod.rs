@@ -19,7 +19,8 @@
 //! - [`border`]: the one-texel borders taken from the neighbours;
 //! - [`budget`]: the level-of-detail budget: a vista level for every face, detail levels for
 //!   the nearest faces in view, slots reused;
-//! - [`pages`]: the baked texels of a set of faces, the layout of `api/ptex_pages_v1.md`.
+//! - [`pages`]: the baked texels of a set of faces, the layout of `api/ptex_pages_v1.md`;
+//! - [`select`]: baking chosen faces of a set with their borders (a stream session's pages).
 //!
 //! Units: metres, world axes x east, y up, z south.
 
@@ -30,6 +31,7 @@ pub mod face;
 pub mod material;
 pub mod noise;
 pub mod pages;
+pub mod select;
 
 pub use bake::{bake, bake_interior};
 pub use face::{Face, FaceSet, Link, Sample, Span, TILE_FACES, TILE_FACE_CELLS};

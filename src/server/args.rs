@@ -89,6 +89,18 @@ pub struct ServeArgs {
           default_value_t = super::rate_limit::DEFAULT_RATE_LIMIT_PER_MINUTE,
           value_parser = clap::value_parser!(u32).range(1..))]
     pub rate_limit: u32,
+    /// Bytes of Ptex pages one stream session may hold (protocol v2, `api/stream_protocol_v2.md`),
+    /// MiB: a vista page for each of its faces, detail pages sharing the rest.
+    #[arg(long, value_name = "MIB", env = "STRATA_PTEX_SESSION_BUDGET",
+          default_value_t = crate::stream::ptex::DEFAULT_SESSION_BUDGET_MB,
+          value_parser = clap::value_parser!(u64).range(1..=1 << 20))]
+    pub ptex_session_budget: u64,
+    /// Bytes of Ptex pages all stream sessions together may hold, MiB; a session that would
+    /// exceed it gets no pages (`ptex_unavailable`).
+    #[arg(long, value_name = "MIB", env = "STRATA_PTEX_SERVER_BUDGET",
+          default_value_t = crate::stream::ptex::DEFAULT_SERVER_BUDGET_MB,
+          value_parser = clap::value_parser!(u64).range(1..=1 << 30))]
+    pub ptex_server_budget: u64,
 }
 
 fn check_store(s: &str) -> Result<super::access::Secret, String> {
@@ -127,6 +139,15 @@ impl ServeArgs {
                     anyhow::anyhow!("STRATA_MEMORY_BUDGET: {v:?} is not a number of MiB")
                 }),
             Err(_) => Ok(super::budget::DEFAULT_MEMORY_BUDGET_MB),
+        }
+    }
+
+    /// The Ptex page budgets of the command line.
+    pub fn ptex_settings(&self) -> crate::stream::ptex::PtexSettings {
+        crate::stream::ptex::PtexSettings {
+            session_bytes: self.ptex_session_budget << 20,
+            server_bytes: self.ptex_server_budget << 20,
+            ..crate::stream::ptex::PtexSettings::default()
         }
     }
 

@@ -55,6 +55,7 @@ pub mod rivers;
 pub mod route_table;
 pub mod routes;
 pub mod solved;
+mod stream_ptex;
 pub mod stream_routes;
 mod takeover;
 pub mod view;
@@ -153,6 +154,9 @@ pub struct AppState {
     pub cors: cors::CorsOrigins,
     /// Rate limits of the expensive routes (see [`rate_limit`]).
     pub rate: Arc<rate_limit::RateLimits>,
+    /// The Ptex page budget of stream sessions, per session and for the server
+    /// ([`crate::stream::ptex`]).
+    pub ptex: Arc<crate::stream::ptex::PtexPool>,
     limits: Limits,
     budget: budget::MemoryBudget,
     plans: Arc<PlanCache>,
@@ -187,6 +191,9 @@ impl AppState {
             sessions: Sessions::default(),
             cors: cors::CorsOrigins::default(),
             rate: Arc::default(),
+            ptex: Arc::new(crate::stream::ptex::PtexPool::new(
+                crate::stream::ptex::PtexSettings::default(),
+            )),
             limits,
             budget: budget::MemoryBudget::default(),
             plans: Arc::new(PlanCache::new(
@@ -236,6 +243,13 @@ impl AppState {
             self.limits.plan_cache_seeds,
             budget.seed_plans,
         ));
+        self
+    }
+
+    /// Grants stream sessions Ptex pages under `settings` (per session and for the server).
+    /// Call it before serving.
+    pub fn with_ptex(mut self, settings: crate::stream::ptex::PtexSettings) -> Self {
+        self.ptex = Arc::new(crate::stream::ptex::PtexPool::new(settings));
         self
     }
 
@@ -594,7 +608,9 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         .with_job_limits(args.job_limits())
         .with_jobs_dir(args.shared_dir())
         .with_job_ledger(ledger);
-    state = state.with_rate_limit(args.rate_limit);
+    state = state
+        .with_rate_limit(args.rate_limit)
+        .with_ptex(args.ptex_settings());
     tracing::info!(dir = %state.jobs.dir().display(), "export archives");
     match state.jobs.sweep().await {
         Ok(0) => {}

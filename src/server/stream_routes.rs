@@ -8,6 +8,7 @@ use super::routes::CachedProduct;
 use super::{AppError, AppState};
 use crate::encode::{Format, TileVersion};
 use crate::stream::protocol::{ChunkFrame, Protocol, TileFrame};
+use crate::stream::ptex::{PtexBaked, PtexBatch, PtexGrant};
 use crate::stream::session::{run, StreamError, StreamSource, MAX_MESSAGE_BYTES};
 use crate::terrain::TileKey;
 use crate::volume::chunk::{tiles_needed, ChunkKey};
@@ -171,6 +172,19 @@ impl StreamSource for WorldSource {
         chunk_frame(&self.state, view, key, format).await
     }
 
+    fn ptex_grant(&self) -> Option<(PtexGrant, [f32; 5])> {
+        let grant = self.state.ptex.grant()?;
+        Some((grant, self.state.ptex.settings().thresholds_m))
+    }
+
+    async fn ptex_frame(
+        &self,
+        view: &StreamView,
+        batch: &PtexBatch,
+    ) -> Result<PtexBaked, StreamError> {
+        super::stream_ptex::frame(&self.state, view, batch).await
+    }
+
     async fn edit(
         &self,
         patch: serde_json::Value,
@@ -319,6 +333,19 @@ impl StreamSource for SeedSource {
         format: Format,
     ) -> Result<Bytes, StreamError> {
         chunk_frame(&self.state, view, key, format).await
+    }
+
+    fn ptex_grant(&self) -> Option<(PtexGrant, [f32; 5])> {
+        let grant = self.state.ptex.grant()?;
+        Some((grant, self.state.ptex.settings().thresholds_m))
+    }
+
+    async fn ptex_frame(
+        &self,
+        view: &StreamView,
+        batch: &PtexBatch,
+    ) -> Result<PtexBaked, StreamError> {
+        super::stream_ptex::frame(&self.state, view, batch).await
     }
 
     async fn edit(

@@ -12,6 +12,8 @@
 pub mod chunks;
 pub mod outbox;
 pub mod protocol;
+pub mod ptex;
+pub mod ptex_frame;
 pub mod session;
 pub mod view;
 pub mod work;

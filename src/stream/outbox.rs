@@ -117,9 +117,10 @@ impl Outbox {
         self.withdraw_where(|p| stale.contains(p))
     }
 
-    /// Removes the queued frames of products not in `keep`; returns how many were removed.
+    /// Removes the queued frames of products not in `keep`, Ptex pages excepted (a session's
+    /// pages are not products of a view); returns how many were removed.
     pub fn withdraw_unless(&self, keep: &HashSet<Product>) -> usize {
-        self.withdraw_where(|p| !keep.contains(p))
+        self.withdraw_where(|p| !matches!(p, Product::Ptex(_)) && !keep.contains(p))
     }
 
     fn withdraw_where(&self, stale: impl Fn(&Product) -> bool) -> usize {

@@ -111,6 +111,8 @@ pub struct VolumeView {
     pub chunks: Vec<[i64; 4]>,
     /// Chunk format: `bin` (default), `json` or `glb`.
     pub chunk_format: Option<String>,
+    /// Ptex pages: the client opts in with its view direction ([`super::ptex`]).
+    pub ptex: Option<super::ptex::PtexView>,
 }
 
 #[derive(Deserialize)]
@@ -139,6 +141,8 @@ struct ViewFieldsV2 {
     chunks: Vec<[i64; 4]>,
     #[serde(default)]
     chunk_format: Option<String>,
+    #[serde(default)]
+    ptex: Option<super::ptex::PtexView>,
 }
 
 #[derive(Deserialize)]
@@ -201,6 +205,7 @@ impl ClientMessage {
                         chunk_rings: f.chunk_rings,
                         chunks: f.chunks,
                         chunk_format: f.chunk_format,
+                        ptex: f.ptex,
                     }),
                 })
             }

@@ -11,7 +11,10 @@
 //!   ahead of the rest, in view order;
 //! - production: while work is pending, the outbox has room and (v2) the client has credit, the
 //!   next product is synthesised and queued. A full outbox or no credit stops production: the
-//!   client is slowed, never dropped for it. A v2 client that holds no credit while frames wait
+//!   client is slowed, never dropped for it. A v2 client that opted in to Ptex pages
+//!   ([`super::ptex`]) also gets batches of pages, at most one per
+//!   [`super::ptex::PTEX_EVERY`] frames while tiles or chunks wait, each spending a credit;
+//!   `idle` then waits for its pages too. A v2 client that holds no credit while frames wait
 //!   and sends nothing for [`SEND_TIMEOUT`] is closed with [`POLICY_VIOLATION`] and a reason;
 //!   a client whose socket takes no frame for [`SEND_TIMEOUT`] (it does not read) likewise.
 //!
@@ -34,6 +37,7 @@ use super::protocol::TileFrame;
 use super::protocol::{
     chunk_address, ClientMessage, Protocol, ServerMessage, VolumeView, MAX_CREDITS,
 };
+use super::ptex::{face_reach, PtexBaked, PtexBatch, PtexGrant, PtexSession, PTEX_EVERY};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use super::work::{merge, Product, Work};
 use crate::encode::Format;
@@ -178,6 +182,16 @@ pub trait StreamSource: Send + Sync + 'static {
         key: ChunkKey,
         format: Format,
     ) -> Result<axum::body::Bytes, StreamError>;
+    /// Protocol v2 Ptex pages: a session's share of the server's page budget and the detail
+    /// levels' distance thresholds, or `None` when the server's budget has no room.
+    fn ptex_grant(&self) -> Option<(PtexGrant, [f32; 5])>;
+    /// The frame of kind 3 of a batch of Ptex pages of the world `view`, with the bounds of
+    /// each page's face ([`super::ptex`]).
+    async fn ptex_frame(
+        &self,
+        view: &Self::View,
+        batch: &PtexBatch,
+    ) -> Result<PtexBaked, StreamError>;
 }
 
 fn error_message(e: &StreamError, id: Option<String>) -> ServerMessage {
@@ -334,13 +348,18 @@ pub async fn run<S: StreamSource>(
     let mut held: HashMap<Product, u64> = HashMap::new();
     let mut pending: VecDeque<Work> = VecDeque::new();
     let mut idle_sent = true;
+    // v2: the Ptex pages of a client that opted in; frames since the last Ptex batch.
+    let mut ptex: Option<PtexSession> = None;
+    let mut since_ptex: u32 = 0;
+    let mut ptex_serial: u64 = 0;
     // Since when frames have waited for a credit the client does not grant (v2).
     let mut starved_since: Option<Instant> = None;
     loop {
         if writer.is_finished() || outbox.is_closed() {
             break;
         }
-        if credits == 0 && !pending.is_empty() {
+        let ptex_work = ptex.as_ref().is_some_and(PtexSession::has_work);
+        if credits == 0 && (!pending.is_empty() || ptex_work) {
             starved_since.get_or_insert_with(Instant::now);
         } else {
             starved_since = None;
@@ -398,10 +417,42 @@ pub async fn run<S: StreamSource>(
                                 None => None,
                             };
                             Ok((tiles, fmt, chunks))
+                        }).and_then(|(tiles, fmt, chunks)| {
+                            let eye = [x, volume.as_ref().map_or(0.0, |v| v.y), z];
+                            let pv = match volume.as_ref().and_then(|v| v.ptex.as_ref()) {
+                                Some(p) => Some(p.view(eye).map_err(|(field, m)| StreamError {
+                                    code: "bad_ptex",
+                                    message: m,
+                                    field: Some(format!("ptex.{field}").into()),
+                                })?),
+                                None => None,
+                            };
+                            Ok((tiles, fmt, chunks, pv))
                         });
                         let reply = match accepted {
                             Err(e) => error_message(&e, None),
-                            Ok((tiles, fmt, chunks)) => {
+                            Ok((tiles, fmt, chunks, pv)) => {
+                                match pv {
+                                    None => ptex = None,
+                                    Some(pv) => {
+                                        if ptex.is_none() {
+                                            match source.ptex_grant() {
+                                                Some((grant, thresholds)) => {
+                                                    let mut p = PtexSession::new(grant, thresholds);
+                                                    outbox.push_now(Outgoing::Text(serde_json::to_string(&p.hello()).unwrap_or_default()));
+                                                    ptex = Some(p);
+                                                }
+                                                None => {
+                                                    let e = refused("ptex_unavailable", "ptex", "the server's Ptex page budget is taken by other sessions; try again later");
+                                                    outbox.push_now(text(&error_message(&e, None)));
+                                                }
+                                            }
+                                        }
+                                        if let Some(p) = ptex.as_mut() {
+                                            p.set_view(pv);
+                                        }
+                                    }
+                                }
                                 if fmt != format {
                                     held.retain(|p, _| matches!(p, Product::Chunk(_)));
                                     format = fmt;
@@ -422,6 +473,9 @@ pub async fn run<S: StreamSource>(
                                 let work = view.work(cell_m);
                                 let in_view: HashSet<Product> = work.iter().map(Work::product).collect();
                                 held.retain(|p, _| in_view.contains(p));
+                                if let Some(p) = ptex.as_mut() {
+                                    p.retain_tiles(|k| in_view.contains(&Product::Tile(k)));
+                                }
                                 let gone = outbox.withdraw_unless(&in_view);
                                 if v2 {
                                     credits = credits.saturating_add(gone as u32).min(MAX_CREDITS);
@@ -484,6 +538,11 @@ pub async fn run<S: StreamSource>(
                     *v = version;
                 }
                 let stale_set: HashSet<Product> = stale.iter().map(Work::product).collect();
+                if let Some(p) = ptex.as_mut() {
+                    if p.invalidate(|f| dirty.touches(&face_reach(params, f))) > 0 {
+                        idle_sent = false;
+                    }
+                }
                 if !stale.is_empty() || !dropped.is_empty() {
                     let tiles = stale.iter().filter_map(|w| match w {
                         Work::Tile(t) => Some([t.key.lod as i64, t.key.x, t.key.z]),
@@ -520,7 +579,34 @@ pub async fn run<S: StreamSource>(
                 }
                 pending = next_pending;
             }
-            () = outbox.frame_room(), if !pending.is_empty() && credits > 0 => {
+            () = outbox.frame_room(), if (!pending.is_empty() || ptex_work) && credits > 0 => {
+                let ptex_turn = ptex_work && (pending.is_empty() || since_ptex + 1 >= PTEX_EVERY);
+                if let (true, Some(p)) = (ptex_turn, ptex.as_mut()) {
+                    since_ptex = 0;
+                    let (message, batch) = p.next_batch();
+                    if let Some(m) = message {
+                        outbox.push_now(Outgoing::Text(serde_json::to_string(&m).unwrap_or_default()));
+                    }
+                    let Some(batch) = batch else { continue };
+                    let baked = tokio::select! {
+                        r = source.ptex_frame(&current, &batch) => r,
+                        () = closing.cancelled() => break,
+                    };
+                    match baked {
+                        Ok(b) => {
+                            p.baked(&batch, &b.bounds);
+                            ptex_serial += 1;
+                            outbox.push_now(Outgoing::Frame { product: Product::Ptex(ptex_serial), bytes: b.bytes });
+                            credits -= 1;
+                            STATS.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        }
+                        Err(e) => {
+                            outbox.push_now(text(&error_message(&e, None)));
+                        }
+                    }
+                    continue;
+                }
+                since_ptex = since_ptex.saturating_add(1);
                 let Some(w) = pending.pop_front() else { continue };
                 let produced = tokio::select! {
                     r = async {
@@ -543,6 +629,12 @@ pub async fn run<S: StreamSource>(
                     Ok(frame) => {
                         outbox.push_now(Outgoing::Frame { product: w.product(), bytes: frame });
                         held.insert(w.product(), version);
+                        if let (Some(p), Work::Tile(t)) = (ptex.as_mut(), w) {
+                            if !p.hold_tile(t.key, t.seams) {
+                                let e = refused("ptex_budget_exceeded", "rings", "the vista pages of the view's faces exceed the session's Ptex budget; faces beyond it get no pages");
+                                outbox.push_now(text(&error_message(&e, None)));
+                            }
+                        }
                         if v2 {
                             credits -= 1;
                         }
@@ -570,7 +662,7 @@ pub async fn run<S: StreamSource>(
             }
             _ = tokio::time::sleep(Duration::from_millis(250)), if pending.is_empty() && !idle_sent => {}
         }
-        if pending.is_empty() && !idle_sent {
+        if pending.is_empty() && !ptex.as_ref().is_some_and(PtexSession::has_work) && !idle_sent {
             idle_sent = true;
             if !outbox.push(text(&ServerMessage::Idle { version })).await {
                 break;

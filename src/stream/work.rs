@@ -12,6 +12,8 @@ pub enum Product {
     Tile(TileKey),
     /// A volume chunk (protocol v2).
     Chunk(ChunkKey),
+    /// A batch of Ptex pages (protocol v2), by the session's serial number: never superseded.
+    Ptex(u64),
 }
 
 /// One frame to produce: a tile with its seam flags, or a chunk.

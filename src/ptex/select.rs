@@ -1,0 +1,110 @@
+//! Baking chosen faces of a set: what a stream session's budget asks for, a few faces of a
+//! height tile at one level, without baking the rest of the tile or its neighbours.
+//!
+//! A chosen face's interior is [`super::bake::texel`] at each texel, and each border texel is
+//! the texel [`super::border::border_source`] names, computed alone: a neighbour's texel is a
+//! function of the neighbour face only, so the page is byte for byte the one [`super::bake`]
+//! writes for the whole set (tested below), at a cost of `res² + 4·res` texels a face instead of
+//! the neighbours' `res²` each.
+
+use super::bake::{texel, Texel};
+use super::border::{border_source, border_texel};
+use super::face::FaceSet;
+use super::material::MaterialSet;
+use super::pages::Pages;
+use rayon::prelude::*;
+
+/// Bakes faces `chosen` of `set` (indices into `set.faces`) at `res` into `out`, face `k` of
+/// `out` being `chosen[k]`, borders included.
+pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize], out: &mut Pages) {
+    out.reset(res, chosen.len());
+    let per = out.texels_per_face();
+    let side = out.side();
+    let r = res as i32;
+    let at = |i: i32, j: i32| (j + 1) as usize * side + (i + 1) as usize;
+    out.albedo
+        .par_chunks_mut(per)
+        .zip(out.normal.par_chunks_mut(per))
+        .zip(out.displacement.par_chunks_mut(per))
+        .zip(chosen.par_iter())
+        .for_each(|(((alb, nrm), disp), &f)| {
+            let mut put = |k: usize, t: Texel| {
+                alb[k] = t.albedo;
+                nrm[k] = t.normal;
+                disp[k] = t.displacement;
+            };
+            for j in 0..r {
+                for i in 0..r {
+                    put(at(i, j), texel(set, mats, f, res, i as u32, j as u32));
+                }
+            }
+            for k in 0..4 {
+                for j in 0..res {
+                    let (bi, bj) = border_texel(res, k, j);
+                    let (sf, si, sj) = border_source(set, res, f, k, j);
+                    let t = if sf == f {
+                        let s = at(si, sj);
+                        Texel {
+                            albedo: alb[s],
+                            normal: nrm[s],
+                            displacement: disp[s],
+                        }
+                    } else {
+                        texel(set, mats, sf, res, si as u32, sj as u32)
+                    };
+                    let d = at(bi, bj);
+                    alb[d] = t.albedo;
+                    nrm[d] = t.normal;
+                    disp[d] = t.displacement;
+                }
+            }
+            for (ci, cj, si, sj) in [
+                (-1, -1, 0, 0),
+                (r, -1, r - 1, 0),
+                (r, r, r - 1, r - 1),
+                (-1, r, 0, r - 1),
+            ] {
+                let (d, s) = (at(ci, cj), at(si, sj));
+                alb[d] = alb[s];
+                nrm[d] = nrm[s];
+                disp[d] = disp[s];
+            }
+        });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ptex::face::TileFacePlan;
+    use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+
+    #[test]
+    fn chosen_faces_are_the_whole_bakes_bytes() {
+        let plan = WorldPlan::new(5, WorldParams::default()).expect("plan");
+        let mats = MaterialSet::default_ground(plan.seed);
+        let key = TileKey {
+            lod: 2,
+            x: 3,
+            z: -2,
+        };
+        let faces = TileFacePlan::new(key, [false, true, false, false], 12);
+        let tiles: Vec<_> = faces
+            .tiles()
+            .into_iter()
+            .map(|t| synthesize(&plan, t))
+            .collect();
+        let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+        let mut whole = Pages::default();
+        crate::ptex::bake(&set, &mats, 16, &mut whole);
+        let chosen = [0usize, 5, 3, 15, 12];
+        let mut some = Pages::default();
+        bake_faces(&set, &mats, 16, &chosen, &mut some);
+        let per = whole.texels_per_face();
+        for (k, &f) in chosen.iter().enumerate() {
+            let (a, b) = (f * per..(f + 1) * per, k * per..(k + 1) * per);
+            assert_eq!(whole.albedo[a.clone()], some.albedo[b.clone()], "face {f}");
+            assert_eq!(whole.normal[a.clone()], some.normal[b.clone()], "face {f}");
+            assert_eq!(whole.displacement[a], some.displacement[b], "face {f}");
+        }
+    }
+}
