@@ -162,6 +162,10 @@ impl StreamSource for WorldSource {
         tile_frame(&self.state, view, key, seams, format).await
     }
 
+    async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {
+        self.state.tile(&view.view, key, [false; 4]).await
+    }
+
     async fn chunk_frame(
         &self,
         view: &StreamView,
@@ -310,6 +314,10 @@ impl StreamSource for SeedSource {
         format: Format,
     ) -> Result<Bytes, StreamError> {
         tile_frame(&self.state, view, key, seams, format).await
+    }
+
+    async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {
+        self.state.tile(&view.view, key, [false; 4]).await
     }
 
     async fn chunk_frame(
