@@ -4,17 +4,19 @@
 //! cave reaches the ground; [`crate::subsurface::world`]). Both are pure functions of the world
 //! position of a lattice sample, so tiles that share an edge agree on it bit for bit and seam
 //! strips of the coarser LOD get the same edits. A finished tile then marks the vertices the
-//! volume regions it meets override (issue 5, [`TileEdits::mark`]).
+//! volume regions it meets override (issue 5) and, where a `strata` element asks for it, the
+//! vertices where its caves breach the ground (issue 19, [`TileEdits::mark`]).
 //!
 //! Pure: no tokio, axum or wgpu.
 
 use crate::authoring::Displacement;
-use crate::subsurface::world::breach_lattice;
-use crate::subsurface::Geology;
+use crate::subsurface::world::{breach_lattice, in_force, memos};
+use crate::subsurface::{ElementMemo, Geology};
 use crate::terrain::lattice::Window;
 use crate::terrain::plan::TILE_VERTS;
 use crate::terrain::tile::{apply_snap, field, finish, snap_strip, Edge, Field, FieldJob};
 use crate::terrain::{Tile, TileKey, WorldPlan};
+use crate::volume::chunk::MAX_CHUNK_LOD;
 use crate::volume::element::{GroundEdits, VolumeSpec};
 use std::sync::Arc;
 
@@ -40,13 +42,22 @@ impl TileEdits {
         }
     }
 
-    /// Marks the vertices of a finished tile whose ground lies inside a volume region's box
-    /// (`x`, `z` within its bbox, the height within its `y_m`): volume chunks give the surface
-    /// there. Leaves [`Tile::volume_override`] empty when no vertex is marked.
+    /// Marks the vertices of a finished tile that volume chunks override: those whose ground
+    /// lies inside a volume region's box (`x`, `z` within its bbox, the height within its
+    /// `y_m`) and, in tiles of LOD 0 to [`MAX_CHUNK_LOD`], those where a cave of a `strata`
+    /// element with `mark_openings` breaches the ground (the element in force there,
+    /// [`crate::subsurface::world::in_force`]). Leaves [`Tile::volume_override`] empty when no
+    /// vertex is marked.
     pub fn mark(&self, tile: &mut Tile) {
-        if self.volumes.is_empty() {
+        let caves = tile.key.lod <= MAX_CHUNK_LOD
+            && self
+                .strata
+                .iter()
+                .any(|g| g.spec.carve && g.spec.mark_openings);
+        if self.volumes.is_empty() && !caves {
             return;
         }
+        let mut memos = memos(&self.strata);
         let s = f64::from(tile.spacing_m);
         let (x0, z0) = (tile.origin_x_m(), tile.origin_z_m());
         let marks: Vec<u8> = tile
@@ -66,12 +77,22 @@ impl TileEdits {
                         && h >= b.y_m[0]
                         && h <= b.y_m[1]
                 });
-                u8::from(inside)
+                u8::from(inside || (caves && self.opening(&mut memos, x, z)))
             })
             .collect();
         if marks.contains(&1) {
             tile.volume_override = marks;
         }
+    }
+
+    /// Whether a cave of the `strata` element in force at `(x, z)` breaches the ground there
+    /// and the element has `mark_openings`.
+    fn opening(&self, memos: &mut [ElementMemo], x: f64, z: f64) -> bool {
+        let Some(k) = in_force(&self.strata, x, z) else {
+            return false;
+        };
+        let g = &self.strata[k];
+        g.spec.mark_openings && g.carved(x, z, &mut memos[k]).is_some_and(|(_, b)| b > 0.0)
     }
 }
 

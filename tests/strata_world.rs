@@ -41,6 +41,7 @@ fn geology() -> Arc<Geology> {
             config: cave_config(),
             voxel_m: 1.0,
             carve: true,
+            mark_openings: false,
         },
     ))
 }

@@ -2,7 +2,8 @@
 //! against the app on a real socket: flow control by credits (a slow but live client is slowed,
 //! never dropped, and never gets more frames than it granted; a client that grants nothing is
 //! closed with 1008 and a reason), volume chunks of a world's volume region (the same bytes as
-//! the HTTP chunk route, re-sent after an edit), and v1 still served by default.
+//! the HTTP chunk route, re-sent after an edit) and of a cave that opens to the ground (the
+//! tiles marking the vertices where it does), and v1 still served by default.
 
 use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
@@ -171,17 +172,14 @@ fn ground_at(x: i64, z: i64) -> f32 {
     t.heights[(z * 65 + x) as usize]
 }
 
-/// Reads frames until `idle`: the chunk frames and the control messages.
-async fn until_idle(ws: &mut Ws) -> (Vec<ChunkFrame>, usize, Vec<Value>) {
-    let (mut chunks, mut tiles, mut msgs) = (Vec::new(), 0, Vec::new());
+/// Reads frames until `idle`: the chunk frames, the tile frames and the control messages.
+async fn until_idle(ws: &mut Ws) -> (Vec<ChunkFrame>, Vec<TileFrame>, Vec<Value>) {
+    let (mut chunks, mut tiles, mut msgs) = (Vec::new(), Vec::new(), Vec::new());
     loop {
         match next(ws, Duration::from_secs(300)).await {
             Message::Binary(b) => match ChunkFrame::decode(&b) {
                 Some(c) => chunks.push(c),
-                None => {
-                    TileFrame::decode(&b).expect("a tile or chunk frame");
-                    tiles += 1;
-                }
+                None => tiles.push(TileFrame::decode(&b).expect("a tile or chunk frame")),
             },
             m => {
                 if let Some(v) = json_text(&m) {
@@ -251,7 +249,7 @@ async fn a_volume_region_streams_its_chunks_and_an_edit_resends_them() {
         .as_array()
         .expect("the view lists its chunks")
         .len();
-    assert_eq!(tiles, select(32.0, 24.0, &[1], 1.0).len());
+    assert_eq!(tiles.len(), select(32.0, 24.0, &[1], 1.0).len());
     assert!(!chunks.is_empty(), "the arch's chunks arrive");
     assert_eq!(chunks.len(), listed, "every listed chunk arrives");
     // Only chunks meeting the region's box: x in [0, 64), z in [0, 48), y in y_m.
@@ -308,4 +306,196 @@ async fn a_volume_region_streams_its_chunks_and_an_edit_resends_them() {
         assert_eq!(c.version, 2);
         assert_eq!(c.payload, http_chunk(&addr, &id, c.key, 2).await);
     }
+}
+
+async fn create_world(addr: &str, scene: Value) -> (String, String) {
+    let body = json!({"seed": SEED, "public": true, "scene": scene});
+    let (status, text) = strata::bench::http::http(
+        addr,
+        "POST",
+        "/v1/worlds",
+        &[("Content-Type", "application/json")],
+        &body.to_string(),
+    )
+    .await
+    .expect("HTTP");
+    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
+    let doc: Value = serde_json::from_slice(&text).expect("JSON");
+    let id = doc["id"].as_str().expect("id").to_string();
+    let token = doc["tokens"]["admin"].as_str().expect("token").to_string();
+    (id, token)
+}
+
+/// The world columns `(x, z)` whose vertices a JSON tile frame marks `volume_override`, with
+/// the marked vertices' heights.
+fn marked(t: &TileFrame) -> Vec<((i64, i64), f64)> {
+    let doc: Value = serde_json::from_slice(&t.payload).expect("a JSON tile");
+    let Some(marks) = doc.get("volume_override") else {
+        return Vec::new();
+    };
+    let heights = doc["heights"].as_array().expect("heights");
+    let s = 1i64 << t.key.lod;
+    marks
+        .as_array()
+        .expect("indices")
+        .iter()
+        .map(|v| {
+            let v = v.as_u64().expect("index") as usize;
+            let (i, j) = ((v % 65) as i64, (v / 65) as i64);
+            let h = heights[v].as_f64().expect("height");
+            (((t.key.x * 64 + i) * s, (t.key.z * 64 + j) * s), h)
+        })
+        .collect()
+}
+
+fn chunk_keys(list: &Value) -> Vec<ChunkKey> {
+    list.as_array()
+        .expect("chunk addresses")
+        .iter()
+        .map(|a| ChunkKey {
+            lod: a[0].as_u64().expect("lod") as u32,
+            x: a[1].as_i64().expect("x"),
+            y: a[2].as_i64().expect("y"),
+            z: a[3].as_i64().expect("z"),
+        })
+        .collect()
+}
+
+/// Issue 19, Done-when 1 over the WebSocket: a `strata` element whose cave opens to the ground
+/// streams the chunks where it does without being asked, the tiles mark exactly the vertices
+/// where it breaches, and removing the element drops the chunks and re-sends the tiles unmarked.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_cave_opening_to_the_ground_streams_its_chunks_and_tiles_mark_the_opening() {
+    let addr = serve().await;
+    let cave = common::cave::cave(SEED);
+    let (id, token) = create_world(&addr, json!({"strata": [cave.element.clone()]})).await;
+    let (cx, cz) = (
+        (cave.min[0] + cave.max[0]) / 2.0,
+        (cave.min[1] + cave.max[1]) / 2.0,
+    );
+    let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
+    let (tx, tz) = ((cx / 64.0).floor() as i64, (cz / 64.0).floor() as i64);
+    let plain = synthesize(
+        &plan,
+        TileKey {
+            lod: 0,
+            x: tx,
+            z: tz,
+        },
+        &TileEdits::default(),
+    );
+    let at = |x: f64, z: f64| ((z as i64 - tz * 64) * 65 + (x as i64 - tx * 64)) as usize;
+    let ground = f64::from(plain.heights[at(cx, cz)]);
+
+    let mut ws = connect(
+        &addr,
+        &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),
+    )
+    .await;
+    next(&mut ws, Duration::from_secs(30)).await;
+    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    let y = ground + 20.0;
+    send(
+        &mut ws,
+        json!({"type": "view", "x": cx, "z": cz, "y": y, "rings": [1], "format": "json",
+               "chunk_rings": [3]}),
+    )
+    .await;
+    let (chunks, tiles, msgs) = until_idle(&mut ws).await;
+    let view = msgs
+        .iter()
+        .find(|m| m["type"] == "view")
+        .expect("view reply");
+    let listed = chunk_keys(&view["chunks"]);
+    println!(
+        "cave {:?}..{:?}: {} breached columns, {} chunk frames, {} tiles",
+        cave.min,
+        cave.max,
+        cave.breached.len(),
+        chunks.len(),
+        tiles.len()
+    );
+    assert!(!chunks.is_empty(), "the cave's chunks arrive unasked");
+    let got: Vec<ChunkKey> = chunks.iter().map(|c| c.key).collect();
+    assert_eq!(got, listed, "every listed chunk arrives, nearest first");
+    // The chunks lie over the cave's square and hold its floor where it opens.
+    for c in &chunks {
+        let k = c.key;
+        let (x0, z0) = (k.x as f64 * 32.0, k.z as f64 * 32.0);
+        assert!(
+            x0 < cave.max[0]
+                && x0 + 32.0 > cave.min[0]
+                && z0 < cave.max[1]
+                && z0 + 32.0 > cave.min[1],
+            "{k:?} is away from the cave"
+        );
+        assert_eq!(c.payload, http_chunk(&addr, &id, k, 1).await, "{k:?}");
+    }
+    // Tiles mark exactly the columns where the cave breaches; a marked vertex lies on the
+    // cave's floor, inside a streamed chunk.
+    assert_eq!(tiles.len(), select(cx, cz, &[1], 1.0).len());
+    let mut marks: Vec<((i64, i64), f64)> = tiles.iter().flat_map(marked).collect();
+    marks.sort_by_key(|m| m.0);
+    marks.dedup_by_key(|m| m.0);
+    let columns: Vec<(i64, i64)> = marks.iter().map(|m| m.0).collect();
+    let mut breached = cave.breached.clone();
+    breached.sort();
+    assert_eq!(
+        columns, breached,
+        "marked vertices are the breached columns"
+    );
+    let cube_y = |y: f64| ((y / 32.0).floor() as i64 - 3, (y / 32.0).floor() as i64 + 3);
+    let (ylo, yhi) = cube_y(y);
+    let mut inside = 0;
+    for &((x, z), h) in &marks {
+        let key = ChunkKey {
+            lod: 0,
+            x: x.div_euclid(32),
+            y: (h / 32.0).floor() as i64,
+            z: z.div_euclid(32),
+        };
+        if key.y < ylo
+            || key.y > yhi
+            || (x - (cx.floor() as i64)).abs() > 96
+            || (z - (cz.floor() as i64)).abs() > 96
+        {
+            continue;
+        }
+        inside += 1;
+        assert!(
+            got.contains(&key),
+            "the opening at ({x}, {h}, {z}) is in no chunk: {key:?}"
+        );
+    }
+    assert!(
+        inside * 2 > marks.len(),
+        "{inside} of {} openings in the rings",
+        marks.len()
+    );
+
+    // Removing the element drops the chunks and re-sends the tiles it marked, unmarked.
+    let patch = json!([{"op": "remove", "path": "/strata/0"}]);
+    send(
+        &mut ws,
+        json!({"type": "edit", "id": "e1", "patch": patch, "if_match": 1}),
+    )
+    .await;
+    let (fresh, retiled, msgs) = until_idle(&mut ws).await;
+    let inv = msgs
+        .iter()
+        .find(|m| m["type"] == "invalidate")
+        .expect("invalidate");
+    let mut dropped = chunk_keys(&inv["dropped"]);
+    dropped.sort_by_key(|k| (k.lod, k.x, k.y, k.z));
+    let mut held = got.clone();
+    held.sort_by_key(|k| (k.lod, k.x, k.y, k.z));
+    assert_eq!(dropped, held, "every cave chunk leaves the view");
+    assert!(
+        fresh.is_empty(),
+        "no chunk is sent for a world without caves"
+    );
+    assert!(!retiled.is_empty(), "the opened tiles come again");
+    assert!(retiled
+        .iter()
+        .all(|t| t.version == 2 && marked(t).is_empty()));
 }

@@ -9,7 +9,9 @@
 //! `tests/js/errors.mjs` opens a bad seed and an unknown world: the server's error is shown and
 //! the viewer stops reconnecting; `tests/js/volume.mjs` opens worlds with and without the arch
 //! volume element: chunk frames arrive for the arch and it shows
-//! (`target/viewer-{arch,no-arch}.png`).
+//! (`target/viewer-{arch,no-arch}.png`); `tests/js/cave.mjs` opens worlds with and without a
+//! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
+//! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`).
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
@@ -37,6 +39,69 @@ fn arch_element() -> serde_json::Value {
     let plan = WorldPlan::new(7, WorldParams::default()).expect("default world");
     let tile = synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 }, &TileEdits::default());
     common::arch::arch_element(tile.heights[24 * 65 + 32])
+}
+
+/// What `cave.mjs` needs besides the element: the orbit target (an unbreached column near the
+/// cave's centre, so the camera rides on the same ground in both worlds), the ground there, the
+/// camera's distance and pitch, and the cave's box (module docs of `cave.mjs`).
+fn cave_geometry(cave: &common::cave::Cave) -> serde_json::Value {
+    use strata::edits::{synthesize, TileEdits};
+    use strata::terrain::{Tile, TileKey, WorldParams, WorldPlan};
+    let plan = WorldPlan::new(7, WorldParams::default()).expect("default world");
+    let opened = TileEdits {
+        strata: vec![cave.geology.clone()],
+        ..TileEdits::default()
+    };
+    let mut tiles: std::collections::HashMap<(bool, i64, i64), Tile> = Default::default();
+    let mut height = |with: bool, x: i64, z: i64| -> f64 {
+        let (tx, tz) = (x.div_euclid(64), z.div_euclid(64));
+        let t = tiles.entry((with, tx, tz)).or_insert_with(|| {
+            let key = TileKey {
+                lod: 0,
+                x: tx,
+                z: tz,
+            };
+            let edits = if with {
+                opened.clone()
+            } else {
+                TileEdits::default()
+            };
+            synthesize(&plan, key, &edits)
+        });
+        f64::from(t.heights[(z.rem_euclid(64) * 65 + x.rem_euclid(64)) as usize])
+    };
+    let centre = [
+        ((cave.min[0] + cave.max[0]) / 2.0).round() as i64,
+        ((cave.min[1] + cave.max[1]) / 2.0).round() as i64,
+    ];
+    let open_near = |x: i64, z: i64| {
+        cave.breached
+            .iter()
+            .any(|&(bx, bz)| (bx - x).abs() <= 3 && (bz - z).abs() <= 3)
+    };
+    let target = (0..64i64)
+        .flat_map(|r| (-r..=r).flat_map(move |dz| (-r..=r).map(move |dx| (dx, dz))))
+        .map(|(dx, dz)| (centre[0] + dx, centre[1] + dz))
+        .find(|&(x, z)| !open_near(x, z))
+        .expect("unbreached ground near the cave");
+    let lo = cave.min.map(|v| v.floor() as i64);
+    let hi = cave.max.map(|v| v.ceil() as i64);
+    let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &(x, z) in &cave.breached {
+        low = low.min(height(true, x, z));
+    }
+    for z in lo[1]..=hi[1] {
+        for x in lo[0]..=hi[0] {
+            high = high.max(height(false, x, z));
+        }
+    }
+    serde_json::json!({
+        "target": [target.0, target.1],
+        "ground": height(false, target.0, target.1),
+        "dist": 80,
+        "pitch": 45,
+        "box": {"min": [lo[0], low - 2.0, lo[1]], "max": [hi[0], high + 2.0, hi[1]]},
+    })
 }
 
 #[test]
@@ -72,6 +137,22 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
         "volume.mjs",
         &[server.addr.as_str(), &arch, path(&with), path(&without)],
     );
+    // Issue 19, Done-when 1 (the cave opening): chunk frames arrive and the opening shows.
+    let cave = common::cave::cave(7);
+    let geometry = cave_geometry(&cave).to_string();
+    let element = cave.element.to_string();
+    let with = root().join("target").join("viewer-cave.png");
+    let without = root().join("target").join("viewer-no-cave.png");
+    let opening = run_node(
+        "cave.mjs",
+        &[
+            server.addr.as_str(),
+            &element,
+            &geometry,
+            path(&with),
+            path(&without),
+        ],
+    );
     drop(server);
     let _ = std::fs::remove_dir_all(&data);
     for (name, (ok, out)) in [
@@ -79,6 +160,7 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
         ("edit.mjs", edit),
         ("errors.mjs", errors),
         ("volume.mjs", volume),
+        ("cave.mjs", opening),
     ] {
         assert!(ok, "{name} failed:\n{out}");
     }

@@ -1092,9 +1092,10 @@ fn scene_schema_describes_what_the_server_accepts() {
     full["volumes"] = json!([{"id": "volumes-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "y_m": [0.0, 8.0], "spacing_m": 1.0, "dead_zone_m": 2.0, "curves": [], "meshes": [],
         "ground": {"alpha": 0.3, "beta": 0.5, "material": 0}}]);
-    // So are strata elements (issue 6): a preset or a configuration, the voxel size, carving.
+    // So are strata elements (issue 6): a preset or a configuration, the voxel size, carving,
+    // and whether tiles mark where caves open (issue 19).
     full["strata"] = json!([{"id": "strata-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
-        "preset": "B2", "voxel_m": 0.5, "carve": false}]);
+        "preset": "B2", "voxel_m": 0.5, "carve": false, "mark_openings": true}]);
     for good in [json!({}), Scene::default().to_value(), full.clone()] {
         Scene::from_value(&good).expect("the server accepts it");
         check(&good).expect("the schema accepts it");

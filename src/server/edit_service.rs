@@ -68,6 +68,19 @@ impl crate::stream::session::SourceView for StreamView {
             })
             .collect()
     }
+
+    fn cave_sites(
+        &self,
+        area: [f64; 4],
+        centre: [f64; 2],
+    ) -> Vec<crate::subsurface::openings::CaveSite> {
+        let rect = crate::scene::Rect {
+            min: [area[0], area[1]],
+            max: [area[2], area[3]],
+        };
+        let geos = self.view.inputs.strata_meeting(self.view.seed(), &rect);
+        crate::subsurface::openings::cave_sites(&geos, area, centre)
+    }
 }
 
 /// An edit of one world as its stream sessions receive it.

@@ -163,6 +163,10 @@ impl StreamSource for WorldSource {
         tile_frame(&self.state, view, key, seams, format).await
     }
 
+    async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {
+        self.state.tile(&view.view, key, [false; 4]).await
+    }
+
     async fn chunk_frame(
         &self,
         view: &StreamView,
@@ -324,6 +328,10 @@ impl StreamSource for SeedSource {
         format: Format,
     ) -> Result<Bytes, StreamError> {
         tile_frame(&self.state, view, key, seams, format).await
+    }
+
+    async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {
+        self.state.tile(&view.view, key, [false; 4]).await
     }
 
     async fn chunk_frame(

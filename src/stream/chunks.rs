@@ -1,12 +1,14 @@
 //! Which volume chunks a protocol-v2 client at a position needs: 3D LOD rings around the camera,
-//! kept where the world's surface is not a heightfield (its volume regions), plus the chunks the
-//! client asks for by address.
+//! kept where the world's surface is not a heightfield (its volume regions and, through
+//! [`super::cave_chunks`], its caves near the ground), plus the chunks the client asks for by
+//! address.
 //!
 //! `chunk_rings = [A, B, C, D]` mirrors the tiles' rings in three dimensions: `A` rings of LOD-0
 //! chunks around the camera's chunk, then `B` rings of LOD-1 chunks around that cube, and so on
 //! up to LOD 3. Each level's cube is aligned to the next level's lattice (a coarser chunk covers
-//! exactly eight finer ones), so levels nest without overlaps or holes. Of those cubes only the
-//! chunks meeting a box of the world's volume regions are streamed: elsewhere the tiles already
+//! exactly eight finer ones), so levels nest without overlaps or holes ([`Rings`]). Of those
+//! cubes only the chunks meeting a box of the world's volume regions, or holding the ground
+//! over a cave that opens to it or comes near it, are streamed: elsewhere the tiles already
 //! show the whole surface.
 
 use super::protocol::VolumeView;
@@ -43,13 +45,106 @@ impl Cube {
 
 /// The world box of chunk `key`, metres.
 pub fn chunk_box(key: ChunkKey, cell_m: f64) -> Box3 {
-    let side = CHUNK_CELLS as f64 * cell_m * (1u64 << key.lod) as f64;
+    let side = chunk_side(key.lod, cell_m);
     let lo = [key.x, key.y, key.z].map(|c| c as f64 * side);
     [lo, lo.map(|v| v + side)]
 }
 
+/// Side of a chunk of `lod`, metres.
+pub fn chunk_side(lod: u32, cell_m: f64) -> f64 {
+    CHUNK_CELLS as f64 * cell_m * (1u64 << lod) as f64
+}
+
 fn meets(a: &Box3, b: &Box3) -> bool {
     (0..3).all(|i| a[0][i] < b[1][i] && b[0][i] < a[1][i])
+}
+
+/// The nested cubes of `chunk_rings` around a camera, one per level (module docs).
+#[derive(Clone, Debug)]
+pub struct Rings {
+    cubes: Vec<Cube>,
+    cell_m: f64,
+}
+
+impl Rings {
+    /// The cubes of `rings` around `camera` (metres) in a world of LOD-0 cell `cell_m`.
+    pub fn new(camera: [f64; 3], rings: &[u32], cell_m: f64) -> Rings {
+        let levels = rings.len().min(MAX_CHUNK_LEVELS);
+        let mut cubes: Vec<Cube> = Vec::with_capacity(levels);
+        for (l, &r) in rings.iter().take(levels).enumerate() {
+            let side = chunk_side(l as u32, cell_m);
+            let r = i64::from(r.min(MAX_CHUNK_RINGS));
+            let cube = match cubes.last() {
+                None => {
+                    let c = camera.map(|v| (v / side).floor() as i64);
+                    Cube {
+                        lo: c.map(|v| v - r),
+                        hi: c.map(|v| v + r),
+                    }
+                }
+                Some(inner) => Cube {
+                    lo: inner.lo.map(|v| v.div_euclid(2) - r),
+                    hi: inner.hi.map(|v| v.div_euclid(2) + r),
+                },
+            };
+            let aligned = Cube {
+                lo: cube.lo.map(|v| v - v.rem_euclid(2)),
+                hi: cube.hi.map(|v| v + 1 - v.rem_euclid(2)),
+            };
+            cubes.push(if l + 1 < levels { aligned } else { cube });
+        }
+        Rings { cubes, cell_m }
+    }
+
+    /// Whether `key` is a chunk of the rings: inside its level's cube and not inside the finer
+    /// level's (which covers a coarser chunk's eight children exactly or not at all).
+    pub fn holds(&self, key: ChunkKey) -> bool {
+        let l = key.lod as usize;
+        let c = [key.x, key.y, key.z];
+        self.cubes.get(l).is_some_and(|cube| cube.contains(c))
+            && (l == 0 || !self.cubes[l - 1].contains(c.map(|v| 2 * v)))
+    }
+
+    /// Every chunk of the rings, level by level.
+    pub fn chunks(&self) -> impl Iterator<Item = ChunkKey> + '_ {
+        self.cubes.iter().enumerate().flat_map(move |(l, cube)| {
+            (cube.lo[1]..=cube.hi[1]).flat_map(move |y| {
+                (cube.lo[2]..=cube.hi[2]).flat_map(move |z| {
+                    (cube.lo[0]..=cube.hi[0])
+                        .map(move |x| ChunkKey {
+                            lod: l as u32,
+                            x,
+                            y,
+                            z,
+                        })
+                        .filter(|k| self.holds(*k))
+                })
+            })
+        })
+    }
+
+    /// The chunk columns `(lod, x, z)` of the rings, each with the range of chunk `y` its
+    /// level's cube spans.
+    pub fn columns(&self) -> impl Iterator<Item = (u32, i64, i64, [i64; 2])> + '_ {
+        self.cubes.iter().enumerate().flat_map(|(l, cube)| {
+            (cube.lo[2]..=cube.hi[2]).flat_map(move |z| {
+                (cube.lo[0]..=cube.hi[0]).map(move |x| (l as u32, x, z, [cube.lo[1], cube.hi[1]]))
+            })
+        })
+    }
+
+    /// The ground area the rings cover, metres: `[x0, z0, x1, z1]` (`None` without levels).
+    pub fn area(&self) -> Option<[f64; 4]> {
+        let l = self.cubes.len().checked_sub(1)?;
+        let side = chunk_side(l as u32, self.cell_m);
+        let c = self.cubes[l];
+        Some([
+            c.lo[0] as f64 * side,
+            c.lo[2] as f64 * side,
+            (c.hi[0] + 1) as f64 * side,
+            (c.hi[2] + 1) as f64 * side,
+        ])
+    }
 }
 
 /// The chunks of the rings around `camera` (metres) that meet one of `regions`, nearest first
@@ -65,54 +160,14 @@ pub fn select_chunks(
     if regions.is_empty() {
         return Vec::new();
     }
-    let levels = rings.len().min(MAX_CHUNK_LEVELS);
-    let mut cubes: Vec<Cube> = Vec::with_capacity(levels);
-    let mut out = Vec::new();
-    for (l, &r) in rings.iter().take(levels).enumerate() {
-        let side = CHUNK_CELLS as f64 * cell_m * (1u64 << l) as f64;
-        let r = i64::from(r.min(MAX_CHUNK_RINGS));
-        let cube = match cubes.last() {
-            None => {
-                let c = camera.map(|v| (v / side).floor() as i64);
-                Cube {
-                    lo: c.map(|v| v - r),
-                    hi: c.map(|v| v + r),
-                }
-            }
-            Some(inner) => Cube {
-                lo: inner.lo.map(|v| v.div_euclid(2) - r),
-                hi: inner.hi.map(|v| v.div_euclid(2) + r),
-            },
-        };
-        let aligned = Cube {
-            lo: cube.lo.map(|v| v - v.rem_euclid(2)),
-            hi: cube.hi.map(|v| v + 1 - v.rem_euclid(2)),
-        };
-        let cube = if l + 1 < levels { aligned } else { cube };
-        for y in cube.lo[1]..=cube.hi[1] {
-            for z in cube.lo[2]..=cube.hi[2] {
-                for x in cube.lo[0]..=cube.hi[0] {
-                    if let Some(inner) = cubes.last() {
-                        // The finer cube covers this chunk's eight children exactly or not at all.
-                        if inner.contains([2 * x, 2 * y, 2 * z]) {
-                            continue;
-                        }
-                    }
-                    let key = ChunkKey {
-                        lod: l as u32,
-                        x,
-                        y,
-                        z,
-                    };
-                    let b = chunk_box(key, cell_m);
-                    if valid(key) && regions.iter().any(|r| meets(r, &b)) {
-                        out.push(key);
-                    }
-                }
-            }
-        }
-        cubes.push(cube);
-    }
+    let rings = Rings::new(camera, rings, cell_m);
+    let mut out: Vec<ChunkKey> = rings
+        .chunks()
+        .filter(|k| {
+            let b = chunk_box(*k, cell_m);
+            valid(*k) && regions.iter().any(|r| meets(r, &b))
+        })
+        .collect();
     sort_nearest(&mut out, camera, cell_m);
     out.truncate(MAX_VIEW_CHUNKS);
     out

@@ -3,8 +3,9 @@
 //! Three things happen concurrently, in one `select!` loop plus a writer task
 //! ([`super::writer`]):
 //! - client messages: a new view replaces the pending work (products no longer in view are never
-//!   produced, their queued frames are withdrawn), an edit is applied and acknowledged, a v2
-//!   `credit` lets more frames go;
+//!   produced, their queued frames are withdrawn; a v2 view's cave chunks are chosen from the
+//!   height tiles under the caves near the ground, which the reply waits for), an edit is
+//!   applied and acknowledged, a v2 `credit` lets more frames go;
 //! - edit events: held products whose reach (footprint plus the margin their inputs are read
 //!   from, `scene::tile_reach`) meets the dirty region are invalidated (one text message); their
 //!   queued frames are withdrawn (superseded frames are coalesced) and they are queued again,
@@ -30,7 +31,10 @@
 //! At shutdown the server cancels the session's token: production stops at once and the client
 //! gets a close frame with code [`GOING_AWAY`].
 
-use super::chunks::{chunk_view_of, select_chunks, sort_nearest, within_limits, Box3};
+use super::cave_chunks::{cave_columns, column_chunks, column_tiles, ground_span};
+use super::chunks::{
+    chunk_view_of, select_chunks, sort_nearest, within_limits, Box3, Rings, MAX_VIEW_CHUNKS,
+};
 use super::outbox::{Outbox, Outgoing};
 #[cfg(doc)]
 use super::protocol::TileFrame;
@@ -42,7 +46,8 @@ use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use super::work::{merge, Product, Work};
 use crate::encode::Format;
 use crate::scene::{Dirty, Rect};
-use crate::terrain::{TileKey, WorldParams, WorldPlan};
+use crate::subsurface::openings::CaveSite;
+use crate::terrain::{Tile, TileKey, WorldParams, WorldPlan};
 use crate::volume::chunk::{tiles_needed, ChunkKey};
 use axum::extract::ws::{CloseFrame, Message, WebSocket};
 use futures::StreamExt;
@@ -135,6 +140,10 @@ pub trait SourceView: Send + Sync + 'static {
     /// The boxes where the world's surface is not a heightfield (its volume regions), metres:
     /// the chunk rings of a v2 view stream the chunks meeting them.
     fn volume_boxes(&self) -> Vec<Box3>;
+    /// The caves of the world's `strata` elements that breach the ground or may come near it
+    /// and whose bounding square meets the ground area `[x0, z0, x1, z1]` (metres), searched
+    /// nearest `centre` first within a bounded budget ([`crate::subsurface::openings`]).
+    fn cave_sites(&self, area: [f64; 4], centre: [f64; 2]) -> Vec<CaveSite>;
 }
 
 /// An edit of the stream's world, with the view of the version it made, so a session reads
@@ -173,6 +182,9 @@ pub trait StreamSource: Send + Sync + 'static {
         seams: [bool; 4],
         format: Format,
     ) -> Result<axum::body::Bytes, StreamError>;
+    /// Height tile `key` of the world `view` without seams: the tile a volume chunk reads its
+    /// columns from (the cave selection reads its ground, [`super::cave_chunks`]).
+    async fn ground_tile(&self, view: &Self::View, key: TileKey) -> Arc<Tile>;
     /// The frame of volume chunk `key` of the world `view` in `format` (its bytes as
     /// [`super::protocol::ChunkFrame::encode_parts`] writes them, with the view's version),
     /// shared between clients like tile frames.
@@ -267,21 +279,57 @@ struct ViewState {
 }
 
 impl ViewState {
-    /// The chunks of this view in the world `view`: the rings' chunks meeting its volume
-    /// regions and the asked ones, nearest first.
-    fn chunks_in<V: SourceView>(&self, view: &V) -> Vec<ChunkKey> {
+    /// The chunks of this view in the world `view` of `source`: the rings' chunks meeting its
+    /// volume regions or its caves near the ground (at most [`MAX_VIEW_CHUNKS`], the nearest),
+    /// and the asked ones, nearest first.
+    async fn chunks_in<S: StreamSource>(&self, source: &S, view: &S::View) -> Vec<ChunkKey> {
         if self.chunk_format.is_none() {
             return Vec::new();
         }
         let plan = view.plan();
         let cell_m = f64::from(plan.params.cell_m);
+        let valid = |k: ChunkKey| within_limits(plan, k);
         let mut chunks = select_chunks(
             self.camera,
             &self.rings,
             cell_m,
             &view.volume_boxes(),
-            |k| within_limits(plan, k),
+            valid,
         );
+        let rings = Rings::new(self.camera, &self.rings, cell_m);
+        let sites = match rings.area() {
+            Some(area) => view.cave_sites(area, [self.camera[0], self.camera[2]]),
+            None => Vec::new(),
+        };
+        // The tiles of the level being visited (neighbouring columns share them).
+        let mut tiles: HashMap<TileKey, Arc<Tile>> = HashMap::new();
+        for c in cave_columns(&rings, cell_m, &sites) {
+            tiles.retain(|k, _| k.lod == c.lod);
+            let mut held = Vec::new();
+            for (x, z) in column_tiles(&c) {
+                let key = TileKey { lod: c.lod, x, z };
+                let tile = match tiles.get(&key) {
+                    Some(t) => t.clone(),
+                    None => {
+                        let t = source.ground_tile(view, key).await;
+                        tiles.insert(key, t.clone());
+                        t
+                    }
+                };
+                held.push(((x, z), tile));
+            }
+            let held: Vec<((i64, i64), &Tile)> =
+                held.iter().map(|(xz, t)| (*xz, t.as_ref())).collect();
+            if let Some(ground) = ground_span(&c, &held) {
+                for k in column_chunks(&rings, cell_m, &c, ground, valid) {
+                    if !chunks.contains(&k) {
+                        chunks.push(k);
+                    }
+                }
+            }
+        }
+        sort_nearest(&mut chunks, self.camera, cell_m);
+        chunks.truncate(MAX_VIEW_CHUNKS);
         for k in &self.asked {
             if !chunks.contains(k) {
                 chunks.push(*k);
@@ -469,7 +517,7 @@ pub async fn run<S: StreamSource>(
                                     None => (Vec::new(), None),
                                 };
                                 view = ViewState { camera: [x, y, z], tiles, rings: chunk_rings, asked, chunk_format, chunks: Vec::new() };
-                                view.chunks = view.chunks_in(&current);
+                                view.chunks = view.chunks_in(source.as_ref(), &current).await;
                                 let work = view.work(cell_m);
                                 let in_view: HashSet<Product> = work.iter().map(Work::product).collect();
                                 held.retain(|p, _| in_view.contains(p));
@@ -522,9 +570,9 @@ pub async fn run<S: StreamSource>(
                     version = current.version();
                 }
                 let params = &current.plan().params;
-                // The edit may add or remove volume regions: the view's chunks follow.
+                // The edit may add or remove volume regions or caves: the view's chunks follow.
                 let old_chunks = std::mem::take(&mut view.chunks);
-                view.chunks = view.chunks_in(&current);
+                view.chunks = view.chunks_in(source.as_ref(), &current).await;
                 let now_in: HashSet<ChunkKey> = view.chunks.iter().copied().collect();
                 let dropped: Vec<ChunkKey> = old_chunks.into_iter().filter(|k| !now_in.contains(k) && held.remove(&Product::Chunk(*k)).is_some()).collect();
                 let work = view.work(cell_m);

@@ -21,6 +21,8 @@
 //!   top voxel, at most `size`), a voxel's composition and flow by interpolation between the
 //!   limits around it; §4.3's blend zones (blend × local thickness at a layer's bottom, mixing linearly from the
 //!   layer below).
+//! - [`openings`] — the caves that breach the ground or may come near it, from the elements'
+//!   bounded data (the sites a stream streams volume chunks for).
 //!
 //! # Faithful, and where it deviates
 //!
@@ -94,6 +96,7 @@
 pub mod carve;
 pub mod chunk;
 pub mod config;
+pub mod openings;
 pub mod plan;
 pub mod spec;
 pub mod world;

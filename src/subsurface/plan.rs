@@ -366,6 +366,12 @@ impl SubsurfacePlan {
         (lo, hi)
     }
 
+    /// The lowest and highest height the top of layer `k` can take (voxels), or `None` past the
+    /// stack.
+    pub fn top_range(&self, k: usize) -> Option<(f32, f32)> {
+        self.bounds.get(k).copied()
+    }
+
     fn index(&self, id: u32) -> usize {
         self.config
             .materials

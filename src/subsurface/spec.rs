@@ -38,6 +38,10 @@ pub struct StrataSpec {
     pub voxel_m: f64,
     /// Whether caves carve the world's solid (volume chunks, height tiles where they breach).
     pub carve: bool,
+    /// Whether height tiles of LOD 0–3 mark the vertices where its caves breach the ground as
+    /// overridden by volume chunks (`volume_override`), so stream clients draw the chunks there.
+    /// Off unless the element says so: tiles of elements stored before keep their bytes.
+    pub mark_openings: bool,
 }
 
 /// Why a `strata` element is refused: a JSON pointer relative to the element and the reason.
@@ -68,6 +72,8 @@ struct Fields {
     voxel_m: f64,
     #[serde(default = "default_carve")]
     carve: bool,
+    #[serde(default)]
+    mark_openings: bool,
 }
 
 fn default_voxel_m() -> f64 {
@@ -129,6 +135,7 @@ impl StrataSpec {
             config,
             voxel_m: f.voxel_m,
             carve: f.carve,
+            mark_openings: f.mark_openings,
         })
     }
 }
@@ -150,7 +157,7 @@ mod tests {
     fn presets_and_configs_parse() {
         let s = StrataSpec::from_element(&element(json!({"preset": "B2"}))).expect("preset");
         assert_eq!(s.config, SubsurfaceConfig::preset("B2").expect("B2"));
-        assert_eq!((s.voxel_m, s.carve), (1.0, true));
+        assert_eq!((s.voxel_m, s.carve, s.mark_openings), (1.0, true, false));
         let config =
             serde_json::to_value(SubsurfaceConfig::preset("A3").expect("A3")).expect("config json");
         let s = StrataSpec::from_element(&element(

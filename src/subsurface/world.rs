@@ -219,6 +219,7 @@ mod tests {
                 config: SubsurfaceConfig::preset(preset).expect("preset"),
                 voxel_m: 1.0,
                 carve,
+                mark_openings: false,
             },
         )
     }

@@ -2,13 +2,15 @@
 //! and its raw HTTP client ([`raw`]), the GPU tests' device ([`device`]), requests to the router
 //! in-process ([`oneshot`]), chunk columns from synthesised tiles ([`columns`]), a quad mesh's
 //! Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element
-//! ([`arch`]), the Khronos glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the
-//! Node packages of the browser tests ([`js`]), tiles with river and lake water ([`water`]) and a
-//! throwaway PostgreSQL cluster ([`postgres`]).
+//! ([`arch`]), a `strata` element with one cave opening to the ground ([`cave`]), the Khronos
+//! glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the
+//! browser tests ([`js`]), tiles with river and lake water ([`water`]) and a throwaway
+//! PostgreSQL cluster ([`postgres`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
 pub mod arch;
+pub mod cave;
 pub mod columns;
 pub mod device;
 pub mod fixture;
