@@ -173,9 +173,11 @@ fn start<T: Send + Sync + 'static, E: std::fmt::Display + Send + 'static>(
     let on_thread = work.clone();
     let working = Working::new(working);
     let task = tokio::task::spawn_blocking(move || {
-        let _working = working;
         let flag = on_thread.cancel();
         let r = solve(flag);
+        // The solve has ended: it leaves `working` before its work is counted as ended, so
+        // whoever sees no abandoned work running sees no solve working either.
+        drop(working);
         // A solve stopped by its flag answers whatever error; the flag says why.
         on_thread.end(r.is_err() && flag.is_cancelled());
         match flag.check() {
