@@ -9,8 +9,9 @@
 //
 // The river job itself (the drainage network, its pieces and their binning) is built on the CPU
 // (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (seventeen f32), `bin_start` and
-// `bin_pieces` are the job's bins in CSR form, and `CarveParams` is
-// `gpu::layout::GpuCarveParams`, field for field.
+// `bin_pieces` are the job's bins in CSR form, `lakes` the levels of its lake window, and
+// `CarveParams` is `gpu::layout::GpuCarveParams`, field for field. Before the carve, the lake
+// shores shape each height (`shore`, the twin of `RiverJob::shore`).
 //
 // Every operation mirrors the Rust in the same order, as in `earth.wgsl`: each product that can
 // meet an addition passes the rounding barrier `rn`, `/` is `div_rn` and `sqrt` is `sqrt_rn`,
@@ -36,8 +37,20 @@ struct CarveParams {
     // Amplitude and stream seed of the walls' width noise (`RiverJob::wall_noise`, 0: none).
     wall_noise: f32,
     wall_seed: u32,
+    // The lake window (`RiverJob::lakes`): node spacing in metres, first node column and row,
+    // columns and rows (both 0 when no lake is near), whether the lakes have shaped shores
+    // (`RiverJob::shores`, 0 or 1) and the seeds of the shores' two noise octaves.
+    node_spacing: f32,
+    li0: i32,
+    lk0: i32,
+    lakes_w: u32,
+    lakes_h: u32,
+    shores: u32,
+    shore_seed: u32,
+    shore_seed2: u32,
     _pad0: u32,
     _pad1: u32,
+    _pad2: u32,
 }
 
 // `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
@@ -72,6 +85,9 @@ const WORKGROUP: u32 = 64u;
 @group(0) @binding(3) var<storage, read> bin_pieces: array<u32>;
 // Heights (w × h, row-major), carved in place.
 @group(0) @binding(4) var<storage, read_write> heights: array<f32>;
+// Lake level of each node of the lake window (lakes_w × lakes_h, row-major), LAKE_NONE where
+// the node holds no lake.
+@group(0) @binding(5) var<storage, read> lakes: array<f32>;
 
 // `f32::clamp(t, 0.0, 1.0)` as Rust evaluates it (WGSL's `clamp` may treat −0 differently).
 fn clamp01(t: f32) -> f32 {
@@ -174,6 +190,86 @@ fn bin_range(x: f32, z: f32) -> vec2<u32> {
     return vec2<u32>(bin_start[b], bin_start[b + 1u]);
 }
 
+// `RiverJob::node_lake`: the level of node `(i, k)` of the lake window, LAKE_NONE where it holds
+// no lake or lies outside the window.
+fn node_lake(i: i32, k: i32) -> f32 {
+    let a = i - params.li0;
+    let b = k - params.lk0;
+    if (a < 0 || b < 0 || u32(a) >= params.lakes_w || u32(b) >= params.lakes_h) {
+        return LAKE_NONE;
+    }
+    return lakes[u32(b) * params.lakes_w + u32(a)];
+}
+
+// `RiverJob::shore` (`rivers::shores`, with `RiverJob::lake_field`): the height `h` at `(x, z)`
+// clamped into the shore's wedge around the lake level, faded in with the lake weight; `h`
+// itself where no lake node around has weight or the world has the first lakes.
+fn shore(x: f32, z: f32, h: f32) -> f32 {
+    if (params.shores == 0u || params.lakes_w == 0u) {
+        return h;
+    }
+    let u = div_rn(x, params.node_spacing) - 0.5;
+    let v = div_rn(z, params.node_spacing) - 0.5;
+    let fu = floor(u);
+    let fv = floor(v);
+    let a = u - fu;
+    let b = v - fv;
+    let i = i32(fu);
+    let k = i32(fv);
+    let ws = array<f32, 4>(
+        rn((1.0 - a) * (1.0 - b)),
+        rn(a * (1.0 - b)),
+        rn((1.0 - a) * b),
+        rn(a * b),
+    );
+    let ls = array<f32, 4>(node_lake(i, k), node_lake(i + 1, k), node_lake(i, k + 1), node_lake(i + 1, k + 1));
+    var weight = 0.0;
+    var sum = 0.0;
+    var found = false;
+    for (var c = 0u; c < 4u; c++) {
+        if (ls[c] > LAKE_NONE) {
+            weight = weight + ws[c];
+            sum = sum + rn(ws[c] * ls[c]);
+            found = true;
+        }
+    }
+    if (!found || weight <= 0.0) {
+        return h;
+    }
+    let level = div_rn(sum, weight);
+    let n1 = clamp_to(
+        lattice(rn(x * SHORE_NOISE_INV_M), rn(z * SHORE_NOISE_INV_M), params.shore_seed),
+        -SHORE_NOISE_CLAMP,
+        SHORE_NOISE_CLAMP,
+    );
+    let n2 = clamp_to(
+        lattice(rn(x * SHORE_NOISE2_INV_M), rn(z * SHORE_NOISE2_INV_M), params.shore_seed2),
+        -SHORE_NOISE_CLAMP,
+        SHORE_NOISE_CLAMP,
+    );
+    let t = weight + (rn(SHORE_N1 * n1) + rn(SHORE_N2 * n2));
+    let e = 0.5 - t;
+    let gentle = rn(SHORE_GENTLE_M * e);
+    let steep = rn(SHORE_STEEP_M * e);
+    var lo = level + steep;
+    var hi = level + gentle;
+    if (e > 0.0) {
+        lo = level + gentle;
+        hi = level + steep;
+    }
+    var target_h = h;
+    if (h < lo) {
+        target_h = lo;
+    } else if (h > hi) {
+        target_h = hi;
+    } else {
+        return h;
+    }
+    let g = smoothstep_rn(0.0, SHORE_FULL, weight);
+    let change = clamp_to(rn((target_h - h) * g), -SHORE_MAX_M, SHORE_MAX_M);
+    return h + change;
+}
+
 // Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).
 fn invocation(gid: vec3<u32>, nwg: vec3<u32>) -> u32 {
     return gid.y * nwg.x * WORKGROUP + gid.x;
@@ -190,7 +286,7 @@ fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workg
     // World position `(g as f32) * spacing`, as on the CPU.
     let x = rn(f32(params.gx0 + i32(idx % params.w)) * params.spacing);
     let z = rn(f32(params.gz0 + i32(idx / params.w)) * params.spacing);
-    let h = heights[idx];
+    let h = shore(x, z, heights[idx]);
     var c = h;
     let range = bin_range(x, z);
     var wall = 0.0;

@@ -241,6 +241,10 @@ fn gpu_river_carve_matches_cpu() {
         key(0, 968, 600),
         key(0, -47, 72),
         key(0, -38, 72),
+        // The lake near (−440, −4,496) m, whose shores (`lakes: 2`) move the heights before the
+        // carve: LOD 3 (the whole lake) and LOD 0 (its shore).
+        key(3, -1, -9),
+        key(0, -7, -71),
     ];
     let (mut max_dh, mut differing, mut samples, mut clamped) = (0.0f32, 0, 0, 0);
     let mut beyond_by_lod = std::collections::BTreeMap::new();

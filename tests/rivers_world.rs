@@ -84,7 +84,7 @@ async fn a_world_stored_with_the_third_valleys_serves_the_same_tile_bytes() {
             format!("/v1/worlds/{WORLD3}/tiles/{key}.bin?v=1{query}")
         })
         .await;
-    assert_eq!(checked, 26, "every fixture tile was checked");
+    assert_eq!(checked, 34, "every fixture tile was checked");
     let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD3}/versions/1")).await;
     assert_eq!(status, 200);
     let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");

@@ -347,7 +347,15 @@ fn river_carve_structs_match_the_wgsl_layout() {
             bins_w,
             bins_h,
             wall_noise,
-            wall_seed
+            wall_seed,
+            node_spacing,
+            li0,
+            lk0,
+            lakes_w,
+            lakes_h,
+            shores,
+            shore_seed,
+            shore_seed2
         ]
     );
     check_layout!(

@@ -1,15 +1,10 @@
 //! Water in the browser viewer (issue 19, Done-when 4): the real `strata` binary serves the built
-//! viewer and `node tests/js/water.mjs` looks straight down on a coast and a river of seed 42 in
-//! headless Chromium, computes the water mask of each screenshot and compares its boundary with
-//! the shoreline of the held tiles' heights: the water follows the shore, with no straight edges
-//! along tile borders. The places are found here from the tiles, as a client would find them:
-//! the coast nearest the origin, the river through `common::water`. The screenshots are written
-//! to `docs/water-{coast,river}.png`.
-//!
-//! Not here yet: a lake. The lake `common::water::lake_tile` finds near (-512, -4608) fails the
-//! comparison, rightly: the tiles' lake water (`terrain::earth::rivers::carve::lake_level`, the
-//! flooded nodes' cells of the 1 km node lattice) ends along straight cell lines where the ground
-//! stays below the lake's level, so the viewer draws a lake with straight sides there.
+//! viewer and `node tests/js/water.mjs` looks straight down on a coast, a lake and a river of
+//! seed 42 in headless Chromium, computes the water mask of each screenshot and compares its
+//! boundary with the shoreline of the held tiles' heights: the water follows the shore, with no
+//! straight edges along tile borders or the river-node lattice. The places are found here from
+//! the tiles, as a client would find them: the coast nearest the origin, the lake and the river
+//! through `common::water`. The screenshots are written to `docs/water-{coast,lake,river}.png`.
 //!
 //! Fails, never skips, without Node.js, the npm packages or `/usr/bin/chromium`.
 
@@ -79,14 +74,17 @@ fn coast(plan: &WorldPlan) -> (f64, f64) {
 }
 
 #[test]
-fn water_follows_the_shoreline_at_a_coast_and_a_river() {
+fn water_follows_the_shoreline_at_a_coast_a_lake_and_a_river() {
     let web = common::js::browser_ready();
     let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
     let (cx, cz) = coast(&plan);
+    let lake = common::water::lake_tile(&plan, 4, 100, 0);
+    let (lx, lz) = shore(&lake, kind::LAKE, centre(&lake)).expect("a lake shore");
     let river = common::water::river_tile(&plan, 2, 40);
     let (rx, rz) = shore(&river, kind::RIVER, centre(&river)).expect("a river bank");
     let places = json!([
         {"name": "coast", "x": cx, "z": cz, "dist": 1500, "rings": "1,1,1,1,1,1,2"},
+        {"name": "lake", "x": lx, "z": lz, "dist": 900, "rings": "1,1,1,1,1,1,2"},
         {"name": "river", "x": rx, "z": rz, "dist": 300, "rings": "2,1,1,1,1,1,1"},
     ]);
     println!("places: {places}");

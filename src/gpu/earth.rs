@@ -31,7 +31,7 @@
 
 use super::kit::{bind_group, dispatch_linear, read_back, readback, storage, upload};
 use super::kit::{Binding, Program};
-use super::layout::{GpuCarveParams, GpuEarthLayer, GpuEarthOctave, GpuEarthParams};
+use super::layout::{GpuCarveParams, GpuEarthLayer, GpuEarthOctave, GpuEarthParams, LAKE_NONE};
 use super::scopes::Scopes;
 use super::tile::{COMMON_WGSL, MAX_BUFFER_BYTES};
 use crate::terrain::earth::rivers::{self, Piece, RiverJob};
@@ -100,6 +100,17 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("WALL_SLOPE", rivers::WALL_SLOPE),
         ("WALL_NOISE_INV_M", rivers::WALL_NOISE_INV_M),
         ("WALL_NOISE_CLAMP", rivers::WALL_NOISE_CLAMP),
+        // `rivers::RiverJob::shore` (`rivers::shores`).
+        ("SHORE_NOISE_INV_M", rivers::SHORE_NOISE_INV_M),
+        ("SHORE_NOISE2_INV_M", rivers::SHORE_NOISE2_INV_M),
+        ("SHORE_NOISE_CLAMP", rivers::SHORE_NOISE_CLAMP),
+        ("SHORE_N1", rivers::SHORE_N1),
+        ("SHORE_N2", rivers::SHORE_N2),
+        ("SHORE_GENTLE_M", rivers::SHORE_GENTLE_M),
+        ("SHORE_STEEP_M", rivers::SHORE_STEEP_M),
+        ("SHORE_FULL", rivers::SHORE_FULL),
+        ("SHORE_MAX_M", rivers::SHORE_MAX_M),
+        ("LAKE_NONE", LAKE_NONE),
     ]
 }
 
@@ -259,6 +270,32 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         // Within MAX_BUFFER_BYTES of offsets, both counts and their product fit in u32.
         (rj.bins_w as u32, rj.bins_h as u32)
     };
+    // The lake window, empty (0 × 0) when no lake is near.
+    let (li0, lk0, lakes_w, lakes_h) = if rj.lakes.is_empty() {
+        (0, 0, 0, 0)
+    } else {
+        let rows = rj.lakes.len() / rj.lakes_w.max(1);
+        if rows * rj.lakes_w != rj.lakes.len() {
+            bail!(
+                "a lake window of {} columns has {} levels",
+                rj.lakes_w,
+                rj.lakes.len()
+            );
+        }
+        let index = |v: i64| {
+            i32::try_from(v)
+                .map_err(|_| anyhow!("lake node index {v} is out of the device's range"))
+        };
+        let count = |v: usize| {
+            u32::try_from(v).map_err(|_| anyhow!("a lake window of {v} nodes is too large"))
+        };
+        (
+            index(rj.li0)?,
+            index(rj.lk0)?,
+            count(rj.lakes_w)?,
+            count(rows)?,
+        )
+    };
     Ok(GpuCarveParams {
         gx0: params.gx0,
         gz0: params.gz0,
@@ -273,8 +310,17 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         bins_h,
         wall_noise: rj.wall_noise,
         wall_seed: rj.wall_seed,
+        node_spacing: rj.spacing_m,
+        li0,
+        lk0,
+        lakes_w,
+        lakes_h,
+        shores: u32::from(rj.shores),
+        shore_seed: rj.shore_seed,
+        shore_seed2: rj.shore_seed2,
         _pad0: 0,
         _pad1: 0,
+        _pad2: 0,
     })
 }
 
@@ -314,16 +360,9 @@ impl EarthKernels {
     /// If shader compilation or pipeline creation reports an error.
     pub fn new(device: &wgpu::Device) -> anyhow::Result<Self> {
         let scopes = Scopes::push(device);
-        // Both programs bind a uniform, three read-only arrays and the heights; the earth
-        // program also the lattice split's nodes.
+        // Both programs bind a uniform, three read-only arrays, the heights and one more
+        // read-only array: the lattice split's nodes (earth) or the lake levels (carve).
         let bindings = [
-            Binding::Uniform,
-            Binding::Read,
-            Binding::Read,
-            Binding::Read,
-            Binding::ReadWrite,
-        ];
-        let earth_bindings = [
             Binding::Uniform,
             Binding::Read,
             Binding::Read,
@@ -335,7 +374,7 @@ impl EarthKernels {
             device,
             "strata earth.wgsl",
             &earth_shader_source(),
-            &earth_bindings,
+            &bindings,
         );
         let carve = Program::new(
             device,
@@ -455,6 +494,15 @@ impl EarthKernels {
                 "river bin entries",
                 bytemuck::cast_slice(or_pad(&rj.bin_pieces, &no_index)),
             );
+            let levels: Vec<f32> = rj
+                .lakes
+                .iter()
+                .map(|&l| if l.is_nan() { LAKE_NONE } else { l })
+                .collect();
+            let lake_buf = array(
+                "river lake levels",
+                bytemuck::cast_slice(or_pad(&levels, &[LAKE_NONE])),
+            );
             bind_group(
                 device,
                 &self.carve_layout,
@@ -465,6 +513,7 @@ impl EarthKernels {
                     &start_buf,
                     &entry_buf,
                     &heights,
+                    &lake_buf,
                 ],
             )
         });
@@ -579,9 +628,23 @@ mod tests {
             (cp.bins_w as usize, cp.bins_h as usize),
             (rj.bins_w, rj.bins_h)
         );
-        // A job without bins reads none: its grid has no bins.
+        // A job without bins reads none: its grid has no bins; without lakes, no lake window.
         let empty = carve_params(&params, &RiverJob::default()).expect("an empty job");
         assert_eq!((empty.bins_w, empty.bins_h), (0, 0));
+        assert_eq!((empty.lakes_w, empty.lakes_h), (0, 0));
+        // A lake window goes up whole, with the world's shores.
+        let mut lake = rj.clone();
+        (lake.li0, lake.lk0, lake.lakes_w, lake.lakes) = (-3, 5, 2, vec![f32::NAN, 1.0, 2.0, 3.0]);
+        let cp = carve_params(&params, &lake).expect("a lake window");
+        assert_eq!(
+            (cp.li0, cp.lk0, cp.lakes_w, cp.lakes_h, cp.shores),
+            (-3, 5, 2, 2, u32::from(rp.lakes >= 2))
+        );
+        lake.lakes.pop();
+        assert!(
+            carve_params(&params, &lake).is_err(),
+            "a ragged lake window"
+        );
         // Offsets that do not cover the grid would send the device out of the job.
         let mut short = rj.clone();
         short.bin_start.pop();

@@ -313,8 +313,13 @@ pub struct GpuEarthParams {
     pub _pad2: u32,
 }
 
-/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 64 bytes): the rectangle of the heights,
-/// the bin grid of `terrain::earth::rivers::RiverJob` and its walls' width noise. The pieces are uploaded as
+/// The level uploaded for a node of the lake window that holds no lake (the CPU's NaN: a shader
+/// may assume no NaN exists, so none is uploaded).
+pub const LAKE_NONE: f32 = -3.0e38;
+
+/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 96 bytes): the rectangle of the
+/// heights, the bin grid of `terrain::earth::rivers::RiverJob`, its walls' width noise and its
+/// lake window (the levels are uploaded beside it, [`LAKE_NONE`] for a node without a lake). The pieces are uploaded as
 /// `rivers::Piece` itself, whose `#[repr(C)]` layout is the WGSL `Piece`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -345,8 +350,26 @@ pub struct GpuCarveParams {
     pub wall_noise: f32,
     /// `RiverJob::wall_seed`.
     pub wall_seed: u32,
+    /// `RiverJob::spacing_m`: the river node spacing, metres.
+    pub node_spacing: f32,
+    /// `RiverJob::li0`: first node column of the lake window.
+    pub li0: i32,
+    /// `RiverJob::lk0`: first node row of the lake window.
+    pub lk0: i32,
+    /// `RiverJob::lakes_w`: node columns of the lake window (0: no lake near).
+    pub lakes_w: u32,
+    /// Node rows of the lake window (0: no lake near).
+    pub lakes_h: u32,
+    /// 1 where the lakes have shaped shores (`RiverJob::shores`), else 0.
+    pub shores: u32,
+    /// `RiverJob::shore_seed`.
+    pub shore_seed: u32,
+    /// `RiverJob::shore_seed2`.
+    pub shore_seed2: u32,
     /// Padding to a multiple of 16 bytes.
     pub _pad0: u32,
     /// Padding.
     pub _pad1: u32,
+    /// Padding.
+    pub _pad2: u32,
 }

@@ -41,7 +41,7 @@ pub fn river_tile(plan: &WorldPlan, lod: u32, min: usize) -> Tile {
 }
 
 /// The LOD-`lod` tiles holding lake vertices of the coarsest carved tiles around the origin
-/// (LOD [`rivers::MAX_CARVE_LOD`], where lakes show), until one has
+/// (LOD [`rivers::MAX_CARVE_LOD`], where lakes show; shore vertices first), until one has
 /// at least `lakes` lake and `streams` river vertices. Panics if none has.
 pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Tile {
     for (x, z) in [
@@ -65,13 +65,26 @@ pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Ti
             },
         );
         let s = coarse.spacing_m as f64;
-        let wet = coarse
-            .water_kind
+        // Lake vertices on the shore (a dry 4-neighbour), where rivers come in, before the
+        // others.
+        let kinds = &coarse.water_kind;
+        let shore = |v: usize| {
+            let (i, j) = (v % 65, v / 65);
+            (i > 0 && kinds[v - 1] == rivers::kind::NONE)
+                || (i < 64 && kinds[v + 1] == rivers::kind::NONE)
+                || (j > 0 && kinds[v - 65] == rivers::kind::NONE)
+                || (j < 64 && kinds[v + 65] == rivers::kind::NONE)
+        };
+        let lake: Vec<usize> = (0..kinds.len())
+            .filter(|&v| kinds[v] == rivers::kind::LAKE)
+            .collect();
+        let wet = lake
             .iter()
-            .enumerate()
-            .filter(|&(_, &k)| k == rivers::kind::LAKE)
-            .step_by(7)
-            .take(8);
+            .filter(|&&v| shore(v))
+            .step_by(3)
+            .take(12)
+            .chain(lake.iter().step_by(7).take(8))
+            .map(|&v| (v, ()));
         for (v, _) in wet {
             let wx = coarse.origin_x_m() + (v % 65) as f64 * s;
             let wz = coarse.origin_z_m() + (v / 65) as f64 * s;

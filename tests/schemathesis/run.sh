@@ -9,6 +9,11 @@
 # virtual environment under the build directory. The budget is bounded by --max-examples per
 # operation (SCHEMATHESIS_MAX_EXAMPLES, default 60: a few thousand cases in all).
 #
+# One worker: with two, a CI run on a loaded 2-core machine once stopped in the coverage phase
+# of POST /v1/worlds with schemathesis's "Inconsistent results" (a case that failed once and
+# passed on its replay, its first failure not printed), which a local run of the same commit
+# never showed; one worker keeps the requests in a fixed order and costs about a minute.
+#
 # Usage: tests/schemathesis/run.sh (after `cargo build`; STRATA_BIN picks another binary).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -74,7 +79,7 @@ STRATA_WORLD_ID="$world" STRATA_REGION_ID=peak STRATA_JOB_ID="$job" \
   --phases examples,coverage,fuzzing \
   --max-examples "$max_examples" \
   --seed 18 \
-  --workers 2 \
+  --workers 1 \
   --request-timeout 60 \
   --suppress-health-check all \
   --generation-database none \

@@ -372,10 +372,16 @@ impl EarthPlan {
             )
         });
         let mut lods: Vec<EarthLod> = lods;
-        if rivers.is_some() {
-            // LODs that skip the carve differ from LOD 0 by at most what it removes.
+        if let Some(rp) = &rivers {
+            // LODs that skip the carve (and the lake shores before it) differ from LOD 0 by at
+            // most what they change.
+            let shores = if rp.lakes >= 2 {
+                rivers::SHORE_MAX_M
+            } else {
+                0.0
+            };
             for l in lods.iter_mut().skip(rivers::MAX_CARVE_LOD + 1) {
-                l.bound_m += rivers::CARVE_MAX_M;
+                l.bound_m += rivers::CARVE_MAX_M + shores;
             }
         }
         Self {

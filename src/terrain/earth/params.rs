@@ -106,6 +106,16 @@ pub struct RiverParams {
         skip_serializing_if = "RiverParams::is_first_valleys"
     )]
     pub valleys: u32,
+    /// The lakes, 1 or 2 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
+    /// the four nodes around it holds a lake above its height, so a lake's water can end along
+    /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
+    /// keep it, and their bytes. `2` (new worlds): the ground is shaped to meet the lake's
+    /// level along a curved shore ([`super::rivers`]' shores), where the water ends.
+    #[serde(
+        default = "RiverParams::first_lakes",
+        skip_serializing_if = "RiverParams::is_first_lakes"
+    )]
+    pub lakes: u32,
 }
 
 impl Default for RiverParams {
@@ -116,6 +126,7 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 3,
+            lakes: 2,
         }
     }
 }
@@ -126,6 +137,14 @@ impl RiverParams {
     }
 
     fn is_first_valleys(v: &u32) -> bool {
+        *v == 1
+    }
+
+    fn first_lakes() -> u32 {
+        1
+    }
+
+    fn is_first_lakes(v: &u32) -> bool {
         *v == 1
     }
 
@@ -151,6 +170,11 @@ impl RiverParams {
             (1..=3).contains(&self.valleys),
             "rivers.valleys",
             "must be 1, 2 or 3",
+        )?;
+        check(
+            (1..=2).contains(&self.lakes),
+            "rivers.lakes",
+            "must be 1 or 2",
         )
     }
 }

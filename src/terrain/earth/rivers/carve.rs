@@ -108,6 +108,12 @@ pub struct RiverJob {
     pub wall_noise: f32,
     /// `RiverPlan::wall_seed`.
     pub wall_seed: u32,
+    /// Whether the lakes have shaped shores (`lakes: 2`, [`super::shores`]).
+    pub shores: bool,
+    /// `RiverPlan::shore_seed`: the shores' first noise octave.
+    pub shore_seed: u32,
+    /// `RiverPlan::shore_seed2`: the shores' second noise octave.
+    pub shore_seed2: u32,
 }
 
 /// The projection of `(x, z)` on piece `p`'s chord, clamped to `[0, 1]`, and the chord `b − a`.
@@ -483,6 +489,9 @@ impl Network<'_> {
             lakes,
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
+            shores: self.plan.lakes >= 2,
+            shore_seed: self.plan.shore_seed,
+            shore_seed2: self.plan.shore_seed2,
         }
     }
 }
@@ -604,9 +613,10 @@ impl RiverJob {
     }
 
     /// The carved height of a sample at `(x, z)` with height `h`: the lowest of the pieces'
-    /// carves ([`profile`], with the walls' added width there), removing at most
-    /// [`CARVE_MAX_M`].
+    /// carves ([`profile`], with the walls' added width there) of the height shaped by the lake
+    /// shores ([`RiverJob::shore`]), removing at most [`CARVE_MAX_M`] of that.
     pub fn carve_one(&self, x: f32, z: f32, h: f32) -> f32 {
+        let h = self.shore(x, z, h);
         let wall = self.wall_width(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
@@ -639,13 +649,14 @@ impl RiverJob {
     /// [`RiverJob::carve_one`], bit for bit: a piece left out, or farther from a sample than its
     /// radius, would have returned the height unchanged, and the lowest of the rest does not
     /// depend on their order. In mountains a bin's highest sample is far below the tile's, so
-    /// this keeps a few pieces of the many within reach.
+    /// this keeps a few pieces of the many within reach. The heights are taken as the lake
+    /// shores shape them ([`RiverJob::shore`]), as the carve reads them.
     pub fn pruned(&self, samples: impl Iterator<Item = (f32, f32, f32)>) -> PrunedBins {
         let bins = self.bin_start.len().saturating_sub(1);
         let mut h_max = vec![f32::NEG_INFINITY; bins];
         for (x, z, h) in samples {
             if let Some(b) = self.bin_index(x, z) {
-                h_max[b] = h_max[b].max(h);
+                h_max[b] = h_max[b].max(self.shore(x, z, h));
             }
         }
         self.pruned_for(&h_max)
@@ -689,6 +700,7 @@ impl RiverJob {
     /// [`RiverJob::carve_one`] through the pruned bins of [`RiverJob::pruned`] (the same bits
     /// for every sample whose height is at most its bin's highest).
     pub fn carve_pruned(&self, pruned: &PrunedBins, x: f32, z: f32, h: f32) -> f32 {
+        let h = self.shore(x, z, h);
         let Some(b) = self.bin_index(x, z) else {
             return h.max(h - CARVE_MAX_M);
         };
@@ -776,7 +788,8 @@ pub fn water_job_for(
 }
 
 /// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height
-/// (the highest of the sea, a lake and a river over it).
+/// (the highest of the sea, a lake and a river over it; inside a shaped lake shore, the lake
+/// over a river).
 pub fn water_at(job: &RiverJob, sea_level_m: f32, x: f32, z: f32, carved: f32) -> (f32, u8) {
     let river = job.river_level(x, z, carved);
     let mut surface = carved;
@@ -791,8 +804,10 @@ pub fn water_at(job: &RiverJob, sea_level_m: f32, x: f32, z: f32, carved: f32) -
             k = kind::RIVER;
         }
     }
-    if let Some(l) = job.lake_level(x, z) {
-        if l > carved && l > surface {
+    if let Some(l) = job.lake_surface(x, z) {
+        // Inside a shaped shore the lake holds the rivers that reach it: their water levels,
+        // which fall to the lake's only at its node, do not stand above it.
+        if l > carved && (l > surface || (job.shores && k == kind::RIVER)) {
             surface = l;
             k = kind::LAKE;
         }

@@ -34,9 +34,18 @@ fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 impl RiverJob {
     /// Carves the grid of samples at `(xs[i], zs[j])` (metres) whose heights are
     /// `heights[j · xs.len() + i]`: each gets [`RiverJob::carve_pruned`] with the bins pruned
-    /// for these heights ([`RiverJob::pruned`]), bit for bit.
+    /// for these heights ([`RiverJob::pruned`]), bit for bit (the lake shores shape every height
+    /// first, as `carve_pruned` does).
     pub fn carve_grid(&self, xs: &[f32], zs: &[f32], heights: &mut [f32]) {
         assert_eq!(heights.len(), xs.len() * zs.len(), "a grid of heights");
+        // The lake shores first: the carve reads the heights they shape (`carve_pruned`).
+        if self.shores && !self.lakes.is_empty() {
+            for (j, row) in heights.chunks_mut(xs.len()).enumerate() {
+                for (i, h) in row.iter_mut().enumerate() {
+                    *h = self.shore(xs[i], zs[j], *h);
+                }
+            }
+        }
         if self.bin_start.is_empty() {
             return;
         }

@@ -21,7 +21,11 @@
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
-//!    Rivers end in the lake; lakes do not spill into further rivers.
+//!    Rivers end in the lake; lakes do not spill into further rivers. In worlds with `lakes: 2`
+//!    (the default of new worlds) the ground is shaped to meet each lake's level along a
+//!    curved shore ([`shores`]) before the carve; with `lakes: 1` a sample is lake water where
+//!    one of the four nodes around it holds a lake above its height, so the water can end along
+//!    straight lines between dry nodes.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
@@ -57,7 +61,7 @@
 //!
 //! LODs: the carve runs at LODs `0..=MAX_CARVE_LOD` (spacing up to half a node spacing by
 //! default); coarser tiles skip it, and their LOD bound grows by [`CARVE_MAX_M`], the most the
-//! carve may remove. (Finer LODs carve with the same pieces, and a sample's carved height moves
+//! carve may remove, and in worlds with shores by [`SHORE_MAX_M`], the most the shores change. (Finer LODs carve with the same pieces, and a sample's carved height moves
 //! by no more than its uncarved height does — each profile's slope in `h` lies in [−¼, 1], and
 //! the minimum over pieces keeps that — so their bound stands.)
 
@@ -65,6 +69,7 @@ mod carve;
 mod lanes;
 mod lines;
 mod network;
+mod shores;
 mod water;
 
 pub use carve::{
@@ -72,6 +77,10 @@ pub use carve::{
 };
 pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
+pub use shores::{
+    LakeField, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
+    SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_STEEP_M,
+};
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
 use super::params::RiverParams;
@@ -206,6 +215,13 @@ pub struct RiverPlan {
     pub wall_noise: f32,
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
+    /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
+    /// ([`shores`]).
+    pub lakes: u32,
+    /// Stream seed of the shores' first noise octave.
+    pub shore_seed: u32,
+    /// Stream seed of the shores' second noise octave.
+    pub shore_seed2: u32,
 }
 
 impl RiverPlan {
@@ -241,6 +257,9 @@ impl RiverPlan {
             fingerprint,
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
+            lakes: params.lakes,
+            shore_seed: stream(seed, purpose::EARTH, 402),
+            shore_seed2: stream(seed, purpose::EARTH, 403),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {
                 MEANDER_2

@@ -72,12 +72,16 @@ impl RiverJob {
                     kinds.push(k);
                     continue;
                 }
-                // No piece: `water_at` with no river, the lake read as `lake_level` reads it.
+                // No piece: `water_at` with no river, the lake read as `lake_surface` reads it.
                 let (mut s, mut k) = (h, kind::NONE);
                 if h < sea_level_m {
                     (s, k) = (sea_level_m, kind::SEA);
                 }
-                if !self.lakes.is_empty() {
+                if self.shores {
+                    if let Some(l) = self.shore_level(x, z).filter(|&l| l > h && l > s) {
+                        (s, k) = (l, kind::LAKE);
+                    }
+                } else if !self.lakes.is_empty() {
                     let mut best: Option<f32> = None;
                     for (dk, di) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
                         let (Some(a), Some(b)) = (lake_cols[i][di], lake_rows[j][dk]) else {

@@ -1,0 +1,179 @@
+//! Lake shores of `lakes: 2` worlds: the terrain shaped to meet each lake's level along a
+//! curved shoreline, so a lake's water ends where its ground rises, never along a line of the
+//! node lattice.
+//!
+//! The first lakes (`lakes: 1`, worlds stored before shores existed) flood a sample when one of
+//! the four nodes around it holds a lake above its height ([`RiverJob::lake_level`]); where the
+//! ground between a lake node and a dry one stays below the level, the water stops at the line
+//! between two dry nodes, a straight side a kilometre long. Here instead:
+//!
+//! 1. **Lake field.** The nodes around a sample give bilinear weights on the unjittered lattice
+//!    (the cell of [`RiverJob::lake_level`]); `I` is the weight of the lake nodes (1 at a lake
+//!    node, 0 on any edge between dry nodes) and `L` their weighted level. Bilinear weights
+//!    along a cell edge depend on its two nodes only, so `I` and `L` are continuous across cells
+//!    and every tile computes them alike.
+//! 2. **Shoreline.** `t = I + n`, with `n` two octaves of value noise (wavelengths
+//!    [`SHORE_NOISE_M`] and a third of it, at most [`SHORE_NOISE`] together); the shore is
+//!    `t = ½`, and `e = ½ − t` is negative in the lake and positive on land.
+//! 3. **Ground.** The height is clamped between a floor and a ceiling that both pass through
+//!    `L` at the shore: on land the floor rises gently (`L + SHORE_GENTLE_M·e`) and the ceiling
+//!    steeply (`L + SHORE_STEEP_M·e`); in the lake the ceiling falls gently and the floor
+//!    steeply. So the ground is dry above `L` just outside the shore and under water just
+//!    inside it, while away from the shore the wedge between them opens and the terrain keeps
+//!    its own shape. The change fades in with `I` from 0 to [`SHORE_FULL`] (below any shore,
+//!    as `|n| ≤` [`SHORE_NOISE`] `< ½ − SHORE_FULL`), so it vanishes on edges between dry nodes;
+//!    it is at most [`SHORE_MAX_M`] either way, the LOD bound of the LODs that skip it.
+//! 4. **Water.** A sample is lake water where `e < 0` and its carved height is below `L`
+//!    ([`RiverJob::shore_level`]).
+//!
+//! The shores apply to the heights before the river carve (valleys of rivers flowing into the
+//! lake cut through the raised land to their water levels, which are no lower than the lake's).
+//! The WGSL twin is `shore` in `shaders/rivers.wgsl`, every operation in this order.
+
+use super::super::super::noise::lattice;
+use super::carve::{smoothstep, RiverJob};
+
+/// Largest total of the shoreline's noise, in units of the lake weight `I`.
+pub const SHORE_NOISE: f32 = 0.22;
+/// Share of [`SHORE_NOISE`] in the first octave (the second has the rest).
+pub const SHORE_NOISE_FIRST: f32 = 0.85;
+/// Wavelength of the shoreline's first noise octave, metres (the second is a third of it).
+pub const SHORE_NOISE_M: f32 = 384.0;
+/// `1 / SHORE_NOISE_M`, 1/m.
+pub const SHORE_NOISE_INV_M: f32 = 1.0 / SHORE_NOISE_M;
+/// `3 / SHORE_NOISE_M`, 1/m: the second octave.
+pub const SHORE_NOISE2_INV_M: f32 = 3.0 / SHORE_NOISE_M;
+/// Largest magnitude of each octave's value before scaling.
+pub const SHORE_NOISE_CLAMP: f32 = 1.5;
+/// Gentle side of the shore's wedge, metres per unit of `e` (about 3° at the default 1 km node
+/// spacing): the floor on land, the ceiling in the lake.
+pub const SHORE_GENTLE_M: f32 = 48.0;
+/// Steep side of the shore's wedge, metres per unit of `e` (about 13°): the ceiling on land,
+/// the floor in the lake.
+pub const SHORE_STEEP_M: f32 = 240.0;
+/// Lake weight from which the shores apply in full.
+pub const SHORE_FULL: f32 = 0.25;
+/// Largest change of a height by the shores, metres.
+pub const SHORE_MAX_M: f32 = 200.0;
+
+/// Scale of the first octave's clamped value: `SHORE_NOISE·SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP`.
+pub const SHORE_N1: f32 = SHORE_NOISE * SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP;
+/// Scale of the second octave's clamped value.
+pub const SHORE_N2: f32 = SHORE_NOISE * (1.0 - SHORE_NOISE_FIRST) / SHORE_NOISE_CLAMP;
+
+/// The lake field at a sample (step 1 and 2 of the module docs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LakeField {
+    /// Weighted level of the lake nodes around, metres.
+    pub level: f32,
+    /// Weight of the lake nodes, `I`, in (0, 1].
+    pub weight: f32,
+    /// Signed distance from the shore in lake-weight units, `e`: negative in the lake.
+    pub e: f32,
+}
+
+impl RiverJob {
+    /// The level of node `(i, k)` of the window (absolute lattice indices), if it holds a lake.
+    fn node_lake(&self, i: i64, k: i64) -> Option<f32> {
+        let rows = self.lakes.len() / self.lakes_w.max(1);
+        let (a, b) = (i - self.li0, k - self.lk0);
+        if a < 0 || b < 0 || a as usize >= self.lakes_w || b as usize >= rows {
+            return None;
+        }
+        let l = self.lakes[b as usize * self.lakes_w + a as usize];
+        (!l.is_nan()).then_some(l)
+    }
+
+    /// The lake field at `(x, z)`, if a lake node around it has weight there.
+    pub fn lake_field(&self, x: f32, z: f32) -> Option<LakeField> {
+        if self.lakes.is_empty() {
+            return None;
+        }
+        let u = x / self.spacing_m - 0.5;
+        let v = z / self.spacing_m - 0.5;
+        let (fu, fv) = (u.floor(), v.floor());
+        let (a, b) = (u - fu, v - fv);
+        let (i, k) = (fu as i64, fv as i64);
+        let corners = [
+            (i, k, (1.0 - a) * (1.0 - b)),
+            (i + 1, k, a * (1.0 - b)),
+            (i, k + 1, (1.0 - a) * b),
+            (i + 1, k + 1, a * b),
+        ];
+        let (mut weight, mut sum) = (0.0f32, 0.0f32);
+        let mut any = false;
+        for (ci, ck, w) in corners {
+            if let Some(l) = self.node_lake(ci, ck) {
+                weight += w;
+                sum += w * l;
+                any = true;
+            }
+        }
+        if !any || weight <= 0.0 {
+            return None;
+        }
+        let level = sum / weight;
+        let n1 = lattice(
+            x * SHORE_NOISE_INV_M,
+            z * SHORE_NOISE_INV_M,
+            self.shore_seed,
+        )
+        .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+        let n2 = lattice(
+            x * SHORE_NOISE2_INV_M,
+            z * SHORE_NOISE2_INV_M,
+            self.shore_seed2,
+        )
+        .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+        let t = weight + (SHORE_N1 * n1 + SHORE_N2 * n2);
+        Some(LakeField {
+            level,
+            weight,
+            e: 0.5 - t,
+        })
+    }
+
+    /// A height `h` at `(x, z)` shaped by the lake shores (step 3 of the module docs); `h`
+    /// itself, bit for bit, where no lake is near or the world has the first lakes.
+    #[inline]
+    pub fn shore(&self, x: f32, z: f32, h: f32) -> f32 {
+        if !self.shores {
+            return h;
+        }
+        let Some(f) = self.lake_field(x, z) else {
+            return h;
+        };
+        let (gentle, steep) = (SHORE_GENTLE_M * f.e, SHORE_STEEP_M * f.e);
+        let (lo, hi) = if f.e > 0.0 {
+            (f.level + gentle, f.level + steep)
+        } else {
+            (f.level + steep, f.level + gentle)
+        };
+        let target = if h < lo {
+            lo
+        } else if h > hi {
+            hi
+        } else {
+            return h;
+        };
+        let g = smoothstep(0.0, SHORE_FULL, f.weight);
+        let change = ((target - h) * g).clamp(-SHORE_MAX_M, SHORE_MAX_M);
+        h + change
+    }
+
+    /// The lake level over a sample at `(x, z)` of a `lakes: 2` world: the lake field's level
+    /// inside its shore (`e < 0`).
+    pub fn shore_level(&self, x: f32, z: f32) -> Option<f32> {
+        self.lake_field(x, z).filter(|f| f.e < 0.0).map(|f| f.level)
+    }
+
+    /// The lake level over `(x, z)` as the world's lakes define it: [`RiverJob::shore_level`]
+    /// with shores, [`RiverJob::lake_level`] without.
+    pub fn lake_surface(&self, x: f32, z: f32) -> Option<f32> {
+        if self.shores {
+            self.shore_level(x, z)
+        } else {
+            self.lake_level(x, z)
+        }
+    }
+}

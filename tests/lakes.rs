@@ -1,0 +1,196 @@
+//! Lake shores (`rivers.lakes: 2`, the default of new worlds; `terrain::earth::rivers`' shores):
+//! a lake's water ends where its ground rises to its level, so no lake has a straight side where
+//! the ground beyond stays below the water; the first lakes (`lakes: 1`, worlds stored before)
+//! keep the straight sides, which is how this test knows it can fail.
+
+use strata::terrain::earth::rivers::kind;
+use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
+
+mod common;
+
+fn plan(lakes: u32) -> WorldPlan {
+    let mut params = WorldParams::default();
+    let rivers = params
+        .earth
+        .as_mut()
+        .and_then(|e| e.rivers.as_mut())
+        .expect("the default world has rivers");
+    rivers.lakes = lakes;
+    WorldPlan::new(42, params).expect("plan")
+}
+
+/// Lake vertices of the LOD-8 tiles around the origin, one per lake (points at least 3 km
+/// apart), at most `n`.
+fn lake_points(plan: &WorldPlan, n: usize) -> Vec<(f64, f64)> {
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for (x, z) in [(0, 0), (-1, 0), (0, -1), (-1, -1), (1, 0), (0, 1)] {
+        let t = synthesize(plan, TileKey { lod: 8, x, z });
+        let s = t.spacing_m as f64;
+        for (v, _) in t
+            .water_kind
+            .iter()
+            .enumerate()
+            .filter(|&(_, &k)| k == kind::LAKE)
+        {
+            let p = (
+                t.origin_x_m() + (v % 65) as f64 * s,
+                t.origin_z_m() + (v / 65) as f64 * s,
+            );
+            if points.iter().all(|q| (q.0 - p.0).hypot(q.1 - p.1) > 3000.0) {
+                points.push(p);
+            }
+            if points.len() == n {
+                return points;
+            }
+        }
+    }
+    points
+}
+
+/// Shore pairs of `tile`: a lake vertex and a dry 4-neighbour. Returns how many there are and
+/// how many of the dry vertices lie more than a centimetre below the lake's surface there.
+fn shore_pairs(tile: &Tile) -> (usize, usize) {
+    let (mut pairs, mut low) = (0, 0);
+    for j in 0..65i64 {
+        for i in 0..65i64 {
+            let v = (j * 65 + i) as usize;
+            if tile.water_kind[v] != kind::LAKE {
+                continue;
+            }
+            for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+                let (a, b) = (i + di, j + dj);
+                if !(0..65).contains(&a) || !(0..65).contains(&b) {
+                    continue;
+                }
+                let u = (b * 65 + a) as usize;
+                if tile.water_kind[u] != kind::NONE {
+                    continue;
+                }
+                pairs += 1;
+                low += usize::from(tile.heights[u] < tile.heights[v] + tile.water_depth[v] - 0.01);
+            }
+        }
+    }
+    (pairs, low)
+}
+
+/// Shore pairs of the LOD-`lod` tiles (3 × 3) around each point.
+fn shores_around(plan: &WorldPlan, points: &[(f64, f64)], lod: u32) -> (usize, usize) {
+    let (mut pairs, mut low) = (0, 0);
+    for &(x, z) in points {
+        let c = common::water::key_at(plan, lod, x, z);
+        for dz in -1..=1 {
+            for dx in -1..=1 {
+                let t = synthesize(
+                    plan,
+                    TileKey {
+                        lod,
+                        x: c.x + dx,
+                        z: c.z + dz,
+                    },
+                );
+                let (p, l) = shore_pairs(&t);
+                pairs += p;
+                low += l;
+            }
+        }
+    }
+    (pairs, low)
+}
+
+#[test]
+fn lake_water_ends_where_its_ground_rises_to_its_level() {
+    let shaped = plan(2);
+    let first = plan(1);
+    let points = lake_points(&first, 4);
+    assert!(
+        points.len() >= 2,
+        "only {} lakes near the origin of seed 42",
+        points.len()
+    );
+    println!("lakes at {points:?}");
+    for lod in [2u32, 4, 6] {
+        let (pairs, low) = shores_around(&shaped, &points, lod);
+        let (pairs1, low1) = shores_around(&first, &points, lod);
+        println!(
+            "LOD {lod}: lakes 2: {pairs} shore pairs, {low} dry below the level; lakes 1: \
+             {pairs1} pairs, {low1} below"
+        );
+        assert!(pairs >= 50, "LOD {lod}: only {pairs} shore pairs");
+        assert_eq!(
+            low, 0,
+            "LOD {lod}: {low} of {pairs} dry shore vertices lie below their lake's level"
+        );
+        if lod <= 4 {
+            assert!(
+                low1 * 20 >= pairs1,
+                "LOD {lod}: the first lakes should show their straight sides ({low1} of {pairs1})"
+            );
+        }
+    }
+}
+
+/// The carve's faster paths (pruned bins, lanes) and the water grid give the scalar carve's
+/// and water's bits on tiles with shaped shores, where the shores change heights before the
+/// carve.
+#[test]
+fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
+    use strata::terrain::earth::rivers::{job_for, water_at, water_job_for};
+    let p = plan(2);
+    let earth = p.earth.as_ref().expect("earth-1");
+    let rp = earth.rivers.as_ref().expect("rivers");
+    let points = lake_points(&p, 2);
+    let n = 65usize;
+    let (mut shored, mut lake) = (0usize, 0usize);
+    for &(x, z) in &points {
+        for lod in [0u32, 3, 5] {
+            let key = common::water::key_at(&p, lod, x, z);
+            let spacing = p.lods[lod as usize].spacing_m;
+            let (gx0, gz0) = (key.x * 64, key.z * 64);
+            let xs: Vec<f32> = (0..n as i64).map(|i| (gx0 + i) as f32 * spacing).collect();
+            let zs: Vec<f32> = (0..n as i64).map(|j| (gz0 + j) as f32 * spacing).collect();
+            let t = synthesize(&p, key);
+            let full = job_for(earth, rp, spacing, gx0, gz0, n, n);
+            // Heights before the carve are not at hand; the carved ones, raised, exercise the
+            // shores' wedge on both sides.
+            let raised: Vec<f32> = t.heights.iter().map(|h| h + 3.0).collect();
+            let pruned = full.pruned(
+                raised
+                    .iter()
+                    .enumerate()
+                    .map(|(v, h)| (xs[v % n], zs[v / n], *h)),
+            );
+            let mut lanes = raised.clone();
+            full.carve_grid(&xs, &zs, &mut lanes);
+            let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
+            let sea = p.params.sea_level_m;
+            let (mut surface, mut kinds) = (Vec::new(), Vec::new());
+            water.water_grid(sea, &xs, &zs, &t.heights, &mut surface, &mut kinds);
+            for (v, h) in raised.iter().enumerate() {
+                let (x, z) = (xs[v % n], zs[v / n]);
+                let one = full.carve_one(x, z, *h);
+                shored += usize::from(full.shore(x, z, *h).to_bits() != h.to_bits());
+                assert_eq!(
+                    full.carve_pruned(&pruned, x, z, *h).to_bits(),
+                    one.to_bits(),
+                    "{key:?} vertex {v}: the pruned carve differs"
+                );
+                assert_eq!(
+                    lanes[v].to_bits(),
+                    one.to_bits(),
+                    "{key:?} vertex {v}: the carve in lanes differs"
+                );
+                let (s_full, k_full) = water_at(&full, sea, x, z, t.heights[v]);
+                assert_eq!(
+                    (surface[v].to_bits(), kinds[v]),
+                    (s_full.to_bits(), k_full),
+                    "{key:?} vertex {v}: the water grid differs"
+                );
+                lake += usize::from(k_full == kind::LAKE);
+            }
+        }
+    }
+    println!("{shored} heights moved by the shores, {lake} lake vertices");
+    assert!(shored > 1000, "only {shored} heights moved by the shores");
+    assert!(lake > 100, "only {lake} lake vertices");
+}
