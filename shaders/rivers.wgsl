@@ -39,15 +39,21 @@ struct CarveParams {
     wall_seed: u32,
     // The lake window (`RiverJob::lakes`): node spacing in metres, first node column and row,
     // columns and rows (both 0 when no lake is near), whether the lakes have shaped shores
-    // (`RiverJob::shores`, 0 or 1) and the seeds of the shores' two noise octaves.
+    // (`RiverJob::shores`, 0 or 1).
     node_spacing: f32,
     li0: i32,
     lk0: i32,
     lakes_w: u32,
     lakes_h: u32,
     shores: u32,
-    shore_seed: u32,
+    // The shores' noise octaves and the warp's x and z (`RiverJob::shore_seeds`), the warp's
+    // scale in metres and its noise's frequency in 1/m.
+    shore_seed0: u32,
+    shore_seed1: u32,
     shore_seed2: u32,
+    shore_seed3: u32,
+    shore_warp_m: f32,
+    shore_warp_inv_m: f32,
     _pad0: u32,
     _pad1: u32,
     _pad2: u32,
@@ -208,8 +214,12 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
     if (params.shores == 0u || params.lakes_w == 0u) {
         return h;
     }
-    let u = div_rn(x, params.node_spacing) - 0.5;
-    let v = div_rn(z, params.node_spacing) - 0.5;
+    let qx = rn(x * params.shore_warp_inv_m);
+    let qz = rn(z * params.shore_warp_inv_m);
+    let wx = clamp_to(lattice(qx, qz, params.shore_seed2), -SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+    let wz = clamp_to(lattice(qx, qz, params.shore_seed3), -SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+    let u = div_rn(x + rn(params.shore_warp_m * wx), params.node_spacing) - 0.5;
+    let v = div_rn(z + rn(params.shore_warp_m * wz), params.node_spacing) - 0.5;
     let fu = floor(u);
     let fv = floor(v);
     let a = u - fu;
@@ -238,12 +248,12 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
     }
     let level = div_rn(sum, weight);
     let n1 = clamp_to(
-        lattice(rn(x * SHORE_NOISE_INV_M), rn(z * SHORE_NOISE_INV_M), params.shore_seed),
+        lattice(rn(x * SHORE_NOISE_INV_M), rn(z * SHORE_NOISE_INV_M), params.shore_seed0),
         -SHORE_NOISE_CLAMP,
         SHORE_NOISE_CLAMP,
     );
     let n2 = clamp_to(
-        lattice(rn(x * SHORE_NOISE2_INV_M), rn(z * SHORE_NOISE2_INV_M), params.shore_seed2),
+        lattice(rn(x * SHORE_NOISE2_INV_M), rn(z * SHORE_NOISE2_INV_M), params.shore_seed1),
         -SHORE_NOISE_CLAMP,
         SHORE_NOISE_CLAMP,
     );

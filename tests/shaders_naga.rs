@@ -354,8 +354,12 @@ fn river_carve_structs_match_the_wgsl_layout() {
             lakes_w,
             lakes_h,
             shores,
-            shore_seed,
-            shore_seed2
+            shore_seed0,
+            shore_seed1,
+            shore_seed2,
+            shore_seed3,
+            shore_warp_m,
+            shore_warp_inv_m
         ]
     );
     check_layout!(

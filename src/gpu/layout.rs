@@ -243,7 +243,7 @@ impl From<&Layer> for GpuEarthLayer {
     }
 }
 
-/// WGSL `EarthParams` of `earth.wgsl` (a uniform buffer, 96 bytes): the rectangle, the counts
+/// WGSL `EarthParams` of `earth.wgsl` (a uniform buffer, 112 bytes): the rectangle, the counts
 /// of the macro octaves and layers, and the scalars of `terrain::earth::MacroPlan`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -317,7 +317,7 @@ pub struct GpuEarthParams {
 /// may assume no NaN exists, so none is uploaded).
 pub const LAKE_NONE: f32 = -3.0e38;
 
-/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 96 bytes): the rectangle of the
+/// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 112 bytes): the rectangle of the
 /// heights, the bin grid of `terrain::earth::rivers::RiverJob`, its walls' width noise and its
 /// lake window (the levels are uploaded beside it, [`LAKE_NONE`] for a node without a lake). The pieces are uploaded as
 /// `rivers::Piece` itself, whose `#[repr(C)]` layout is the WGSL `Piece`.
@@ -362,10 +362,18 @@ pub struct GpuCarveParams {
     pub lakes_h: u32,
     /// 1 where the lakes have shaped shores (`RiverJob::shores`), else 0.
     pub shores: u32,
-    /// `RiverJob::shore_seed`.
-    pub shore_seed: u32,
-    /// `RiverJob::shore_seed2`.
+    /// `RiverJob::shore_seeds[0]`: the shores' first noise octave.
+    pub shore_seed0: u32,
+    /// `RiverJob::shore_seeds[1]`: the shores' second noise octave.
+    pub shore_seed1: u32,
+    /// `RiverJob::shore_seeds[2]`: the warp's x.
     pub shore_seed2: u32,
+    /// `RiverJob::shore_seeds[3]`: the warp's z.
+    pub shore_seed3: u32,
+    /// `RiverJob::shore_warp_m`.
+    pub shore_warp_m: f32,
+    /// `RiverJob::shore_warp_inv_m`.
+    pub shore_warp_inv_m: f32,
     /// Padding to a multiple of 16 bytes.
     pub _pad0: u32,
     /// Padding.

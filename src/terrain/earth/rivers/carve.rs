@@ -110,10 +110,12 @@ pub struct RiverJob {
     pub wall_seed: u32,
     /// Whether the lakes have shaped shores (`lakes: 2`, [`super::shores`]).
     pub shores: bool,
-    /// `RiverPlan::shore_seed`: the shores' first noise octave.
-    pub shore_seed: u32,
-    /// `RiverPlan::shore_seed2`: the shores' second noise octave.
-    pub shore_seed2: u32,
+    /// `RiverPlan::shore_seeds`: the shores' two noise octaves and the warp's x and z.
+    pub shore_seeds: [u32; 4],
+    /// Scale of the shores' warp, metres (`SHORE_WARP` node spacings).
+    pub shore_warp_m: f32,
+    /// `1 / (SHORE_WARP_WAVE` node spacings`)`, 1/m: the warp's noise is read at `(x, z)·this`.
+    pub shore_warp_inv_m: f32,
 }
 
 /// The projection of `(x, z)` on piece `p`'s chord, clamped to `[0, 1]`, and the chord `b − a`.
@@ -490,8 +492,9 @@ impl Network<'_> {
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
             shores: self.plan.lakes >= 2,
-            shore_seed: self.plan.shore_seed,
-            shore_seed2: self.plan.shore_seed2,
+            shore_seeds: self.plan.shore_seeds,
+            shore_warp_m: super::SHORE_WARP * s,
+            shore_warp_inv_m: 1.0 / (super::SHORE_WARP_WAVE * s),
         }
     }
 }

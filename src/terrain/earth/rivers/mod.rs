@@ -79,7 +79,8 @@ pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
 pub use shores::{
     LakeField, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
-    SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_STEEP_M,
+    SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_STEEP_M, SHORE_WARP,
+    SHORE_WARP_WAVE,
 };
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
@@ -218,10 +219,8 @@ pub struct RiverPlan {
     /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
     /// ([`shores`]).
     pub lakes: u32,
-    /// Stream seed of the shores' first noise octave.
-    pub shore_seed: u32,
-    /// Stream seed of the shores' second noise octave.
-    pub shore_seed2: u32,
+    /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
+    pub shore_seeds: [u32; 4],
 }
 
 impl RiverPlan {
@@ -258,8 +257,7 @@ impl RiverPlan {
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
             lakes: params.lakes,
-            shore_seed: stream(seed, purpose::EARTH, 402),
-            shore_seed2: stream(seed, purpose::EARTH, 403),
+            shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {
                 MEANDER_2

@@ -8,10 +8,12 @@
 //! between two dry nodes, a straight side a kilometre long. Here instead:
 //!
 //! 1. **Lake field.** The nodes around a sample give bilinear weights on the unjittered lattice
-//!    (the cell of [`RiverJob::lake_level`]); `I` is the weight of the lake nodes (1 at a lake
-//!    node, 0 on any edge between dry nodes) and `L` their weighted level. Bilinear weights
-//!    along a cell edge depend on its two nodes only, so `I` and `L` are continuous across cells
-//!    and every tile computes them alike.
+//!    (the cell of [`RiverJob::lake_level`]), read at the sample displaced by a smooth warp (at
+//!    most [`SHORE_WARP`]` · 1.5` spacings, wavelength [`SHORE_WARP_WAVE`] spacings, so within
+//!    the job's window of nodes); `I` is the weight of the lake nodes (1 at a lake node, 0 on
+//!    any edge between dry nodes) and `L` their weighted level. Bilinear weights along a cell
+//!    edge depend on its two nodes only, so `I` and `L` are continuous across cells and every
+//!    tile computes them alike.
 //! 2. **Shoreline.** `t = I + n`, with `n` two octaves of value noise (wavelengths
 //!    [`SHORE_NOISE_M`] and a third of it, at most [`SHORE_NOISE`] together); the shore is
 //!    `t = ½`, and `e = ½ − t` is negative in the lake and positive on land.
@@ -56,6 +58,14 @@ pub const SHORE_FULL: f32 = 0.25;
 /// Largest change of a height by the shores, metres.
 pub const SHORE_MAX_M: f32 = 200.0;
 
+/// Largest displacement of the point at which the lake field is read, in node spacings
+/// (`SHORE_WARP·1.5`, below one so the field reads only the job's window): a warp of wavelength
+/// [`SHORE_WARP_WAVE`] spacings bends the shores that run between a row of lake nodes and a
+/// row of dry ones, which the shore noise alone leaves straight over kilometres.
+pub const SHORE_WARP: f32 = 0.25;
+/// Wavelength of the warp, in node spacings.
+pub const SHORE_WARP_WAVE: f32 = 2.5;
+
 /// Scale of the first octave's clamped value: `SHORE_NOISE·SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP`.
 pub const SHORE_N1: f32 = SHORE_NOISE * SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP;
 /// Scale of the second octave's clamped value.
@@ -89,8 +99,11 @@ impl RiverJob {
         if self.lakes.is_empty() {
             return None;
         }
-        let u = x / self.spacing_m - 0.5;
-        let v = z / self.spacing_m - 0.5;
+        let (qx, qz) = (x * self.shore_warp_inv_m, z * self.shore_warp_inv_m);
+        let wx = lattice(qx, qz, self.shore_seeds[2]).clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+        let wz = lattice(qx, qz, self.shore_seeds[3]).clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+        let u = (x + self.shore_warp_m * wx) / self.spacing_m - 0.5;
+        let v = (z + self.shore_warp_m * wz) / self.spacing_m - 0.5;
         let (fu, fv) = (u.floor(), v.floor());
         let (a, b) = (u - fu, v - fv);
         let (i, k) = (fu as i64, fv as i64);
@@ -116,13 +129,13 @@ impl RiverJob {
         let n1 = lattice(
             x * SHORE_NOISE_INV_M,
             z * SHORE_NOISE_INV_M,
-            self.shore_seed,
+            self.shore_seeds[0],
         )
         .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
         let n2 = lattice(
             x * SHORE_NOISE2_INV_M,
             z * SHORE_NOISE2_INV_M,
-            self.shore_seed2,
+            self.shore_seeds[1],
         )
         .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
         let t = weight + (SHORE_N1 * n1 + SHORE_N2 * n2);
