@@ -4,7 +4,8 @@
 // <places JSON> is `[{"name", "x", "z", "dist", "rings"}]` (seed 42; a coast, a lake and a river,
 // found by tests/viewer_water.rs from the tiles). For each place the viewer looks straight down
 // (pitch 89°) at (x, z) from `dist` metres; once the view has streamed (and the river lines have
-// arrived) the test takes a screenshot (`<dir>/water-<name>.png`) and computes
+// arrived) the test takes a screenshot (`<dir>/water-<name>.png`), hides the panels (which would
+// read as dry land over the water) and computes
 // - the water mask of the screenshot: on a grid of points every STEP pixels, a point is water
 //   where hiding the water (`__strata.showWater(false)`) changes its colour by more than
 //   DIFF_MIN (the sum of the three channels' differences, 0…765);
@@ -14,6 +15,8 @@
 //   to neighbours whose ground lies below its level, FLOOD_STEPS grid steps at most (so a
 //   lake or sea whose water the tiles cut off along a straight line where the ground stays
 //   below its level is found: the heights' shoreline is not there).
+// Cracks in the screenshot's water (a dry point between two water points: a seam a pixel wide
+// between two tiles' water sheets) are closed first and counted, not taken for shores.
 // It fails unless both water and land fill at least MIN_SHARE of the grid, the two masks agree
 // on at least AGREE_MIN of the points, every water edge of the screenshot lies within
 // EDGE_MAX_PX of an edge of the heights' mask at the 95th percentile, and the screenshot's water
@@ -94,6 +97,27 @@ function flood(wet, ground, level) {
   return out;
 }
 
+/** The mask with its cracks closed: a dry point between two water points along a row or a
+ * column is water. A seam between two tiles' water sheets (a line a pixel wide that the grid
+ * samples here and there) is not a shore; the count of cracks closed is reported. */
+function closeCracks(mask) {
+  const out = Int8Array.from(mask);
+  let cracks = 0;
+  for (let r = 0; r < rows; r++) {
+    for (let c = 0; c < cols; c++) {
+      const i = r * cols + c;
+      if (mask[i] !== 0) continue;
+      const row = c > 0 && c + 1 < cols && mask[i - 1] === 1 && mask[i + 1] === 1;
+      const col = r > 0 && r + 1 < rows && mask[i - cols] === 1 && mask[i + cols] === 1;
+      if (row || col) {
+        out[i] = 1;
+        cracks++;
+      }
+    }
+  }
+  return [out, cracks];
+}
+
 /** Grid points where the mask differs from a 4-neighbour (points of unknown value, -1, excluded). */
 function edges(mask) {
   const out = new Uint8Array(cols * rows);
@@ -161,14 +185,18 @@ try {
       .catch(() => failures.push(`${place.name}: river lines still loading`));
     await page.waitForTimeout(1500);
     const shotPath = join(dir, `water-${place.name}.png`);
+    writeFileSync(shotPath, await page.screenshot());
+    // The masks are taken without the panels: a panel over the water would read as dry land.
+    await page.evaluate(() => document.querySelectorAll(".panel").forEach((e) => (e.style.visibility = "hidden")));
+    await page.waitForTimeout(1500);
     const withWater = await page.screenshot();
-    writeFileSync(shotPath, withWater);
     await page.evaluate(() => window.__strata.showWater(false));
     await page.waitForTimeout(1500);
     const without = await page.screenshot();
     await page.evaluate(() => window.__strata.showWater(true));
+    await page.evaluate(() => document.querySelectorAll(".panel").forEach((e) => (e.style.visibility = "")));
     const shore = await page.evaluate(([c, r]) => window.__strata.shore(c, r), [cols, rows]);
-    const seen = waterMask(withWater, without);
+    const [seen, cracks] = closeCracks(waterMask(withWater, without));
     const expected = flood(shore.wet, shore.ground, shore.level);
 
     let known = 0;
@@ -213,7 +241,7 @@ try {
         `${s.held} tiles, ${s.rivers} river ribbons; water ${(100 * share).toFixed(1)} % of ${known} points, ` +
         `masks agree on ${(100 * agreement).toFixed(2)} %, water edge to shoreline p95 ${p95.toFixed(1)} px ` +
         `over ${dists.length} edge points, ${alongBorder} along tile borders away from the shoreline ` +
-        `(${(100 * borderShare).toFixed(2)} %) → ${shotPath}`,
+        `(${(100 * borderShare).toFixed(2)} %), ${cracks} crack points closed → ${shotPath}`,
     );
     if (s.errors.length) failures.push(`${place.name}: the viewer shows errors: ${s.errors.join(" | ")}`);
     if (known < 0.9 * cols * rows) failures.push(`${place.name}: only ${known} of ${cols * rows} points over held tiles`);
