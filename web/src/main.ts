@@ -6,7 +6,7 @@
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
-// it), ?chunk_rings=2,2,2,2 the volume-chunk rings, ?ptex=0 no Ptex pages (by default the view
+// it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by default the view
 // asks for them and the tiles are drawn with their albedo, see ./ptex.ts). Without ?x=&z= the view
 // opens on land with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
 // as ribbons along the server's river lines (see ./rivers.ts).
@@ -129,9 +129,11 @@ const seed = q.get("seed") ?? "42";
 const world = q.get("world");
 const token = q.get("token");
 const rings = (q.get("rings") ?? "2,1,2,4,8,0,1,0,1").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
-// Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions.
+// Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions; an empty
+// ?chunk_rings= asks for no chunks (0 rings is still the camera's chunk at each level).
 const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
   .split(",")
+  .filter((s) => s.trim() !== "")
   .slice(0, 4)
   .map((s) => Math.max(0, Math.min(4, parseInt(s, 10) || 0)));
 // Ptex pages for the tiles' faces (stream protocol v2), unless ?ptex=0.

@@ -17,6 +17,7 @@
 import * as THREE from "three";
 import type { PtexPages } from "./ptexFormat";
 import { tileKey } from "./view";
+import { waterMaterial } from "./water";
 
 const LEVELS = 6;
 /** Tile faces per side (api/ptex_pages_v1.md: 4 × 4 faces, 16 lattice cells each). */
@@ -64,10 +65,14 @@ function sampleLevels(): string {
 
 const VERTEX_PARS = `
 uniform float ptexSpacing;
-varying vec2 vPtexCell;`;
+attribute float waterTint;
+varying vec2 vPtexCell;
+varying float vPtexWater;`;
 
 const FRAGMENT_PARS = `
 varying vec2 vPtexCell;
+varying float vPtexWater;
+uniform vec3 ptexWaterColor;
 uniform vec4 ptexFace[${FACES * FACES}];
 ${Array.from({ length: LEVELS }, (_, l) => `uniform highp sampler2DArray ptexAtlas${l};`).join("\n")}
 ${sampleLevels()}`;
@@ -75,7 +80,8 @@ ${sampleLevels()}`;
 // After the vertex colours: the face's page, if it has one. The tile's vertex (i, j) sits at
 // (i·spacing, j·spacing) in the mesh (skirts repeat their edge vertex's x and z). Face (fi, fj)
 // covers cells 16·fi … 16·fi + 16 east and 16·fj … south; its u runs south and v east, and texel
-// (i along u, j along v) is at column i + 1, row j + 1 of the page.
+// (i along u, j along v) is at column i + 1, row j + 1 of the page. Under deep water the albedo
+// leans to the water's colour as the vertex colours do (mesh.ts).
 const FRAGMENT_PTEX = `
 {
   vec2 cell = clamp(vPtexCell, 0.0, ${FACES * CELLS_PER_FACE}.0);
@@ -85,7 +91,7 @@ const FRAGMENT_PTEX = `
     vec2 local = cell / ${CELLS_PER_FACE}.0 - f;
     float res = 8.0 * exp2(page.x);
     vec2 texel = page.zw + 1.0 + local.yx * res;
-    diffuseColor.rgb = ptexAlbedo(int(page.x + 0.5), texel, page.y);
+    diffuseColor.rgb = mix(ptexAlbedo(int(page.x + 0.5), texel, page.y), ptexWaterColor, vPtexWater);
   }
 }`;
 
@@ -128,10 +134,11 @@ export class PtexStore {
       Object.assign(shader.uniforms, this.atlas, {
         ptexFace: { value: table },
         ptexSpacing: { value: spacing },
+        ptexWaterColor: { value: waterMaterial.color },
       });
       shader.vertexShader = shader.vertexShader
         .replace("#include <common>", `#include <common>${VERTEX_PARS}`)
-        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;");
+        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;\n  vPtexWater = waterTint;");
       shader.fragmentShader = shader.fragmentShader
         .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
         .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT_PTEX}`);
@@ -203,9 +210,12 @@ export class PtexStore {
     }
   }
 
-  /** Forgets every page (a new stream session starts afresh). */
+  /** Forgets every page (a new stream session starts afresh); the held tiles' tables stay theirs,
+   * with no page until the new session's pages arrive. */
   clear(): void {
-    this.keep(new Set());
+    for (const level of this.levels) level.owner.clear();
+    this.faces.clear();
+    for (const t of this.tables.values()) for (let f = 0; f < FACES * FACES; f++) t[4 * f] = -1;
   }
 
   /** Faces with a page and, of those, with a detail page. */
