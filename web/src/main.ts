@@ -6,10 +6,11 @@
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
-// it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by default the view
-// asks for them and the tiles are drawn with their albedo, see ./ptex.ts). Without ?x=&z= the view
-// opens on land with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
-// as ribbons along the server's river lines (see ./rivers.ts).
+// it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by
+// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts).
+// Without ?x=&z= the view opens on land with relief near the origin. With a world and a token the
+// edit tools are shown (see ./edit.ts). Rivers are drawn as ribbons along the server's river lines
+// (see ./rivers.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { ChunkLayer } from "./chunk";

@@ -125,9 +125,6 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   const pos = new Float32Array(3 * total);
   const nor = new Float32Array(3 * total);
   const col = new Float32Array(3 * total);
-  // How far the ground's colour leans to the water's (deep water), for materials that replace the
-  // vertex colours (./ptex.ts).
-  const tint = new Float32Array(total);
   const c = new THREE.Color();
   const b = new THREE.Color();
   for (let j = 0; j < size; j++) {
@@ -149,10 +146,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       }
       c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.45);
       const depth = tile.waterDepth[v];
-      if (depth > 0) {
-        tint[v] = Math.min(depth / 60, 0.85);
-        c.lerp(waterMaterial.color, tint[v]);
-      }
+      if (depth > 0) c.lerp(waterMaterial.color, Math.min(depth / 60, 0.85));
       col[3 * v] = c.r;
       col[3 * v + 1] = c.g;
       col[3 * v + 2] = c.b;
@@ -167,7 +161,6 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
         nor[3 * d + a] = nor[3 * s + a];
         col[3 * d + a] = col[3 * s + a];
       }
-      tint[d] = tint[s];
       pos[3 * d + 1] -= tile.skirtDepth;
     }
   }
@@ -182,7 +175,6 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
-  geo.setAttribute("waterTint", new THREE.BufferAttribute(tint, 1));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
   const mesh = new THREE.Mesh(geo, material);

@@ -17,7 +17,6 @@
 import * as THREE from "three";
 import type { PtexPages } from "./ptexFormat";
 import { tileKey } from "./view";
-import { waterMaterial } from "./water";
 
 const LEVELS = 6;
 /** Tile faces per side (api/ptex_pages_v1.md: 4 × 4 faces, 16 lattice cells each). */
@@ -65,14 +64,10 @@ function sampleLevels(): string {
 
 const VERTEX_PARS = `
 uniform float ptexSpacing;
-attribute float waterTint;
-varying vec2 vPtexCell;
-varying float vPtexWater;`;
+varying vec2 vPtexCell;`;
 
 const FRAGMENT_PARS = `
 varying vec2 vPtexCell;
-varying float vPtexWater;
-uniform vec3 ptexWaterColor;
 uniform vec4 ptexFace[${FACES * FACES}];
 ${Array.from({ length: LEVELS }, (_, l) => `uniform highp sampler2DArray ptexAtlas${l};`).join("\n")}
 ${sampleLevels()}`;
@@ -80,8 +75,9 @@ ${sampleLevels()}`;
 // After the vertex colours: the face's page, if it has one. The tile's vertex (i, j) sits at
 // (i·spacing, j·spacing) in the mesh (skirts repeat their edge vertex's x and z). Face (fi, fj)
 // covers cells 16·fi … 16·fi + 16 east and 16·fj … south; its u runs south and v east, and texel
-// (i along u, j along v) is at column i + 1, row j + 1 of the page. Under deep water the albedo
-// leans to the water's colour as the vertex colours do (mesh.ts).
+// (i along u, j along v) is at column i + 1, row j + 1 of the page. Under water the page's albedo
+// is drawn as it is (the vertex colours lean to the water's colour in deep water): the water sheet
+// over it is what shows the water, and it must stand out from the ground it covers.
 const FRAGMENT_PTEX = `
 {
   vec2 cell = clamp(vPtexCell, 0.0, ${FACES * CELLS_PER_FACE}.0);
@@ -91,7 +87,7 @@ const FRAGMENT_PTEX = `
     vec2 local = cell / ${CELLS_PER_FACE}.0 - f;
     float res = 8.0 * exp2(page.x);
     vec2 texel = page.zw + 1.0 + local.yx * res;
-    diffuseColor.rgb = mix(ptexAlbedo(int(page.x + 0.5), texel, page.y), ptexWaterColor, vPtexWater);
+    diffuseColor.rgb = ptexAlbedo(int(page.x + 0.5), texel, page.y);
   }
 }`;
 
@@ -134,11 +130,10 @@ export class PtexStore {
       Object.assign(shader.uniforms, this.atlas, {
         ptexFace: { value: table },
         ptexSpacing: { value: spacing },
-        ptexWaterColor: { value: waterMaterial.color },
       });
       shader.vertexShader = shader.vertexShader
         .replace("#include <common>", `#include <common>${VERTEX_PARS}`)
-        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;\n  vPtexWater = waterTint;");
+        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;");
       shader.fragmentShader = shader.fragmentShader
         .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
         .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT_PTEX}`);
