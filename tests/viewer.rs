@@ -11,7 +11,10 @@
 //! volume element: chunk frames arrive for the arch and it shows
 //! (`target/viewer-{arch,no-arch}.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
-//! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`).
+//! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
+//! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0`: pages arrive and every
+//! face of the held tiles is drawn with one, and the pictures differ clearly over the terrain
+//! (`target/viewer-{ptex,ptex-off}.png`).
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
@@ -153,6 +156,10 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
             path(&without),
         ],
     );
+    // Issue 20, Done-when 5: Ptex-textured terrain against untextured shading.
+    let on = root().join("target").join("viewer-ptex.png");
+    let off = root().join("target").join("viewer-ptex-off.png");
+    let ptex = run_node("ptex.mjs", &[server.addr.as_str(), path(&on), path(&off)]);
     drop(server);
     let _ = std::fs::remove_dir_all(&data);
     for (name, (ok, out)) in [
@@ -161,6 +168,7 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
         ("errors.mjs", errors),
         ("volume.mjs", volume),
         ("cave.mjs", opening),
+        ("ptex.mjs", ptex),
     ] {
         assert!(ok, "{name} failed:\n{out}");
     }

@@ -195,6 +195,11 @@ try {
   // Fly 5 km east at the viewer's default speed (issue 19, Done-when 2), then again opened with
   // `&dist=300` (a camera close to the ground, so a slow flight over fine tiles).
   await fly5km(page, "default distance");
+  // Leaving the page aborts the requests still open (river lines), which the browser reports as
+  // failed requests: the flight's view and its river lines finish first.
+  await page
+    .waitForFunction(() => window.__strata.idle && window.__strata.riverPending === 0, null, { timeout: 90_000, polling: 250 })
+    .catch(() => failures.push("after the flight: the view or its river lines did not finish loading"));
   await page.goto(`${url}&dist=300`, { waitUntil: "load" });
   await page
     .waitForFunction(() => window.__strata && window.__strata.tiles >= 20, null, { timeout: 45_000, polling: 250 })

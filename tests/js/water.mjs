@@ -180,8 +180,10 @@ try {
       .then(() => true)
       .catch(() => false);
     if (!idle) failures.push(`${place.name}: the view did not finish streaming`);
+    // Two at a time after their tiles; on a loaded machine, with the server baking the view's Ptex
+    // pages, the coast's lines have taken over a minute.
     await page
-      .waitForFunction(() => window.__strata.riverPending === 0, null, { timeout: 60_000, polling: 500 })
+      .waitForFunction(() => window.__strata.riverPending === 0, null, { timeout: 150_000, polling: 500 })
       .catch(() => failures.push(`${place.name}: river lines still loading`));
     await page.waitForTimeout(1500);
     const shotPath = join(dir, `water-${place.name}.png`);

@@ -1,7 +1,7 @@
 // Volume chunks of stream protocol v2 (api/stream_protocol_v2.md) as three.js meshes (surface and
 // skirt quads), decoded by ./chunkFormat.ts.
 import * as THREE from "three";
-import type { Chunk } from "./chunkFormat";
+import { chunkKey, type Chunk } from "./chunkFormat";
 
 // Materials as the tiles': 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
 const MATERIAL = [
@@ -84,6 +84,18 @@ export class ChunkLayer {
     }
     this.meshes.delete(key);
     return this.meshes.size;
+  }
+
+  /** Whether a held chunk (of LOD 0–3, a chunk `(lod, x, y, z)` spanning `32·cellM·2^lod` metres
+   * from `(x, y, z)` times that) contains world (x, y, z) metres: that chunk, empty or not, gives
+   * the surface there. */
+  covers(x: number, y: number, z: number, cellM: number): boolean {
+    if (this.meshes.size === 0) return false;
+    for (let lod = 0; lod < 4; lod++) {
+      const size = 32 * cellM * 2 ** lod;
+      if (this.meshes.has(chunkKey(lod, Math.floor(x / size), Math.floor(y / size), Math.floor(z / size)))) return true;
+    }
+    return false;
   }
 
   /** Frees the chunks not in `wanted`; returns how many chunks are held. */

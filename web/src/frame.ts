@@ -1,10 +1,13 @@
 // Decoding of stream frames (api/stream_protocol_v1.md, _v2.md) and STRT v1 tiles
 // (api/tile_format_v1.md).
 
-/** Frame kinds: a height tile, a volume chunk (v2). */
+/** Frame kinds: a height tile, a volume chunk, Ptex pages (v2). */
 export const KIND_TILE = 1;
 export const KIND_CHUNK = 2;
+export const KIND_PTEX = 3;
 
+/** A frame's header fields; for Ptex pages `lod` is the level, `x` the pages' resolution and `z`
+ * their count. */
 export interface Frame {
   kind: number;
   lod: number;

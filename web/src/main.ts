@@ -1,22 +1,25 @@
-// The strata viewer: streams height tiles and volume chunks over strata.stream.v2 (credits: a slow
-// client is slowed, not dropped), decodes them in a worker (./decode.worker.ts) and renders them
-// with three.js.
+// The strata viewer: streams height tiles, volume chunks and Ptex pages over strata.stream.v2
+// (credits: a slow client is slowed, not dropped) through a worker that holds the socket and
+// decodes (./decode.worker.ts), and renders them with three.js.
 //
 // Query: ?seed=42 (default) or ?world=<id>&token=<read or edit token>; ?x=&z= (metres) where the
 // camera looks at first, ?dist= (metres) how far away it starts and ?pitch= (degrees above the
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
-// it), ?chunk_rings=2,2,2,2 the volume-chunk rings. Without ?x=&z= the view opens on land
-// with relief near the origin. With a world and a token the edit tools are shown (see ./edit.ts). Rivers are drawn
-// as ribbons along the server's river lines (see ./rivers.ts).
+// it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by
+// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts).
+// Without ?x=&z= the view opens on land with relief near the origin. With a world and a token the
+// edit tools are shown (see ./edit.ts). Rivers are drawn as ribbons along the server's river lines
+// (see ./rivers.ts).
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { ChunkLayer } from "./chunk";
 import { chunkKey } from "./chunkFormat";
-import type { Decoded } from "./decoded";
+import type { Decoded, ToWorker } from "./decoded";
 import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
-import { buildMesh, disposeMesh } from "./mesh";
+import { buildMesh, disposeMesh, hasMarks, updateHidden } from "./mesh";
+import { PtexStore } from "./ptex";
 import { RiverLayer } from "./rivers";
 import { shoreSamples, type ShoreSamples } from "./shoreline";
 import { selectView, tileKey } from "./view";
@@ -26,6 +29,8 @@ interface Held {
   mesh: THREE.Mesh;
   tile: Tile;
   version: number;
+  /** Whether the server marks vertices of the tile that volume chunks override. */
+  marked: boolean;
 }
 
 interface StrataState {
@@ -63,6 +68,13 @@ interface StrataState {
   flySpeed: number; // how fast WASD flies now, metres per second (it grows with the height above the ground)
   horizon: number; // the horizon line's row as a fraction of the picture's height from the top (0 when above it)
   protocol: string; // the stream protocol the server speaks
+  ptex: boolean; // whether the view asks for Ptex pages (?ptex=0 turns them off)
+  ptexFrames: number; // Ptex frames (kind 3) received since the page loaded
+  ptexPages: number; // pages in them
+  ptexApplied: number; // pages written into the texture arrays for faces of held tiles
+  ptexFaces: number; // faces of the view's tiles drawn with a page
+  ptexDetail: number; // of those, faces drawn with a detail page (16² or finer)
+  hiddenTiles: number; // held tiles with vertices hidden under held volume chunks
 }
 
 declare global {
@@ -103,6 +115,13 @@ const state: StrataState = {
   flySpeed: 0,
   horizon: 0,
   protocol: "",
+  ptex: false,
+  ptexFrames: 0,
+  ptexPages: 0,
+  ptexApplied: 0,
+  ptexFaces: 0,
+  ptexDetail: 0,
+  hiddenTiles: 0,
 };
 window.__strata = state;
 
@@ -111,11 +130,20 @@ const seed = q.get("seed") ?? "42";
 const world = q.get("world");
 const token = q.get("token");
 const rings = (q.get("rings") ?? "2,1,2,4,8,0,1,0,1").split(",").map((s) => Math.max(0, Math.min(16, parseInt(s, 10) || 0)));
-// Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions.
+// Volume-chunk rings (LOD 0–3) around the camera, where the world has volume regions; an empty
+// ?chunk_rings= asks for no chunks (0 rings is still the camera's chunk at each level).
 const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
   .split(",")
+  .filter((s) => s.trim() !== "")
   .slice(0, 4)
   .map((s) => Math.max(0, Math.min(4, parseInt(s, 10) || 0)));
+// Ptex pages for the tiles' faces (stream protocol v2), unless ?ptex=0.
+const ptexOn = q.get("ptex") !== "0";
+state.ptex = ptexOn;
+// The view cone the Ptex pages are chosen for reaches this far, metres (the fog starts at 8 km).
+const PTEX_FAR_M = 8192;
+// A turn of the camera by more than this (radians) sends the view again: the pages follow the cone.
+const PTEX_TURN = 0.2;
 // Frames the viewer lets the server send ahead of what it has decoded (stream protocol v2 credits).
 const CREDIT_WINDOW = 16;
 // The camera keeps at least this height above the ground under it, metres.
@@ -231,6 +259,8 @@ function fly(dt: number): void {
 
 // ---- tiles ----------------------------------------------------------------------------------------
 const held = new Map<string, Held>();
+// The Ptex pages of the stream session, in texture arrays the tiles' materials sample.
+const ptex = new PtexStore(gl ? (gl.getParameter(gl.MAX_ARRAY_TEXTURE_LAYERS) as number) : 256);
 const terrain = new THREE.Group();
 scene.add(terrain);
 let wanted = new Set<string>(); // keys of the current view (client-side selection, as the server's)
@@ -252,9 +282,9 @@ function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
   removeMesh(key);
   disposeRetiring(key);
-  const mesh = buildMesh(tile);
+  const mesh = buildMesh(tile, covered, ptexOn ? ptex.material(key, tile.spacing) : undefined);
   terrain.add(mesh);
-  held.set(key, { mesh, tile, version });
+  held.set(key, { mesh, tile, version, marked: hasMarks(tile) });
   state.held = held.size;
   rivers.put(key, mesh, tile, version);
   settleRetiring(false);
@@ -307,8 +337,10 @@ function removeMesh(key: string): boolean {
   return true;
 }
 
-/** Retires the meshes the current view no longer holds: they are freed once covered. */
+/** Retires the meshes the current view no longer holds: they are freed once covered. Their Ptex
+ * pages are freed at once (the server reuses their slots), so they are drawn with vertex colours. */
 function pruneToView(): void {
+  ptex.keep(wanted);
   for (const [key, h] of [...held]) {
     if (wanted.has(key)) continue;
     rivers.drop(key);
@@ -348,11 +380,36 @@ function* heldTiles(): Iterable<Tile> {
 // the tiles hide the vertices the chunks override.
 const chunks = new ChunkLayer(scene);
 let wantedChunks = new Set<string>();
+/** Whether a held chunk gives the surface at world (x, y, z): the tiles hide marked vertices there. */
+const covered = (x: number, y: number, z: number) => chunks.covers(x, y, z, cellM);
+// Set when chunks arrive or are freed: the marked tiles' hidden vertices are re-evaluated before
+// the next picture.
+let hiddenStale = false;
+
+function setHeldChunks(n: number): void {
+  state.heldChunks = n;
+  hiddenStale = true;
+}
+
+/** Hides the marked vertices of the held and retiring tiles where held chunks cover them now. */
+function refreshHidden(): void {
+  if (!hiddenStale) return;
+  hiddenStale = false;
+  let n = 0;
+  for (const h of [...held.values(), ...retiring.values()]) {
+    if (!h.marked) continue;
+    updateHidden(h.mesh, h.tile, covered);
+    const index = h.mesh.geometry.getIndex();
+    if (index && h.mesh.geometry.drawRange.count < index.count) n++;
+  }
+  state.hiddenTiles = n;
+}
 
 const addressKey = (a: number[]) => chunkKey(a[0], a[1], a[2], a[3]);
 
 // ---- the stream -------------------------------------------------------------------------------------
-let socket: WebSocket | undefined;
+// Whether the stream worker's socket is open (the worker holds it; see connect()).
+let socketOpen = false;
 let lastCell = "";
 let lastSent = 0;
 let biomes: string[] = ["arctic", "tundra", "grassland", "desert"];
@@ -398,8 +455,8 @@ let grantScheduled = false;
 
 function grant(): void {
   grantScheduled = false;
-  if (owed === 0 || !socket || socket.readyState !== WebSocket.OPEN) return;
-  socket.send(JSON.stringify({ type: "credit", frames: owed }));
+  if (owed === 0 || !socketOpen) return;
+  send({ type: "credit", frames: owed });
   owed = 0;
 }
 
@@ -411,14 +468,25 @@ function owe(): void {
   }
 }
 
+const lastForward = new THREE.Vector3();
+
+/** The half angle of the camera's view cone (to the picture's corners), degrees. */
+function halfAngleDeg(): number {
+  const t = Math.tan(THREE.MathUtils.degToRad(camera.fov / 2));
+  return Math.min(90, THREE.MathUtils.radToDeg(Math.atan(t * Math.hypot(1, camera.aspect))));
+}
+
 function sendView(force = false): void {
-  if (!socket || socket.readyState !== WebSocket.OPEN) return;
+  if (!socketOpen) return;
   const x = camera.position.x;
   const z = camera.position.z;
   const size = 64 * cellM;
   // The chunk rings are centred on the camera in 3D: climbing a LOD-0 chunk (32 cells) is a new view.
   const cell = `${Math.floor(x / size)},${Math.floor(z / size)},${Math.floor(camera.position.y / (32 * cellM))}`;
-  if (!force && cell === lastCell) return;
+  // The Ptex pages follow the view cone: turning the camera is a new view too.
+  const forward = camera.getWorldDirection(new THREE.Vector3());
+  const turned = ptexOn && forward.angleTo(lastForward) > PTEX_TURN;
+  if (!force && cell === lastCell && !turned) return;
   const now = performance.now();
   if (!force && now - lastSent < 250) {
     return; // retried next frame
@@ -428,54 +496,70 @@ function sendView(force = false): void {
   wanted = selectView(x, z, rings, cellM);
   state.viewTiles = wanted.size;
   const y = camera.position.y;
-  socket.send(JSON.stringify({ type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings }));
+  lastForward.copy(forward);
+  const view: Record<string, unknown> = { type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings };
+  if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M };
+  send(view);
+}
+
+/** Sends a message on the stream (through the worker, which holds the socket). */
+function send(message: object): void {
+  stream.postMessage({ op: "send", text: JSON.stringify(message) } satisfies ToWorker);
 }
 
 function connect(): void {
-  const ws = new WebSocket(streamUrl());
-  ws.binaryType = "arraybuffer";
-  socket = ws;
-  ws.onopen = () => {
-    lastCell = "";
-    owed = 0;
-    sendView(true);
-    ws.send(JSON.stringify({ type: "credit", frames: CREDIT_WINDOW }));
-  };
-  // Every message goes through the decoding worker, which answers in order (./decode.worker.ts).
-  ws.onmessage = (ev) => {
-    if (typeof ev.data === "string") decoder.postMessage(ev.data);
-    else decoder.postMessage(ev.data, [ev.data as ArrayBuffer]);
-  };
-  ws.onclose = (ev) => {
-    if (socket !== ws) return;
-    state.inFlight = 0;
-    // 1008 (no credit, too slow), 1009 (message too big), 1003 (unacceptable data): the server
-    // closed on purpose and says why; reconnecting would end the same way.
-    if (ev.code === 1008 || ev.code === 1009 || ev.code === 1003) {
-      stop(`stream closed by the server (${ev.code}): ${ev.reason || "no reason given"}`);
-      return;
-    }
-    void refusal().then((why) => {
-      if (why) {
-        stop(why);
-        return;
-      }
-      showError(`stream closed (${ev.code}${ev.reason ? ` ${ev.reason}` : ""}); reconnecting in 3 s`);
-      state.reconnects++;
-      setTimeout(connect, 3000);
-    });
-  };
+  socketOpen = false;
+  stream.postMessage({ op: "connect", url: streamUrl() } satisfies ToWorker);
 }
 
-// Decoding off the main thread: frames are decoded in a worker; meshes are built here from the
-// typed arrays it transfers back.
-const decoder = new Worker(new URL("./decode.worker.ts", import.meta.url), { type: "module" });
-decoder.onmessage = (ev: MessageEvent<Decoded>) => onDecoded(ev.data);
-decoder.onerror = (e) => showError(`decoding worker: ${e.message}`);
+function onOpen(): void {
+  socketOpen = true;
+  lastCell = "";
+  owed = 0;
+  // A new session sends every page afresh, in slots of its own.
+  ptex.clear();
+  sendView(true);
+  send({ type: "credit", frames: CREDIT_WINDOW });
+}
+
+function onClose(code: number, reason: string): void {
+  socketOpen = false;
+  state.inFlight = 0;
+  // 1008 (no credit, too slow), 1009 (message too big), 1003 (unacceptable data): the server
+  // closed on purpose and says why; reconnecting would end the same way.
+  if (code === 1008 || code === 1009 || code === 1003) {
+    stop(`stream closed by the server (${code}): ${reason || "no reason given"}`);
+    return;
+  }
+  void refusal().then((why) => {
+    if (why) {
+      stop(why);
+      return;
+    }
+    showError(`stream closed (${code}${reason ? ` ${reason}` : ""}); reconnecting in 3 s`);
+    state.reconnects++;
+    setTimeout(connect, 3000);
+  });
+}
+
+// The socket and the decoding live in a worker: every message comes back from it in order, frames
+// decoded (meshes are built here from the typed arrays it transfers), and the socket is read
+// there even while a picture is being drawn here.
+const stream = new Worker(new URL("./decode.worker.ts", import.meta.url), { type: "module" });
+stream.onmessage = (ev: MessageEvent<Decoded>) => onDecoded(ev.data);
+stream.onerror = (e) => showError(`stream worker: ${e.message}`);
 
 function onDecoded(m: Decoded): void {
   if (m.type === "text") {
     onControl(JSON.parse(m.text));
+    return;
+  }
+  if (m.type === "open") {
+    onOpen();
+    return;
+  }
+  if (m.type === "closed") {
+    onClose(m.code, m.reason);
     return;
   }
   // Every binary frame spent a credit: give it back once the frame is handled.
@@ -488,7 +572,15 @@ function onDecoded(m: Decoded): void {
       state.inFlight = Math.max(0, state.inFlight - 1);
       state.chunks++;
       const key = chunkKey(m.lod, m.x, m.y, m.z);
-      if (wantedChunks.has(key)) state.heldChunks = chunks.put(key, m.chunk);
+      if (wantedChunks.has(key)) setHeldChunks(chunks.put(key, m.chunk));
+      return;
+    }
+    case "ptex": {
+      // Not counted in flight: the view reply's `sending` counts tiles and chunks only.
+      state.ptexFrames++;
+      state.ptexPages += m.pages.count;
+      ptex.put(m.pages, (tile) => wanted.has(tile));
+      updatePtexStats();
       return;
     }
     case "tile": {
@@ -500,8 +592,15 @@ function onDecoded(m: Decoded): void {
       return;
     }
     default:
-      return; // a kind this viewer does not draw (Ptex pages, kind 3)
+      return; // a kind this viewer does not draw
   }
+}
+
+function updatePtexStats(): void {
+  const s = ptex.stats();
+  state.ptexApplied = ptex.applied;
+  state.ptexFaces = s.faces;
+  state.ptexDetail = s.detail;
 }
 
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
@@ -517,7 +616,8 @@ function onControl(m: any): void {
       state.idle = false;
       pruneToView();
       wantedChunks = new Set((m.chunks ?? []).map(addressKey));
-      state.heldChunks = chunks.keep(wantedChunks);
+      setHeldChunks(chunks.keep(wantedChunks));
+      updatePtexStats();
       break;
     case "idle":
       state.idle = true;
@@ -531,8 +631,13 @@ function onControl(m: any): void {
       state.inFlight += m.tiles.length + (m.chunks ?? []).length;
       for (const a of m.dropped ?? []) {
         wantedChunks.delete(addressKey(a));
-        state.heldChunks = chunks.remove(addressKey(a));
+        setHeldChunks(chunks.remove(addressKey(a)));
       }
+      break;
+    case "ptex":
+      // The session's page budget; the faces listed left their detail level (their slots are free).
+      ptex.toVista(m.to_vista ?? []);
+      updatePtexStats();
       break;
     case "ack":
       onAck(m.id, m.version);
@@ -627,14 +732,14 @@ function setTool(tool: Tool | ""): void {
 }
 
 function sendEdit(patch: object[], add?: string): void {
-  if (!socket || socket.readyState !== WebSocket.OPEN) {
+  if (!socketOpen) {
     showError("cannot edit: the stream is not connected");
     return;
   }
   const id = `e${++editSeq}`;
   pending.set(id, { add });
   state.pendingEdits = pending.size;
-  socket.send(JSON.stringify({ type: "edit", id, patch }));
+  send({ type: "edit", id, patch });
   setStatus(`sent ${add ?? "undo"}…`);
 }
 
@@ -820,7 +925,8 @@ function frame(now: number): void {
   followGround();
   controls.update();
   keepAboveGround();
-  sendView(false); // throttled: only when the camera crossed a LOD-0 tile
+  sendView(false); // throttled: only when the camera crossed a LOD-0 tile or turned
+  refreshHidden();
   renderer.render(scene, camera);
   state.frames++;
   state.flySpeed = flySpeed();
@@ -845,6 +951,7 @@ function frame(now: number): void {
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · chunks ${state.heldChunks} · v${state.version}`,
+      ptexOn ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · ${state.ptexFrames} frames` : "ptex off (?ptex=0)",
       `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
       `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–4: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");

@@ -55,17 +55,48 @@ function indices(size: number): Uint16Array {
   return arr;
 }
 
-/** The triangles of `idx` that touch no vertex a volume chunk overrides (`marks[v] === 1`); the
- * chunks draw the surface there. Skirt vertices (past the marks) are never hidden. */
-function visible(idx: Uint16Array, marks: Uint8Array): Uint16Array {
-  if (!marks.some((m) => m === 1)) return idx;
-  const out: number[] = [];
-  const hidden = (v: number) => v < marks.length && marks[v] === 1;
+/** Whether a volume chunk the viewer holds gives the surface at world (x, y, z), metres. */
+export type Covered = (x: number, y: number, z: number) => boolean;
+
+/** Whether the server marks any vertex of `tile` as overridden by a volume chunk. */
+export function hasMarks(tile: Tile): boolean {
+  return tile.volumeOverride.some((m) => m === 1);
+}
+
+/** Writes to `out` the triangles of `idx` that touch no vertex a held volume chunk overrides and
+ * returns their index count. A vertex is hidden when the server marks it (`volumeOverride[v] ===
+ * 1`) and a chunk the viewer holds covers it: the chunk draws the surface there. A marked vertex
+ * where the viewer holds no chunk (outside its chunk rings, or before the chunk arrives) stays
+ * drawn, or the terrain would show a hole. Skirt vertices (past the marks) are never hidden. */
+function visible(idx: Uint16Array, tile: Tile, covered: Covered, out: Uint16Array): number {
+  const marks = tile.volumeOverride;
+  const hide = new Uint8Array(marks.length);
+  for (let v = 0; v < marks.length; v++) {
+    if (marks[v] !== 1) continue;
+    const i = v % tile.size;
+    const j = (v - i) / tile.size;
+    hide[v] = covered(tile.originX + i * tile.spacing, tile.heights[v], tile.originZ + j * tile.spacing) ? 1 : 0;
+  }
+  const hidden = (v: number) => v < hide.length && hide[v] === 1;
+  let n = 0;
   for (let t = 0; t < idx.length; t += 3) {
     if (hidden(idx[t]) || hidden(idx[t + 1]) || hidden(idx[t + 2])) continue;
-    out.push(idx[t], idx[t + 1], idx[t + 2]);
+    out[n++] = idx[t];
+    out[n++] = idx[t + 1];
+    out[n++] = idx[t + 2];
   }
-  return new Uint16Array(out);
+  return n;
+}
+
+/** Hides again the triangles of a tile mesh with marked vertices that the held chunks cover (call
+ * when chunks arrive or are freed); the index keeps its buffer and the draw range shrinks. */
+export function updateHidden(mesh: THREE.Mesh, tile: Tile, covered: Covered): void {
+  const geo = mesh.geometry;
+  const index = geo.getIndex();
+  if (!index) return;
+  const count = visible(indices(tile.size), tile, covered, index.array as Uint16Array);
+  index.needsUpdate = true;
+  geo.setDrawRange(0, count);
 }
 
 /** Edge `e` (n, e, s, w) position `t` as a surface vertex index. */
@@ -84,7 +115,10 @@ function edgeVertex(e: number, t: number, size: number): number {
 }
 
 const terrainMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
-export function buildMesh(tile: Tile): THREE.Mesh {
+
+/** The mesh of `tile`, drawn with `material` (the shared vertex-colour material by default), its
+ * marked vertices hidden where `covered` says a held chunk draws the surface. */
+export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material = terrainMaterial): THREE.Mesh {
   const { size, heights, normals, weights, materials, biomeCount: k } = tile;
   const n = size * size;
   const total = n + 4 * size;
@@ -131,13 +165,19 @@ export function buildMesh(tile: Tile): THREE.Mesh {
     }
   }
   const geo = new THREE.BufferGeometry();
-  geo.setIndex(new THREE.BufferAttribute(visible(indices(size), tile.volumeOverride), 1));
+  const all = indices(size);
+  const index = new Uint16Array(all.length);
+  geo.setIndex(new THREE.BufferAttribute(index, 1));
+  let count = all.length;
+  if (hasMarks(tile)) count = visible(all, tile, covered, index);
+  else index.set(all);
+  geo.setDrawRange(0, count);
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
-  const mesh = new THREE.Mesh(geo, terrainMaterial);
+  const mesh = new THREE.Mesh(geo, material);
   mesh.position.set(tile.originX, 0, tile.originZ);
   mesh.matrixAutoUpdate = false;
   mesh.updateMatrix();
@@ -147,6 +187,7 @@ export function buildMesh(tile: Tile): THREE.Mesh {
 
 export function disposeMesh(mesh: THREE.Mesh): void {
   mesh.geometry.dispose();
+  if (mesh.material !== terrainMaterial) (mesh.material as THREE.Material).dispose();
   for (const child of mesh.children) {
     if (child instanceof THREE.Mesh) child.geometry.dispose();
   }
