@@ -233,17 +233,16 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
         rn(a * b),
     );
     let ls = array<f32, 4>(node_lake(i, k), node_lake(i + 1, k), node_lake(i, k + 1), node_lake(i + 1, k + 1));
+    // The weights are at least 0, so no lake corner (or none with weight) leaves 0.
     var weight = 0.0;
     var sum = 0.0;
-    var found = false;
     for (var c = 0u; c < 4u; c++) {
         if (ls[c] > LAKE_NONE) {
             weight = weight + ws[c];
             sum = sum + rn(ws[c] * ls[c]);
-            found = true;
         }
     }
-    if (!found || weight <= 0.0) {
+    if (weight <= 0.0) {
         return h;
     }
     let level = div_rn(sum, weight);

@@ -83,9 +83,8 @@ pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Ti
             .filter(|&&v| shore(v))
             .step_by(3)
             .take(12)
-            .chain(lake.iter().step_by(7).take(8))
-            .map(|&v| (v, ()));
-        for (v, _) in wet {
+            .chain(lake.iter().step_by(7).take(8));
+        for &v in wet {
             let wx = coarse.origin_x_m() + (v % 65) as f64 * s;
             let wz = coarse.origin_z_m() + (v / 65) as f64 * s;
             let tile = synthesize(plan, key_at(plan, lod, wx, wz));

@@ -735,21 +735,12 @@ impl RiverJob {
         if self.lakes.is_empty() {
             return None;
         }
-        let i = ((x / self.spacing_m) - 0.5).floor() as i64 - self.li0;
-        let k = ((z / self.spacing_m) - 0.5).floor() as i64 - self.lk0;
-        let rows = self.lakes.len() / self.lakes_w.max(1);
-        let mut best: Option<f32> = None;
-        for (di, dk) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            let (a, b) = (i + di, k + dk);
-            if a < 0 || b < 0 || a as usize >= self.lakes_w || b as usize >= rows {
-                continue;
-            }
-            let l = self.lakes[b as usize * self.lakes_w + a as usize];
-            if !l.is_nan() {
-                best = Some(best.map_or(l, |o| o.max(l)));
-            }
-        }
-        best
+        let i = ((x / self.spacing_m) - 0.5).floor() as i64;
+        let k = ((z / self.spacing_m) - 0.5).floor() as i64;
+        [(0, 0), (1, 0), (0, 1), (1, 1)]
+            .into_iter()
+            .filter_map(|(di, dk)| self.node_lake(i + di, k + dk))
+            .reduce(f32::max)
     }
 }
 

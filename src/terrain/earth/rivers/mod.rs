@@ -59,11 +59,13 @@
 //! memoised in process-wide caches (`moka`, bounded in bytes, keyed by the world's fingerprint):
 //! the cache changes the time, never the bytes.
 //!
-//! LODs: the carve runs at LODs `0..=MAX_CARVE_LOD` (spacing up to half a node spacing by
-//! default); coarser tiles skip it, and their LOD bound grows by [`CARVE_MAX_M`], the most the
-//! carve may remove, and in worlds with shores by [`SHORE_MAX_M`], the most the shores change. (Finer LODs carve with the same pieces, and a sample's carved height moves
-//! by no more than its uncarved height does — each profile's slope in `h` lies in [−¼, 1], and
-//! the minimum over pieces keeps that — so their bound stands.)
+//! LODs: the carve (and the lake shores before it) runs at LODs `0..=MAX_CARVE_LOD` (spacing up
+//! to half a node spacing by default); coarser tiles skip it, and their LOD bound grows by
+//! [`CARVE_MAX_M`], the most the carve may remove, and in worlds with shores by
+//! [`SHORE_MAX_M`], the most the shores change. (Finer LODs carve with the same pieces, and a
+//! sample's carved height moves by no more than its uncarved height does — each profile's slope
+//! in `h` lies in [−¼, 1], the shores' in [0, 1], and the minimum over pieces keeps that — so
+//! their bound stands.)
 
 mod carve;
 mod lanes;

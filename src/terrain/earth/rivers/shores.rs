@@ -84,7 +84,7 @@ pub struct LakeField {
 
 impl RiverJob {
     /// The level of node `(i, k)` of the window (absolute lattice indices), if it holds a lake.
-    fn node_lake(&self, i: i64, k: i64) -> Option<f32> {
+    pub(super) fn node_lake(&self, i: i64, k: i64) -> Option<f32> {
         let rows = self.lakes.len() / self.lakes_w.max(1);
         let (a, b) = (i - self.li0, k - self.lk0);
         if a < 0 || b < 0 || a as usize >= self.lakes_w || b as usize >= rows {
@@ -113,16 +113,15 @@ impl RiverJob {
             (i, k + 1, (1.0 - a) * b),
             (i + 1, k + 1, a * b),
         ];
+        // The weights are at least 0, so no lake corner (or none with weight) leaves 0.
         let (mut weight, mut sum) = (0.0f32, 0.0f32);
-        let mut any = false;
         for (ci, ck, w) in corners {
             if let Some(l) = self.node_lake(ci, ck) {
                 weight += w;
                 sum += w * l;
-                any = true;
             }
         }
-        if !any || weight <= 0.0 {
+        if weight <= 0.0 {
             return None;
         }
         let level = sum / weight;

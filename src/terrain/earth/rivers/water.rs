@@ -45,8 +45,9 @@ impl RiverJob {
                 })
                 .collect()
         };
-        // No lake around (an empty window): no node is read.
-        let (lake_cols, lake_rows) = if self.lakes.is_empty() {
+        // No lake around (an empty window), or shaped shores (read through `shore_level`): no
+        // node is read here.
+        let (lake_cols, lake_rows) = if self.lakes.is_empty() || self.shores {
             (Vec::new(), Vec::new())
         } else {
             (
