@@ -28,6 +28,13 @@
 //! reader's call, helped by its relief); closed depressions deeper than 2 m ≤ 5 % of the land;
 //! anisotropy ≤ 1.25; biome-border ratio ≤ 1.5 at every LOD 0–8; LOD-consistency ratio ≤ 1.
 //!
+//! Anisotropy is printed per area and **world-wide** ([`pooled_anisotropy`]): the issue asks
+//! that "the gradient directions of a large area are isotropic" (no lattice alignment). One
+//! area's directions carry its regional tilt, as real ones do (the Jacksboro DEM reads 1.26 at
+//! 92.5 m and 1.65 at 512 m), so the target is judged on the counts pooled over 64 areas spread
+//! over 1,050 km, where only a direction the generator prefers everywhere survives (the
+//! `classic` world's lattice shows there: its axes outnumber its diagonals about 2 : 1 at 512 m).
+//!
 //! Worlds: `WorldParams::default()` (the world of bare seeds) first, then
 //! `WorldParams::classic()` as its peer; `STRATA_BENCH_REALISM_WORLD=default|classic|both`
 //! (default `both`). Seed: `STRATA_BENCH_REALISM_SEED` (default 42, the README's viewer seed).
@@ -388,7 +395,6 @@ fn run_world(
                 in_range(f.slopes.p95_deg, TARGET_SLOPE_P95_DEG),
             );
             let dep_ok = f.depressions.fraction <= TARGET_DEPRESSION_FRACTION;
-            let aniso_ok = f.anisotropy.ratio <= TARGET_ANISOTROPY;
             let border_ratio = border.ratio();
             let border_ok = border_ratio.map(|r| r <= TARGET_BORDER_RATIO);
             let mut v = json!({"bench":"realism","world":which,"seed":seed,"area":area.name,
@@ -398,7 +404,7 @@ fn run_world(
                 "border_mean_abs_laplacian_per_m":border.border_sum / border.border_cells.max(1) as f64,
                 "other_mean_abs_laplacian_per_m":border.other_sum / border.other_cells.max(1) as f64,
                 "peer":peer.map(|p| p.label.clone()),
-                "meets_depression_target":dep_ok,"meets_anisotropy_target":aniso_ok});
+                "meets_depression_target":dep_ok});
             figures_json(&f, &mut v);
             lod_json(&lodc, &mut v);
             if mountains_64 {
@@ -441,7 +447,7 @@ fn run_world(
                         format!("20–40 (mountains) {}", check(f.slopes.p95_deg, slope_ok.1))
                     }
                     2 => format!("≤ 5 {}", check(f.depressions.fraction, dep_ok)),
-                    8 => format!("≤ 1.25 {}", check(f.anisotropy.ratio, aniso_ok)),
+                    8 => "(≤ 1.25 judged world-wide, below)".into(),
                     _ => String::new(),
                 };
                 text += &format!("\n    {label:<LABEL$}{ours:>COL$}{theirs:>COL$}   {target}");
@@ -465,6 +471,8 @@ fn run_world(
             emit(args, v, text);
         }
     }
+
+    pooled_anisotropy(args, which, &plan, seed, sea);
 
     // Every LOD 0–8: the biome-border transect (border.rs), the worst LOD-consistency ratio.
     let transect = border::find_transect(&plan);
@@ -552,6 +560,70 @@ fn run_world(
         ),
     );
     Ok(())
+}
+
+/// Centres of the areas pooled for the world-wide anisotropy, metres: an 8 × 8 grid 150 km
+/// apart, from −525 to 525 km on each axis (16 areas left regional tilts that did not cancel at
+/// 64 m: 1.56).
+fn pooled_centres() -> Vec<(f64, f64)> {
+    let at: Vec<f64> = (0..8).map(|i| -525e3 + 150e3 * i as f64).collect();
+    at.iter()
+        .flat_map(|&z| at.iter().map(move |&x| (x, z)))
+        .collect()
+}
+
+/// The world-wide gradient-direction anisotropy at 64 and 512 m: the direction counts of the
+/// 64 areas of [`pooled_centres`] (8 × 8 tiles each) summed, then max ÷ min. One area's
+/// directions carry its regional tilt (a range's flank, a plain falling to the coast: the real
+/// DEMs' areas read 1.26 at 92.5 m and 1.65 at 512 m); pooled over areas whose tilts point every
+/// way, what is left is a direction the generator itself prefers, such as a lattice's axes.
+fn pooled_anisotropy(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, sea: f64) {
+    for lod in [6u32, 9] {
+        let n = AREA_TILES;
+        let mut counts = [0u64; 8];
+        let centres = pooled_centres();
+        for &(x, z) in &centres {
+            let s = sample(
+                plan,
+                lod,
+                first_tile(plan, lod, x, n),
+                first_tile(plan, lod, z, n),
+                n,
+                n,
+            );
+            let a = metrics::anisotropy(&s.surface(), sea);
+            for (c, k) in counts.iter_mut().zip(a.counts) {
+                *c += k;
+            }
+        }
+        let (max, min) = (
+            *counts.iter().max().unwrap_or(&0) as f64,
+            *counts.iter().min().unwrap_or(&0) as f64,
+        );
+        let ratio = if max == 0.0 { f64::NAN } else { max / min };
+        let ok = ratio <= TARGET_ANISOTROPY;
+        let spacing = plan.lods[lod as usize].spacing_m as f64;
+        emit(
+            args,
+            json!({"bench":"realism","world":which,"seed":seed,"figure":"pooled_anisotropy","lod":lod,
+                   "spacing_m":spacing,"areas":centres.len(),"area_tiles":n,
+                   "aspect_counts_e_se_s_sw_w_nw_n_ne":counts,"anisotropy_ratio":ratio,
+                   "meets_anisotropy_target":ok}),
+            format!(
+                "\n  world-wide gradient-direction anisotropy at {} (LOD {lod}), {} areas of {n}×{n} tiles 150 km apart over ±525 km: {} ({} {}); directions E SE S SW W NW N NE ÷ mean: {}",
+                spacing_text(spacing),
+                centres.len(),
+                num(ratio, 2),
+                "≤ 1.25",
+                mark(ok),
+                counts
+                    .iter()
+                    .map(|&c| format!("{:.2}", c as f64 * 8.0 / counts.iter().sum::<u64>().max(1) as f64))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            ),
+        );
+    }
 }
 
 /// Runs the benchmark.

@@ -469,8 +469,19 @@ impl Network<'_> {
                 lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
             }
         }
-        // No lake around: an empty window, so `lake_level` answers at once.
-        if lakes.iter().all(|l| l.is_nan()) {
+        // No lake that a sample of the rectangle can read (the four nodes around it, after the
+        // shores' warp of less than half a spacing): an empty window, so `lake_level` and
+        // `lake_field` answer at once.
+        let reach = |i: i64, k: i64| {
+            let (ri0, ri1) = ((x0 / s - 1.0).floor() as i64, (x1 / s).floor() as i64 + 1);
+            let (rk0, rk1) = ((z0 / s - 1.0).floor() as i64, (z1 / s).floor() as i64 + 1);
+            (ri0..=ri1).contains(&i) && (rk0..=rk1).contains(&k)
+        };
+        let readable = (lk0..=lk1)
+            .flat_map(|k| (li0..=li1).map(move |i| (i, k)))
+            .zip(&lakes)
+            .any(|((i, k), l)| !l.is_nan() && reach(i, k));
+        if !readable {
             lakes.clear();
         }
         RiverJob {

@@ -66,6 +66,10 @@ pub const SHORE_WARP: f32 = 0.25;
 /// Wavelength of the warp, in node spacings.
 pub const SHORE_WARP_WAVE: f32 = 2.5;
 
+// `RiverJob::lake_field` and `Network::job` skip lakes farther than half a spacing beyond a
+// sample's cell: the warp must stay below that.
+const _: () = assert!(SHORE_WARP * SHORE_NOISE_CLAMP < 0.5);
+
 /// Scale of the first octave's clamped value: `SHORE_NOISE·SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP`.
 pub const SHORE_N1: f32 = SHORE_NOISE * SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP;
 /// Scale of the second octave's clamped value.
@@ -85,18 +89,26 @@ pub struct LakeField {
 impl RiverJob {
     /// The level of node `(i, k)` of the window (absolute lattice indices), if it holds a lake.
     pub(super) fn node_lake(&self, i: i64, k: i64) -> Option<f32> {
-        let rows = self.lakes.len() / self.lakes_w.max(1);
         let (a, b) = (i - self.li0, k - self.lk0);
-        if a < 0 || b < 0 || a as usize >= self.lakes_w || b as usize >= rows {
+        if a < 0 || b < 0 || a as usize >= self.lakes_w {
             return None;
         }
-        let l = self.lakes[b as usize * self.lakes_w + a as usize];
+        // Within a row, the index is past the end exactly when the row is below the window.
+        let l = *self.lakes.get(b as usize * self.lakes_w + a as usize)?;
         (!l.is_nan()).then_some(l)
     }
 
     /// The lake field at `(x, z)`, if a lake node around it has weight there.
     pub fn lake_field(&self, x: f32, z: f32) -> Option<LakeField> {
         if self.lakes.is_empty() {
+            return None;
+        }
+        // The warp moves the point by less than half a spacing, so no lake node among the 3 × 3
+        // that the corners can reach gives no weight: skip the noise (the same answer, sooner).
+        let (u0, v0) = (x / self.spacing_m - 0.5, z / self.spacing_m - 0.5);
+        let (i0, k0) = ((u0 - 0.5).floor() as i64, (v0 - 0.5).floor() as i64);
+        let near = (k0..k0 + 3).any(|k| (i0..i0 + 3).any(|i| self.node_lake(i, k).is_some()));
+        if !near {
             return None;
         }
         let (qx, qz) = (x * self.shore_warp_inv_m, z * self.shore_warp_inv_m);

@@ -55,6 +55,14 @@ impl RiverJob {
                 nodes(zs, self.lk0, lake_rows),
             )
         };
+        // No lake level reaches above this (a weighted mean of the window's levels, with a
+        // margin for its rounding): higher samples skip the lake field.
+        let lake_top = self
+            .lakes
+            .iter()
+            .filter(|l| !l.is_nan())
+            .fold(f32::NEG_INFINITY, |a, &l| a.max(l));
+        let lake_top = lake_top + lake_top.abs() * 1e-5 + 1e-3;
         surface.reserve(carved.len());
         kinds.reserve(carved.len());
         for (j, row) in carved.chunks(xs.len()).enumerate() {
@@ -79,7 +87,8 @@ impl RiverJob {
                     (s, k) = (sea_level_m, kind::SEA);
                 }
                 if self.shores {
-                    if let Some(l) = self.shore_level(x, z).filter(|&l| l > h && l > s) {
+                    let level = (h < lake_top).then(|| self.shore_level(x, z)).flatten();
+                    if let Some(l) = level.filter(|&l| l > h && l > s) {
                         (s, k) = (l, kind::LAKE);
                     }
                 } else if !self.lakes.is_empty() {
