@@ -1,8 +1,10 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
-// api/tile_format_v1.md), vertex colours from biome weights and materials, water as a translucent
-// sheet cut along the shoreline (see ./water.ts).
+// api/tile_format_v1.md), vertex colours from biome weights and materials, the attributes of the
+// texture splatting (./splat.ts), water as a translucent sheet cut along the shoreline (see
+// ./water.ts).
 import * as THREE from "three";
 import type { Tile } from "./frame";
+import { addSplat, splatVertex } from "./splat";
 import { setWater, waterMaterial } from "./water";
 
 // Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
@@ -15,13 +17,37 @@ const MATERIAL = [
   [0.96, 0.97, 0.99],
 ].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
-// Biomes in the default world's order: arctic, tundra, grassland, desert (tints).
-const BIOME = [
-  [0.88, 0.92, 0.97],
-  [0.52, 0.56, 0.40],
-  [0.30, 0.52, 0.20],
-  [0.88, 0.68, 0.40],
-].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
+// Biome tints by name: the classic world's arctic, tundra, grassland, desert and the earth-1
+// world's ice, tundra, taiga, temperate, steppe, desert (`/v1/info` lists a world's biomes in
+// weight order; `setBiomes`). Unknown names take the grassland tint.
+const TINTS: Record<string, number[]> = {
+  arctic: [0.88, 0.92, 0.97],
+  ice: [0.88, 0.92, 0.97],
+  tundra: [0.52, 0.56, 0.4],
+  taiga: [0.24, 0.4, 0.22],
+  grassland: [0.3, 0.52, 0.2],
+  temperate: [0.3, 0.52, 0.2],
+  steppe: [0.62, 0.6, 0.34],
+  desert: [0.88, 0.68, 0.4],
+};
+const tint = (name: string) => {
+  const [r, g, b] = TINTS[name] ?? TINTS.grassland;
+  return new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace);
+};
+// The earth-1 order until `/v1/info` says otherwise (bare seeds and new worlds are earth-1).
+let BIOME = ["ice", "tundra", "taiga", "temperate", "steppe", "desert"].map(tint);
+
+// A tile with four biomes is a classic world's (a stored world may be classic whatever the server's
+// default is).
+const CLASSIC = ["arctic", "tundra", "grassland", "desert"].map(tint);
+
+/** Tints the biomes of the tiles built from now on by the names of `/v1/info`, in weight order. */
+export function setBiomes(names: string[]): void {
+  BIOME = names.map(tint);
+}
+
+/** The biome tints of a tile with `k` biomes. */
+const tintsOf = (k: number) => (k === CLASSIC.length && BIOME.length !== k ? CLASSIC : BIOME);
 
 const indexCache = new Map<number, Uint16Array>();
 
@@ -115,6 +141,18 @@ function edgeVertex(e: number, t: number, size: number): number {
 }
 
 const terrainMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
+let splatMaterial: THREE.MeshLambertMaterial | undefined;
+
+/** The material tiles share without Ptex pages: splatted (./splat.ts) or vertex colours alone. */
+export function sharedMaterial(splat: boolean): THREE.MeshLambertMaterial {
+  if (!splat) return terrainMaterial;
+  if (!splatMaterial) {
+    splatMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
+    splatMaterial.onBeforeCompile = (shader) => addSplat(shader, waterMaterial.color);
+    splatMaterial.customProgramCacheKey = () => "strata-splat-tile";
+  }
+  return splatMaterial;
+}
 
 /** The mesh of `tile`, drawn with `material` (the shared vertex-colour material by default), its
  * marked vertices hidden where `covered` says a held chunk draws the surface. */
@@ -125,8 +163,12 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   const pos = new Float32Array(3 * total);
   const nor = new Float32Array(3 * total);
   const col = new Float32Array(3 * total);
+  const splatA = new Uint8Array(4 * total);
+  const splatB = new Uint8Array(4 * total);
+  const splatTint = new Uint8Array(4 * total);
   const c = new THREE.Color();
   const b = new THREE.Color();
+  const tints = tintsOf(k);
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {
       const v = j * size + i;
@@ -139,14 +181,16 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       b.setRGB(0, 0, 0);
       for (let bi = 0; bi < k; bi++) {
         const w = weights[v * k + bi] / 255;
-        const tint = BIOME[bi] ?? BIOME[BIOME.length - 1];
+        const tint = tints[bi] ?? tints[tints.length - 1];
         b.r += w * tint.r;
         b.g += w * tint.g;
         b.b += w * tint.b;
       }
       c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.45);
       const depth = tile.waterDepth[v];
-      if (depth > 0) c.lerp(waterMaterial.color, Math.min(depth / 60, 0.85));
+      const wet = depth > 0 ? Math.min(depth / 60, 0.85) : 0;
+      if (wet > 0) c.lerp(waterMaterial.color, wet);
+      splatVertex(v, materials[v], b, wet, splatA, splatB, splatTint);
       col[3 * v] = c.r;
       col[3 * v + 1] = c.g;
       col[3 * v + 2] = c.b;
@@ -160,6 +204,11 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
         pos[3 * d + a] = pos[3 * s + a];
         nor[3 * d + a] = nor[3 * s + a];
         col[3 * d + a] = col[3 * s + a];
+      }
+      for (let a = 0; a < 4; a++) {
+        splatA[4 * d + a] = splatA[4 * s + a];
+        splatB[4 * d + a] = splatB[4 * s + a];
+        splatTint[4 * d + a] = splatTint[4 * s + a];
       }
       pos[3 * d + 1] -= tile.skirtDepth;
     }
@@ -175,6 +224,9 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
+  geo.setAttribute("splatA", new THREE.BufferAttribute(splatA, 4, true));
+  geo.setAttribute("splatB", new THREE.BufferAttribute(splatB, 4, true));
+  geo.setAttribute("splatTint", new THREE.BufferAttribute(splatTint, 4, true));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
   const mesh = new THREE.Mesh(geo, material);
@@ -187,7 +239,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
 
 export function disposeMesh(mesh: THREE.Mesh): void {
   mesh.geometry.dispose();
-  if (mesh.material !== terrainMaterial) (mesh.material as THREE.Material).dispose();
+  if (mesh.material !== terrainMaterial && mesh.material !== splatMaterial) (mesh.material as THREE.Material).dispose();
   for (const child of mesh.children) {
     if (child instanceof THREE.Mesh) child.geometry.dispose();
   }

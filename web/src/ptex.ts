@@ -13,7 +13,8 @@
 // page at texel `1 + uv·R`: inside the border, with linear filtering, so at a face's edge it
 // blends its own edge texels with the border texels, which are the neighbour's, as the neighbour
 // does from its side; the faces meet without a seam. A face without a page keeps the vertex
-// colours. A face's best page is drawn: its detail page if it holds one, else its vista page.
+// colours, or the texture splatting of ./splat.ts when the store is given it (the page takes
+// precedence: it is the server's bake of the same materials). A face's best page is drawn: its detail page if it holds one, else its vista page.
 import * as THREE from "three";
 import type { PtexPages } from "./ptexFormat";
 import { tileKey } from "./view";
@@ -103,8 +104,13 @@ export class PtexStore {
   /** Pages written into the arrays for faces of held tiles (since the page loaded). */
   applied = 0;
 
-  constructor(maxLayers: number) {
+  /** A further patch of the tiles' shaders, applied after the pages' (the splatting), and its
+   * name in the program cache key. */
+  private readonly extra: { patch: (shader: THREE.WebGLProgramParametersWithUniforms) => void; key: string } | undefined;
+
+  constructor(maxLayers: number, extra?: { patch: (shader: THREE.WebGLProgramParametersWithUniforms) => void; key: string }) {
     this.maxLayers = Math.max(1, maxLayers);
+    this.extra = extra;
     for (let l = 0; l < LEVELS; l++) {
       this.levels.push({ ...geometry(l), layers: 0, texture: undefined, owner: new Map() });
       this.atlas[`ptexAtlas${l}`] = { value: null };
@@ -137,8 +143,11 @@ export class PtexStore {
       shader.fragmentShader = shader.fragmentShader
         .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
         .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT_PTEX}`);
+      // Inserted after `#include <color_fragment>` too, so it runs before the page replaces it.
+      this.extra?.patch(shader);
     };
-    m.customProgramCacheKey = () => "strata-ptex-tile";
+    const cacheKey = `strata-ptex-tile${this.extra ? `-${this.extra.key}` : ""}`;
+    m.customProgramCacheKey = () => cacheKey;
     return m;
   }
 
