@@ -184,8 +184,8 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
 #[test]
 fn viewer_hill_and_curve_tools_and_texture_splatting() {
     let web = browser_ready();
-    let data = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("viewer-tools-{}", std::process::id()));
+    let data =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("viewer-tools-{}", std::process::id()));
     let server = serve_viewer(&data, &web);
     let arch = arch_element().to_string();
     let out = root().join("target").join("viewer-tools");

@@ -30,7 +30,8 @@
 //    |Laplacian| of the luminance below the horizon larger by DETAIL_GAIN times at least). Then
 //    with Ptex pages (the default) with and without splatting, once every face has its page: the
 //    pages take precedence, so the pictures differ by at most PRECEDENCE_MAX.
-// Every wait is on the viewer's state, never a fixed sleep.
+// Every wait is on the viewer's state, never a fixed sleep (but for the 10 s over which the
+// splatting part reports each run's frame rate, which it does not assert).
 import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
 import { mkdirSync, writeFileSync } from "node:fs";
@@ -373,13 +374,21 @@ async function splatting() {
   ]) {
     const paged = name.startsWith("ptex") ? (s) => s.ptexFaces >= 16 * s.held && s.ptexDetail > 0 : () => true;
     const { page, consoleErrors } = await open(`http://${addr}/?${place}${query}`, paged);
+    // The frame rate over 10 s of a settled view (reported, not asserted: the machine is shared).
+    const [f0, t0] = await page.evaluate(() => [window.__strata.frames, performance.now()]);
+    await page.waitForTimeout(10_000);
+    const [f1, t1] = await page.evaluate(() => [window.__strata.frames, performance.now()]);
+    const fps = ((f1 - f0) * 1000) / (t1 - t0);
     await page.evaluate(() => document.querySelectorAll(".panel").forEach((e) => (e.style.visibility = "hidden")));
     const n = await page.evaluate(() => window.__strata.frames);
     await page.waitForFunction((k) => window.__strata.frames >= k + 2, n, { timeout: 60_000, polling: 100 });
     const s = await stateOf(page);
     const png = await page.screenshot({ path: join(outDir, `splat-${name}.png`) });
     shots[name] = { img: PNG.sync.read(png), horizon: s.horizon, held: s.held, splat: s.splat };
-    console.log(`${name}: ${s.held} tiles held, splat ${s.splat}, ${s.ptexFaces} faces paged, errors ${s.errors.join(" | ") || "none"}`);
+    console.log(
+      `${name}: ${s.held} tiles held, splat ${s.splat}, ${s.ptexFaces} faces paged, ${fps.toFixed(2)} frames/s settled, ` +
+        `errors ${s.errors.join(" | ") || "none"}`,
+    );
     if (s.errors.length) fail(`${name}: the viewer shows errors: ${s.errors.join(" | ")}`);
     if (consoleErrors.length) fail(`${name}: console errors: ${consoleErrors.join(" | ")}`);
     await page.close();

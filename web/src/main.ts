@@ -22,7 +22,6 @@ import { groundSample as sampleGround } from "./ground";
 import { CurveTool } from "./curveTool";
 import { buildMesh, disposeMesh, hasMarks, setBiomes, sharedMaterial, updateHidden } from "./mesh";
 import { addSplat } from "./splat";
-import { waterMaterial } from "./water";
 import { PtexStore } from "./ptex";
 import { RiverLayer } from "./rivers";
 import { shoreSamples, type ShoreSamples } from "./shoreline";
@@ -280,7 +279,7 @@ const held = new Map<string, Held>();
 // The Ptex pages of the stream session, in texture arrays the tiles' materials sample.
 const ptex = new PtexStore(
   gl ? (gl.getParameter(gl.MAX_ARRAY_TEXTURE_LAYERS) as number) : 256,
-  splatOn ? { patch: (shader) => addSplat(shader, waterMaterial.color), key: "splat" } : undefined,
+  splatOn ? { patch: (shader) => addSplat(shader, true), key: "splat" } : undefined,
 );
 const terrain = new THREE.Group();
 scene.add(terrain);

@@ -147,8 +147,9 @@ let splatMaterial: THREE.MeshLambertMaterial | undefined;
 export function sharedMaterial(splat: boolean): THREE.MeshLambertMaterial {
   if (!splat) return terrainMaterial;
   if (!splatMaterial) {
-    splatMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
-    splatMaterial.onBeforeCompile = (shader) => addSplat(shader, waterMaterial.color);
+    // The splat replaces the vertex colours, so they are not interpolated (./splat.ts).
+    splatMaterial = new THREE.MeshLambertMaterial({ vertexColors: false });
+    splatMaterial.onBeforeCompile = (shader) => addSplat(shader);
     splatMaterial.customProgramCacheKey = () => "strata-splat-tile";
   }
   return splatMaterial;
@@ -163,9 +164,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   const pos = new Float32Array(3 * total);
   const nor = new Float32Array(3 * total);
   const col = new Float32Array(3 * total);
-  const splatA = new Uint8Array(4 * total);
-  const splatB = new Uint8Array(4 * total);
-  const splatTint = new Uint8Array(4 * total);
+  const splat = { base: new Float32Array(3 * total), span: new Float32Array(3 * total), sel: new Uint8Array(4 * total) };
   const c = new THREE.Color();
   const b = new THREE.Color();
   const tints = tintsOf(k);
@@ -190,7 +189,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       const depth = tile.waterDepth[v];
       const wet = depth > 0 ? Math.min(depth / 60, 0.85) : 0;
       if (wet > 0) c.lerp(waterMaterial.color, wet);
-      splatVertex(v, materials[v], b, wet, splatA, splatB, splatTint);
+      splatVertex(v, materials[v], b, wet, waterMaterial.color, splat);
       col[3 * v] = c.r;
       col[3 * v + 1] = c.g;
       col[3 * v + 2] = c.b;
@@ -205,11 +204,11 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
         nor[3 * d + a] = nor[3 * s + a];
         col[3 * d + a] = col[3 * s + a];
       }
-      for (let a = 0; a < 4; a++) {
-        splatA[4 * d + a] = splatA[4 * s + a];
-        splatB[4 * d + a] = splatB[4 * s + a];
-        splatTint[4 * d + a] = splatTint[4 * s + a];
+      for (let a = 0; a < 3; a++) {
+        splat.base[3 * d + a] = splat.base[3 * s + a];
+        splat.span[3 * d + a] = splat.span[3 * s + a];
       }
+      for (let a = 0; a < 4; a++) splat.sel[4 * d + a] = splat.sel[4 * s + a];
       pos[3 * d + 1] -= tile.skirtDepth;
     }
   }
@@ -224,9 +223,9 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
-  geo.setAttribute("splatA", new THREE.BufferAttribute(splatA, 4, true));
-  geo.setAttribute("splatB", new THREE.BufferAttribute(splatB, 4, true));
-  geo.setAttribute("splatTint", new THREE.BufferAttribute(splatTint, 4, true));
+  geo.setAttribute("splatBase", new THREE.BufferAttribute(splat.base, 3));
+  geo.setAttribute("splatSpan", new THREE.BufferAttribute(splat.span, 3));
+  geo.setAttribute("splatSel", new THREE.BufferAttribute(splat.sel, 4, true));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
   const mesh = new THREE.Mesh(geo, material);

@@ -2,51 +2,41 @@
 // in the bundle (no image assets).
 //
 // Weights: a tile vertex carries its dominant ground material (api/tile_format_v1.md: 0 seabed,
-// 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow; 6 mud in chunks to come). Each vertex gets that
-// material's one-hot vector (`splatA` materials 0–3, `splatB` 4–7) and the rasteriser
-// interpolates it across the triangles, so a fragment's weights blend the materials of its
-// triangle's corners: the weights the Ptex bake gives a texel from its four control samples
-// (`src/ptex/bake.rs`, step 1).
+// 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow; 6 mud in chunks to come), a one-hot weight vector. The
+// vertex attributes are linear in it and the rasteriser interpolates them across the triangles,
+// so a fragment blends the materials of its triangle's corners by their interpolated weights: the
+// weights the Ptex bake gives a texel from its four control samples (`src/ptex/bake.rs`, step 1).
 //
-// Textures: at start-up, `makePatterns` fills a 2-layer 128² RGBA texture array with tileable
-// value-noise fBm (integer hashing, quintic fade; the same bytes on every machine): layer 0 repeats
-// every FINE_M metres, layer 1 every COARSE_M metres (each read rotated, so the repeats do not line
-// up with the world's axes), and each of their four channels is a pattern of its own frequency. A material's pattern value `t` is `½ + f·(fine − ½) + c·(coarse − ½)` of
-// its channel (materials 4–7 read the channels rotated), clamped, and its albedo `base + (tint −
-// base)·t` with the base and tint of the Ptex bake's material (`src/ptex/material.rs`,
-// `DEFAULT_GROUND`), so a face drawn before and after its Ptex page arrives keeps its palette.
-// The patterns are projected tri-planarly (weights `n⁴/Σn⁴` of the vertex normal, as the bake):
-// ground whose normal is within about 20° of vertical reads the top projection alone (two
-// texture reads a fragment), steeper ground all three (six), with explicit gradients so the
-// branches keep their mipmaps.
+// Textures: at start-up, `makePatterns` fills a 256² RGBA texture with tileable value-noise fBm
+// (integer hashing, quintic fade; the same bytes on every machine) repeating every REPEAT_M metres
+// (read rotated, so the repeats do not line up with the world's axes; mipmapped, so the finer
+// octaves fade with distance); each channel is a pattern of its own frequencies. Material m's
+// pattern value is `t = ½ + A·(P − ½)` (P its channel, m mod 4; A its amplitude), clamped, and its
+// albedo `base + (tint − base)·t` with the base and tint of the Ptex bake's material
+// (`src/ptex/material.rs`, `DEFAULT_GROUND`), so a face keeps its palette when its Ptex page
+// arrives. The patterns are projected tri-planarly (weights `n⁴/Σn⁴` of the normal, as the bake),
+// each fragment reading the plane of its largest weight (one texture read; see SPLAT_FUNCTION).
 //
-// Then the biome tint (a fifth of the albedo, where the vertex colours take 45 %) and the water are
-// blended in as the vertex colours do (`splatTint`: the biome colour and the water's share), and
-// the result replaces the vertex colour. Ptex pages, where a face has one, replace it in turn
-// (./ptex.ts applies its page after this): the page is the server's bake of the same materials, so
-// the pages take precedence and the splat is what a face without a page shows; the page has no
-// biome tint, so a face whose page arrives loses the splat's fifth of biome colour.
+// The biome tint (a fifth of the albedo, where the vertex colours take 45 %) and the water are
+// blended in as the vertex colours do, and the result replaces the vertex colour. Everything
+// linear in the weights is computed once per vertex when the mesh is built (`splatVertex`), so a
+// fragment computes one pattern value. Ptex pages, where a face has one, take
+// precedence (./ptex.ts calls the splat only for the faces without a page): the page is the
+// server's bake of the same materials; it has no biome tint, so a face whose page arrives loses
+// the splat's fifth of biome colour.
 import * as THREE from "three";
 
-/** Texels a side of each pattern layer. */
-const SIZE = 128;
-/** Metres one repeat of the fine and of the coarse layer covers. */
-const FINE_M = 16;
-const COARSE_M = 256;
-/** Lattice cells a repeat and octaves of each layer's four patterns (power-of-two cells tile). */
+/** Texels a side of the pattern texture. */
+const SIZE = 256;
+/** Metres one repeat of the pattern texture covers (a quarter metre a texel). */
+const REPEAT_M = 64;
+/** Lattice cells a repeat and octaves of the four patterns (power-of-two cells tile): features
+ * from 32 m down to half a metre, the finer ones averaged away by the mipmaps with distance. */
 const PATTERNS = [
-  [
-    [8, 4],
-    [16, 3],
-    [4, 4],
-    [8, 3],
-  ],
-  [
-    [4, 4],
-    [2, 4],
-    [8, 3],
-    [4, 3],
-  ],
+  [2, 7],
+  [4, 6],
+  [2, 6],
+  [8, 5],
 ];
 
 // The Ptex bake's ground materials (sRGB base and tint, src/ptex/material.rs DEFAULT_GROUND):
@@ -71,9 +61,11 @@ const TINT = [
   [0.22, 0.17, 0.12],
   [0.33, 0.32, 0.31],
 ];
-/** Per material, how much of the fine and of the coarse pattern its `t` takes. */
-const FINE_AMP = [1.2, 1.6, 1.8, 1.6, 1.4, 0.8, 1.2, 1.4];
-const COARSE_AMP = [1.6, 1.0, 1.6, 1.4, 2.0, 1.2, 1.4, 2.0];
+/** Per material, the pattern's amplitude in `t` (small enough that `t` seldom clamps: a clamped
+ * pattern shows hard-edged patches). */
+const AMP = [1.6, 1.4, 1.8, 1.6, 1.8, 1.0, 1.4, 1.8];
+/** The largest amplitude: `splatSel` holds amplitudes over it in bytes. */
+const AMP_MAX = 2;
 /** The biome tint's share of the albedo. */
 const BIOME_SHARE = 0.2;
 
@@ -102,39 +94,38 @@ function valueNoise(seed: number, cells: number, u: number, v: number): number {
   return top + (bottom - top) * fy;
 }
 
-/** The patterns' bytes: layer-major, row-major, RGBA. */
+/** The patterns' bytes: row-major, RGBA (pattern c in channel c). */
 export function makePatterns(): Uint8Array {
-  const data = new Uint8Array(SIZE * SIZE * 4 * PATTERNS.length);
-  PATTERNS.forEach((layer, l) => {
-    layer.forEach(([cells, octaves], c) => {
-      const seed = 1 + 4 * l + c;
-      for (let y = 0; y < SIZE; y++) {
-        for (let x = 0; x < SIZE; x++) {
-          let sum = 0;
-          let amp = 0.5;
-          let norm = 0;
-          for (let o = 0; o < octaves; o++) {
-            sum += amp * valueNoise(seed * 31 + o, cells << o, x / SIZE, y / SIZE);
-            norm += amp;
-            amp *= 0.5;
-          }
-          data[((l * SIZE + y) * SIZE + x) * 4 + c] = Math.round((255 * sum) / norm);
+  const data = new Uint8Array(SIZE * SIZE * 4);
+  PATTERNS.forEach(([cells, octaves], c) => {
+    const seed = 1 + c;
+    for (let y = 0; y < SIZE; y++) {
+      for (let x = 0; x < SIZE; x++) {
+        let sum = 0;
+        let amp = 0.5;
+        let norm = 0;
+        for (let o = 0; o < octaves; o++) {
+          sum += amp * valueNoise(seed * 31 + o, cells << o, x / SIZE, y / SIZE);
+          norm += amp;
+          amp *= 0.5;
         }
+        data[(y * SIZE + x) * 4 + c] = Math.round((255 * sum) / norm);
       }
-    });
+    }
   });
   return data;
 }
 
 const linear = (rgb: number[]) => new THREE.Color().setRGB(rgb[0], rgb[1], rgb[2], THREE.SRGBColorSpace);
-const vec4 = (a: number[], from: number) => new THREE.Vector4(a[from], a[from + 1], a[from + 2], a[from + 3]);
+const BASE_LINEAR = BASE.map(linear);
+const TINT_LINEAR = TINT.map(linear);
 
 let uniforms: Record<string, THREE.IUniform> | undefined;
 
-/** The uniforms every splatted material shares (the pattern array is made on first use). */
-function sharedUniforms(water: THREE.Color): Record<string, THREE.IUniform> {
+/** The uniforms every splatted material shares (the pattern texture is made on first use). */
+function sharedUniforms(): Record<string, THREE.IUniform> {
   if (uniforms) return uniforms;
-  const texture = new THREE.DataArrayTexture(makePatterns(), SIZE, SIZE, PATTERNS.length);
+  const texture = new THREE.DataTexture(makePatterns(), SIZE, SIZE);
   texture.format = THREE.RGBAFormat;
   texture.type = THREE.UnsignedByteType;
   texture.colorSpace = THREE.NoColorSpace;
@@ -144,122 +135,114 @@ function sharedUniforms(water: THREE.Color): Record<string, THREE.IUniform> {
   texture.minFilter = THREE.LinearMipmapLinearFilter;
   texture.generateMipmaps = true;
   texture.needsUpdate = true;
-  uniforms = {
-    splatPatterns: { value: texture },
-    splatBase: { value: BASE.map(linear) },
-    splatTintColour: { value: TINT.map(linear) },
-    splatFineA: { value: vec4(FINE_AMP, 0) },
-    splatFineB: { value: vec4(FINE_AMP, 4) },
-    splatCoarseA: { value: vec4(COARSE_AMP, 0) },
-    splatCoarseB: { value: vec4(COARSE_AMP, 4) },
-    splatWater: { value: water },
-  };
+  uniforms = { splatPatterns: { value: texture } };
   return uniforms;
 }
 
+// Per vertex (computed once, when the tile's mesh is built: `splatVertex`), everything that is
+// linear in the weights: the albedo where the pattern is 0 with the biome tint and the water
+// folded in (`splatBase`), what the pattern adds at 1 (`splatSpan`), and each pattern channel's
+// share times the material's amplitude (`splatSel`: material m reads channel m mod 4). The
+// rasteriser interpolates them, so a fragment pays for one pattern value and one multiply-add, and
+// a vertex for three copies (headless Chromium's software renderer draws every vertex of every
+// tile, a thousand per tile whatever its size on the screen).
 const VERTEX_PARS = `
-attribute vec4 splatA;
-attribute vec4 splatB;
-attribute vec4 splatTint;
-varying vec4 vSplatA;
-varying vec4 vSplatB;
-varying vec4 vSplatTint;
-varying vec3 vSplatPos;
-varying vec3 vSplatNormal;`;
+attribute vec3 splatBase;
+attribute vec3 splatSpan;
+attribute vec4 splatSel;
+varying vec3 vSplatBase;
+varying vec3 vSplatSpan;
+varying vec4 vSplatSel;`;
 
 const VERTEX = `
-  vSplatA = splatA;
-  vSplatB = splatB;
-  vSplatTint = splatTint;
-  vSplatPos = (modelMatrix * vec4(transformed, 1.0)).xyz;
-  vSplatNormal = normal;`;
+  vSplatBase = splatBase;
+  vSplatSpan = splatSpan;
+  vSplatSel = splatSel * ${AMP_MAX}.0;`;
 
 const FRAGMENT_PARS = `
-varying vec4 vSplatA;
-varying vec4 vSplatB;
-varying vec4 vSplatTint;
-varying vec3 vSplatPos;
-varying vec3 vSplatNormal;
-uniform highp sampler2DArray splatPatterns;
-uniform vec3 splatBase[8];
-uniform vec3 splatTintColour[8];
-uniform vec4 splatFineA;
-uniform vec4 splatFineB;
-uniform vec4 splatCoarseA;
-uniform vec4 splatCoarseB;
-uniform vec3 splatWater;
-// The layers are read rotated (by 37° and −23°), so neither repeats along the lattice axes.
-const mat2 SPLAT_ROT0 = mat2(0.7986, 0.6018, -0.6018, 0.7986);
-const mat2 SPLAT_ROT1 = mat2(0.9205, -0.3907, 0.3907, 0.9205);
-vec4 splatRead(vec2 q, vec2 gx, vec2 gy, float layer, float repeat) {
-  mat2 r = (layer < 0.5 ? SPLAT_ROT0 : SPLAT_ROT1) / repeat;
-  return textureGrad(splatPatterns, vec3(r * q, layer), r * gx, r * gy);
+varying vec3 vSplatBase;
+varying vec3 vSplatSpan;
+varying vec4 vSplatSel;
+uniform sampler2D splatPatterns;
+// The texture is read rotated by 37°, so its repeats do not line up with the lattice axes.
+const mat2 SPLAT_ROT = mat2(0.7986, 0.6018, -0.6018, 0.7986) / ${REPEAT_M}.0;
+// The fragment's world position from Lambert's view-space position (no varying of its own).
+vec3 strataSplatPosition() {
+  return cameraPosition + (vec4(-vViewPosition, 0.0) * viewMatrix).xyz;
 }`;
 
-// Tri-planar projections as the Ptex bake's: X reads (y, z), Y (z, x), Z (x, y).
-const FRAGMENT = `
-{
-  vec3 sn = normalize(vSplatNormal);
+// The splatted albedo of a fragment at world position `p`, given the screen derivatives of `p`
+// (taken in uniform control flow by the caller) and its world normal from Lambert's view-space
+// one. Tri-planar projection with one texture read: the fragment reads the plane of its dominant
+// tri-planar weight (`n⁴/Σn⁴`, as the Ptex bake's; X reads (y, z), Y (z, x), Z (x, y)) and the
+// pattern's contrast fades where the two largest weights come close, so the switch between planes
+// on a slope shows no seam. A branch does not save work here: the software renderer of headless
+// Chromium runs both sides of a branch its pixels disagree on, and a texture read costs about as
+// much as the rest of the fragment. Within one material this is the pattern of the module docs;
+// across a material border the pattern value is that of the interpolated channel and amplitude.
+const SPLAT_FUNCTION = `
+vec3 strataSplat(vec3 p, vec3 gx, vec3 gy) {
+  vec3 sn = inverseTransformDirection(normalize(vNormal), viewMatrix);
   vec3 a = sn * sn;
   a = a * a;
   a /= (a.x + a.y + a.z);
-  vec3 p = vSplatPos;
-  vec3 gx = dFdx(p);
-  vec3 gy = dFdy(p);
-  vec4 fine = splatRead(p.zx, gx.zx, gy.zx, 0.0, ${FINE_M}.0);
-  vec4 coarse = splatRead(p.zx, gx.zx, gy.zx, 1.0, ${COARSE_M}.0);
-  if (a.y < 0.97) {
-    fine = a.y * fine + a.x * splatRead(p.yz, gx.yz, gy.yz, 0.0, ${FINE_M}.0)
-      + a.z * splatRead(p.xy, gx.xy, gy.xy, 0.0, ${FINE_M}.0);
-    coarse = a.y * coarse + a.x * splatRead(p.yz, gx.yz, gy.yz, 1.0, ${COARSE_M}.0)
-      + a.z * splatRead(p.xy, gx.xy, gy.xy, 1.0, ${COARSE_M}.0);
-  }
-  vec4 tA = clamp(0.5 + splatFineA * (fine - 0.5) + splatCoarseA * (coarse - 0.5), 0.0, 1.0);
-  vec4 tB = clamp(0.5 + splatFineB * (fine.yzwx - 0.5) + splatCoarseB * (coarse.wxyz - 0.5), 0.0, 1.0);
-  float total = max(dot(vSplatA, vec4(1.0)) + dot(vSplatB, vec4(1.0)), 1e-4);
-  vec3 albedo = vec3(0.0);
-  for (int m = 0; m < 4; m++) {
-    albedo += vSplatA[m] * mix(splatBase[m], splatTintColour[m], tA[m]);
-    albedo += vSplatB[m] * mix(splatBase[m + 4], splatTintColour[m + 4], tB[m]);
-  }
-  albedo = mix(albedo / total, vSplatTint.rgb, ${BIOME_SHARE});
-  diffuseColor.rgb = mix(albedo, splatWater, vSplatTint.a);
+  float top = max(a.x, max(a.y, a.z));
+  float second = 1.0 - top - min(a.x, min(a.y, a.z));
+  bool ySide = a.y >= top;
+  bool xSide = !ySide && a.x >= top;
+  vec2 q = ySide ? p.zx : (xSide ? p.yz : p.xy);
+  vec2 qx = ySide ? gx.zx : (xSide ? gx.yz : gx.xy);
+  vec2 qy = ySide ? gy.zx : (xSide ? gy.yz : gy.xy);
+  float contrast = clamp((top - second) * 4.0, 0.0, 1.0);
+  vec4 pattern = textureGrad(splatPatterns, SPLAT_ROT * q, SPLAT_ROT * qx, SPLAT_ROT * qy);
+  float t = clamp(0.5 + contrast * dot(pattern - 0.5, vSplatSel), 0.0, 1.0);
+  return vSplatBase + vSplatSpan * t;
 }`;
 
-/** Adds the splatting to a Lambert shader: after the vertex colours, before anything a later
- * patch inserts after `#include <color_fragment>` (call it after such a patch, e.g. Ptex's). */
-export function addSplat(shader: THREE.WebGLProgramParametersWithUniforms, water: THREE.Color): void {
-  Object.assign(shader.uniforms, sharedUniforms(water));
+// Where no Ptex page is drawn after it: the splat replaces the vertex colours.
+const FRAGMENT = `
+  vec3 splatP = strataSplatPosition();
+  diffuseColor.rgb = strataSplat(splatP, dFdx(splatP), dFdy(splatP));`;
+
+/** Adds the splatting to a Lambert shader. Alone (`underPtex` false) the splat replaces the vertex
+ * colours after `#include <color_fragment>`; under Ptex (./ptex.ts) it only defines
+ * `STRATA_SPLAT` and `strataSplat`, which the Ptex fragment calls for faces without a page. */
+export function addSplat(shader: THREE.WebGLProgramParametersWithUniforms, underPtex = false): void {
+  Object.assign(shader.uniforms, sharedUniforms());
   shader.vertexShader = shader.vertexShader
     .replace("#include <common>", `#include <common>${VERTEX_PARS}`)
     .replace("#include <begin_vertex>", `#include <begin_vertex>${VERTEX}`);
+  // After the last declarations (Lambert's varyings are read), before main.
   shader.fragmentShader = shader.fragmentShader
-    .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
-    .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT}`);
+    .replace("#include <common>", "#include <common>\n#define STRATA_SPLAT")
+    .replace("#include <clipping_planes_pars_fragment>", `#include <clipping_planes_pars_fragment>${FRAGMENT_PARS}${SPLAT_FUNCTION}`);
+  if (!underPtex) shader.fragmentShader = shader.fragmentShader.replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT}`);
 }
 
-/** The splat attributes of vertex `v` of a tile: its material's one-hot weights (materials 0–3 in
- * `a`, 4–7 in `b`) and `tint` (the biome colour, linear, and the water's share), as bytes. */
+/** The biome tint's share of the albedo. */
+const SHARE = BIOME_SHARE;
+
+/** Writes the splat attributes of vertex `v` (module docs): `base` and `span` (linear RGB, three
+ * floats each) and `sel` (bytes: the amplitude over AMP_MAX of the channel material `material`
+ * reads), from its material, its biome colour (linear) and the water's share of its colour. */
 export function splatVertex(
   v: number,
   material: number,
   biome: THREE.Color,
   water: number,
-  a: Uint8Array,
-  b: Uint8Array,
-  tint: Uint8Array,
+  waterColour: THREE.Color,
+  out: { base: Float32Array; span: Float32Array; sel: Uint8Array },
 ): void {
-  const m = Math.min(7, material);
-  a[4 * v + 0] = m === 0 ? 255 : 0;
-  a[4 * v + 1] = m === 1 ? 255 : 0;
-  a[4 * v + 2] = m === 2 ? 255 : 0;
-  a[4 * v + 3] = m === 3 ? 255 : 0;
-  b[4 * v + 0] = m === 4 ? 255 : 0;
-  b[4 * v + 1] = m === 5 ? 255 : 0;
-  b[4 * v + 2] = m === 6 ? 255 : 0;
-  b[4 * v + 3] = m === 7 ? 255 : 0;
-  tint[4 * v + 0] = Math.round(255 * Math.min(1, biome.r));
-  tint[4 * v + 1] = Math.round(255 * Math.min(1, biome.g));
-  tint[4 * v + 2] = Math.round(255 * Math.min(1, biome.b));
-  tint[4 * v + 3] = Math.round(255 * Math.min(1, water));
+  const m = Math.min(BASE.length - 1, material);
+  const dry = 1 - water;
+  const k = (1 - SHARE) * dry;
+  const b = BASE_LINEAR[m];
+  const t = TINT_LINEAR[m];
+  out.base[3 * v] = k * b.r + dry * SHARE * biome.r + water * waterColour.r;
+  out.base[3 * v + 1] = k * b.g + dry * SHARE * biome.g + water * waterColour.g;
+  out.base[3 * v + 2] = k * b.b + dry * SHARE * biome.b + water * waterColour.b;
+  out.span[3 * v] = k * (t.r - b.r);
+  out.span[3 * v + 1] = k * (t.g - b.g);
+  out.span[3 * v + 2] = k * (t.b - b.b);
+  for (let c = 0; c < 4; c++) out.sel[4 * v + c] = c === m % 4 ? Math.round((255 * AMP[m]) / AMP_MAX) : 0;
 }
