@@ -20,7 +20,7 @@ import type { Decoded, ToWorker } from "./decoded";
 import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
 import { CurveTool } from "./curveTool";
-import { buildMesh, disposeMesh, hasMarks, setBiomes, sharedMaterial, updateHidden } from "./mesh";
+import { buildMesh, disposeMesh, hasMarks, sharedMaterial, updateHidden } from "./mesh";
 import { addSplat } from "./splat";
 import { PtexStore } from "./ptex";
 import { RiverLayer } from "./rivers";
@@ -676,10 +676,7 @@ function onControl(m: any): void {
 fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
   .then((info) => {
-    if (Array.isArray(info?.world?.biomes)) {
-      biomes = info.world.biomes;
-      setBiomes(biomes);
-    }
+    if (Array.isArray(info?.world?.biomes)) biomes = info.world.biomes;
     if (typeof info?.limits?.max_river_lod === "number") {
       const sea = info?.world?.sea_level_m;
       rivers.enable(info.limits.max_river_lod, typeof sea === "number" ? sea : undefined);

@@ -17,37 +17,13 @@ const MATERIAL = [
   [0.96, 0.97, 0.99],
 ].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
-// Biome tints by name: the classic world's arctic, tundra, grassland, desert and the earth-1
-// world's ice, tundra, taiga, temperate, steppe, desert (`/v1/info` lists a world's biomes in
-// weight order; `setBiomes`). Unknown names take the grassland tint.
-const TINTS: Record<string, number[]> = {
-  arctic: [0.88, 0.92, 0.97],
-  ice: [0.88, 0.92, 0.97],
-  tundra: [0.52, 0.56, 0.4],
-  taiga: [0.24, 0.4, 0.22],
-  grassland: [0.3, 0.52, 0.2],
-  temperate: [0.3, 0.52, 0.2],
-  steppe: [0.62, 0.6, 0.34],
-  desert: [0.88, 0.68, 0.4],
-};
-const tint = (name: string) => {
-  const [r, g, b] = TINTS[name] ?? TINTS.grassland;
-  return new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace);
-};
-// The earth-1 order until `/v1/info` says otherwise (bare seeds and new worlds are earth-1).
-let BIOME = ["ice", "tundra", "taiga", "temperate", "steppe", "desert"].map(tint);
-
-// A tile with four biomes is a classic world's (a stored world may be classic whatever the server's
-// default is).
-const CLASSIC = ["arctic", "tundra", "grassland", "desert"].map(tint);
-
-/** Tints the biomes of the tiles built from now on by the names of `/v1/info`, in weight order. */
-export function setBiomes(names: string[]): void {
-  BIOME = names.map(tint);
-}
-
-/** The biome tints of a tile with `k` biomes. */
-const tintsOf = (k: number) => (k === CLASSIC.length && BIOME.length !== k ? CLASSIC : BIOME);
+// Biomes in the default world's order: arctic, tundra, grassland, desert (tints).
+const BIOME = [
+  [0.88, 0.92, 0.97],
+  [0.52, 0.56, 0.40],
+  [0.30, 0.52, 0.20],
+  [0.88, 0.68, 0.40],
+].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
 const indexCache = new Map<number, Uint16Array>();
 
@@ -167,7 +143,6 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   const splat = { base: new Float32Array(3 * total), span: new Float32Array(3 * total), sel: new Uint8Array(4 * total) };
   const c = new THREE.Color();
   const b = new THREE.Color();
-  const tints = tintsOf(k);
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {
       const v = j * size + i;
@@ -180,7 +155,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       b.setRGB(0, 0, 0);
       for (let bi = 0; bi < k; bi++) {
         const w = weights[v * k + bi] / 255;
-        const tint = tints[bi] ?? tints[tints.length - 1];
+        const tint = BIOME[bi] ?? BIOME[BIOME.length - 1];
         b.r += w * tint.r;
         b.g += w * tint.g;
         b.b += w * tint.b;

@@ -28,15 +28,16 @@ import * as THREE from "three";
 
 /** Texels a side of the pattern texture. */
 const SIZE = 256;
-/** Metres one repeat of the pattern texture covers (a quarter metre a texel). */
-const REPEAT_M = 64;
+/** Metres one repeat of the pattern texture covers (a metre a texel): long enough that the
+ * repeats do not show as a grid from the viewer's usual distances. */
+const REPEAT_M = 256;
 /** Lattice cells a repeat and octaves of the four patterns (power-of-two cells tile): features
- * from 32 m down to half a metre, the finer ones averaged away by the mipmaps with distance. */
+ * from 128 m down to a metre, the finer ones averaged away by the mipmaps with distance. */
 const PATTERNS = [
+  [2, 8],
+  [4, 7],
   [2, 7],
-  [4, 6],
-  [2, 6],
-  [8, 5],
+  [8, 6],
 ];
 
 // The Ptex bake's ground materials (sRGB base and tint, src/ptex/material.rs DEFAULT_GROUND):
