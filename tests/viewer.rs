@@ -14,7 +14,10 @@
 //! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
 //! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0`: pages arrive and every
 //! face of the held tiles is drawn with one, and the pictures differ clearly over the terrain
-//! (`target/viewer-{ptex,ptex-off}.png`).
+//! (`target/viewer-{ptex,ptex-off}.png`). A second test runs `tests/js/tools.mjs`: the hill tool's
+//! profile read back from the tiles, the curve tool's drag of an arch's control point, and the
+//! texture splatting against the vertex colours and under the Ptex pages
+//! (`target/viewer-tools/`).
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
