@@ -14,7 +14,10 @@
 //! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
 //! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0`: pages arrive and every
 //! face of the held tiles is drawn with one, and the pictures differ clearly over the terrain
-//! (`target/viewer-{ptex,ptex-off}.png`).
+//! (`target/viewer-{ptex,ptex-off}.png`). A second test runs `tests/js/tools.mjs`: the hill tool's
+//! profile read back from the tiles, the curve tool's drag of an arch's control point, and the
+//! texture splatting against the vertex colours and under the Ptex pages
+//! (`target/viewer-tools/`).
 //!
 //! Fails, never skips, without Node.js, the npm packages (`npm ci --prefix tests/js`, installed
 //! here when missing) or `/usr/bin/chromium` (`apt-get install chromium`).
@@ -173,4 +176,28 @@ fn viewer_streams_and_draws_terrain_in_headless_chromium() {
         assert!(ok, "{name} failed:\n{out}");
     }
     assert!(shot.is_file(), "no screenshot at {}", shot.display());
+}
+
+/// Issue 19's viewer tools and shading: `tests/js/tools.mjs` drags a hill with the hill tool and
+/// reads its profile from the tiles (C² at the ring's edges, a ring beyond the region refused
+/// naming `ring_m`), drags a control point of the arch's curve with the curve tool (the scene's
+/// curve and the chunks around it change), and compares the texture splatting with the vertex
+/// colours and, with every face paged, with the Ptex pages (screenshots in
+/// `target/viewer-tools/`).
+#[test]
+fn viewer_hill_and_curve_tools_and_texture_splatting() {
+    let web = browser_ready();
+    let data =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("viewer-tools-{}", std::process::id()));
+    let server = serve_viewer(&data, &web);
+    let arch = arch_element().to_string();
+    let out = root().join("target").join("viewer-tools");
+    let (ok, text) = common::js::run_node(
+        "tools.mjs",
+        &[server.addr.as_str(), &arch, path(&out)],
+        Duration::from_secs(900),
+    );
+    drop(server);
+    let _ = std::fs::remove_dir_all(&data);
+    assert!(ok, "tools.mjs failed:\n{text}");
 }

@@ -23,6 +23,13 @@ pub fn falloff(r: f64, radius: f64) -> f64 {
     u * u * u
 }
 
+/// Perlin's smootherstep `6t⁵ − 15t⁴ + 10t³` of `t` clamped to `[0, 1]`: 0 and 1 at the ends
+/// with zero first and second derivatives there, so a profile made of it is C².
+pub fn smootherstep(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+}
+
 /// Distance from `p` to the polyline and the arc-length parameter of the closest point
 /// (`(distance, segment index, fraction along it)`).
 pub fn polyline_distance(pts: &[[f64; 2]], p: [f64; 2]) -> (f64, usize, f64) {
@@ -217,6 +224,42 @@ impl Canvas {
                 elevations[s] * (1.0 - t) + elevations[s + 1] * t
             };
             self.fix(v, e);
+        }
+    }
+
+    /// The C² ring of a hard elevation constraint: a sample at distance `r` from the polyline
+    /// with `radius < r < radius + ring` (metres) takes `h = h_p + (e − h_p)·S((radius + ring −
+    /// r)/ring)`, `h_p` its procedural height, `e` the elevation of its closest point and `S`
+    /// [`smootherstep`]; the samples beyond, up to two spacings past the ring, keep `h_p`
+    /// (`d = 0`), so the solve sees the ring's outer edge as it is. Samples inside `skip` (the
+    /// painted region's polygon) are left to the constraint.
+    pub fn elevation_ring(
+        &mut self,
+        pts: &[[f64; 2]],
+        elevations: &[f64],
+        radius: f64,
+        ring: f64,
+        skip: Option<&[[f64; 2]]>,
+    ) {
+        let reach = radius + ring + 2.0 * self.grid.spacing_m;
+        for (v, r, s, t) in self.near_polyline(pts, reach) {
+            let n = self.grid.n;
+            if r <= radius || r > reach {
+                continue;
+            }
+            if skip.is_some_and(|poly| inside_polygon(poly, self.grid.position(v % n, v / n))) {
+                continue;
+            }
+            let e = if elevations.len() == 1 {
+                elevations[0]
+            } else {
+                elevations[s] * (1.0 - t) + elevations[s + 1] * t
+            };
+            let base = f64::from(self.base[v]);
+            self.fix(
+                v,
+                base + (e - base) * smootherstep((radius + ring - r) / ring),
+            );
         }
     }
 

@@ -3,6 +3,7 @@
 //! spacing at 129 samples), and the parsing and validation of the operations.
 
 mod fitting;
+mod hill;
 mod landforms;
 mod spec;
 

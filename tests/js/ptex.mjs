@@ -2,7 +2,9 @@
 // <on.png> <off.png>
 //
 // Opens the viewer twice at the same place (seed 42 around (-12 km, 26 km), looking down at 35°
-// from 600 m): with Ptex pages (the default) and with `?ptex=0`. Each run waits on the viewer's
+// from 600 m): with Ptex pages (the default) and with `?ptex=0&splat=0`, the vertex colours alone
+// (the texture splatting of faces without a page, web/src/splat.ts, is the bake's palette: with it
+// both runs would show the same materials; tests/js/tools.mjs compares the splatting). Each run waits on the viewer's
 // state, never on fixed sleeps: the view has streamed (`idle`, nothing in flight; `idle` comes
 // after the view's pages too) and, with Ptex, every face of every held tile is drawn with a page
 // (`__strata.ptexFaces` = 16 × held tiles) and some with a detail page; then two more pictures are
@@ -44,7 +46,7 @@ const { browser, close } = await launch(W, H);
 try {
   for (const [name, query, path] of [
     ["ptex", "", onPath],
-    ["off", "&ptex=0", offPath],
+    ["off", "&ptex=0&splat=0", offPath],
   ]) {
     const page = await browser.newPage();
     const consoleErrors = [];

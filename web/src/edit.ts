@@ -2,9 +2,12 @@
 // element) around the clicked point and goes over the stream socket as a JSON Patch; undo sends
 // the inverse operation (test the element's id, remove it).
 //
-// Tools: raise / lower (an elevation constraint 60 m above / below the ground), crest (two
-// clicks: a ridge 30 m above the higher end with 30° flanks), amplify (a gradient brush that
-// doubles the slopes). Keys 1–4 pick a tool, Esc leaves edit mode, Ctrl+Z undoes.
+// Tools: raise (an elevation constraint 60 m above the ground), hill (a smooth hill 40 m above the
+// ground: the elevation constraint with a C² ring, `ring_m`, over which it blends into the ground
+// with height, slope and curvature continuous), lower (60 m below), crest (two clicks: a ridge 30 m
+// above the higher end with 30° flanks), amplify (a gradient brush that doubles the slopes). Keys
+// 1–5 pick a tool, Esc leaves edit mode, Ctrl+Z undoes. The curve tool (key 6, ./curveTool.ts)
+// drags the control points of volume regions' feature curves instead.
 
 /** A point on the ground, metres. */
 export interface GroundPoint {
@@ -13,14 +16,17 @@ export interface GroundPoint {
   z: number;
 }
 
-export type Tool = "raise" | "lower" | "crest" | "amplify";
+export type Tool = "raise" | "hill" | "lower" | "crest" | "amplify" | "curve";
 
-export const TOOLS: Tool[] = ["raise", "lower", "crest", "amplify"];
+export const TOOLS: Tool[] = ["raise", "hill", "lower", "crest", "amplify", "curve"];
 
 /** Half the side of the region a point edit occupies, metres. */
 export const POINT_REGION_M = 160;
 /** Grid samples per side of an edit's region. */
 export const EDIT_SAMPLES = 65;
+/** The hill: its top 40 m above the clicked ground, flat within 6 m of the click, and its C² ring
+ * 110 m wide beyond (the ring and two region spacings, 5 m each, stay inside the ±160 m region). */
+export const HILL = { height_m: 40, radius_m: 6, ring_m: 110 };
 
 let counter = 0;
 
@@ -36,10 +42,12 @@ export function pointRegion(tool: Tool, p: GroundPoint): object {
   const r = POINT_REGION_M;
   const bbox = { min: [round(p.x - r), round(p.z - r)], max: [round(p.x + r), round(p.z + r)] };
   const at = [round(p.x), round(p.z)];
-  const ops =
-    tool === "amplify"
-      ? [{ op: "amplify", center: at, radius_m: r * 0.8, factor: 2.0 }]
-      : [{ op: "elevation", shape: { point: at }, elevation_m: round(p.y + (tool === "raise" ? 60 : -60)), radius_m: 10 }];
+  let op: object;
+  if (tool === "amplify") op = { op: "amplify", center: at, radius_m: r * 0.8, factor: 2.0 };
+  else if (tool === "hill")
+    op = { op: "elevation", shape: { point: at }, elevation_m: round(p.y + HILL.height_m), radius_m: HILL.radius_m, ring_m: HILL.ring_m };
+  else op = { op: "elevation", shape: { point: at }, elevation_m: round(p.y + (tool === "raise" ? 60 : -60)), radius_m: 10 };
+  const ops = [op];
   return { id: newId(tool), bbox, samples: EDIT_SAMPLES, ops };
 }
 

@@ -7,7 +7,8 @@
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
 // it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by
-// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts).
+// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts), ?splat=0
+// no texture splatting (faces without a page are then drawn with the vertex colours, see ./splat.ts).
 // Without ?x=&z= the view opens on land with relief near the origin. With a world and a token the
 // edit tools are shown (see ./edit.ts). Rivers are drawn as ribbons along the server's river lines
 // (see ./rivers.ts).
@@ -18,7 +19,9 @@ import { chunkKey } from "./chunkFormat";
 import type { Decoded, ToWorker } from "./decoded";
 import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
-import { buildMesh, disposeMesh, hasMarks, updateHidden } from "./mesh";
+import { CurveTool } from "./curveTool";
+import { buildMesh, disposeMesh, hasMarks, sharedMaterial, updateHidden } from "./mesh";
+import { addSplat } from "./splat";
 import { PtexStore } from "./ptex";
 import { RiverLayer } from "./rivers";
 import { shoreSamples, type ShoreSamples } from "./shoreline";
@@ -75,6 +78,12 @@ interface StrataState {
   ptexFaces: number; // faces of the view's tiles drawn with a page
   ptexDetail: number; // of those, faces drawn with a detail page (16² or finer)
   hiddenTiles: number; // held tiles with vertices hidden under held volume chunks
+  splat: boolean; // whether the tiles are drawn with texture splatting (?splat=0 turns it off)
+  curveHandles: number; // control-point handles the curve tool shows
+  curveEdits: number; // curve edits the server accepted
+  /** The curve tool's handles on the screen, CSS pixels (tests aim the mouse with it). */
+  handlesOnScreen: () => { volume: string; curve: number; point: number; x: number; y: number; position: number[] }[];
+  invalidatedChunks: number[][]; // the chunks (lod, x, y, z) the last invalidation listed
 }
 
 declare global {
@@ -122,6 +131,11 @@ const state: StrataState = {
   ptexFaces: 0,
   ptexDetail: 0,
   hiddenTiles: 0,
+  splat: false,
+  curveHandles: 0,
+  curveEdits: 0,
+  handlesOnScreen: () => [],
+  invalidatedChunks: [],
 };
 window.__strata = state;
 
@@ -140,6 +154,9 @@ const chunkRings = (q.get("chunk_rings") ?? "2,2,2,2")
 // Ptex pages for the tiles' faces (stream protocol v2), unless ?ptex=0.
 const ptexOn = q.get("ptex") !== "0";
 state.ptex = ptexOn;
+// Texture splatting by the tiles' material weights, unless ?splat=0.
+const splatOn = q.get("splat") !== "0";
+state.splat = splatOn;
 // The view cone the Ptex pages are chosen for reaches this far, metres (the fog starts at 8 km).
 const PTEX_FAR_M = 8192;
 // A turn of the camera by more than this (radians) sends the view again: the pages follow the cone.
@@ -260,7 +277,10 @@ function fly(dt: number): void {
 // ---- tiles ----------------------------------------------------------------------------------------
 const held = new Map<string, Held>();
 // The Ptex pages of the stream session, in texture arrays the tiles' materials sample.
-const ptex = new PtexStore(gl ? (gl.getParameter(gl.MAX_ARRAY_TEXTURE_LAYERS) as number) : 256);
+const ptex = new PtexStore(
+  gl ? (gl.getParameter(gl.MAX_ARRAY_TEXTURE_LAYERS) as number) : 256,
+  splatOn ? { patch: (shader) => addSplat(shader, true), key: "splat" } : undefined,
+);
 const terrain = new THREE.Group();
 scene.add(terrain);
 let wanted = new Set<string>(); // keys of the current view (client-side selection, as the server's)
@@ -282,7 +302,7 @@ function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
   removeMesh(key);
   disposeRetiring(key);
-  const mesh = buildMesh(tile, covered, ptexOn ? ptex.material(key, tile.spacing) : undefined);
+  const mesh = buildMesh(tile, covered, ptexOn ? ptex.material(key, tile.spacing) : sharedMaterial(splatOn));
   terrain.add(mesh);
   held.set(key, { mesh, tile, version, marked: hasMarks(tile) });
   state.held = held.size;
@@ -629,6 +649,8 @@ function onControl(m: any): void {
       // Fresh frames follow; the held meshes stay until they arrive and replace them.
       state.version = m.version;
       state.inFlight += m.tiles.length + (m.chunks ?? []).length;
+      state.invalidatedChunks = m.chunks ?? [];
+      curveTool?.onVersion(m.version);
       for (const a of m.dropped ?? []) {
         wantedChunks.delete(addressKey(a));
         setHeldChunks(chunks.remove(addressKey(a)));
@@ -725,10 +747,11 @@ function setTool(tool: Tool | ""): void {
   state.tool = tool;
   crestStart = undefined;
   controls.enabled = true;
+  if (curveTool) void curveTool.show(tool === "curve").then(() => (state.curveHandles = curveTool?.count ?? 0));
   for (const b of toolsBox?.querySelectorAll("button[data-tool]") ?? []) {
     (b as HTMLButtonElement).classList.toggle("on", b.getAttribute("data-tool") === tool);
   }
-  setStatus(tool ? `${tool}: click the terrain${tool === "crest" ? " at both ends" : ""} · Esc: stop` : "");
+  if (tool !== "curve") setStatus(tool ? `${tool}: click the terrain${tool === "crest" ? " at both ends" : ""} · Esc: stop` : "");
 }
 
 function sendEdit(patch: object[], add?: string): void {
@@ -797,8 +820,51 @@ function applyTool(p: GroundPoint): void {
   sendEdit(addPatch(region), region.id);
 }
 
-if (world && token && toolsBox) {
+// The curve tool drags the control points of the world's volume regions (./curveTool.ts).
+const curveTool =
+  world && token
+    ? new CurveTool({
+        scene,
+        camera,
+        worldUrl: new URL(`v1/worlds/${encodeURIComponent(world)}`, `${location.origin}${location.pathname}`).toString(),
+        headers: { authorization: `Bearer ${token}` },
+        showError,
+        setStatus,
+      })
+    : undefined;
+state.handlesOnScreen = () => curveTool?.onScreen(window.innerWidth, window.innerHeight) ?? [];
+
+/** The pointer's position in normalised device coordinates. */
+function ndcOf(e: PointerEvent): THREE.Vector2 {
+  return new THREE.Vector2((e.clientX / window.innerWidth) * 2 - 1, -(e.clientY / window.innerHeight) * 2 + 1);
+}
+
+if (world && token && toolsBox && curveTool) {
   toolsBox.hidden = false;
+  // The curve tool's drag: a press on a handle is the tool's, not the orbit's (a capturing
+  // listener runs before the orbit controls' and stops the event there).
+  canvas.addEventListener(
+    "pointerdown",
+    (e) => {
+      if (state.tool !== "curve" || e.button !== 0) return;
+      if (!curveTool.down(ndcOf(e), e.shiftKey)) return;
+      e.stopImmediatePropagation();
+      controls.enabled = false;
+      canvas.setPointerCapture(e.pointerId);
+    },
+    { capture: true },
+  );
+  canvas.addEventListener("pointermove", (e) => {
+    if (curveTool.dragging) curveTool.move(ndcOf(e));
+  });
+  canvas.addEventListener("pointerup", () => {
+    if (!curveTool.dragging) return;
+    controls.enabled = true;
+    void curveTool.up().then(() => {
+      state.curveEdits = curveTool.commits;
+      state.curveHandles = curveTool.count;
+    });
+  });
   for (const b of toolsBox.querySelectorAll("button[data-tool]")) {
     b.addEventListener("click", () => {
       const t = b.getAttribute("data-tool") as Tool;
@@ -818,7 +884,7 @@ if (world && token && toolsBox) {
     down = { x: e.clientX, y: e.clientY, t: performance.now() };
   });
   canvas.addEventListener("pointerup", (e) => {
-    if (!state.tool || !down || e.button !== 0) return;
+    if (!state.tool || state.tool === "curve" || !down || e.button !== 0) return;
     const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
     if (moved > 5 || performance.now() - down.t > 600) return;
     const p = groundHit(e.clientX, e.clientY);
@@ -927,6 +993,7 @@ function frame(now: number): void {
   keepAboveGround();
   sendView(false); // throttled: only when the camera crossed a LOD-0 tile or turned
   refreshHidden();
+  curveTool?.update(window.innerHeight);
   renderer.render(scene, camera);
   state.frames++;
   state.flySpeed = flySpeed();
@@ -953,7 +1020,7 @@ function frame(now: number): void {
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · chunks ${state.heldChunks} · v${state.version}`,
       ptexOn ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · ${state.ptexFrames} frames` : "ptex off (?ptex=0)",
       `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
-      `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–4: edit tools · Ctrl+Z: undo" : ""}`,
+      `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–6: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");
   }
   requestAnimationFrame(frame);

@@ -1,8 +1,10 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
-// api/tile_format_v1.md), vertex colours from biome weights and materials, water as a translucent
-// sheet cut along the shoreline (see ./water.ts).
+// api/tile_format_v1.md), vertex colours from biome weights and materials, the attributes of the
+// texture splatting (./splat.ts), water as a translucent sheet cut along the shoreline (see
+// ./water.ts).
 import * as THREE from "three";
 import type { Tile } from "./frame";
+import { addSplat, splatVertex } from "./splat";
 import { setWater, waterMaterial } from "./water";
 
 // Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
@@ -115,6 +117,19 @@ function edgeVertex(e: number, t: number, size: number): number {
 }
 
 const terrainMaterial = new THREE.MeshLambertMaterial({ vertexColors: true });
+let splatMaterial: THREE.MeshLambertMaterial | undefined;
+
+/** The material tiles share without Ptex pages: splatted (./splat.ts) or vertex colours alone. */
+export function sharedMaterial(splat: boolean): THREE.MeshLambertMaterial {
+  if (!splat) return terrainMaterial;
+  if (!splatMaterial) {
+    // The splat replaces the vertex colours, so they are not interpolated (./splat.ts).
+    splatMaterial = new THREE.MeshLambertMaterial({ vertexColors: false });
+    splatMaterial.onBeforeCompile = (shader) => addSplat(shader);
+    splatMaterial.customProgramCacheKey = () => "strata-splat-tile";
+  }
+  return splatMaterial;
+}
 
 /** The mesh of `tile`, drawn with `material` (the shared vertex-colour material by default), its
  * marked vertices hidden where `covered` says a held chunk draws the surface. */
@@ -125,6 +140,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   const pos = new Float32Array(3 * total);
   const nor = new Float32Array(3 * total);
   const col = new Float32Array(3 * total);
+  const splat = { base: new Float32Array(3 * total), span: new Float32Array(3 * total), sel: new Uint8Array(4 * total) };
   const c = new THREE.Color();
   const b = new THREE.Color();
   for (let j = 0; j < size; j++) {
@@ -146,7 +162,9 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       }
       c.copy(MATERIAL[materials[v]] ?? MATERIAL[4]).lerp(b, 0.45);
       const depth = tile.waterDepth[v];
-      if (depth > 0) c.lerp(waterMaterial.color, Math.min(depth / 60, 0.85));
+      const wet = depth > 0 ? Math.min(depth / 60, 0.85) : 0;
+      if (wet > 0) c.lerp(waterMaterial.color, wet);
+      splatVertex(v, materials[v], b, wet, waterMaterial.color, splat);
       col[3 * v] = c.r;
       col[3 * v + 1] = c.g;
       col[3 * v + 2] = c.b;
@@ -161,6 +179,11 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
         nor[3 * d + a] = nor[3 * s + a];
         col[3 * d + a] = col[3 * s + a];
       }
+      for (let a = 0; a < 3; a++) {
+        splat.base[3 * d + a] = splat.base[3 * s + a];
+        splat.span[3 * d + a] = splat.span[3 * s + a];
+      }
+      for (let a = 0; a < 4; a++) splat.sel[4 * d + a] = splat.sel[4 * s + a];
       pos[3 * d + 1] -= tile.skirtDepth;
     }
   }
@@ -175,6 +198,9 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
   geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
   geo.setAttribute("color", new THREE.BufferAttribute(col, 3));
+  geo.setAttribute("splatBase", new THREE.BufferAttribute(splat.base, 3));
+  geo.setAttribute("splatSpan", new THREE.BufferAttribute(splat.span, 3));
+  geo.setAttribute("splatSel", new THREE.BufferAttribute(splat.sel, 4, true));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
   const mesh = new THREE.Mesh(geo, material);
@@ -187,7 +213,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
 
 export function disposeMesh(mesh: THREE.Mesh): void {
   mesh.geometry.dispose();
-  if (mesh.material !== terrainMaterial) (mesh.material as THREE.Material).dispose();
+  if (mesh.material !== terrainMaterial && mesh.material !== splatMaterial) (mesh.material as THREE.Material).dispose();
   for (const child of mesh.children) {
     if (child instanceof THREE.Mesh) child.geometry.dispose();
   }

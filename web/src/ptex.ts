@@ -13,7 +13,9 @@
 // page at texel `1 + uv·R`: inside the border, with linear filtering, so at a face's edge it
 // blends its own edge texels with the border texels, which are the neighbour's, as the neighbour
 // does from its side; the faces meet without a seam. A face without a page keeps the vertex
-// colours. A face's best page is drawn: its detail page if it holds one, else its vista page.
+// colours, or the texture splatting of ./splat.ts when the store is given it (the page takes
+// precedence: it is the server's bake of the same materials; the splat is evaluated only for the
+// faces without a page). A face's best page is drawn: its detail page if it holds one, else its vista page.
 import * as THREE from "three";
 import type { PtexPages } from "./ptexFormat";
 import { tileKey } from "./view";
@@ -80,6 +82,11 @@ ${sampleLevels()}`;
 // over it is what shows the water, and it must stand out from the ground it covers.
 const FRAGMENT_PTEX = `
 {
+#ifdef STRATA_SPLAT
+  vec3 splatP = strataSplatPosition();
+  vec3 splatGx = dFdx(splatP);
+  vec3 splatGy = dFdy(splatP);
+#endif
   vec2 cell = clamp(vPtexCell, 0.0, ${FACES * CELLS_PER_FACE}.0);
   vec2 f = min(floor(cell / ${CELLS_PER_FACE}.0), vec2(${FACES - 1}.0));
   vec4 page = ptexFace[int(f.y) * ${FACES} + int(f.x)];
@@ -89,6 +96,11 @@ const FRAGMENT_PTEX = `
     vec2 texel = page.zw + 1.0 + local.yx * res;
     diffuseColor.rgb = ptexAlbedo(int(page.x + 0.5), texel, page.y);
   }
+#ifdef STRATA_SPLAT
+  else {
+    diffuseColor.rgb = strataSplat(splatP, splatGx, splatGy);
+  }
+#endif
 }`;
 
 /** The pages a stream session sent, in texture arrays, and the face tables of the tiles. */
@@ -103,8 +115,13 @@ export class PtexStore {
   /** Pages written into the arrays for faces of held tiles (since the page loaded). */
   applied = 0;
 
-  constructor(maxLayers: number) {
+  /** A further patch of the tiles' shaders, applied after the pages' (the splatting), and its
+   * name in the program cache key. */
+  private readonly extra: { patch: (shader: THREE.WebGLProgramParametersWithUniforms) => void; key: string } | undefined;
+
+  constructor(maxLayers: number, extra?: { patch: (shader: THREE.WebGLProgramParametersWithUniforms) => void; key: string }) {
     this.maxLayers = Math.max(1, maxLayers);
+    this.extra = extra;
     for (let l = 0; l < LEVELS; l++) {
       this.levels.push({ ...geometry(l), layers: 0, texture: undefined, owner: new Map() });
       this.atlas[`ptexAtlas${l}`] = { value: null };
@@ -124,7 +141,8 @@ export class PtexStore {
 
   /** A material for tile `key` (vertex spacing `spacing` metres) that draws its faces' pages. */
   material(key: string, spacing: number): THREE.MeshLambertMaterial {
-    const m = new THREE.MeshLambertMaterial({ vertexColors: true });
+    // With the splatting, a face without a page is splatted: the vertex colours are not read.
+    const m = new THREE.MeshLambertMaterial({ vertexColors: !this.extra });
     const table = this.table(key);
     m.onBeforeCompile = (shader) => {
       Object.assign(shader.uniforms, this.atlas, {
@@ -137,8 +155,11 @@ export class PtexStore {
       shader.fragmentShader = shader.fragmentShader
         .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
         .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT_PTEX}`);
+      // The splatting (./splat.ts) defines what the page's else branch calls.
+      this.extra?.patch(shader);
     };
-    m.customProgramCacheKey = () => "strata-ptex-tile";
+    const cacheKey = `strata-ptex-tile${this.extra ? `-${this.extra.key}` : ""}`;
+    m.customProgramCacheKey = () => cacheKey;
     return m;
   }
 

@@ -22,6 +22,12 @@ pub enum Shape {
 
 /// Hard elevation constraint: samples within `radius_m` of the shape take `elevation_m`
 /// (a polyline may give one elevation per point in `elevations_m`, interpolated along it).
+///
+/// With `ring_m`, the constraint blends into the procedural ground over a ring of that width
+/// around it with a C² profile (height and its first and second derivatives continuous at both
+/// edges of the ring; [`crate::authoring::raster::Canvas::elevation_ring`]): the smooth hill of
+/// the viewer. Without it (documents stored before it) the samples beyond `radius_m` are free
+/// and the solve meets the constraint with a kink, as before.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Elevation {
@@ -36,11 +42,62 @@ pub struct Elevation {
     /// Samples closer than this to the shape are constrained (at least the nearest), metres.
     #[serde(default)]
     pub radius_m: f64,
+    /// Width of the C² ring beyond `radius_m` over which the elevation blends into the
+    /// procedural ground, metres (absent: no ring). At least [`MIN_RING_SAMPLES`] sample spacings
+    /// of the region, and the ring lies inside the region's bbox.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ring_m: Option<f64>,
+}
+
+/// Fewest region sample spacings a ring spans: fewer cannot resolve its second derivative.
+pub const MIN_RING_SAMPLES: f64 = 4.0;
+
+impl Elevation {
+    /// Checks `ring_m`: its width and that the ring, with the two spacings past it that keep the
+    /// procedural ground, lies inside the bbox (its edge there would be a kink).
+    fn check_ring(&self, c: &Check, ring: f64) -> Result<(), SpecError> {
+        c.radius("/ring_m", ring)?;
+        let spacing = c.spacing_m();
+        let least = MIN_RING_SAMPLES * spacing;
+        if ring < least {
+            return Err(c.refuse(
+                "/ring_m",
+                format!(
+                    "must be at least {MIN_RING_SAMPLES} sample spacings of the region ({least} m)"
+                ),
+            ));
+        }
+        let pts: &[[f64; 2]] = match &self.shape {
+            Shape::Point(p) => std::slice::from_ref(p),
+            Shape::Polyline(pts) | Shape::Region(pts) => pts,
+        };
+        let reach = self.radius_m + ring + 2.0 * spacing;
+        let s = c.spec;
+        let inside = pts.iter().all(|p| {
+            p[0] - reach >= s.min[0]
+                && p[0] + reach <= s.max[0]
+                && p[1] - reach >= s.min[1]
+                && p[1] + reach <= s.max[1]
+        });
+        if !inside {
+            return Err(c.refuse(
+                "/ring_m",
+                format!(
+                    "the ring reaches {reach} m from the shape (radius_m + ring_m + 2 sample \
+                     spacings), beyond the region's bbox"
+                ),
+            ));
+        }
+        Ok(())
+    }
 }
 
 impl Tool for Elevation {
     fn check(&self, c: &Check) -> Result<(), SpecError> {
         c.radius("/radius_m", self.radius_m)?;
+        if let Some(ring) = self.ring_m {
+            self.check_ring(c, ring)?;
+        }
         let count = match &self.shape {
             Shape::Point(p) => {
                 c.position("/shape/point", *p)?;
@@ -94,6 +151,18 @@ impl Tool for Elevation {
             Shape::Point(p) => r.canvas.elevation(&[*p], &es, self.radius_m),
             Shape::Polyline(pts) => r.canvas.elevation(pts, &es, self.radius_m),
             Shape::Region(poly) => r.canvas.elevation_region(poly, es[0], self.radius_m),
+        }
+        if let Some(ring) = self.ring_m {
+            match &self.shape {
+                Shape::Point(p) => r.canvas.elevation_ring(&[*p], &es, self.radius_m, ring, None),
+                Shape::Polyline(pts) => r.canvas.elevation_ring(pts, &es, self.radius_m, ring, None),
+                Shape::Region(poly) => {
+                    let mut outline = poly.clone();
+                    outline.push(poly[0]);
+                    r.canvas
+                        .elevation_ring(&outline, &es[..1], self.radius_m, ring, Some(poly))
+                }
+            }
         }
         Ok(())
     }
