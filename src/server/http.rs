@@ -227,7 +227,8 @@ pub(crate) fn query_param<'a>(query: Option<&'a str>, name: &str) -> Option<&'a 
 }
 
 /// `If-Match`: absent or `*` is no condition; else one version, plain or quoted (`5`, `"5"`,
-/// `W/"5"`).
+/// `W/"5"`), or the entity tag of a gzip answer (`"5-gzip"`, [`super::routes`]'
+/// `etag_per_encoding`), which a client echoing the `ETag` it was given sends back.
 pub(super) fn parse_if_match(headers: &HeaderMap) -> Result<Option<u64>, AppError> {
     let Some(v) = headers.get(header::IF_MATCH) else {
         return Ok(None);
@@ -244,10 +245,10 @@ pub(super) fn parse_if_match(headers: &HeaderMap) -> Result<Option<u64>, AppErro
         return Ok(None);
     }
     let s = s.strip_prefix("W/").unwrap_or(s);
-    let s = s
-        .strip_prefix('"')
-        .and_then(|t| t.strip_suffix('"'))
-        .unwrap_or(s);
+    let s = match s.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
+        Some(tag) => tag.strip_suffix("-gzip").unwrap_or(tag),
+        None => s,
+    };
     parse_version(s, "If-Match").map(Some).map_err(|_| bad())
 }
 
@@ -317,7 +318,18 @@ mod tests {
         assert_eq!(parse_if_match(&h("7")).expect("plain"), Some(7));
         assert_eq!(parse_if_match(&h("\"7\"")).expect("quoted"), Some(7));
         assert_eq!(parse_if_match(&h("W/\"7\"")).expect("weak"), Some(7));
-        for bad in ["0", "-1", "x", "\"7", "7, 8", "99999999999999999999"] {
+        assert_eq!(parse_if_match(&h("\"7-gzip\"")).expect("gzip tag"), Some(7));
+        for bad in [
+            "0",
+            "-1",
+            "x",
+            "\"7",
+            "7, 8",
+            "99999999999999999999",
+            "7-gzip",
+            "\"7-gzip-gzip\"",
+            "\"-gzip\"",
+        ] {
             let e = parse_if_match(&h(bad)).expect_err(bad);
             assert_eq!(e.field.as_deref(), Some("If-Match"), "{bad}");
         }
