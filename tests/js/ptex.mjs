@@ -22,6 +22,7 @@
 // the noise and a fifth of the difference seen: pages drawn on less than about a fifth of the
 // terrain in the picture, or on none, fall below it.
 import { launch } from "./chromium.mjs";
+import { meanRgbDiff } from "./images.mjs";
 import { PNG } from "pngjs";
 import { mkdirSync } from "node:fs";
 import { dirname } from "node:path";
@@ -106,16 +107,7 @@ if (shots.ptex && shots.off) {
   const a = PNG.sync.read(shots.ptex.png);
   const b = PNG.sync.read(shots.off.png);
   const top = Math.ceil(Math.max(shots.ptex.horizon, shots.off.horizon) * H) + 4;
-  let sum = 0;
-  let n = 0;
-  for (let y = top; y < H; y++) {
-    for (let x = 0; x < W; x++) {
-      const p = 4 * (y * W + x);
-      for (let c = 0; c < 3; c++) sum += Math.abs(a.data[p + c] - b.data[p + c]);
-      n += 3;
-    }
-  }
-  const diff = n ? sum / n : 0;
+  const diff = meanRgbDiff(a, b, top);
   console.log(`mean |Δ RGB| below the horizon (rows ${top}–${H - 1}): ${diff.toFixed(2)} (at least ${DIFF_MIN})`);
   if (!(diff >= DIFF_MIN)) failures.push(`the Ptex pages do not show: mean difference ${diff.toFixed(2)} < ${DIFF_MIN}`);
 }

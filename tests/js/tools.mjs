@@ -33,6 +33,7 @@
 // Every wait is on the viewer's state, never a fixed sleep (but for the 10 s over which the
 // splatting part reports each run's frame rate, which it does not assert).
 import { launch } from "./chromium.mjs";
+import { meanRgbDiff } from "./images.mjs";
 import { PNG } from "pngjs";
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -333,19 +334,6 @@ async function curve() {
   if (changed === 0) fail("curve: no chunk around the edit changed");
 }
 
-function rgbDiff(a, b, top) {
-  let sum = 0;
-  let n = 0;
-  for (let y = top; y < H; y++) {
-    for (let x = 0; x < W; x++) {
-      const p = 4 * (y * W + x);
-      for (let c = 0; c < 3; c++) sum += Math.abs(a.data[p + c] - b.data[p + c]);
-      n += 3;
-    }
-  }
-  return sum / n;
-}
-
 /** Mean |4y − neighbours| of the luminance below row `top`: how much fine detail the picture has. */
 function detail(img, top) {
   const y = (x, r) => {
@@ -398,10 +386,10 @@ async function splatting() {
   const off = shots.flat;
   if (!on.splat || off.splat) fail(`splat flags: ${on.splat}, ${off.splat}`);
   const t = top(on, off);
-  const diff = rgbDiff(on.img, off.img, t);
+  const diff = meanRgbDiff(on.img, off.img, t);
   const dOn = detail(on.img, t);
   const dOff = detail(off.img, t);
-  const paged = rgbDiff(shots["ptex-splat"].img, shots["ptex-flat"].img, top(shots["ptex-splat"], shots["ptex-flat"]));
+  const paged = meanRgbDiff(shots["ptex-splat"].img, shots["ptex-flat"].img, top(shots["ptex-splat"], shots["ptex-flat"]));
   console.log(
     `splat against vertex colours: mean |Δ RGB| ${diff.toFixed(2)} (at least ${SPLAT_MIN}); detail ${dOn.toFixed(2)} against ` +
       `${dOff.toFixed(2)} (×${(dOn / dOff).toFixed(2)}, at least ×${DETAIL_GAIN}); with every face paged ${paged.toFixed(2)} (at most ${PRECEDENCE_MAX})`,
