@@ -8,7 +8,7 @@
 // and removes at most CARVE_MAX_M.
 //
 // The river job itself (the drainage network, its pieces and their binning) is built on the CPU
-// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (seventeen f32), `bin_start` and
+// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (twenty f32), `bin_start` and
 // `bin_pieces` are the job's bins in CSR form, `lakes` the levels of its lake window, and
 // `CarveParams` is `gpu::layout::GpuCarveParams`, field for field. Before the carve, the lake
 // shores shape each height (`shore`, the twin of `RiverJob::shore`).
@@ -79,6 +79,9 @@ struct Piece {
     saz: f32,
     sbx: f32,
     sbz: f32,
+    floodplain_b: f32,
+    slope_a: f32,
+    slope_b: f32,
 }
 
 const WORKGROUP: u32 = 64u;
@@ -152,12 +155,14 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
     let w = p.wa + rn((p.wb - p.wa) * t);
     var c = h;
     if (h > w) {
-        // `f32::max` of two finite numbers: the floodplain's edge.
+        // `f32::max` of two finite numbers: the floodplain's edge, linear along the piece.
+        let floodplain = p.floodplain + rn((p.floodplain_b - p.floodplain) * t);
         var floor = p.half_width;
-        if (p.floodplain > floor) {
-            floor = p.floodplain;
+        if (floodplain > floor) {
+            floor = floodplain;
         }
-        let v = clamp_to(floor + div_rn(h - w, WALL_SLOPE) + wall, p.valley, p.reach);
+        let slope = p.slope_a + rn((p.slope_b - p.slope_a) * t);
+        let v = clamp_to(floor + div_rn(h - w, slope) + wall, p.valley, p.reach);
         if (d < v) {
             let g = smoothstep_rn(floor, v, d);
             c = w + rn((h - w) * g);

@@ -433,6 +433,9 @@ fn floodplain_piece() -> strata::terrain::earth::rivers::Piece {
         saz: 0.0,
         sbx: 0.0,
         sbz: 0.0,
+        floodplain_b: 60.0,
+        slope_a: strata::terrain::earth::rivers::WALL_SLOPE,
+        slope_b: strata::terrain::earth::rivers::WALL_SLOPE,
     }
 }
 
@@ -472,6 +475,77 @@ fn a_floodplain_valley_is_flat_to_its_edge_then_climbs_walls_and_leaves_the_land
             assert!((-0.26..=1.0001).contains(&slope), "{d} m, {h} m: {slope}");
         }
     }
+}
+
+/// `valleys: 4`: a piece's floodplain and wall slope are linear between its ends, the bound
+/// on the carve's slope in `h` holds for every mix of them, and the default world's valleys get
+/// widths and slopes across most of their ranges (not one value).
+#[test]
+fn a_varied_valley_narrows_and_steepens_along_its_piece_within_the_carve_bound() {
+    use strata::terrain::earth::rivers::{profile, FLOOR_SCALE, SLOPE_SCALE};
+    // Floodplain 60 m at the upstream end, 20 m at the downstream end; walls of slope 0.3 and
+    // 0.7 there.
+    let p = strata::terrain::earth::rivers::Piece {
+        floodplain_b: 20.0,
+        slope_a: 0.3,
+        slope_b: 0.7,
+        ..floodplain_piece()
+    };
+    // Halfway the floor reaches 40 m: flat at the water level inside, rising just beyond.
+    assert_eq!(profile(&p, 50.0, 39.5, 90.0).0, 50.0);
+    assert!(profile(&p, 50.0, 41.0, 90.0).0 > 50.0);
+    // The walls end where they have climbed the height above the water at the local slope (or
+    // at the piece's narrowest valley, 120 m, whichever is wider).
+    for (x, fp, slope) in [(0.0f32, 60.0f32, 0.3f32), (100.0, 20.0, 0.7)] {
+        let h = 90.0f32;
+        let edge = (fp + (h - 50.0) / slope).max(p.valley);
+        assert!(
+            profile(&p, x, edge - 2.0, h).0 < h,
+            "inside the wall at x {x}"
+        );
+        let beyond = profile(&p, x, edge + 0.5, h).0;
+        assert_eq!(beyond.to_bits(), h.to_bits(), "beyond the wall at x {x}");
+    }
+    // The carved height moves by no more than the ground does, anywhere along the piece.
+    for x in [0.0f32, 25.0, 50.0, 75.0, 100.0] {
+        for d in [21.0f32, 45.0, 61.0, 80.0, 120.0, 200.0, 400.0] {
+            for h in [52.0f32, 60.0, 100.0, 200.0, 400.0] {
+                let (a, b) = (profile(&p, x, d, h).0, profile(&p, x, d, h + 0.5).0);
+                let slope = (b - a) / 0.5;
+                assert!(
+                    (-0.26..=1.0001).contains(&slope),
+                    "{x}, {d} m, {h} m: {slope}"
+                );
+            }
+        }
+    }
+    // The default world's valley shapes along a line of 2,000 points 150 m apart.
+    let plan = plan();
+    let (_, rivers) = parts(&plan);
+    let (mut f_lo, mut f_hi, mut s_lo, mut s_hi) = (f32::MAX, f32::MIN, f32::MAX, f32::MIN);
+    for i in 0..2000 {
+        let (x, z) = (i as f32 * 150.0 - 150_000.0, i as f32 * 37.0);
+        let (f, s) = rivers.valley_shape(x, z, 100.0);
+        let (f, s) = (f / 100.0, s / strata::terrain::earth::rivers::WALL_SLOPE);
+        assert!(
+            (FLOOR_SCALE.0 * 0.999..=FLOOR_SCALE.1 * 1.001).contains(&f),
+            "{f}"
+        );
+        assert!(
+            (SLOPE_SCALE.0 * 0.999..=SLOPE_SCALE.1 * 1.001).contains(&s),
+            "{s}"
+        );
+        (f_lo, f_hi, s_lo, s_hi) = (f_lo.min(f), f_hi.max(f), s_lo.min(s), s_hi.max(s));
+    }
+    let span = |lo: f32, hi: f32, (a, b): (f32, f32)| (hi - lo) / (b - a);
+    assert!(
+        span(f_lo, f_hi, FLOOR_SCALE) > 0.7,
+        "floodplain factors {f_lo}..{f_hi}"
+    );
+    assert!(
+        span(s_lo, s_hi, SLOPE_SCALE) > 0.7,
+        "slope factors {s_lo}..{s_hi}"
+    );
 }
 
 /// Two shortcuts of the tile path against the full river job, over tiles that hold river lines

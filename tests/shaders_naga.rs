@@ -367,8 +367,26 @@ fn river_carve_structs_match_the_wgsl_layout() {
         "Piece",
         Piece,
         [
-            ax, az, bx, bz, wa, wb, half_width, depth, valley, wet, reach, inv_len2, floodplain,
-            sax, saz, sbx, sbz
+            ax,
+            az,
+            bx,
+            bz,
+            wa,
+            wb,
+            half_width,
+            depth,
+            valley,
+            wet,
+            reach,
+            inv_len2,
+            floodplain,
+            sax,
+            saz,
+            sbx,
+            sbz,
+            floodplain_b,
+            slope_a,
+            slope_b
         ]
     );
 }

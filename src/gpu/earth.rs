@@ -97,7 +97,6 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         // `rivers::RiverJob::carve_one` and `rivers::profile`.
         ("CARVE_MAX_M", rivers::CARVE_MAX_M),
         ("PIECE_LEN2_EPS", rivers::PIECE_LEN2_EPS),
-        ("WALL_SLOPE", rivers::WALL_SLOPE),
         ("WALL_NOISE_INV_M", rivers::WALL_NOISE_INV_M),
         ("WALL_NOISE_CLAMP", rivers::WALL_NOISE_CLAMP),
         // `rivers::RiverJob::shore` (`rivers::shores`).

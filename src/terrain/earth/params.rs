@@ -94,13 +94,15 @@ pub struct RiverParams {
     pub density: f32,
     /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
     pub incision_m: f32,
-    /// The valleys' shape, 1, 2 or 3 ([`super::rivers`], step 6). `1`: at least 250 m wide and
+    /// The valleys' shape, 1 to 4 ([`super::rivers`], step 6). `1`: at least 250 m wide and
     /// more by discharge, so the land between rivers is pulled towards the planes of their water
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
     /// centre lines of eight straight pieces an edge instead of four; the land beyond keeps its
-    /// shape. `3` (new worlds): the valleys of `2` along four bent pieces an edge, each a
-    /// parabola through the curve's middle, so the walls follow the curve without facets.
+    /// shape. `3`: the valleys of `2` along four bent pieces an edge, each a parabola through
+    /// the curve's middle, so the walls follow the curve without facets. `4` (new worlds): the
+    /// valleys of `3` whose floodplain narrows and widens and whose walls steepen and ease along
+    /// the river, so they read as eroded valleys instead of canals.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -125,7 +127,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 3,
+            valleys: 4,
             lakes: 2,
         }
     }
@@ -167,9 +169,9 @@ impl RiverParams {
             &format!("{m} [0, 300]"),
         )?;
         check(
-            (1..=3).contains(&self.valleys),
+            (1..=4).contains(&self.valleys),
             "rivers.valleys",
-            "must be 1, 2 or 3",
+            "must be 1, 2, 3 or 4",
         )?;
         check(
             (1..=2).contains(&self.lakes),

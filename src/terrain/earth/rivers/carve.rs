@@ -7,14 +7,16 @@ use super::super::EarthPlan;
 use super::network::{Network, Node};
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M, WALL_SLOPE,
+    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
 /// `a + t·(b − a) + t·(1 − t)·((1 − t)·sa + t·sb)`, `t ∈ [0, 1]`, whose offset from the chord
 /// leaves `a` with slope `sa` and reaches `b` with slope `−sb` (metres per unit `t`), so its
 /// tangents at the ends are the river curve's (straight where both are zero, as in every world
-/// before `valleys: 3`). Seventeen `f32`, the layout of the WGSL twin's storage array.
+/// before `valleys: 3`). The floodplain's half-width and the walls' mean slope are linear in
+/// `t` between their values at the ends (equal ends before `valleys: 4`). Twenty `f32`, the
+/// layout of the WGSL twin's storage array.
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 #[repr(C)]
 pub struct Piece {
@@ -43,9 +45,9 @@ pub struct Piece {
     pub reach: f32,
     /// `1 / (|b − a|² + 10⁻⁶)`, 1/m².
     pub inv_len2: f32,
-    /// Half-width of the flat floodplain, metres (`valleys: 2`; 0 in `valleys: 1` worlds, whose
-    /// walls rise from the channel's edge): the valley floor is the water level out to the
-    /// larger of it and the channel's half-width.
+    /// Half-width of the flat floodplain at the upstream end, metres (`valleys: 2`; 0 in
+    /// `valleys: 1` worlds, whose walls rise from the channel's edge): the valley floor is the
+    /// water level out to the larger of the floodplain and the channel's half-width.
     pub floodplain: f32,
     /// Slope `sa` of the offset at `a`, metres per unit `t`, normal to the chord (`valleys: 3`;
     /// 0 before).
@@ -57,6 +59,14 @@ pub struct Piece {
     pub sbx: f32,
     /// Slope `sb`, second component.
     pub sbz: f32,
+    /// Half-width of the floodplain at the downstream end, metres (`floodplain` before
+    /// `valleys: 4`).
+    pub floodplain_b: f32,
+    /// Mean slope of the walls at the upstream end, rise over run ([`super::WALL_SLOPE`] before
+    /// `valleys: 4`).
+    pub slope_a: f32,
+    /// Mean slope of the walls at the downstream end, rise over run.
+    pub slope_b: f32,
 }
 
 impl Piece {
@@ -339,8 +349,14 @@ impl Network<'_> {
                 } else {
                     (0.0, valley)
                 };
+                // `valleys: 4`: the floodplain's width and the walls' slope at a point of the
+                // centre line, scaled by value noise (one value at a point shared by the pieces
+                // that meet there, so they agree).
+                let shape = |x: f32, z: f32| self.plan.valley_shape(x, z, floodplain);
                 for (p, bend) in edge.points.windows(2).zip(&edge.bends) {
                     let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
+                    let (fa, sa) = shape(p[0][0], p[0][1]);
+                    let (fb, sb) = shape(p[1][0], p[1][1]);
                     pieces.push(Piece {
                         ax: p[0][0],
                         az: p[0][1],
@@ -354,11 +370,14 @@ impl Network<'_> {
                         wet: if wet { 1.0 } else { 0.0 },
                         reach,
                         inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
-                        floodplain,
                         sax: bend[0],
                         saz: bend[1],
                         sbx: bend[2],
                         sbz: bend[3],
+                        floodplain: fa,
+                        floodplain_b: fb,
+                        slope_a: sa,
+                        slope_b: sb,
                     });
                 }
             }
@@ -531,9 +550,12 @@ pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// With `W` the water level, `b` the channel half-width, `F = max(b, floodplain)`, `V` the
 /// valley half-width and `d` the distance to the piece: above `W` the height keeps its excess
 /// scaled by `g = smoothstep(F, V', d)`, so the valley keeps the terrain's detail and its floor
-/// is flat at `W` out to `F`; `V' = clamp(F + (h − W) / WALL_SLOPE, V, R)` widens the valley
-/// where it is deep, so its walls average no more than [`WALL_SLOPE`] (`R` is the piece's
-/// reach). In `valleys: 1` worlds the floodplain is 0, so `F = b`. Below
+/// is flat at `W` out to `F`; `V' = clamp(F + (h − W) / k, V, R)` widens the valley where it is
+/// deep, so its walls average no more than `k` (`R` is the piece's reach). The floodplain and
+/// the slope `k` are linear in `t` between the piece's ends ([`Piece::floodplain`],
+/// [`Piece::floodplain_b`], [`Piece::slope_a`], [`Piece::slope_b`]; `k` is [`super::WALL_SLOPE`]
+/// before `valleys: 4`); neither depends on `h`, so the slope of the result in `h` stays in
+/// [−¼, 1] (the smoothstep's `g − u·g'` is at least −¼). In `valleys: 1` worlds the floodplain is 0, so `F = b`. Below
 /// `W` nothing changes. Inside the channel the ground is cut to the parabola
 /// `W − c·(1 − (d/b)²)`. Beyond `V'` the height is `h`, bit for bit.
 #[inline(always)]
@@ -554,8 +576,11 @@ fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Optio
     let w = p.wa + (p.wb - p.wa) * t;
     let mut c = h;
     if h > w {
-        let floor = p.half_width.max(p.floodplain);
-        let v = (floor + (h - w) / WALL_SLOPE + wall).clamp(p.valley, p.reach);
+        let floor = p
+            .half_width
+            .max(p.floodplain + (p.floodplain_b - p.floodplain) * t);
+        let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
+        let v = (floor + (h - w) / slope + wall).clamp(p.valley, p.reach);
         if d < v {
             let g = smoothstep(floor, v, d);
             c = w + (h - w) * g;
@@ -696,8 +721,9 @@ impl RiverJob {
                 let p = &self.pieces[i as usize];
                 let w_min = p.wa.min(p.wb);
                 let v = if top > w_min {
-                    let floor = p.half_width.max(p.floodplain);
-                    (floor + (top - w_min) / WALL_SLOPE + wall_max).clamp(p.valley, p.reach)
+                    let floor = p.half_width.max(p.floodplain.max(p.floodplain_b));
+                    let slope = p.slope_a.min(p.slope_b);
+                    (floor + (top - w_min) / slope + wall_max).clamp(p.valley, p.reach)
                 } else {
                     p.half_width
                 };

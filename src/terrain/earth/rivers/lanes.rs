@@ -11,7 +11,7 @@
 
 use super::super::super::fractal::lattice_n;
 use super::carve::{foot, smoothstep, RiverJob, SKIP_MARGIN_M};
-use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M, WALL_SLOPE};
+use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
 /// it unrolls a loop of eight and then does not).
@@ -142,7 +142,6 @@ impl RiverJob {
             // A copy: LLVM does not vectorise the loop below while it reads the piece through a
             // reference it cannot prove unaliased with `c`.
             let p = &{ self.pieces[i as usize] };
-            let floor = p.half_width.max(p.floodplain);
             let reach2 = p.reach * p.reach;
             let channel2 = p.half_width * p.half_width * 1.001;
             let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
@@ -152,7 +151,11 @@ impl RiverJob {
                 // `profile_at_foot`, both arms of each branch computed.
                 let d = d2.sqrt();
                 let w = p.wa + (p.wb - p.wa) * t;
-                let v = clamp(floor + (hl - w) / WALL_SLOPE + wall[l], p.valley, p.reach);
+                let floor = p
+                    .half_width
+                    .max(p.floodplain + (p.floodplain_b - p.floodplain) * t);
+                let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
+                let v = clamp(floor + (hl - w) / slope + wall[l], p.valley, p.reach);
                 let g = smoothstep(floor, v, d);
                 let walled = if (hl > w) & (d < v) {
                     w + (hl - w) * g

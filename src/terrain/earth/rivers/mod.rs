@@ -51,7 +51,14 @@
 //!    valley is as wide as its walls need and the land beyond keeps its own shape; and the flat
 //!    floor keeps a valley sampled at 64 m from reading as a chain of pits. With `valleys: 3`
 //!    `V'` grows by 0 to 90 m of value noise ([`WALL_NOISE`]), so the walls of valleys in the
-//!    plains reach out in embayments between spurs instead of running as even banks.
+//!    plains reach out in embayments between spurs instead of running as even banks. With
+//!    `valleys: 4` (the default of new worlds) each piece's floodplain half-width and wall slope
+//!    are linear between values at its ends ([`RiverPlan::valley_shape`]: the `valleys: 3`
+//!    floodplain times [`FLOOR_SCALE`], [`WALL_SLOPE`] times [`SLOPE_SCALE`], by value noise of
+//!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
+//!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
+//!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
+//!    read as canals.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -86,6 +93,7 @@ pub use shores::{
 };
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
+use super::super::noise::lattice;
 use super::params::RiverParams;
 
 /// The node heights come from the LOD whose spacing is this many node spacings: relief finer
@@ -143,6 +151,24 @@ pub const WALL_NOISE_M: f32 = 192.0;
 pub const WALL_NOISE_INV_M: f32 = 1.0 / WALL_NOISE_M;
 /// Largest magnitude of the walls' noise value `n`.
 pub const WALL_NOISE_CLAMP: f32 = 1.5;
+/// Wavelength of the `valleys: 4` noise that scales a floodplain's width along its river,
+/// metres: about four pieces of a default edge, so the width's piecewise-linear course between
+/// piece ends shows no corners.
+pub const FLOOR_NOISE_M: f32 = 960.0;
+/// Smallest and largest factor of a `valleys: 4` floodplain's width: from a narrow floor between
+/// close walls to a floodplain 1.75 times the `valleys: 3` one (but see [`FLOOR_NARROWEST_M`]).
+pub const FLOOR_SCALE: (f32, f32) = (0.3, 1.75);
+/// Narrowest half-width a `valleys: 4` floodplain narrows to, metres (a floodplain narrower
+/// than this to begin with keeps its width): a floor narrower than about a 64 m sample spacing
+/// is sampled as a chain of pits, and the closed-depression figure of `bench realism` at 64 m
+/// rose above 5 % with floors down to 8 m.
+pub const FLOOR_NARROWEST_M: f32 = 40.0;
+/// Wavelength of the `valleys: 4` noise that scales the walls' slope along a river, metres.
+pub const SLOPE_NOISE_M: f32 = 700.0;
+/// Smallest and largest factor of the `valleys: 4` walls' mean slope ([`WALL_SLOPE`]): from
+/// eased banks (about 18°) to steep bluffs (about 35°). Gentler walls are wider, and the carve
+/// of a LOD-6 tile cost a quarter more with factors down to 0.55.
+pub const SLOPE_SCALE: (f32, f32) = (0.7, 1.5);
 /// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
 pub const FLOODPLAIN: f32 = 4.0;
 /// Half-width of the smallest `valleys: 2` floodplain, metres.
@@ -218,6 +244,11 @@ pub struct RiverPlan {
     pub wall_noise: f32,
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
+    /// Whether each piece's floodplain width and wall slope vary along the river
+    /// (`valleys: 4`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
+    pub varied_valleys: bool,
+    /// Stream seeds of the `valleys: 4` floodplain and slope noises.
+    pub valley_seeds: [u32; 2],
     /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
     /// ([`shores`]).
     pub lakes: u32,
@@ -258,6 +289,8 @@ impl RiverPlan {
             fingerprint,
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
+            varied_valleys: params.valleys >= 4,
+            valley_seeds: [406, 407].map(|k| stream(seed, purpose::EARTH, k)),
             lakes: params.lakes,
             shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
             valleys: params.valleys,
@@ -272,6 +305,26 @@ impl RiverPlan {
                 _ => PIECES_3,
             },
         }
+    }
+
+    /// The floodplain's half-width (metres) and the walls' mean slope at the point `(x, z)` of
+    /// a centre line whose floodplain is `floodplain` metres wide each side: in `valleys: 4`
+    /// worlds both scaled by value noise of the point (wavelengths [`FLOOR_NOISE_M`] and
+    /// [`SLOPE_NOISE_M`], factors in [`FLOOR_SCALE`] and [`SLOPE_SCALE`], the noise's N(0, 1)
+    /// corner values mapped by `clamp(½ + 0.35·n, 0, 1)`; the floodplain no narrower than
+    /// [`FLOOR_NARROWEST_M`] or its own width); before, `floodplain` and
+    /// [`WALL_SLOPE`] as they are.
+    pub fn valley_shape(&self, x: f32, z: f32, floodplain: f32) -> (f32, f32) {
+        if !self.varied_valleys {
+            return (floodplain, WALL_SLOPE);
+        }
+        let u = |n: f32| (0.5 + 0.35 * n).clamp(0.0, 1.0);
+        let (inv_f, inv_s) = (1.0 / FLOOR_NOISE_M, 1.0 / SLOPE_NOISE_M);
+        let nf = lattice(x * inv_f, z * inv_f, self.valley_seeds[0]);
+        let ns = lattice(x * inv_s, z * inv_s, self.valley_seeds[1]);
+        let f = FLOOR_SCALE.0 + (FLOOR_SCALE.1 - FLOOR_SCALE.0) * u(nf);
+        let s = SLOPE_SCALE.0 + (SLOPE_SCALE.1 - SLOPE_SCALE.0) * u(ns);
+        ((floodplain * f).max(floodplain.min(FLOOR_NARROWEST_M)), WALL_SLOPE * s)
     }
 
     fn jitter(&self, i: i64, k: i64) -> (f32, f32) {
