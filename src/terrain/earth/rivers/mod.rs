@@ -324,7 +324,10 @@ impl RiverPlan {
         let ns = lattice(x * inv_s, z * inv_s, self.valley_seeds[1]);
         let f = FLOOR_SCALE.0 + (FLOOR_SCALE.1 - FLOOR_SCALE.0) * u(nf);
         let s = SLOPE_SCALE.0 + (SLOPE_SCALE.1 - SLOPE_SCALE.0) * u(ns);
-        ((floodplain * f).max(floodplain.min(FLOOR_NARROWEST_M)), WALL_SLOPE * s)
+        (
+            (floodplain * f).max(floodplain.min(FLOOR_NARROWEST_M)),
+            WALL_SLOPE * s,
+        )
     }
 
     fn jitter(&self, i: i64, k: i64) -> (f32, f32) {
