@@ -674,10 +674,10 @@ fn turns(plan: &WorldPlan, i0: i64, k0: i64, n: i64) -> Vec<f32> {
 }
 
 /// `valleys: 3` (and `4`, the default) bends each piece so that it leaves and reaches its ends
-/// along the river curve's tangents: consecutive pieces meet without a corner (below a degree at the 99th
-/// percentile; only hairpins, whose tangents are clamped to 45° off the chord, turn more) where
-/// `valleys: 2`'s eight straight pieces turn corners of about ten degrees, so the valley walls
-/// follow the curve without a facet per piece.
+/// along the river curve's tangents: consecutive pieces meet without a corner (below a degree at
+/// the 99th percentile; only hairpins, whose tangents are clamped to 45° off the chord, turn
+/// more) where `valleys: 2`'s eight straight pieces turn corners of about ten degrees, so the
+/// valley walls follow the curve without a facet per piece.
 #[test]
 fn bent_pieces_meet_their_neighbours_without_corners() {
     let new = plan();
