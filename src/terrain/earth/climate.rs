@@ -58,13 +58,19 @@ impl ClimatePlan {
     }
 }
 
-/// The biomes of climate nodes at world positions `(xs[n], zs[n])` (metres, node multiples).
-fn node_biomes(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [u8]) {
+/// The biomes of the climate nodes of a grid, `(cols[i], rows[j])` at `out[j·w + i]` (metres,
+/// node multiples; `w = cols.len()`).
+fn node_biomes(plan: &EarthPlan, cols: &[f32], rows: &[f32], out: &mut [u8]) {
     let c = &plan.climate;
+    let (mut xs, mut zs) = (Vec::with_capacity(out.len()), Vec::with_capacity(out.len()));
+    for &z in rows {
+        xs.extend_from_slice(cols);
+        zs.extend(std::iter::repeat_n(z, cols.len()));
+    }
     let mut elevation = vec![0.0f32; xs.len()];
-    super::macro_elevation_batch(plan, xs, zs, &mut elevation);
-    let shifted: Vec<f32> = zs.iter().map(|z| z + c.latitude_offset_m).collect();
-    let nearest = c.map.nearest_batch(xs, &shifted);
+    super::macro_elevation_batch(plan, &xs, &zs, &mut elevation);
+    let shifted: Vec<f32> = rows.iter().map(|z| z + c.latitude_offset_m).collect();
+    let nearest = c.map.nearest_grid(cols, &shifted);
     for (n, id) in out.iter_mut().enumerate() {
         let warmth = c.map.value_of(&nearest[n]);
         let v = (warmth - elevation[n].max(0.0) / c.lapse_m).clamp(0.0, 1.0);
@@ -86,15 +92,10 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
         (j1 - j0 + 1) as usize + 2 * r,
     );
     let at = |g: i64| (g as f64 * NODE_SPACING_M) as f32;
-    let (mut xs, mut zs) = (Vec::with_capacity(bw * bh), Vec::with_capacity(bw * bh));
-    for j in 0..bh as i64 {
-        for i in 0..bw as i64 {
-            xs.push(at(i0 - r as i64 + i));
-            zs.push(at(j0 - r as i64 + j));
-        }
-    }
+    let cols: Vec<f32> = (0..bw as i64).map(|i| at(i0 - r as i64 + i)).collect();
+    let rows: Vec<f32> = (0..bh as i64).map(|j| at(j0 - r as i64 + j)).collect();
     let mut ids = vec![0u8; bw * bh];
-    node_biomes(plan, &xs, &zs, &mut ids);
+    node_biomes(plan, &cols, &rows, &mut ids);
     let (nw, nh) = (bw - 2 * r, bh - 2 * r);
     let mut nodes = vec![0.0f32; nw * nh * k];
     blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut nodes);
