@@ -22,6 +22,7 @@ pub use inputs::{
     StrataInput, VolumeInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
 };
 
+use crate::ptex::spec::{MAX_DECAL_ELEMENTS, MAX_MATERIAL_ELEMENTS};
 use crate::terrain::plan::WORLD_LIMIT_CELLS;
 use crate::terrain::world::ParamError;
 use crate::terrain::WorldParams;
@@ -143,6 +144,7 @@ impl Scene {
     ///   its `samples` within the accepted maximum
     ///   ([`crate::authoring::RegionSpec::check_cost`]).
     pub fn check_costs(&self, before: Option<&Scene>) -> Result<(), SceneError> {
+        self.check_ptex(before)?;
         let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
         for (i, e) in self.regions.iter().enumerate() {
             if before.is_some_and(|b| b.regions.contains(e)) {
@@ -167,6 +169,84 @@ impl Scene {
                 .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
         }
         Ok(())
+    }
+
+    /// The limits of the `materials` and `decals` elements ([`crate::ptex::spec`]) for those
+    /// new or changed since `before`: each parses, material names are unique, and the arrays
+    /// hold at most [`MAX_MATERIAL_ELEMENTS`] and [`MAX_DECAL_ELEMENTS`].
+    fn check_ptex(&self, before: Option<&Scene>) -> Result<(), SceneError> {
+        use crate::ptex::spec::{DecalSpec, MaterialSpec};
+        for (kind, list, max) in [
+            ("materials", &self.materials, MAX_MATERIAL_ELEMENTS),
+            ("decals", &self.decals, MAX_DECAL_ELEMENTS),
+        ] {
+            let old = before.map(|b| {
+                if kind == "materials" {
+                    &b.materials
+                } else {
+                    &b.decals
+                }
+            });
+            if list.len() > max && old.is_none_or(|o| o.len() < list.len()) {
+                return Err(SceneError::new(
+                    format!("/{kind}/{max}"),
+                    format!("at most {max} {kind} elements"),
+                ));
+            }
+            let mut names = std::collections::HashSet::new();
+            for (i, e) in list.iter().enumerate() {
+                let at = |f: &str| format!("/{kind}/{i}{f}");
+                let fresh = old.is_none_or(|o| !o.contains(e));
+                if kind == "decals" {
+                    if fresh {
+                        DecalSpec::from_element(e)
+                            .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+                    }
+                    continue;
+                }
+                let parsed = MaterialSpec::from_element(e);
+                if fresh {
+                    parsed
+                        .clone()
+                        .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+                }
+                if let Ok(m) = parsed {
+                    if !names.insert(m.name.clone()) && fresh {
+                        return Err(SceneError::new(
+                            at("/name"),
+                            format!("material {:?} is named by an earlier element", m.name),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The images the scene's `materials` and `decals` elements name (those that parse), with
+    /// the JSON pointer of each reference, in document order.
+    pub fn image_refs(&self) -> Vec<(String, [u8; 32])> {
+        use crate::ptex::spec::{DecalSpec, MaterialSpec};
+        let mut out = Vec::new();
+        for (i, e) in self.materials.iter().enumerate() {
+            if let Ok(m) = MaterialSpec::from_element(e) {
+                out.extend(
+                    m.images()
+                        .into_iter()
+                        .map(|(p, h)| (format!("/materials/{i}{p}"), h)),
+                );
+            }
+        }
+        for (i, e) in self.decals.iter().enumerate() {
+            if let Ok(d) = DecalSpec::from_element(e) {
+                out.extend(
+                    d.images()
+                        .into_iter()
+                        .map(|(p, h)| (format!("/decals/{i}{p}"), h)),
+                );
+            }
+        }
+        out
     }
 
     /// Checks the world settings and every element.
