@@ -6,10 +6,10 @@
 //! version pins the exact bytes. Sides are powers of two from 1 to [`MAX_IMAGE_SIDE`]: a tiled
 //! material's repeat then lines up across faces, and every mip level halves both sides exactly.
 //!
-//! Sampling is the CPU reference of `sample_image` in `shaders/ptex.wgsl`: channel bytes times
-//! `1/255`, texel `(x, y)` of level `l` at `(u·w_l − ½, v·h_l − ½)`, bilinear in that cell. With
-//! power-of-two sides the products are exact, so the twin differs only in the rounding of the
-//! two interpolations.
+//! Sampling is the CPU reference of `sample_image` in `shaders/ptex.wgsl`: texel `(x, y)` of
+//! level `l` at `(u·w_l − ½, v·h_l − ½)`, bilinear in that cell on the channel bytes (whose
+//! differences are exact), the result times `1/255`. With power-of-two sides the products are
+//! exact, so the twin differs only in the rounding of the interpolations.
 
 /// Largest PNG accepted, bytes (the server's request body limit).
 pub const MAX_IMAGE_BYTES: usize = 2 << 20;
@@ -202,12 +202,11 @@ impl Image {
         let (xa, xb) = (index(x0, w), index(x0 + 1, w));
         let (ya, yb) = (index(y0, h), index(y0 + 1, h));
         let row = w as usize;
-        let t =
-            |xx: usize, yy: usize, c: usize| f32::from(texels[yy * row + xx][c]) * (1.0 / 255.0);
+        let t = |xx: usize, yy: usize, c: usize| f32::from(texels[yy * row + xx][c]);
         std::array::from_fn(|c| {
             let top = t(xa, ya, c) + (t(xb, ya, c) - t(xa, ya, c)) * fx;
             let bottom = t(xa, yb, c) + (t(xb, yb, c) - t(xa, yb, c)) * fx;
-            top + (bottom - top) * fy
+            (top + (bottom - top) * fy) * (1.0 / 255.0)
         })
     }
 }
