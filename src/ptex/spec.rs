@@ -407,6 +407,34 @@ impl DecalSpec {
     }
 }
 
+/// The images a set takes, each once, in the order first named.
+struct Interned<'a> {
+    /// What there is to take, by hash.
+    images: &'a HashMap<[u8; 32], Arc<Image>>,
+    /// Taken, by index.
+    list: Vec<Arc<Image>>,
+    /// Index of each taken hash.
+    index: HashMap<[u8; 32], u32>,
+}
+
+impl Interned<'_> {
+    /// The index and image of `hash`, taken if new; `None` if there is no such image.
+    fn get(&mut self, hash: &[u8; 32]) -> Option<(u32, Arc<Image>)> {
+        let img = self.images.get(hash)?.clone();
+        let list = &mut self.list;
+        let i = *self.index.entry(*hash).or_insert_with(|| {
+            list.push(img.clone());
+            list.len() as u32 - 1
+        });
+        Some((i, img))
+    }
+
+    /// The index of the image a hex hash names.
+    fn index_of(&mut self, hex: &str) -> Option<u32> {
+        self.get(&parse_hash(hex)?).map(|x| x.0)
+    }
+}
+
 /// The parsed `materials` and `decals` of a scene (elements that do not parse are left out:
 /// they were refused when written, or stored before these elements had a schema).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -452,15 +480,10 @@ impl PtexSpecs {
         if self.is_empty() {
             return MaterialSet::default_ground(seed);
         }
-        let mut list: Vec<Arc<Image>> = Vec::new();
-        let mut index: HashMap<[u8; 32], u32> = HashMap::new();
-        let mut intern = |h: &[u8; 32]| -> Option<(u32, Arc<Image>)> {
-            let img = images.get(h)?.clone();
-            let i = *index.entry(*h).or_insert_with(|| {
-                list.push(img.clone());
-                list.len() as u32 - 1
-            });
-            Some((i, img))
+        let mut interned = Interned {
+            images,
+            list: Vec::new(),
+            index: HashMap::new(),
         };
         let mut materials = DEFAULT_GROUND.to_vec();
         for s in &self.materials {
@@ -481,16 +504,13 @@ impl PtexSpecs {
             m.freq_log2 = s.freq_log2.unwrap_or(m.freq_log2);
             m.octaves = s.octaves.unwrap_or(m.octaves);
             if let Some(t) = &s.texture {
-                let get = |hex: &String, intern: &mut dyn FnMut(&[u8; 32]) -> Option<(u32, Arc<Image>)>| {
-                    parse_hash(hex).and_then(|h| intern(&h)).map(|x| x.0)
-                };
                 if let (Some(albedo), Ok(repeat_log2)) =
-                    (get(&t.albedo, &mut intern), repeat_log2(t.repeat_m))
+                    (interned.index_of(&t.albedo), repeat_log2(t.repeat_m))
                 {
                     m.texture = Some(Texture {
                         albedo,
-                        roughness: t.roughness.as_ref().and_then(|h| get(h, &mut intern)),
-                        height: t.height.as_ref().and_then(|h| get(h, &mut intern)),
+                        roughness: t.roughness.as_ref().and_then(|h| interned.index_of(h)),
+                        height: t.height.as_ref().and_then(|h| interned.index_of(h)),
                         repeat_log2,
                     });
                 }
@@ -498,11 +518,11 @@ impl PtexSpecs {
         }
         let mut decals = Vec::new();
         for d in &self.decals {
-            let Some(image) = intern(&d.image) else {
+            let Some(image) = interned.get(&d.image) else {
                 continue;
             };
             let mask = match &d.mask {
-                Some(h) => match intern(h) {
+                Some(h) => match interned.get(h) {
                     Some(m) => Some(m),
                     None => continue,
                 },
@@ -514,7 +534,7 @@ impl PtexSpecs {
             ));
         }
         let mut set = MaterialSet::new(seed, materials);
-        set.images = list;
+        set.images = interned.list;
         set.decals = decals;
         set
     }

@@ -28,7 +28,7 @@ use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use serde_json::json;
 use std::collections::HashMap;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, OnceLock, Weak};
 
 /// The routes of this module.
 pub(super) fn routes() -> RouteTable {
@@ -121,6 +121,32 @@ async fn download(
     Ok(res)
 }
 
+/// Decoded images by hash, held weakly: the views that use an image share one decode (every edit
+/// makes a new version and view), and it is freed with the last of them. Hashes name bytes, so
+/// worlds holding the same image share it too.
+fn live() -> &'static Mutex<HashMap<[u8; 32], Weak<Image>>> {
+    static LIVE: OnceLock<Mutex<HashMap<[u8; 32], Weak<Image>>>> = OnceLock::new();
+    LIVE.get_or_init(Mutex::default)
+}
+
+/// The decoded image `hash` if a view holds it.
+fn held(hash: &[u8; 32]) -> Option<Arc<Image>> {
+    let map = live().lock().unwrap_or_else(|p| p.into_inner());
+    map.get(hash).and_then(Weak::upgrade)
+}
+
+/// Decodes `png` (whose hash is `hash`) and shares the result.
+fn decoded(hash: [u8; 32], png: &[u8]) -> Result<Arc<Image>, AppError> {
+    let img = Arc::new(
+        decode_png(png)
+            .map_err(|e| AppError::internal(format!("a stored image does not decode: {e}")))?,
+    );
+    let mut map = live().lock().unwrap_or_else(|p| p.into_inner());
+    map.retain(|_, w| w.strong_count() > 0);
+    map.insert(hash, Arc::downgrade(&img));
+    Ok(img)
+}
+
 /// The materials (and decals) world `view`'s pages bake with: the default set when its scene
 /// has no `materials` or `decals` (a bare seed, or a world without them: the bytes of before
 /// these elements), else the set its elements make with their images loaded from the store and
@@ -142,9 +168,14 @@ pub async fn world_materials(
             if specs.is_empty() {
                 return Ok(Arc::new(MaterialSet::default_ground(seed)));
             }
+            let mut images: HashMap<[u8; 32], Arc<Image>> = HashMap::new();
             let mut pngs = Vec::new();
             for h in specs.images() {
-                if pngs.iter().any(|(k, _)| *k == h) {
+                if images.contains_key(&h) || pngs.iter().any(|(k, _)| *k == h) {
+                    continue;
+                }
+                if let Some(img) = held(&h) {
+                    images.insert(h, img);
                     continue;
                 }
                 match st.worlds.store.image(id, h).await.map_err(store_error)? {
@@ -153,11 +184,8 @@ pub async fn world_materials(
                 }
             }
             let set = tokio::task::spawn_blocking(move || {
-                let mut images: HashMap<[u8; 32], Arc<Image>> = HashMap::new();
                 for (h, png) in pngs {
-                    let img = decode_png(&png)
-                        .map_err(|e| AppError::internal(format!("a stored image does not decode: {e}")))?;
-                    images.insert(h, Arc::new(img));
+                    images.insert(h, decoded(h, &png)?);
                 }
                 Ok::<_, AppError>(specs.set(seed, &images))
             })
