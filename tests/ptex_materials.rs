@@ -493,3 +493,53 @@ async fn an_uploaded_decal_shows_in_the_pages_of_the_new_version_and_bad_input_i
         get_as(&app, &format!("{far}&v=1"), &token).await.body
     );
 }
+
+#[tokio::test]
+async fn an_export_bakes_the_worlds_decal_into_its_ptx() {
+    let jobs = tempfile::tempdir().expect("tmp");
+    let app = app(AppState::new(Compute::cpu()).with_jobs_dir(jobs.path()));
+    let (id, token) = private_world(&app, SEED).await;
+    let png = decal_png();
+    let hex = hash_hex(&image_hash(&png));
+    upload(&app, &id, Some(&token), &png)
+        .await
+        .status_is(StatusCode::CREATED);
+    let (decal, _) = decal_element(&hex);
+    let patch = json!([{"op": "add", "path": "/decals/-", "value": decal}]);
+    edit(&app, &id, &token, patch).await.ok();
+    let started = common::oneshot::post_json(
+        &app,
+        &format!("/v1/worlds/{id}/exports"),
+        Some(&token),
+        &json!({"lod": KEY.lod, "region": [KEY.x, KEY.z, KEY.x + 1, KEY.z + 1],
+                "products": ["ptex"], "ptex_res": RES}),
+    )
+    .await
+    .status_is(StatusCode::ACCEPTED)
+    .json();
+    let status_url = started["status_url"].as_str().expect("status url");
+    common::oneshot::wait_job_done(&app, status_url, &token).await;
+    let url = started["download_url"].as_str().expect("download url");
+    let archive = get_as(&app, url, &token).await;
+    archive.ok();
+    let members = strata::export::tar::read_members(&archive.body).expect("tar");
+    let name = format!("ptex/{}/{}/{}.ptx", KEY.lod, KEY.x, KEY.z);
+    let (_, ptx) = members
+        .iter()
+        .find(|(n, _)| *n == name)
+        .unwrap_or_else(|| panic!("no {name} in the archive"));
+
+    // The library's .ptx of the tile with the world's decal, and without it.
+    let plan = plan();
+    let tile = synthesize(&plan, KEY);
+    let specs = PtexSpecs {
+        materials: Vec::new(),
+        decals: vec![DecalSpec::from_element(&decal).expect("decal")],
+    };
+    let images = HashMap::from([(image_hash(&png), Arc::new(decode_png(&png).expect("png")))]);
+    let mats = specs.set(plan.seed, &images);
+    let want = strata::export::ptx_member(&plan, &mats, &tile, RES);
+    let plain = strata::export::ptx_member(&plan, &MaterialSet::default_ground(SEED), &tile, RES);
+    assert!(*ptx == want, "the export bakes the world's decal");
+    assert!(want != plain, "the decal changes the tile's .ptx");
+}

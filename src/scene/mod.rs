@@ -318,6 +318,122 @@ mod tests {
     use super::*;
     use serde_json::json;
 
+    /// An image hash (64 hex digits).
+    const H: &str = "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef";
+
+    fn refused(v: serde_json::Value) -> SceneError {
+        let scene = Scene::from_value(&v).expect("a stored scene reads");
+        let doc = v.to_string();
+        scene.check_costs(None).expect_err(&doc)
+    }
+
+    fn decal(extra: serde_json::Value) -> serde_json::Value {
+        let mut d = json!({"id": "d", "bbox": {"min": [-20, -20], "max": [20, 20]}, "image": H,
+                           "center": [0, 0], "size_m": [10, 10]});
+        for (k, v) in extra.as_object().expect("object") {
+            d[k] = v.clone();
+        }
+        json!({"decals": [d]})
+    }
+
+    #[test]
+    fn written_elements_are_refused_naming_the_field_and_the_limit() {
+        let cases = [
+            (
+                decal(json!({"size_m": [10, 5000]})),
+                "/decals/0/size_m/1",
+                "4096",
+            ),
+            (
+                decal(json!({"opacity": -0.5})),
+                "/decals/0/opacity",
+                "[0, 1]",
+            ),
+            (
+                decal(json!({"image": "xyz"})),
+                "/decals/0/image",
+                "64 lowercase hex",
+            ),
+            (
+                decal(json!({"projection": "side"})),
+                "/decals/0/projection",
+                "top_down",
+            ),
+            (
+                decal(json!({"center": [18, 0]})),
+                "/decals/0/bbox",
+                "must contain",
+            ),
+            (
+                decal(json!({"rotation_deg": 720})),
+                "/decals/0/rotation_deg",
+                "360",
+            ),
+            (decal(json!({"colour": 1})), "/decals/0", "unknown field"),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "Rock"}]}),
+                "/materials/0/name",
+                "a-z",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "octaves": 9}]}),
+                "/materials/0/octaves",
+                "8",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "base": [0.5, 2.0, 0.5]}]}),
+                "/materials/0/base/1",
+                "[0, 1]",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "texture": {"albedo": H, "repeat_m": 512}}]}),
+                "/materials/0/texture/repeat_m",
+                "256",
+            ),
+            (
+                json!({"materials": [
+                    {"id": "a", "bbox": {"min": [0, 0], "max": [0, 0]}, "name": "moss"},
+                    {"id": "b", "bbox": {"min": [0, 0], "max": [0, 0]}, "name": "moss"}]}),
+                "/materials/1/name",
+                "earlier element",
+            ),
+        ];
+        for (v, pointer, limit) in cases {
+            let e = refused(v);
+            assert!(e.pointer.starts_with(pointer), "{pointer}: {e}");
+            assert!(e.message.contains(limit), "{pointer}: {e}");
+        }
+        let many: Vec<_> = (0..=MAX_DECAL_ELEMENTS)
+            .map(|i| {
+                let mut d = decal(json!({}))["decals"][0].clone();
+                d["id"] = json!(format!("d{i}"));
+                d
+            })
+            .collect();
+        let e = refused(json!({ "decals": many }));
+        assert_eq!(e.pointer, format!("/decals/{MAX_DECAL_ELEMENTS}"));
+    }
+
+    #[test]
+    fn a_stored_free_form_element_still_reads_and_leaves_the_default_set() {
+        // Before these elements had a schema any fields were kept; such a world loads, its
+        // pages bake with the default set, and an edit that leaves the element alone passes.
+        let v = json!({"decals": [{"id": "d", "bbox": {"min": [0, 0], "max": [1, 1]},
+                                   "anything": {"h": 3}}]});
+        let scene = Scene::from_value(&v).expect("reads");
+        assert_eq!(scene.check_costs(Some(&scene)), Ok(()));
+        let specs = crate::ptex::spec::PtexSpecs::new(&scene.materials, &scene.decals);
+        assert!(specs.is_empty());
+        assert_eq!(
+            specs.set(9, &std::collections::HashMap::new()),
+            crate::ptex::MaterialSet::default_ground(9)
+        );
+    }
+
     #[test]
     fn default_round_trips() {
         let v = Scene::default().to_value();
