@@ -334,10 +334,12 @@ fn apply_decals(anchor: vec3<i32>, p: vec3<f32>, kmax: i32) {
         if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) {
             continue;
         }
-        let c = sample_image(d.image, mip_level(d.density_log2, kmax, tex[d.image + 2u]), u, v, false);
+        let level = mip_level(d.density_log2, kmax, tex[d.image + 2u]);
+        let c = sample_image(d.image, level, u, v, false);
         var mask = c.w;
         if (d.mask != NONE) {
-            mask = sample_image(d.mask, mip_level(d.mask_density_log2, kmax, tex[d.mask + 2u]), u, v, false).x;
+            let mask_level = mip_level(d.mask_density_log2, kmax, tex[d.mask + 2u]);
+            mask = sample_image(d.mask, mask_level, u, v, false).x;
         }
         let a = d.opacity * mask;
         dec_albedo = vec3<f32>(

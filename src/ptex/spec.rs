@@ -20,8 +20,8 @@
 //! so an edit of a decal dirties just the pages its box meets.
 //!
 //! Images are named by the blake3 of their PNG bytes (lowercase hex), uploaded to the world
-//! beforehand (`POST /v1/worlds/{id}/images`); [`image_refs`] lists a scene's. Parsing and the
-//! limits are pure; whether the images exist is the store's check.
+//! beforehand (`POST /v1/worlds/{id}/images`); `Scene::image_refs` lists a scene's. Parsing
+//! and the limits are pure; whether the images exist is the store's check.
 
 use super::decal::Decal;
 use super::image::{parse_hash, Image};

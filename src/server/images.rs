@@ -4,13 +4,14 @@
 //!
 //! | route | what |
 //! |---|---|
-//! | `POST /v1/worlds/{id}/images` | stores a PNG (`image/png` body, edit role): 201 new, 200 already stored |
+//! | `POST /v1/worlds/{id}/images` | stores an `image/png` body (edit role): 201, or 200 if held |
 //! | `GET /v1/worlds/{id}/images/{hash}` | the PNG (read role) |
 //!
-//! Every limit is checked before work: the body is at most [`crate::ptex::image::MAX_IMAGE_BYTES`] (the request
-//! body limit), its header states power-of-two sides of at most [`crate::ptex::image::MAX_IMAGE_SIDE`] pixels (400
-//! `invalid_image`, field `body`), and a world holds at most [`crate::store::MAX_WORLD_IMAGES`] (409
-//! `too_many_images`). Images are stored under the blake3 of their bytes and never changed or
+//! Every limit is checked before work: the body is at most
+//! [`crate::ptex::image::MAX_IMAGE_BYTES`] (the request body limit), its header states
+//! power-of-two sides of at most [`crate::ptex::image::MAX_IMAGE_SIDE`] pixels (400
+//! `invalid_image`, field `body`), and a world holds at most [`crate::store::MAX_WORLD_IMAGES`]
+//! (409 `too_many_images`). Images are stored under the blake3 of their bytes and never changed or
 //! removed, so a scene version that names one pins its bytes; an edit may name only images the
 //! world holds (checked by the store in the edit's transaction).
 
@@ -180,7 +181,10 @@ pub async fn world_materials(
                 }
                 match st.worlds.store.image(id, h).await.map_err(store_error)? {
                     Some(png) => pngs.push((h, png)),
-                    None => tracing::error!(world = %id, image = %hash_hex(&h), "a scene names an image the store lacks"),
+                    None => {
+                        let image = hash_hex(&h);
+                        tracing::error!(world = %id, %image, "a scene names an image the store lacks");
+                    }
                 }
             }
             let set = tokio::task::spawn_blocking(move || {
