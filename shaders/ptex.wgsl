@@ -10,8 +10,10 @@
 // a compiler may contract `a * b + c` and `sqrt`, `/` are a few ULP here, so texels may differ
 // from the CPU by rounding (the tolerance is in `tests/gpu_ptex.rs`).
 //
-// `Params`, `Face`, `Sample` and `Mat` are `gpu::ptex`'s `GpuPtexParams`, `GpuFace`, `GpuSample`
-// and `GpuMaterial`, field for field. Output: three words per texel (albedo and roughness bytes,
+// `Params`, `Face`, `Sample`, `Mat` and `Decal` are `gpu::ptex`'s `GpuPtexParams`, `GpuFace`,
+// `GpuSample`, `GpuMaterial` and `GpuDecal`, field for field. Image materials and decals sample
+// the packed images of `tex` as `ptex::image::Image::sample` does (bytes times 1/255, bilinear,
+// wrapped or clamped), at the mip level of `ptex::image::mip_level`. Output: three words per texel (albedo and roughness bytes,
 // normal and material bytes, the displacement's bits), texel `f·res² + j·res + i`.
 
 struct Params {
@@ -21,7 +23,7 @@ struct Params {
     noise_octaves: u32,
     noise_seed: u32,
     materials: u32,
-    pad0: u32,
+    decals: u32,
     pad1: u32,
 }
 
@@ -60,10 +62,31 @@ struct Mat {
     freq_log2: i32,
     octaves: u32,
     seed: u32,
-    pad0: u32,
-    pad1: u32,
-    pad2: u32,
-    pad3: u32,
+    // Word offsets of the albedo, roughness and height images' headers in `tex` (NONE: none).
+    tex_albedo: u32,
+    tex_rough: u32,
+    tex_height: u32,
+    repeat_log2: i32,
+}
+
+// `gpu::ptex::GpuDecal`; `ptex::decal::Decal`.
+struct Decal {
+    ax: i32,
+    az: i32,
+    ox: f32,
+    oz: f32,
+    inv_w: f32,
+    inv_l: f32,
+    cos_t: f32,
+    sin_t: f32,
+    opacity: f32,
+    rough: f32,
+    has_rough: u32,
+    image: u32,
+    mask: u32,
+    density_log2: i32,
+    mask_density_log2: i32,
+    pad: u32,
 }
 
 @group(0) @binding(0) var<uniform> params: Params;
@@ -71,6 +94,12 @@ struct Mat {
 @group(0) @binding(2) var<storage, read> samples: array<Sample>;
 @group(0) @binding(3) var<storage, read> mats: array<Mat>;
 @group(0) @binding(4) var<storage, read_write> out: array<u32>;
+// Images: per image a header `[w, h, levels, offset of level 0, …]` (word offsets into this
+// array) and its levels' texels, one packed RGBA8 word each, rows top to bottom.
+@group(0) @binding(5) var<storage, read> tex: array<u32>;
+@group(0) @binding(6) var<storage, read> decals: array<Decal>;
+
+const NONE: u32 = 0xffffffffu;
 
 const PRIME_X: u32 = 0x8da6b343u;
 const PRIME_Y: u32 = 0x9e3779b1u;
@@ -218,6 +247,112 @@ fn pattern(m: u32, anchor: vec3<i32>, q: vec3<f32>, axis: u32, kmax: i32) -> f32
     return clamp(0.5 + 0.5 * v, 0.0, 1.0);
 }
 
+// `ptex::image::mip_level`.
+fn mip_level(density_log2: i32, kmax: i32, levels: u32) -> u32 {
+    return u32(clamp(density_log2 - (kmax + 1), 0, i32(levels) - 1));
+}
+
+// Channel `c` of a packed texel, its byte as a float.
+fn channel(word: u32, c: u32) -> f32 {
+    return f32((word >> (8u * c)) & 0xffu);
+}
+
+fn texel_word(off: u32, w: u32, h: u32, x: i32, y: i32, wrap: bool) -> u32 {
+    var xi: i32;
+    var yi: i32;
+    if (wrap) {
+        xi = ((x % i32(w)) + i32(w)) % i32(w);
+        yi = ((y % i32(h)) + i32(h)) % i32(h);
+    } else {
+        xi = clamp(x, 0, i32(w) - 1);
+        yi = clamp(y, 0, i32(h) - 1);
+    }
+    return tex[off + u32(yi) * w + u32(xi)];
+}
+
+// `ptex::image::Image::sample`: bilinear at (u, v) of level `level` of the image at header `hd`.
+fn sample_image(hd: u32, level: u32, u: f32, v: f32, wrap: bool) -> vec4<f32> {
+    let l = min(level, tex[hd + 2u] - 1u);
+    let w = max(tex[hd] >> l, 1u);
+    let h = max(tex[hd + 1u] >> l, 1u);
+    let off = tex[hd + 3u + l];
+    let x = u * f32(w) - 0.5;
+    let y = v * f32(h) - 0.5;
+    let x0 = floor(x);
+    let y0 = floor(y);
+    let fx = x - x0;
+    let fy = y - y0;
+    let xi = i32(x0);
+    let yi = i32(y0);
+    let t00 = texel_word(off, w, h, xi, yi, wrap);
+    let t10 = texel_word(off, w, h, xi + 1, yi, wrap);
+    let t01 = texel_word(off, w, h, xi, yi + 1, wrap);
+    let t11 = texel_word(off, w, h, xi + 1, yi + 1, wrap);
+    var res = vec4<f32>(0.0);
+    for (var c = 0u; c < 4u; c = c + 1u) {
+        let top = channel(t00, c) + (channel(t10, c) - channel(t00, c)) * fx;
+        let bottom = channel(t01, c) + (channel(t11, c) - channel(t01, c)) * fx;
+        res[c] = (top + (bottom - top) * fy) * (1.0 / 255.0);
+    }
+    return res;
+}
+
+// `bake::image_sample`: an image material's image tiled on plane `axis`.
+fn material_image(hd: u32, repeat_log2: i32, q: vec3<f32>, axis: u32, kmax: i32) -> vec4<f32> {
+    let scale = exp2i(-repeat_log2);
+    let x = plane_f(q, axis) * scale;
+    let a = x - floor(x);
+    let side = i32(countTrailingZeros(max(tex[hd], tex[hd + 1u])));
+    let level = mip_level(side - repeat_log2, kmax, tex[hd + 2u]);
+    return sample_image(hd, level, a.x, a.y, true);
+}
+
+// `bake::relief_t`: the height image's R channel, or the pattern.
+fn relief_t(m: u32, anchor: vec3<i32>, q: vec3<f32>, axis: u32, kmax: i32) -> f32 {
+    let mat = mats[m];
+    if (mat.tex_height != NONE) {
+        return material_image(mat.tex_height, mat.repeat_log2, q, axis, kmax).x;
+    }
+    return pattern(m, anchor, q, axis, kmax);
+}
+
+// `ptex::decal::apply`: the decals over `albedo` and `rough` (private, written back).
+var<private> dec_albedo: vec3<f32>;
+var<private> dec_rough: f32;
+
+fn apply_decals(anchor: vec3<i32>, p: vec3<f32>, kmax: i32) {
+    for (var k = 0u; k < params.decals; k = k + 1u) {
+        let d = decals[k];
+        let cx = f32(d.ax - anchor.x) * 256.0 + d.ox;
+        let cz = f32(d.az - anchor.z) * 256.0 + d.oz;
+        let dx = p.x - cx;
+        let dz = p.z - cz;
+        let s = dx * d.cos_t + dz * d.sin_t;
+        let t = dz * d.cos_t - dx * d.sin_t;
+        let u = s * d.inv_w + 0.5;
+        let v = t * d.inv_l + 0.5;
+        if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) {
+            continue;
+        }
+        let level = mip_level(d.density_log2, kmax, tex[d.image + 2u]);
+        let c = sample_image(d.image, level, u, v, false);
+        var mask = c.w;
+        if (d.mask != NONE) {
+            let mask_level = mip_level(d.mask_density_log2, kmax, tex[d.mask + 2u]);
+            mask = sample_image(d.mask, mask_level, u, v, false).x;
+        }
+        let a = d.opacity * mask;
+        dec_albedo = vec3<f32>(
+            dec_albedo.x + (c.x - dec_albedo.x) * a,
+            dec_albedo.y + (c.y - dec_albedo.y) * a,
+            dec_albedo.z + (c.z - dec_albedo.z) * a,
+        );
+        if (d.has_rough != 0u) {
+            dec_rough = dec_rough + (d.rough - dec_rough) * a;
+        }
+    }
+}
+
 // The interpolated texel inputs (see `bake::interpolate`).
 var<private> pt_p: vec3<f32>;
 var<private> pt_n: vec3<f32>;
@@ -278,9 +413,9 @@ fn displacement(anchor: vec3<i32>, q: vec3<f32>, wg: vec3<f32>, kmax: i32) -> f3
         let id = pt_ids[m];
         let relief = mats[id].relief_m;
         var r = 0.0;
-        r = r + wg.x * (pattern(id, anchor, q, 0u, kmax) - 0.5);
-        r = r + wg.y * (pattern(id, anchor, q, 1u, kmax) - 0.5);
-        r = r + wg.z * (pattern(id, anchor, q, 2u, kmax) - 0.5);
+        r = r + wg.x * (relief_t(id, anchor, q, 0u, kmax) - 0.5);
+        r = r + wg.y * (relief_t(id, anchor, q, 1u, kmax) - 0.5);
+        r = r + wg.z * (relief_t(id, anchor, q, 2u, kmax) - 0.5);
         d = d + pt_w[m] * (relief * r);
     }
     return d;
@@ -336,9 +471,21 @@ fn bake(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
         let base = vec3<f32>(mat.base_r, mat.base_g, mat.base_b);
         let tint = vec3<f32>(mat.tint_r, mat.tint_g, mat.tint_b);
         for (var axis = 0u; axis < 3u; axis = axis + 1u) {
-            let t = pattern(id, a, pt_p, axis, kmax);
             let k = pt_w[m] * wd[axis];
-            albedo = albedo + k * (base + (tint - base) * t);
+            if (mat.tex_albedo == NONE) {
+                let t = pattern(id, a, pt_p, axis, kmax);
+                albedo = albedo + k * (base + (tint - base) * t);
+                rough = rough + k * (mat.rough0 + (mat.rough1 - mat.rough0) * t);
+                continue;
+            }
+            let rgb = material_image(mat.tex_albedo, mat.repeat_log2, pt_p, axis, kmax);
+            albedo = albedo + k * rgb.xyz;
+            var t: f32;
+            if (mat.tex_rough != NONE) {
+                t = material_image(mat.tex_rough, mat.repeat_log2, pt_p, axis, kmax).x;
+            } else {
+                t = pattern(id, a, pt_p, axis, kmax);
+            }
             rough = rough + k * (mat.rough0 + (mat.rough1 - mat.rough0) * t);
         }
         let best = pt_w[dominant];
@@ -346,6 +493,11 @@ fn bake(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
             dominant = m;
         }
     }
+    dec_albedo = albedo;
+    dec_rough = rough;
+    apply_decals(a, pt_p, kmax);
+    albedo = dec_albedo;
+    rough = dec_rough;
     let o = 3u * idx;
     out[o] = unorm8(albedo.x) | (unorm8(albedo.y) << 8u) | (unorm8(albedo.z) << 16u) | (unorm8(rough) << 24u);
     out[o + 1u] = snorm8(nd.x) | (snorm8(nd.y) << 8u) | (snorm8(nd.z) << 16u) | ((pt_ids[dominant] & 0xffu) << 24u);

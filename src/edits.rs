@@ -29,6 +29,9 @@ pub struct TileEdits {
     pub strata: Vec<Arc<Geology>>,
     /// Volume regions meeting the tile: their boxes mark the vertices they override.
     pub volumes: Vec<Arc<VolumeSpec>>,
+    /// The world version's Ptex materials and decals, for exported pages (`None`: the default
+    /// set of the world's seed). Tiles do not read it.
+    pub materials: Option<Arc<crate::ptex::MaterialSet>>,
 }
 
 impl TileEdits {

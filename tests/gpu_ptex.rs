@@ -9,6 +9,13 @@
 //! texel, which multiplies a rounding difference of the displacement); the dominant material
 //! identical; displacement within 1e-4 m + 1e-5·|d|. At most 2 % of the texels may differ at all,
 //! so a systematic deviation fails. The test prints how many texels are bit-identical.
+//!
+//! The same comparison runs with a world's materials and decals (`strata::ptex::spec`): an
+//! image material with albedo, roughness and height images, a procedural override, and two
+//! decals (one masked by its alpha, one by a separate mask image with roughness), over both
+//! face sets, so the twin's image sampling, mip levels and decal placement are checked too. On
+//! lavapipe both comparisons are bit-identical (the image bilinear interpolates the bytes, whose
+//! differences are exact, and scales once); the bounds above still apply to other adapters.
 
 mod common;
 
@@ -80,6 +87,8 @@ fn compare(name: &str, set: &FaceSet, mats: &MaterialSet, res: u32) {
     bake_interior_on_device(&device, &queue, set, mats, res, &mut gpu).expect("the GPU bake");
     assert_eq!((gpu.res, gpu.faces), (cpu.res, cpu.faces));
     let (mut identical, mut total) = (0usize, 0usize);
+    // Texels whose albedo, normal or displacement differ at all.
+    let mut differ = [0usize; 3];
     for f in 0..cpu.faces {
         for ((ca, cn, cd), (ga, gn, gd)) in cpu.interior(f).zip(gpu.interior(f)) {
             total += 1;
@@ -87,6 +96,9 @@ fn compare(name: &str, set: &FaceSet, mats: &MaterialSet, res: u32) {
                 identical += 1;
                 continue;
             }
+            differ[0] += usize::from(ca != ga);
+            differ[1] += usize::from(cn != gn);
+            differ[2] += usize::from(cd.to_bits() != gd.to_bits());
             for c in 0..4 {
                 assert!(
                     ca[c].abs_diff(ga[c]) <= 1,
@@ -104,7 +116,10 @@ fn compare(name: &str, set: &FaceSet, mats: &MaterialSet, res: u32) {
             );
         }
     }
-    println!("{name} at {res}²: {identical} of {total} texels bit-identical");
+    println!(
+        "{name} at {res}²: {identical} of {total} texels bit-identical; albedo, normal, \
+         displacement differ in {differ:?}"
+    );
     assert!(total > 0);
     assert!(
         (total - identical) as f64 <= 0.02 * total as f64,
@@ -124,4 +139,134 @@ fn gpu_bake_matches_cpu_on_quads_and_tile_faces() {
     let tiles = tile_set(&plan, &mats);
     assert_eq!(tiles.faces.len(), 16);
     compare("tile", &tiles, &mats, 64);
+}
+
+/// An 8-bit RGBA PNG of `w × h` pixels.
+fn png_rgba(w: u32, h: u32, px: impl Fn(u32, u32) -> [u8; 4]) -> Vec<u8> {
+    let mut data = Vec::new();
+    for y in 0..h {
+        for x in 0..w {
+            data.extend_from_slice(&px(x, y));
+        }
+    }
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, w, h);
+    enc.set_color(png::ColorType::Rgba);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().expect("header");
+    writer.write_image_data(&data).expect("data");
+    writer.finish().expect("finish");
+    out
+}
+
+/// A set with images: `grass` an image material, `rock` overridden, and two decals at `a` and
+/// `b` (world `[x, z]`, metres).
+fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
+    use std::collections::HashMap;
+    use std::sync::Arc;
+    use strata::ptex::image::{decode_png, hash_hex, image_hash};
+    use strata::ptex::spec::{DecalSpec, MaterialSpec, PtexSpecs};
+    let pngs = [
+        png_rgba(32, 32, |x, y| {
+            [(x * 8) as u8, (y * 8) as u8, ((x ^ y) * 8) as u8, 255]
+        }),
+        png_rgba(16, 16, |x, y| [((x + y) * 8) as u8, 0, 0, 255]),
+        png_rgba(64, 64, |x, y| {
+            let v = (((x as f32 * 0.3).sin() + (y as f32 * 0.2).cos()) * 60.0 + 128.0) as u8;
+            [v, v, v, 255]
+        }),
+        png_rgba(16, 8, |x, y| {
+            let e = x.min(15 - x).min(2 * y.min(7 - y));
+            [200, 40, 90, (e * 50).min(255) as u8]
+        }),
+        png_rgba(8, 8, |x, _| [(x * 36) as u8, 0, 0, 255]),
+    ];
+    let hashes: Vec<String> = pngs.iter().map(|p| hash_hex(&image_hash(p))).collect();
+    let images = pngs
+        .iter()
+        .map(|p| (image_hash(p), Arc::new(decode_png(p).expect("png"))))
+        .collect::<HashMap<_, _>>();
+    let el = |v: serde_json::Value| -> strata::element::Element {
+        serde_json::from_value(v).expect("element")
+    };
+    let zero = serde_json::json!({"min": [0, 0], "max": [0, 0]});
+    let box_at = |c: [f64; 2]| {
+        serde_json::json!({"min": [c[0] - 30.0, c[1] - 30.0],
+                                                   "max": [c[0] + 30.0, c[1] + 30.0]})
+    };
+    let specs = PtexSpecs {
+        materials: vec![
+            MaterialSpec::from_element(&el(serde_json::json!({"id": "g", "bbox": zero,
+                "name": "grass", "relief_m": 0.3, "texture": {"albedo": hashes[0],
+                "roughness": hashes[1], "height": hashes[2], "repeat_m": 4}})))
+            .expect("grass"),
+            MaterialSpec::from_element(&el(serde_json::json!({"id": "r", "bbox": zero,
+                "name": "rock", "base": [0.2, 0.3, 0.4], "roughness": [0.1, 0.9]})))
+            .expect("rock"),
+        ],
+        decals: vec![
+            DecalSpec::from_element(&el(serde_json::json!({"id": "a", "bbox": box_at(a),
+                "image": hashes[3], "center": a, "size_m": [24, 14], "rotation_deg": 20})))
+            .expect("decal a"),
+            DecalSpec::from_element(&el(serde_json::json!({"id": "b", "bbox": box_at(b),
+                "image": hashes[0], "mask": hashes[4], "center": b, "size_m": [18, 18],
+                "rotation_deg": -35, "opacity": 0.8, "roughness": 0.2})))
+            .expect("decal b"),
+        ],
+    };
+    let set = specs.set(seed, &images);
+    assert_eq!(set.validate(), Ok(()));
+    assert_eq!((set.images.len(), set.decals.len()), (5, 2));
+    set
+}
+
+/// How many interior texels of `set` at `res` the decals of `mats` change (so the comparison
+/// covers decal texels).
+fn decal_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> usize {
+    let mut bare = mats.clone();
+    bare.decals.clear();
+    let (mut a, mut b) = (Pages::default(), Pages::default());
+    bake_interior(set, mats, res, &mut a);
+    bake_interior(set, &bare, res, &mut b);
+    a.albedo
+        .iter()
+        .zip(&b.albedo)
+        .filter(|(x, y)| x != y)
+        .count()
+}
+
+#[test]
+fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
+    let plan = WorldPlan::new(3, WorldParams::default()).expect("default world");
+    // The quads span x −300…−274, z 9000…9024 (see quad_set).
+    let mats = textured(3, [-290.0, 9008.0], [-280.0, 9016.0]);
+    let quads = quad_set(&mats);
+    let touched = decal_texels(&quads, &mats, 32);
+    assert!(
+        touched > 1000,
+        "the decals touch {touched} texels of the quads"
+    );
+    compare("textured quads", &quads, &mats, 8);
+    compare("textured quads", &quads, &mats, 32);
+    // Tile (2, −1, 3) spans x −256…0, z 768…1024 at 1 m cells.
+    let foot = strata::scene::tile_footprint(
+        &WorldParams::default(),
+        TileKey {
+            lod: 2,
+            x: -1,
+            z: 3,
+        },
+    );
+    let c = [
+        (foot.min[0] + foot.max[0]) / 2.0,
+        (foot.min[1] + foot.max[1]) / 2.0,
+    ];
+    let mats = textured(3, c, [c[0] + 20.0, c[1] - 15.0]);
+    let tiles = tile_set(&plan, &mats);
+    let touched = decal_texels(&tiles, &mats, 64);
+    assert!(
+        touched > 300,
+        "the decals touch {touched} texels of the tile"
+    );
+    compare("textured tile", &tiles, &mats, 64);
 }

@@ -253,7 +253,7 @@ async fn an_edit_recomputes_only_the_tiles_it_touches() {
         &app,
         &id,
         &token,
-        json!([{ "op": "add", "path": "/decals/-",
+        json!([{ "op": "add", "path": "/regions/-",
                  "value": { "id": "far", "bbox": { "min": [5000.0, 5000.0], "max": [5100.0, 5100.0] } } }]),
     )
     .await;

@@ -111,6 +111,38 @@ fn write_examples() {
     m[14] = 34.0;
     std::fs::write(dir.join("rock.glb"), triangles_to_glb(&boulder(), Some(&m)))
         .expect("write rock.glb");
+    std::fs::write(dir.join("puddle.png"), puddle_png()).expect("write puddle.png");
+}
+
+/// `docs/examples/puddle.png`: 64 × 64 RGBA, muddy water, its alpha 1 inside an oval and falling
+/// to 0 over the outer fifth of its radius.
+fn puddle_png() -> Vec<u8> {
+    let mut data = Vec::new();
+    for y in 0..64 {
+        for x in 0..64 {
+            let (u, v) = ((x as f32 + 0.5) / 32.0 - 1.0, (y as f32 + 0.5) / 32.0 - 1.0);
+            let r = (u * u + v * v).sqrt();
+            let a = ((1.0 - r) / 0.2).clamp(0.0, 1.0);
+            data.extend_from_slice(&[52, 58, 62, (a * 255.0).round() as u8]);
+        }
+    }
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, 64, 64);
+    enc.set_color(png::ColorType::Rgba);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().expect("PNG header");
+    writer.write_image_data(&data).expect("PNG data");
+    writer.finish().expect("PNG end");
+    out
+}
+
+/// The planes of a tile's pack (`api/ptex_pages_v1.md`): albedo, normal and displacement bytes.
+fn tile_planes(pack: &[u8]) -> [&[u8]; 3] {
+    let side = u32::from_le_bytes(pack[56..60].try_into().expect("S")) as usize;
+    let faces = u32::from_le_bytes(pack[52..56].try_into().expect("F")) as usize;
+    let plane = faces * side * side * 4;
+    let start = 64 + 40 * faces;
+    [0, 1, 2].map(|k| &pack[start + k * plane..start + (k + 1) * plane])
 }
 
 /// The commands of the `sh` blocks of the README section `heading`, in order: a command ends at
@@ -422,6 +454,42 @@ const RULES: &[(&str, Check)] = &[
         assert_eq!(&pack[..4], b"STPX");
         let faces = u32::from_le_bytes(pack[52..56].try_into().expect("face count"));
         assert!(faces > 100, "the arch's chunk has quads: {faces} faces");
+    }),
+    ("echo \"$IMG\"", |out, _, _| {
+        let hash = out.trim();
+        assert!(
+            hash.len() == 64 && hash.bytes().all(|b| b.is_ascii_hexdigit()),
+            "not an image hash: {out}"
+        );
+    }),
+    ("IMG=$(", |_, _, _| {}),
+    ("\"id\":\"puddle\"", |out, cmd, _| {
+        assert_eq!(version(out, cmd), 10, "{out}");
+    }),
+    ("-o tile-before.stpx", |_, _, ctx| {
+        assert_eq!(&file(ctx, "tile-before.stpx")[..4], b"STPX");
+    }),
+    ("-o tile-decal.stpx", |_, _, ctx| {
+        let (before, after) = (file(ctx, "tile-before.stpx"), file(ctx, "tile-decal.stpx"));
+        let ([a0, n0, d0], [a1, n1, d1]) = (tile_planes(&before), tile_planes(&after));
+        let changed = a0
+            .chunks(4)
+            .zip(a1.chunks(4))
+            .filter(|(x, y)| x != y)
+            .count();
+        // The puddle covers about 300 m² of the tile's 4,096 at 16 texels a m².
+        assert!(
+            (1_000..20_000).contains(&changed),
+            "{changed} texels changed"
+        );
+        assert_eq!(
+            (n0, d0),
+            (n1, d1),
+            "a decal changes albedo and roughness only"
+        );
+    }),
+    ("\"id\":\"lush\"", |out, cmd, _| {
+        assert_eq!(version(out, cmd), 11, "{out}");
     }),
     ("/ptex/tiles/", |_, _, ctx| {
         let pack = file(ctx, "tile.stpx");

@@ -10,7 +10,7 @@ use std::sync::Arc;
 use strata::scene::{Dirty, Rect};
 use strata::store::{
     hash_token, new_world_id, Admission, JobQuota, JobRecord, JobUpdate, NewWorld, PostgresStore,
-    Role, SceneStore, SqliteStore, StoreError, TokenGrant, SNAPSHOT_EVERY,
+    Role, SceneStore, SqliteStore, StoreError, TokenGrant, MAX_WORLD_IMAGES, SNAPSHOT_EVERY,
 };
 
 /// Where a contract test's store lives; [`Backend::open`] may be called again to reopen it.
@@ -66,6 +66,7 @@ contract!(
     a_stale_export_job_is_claimed_by_exactly_one_replica,
     admissions_count_every_stored_job_and_racing_ones_take_the_room_once,
     done_jobs_expire_once_whoever_asks,
+    images_are_kept_by_hash_and_edits_name_only_stored_ones,
 );
 
 fn patch(v: Value) -> json_patch::Patch {
@@ -640,4 +641,59 @@ async fn done_jobs_expire_once_whoever_asks(backend: Backend) {
     assert_eq!(status("e1").await, "expired");
     assert_eq!(status("e2").await, "done");
     assert_eq!(status("e3").await, "failed");
+}
+
+/// Images are kept per world under their hash, survive a reopen, are counted against the
+/// world's limit, and an edit may name only an image its world holds (refused edits change
+/// nothing).
+async fn images_are_kept_by_hash_and_edits_name_only_stored_ones(backend: Backend) {
+    let store = backend.open().await;
+    let (a, b) = (world(&*store).await, world(&*store).await);
+    let png = b"\x89PNG bytes for the store, not decoded here".to_vec();
+    let hash = *blake3::hash(&png).as_bytes();
+    assert_eq!(store.put_image(&a, hash, png.clone()).await, Ok(true));
+    assert_eq!(store.put_image(&a, hash, png.clone()).await, Ok(false));
+    assert_eq!(store.image(&a, hash).await, Ok(Some(png.clone())));
+    assert_eq!(
+        store.image(&b, hash).await,
+        Ok(None),
+        "images belong to a world"
+    );
+    assert_eq!(
+        store.put_image("nope", hash, png.clone()).await,
+        Err(StoreError::WorldNotFound("nope".into()))
+    );
+    let hex: String = hash.iter().map(|x| format!("{x:02x}")).collect();
+    let decal = |id: &str| {
+        patch(
+            json!([{"op": "add", "path": "/decals/-", "value": {"id": id,
+            "bbox": {"min": [-10, -10], "max": [10, 10]}, "image": hex,
+            "center": [0, 0], "size_m": [4, 4]}}]),
+        )
+    };
+    assert_eq!(
+        store
+            .apply_edit(&a, decal("d"), None)
+            .await
+            .map(|e| e.version),
+        Ok(2)
+    );
+    match store.apply_edit(&b, decal("d"), None).await {
+        Err(StoreError::Invalid(e)) => assert_eq!(e.pointer, "/decals/0/image"),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(store.meta(&b).await.expect("meta").version, 1);
+    let reopened = backend.open().await;
+    assert_eq!(reopened.image(&a, hash).await, Ok(Some(png)));
+    for i in 1..MAX_WORLD_IMAGES {
+        let h = *blake3::hash(&i.to_le_bytes()).as_bytes();
+        assert_eq!(reopened.put_image(&a, h, vec![i as u8]).await, Ok(true));
+    }
+    let over = *blake3::hash(b"one too many").as_bytes();
+    assert_eq!(
+        reopened.put_image(&a, over, vec![0]).await,
+        Err(StoreError::TooManyImages {
+            limit: MAX_WORLD_IMAGES
+        })
+    );
 }

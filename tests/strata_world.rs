@@ -60,6 +60,7 @@ impl World {
                 displacements: Vec::new(),
                 strata: if strata { vec![geology()] } else { Vec::new() },
                 volumes: Vec::new(),
+                materials: None,
             },
             tiles: HashMap::new(),
         }

@@ -994,6 +994,9 @@ fn check_schema(root: &Value, schema: &Value, v: &Value, at: &str) -> Result<(),
             return fail("not in enum");
         }
     }
+    if schema.get("const").is_some_and(|c| c != v) {
+        return fail("not the constant");
+    }
     if let Some(x) = v.as_f64() {
         let num = |k: &str| schema.get(k).and_then(Value::as_f64);
         if num("minimum").is_some_and(|m| x < m) || num("maximum").is_some_and(|m| x > m) {
@@ -1096,6 +1099,16 @@ fn scene_schema_describes_what_the_server_accepts() {
     // and whether tiles mark where caves open (issue 19).
     full["strata"] = json!([{"id": "strata-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "preset": "B2", "voxel_m": 0.5, "carve": false, "mark_openings": true}]);
+    // So are materials and decals (issue 20): overrides or new materials, procedural or with
+    // images, and decals with a placement, a mask and roughness.
+    let image = "0123456789abcdef".repeat(4);
+    full["materials"] = json!([{"id": "materials-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
+        "name": "moss", "base": [0.2, 0.4, 0.1], "tint": [0.1, 0.3, 0.1], "roughness": [0.6, 0.9],
+        "relief_m": 0.05, "noise_m": 0.02, "freq_log2": 1, "octaves": 3,
+        "texture": {"albedo": image, "roughness": image, "height": image, "repeat_m": 2}}]);
+    full["decals"] = json!([{"id": "decals-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
+        "image": image, "mask": image, "center": [0.0, 1.0], "size_m": [4.0, 1.5],
+        "rotation_deg": 10.0, "opacity": 0.5, "roughness": 0.3, "projection": "top_down"}]);
     for good in [json!({}), Scene::default().to_value(), full.clone()] {
         Scene::from_value(&good).expect("the server accepts it");
         check(&good).expect("the schema accepts it");
@@ -1165,6 +1178,29 @@ fn scene_schema_describes_what_the_server_accepts() {
         (json!({"rivers": []}), "/rivers"),
     ] {
         let server = Scene::from_value(&doc).expect_err("the server refuses it");
+        assert_eq!(server.pointer, pointer, "{}", server.message);
+        assert!(check(&doc).is_err(), "the schema refuses {pointer}");
+    }
+    // Materials and decals are checked when written (stored free-form ones keep loading).
+    let decal = |k: &str, v: Value| {
+        let mut d = full["decals"][0].clone();
+        d[k] = v;
+        json!({ "decals": [d] })
+    };
+    for (doc, pointer) in [
+        (decal("opacity", json!(2.0)), "/decals/0/opacity"),
+        (decal("size_m", json!([4.0, 0.0])), "/decals/0/size_m/1"),
+        (decal("projection", json!("side")), "/decals/0/projection"),
+        (
+            json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                   "name": "rock", "texture": {"albedo": image, "repeat_m": 3.0}}]}),
+            "/materials/0/texture/repeat_m",
+        ),
+    ] {
+        let scene = Scene::from_value(&doc).expect("it reads");
+        let server = scene
+            .check_costs(None)
+            .expect_err("the server refuses to write it");
         assert_eq!(server.pointer, pointer, "{}", server.message);
         assert!(check(&doc).is_err(), "the schema refuses {pointer}");
     }

@@ -205,6 +205,24 @@ pub fn members(
     spec: &ExportSpec,
     tile: &Tile,
 ) -> Result<Members, encode::EncodeError> {
+    members_with(
+        plan,
+        spec,
+        &crate::ptex::MaterialSet::default_ground(plan.seed),
+        tile,
+    )
+}
+
+/// [`members`] with the world's Ptex materials and decals `mats`.
+///
+/// # Errors
+/// An encoder failed (PNG).
+pub fn members_with(
+    plan: &WorldPlan,
+    spec: &ExportSpec,
+    mats: &crate::ptex::MaterialSet,
+    tile: &Tile,
+) -> Result<Members, encode::EncodeError> {
     let k = tile.key;
     let mut out = Vec::new();
     for product in &spec.products {
@@ -228,7 +246,12 @@ pub fn members(
             )),
             Product::Ptex => out.push((
                 format!("ptex/{}/{}/{}.ptx", k.lod, k.x, k.z),
-                ptx_member(plan, tile, spec.ptex_res.unwrap_or(crate::ptex::MIN_RES)),
+                ptx_member(
+                    plan,
+                    mats,
+                    tile,
+                    spec.ptex_res.unwrap_or(crate::ptex::MIN_RES),
+                ),
             )),
         }
     }
@@ -236,15 +259,20 @@ pub fn members(
 }
 
 /// The `.ptx` of a tile's 4 × 4 Ptex faces at `res`: their interiors, a function of the tile
-/// alone, are the HTTP pages' interior texels; adjacency within the tile.
-pub fn ptx_member(plan: &WorldPlan, tile: &Tile, res: u32) -> Vec<u8> {
+/// alone, are the HTTP pages' interior texels (with the same materials `mats`); adjacency within
+/// the tile.
+pub fn ptx_member(
+    plan: &WorldPlan,
+    mats: &crate::ptex::MaterialSet,
+    tile: &Tile,
+    res: u32,
+) -> Vec<u8> {
     use crate::ptex::face::TileFacePlan;
     let faces = TileFacePlan::new(tile.key, [false; 4], plan.lods.len() as u32 - 1);
-    let mats = crate::ptex::MaterialSet::default_ground(plan.seed);
-    let mut set = faces.build(|t| (t == tile.key).then_some(tile), &mats);
+    let mut set = faces.build(|t| (t == tile.key).then_some(tile), mats);
     set.output = set.faces.len();
     let mut pages = crate::ptex::Pages::default();
-    crate::ptex::bake_interior(&set, &mats, res, &mut pages);
+    crate::ptex::bake_interior(&set, mats, res, &mut pages);
     encode::ptx::write(&pages, &encode::ptx::adjacency(&set))
 }
 
@@ -291,6 +319,14 @@ pub fn write_archive(
     spec.validate(plan)?;
     let keys = spec.keys(shard);
     let threads = threads.max(1);
+    let default_mats;
+    let mats = match &edits.materials {
+        Some(m) => m.as_ref(),
+        None => {
+            default_mats = crate::ptex::MaterialSet::default_ground(plan.seed);
+            &default_mats
+        }
+    };
     let mut manifest = Manifest {
         format: "strata.export.v1".into(),
         seed: plan.seed.to_string(),
@@ -310,7 +346,7 @@ pub fn write_archive(
                             .step_by(threads)
                             .map(|k| {
                                 let tile = crate::edits::synthesize(plan, *k, edits);
-                                members(plan, spec, &tile)
+                                members_with(plan, spec, mats, &tile)
                             })
                             .collect::<Vec<_>>()
                     })

@@ -12,9 +12,15 @@
 //! when the value sits near a rounding boundary; the normal, a difference quotient over half a
 //! texel, amplifies that. `tests/gpu_ptex.rs` states the bound it allows.
 //!
+//! Image materials and decals read the set's images packed into one storage buffer of words
+//! ([`pack_images`]: a header per image, then its mip levels' RGBA8 texels) and the decals from
+//! another; the CPU reference ([`crate::ptex::image`], [`crate::ptex::decal`]) defines the
+//! bytes, and the twin samples the same texels with the same bilinear weights.
+//!
 //! # Limits
 //!
-//! The output (12 bytes per texel) must fit the device's `max_storage_buffer_binding_size`; a
+//! The packed images must fit the device's `max_storage_buffer_binding_size` too. The output
+//! (12 bytes per texel) must fit the device's `max_storage_buffer_binding_size`; a
 //! larger bake is an error, not a panic.
 
 use super::kit::{bind_group, dispatch_linear, read_back, readback, upload, Binding, Program};
@@ -47,8 +53,10 @@ pub struct GpuPtexParams {
     pub noise_seed: u32,
     /// Materials in the set.
     pub materials: u32,
+    /// Decals in the set.
+    pub decals: u32,
     /// Padding.
-    pub pad: [u32; 2],
+    pub pad: u32,
 }
 
 /// `Face` of `shaders/ptex.wgsl`.
@@ -103,8 +111,68 @@ pub struct GpuMaterial {
     pub octaves: u32,
     /// Pattern hash seed.
     pub seed: u32,
+    /// Header offset of the albedo image in the image words, or [`NONE`].
+    pub tex_albedo: u32,
+    /// Header offset of the roughness image, or [`NONE`].
+    pub tex_rough: u32,
+    /// Header offset of the height image, or [`NONE`].
+    pub tex_height: u32,
+    /// One repeat is `2^repeat_log2` metres.
+    pub repeat_log2: i32,
+}
+
+/// `Decal` of `shaders/ptex.wgsl` ([`crate::ptex::decal::Decal`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuDecal {
+    /// Centre's anchor, units of 256 m.
+    pub anchor: [i32; 2],
+    /// Centre relative to the anchor, metres.
+    pub offset: [f32; 2],
+    /// Reciprocal width and length, per metre.
+    pub inv_size: [f32; 2],
+    /// `cos θ`.
+    pub cos: f32,
+    /// `sin θ`.
+    pub sin: f32,
+    /// Opacity.
+    pub opacity: f32,
+    /// Roughness blended in (when `has_rough`).
+    pub rough: f32,
+    /// Whether the decal sets roughness.
+    pub has_rough: u32,
+    /// Header offset of the image.
+    pub image: u32,
+    /// Header offset of the mask image, or [`NONE`].
+    pub mask: u32,
+    /// `⌈log2⌉` of the image's pixels per metre.
+    pub density_log2: i32,
+    /// Likewise for the mask.
+    pub mask_density_log2: i32,
     /// Padding.
-    pub pad: [u32; 4],
+    pub pad: u32,
+}
+
+/// "No image" in [`GpuMaterial`] and [`GpuDecal`].
+pub const NONE: u32 = u32::MAX;
+
+/// The images of a set packed as `shaders/ptex.wgsl` reads them: per image a header `[w, h,
+/// levels, offset of each level…]` (word offsets), then its levels' texels as little-endian
+/// RGBA8 words. Returns the words and each image's header offset.
+pub fn pack_images(images: &[std::sync::Arc<crate::ptex::image::Image>]) -> (Vec<u32>, Vec<u32>) {
+    let mut words = Vec::new();
+    let mut headers = Vec::with_capacity(images.len());
+    for img in images {
+        let at = words.len();
+        headers.push(at as u32);
+        words.extend([img.width, img.height, img.levels.len() as u32]);
+        words.resize(at + 3 + img.levels.len(), 0);
+        for (l, level) in img.levels.iter().enumerate() {
+            words[at + 3 + l] = words.len() as u32;
+            words.extend(level.iter().map(|t| u32::from_le_bytes(*t)));
+        }
+    }
+    (words, headers)
 }
 
 /// Bakes the interior texels of every face of `set` at `res` on `device` into `out` (reset to
@@ -157,6 +225,8 @@ pub fn bake_interior_on_device(
             noise_m: s.noise_m,
         })
         .collect();
+    let (mut image_words, headers) = pack_images(&mats.images);
+    let header = |i: Option<u32>| i.map_or(NONE, |i| headers[i as usize]);
     let materials: Vec<GpuMaterial> = mats
         .materials
         .iter()
@@ -170,9 +240,45 @@ pub fn bake_interior_on_device(
             freq_log2: m.freq_log2,
             octaves: m.octaves,
             seed,
-            pad: [0; 4],
+            tex_albedo: header(m.texture.map(|t| t.albedo)),
+            tex_rough: header(m.texture.and_then(|t| t.roughness)),
+            tex_height: header(m.texture.and_then(|t| t.height)),
+            repeat_log2: m.texture.map_or(0, |t| t.repeat_log2),
         })
         .collect();
+    let mut decals: Vec<GpuDecal> = mats
+        .decals
+        .iter()
+        .map(|d| GpuDecal {
+            anchor: d.anchor,
+            offset: d.offset,
+            inv_size: d.inv_size,
+            cos: d.cos,
+            sin: d.sin,
+            opacity: d.opacity,
+            rough: d.roughness.unwrap_or(0.0),
+            has_rough: u32::from(d.roughness.is_some()),
+            image: headers[d.image as usize],
+            mask: header(d.mask),
+            density_log2: d.density_log2,
+            mask_density_log2: d.mask_density_log2,
+            pad: 0,
+        })
+        .collect();
+    let decal_count = decals.len() as u32;
+    // Storage bindings may not be empty.
+    if decals.is_empty() {
+        decals.push(bytemuck::Zeroable::zeroed());
+    }
+    if image_words.is_empty() {
+        image_words.push(0);
+    }
+    if 4 * image_words.len() as u64 > limit {
+        bail!(
+            "the images need a {}-byte buffer; the device allows {limit}",
+            4 * image_words.len()
+        );
+    }
     let params = GpuPtexParams {
         res,
         faces: set.faces.len() as u32,
@@ -180,11 +286,17 @@ pub fn bake_interior_on_device(
         noise_octaves: mats.noise_octaves,
         noise_seed: mats.noise_seed,
         materials: materials.len() as u32,
-        pad: [0; 2],
+        decals: decal_count,
+        pad: 0,
     };
     let scopes = Scopes::push(device);
     let (u, r, w) = (Binding::Uniform, Binding::Read, Binding::ReadWrite);
-    let program = Program::new(device, "strata ptex.wgsl", PTEX_WGSL, &[u, r, r, r, w]);
+    let program = Program::new(
+        device,
+        "strata ptex.wgsl",
+        PTEX_WGSL,
+        &[u, r, r, r, w, r, r],
+    );
     let pipeline = program.pipeline(device, "bake");
     let storage = wgpu::BufferUsages::STORAGE;
     let ub = upload(
@@ -216,7 +328,26 @@ pub fn bake_interior_on_device(
         storage,
     );
     let ob = super::kit::storage(device, "ptex texels", bytes, wgpu::BufferUsages::COPY_SRC);
-    let group = bind_group(device, &program.layout, "ptex", &[&ub, &fb, &sb, &mb, &ob]);
+    let ib = upload(
+        device,
+        queue,
+        "ptex images",
+        bytemuck::cast_slice(&image_words),
+        storage,
+    );
+    let db = upload(
+        device,
+        queue,
+        "ptex decals",
+        bytemuck::cast_slice(&decals),
+        storage,
+    );
+    let group = bind_group(
+        device,
+        &program.layout,
+        "ptex",
+        &[&ub, &fb, &sb, &mb, &ob, &ib, &db],
+    );
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("strata ptex bake"),
     });

@@ -17,7 +17,12 @@
 //! 5. **Tri-planar blend** with the displaced normal's weights `w(n')`: albedo and roughness of
 //!    each material's pattern on the three projection planes (X: `(y, z)`, Y: `(z, x)`, Z:
 //!    `(x, y)`), weighted by `bₘ·w_axis(n')`.
-//! 6. **Quantisation**: `⌊255·clamp(x, 0, 1) + ½⌋` for albedo and roughness, `⌊127·clamp(n, −1,
+//!    An image material ([`super::material::Texture`]) reads its albedo, and the `t` of its
+//!    roughness and relief where it has those images, from its images tiled on the plane
+//!    (coordinates times `2^−repeat_log2`, wrapped; bilinear at mip level `side_log2 −
+//!    repeat_log2 − (kmax + 1)`, so an image pixel is no smaller than a texel).
+//! 6. **Decals** ([`super::decal`]), top-down, in order, over the blended albedo and roughness.
+//! 7. **Quantisation**: `⌊255·clamp(x, 0, 1) + ½⌋` for albedo and roughness, `⌊127·clamp(n, −1,
 //!    1) + ½⌋` as a signed byte for the normal, the dominant material id (largest `bₘ`, the
 //!    lower id on a tie), `D(p)` as `f32` metres.
 //!
@@ -25,8 +30,10 @@
 //! gives the same bytes in any set, on any thread.
 
 use super::border::fill_borders;
+use super::decal::apply as apply_decals;
 use super::face::{Face, FaceSet};
-use super::material::MaterialSet;
+use super::image::mip_level;
+use super::material::{MaterialSet, Texture};
 use super::noise::{exp2i, fbm2, fbm3, octave_count, MAX_FREQ_LOG2, MIN_FREQ_LOG2};
 use super::pages::Pages;
 use rayon::prelude::*;
@@ -129,6 +136,46 @@ fn plane<T: Copy>(v: [T; 3], axis: usize) -> [T; 2] {
     [v[(axis + 1) % 3], v[(axis + 2) % 3]]
 }
 
+/// The image sample of material `m`'s image `img` at `q` on plane `axis`: the plane's
+/// coordinates times `2^−repeat_log2`, wrapped to `[0, 1)`, at the mip level for `kmax`.
+fn image_sample(
+    mats: &MaterialSet,
+    img: u32,
+    repeat_log2: i32,
+    q: [f32; 3],
+    axis: usize,
+    kmax: i32,
+) -> [f32; 4] {
+    let image = &mats.images[img as usize];
+    let scale = exp2i(-repeat_log2);
+    let [a, b] = plane(q, axis).map(|c| {
+        let x = c * scale;
+        x - x.floor()
+    });
+    let level = mip_level(image.side_log2() - repeat_log2, kmax, image.levels.len());
+    image.sample(level, a, b, true)
+}
+
+/// The relief `t ∈ [0, 1]` of material `m` at `q` on plane `axis`: its height image's R channel,
+/// or its pattern.
+fn relief_t(
+    mats: &MaterialSet,
+    m: usize,
+    anchor: [i32; 3],
+    q: [f32; 3],
+    axis: usize,
+    kmax: i32,
+) -> f32 {
+    match mats.materials[m].texture {
+        Some(Texture {
+            height: Some(h),
+            repeat_log2,
+            ..
+        }) => image_sample(mats, h, repeat_log2, q, axis, kmax)[0],
+        _ => pattern(mats, m, anchor, q, axis, kmax),
+    }
+}
+
 /// The pattern `t ∈ [0, 1]` of material `m` at `q` on plane `axis`.
 fn pattern(
     mats: &MaterialSet,
@@ -229,7 +276,7 @@ fn displacement(
         let relief = mats.materials[id].relief_m;
         let mut r = 0.0f32;
         for (axis, w) in wg.iter().enumerate() {
-            r += w * (pattern(mats, id, anchor, q, axis, kmax) - 0.5);
+            r += w * (relief_t(mats, id, anchor, q, axis, kmax) - 0.5);
         }
         d += pt.weights[m] * (relief * r);
     }
@@ -276,11 +323,23 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
         let id = pt.ids[m];
         let mat = &mats.materials[id];
         for (axis, w) in wd.iter().enumerate() {
-            let t = pattern(mats, id, a, pt.p, axis, kmax);
             let k = pt.weights[m] * w;
+            let Some(tex) = mat.texture else {
+                let t = pattern(mats, id, a, pt.p, axis, kmax);
+                for (c, a) in albedo.iter_mut().enumerate() {
+                    *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
+                }
+                rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
+                continue;
+            };
+            let rgb = image_sample(mats, tex.albedo, tex.repeat_log2, pt.p, axis, kmax);
             for (c, a) in albedo.iter_mut().enumerate() {
-                *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
+                *a += k * rgb[c];
             }
+            let t = match tex.roughness {
+                Some(r) => image_sample(mats, r, tex.repeat_log2, pt.p, axis, kmax)[0],
+                None => pattern(mats, id, a, pt.p, axis, kmax),
+            };
             rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
         }
         let best = pt.weights[dominant];
@@ -288,6 +347,15 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
             dominant = m;
         }
     }
+    apply_decals(
+        &mats.decals,
+        &mats.images,
+        a,
+        pt.p,
+        kmax,
+        &mut albedo,
+        &mut rough,
+    );
     Texel {
         albedo: [
             unorm8(albedo[0]),

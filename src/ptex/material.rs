@@ -11,16 +11,24 @@
 //!
 //! [`MaterialSet::default_ground`] is the set for the ground materials of
 //! [`crate::terrain::world::MATERIALS`] (ids 0–5: seabed, sand, grass, dirt, rock, snow) plus mud (id 6,
-//! for volume regions and scene elements to come). A scene element for materials would build a
-//! [`MaterialSet`] from its parameters; the bake takes any set.
+//! for volume regions and scene elements to come). A world's `materials` scene element overrides
+//! or extends it by name and its `decals` add decals ([`super::spec`]); the bake takes any set.
+//!
+//! An image material ([`Texture`]) reads its albedo, and optionally the `t` of its roughness and
+//! relief, from uploaded images ([`super::image`]) tiled over the projection planes instead of
+//! the pattern.
 
+use super::decal::Decal;
+use super::image::Image;
 use crate::terrain::hash::stream;
+use std::borrow::Cow;
+use std::sync::Arc;
 
-/// One procedural material.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One material: procedural, or with uploaded images in place of some of its patterns.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     /// Name, e.g. `"rock"`.
-    pub name: &'static str,
+    pub name: Cow<'static, str>,
     /// Albedo where the pattern is 0, sRGB-encoded, each in `[0, 1]`.
     pub base: [f32; 3],
     /// Albedo where the pattern is 1, sRGB-encoded.
@@ -35,6 +43,26 @@ pub struct Material {
     pub freq_log2: i32,
     /// Pattern octaves (before the per-face cut of octaves finer than half a texel).
     pub octaves: u32,
+    /// Uploaded images that replace the pattern's albedo, roughness or relief; `None` for a
+    /// procedural material.
+    pub texture: Option<Texture>,
+}
+
+/// The images of an image material, tiled over each tri-planar projection plane: the plane's
+/// coordinates in metres times `2^−repeat_log2` (wrapped to `[0, 1)`) are the image's `(u, v)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Texture {
+    /// Albedo image (R, G, B sRGB-encoded; alpha ignored), an index into [`MaterialSet::images`].
+    pub albedo: u32,
+    /// Roughness image (its R channel `r` gives roughness `roughness[0] + (roughness[1] −
+    /// roughness[0])·r`); `None`: the procedural pattern's.
+    pub roughness: Option<u32>,
+    /// Height image (its R channel `h` gives relief `relief_m·(h − ½)` metres); `None`: the
+    /// procedural pattern's.
+    pub height: Option<u32>,
+    /// One repeat is `2^repeat_log2` metres (`−2..=8`, so repeats line up with face anchors at
+    /// multiples of 256 m).
+    pub repeat_log2: i32,
 }
 
 /// The materials a bake reads, by id, and the world-space displacement noise.
@@ -50,6 +78,10 @@ pub struct MaterialSet {
     pub noise_freq_log2: i32,
     /// Displacement-noise octaves.
     pub noise_octaves: u32,
+    /// Decoded images the materials' textures and the decals index.
+    pub images: Vec<Arc<Image>>,
+    /// Decals, applied in order over the blended materials.
+    pub decals: Vec<Decal>,
 }
 
 /// Stream purpose of the Ptex patterns ([`crate::terrain::hash::stream`]); index = material id,
@@ -59,6 +91,12 @@ pub const PURPOSE_PTEX: u32 = 20;
 pub const NOISE_INDEX: u32 = 1000;
 /// Most materials a set may hold (ids are bytes; the device buffer is sized by this).
 pub const MAX_MATERIALS: usize = 64;
+/// Most decals a set may hold (each texel tests every decal's footprint).
+pub const MAX_DECALS: usize = 64;
+/// Shortest repeat of an image material: `2^−2` = 0.25 m.
+pub const MIN_REPEAT_LOG2: i32 = -2;
+/// Longest repeat of an image material: `2^8` = 256 m (the face anchor unit).
+pub const MAX_REPEAT_LOG2: i32 = 8;
 
 const fn m(
     name: &'static str,
@@ -70,7 +108,7 @@ const fn m(
     freq_log2: i32,
 ) -> Material {
     Material {
-        name,
+        name: Cow::Borrowed(name),
         base,
         tint,
         roughness,
@@ -78,6 +116,7 @@ const fn m(
         noise_m,
         freq_log2,
         octaves: 4,
+        texture: None,
     }
 }
 
@@ -160,6 +199,8 @@ impl MaterialSet {
             noise_seed: stream(seed, PURPOSE_PTEX, NOISE_INDEX),
             noise_freq_log2: -3,
             noise_octaves: 5,
+            images: Vec::new(),
+            decals: Vec::new(),
         }
     }
 
@@ -198,12 +239,28 @@ impl MaterialSet {
                 && (0.0..=100.0).contains(&m.relief_m)
                 && (0.0..=100.0).contains(&m.noise_m)
                 && freq.contains(&m.freq_log2)
-                && m.octaves <= 8;
+                && m.octaves <= 8
+                && m.texture.is_none_or(|t| {
+                    let known = |i: u32| (i as usize) < self.images.len();
+                    known(t.albedo)
+                        && t.roughness.is_none_or(known)
+                        && t.height.is_none_or(known)
+                        && (MIN_REPEAT_LOG2..=MAX_REPEAT_LOG2).contains(&t.repeat_log2)
+                });
             if !ok {
                 return Err(format!(
                     "material {i} ({}) has a parameter out of range",
                     m.name
                 ));
+            }
+        }
+        if self.decals.len() > MAX_DECALS {
+            return Err(format!("at most {MAX_DECALS} decals"));
+        }
+        for (i, d) in self.decals.iter().enumerate() {
+            let known = |k: u32| (k as usize) < self.images.len();
+            if !known(d.image) || !d.mask.is_none_or(known) {
+                return Err(format!("decal {i} names an image the set lacks"));
             }
         }
         Ok(())

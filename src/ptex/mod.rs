@@ -13,6 +13,9 @@
 //!   [`TILE_FACES`]² faces), stable face ids and the neighbour across every face edge;
 //! - [`material`]: the procedural ground materials (albedo, roughness, relief, noise
 //!   displacement), deterministic from their parameters;
+//! - [`image`]: uploaded PNGs decoded with their mip chains, sampled bilinearly;
+//! - [`decal`]: decals, top-down images baked over the materials;
+//! - [`spec`]: the `materials` and `decals` scene elements and the set a world's make;
 //! - [`noise`]: the hashed value noise the materials and the displacement read;
 //! - [`bake`]: the §4.7 bake of a face's interior texels (the CPU reference of
 //!   `shaders/ptex.wgsl`);
@@ -27,11 +30,14 @@
 pub mod bake;
 pub mod border;
 pub mod budget;
+pub mod decal;
 pub mod face;
+pub mod image;
 pub mod material;
 pub mod noise;
 pub mod pages;
 pub mod select;
+pub mod spec;
 
 pub use bake::{bake, bake_interior};
 pub use face::{Face, FaceSet, Link, Sample, Span, TILE_FACES, TILE_FACE_CELLS};

@@ -55,11 +55,12 @@ fn reordered<'a>(old: &'a [Element], new: &'a [Element]) -> Vec<&'a str> {
 }
 
 /// The dirty region of an edit from `old` to `new`: [`Dirty::Everything`] when the world
-/// settings differ; else the bounding boxes of the elements added (new box), removed (old box)
+/// settings or the `materials` elements differ (a material applies wherever its id is, so its
+/// `bbox` says nothing); else the bounding boxes of the elements added (new box), removed (old box)
 /// or changed — any field, or their order relative to the other surviving elements of their
 /// array — (old and new boxes); [`Dirty::Nothing`] when the scenes are equal.
 pub fn dirty_region(old: &Scene, new: &Scene) -> Dirty {
-    if old.world != new.world {
+    if old.world != new.world || old.materials != new.materials {
         return Dirty::Everything;
     }
     let mut rects: Vec<Rect> = Vec::new();
@@ -157,11 +158,17 @@ mod tests {
         assert_eq!(dirty_region(&a, &c), Dirty::Rects(vec![r(0.0, 1.0)]));
         // The same id in another array is another element.
         let d = scene(
-            json!({"regions": [el("a", 0.0, 1.0, 0), el("b", 5.0, 6.0, 0)],
-                             "materials": [el("d", 40.0, 41.0, 0)],
+            json!({"regions": [el("a", 0.0, 1.0, 0), el("b", 5.0, 6.0, 0), el("d", 40.0, 41.0, 0)],
                              "decals": [el("d", 20.0, 21.0, 0)]}),
         );
         assert_eq!(dirty_region(&a, &d), Dirty::Rects(vec![r(40.0, 41.0)]));
+        // A material applies wherever its id is: any change of one is everything.
+        let e = scene(
+            json!({"regions": [el("a", 0.0, 1.0, 0), el("b", 5.0, 6.0, 0)],
+                             "materials": [el("m", 40.0, 41.0, 0)],
+                             "decals": [el("d", 20.0, 21.0, 0)]}),
+        );
+        assert_eq!(dirty_region(&a, &e), Dirty::Everything);
     }
 
     #[test]

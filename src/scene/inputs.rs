@@ -33,6 +33,7 @@
 
 use super::{Element, Rect, Scene};
 use crate::authoring::RegionSpec;
+use crate::ptex::spec::PtexSpecs;
 use crate::subsurface::{Geology, StrataSpec};
 use crate::terrain::{Generator, TileKey, WorldParams};
 use crate::volume::element::VolumeSpec;
@@ -159,6 +160,7 @@ pub struct SceneInputs {
     regions: Vec<RegionInput>,
     strata: Vec<StrataInput>,
     volumes: Vec<VolumeInput>,
+    ptex: Arc<PtexSpecs>,
 }
 
 /// A volume region of the scene, parsed, with the digest that keys its solution.
@@ -281,7 +283,13 @@ impl SceneInputs {
             regions,
             strata,
             volumes,
+            ptex: Arc::new(PtexSpecs::new(&scene.materials, &scene.decals)),
         }
+    }
+
+    /// The parsed `materials` and `decals` elements the Ptex bake reads.
+    pub fn ptex(&self) -> &Arc<PtexSpecs> {
+        &self.ptex
     }
 
     /// The volume regions, in document order.
@@ -352,6 +360,7 @@ impl SceneInputs {
             regions: Vec::new(),
             strata: Vec::new(),
             volumes: Vec::new(),
+            ptex: Arc::default(),
         }
     }
 

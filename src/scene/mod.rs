@@ -22,6 +22,7 @@ pub use inputs::{
     StrataInput, VolumeInput, INPUTS_DOMAIN, TILE_CODE_VERSION,
 };
 
+use crate::ptex::spec::{MAX_DECAL_ELEMENTS, MAX_MATERIAL_ELEMENTS};
 use crate::terrain::plan::WORLD_LIMIT_CELLS;
 use crate::terrain::world::ParamError;
 use crate::terrain::WorldParams;
@@ -143,6 +144,7 @@ impl Scene {
     ///   its `samples` within the accepted maximum
     ///   ([`crate::authoring::RegionSpec::check_cost`]).
     pub fn check_costs(&self, before: Option<&Scene>) -> Result<(), SceneError> {
+        self.check_ptex(before)?;
         let limit = WORLD_LIMIT_CELLS * f64::from(self.world.cell_m);
         for (i, e) in self.regions.iter().enumerate() {
             if before.is_some_and(|b| b.regions.contains(e)) {
@@ -167,6 +169,84 @@ impl Scene {
                 .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
         }
         Ok(())
+    }
+
+    /// The limits of the `materials` and `decals` elements ([`crate::ptex::spec`]) for those
+    /// new or changed since `before`: each parses, material names are unique, and the arrays
+    /// hold at most [`MAX_MATERIAL_ELEMENTS`] and [`MAX_DECAL_ELEMENTS`].
+    fn check_ptex(&self, before: Option<&Scene>) -> Result<(), SceneError> {
+        use crate::ptex::spec::{DecalSpec, MaterialSpec};
+        for (kind, list, max) in [
+            ("materials", &self.materials, MAX_MATERIAL_ELEMENTS),
+            ("decals", &self.decals, MAX_DECAL_ELEMENTS),
+        ] {
+            let old = before.map(|b| {
+                if kind == "materials" {
+                    &b.materials
+                } else {
+                    &b.decals
+                }
+            });
+            if list.len() > max && old.is_none_or(|o| o.len() < list.len()) {
+                return Err(SceneError::new(
+                    format!("/{kind}/{max}"),
+                    format!("at most {max} {kind} elements"),
+                ));
+            }
+            let mut names = std::collections::HashSet::new();
+            for (i, e) in list.iter().enumerate() {
+                let at = |f: &str| format!("/{kind}/{i}{f}");
+                let fresh = old.is_none_or(|o| !o.contains(e));
+                if kind == "decals" {
+                    if fresh {
+                        DecalSpec::from_element(e)
+                            .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+                    }
+                    continue;
+                }
+                let parsed = MaterialSpec::from_element(e);
+                if fresh {
+                    parsed
+                        .clone()
+                        .map_err(|x| SceneError::new(at(&x.pointer), x.message))?;
+                }
+                if let Ok(m) = parsed {
+                    if !names.insert(m.name.clone()) && fresh {
+                        return Err(SceneError::new(
+                            at("/name"),
+                            format!("material {:?} is named by an earlier element", m.name),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The images the scene's `materials` and `decals` elements name (those that parse), with
+    /// the JSON pointer of each reference, in document order.
+    pub fn image_refs(&self) -> Vec<(String, [u8; 32])> {
+        use crate::ptex::spec::{DecalSpec, MaterialSpec};
+        let mut out = Vec::new();
+        for (i, e) in self.materials.iter().enumerate() {
+            if let Ok(m) = MaterialSpec::from_element(e) {
+                out.extend(
+                    m.images()
+                        .into_iter()
+                        .map(|(p, h)| (format!("/materials/{i}{p}"), h)),
+                );
+            }
+        }
+        for (i, e) in self.decals.iter().enumerate() {
+            if let Ok(d) = DecalSpec::from_element(e) {
+                out.extend(
+                    d.images()
+                        .into_iter()
+                        .map(|(p, h)| (format!("/decals/{i}{p}"), h)),
+                );
+            }
+        }
+        out
     }
 
     /// Checks the world settings and every element.
@@ -237,6 +317,122 @@ impl Scene {
 mod tests {
     use super::*;
     use serde_json::json;
+
+    /// An image hash (64 hex digits).
+    const H: &str = "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef";
+
+    fn refused(v: serde_json::Value) -> SceneError {
+        let scene = Scene::from_value(&v).expect("a stored scene reads");
+        let doc = v.to_string();
+        scene.check_costs(None).expect_err(&doc)
+    }
+
+    fn decal(extra: serde_json::Value) -> serde_json::Value {
+        let mut d = json!({"id": "d", "bbox": {"min": [-20, -20], "max": [20, 20]}, "image": H,
+                           "center": [0, 0], "size_m": [10, 10]});
+        for (k, v) in extra.as_object().expect("object") {
+            d[k] = v.clone();
+        }
+        json!({"decals": [d]})
+    }
+
+    #[test]
+    fn written_elements_are_refused_naming_the_field_and_the_limit() {
+        let cases = [
+            (
+                decal(json!({"size_m": [10, 5000]})),
+                "/decals/0/size_m/1",
+                "4096",
+            ),
+            (
+                decal(json!({"opacity": -0.5})),
+                "/decals/0/opacity",
+                "[0, 1]",
+            ),
+            (
+                decal(json!({"image": "xyz"})),
+                "/decals/0/image",
+                "64 lowercase hex",
+            ),
+            (
+                decal(json!({"projection": "side"})),
+                "/decals/0/projection",
+                "top_down",
+            ),
+            (
+                decal(json!({"center": [18, 0]})),
+                "/decals/0/bbox",
+                "must contain",
+            ),
+            (
+                decal(json!({"rotation_deg": 720})),
+                "/decals/0/rotation_deg",
+                "360",
+            ),
+            (decal(json!({"colour": 1})), "/decals/0", "unknown field"),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "Rock"}]}),
+                "/materials/0/name",
+                "a-z",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "octaves": 9}]}),
+                "/materials/0/octaves",
+                "8",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "base": [0.5, 2.0, 0.5]}]}),
+                "/materials/0/base/1",
+                "[0, 1]",
+            ),
+            (
+                json!({"materials": [{"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]},
+                       "name": "rock", "texture": {"albedo": H, "repeat_m": 512}}]}),
+                "/materials/0/texture/repeat_m",
+                "256",
+            ),
+            (
+                json!({"materials": [
+                    {"id": "a", "bbox": {"min": [0, 0], "max": [0, 0]}, "name": "moss"},
+                    {"id": "b", "bbox": {"min": [0, 0], "max": [0, 0]}, "name": "moss"}]}),
+                "/materials/1/name",
+                "earlier element",
+            ),
+        ];
+        for (v, pointer, limit) in cases {
+            let e = refused(v);
+            assert!(e.pointer.starts_with(pointer), "{pointer}: {e}");
+            assert!(e.message.contains(limit), "{pointer}: {e}");
+        }
+        let many: Vec<_> = (0..=MAX_DECAL_ELEMENTS)
+            .map(|i| {
+                let mut d = decal(json!({}))["decals"][0].clone();
+                d["id"] = json!(format!("d{i}"));
+                d
+            })
+            .collect();
+        let e = refused(json!({ "decals": many }));
+        assert_eq!(e.pointer, format!("/decals/{MAX_DECAL_ELEMENTS}"));
+    }
+
+    #[test]
+    fn a_stored_free_form_element_still_reads_and_leaves_the_default_set() {
+        // Before these elements had a schema any fields were kept; such a world loads, its
+        // pages bake with the default set, and an edit that leaves the element alone passes.
+        let v = json!({"decals": [{"id": "d", "bbox": {"min": [0, 0], "max": [1, 1]},
+                                   "anything": {"h": 3}}]});
+        let scene = Scene::from_value(&v).expect("reads");
+        assert_eq!(scene.check_costs(Some(&scene)), Ok(()));
+        let specs = crate::ptex::spec::PtexSpecs::new(&scene.materials, &scene.decals);
+        assert!(specs.is_empty());
+        assert_eq!(
+            specs.set(9, &std::collections::HashMap::new()),
+            crate::ptex::MaterialSet::default_ground(9)
+        );
+    }
 
     #[test]
     fn default_round_trips() {

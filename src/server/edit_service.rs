@@ -302,7 +302,7 @@ mod tests {
             .await
             .expect("world");
         let decal = |name: &str| -> json_patch::Patch {
-            serde_json::from_value(json!([{ "op": "add", "path": "/decals/-", "value":
+            serde_json::from_value(json!([{ "op": "add", "path": "/regions/-", "value":
                 { "id": name, "bbox": { "min": [0.0, 0.0], "max": [10.0, 10.0] } } }]))
             .expect("patch")
         };
@@ -320,7 +320,7 @@ mod tests {
                 })
                 .expect("the concurrent edit");
             }
-            let seen = scene["decals"].as_array().map_or(0, Vec::len);
+            let seen = scene["regions"].as_array().map_or(0, Vec::len);
             Ok((decal("mine"), (version, seen)))
         };
         let (applied, (built_on, seen)) = commit_on_head(&st, &id, None, &build)

@@ -93,6 +93,12 @@ pub mod code {
     /// A Ptex bake of more than `ptex_routes::MAX_REQUEST_TEXELS` texels (`res² ×` faces);
     /// `field` is `res`.
     pub const PTEX_TOO_LARGE: &str = "ptex_too_large";
+    /// An uploaded image is not a PNG within the limits (`ptex::image`); `field` is `body`.
+    pub const INVALID_IMAGE: &str = "invalid_image";
+    /// The world holds `store::MAX_WORLD_IMAGES` images already; `field` is `body`.
+    pub const TOO_MANY_IMAGES: &str = "too_many_images";
+    /// No image of that hash in the world; `field` is `hash`.
+    pub const IMAGE_NOT_FOUND: &str = "image_not_found";
 }
 
 /// An error answered to the client.

@@ -59,6 +59,12 @@ pub(super) fn store_error(e: StoreError) -> AppError {
             code::SCENE_TOO_LARGE,
             format!("the scene would be {bytes} bytes; the limit is {limit}"),
         ),
+        StoreError::TooManyImages { limit } => AppError::new(
+            StatusCode::CONFLICT,
+            code::TOO_MANY_IMAGES,
+            format!("a world holds at most {limit} images"),
+        )
+        .with_field("body"),
         StoreError::Duplicate(_) | StoreError::Backend(_) => {
             tracing::error!("scene store: {e}");
             AppError::internal("the scene store failed")

@@ -41,6 +41,7 @@ pub mod error;
 pub mod exports;
 pub mod geology;
 pub mod http;
+pub mod images;
 pub mod jobs;
 pub mod metrics;
 pub mod overrun;

@@ -17,7 +17,9 @@
 //! (their tiles are), so every request is charged to the client's rate limit; responses carry a
 //! content-hash `ETag` and the world products' caching headers.
 //!
-//! Baking runs on the CPU reference ([`crate::ptex::bake`]) in one synthesis slot, on a pool of
+//! Pages bake with the world version's materials and decals ([`world_materials`]: the default
+//! set for bare seeds and worlds without those elements), so they are a function of the seed,
+//! the scene version and the key. Baking runs on the CPU reference ([`crate::ptex::bake`]) in one synthesis slot, on a pool of
 //! [`bake_threads`] threads shared by every request, so bakes together take at most that many
 //! cores whatever the load; a bake whose request has gone (timed out, or its client left) while
 //! it waited for the pool is skipped. A bake already running ends first (the bake polls no
@@ -25,6 +27,7 @@
 
 use super::chunks::{check_chunk_bounds, mesh};
 use super::error::{code, AppError};
+use super::images::world_materials;
 use super::params::{check_bounds, parse_coord, parse_lod, parse_seams, percent_decode};
 use super::route_table::RouteTable;
 use super::routes::{segments, CachedProduct, PathSegments};
@@ -135,10 +138,10 @@ async fn bake_pack(
     classes: Vec<u8>,
     info: PackInfo,
     res: u32,
+    mats: Arc<MaterialSet>,
 ) -> Result<CachedProduct, AppError> {
     let run = move |cancel: &crate::terrain::cancel::Cancel| {
         cancel.check()?;
-        let mats = MaterialSet::default_ground(info.seed);
         let mut pages = Pages::default();
         bake(&set, &mats, res, &mut pages);
         Ok(CachedProduct::new(
@@ -187,7 +190,7 @@ async fn chunk_pages(
             let chunk = mesh(&state, &view, key).await?;
             check_cost(res, chunk.quads.len())?;
             let spacing_m = view.plan.lods[key.lod as usize].spacing_m;
-            let mats = MaterialSet::default_ground(view.plan.seed);
+            let mats = world_materials(&state, &view).await?;
             let set = chunk_faces(&chunk, spacing_m, &mats);
             let classes = chunk.classes.iter().map(|c| *c as u8).collect();
             let info = PackInfo {
@@ -196,7 +199,7 @@ async fn chunk_pages(
                 key: [key.x, key.y, key.z],
                 seed: view.plan.seed,
             };
-            bake_pack(set, classes, info, res).await
+            bake_pack(set, classes, info, res, mats).await
         })
         .await?;
     Ok(world.finish(product.respond(&headers)))
@@ -234,7 +237,7 @@ async fn tile_pages(
                 let s = if t == key { seams } else { [false; 4] };
                 tiles.push(state.tile(&view, t, s).await);
             }
-            let mats = MaterialSet::default_ground(view.plan.seed);
+            let mats = world_materials(&state, &view).await?;
             let set = faces.build(
                 |t| tiles.iter().find(|x| x.key == t).map(Arc::as_ref),
                 &mats,
@@ -245,7 +248,7 @@ async fn tile_pages(
                 key: [key.x, 0, key.z],
                 seed: view.plan.seed,
             };
-            bake_pack(set, Vec::new(), info, res).await
+            bake_pack(set, Vec::new(), info, res, mats).await
         })
         .await?;
     Ok(world.finish(product.respond(&headers)))

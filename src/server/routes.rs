@@ -52,6 +52,7 @@ pub fn table() -> RouteTable {
         .merge(super::exports::routes())
         .merge(super::chunks::routes())
         .merge(super::ptex_routes::routes())
+        .merge(super::images::routes())
         .merge(super::volume_routes::routes())
         .merge(super::geology::routes())
         .merge(super::stream_routes::router())

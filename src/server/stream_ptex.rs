@@ -5,7 +5,8 @@
 //! The faces of one tile are baked together: the tile's face plan ([`TileFacePlan`], with the
 //! seams the session drew it with) reads the tile and the neighbouring tiles its borders need,
 //! through [`AppState::tile`] (the stage cache), and [`bake_faces`] bakes only the batch's faces,
-//! so a page is byte for byte the one the HTTP route serves for that tile and `res`.
+//! so a page is byte for byte the one the HTTP route serves for that tile and `res` (with the
+//! same materials and decals, [`super::images::world_materials`]).
 
 use super::edit_service::StreamView;
 use super::params::check_bounds;
@@ -14,7 +15,7 @@ use crate::ptex::budget::FaceBounds;
 use crate::ptex::face::{FaceSet, TileFacePlan};
 use crate::ptex::noise::ANCHOR_M;
 use crate::ptex::select::bake_faces;
-use crate::ptex::{MaterialSet, Pages};
+use crate::ptex::Pages;
 use crate::stream::ptex::{PtexBaked, PtexBatch};
 use crate::stream::ptex_frame::{encode, PageRecord};
 use crate::stream::session::StreamError;
@@ -79,9 +80,14 @@ pub(super) async fn frame(
     }
     let batch = batch.clone();
     let version = view.version;
-    let seed = plan.seed;
+    let mats = super::images::world_materials(state, &view.view)
+        .await
+        .map_err(|e| StreamError {
+            code: "internal",
+            message: format!("ptex materials failed: {}", e.message),
+            field: None,
+        })?;
     tokio::task::spawn_blocking(move || {
-        let mats = MaterialSet::default_ground(seed);
         let res = batch.res();
         let mut all = Pages::default();
         all.reset(res, batch.pages.len());

@@ -36,6 +36,9 @@ pub struct WorldView {
     pub plan: Arc<WorldPlan>,
     /// The parsed scene's elements and digests.
     pub inputs: Arc<SceneInputs>,
+    /// The materials and decals its Ptex pages bake with, loaded on first use
+    /// ([`super::images::world_materials`]).
+    pub materials: tokio::sync::OnceCell<Arc<crate::ptex::MaterialSet>>,
 }
 
 impl WorldView {
@@ -45,6 +48,7 @@ impl WorldView {
             world: Some((id.to_owned(), version)),
             plan,
             inputs,
+            materials: tokio::sync::OnceCell::new(),
         }
     }
 
@@ -55,6 +59,7 @@ impl WorldView {
             world: None,
             plan,
             inputs,
+            materials: tokio::sync::OnceCell::new(),
         }
     }
 
@@ -92,6 +97,7 @@ impl WorldView {
             displacements: self.solved(st, self.inputs.regions_touching(key)).await,
             strata: self.inputs.strata_touching(self.plan.seed, key),
             volumes,
+            materials: None,
         }
     }
 
@@ -136,6 +142,15 @@ impl WorldView {
             .into_iter()
             .map(|v| v.spec)
             .collect();
+        // The Ptex pages of an export bake with the world's materials. If they cannot be loaded
+        // (a store failure) the pages fall back to the default set, and the failure is logged.
+        edits.materials = match super::images::world_materials(st, self).await {
+            Ok(m) => Some(m),
+            Err(e) => {
+                tracing::error!("export materials: {}", e.message);
+                None
+            }
+        };
         edits
     }
 
@@ -147,6 +162,7 @@ impl WorldView {
             displacements: self.solved(st, self.inputs.regions_meeting(rect)).await,
             strata: self.inputs.strata_meeting(self.plan.seed, rect),
             volumes: Vec::new(),
+            materials: None,
         }
     }
 }

@@ -47,6 +47,8 @@ pub const SNAPSHOT_EVERY: u64 = 32;
 pub const MAX_SCENE_BYTES: usize = 1 << 20;
 /// Most entries [`SceneStore::edit_log`] returns at once.
 pub const MAX_LOG_ENTRIES: usize = 1000;
+/// Most images one world may hold ([`SceneStore::put_image`]).
+pub const MAX_WORLD_IMAGES: usize = 32;
 
 /// What a token lets its holder do with one world. Ordered: each role includes the ones below.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -218,6 +220,12 @@ pub enum StoreError {
     /// The scene the edit would make is invalid.
     #[error("the resulting scene is invalid: {0}")]
     Invalid(SceneError),
+    /// The world holds [`MAX_WORLD_IMAGES`] images already.
+    #[error("a world holds at most {limit} images")]
+    TooManyImages {
+        /// [`MAX_WORLD_IMAGES`].
+        limit: usize,
+    },
     /// The scene the edit would make is larger than [`MAX_SCENE_BYTES`].
     #[error("the scene would be {bytes} bytes, more than the limit of {limit}")]
     TooLarge {
@@ -280,6 +288,15 @@ pub trait SceneStore: Send + Sync + std::fmt::Debug {
     /// All worlds, oldest first.
     async fn list_worlds(&self) -> Result<Vec<WorldMeta>, StoreError>;
 
+    /// Stores an image of world `id` under its content hash `hash` (blake3 of `png`, checked by
+    /// the caller); whether it was new (an image already stored is left as it is). Images are
+    /// never changed or removed, so a scene version that names one pins its bytes.
+    /// [`StoreError::TooManyImages`] beyond [`MAX_WORLD_IMAGES`] for the world.
+    async fn put_image(&self, id: &str, hash: [u8; 32], png: Vec<u8>) -> Result<bool, StoreError>;
+
+    /// The PNG bytes of world `id`'s image `hash`, if it is stored.
+    async fn image(&self, id: &str, hash: [u8; 32]) -> Result<Option<Vec<u8>>, StoreError>;
+
     /// Stores a new export job; [`StoreError::Duplicate`] if its id is taken,
     /// [`StoreError::WorldNotFound`] without its world.
     async fn insert_job(&self, job: &JobRecord) -> Result<(), StoreError>;
@@ -322,7 +339,29 @@ pub trait SceneStore: Send + Sync + std::fmt::Debug {
 pub fn canonical_scene(doc: &Value) -> Result<Value, StoreError> {
     let scene = Scene::from_value(doc).map_err(StoreError::Invalid)?;
     scene.check_costs(None).map_err(StoreError::Invalid)?;
+    check_images(&scene, &[])?;
     Ok(scene.to_value())
+}
+
+/// Checks that every image `scene` names is among `stored` (a new world has none: images are
+/// uploaded to a world that exists).
+///
+/// # Errors
+/// [`StoreError::Invalid`] naming the first reference to an image not stored.
+pub fn check_images(scene: &Scene, stored: &[[u8; 32]]) -> Result<(), StoreError> {
+    for (pointer, hash) in scene.image_refs() {
+        if !stored.contains(&hash) {
+            return Err(StoreError::Invalid(SceneError {
+                pointer,
+                message: format!(
+                    "no image {} is stored for this world: upload it first \
+                     (POST /v1/worlds/{{id}}/images)",
+                    crate::ptex::image::hash_hex(&hash)
+                ),
+            }));
+        }
+    }
+    Ok(())
 }
 
 /// Applies an edit's JSON Patch to the scene document `doc` whose parsed form is `old`, and

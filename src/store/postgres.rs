@@ -26,7 +26,7 @@ use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
     canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
     JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
-    MAX_LOG_ENTRIES,
+    MAX_LOG_ENTRIES, MAX_WORLD_IMAGES,
 };
 use async_trait::async_trait;
 use deadpool_postgres::{GenericClient, Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
@@ -157,6 +157,21 @@ fn meta_row(r: &Row) -> WorldMeta {
         created_at: r.get(4),
         updated_at: r.get(5),
     }
+}
+
+/// The hashes of world `id`'s stored images.
+async fn image_hashes(c: &impl GenericClient, id: &str) -> Result<Vec<[u8; 32]>, StoreError> {
+    let rows = c
+        .query("SELECT hash FROM images WHERE world_id = $1", &[&id])
+        .await
+        .map_err(db)?;
+    rows.iter()
+        .map(|r| {
+            r.get::<_, Vec<u8>>(0)
+                .try_into()
+                .map_err(|_| StoreError::Backend("an image hash is not 32 bytes".into()))
+        })
+        .collect()
 }
 
 async fn load_meta(c: &impl GenericClient, id: &str) -> Result<WorldMeta, StoreError> {
@@ -322,9 +337,10 @@ impl SceneStore for PostgresStore {
         let text: String = row.get(1);
         // Patching and validating a scene of up to a megabyte is CPU work: off the runtime's
         // threads, with the row still locked.
+        let images = image_hashes(&tx, id).await?;
         let owned = id.to_string();
         let edit = tokio::task::spawn_blocking(move || {
-            prepare_edit(&owned, version as u64, &text, expected, &patch)
+            prepare_edit(&owned, version as u64, &text, expected, &patch, &images)
         })
         .await
         .map_err(backend)??;
@@ -459,6 +475,46 @@ impl SceneStore for PostgresStore {
             .await
             .map_err(db)?;
         Ok(rows.iter().map(meta_row).collect())
+    }
+
+    async fn put_image(&self, id: &str, hash: [u8; 32], png: Vec<u8>) -> Result<bool, StoreError> {
+        let mut client = self.client().await?;
+        let tx = client.transaction().await.map_err(db)?;
+        // The world's row locked, so concurrent uploads count the images one at a time.
+        tx.query_opt("SELECT 1 FROM worlds WHERE id = $1 FOR UPDATE", &[&id])
+            .await
+            .map_err(db)?
+            .ok_or_else(|| StoreError::WorldNotFound(id.to_string()))?;
+        let known = image_hashes(&tx, id).await?;
+        if known.contains(&hash) {
+            return Ok(false);
+        }
+        if known.len() >= MAX_WORLD_IMAGES {
+            return Err(StoreError::TooManyImages {
+                limit: MAX_WORLD_IMAGES,
+            });
+        }
+        tx.execute(
+            "INSERT INTO images (world_id, hash, png, created_at) VALUES ($1, $2, $3, $4)",
+            &[&id, &hash.as_slice(), &png, &now()],
+        )
+        .await
+        .map_err(db)?;
+        tx.commit().await.map_err(db)?;
+        Ok(true)
+    }
+
+    async fn image(&self, id: &str, hash: [u8; 32]) -> Result<Option<Vec<u8>>, StoreError> {
+        let row = self
+            .client()
+            .await?
+            .query_opt(
+                "SELECT png FROM images WHERE world_id = $1 AND hash = $2",
+                &[&id, &hash.as_slice()],
+            )
+            .await
+            .map_err(db)?;
+        Ok(row.map(|r| r.get(0)))
     }
 
     async fn insert_job(&self, job: &JobRecord) -> Result<(), StoreError> {

@@ -2,7 +2,7 @@
 //! hash of the edit log, an edit's checks and new rows ([`prepare_edit`]) and the replay of the
 //! log from a snapshot ([`replay`]).
 
-use super::{patch_scene, EditApplied, StoreError, SNAPSHOT_EVERY};
+use super::{check_images, patch_scene, EditApplied, StoreError, SNAPSHOT_EVERY};
 use crate::scene::{dirty_region, Scene};
 use serde_json::Value;
 
@@ -47,7 +47,8 @@ pub(super) struct PreparedEdit {
 }
 
 /// Checks an edit of world `id`, whose latest version is `version` with stored scene `text`,
-/// against `expected` and applies `patch` ([`patch_scene`]). Pure: the caller writes the rows
+/// against `expected` and applies `patch` ([`patch_scene`]); every image the new scene names is
+/// among `images`, the world's stored images ([`check_images`]). Pure: the caller writes the rows
 /// in the transaction that read `version` and `text`, or writes nothing on error.
 ///
 /// # Errors
@@ -58,6 +59,7 @@ pub(super) fn prepare_edit(
     text: &str,
     expected: Option<u64>,
     patch: &json_patch::Patch,
+    images: &[[u8; 32]],
 ) -> Result<PreparedEdit, StoreError> {
     if let Some(expected) = expected {
         if expected != version {
@@ -72,6 +74,7 @@ pub(super) fn prepare_edit(
         StoreError::Backend(format!("stored scene of {id} v{version} is invalid: {e}"))
     })?;
     let (scene, new) = patch_scene(doc, &old, patch)?;
+    check_images(&new, images)?;
     let next = version + 1;
     Ok(PreparedEdit {
         version: next,

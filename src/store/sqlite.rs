@@ -24,16 +24,19 @@
 //!            , world_id, role TEXT, created_at)
 //! export_jobs (id TEXT PK, world_id, version, spec TEXT, status TEXT, done, total, error,
 //!            reserved, bytes, owner TEXT, lease_until_ms, created_at, finished_at)  -- v2
+//! images    (world_id, hash BLOB  -- blake3 of png
+//!            , png BLOB, created_at; PK (world_id, hash))  -- v3
 //! ```
 //!
-//! Version 2 added `export_jobs` ([`super::jobs`]); a version 1 file is migrated when opened.
+//! Version 2 added `export_jobs` ([`super::jobs`]), version 3 `images` (uploaded PNGs for
+//! materials and decals); an older file is migrated when opened.
 
 use super::jobs::{refusal, Held, CHARGE_SQL};
 use super::shared::{backend, now, parse_json, prepare_edit, replay};
 use super::{
     canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
     JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
-    MAX_LOG_ENTRIES,
+    MAX_LOG_ENTRIES, MAX_WORLD_IMAGES,
 };
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
@@ -100,8 +103,21 @@ CREATE INDEX IF NOT EXISTS export_jobs_unfinished ON export_jobs (lease_until_ms
 PRAGMA user_version = 2;
 ";
 
+/// Migration to schema version 3: uploaded images (the PostgreSQL store's
+/// `migrations/postgres/0003_images.sql`).
+const MIGRATION_3: &str = "
+CREATE TABLE IF NOT EXISTS images (
+    world_id TEXT NOT NULL REFERENCES worlds(id),
+    hash BLOB NOT NULL,
+    png BLOB NOT NULL,
+    created_at INTEGER NOT NULL,
+    PRIMARY KEY (world_id, hash)
+) STRICT, WITHOUT ROWID;
+PRAGMA user_version = 3;
+";
+
 /// The schema version this build writes.
-const SCHEMA_VERSION: i64 = 2;
+const SCHEMA_VERSION: i64 = 3;
 
 /// The SQLite [`SceneStore`]; cheap to clone.
 #[derive(Clone)]
@@ -174,8 +190,10 @@ impl SqliteStore {
                 "the database has schema version {version}; this build knows {SCHEMA_VERSION}"
             )));
         }
-        conn.execute_batch(&format!("BEGIN IMMEDIATE; {SCHEMA} {MIGRATION_2} COMMIT;"))
-            .map_err(backend)?;
+        conn.execute_batch(&format!(
+            "BEGIN IMMEDIATE; {SCHEMA} {MIGRATION_2} {MIGRATION_3} COMMIT;"
+        ))
+        .map_err(backend)?;
         Ok(Self {
             inner: Arc::new(Inner {
                 path,
@@ -398,7 +416,8 @@ impl SceneStore for SqliteStore {
                 .optional()
                 .map_err(backend)?
                 .ok_or_else(|| StoreError::WorldNotFound(id.clone()))?;
-            let edit = prepare_edit(&id, version as u64, &text, expected, &patch)?;
+            let images = image_hashes(tx, &id)?;
+            let edit = prepare_edit(&id, version as u64, &text, expected, &patch, &images)?;
             let t = now();
             tx.execute(
                 "INSERT INTO edits (world_id, version, patch, scene_hash, created_at)
@@ -522,6 +541,43 @@ impl SceneStore for SqliteStore {
                 .map_err(backend)?;
             let rows = stmt.query_map([], meta_row).map_err(backend)?;
             rows.map(|r| r.map_err(backend)).collect()
+        })
+        .await
+    }
+
+    async fn put_image(&self, id: &str, hash: [u8; 32], png: Vec<u8>) -> Result<bool, StoreError> {
+        let id = id.to_string();
+        self.write(move |tx| {
+            load_meta(tx, &id)?;
+            let known = image_hashes(tx, &id)?;
+            if known.contains(&hash) {
+                return Ok(false);
+            }
+            if known.len() >= MAX_WORLD_IMAGES {
+                return Err(StoreError::TooManyImages {
+                    limit: MAX_WORLD_IMAGES,
+                });
+            }
+            tx.execute(
+                "INSERT INTO images (world_id, hash, png, created_at) VALUES (?1, ?2, ?3, ?4)",
+                params![id, hash.as_slice(), png, now()],
+            )
+            .map_err(backend)?;
+            Ok(true)
+        })
+        .await
+    }
+
+    async fn image(&self, id: &str, hash: [u8; 32]) -> Result<Option<Vec<u8>>, StoreError> {
+        let id = id.to_string();
+        self.read(move |c| {
+            c.query_row(
+                "SELECT png FROM images WHERE world_id = ?1 AND hash = ?2",
+                params![id, hash.as_slice()],
+                |r| r.get(0),
+            )
+            .optional()
+            .map_err(backend)
         })
         .await
     }
@@ -676,6 +732,26 @@ impl SceneStore for SqliteStore {
 }
 
 /// Inserts the row of `job`; [`StoreError::Duplicate`] if its id is taken.
+/// The hashes of world `id`'s stored images.
+fn image_hashes(conn: &Connection, id: &str) -> Result<Vec<[u8; 32]>, StoreError> {
+    let mut stmt = conn
+        .prepare_cached("SELECT hash FROM images WHERE world_id = ?1")
+        .map_err(backend)?;
+    let rows = stmt
+        .query_map(params![id], |r| r.get::<_, Vec<u8>>(0))
+        .map_err(backend)?;
+    let mut out = Vec::new();
+    for row in rows {
+        let bytes = row.map_err(backend)?;
+        out.push(
+            bytes
+                .try_into()
+                .map_err(|_| StoreError::Backend("an image hash is not 32 bytes".into()))?,
+        );
+    }
+    Ok(out)
+}
+
 fn insert_job_row(tx: &rusqlite::Transaction<'_>, job: &JobRecord) -> Result<(), StoreError> {
     let inserted = tx
         .execute(

@@ -2,9 +2,9 @@
 
 Generated path parameters almost never name a world, region or job that exists, so without
 these hooks every world route would answer 404 before its handler ran. run.sh creates a world
-(with an authored region) and an export job and passes their ids in the environment; here each
-generated `id`, `rid` and `job` is replaced by the existing one half of the time, so both the
-handlers and the 404 answers are exercised. Glb uploads (`model/gltf-binary`) are sent as the
+(with an authored region and an uploaded image) and an export job and passes their ids in the
+environment; here each generated `id`, `rid`, `job` and image `hash` is replaced by the existing
+one half of the time, so both the handlers and the 404 answers are exercised. Glb uploads (`model/gltf-binary`) are sent as the
 raw bytes generated for them, as `application/octet-stream` bodies are.
 """
 
@@ -17,6 +17,7 @@ EXISTING = {
     "id": os.environ.get("STRATA_WORLD_ID"),
     "rid": os.environ.get("STRATA_REGION_ID"),
     "job": os.environ.get("STRATA_JOB_ID"),
+    "hash": os.environ.get("STRATA_IMAGE_HASH"),
 }
 
 

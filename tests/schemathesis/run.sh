@@ -4,7 +4,8 @@
 # content type or body the specification does not allow.
 #
 # The server runs on a free loopback port with a temporary data directory and an admin token;
-# a world (with an authored region and a subsurface) and an export job are created first, so
+# a world (with an authored region, a subsurface and an uploaded image) and an export job are
+# created first, so
 # the hooks (hooks.py) can send path parameters that resolve. Schemathesis is installed, pinned, into a
 # virtual environment under the build directory. The budget is bounded by --max-examples per
 # operation (SCHEMATHESIS_MAX_EXAMPLES, default 60: a few thousand cases in all).
@@ -66,11 +67,18 @@ curl -fs -XPOST "$base/v1/worlds/$world/edits" "${auth[@]}" \
   -H 'Content-Type: application/json-patch+json' \
   -d '[{"op":"add","path":"/regions/-","value":{"id":"peak","bbox":{"min":[0,0],"max":[256,256]},"samples":65,"ops":[{"op":"elevation","shape":{"point":[128,128]},"elevation_m":400,"radius_m":6}]}},{"op":"add","path":"/strata/-","value":{"id":"rock","bbox":{"min":[-500,-500],"max":[500,500]},"preset":"B3"}}]' \
   >/dev/null
+# A 1 × 1 PNG for the image routes (uploadWorldImage, getWorldImage).
+python3 -c 'import struct, sys, zlib
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d))
+sys.stdout.buffer.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 6, 0, 0, 0))
+  + chunk(b"IDAT", zlib.compress(b"\x00\x40\x80\xc0\xff")) + chunk(b"IEND", b""))' >"$work/pixel.png"
+image="$(curl -fs -XPOST "$base/v1/worlds/$world/images" "${auth[@]}" -H 'Content-Type: image/png' \
+  --data-binary @"$work/pixel.png" | json_field '["image"]')"
 job="$(curl -fs -XPOST "$base/v1/worlds/$world/exports" "${auth[@]}" -H 'Content-Type: application/json' \
   -d '{"lod":4,"region":[0,0,1,1],"products":["tiles"],"formats":["bin"]}' | json_field '["job"]')"
 
 status=0
-STRATA_WORLD_ID="$world" STRATA_REGION_ID=peak STRATA_JOB_ID="$job" \
+STRATA_WORLD_ID="$world" STRATA_REGION_ID=peak STRATA_JOB_ID="$job" STRATA_IMAGE_HASH="$image" \
   SCHEMATHESIS_HOOKS=tests/schemathesis/hooks.py \
   "$venv/bin/schemathesis" --no-color run api/openapi.yaml \
   --url "$base" \

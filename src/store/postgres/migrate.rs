@@ -16,6 +16,10 @@ const MIGRATIONS: &[(i64, &str)] = &[
         2,
         include_str!("../../../migrations/postgres/0002_export_jobs.sql"),
     ),
+    (
+        3,
+        include_str!("../../../migrations/postgres/0003_images.sql"),
+    ),
 ];
 
 /// The key of the transaction-level advisory lock taken while migrating (`"strata"` in ASCII).
