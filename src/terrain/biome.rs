@@ -203,29 +203,17 @@ impl BiomeMapPlan {
                 let run = &cols[a..b];
                 let mut best = [f32::INFINITY; GRID_LANES];
                 let mut win = [0usize; GRID_LANES];
-                let mut candidates = [Nearest {
-                    cell: (0, 0),
-                    pos: (0.0, 0.0),
-                }; 25];
-                let mut c = 0;
-                for j in cz - RANGE..=cz + RANGE {
-                    let row = (j - cache.j0) as usize * cache.w;
-                    for i in cx - RANGE..=cx + RANGE {
-                        let (sx, sz) = cache.pos[row + (i - cache.i0) as usize];
-                        candidates[c] = Nearest {
-                            cell: (i, j),
-                            pos: (sx, sz),
-                        };
-                        for (l, &(x, _)) in run.iter().enumerate() {
-                            let dx = sx - x;
-                            let dz = sz - z;
-                            let d = dx * dx + dz * dz;
-                            if d < best[l] {
-                                best[l] = d;
-                                win[l] = c;
-                            }
+                let candidates = cache.candidates(cx, cz);
+                for (c, cand) in candidates.iter().enumerate() {
+                    let (sx, sz) = cand.pos;
+                    for (l, &(x, _)) in run.iter().enumerate() {
+                        let dx = sx - x;
+                        let dz = sz - z;
+                        let d = dx * dx + dz * dz;
+                        if d < best[l] {
+                            best[l] = d;
+                            win[l] = c;
                         }
-                        c += 1;
                     }
                 }
                 out.extend(win[..run.len()].iter().map(|&w| candidates[w]));
@@ -281,6 +269,27 @@ impl SeedCache {
         Some(Self { i0, j0, w, pos })
     }
 
+    /// The 25 candidate seeds of lattice cell `(cx, cz)`, in [`BiomeMapPlan::nearest`]'s order
+    /// (rows, then columns).
+    fn candidates(&self, cx: i32, cz: i32) -> [Nearest; 25] {
+        let mut out = [Nearest {
+            cell: (0, 0),
+            pos: (0.0, 0.0),
+        }; 25];
+        let mut c = 0;
+        for j in cz - RANGE..=cz + RANGE {
+            let row = (j - self.j0) as usize * self.w;
+            for i in cx - RANGE..=cx + RANGE {
+                out[c] = Nearest {
+                    cell: (i, j),
+                    pos: self.pos[row + (i - self.i0) as usize],
+                };
+                c += 1;
+            }
+        }
+        out
+    }
+
     /// Same result as [`BiomeMapPlan::nearest`], with seeds from the cache.
     fn nearest(&self, plan: &BiomeMapPlan, x_m: f32, z_m: f32) -> Nearest {
         plan.nearest_with(x_m, z_m, |i, j| {
@@ -322,28 +331,16 @@ impl SeedCache {
         }
         let mut best = [f32::INFINITY; MAX];
         let mut win = [0u8; MAX];
-        let mut candidates = [Nearest {
-            cell: (0, 0),
-            pos: (0.0, 0.0),
-        }; 25];
-        let mut c = 0;
-        for j in cz - RANGE..=cz + RANGE {
-            let row = (j - self.j0) as usize * self.w;
-            for i in cx - RANGE..=cx + RANGE {
-                let (sx, sz) = self.pos[row + (i - self.i0) as usize];
-                candidates[c] = Nearest {
-                    cell: (i, j),
-                    pos: (sx, sz),
-                };
-                for l in 0..MAX {
-                    let dx = sx - xs[l];
-                    let dz = sz - zs[l];
-                    let d = dx * dx + dz * dz;
-                    let closer = d < best[l];
-                    best[l] = if closer { d } else { best[l] };
-                    win[l] = if closer { c as u8 } else { win[l] };
-                }
-                c += 1;
+        let candidates = self.candidates(cx, cz);
+        for (c, cand) in candidates.iter().enumerate() {
+            let (sx, sz) = cand.pos;
+            for l in 0..MAX {
+                let dx = sx - xs[l];
+                let dz = sz - zs[l];
+                let d = dx * dx + dz * dz;
+                let closer = d < best[l];
+                best[l] = if closer { d } else { best[l] };
+                win[l] = if closer { c as u8 } else { win[l] };
             }
         }
         let biomes = candidates.map(|cand| plan.biome_of(&cand));
