@@ -12,8 +12,9 @@
 //! (`target/viewer-{arch,no-arch}.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
 //! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
-//! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0`: pages arrive and every
-//! face of the held tiles is drawn with one, and the pictures differ clearly over the terrain
+//! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0` (both `?splat=0`): pages
+//! arrive and every face of the held tiles is drawn with one, and the Ptex picture has many times
+//! the texture detail (mean |Laplacian| of the luminance) of the vertex colours' over the terrain
 //! (`target/viewer-{ptex,ptex-off}.png`). A second test runs `tests/js/tools.mjs`: the hill tool's
 //! profile read back from the tiles, the curve tool's drag of an arch's control point, and the
 //! texture splatting against the vertex colours and under the Ptex pages

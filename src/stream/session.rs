@@ -387,6 +387,16 @@ pub async fn run<S: StreamSource>(
         version,
         queue_frames: QUEUE_FRAMES,
         credits: v2.then_some(0),
+        generator: v2.then_some(current.plan().params.generator),
+        biomes: v2.then(|| {
+            current
+                .plan()
+                .params
+                .biomes
+                .iter()
+                .map(|b| b.name.clone())
+                .collect()
+        }),
     };
     if !outbox.push(text(&hello)).await {
         return;

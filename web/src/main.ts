@@ -20,6 +20,7 @@ import type { Decoded, ToWorker } from "./decoded";
 import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
 import { CurveTool } from "./curveTool";
+import { biomeTints, DEFAULT_BIOMES } from "./biomes";
 import { buildMesh, disposeMesh, hasMarks, sharedMaterial, updateHidden } from "./mesh";
 import { addSplat } from "./splat";
 import { PtexStore } from "./ptex";
@@ -71,6 +72,7 @@ interface StrataState {
   flySpeed: number; // how fast WASD flies now, metres per second (it grows with the height above the ground)
   horizon: number; // the horizon line's row as a fraction of the picture's height from the top (0 when above it)
   protocol: string; // the stream protocol the server speaks
+  biomes: string[]; // the world's biomes in the order of the tiles' weights (the stream's hello)
   ptex: boolean; // whether the view asks for Ptex pages (?ptex=0 turns them off)
   ptexFrames: number; // Ptex frames (kind 3) received since the page loaded
   ptexPages: number; // pages in them
@@ -124,6 +126,7 @@ const state: StrataState = {
   flySpeed: 0,
   horizon: 0,
   protocol: "",
+  biomes: [],
   ptex: false,
   ptexFrames: 0,
   ptexPages: 0,
@@ -302,7 +305,7 @@ function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
   removeMesh(key);
   disposeRetiring(key);
-  const mesh = buildMesh(tile, covered, ptexOn ? ptex.material(key, tile.spacing) : sharedMaterial(splatOn));
+  const mesh = buildMesh(tile, covered, tints, ptexOn ? ptex.material(key, tile.spacing) : sharedMaterial(splatOn));
   terrain.add(mesh);
   held.set(key, { mesh, tile, version, marked: hasMarks(tile) });
   state.held = held.size;
@@ -432,7 +435,10 @@ const addressKey = (a: number[]) => chunkKey(a[0], a[1], a[2], a[3]);
 let socketOpen = false;
 let lastCell = "";
 let lastSent = 0;
-let biomes: string[] = ["arctic", "tundra", "grassland", "desert"];
+// The world's biomes in the order of the tiles' weights, and their tints: the stream's `hello`
+// names them (./biomes.ts).
+let biomes: string[] = DEFAULT_BIOMES;
+let tints = biomeTints(biomes);
 
 /** The stream's URL (protocol v2), over `ws:`/`wss:` or, to read a refusal's JSON, `http:`/`https:`. */
 function streamUrl(http = false): string {
@@ -629,6 +635,11 @@ function onControl(m: any): void {
     case "hello":
       state.version = m.version;
       state.protocol = m.protocol;
+      if (Array.isArray(m.biomes)) {
+        biomes = m.biomes;
+        tints = biomeTints(biomes);
+      }
+      state.biomes = biomes;
       break;
     case "view":
       state.views++;
@@ -676,7 +687,6 @@ function onControl(m: any): void {
 fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
   .then((info) => {
-    if (Array.isArray(info?.world?.biomes)) biomes = info.world.biomes;
     if (typeof info?.limits?.max_river_lod === "number") {
       const sea = info?.world?.sea_level_m;
       rivers.enable(info.limits.max_river_lod, typeof sea === "number" ? sea : undefined);
