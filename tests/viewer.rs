@@ -9,7 +9,9 @@
 //! `tests/js/errors.mjs` opens a bad seed and an unknown world: the server's error is shown and
 //! the viewer stops reconnecting; `tests/js/volume.mjs` opens worlds with and without the arch
 //! volume element: chunk frames arrive for the arch and it shows
-//! (`target/viewer-{arch,no-arch}.png`); `tests/js/cave.mjs` opens worlds with and without a
+//! (`target/viewer-{arch,no-arch}.png`), and, without Ptex pages, the chunks' pixels (found by
+//! hiding the chunks) change with the texture splatting against `?splat=0`
+//! (`target/viewer-arch-{splat,flat}.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
 //! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
 //! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0` (both `?splat=0`): pages

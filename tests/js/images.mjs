@@ -45,3 +45,27 @@ export function meanAbsLaplacian(img, top, mask) {
   }
   return n ? sum / n : 0;
 }
+
+/** Mean |Δ| per RGB channel of two decoded PNGs of the same size over the pixels of `mask` (one
+ * byte a pixel); 0 when the mask is empty. */
+export function meanRgbDiffIn(a, b, mask) {
+  let sum = 0;
+  let n = 0;
+  for (let p = 0; p < mask.length; p++) {
+    if (!mask[p]) continue;
+    for (let c = 0; c < 3; c++) sum += Math.abs(a.data[4 * p + c] - b.data[4 * p + c]);
+    n += 3;
+  }
+  return n ? sum / n : 0;
+}
+
+/** The pixels where two decoded PNGs of the same size differ in luminance by more than `min`
+ * (one byte a pixel, 1 where they do): with a picture and the same picture without some
+ * objects, the objects' pixels. */
+export function differingPixels(a, b, min) {
+  const la = luminance(a);
+  const lb = luminance(b);
+  const mask = new Uint8Array(la.length);
+  for (let p = 0; p < la.length; p++) mask[p] = Math.abs(la[p] - lb[p]) > min ? 1 : 0;
+  return mask;
+}

@@ -91,7 +91,7 @@ try {
     const hidden = await page.evaluate(() => window.__strata.frames);
     await page.waitForFunction((n) => window.__strata.frames >= n + 2, hidden, { timeout: 60_000, polling: 100 });
     const s = await page.evaluate(() => {
-      const { moveBy, shore, showWater, ...rest } = window.__strata;
+      const { moveBy, shore, showWater, showChunks, ...rest } = window.__strata;
       return rest;
     });
     states[name] = s;

@@ -104,7 +104,7 @@ async function settle(page, extra = () => true) {
 
 const stateOf = (page) =>
   page.evaluate(() => {
-    const { moveBy, shore, showWater, handlesOnScreen, ...rest } = window.__strata;
+    const { moveBy, shore, showWater, showChunks, handlesOnScreen, ...rest } = window.__strata;
     return rest;
   });
 

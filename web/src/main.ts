@@ -55,6 +55,8 @@ interface StrataState {
   shore: (cols: number, rows: number) => ShoreSamples;
   /** Shows or hides the water (sheets and ribbons): lets tests see what the water covers. */
   showWater: (on: boolean) => void;
+  /** Shows or hides the volume chunks: lets tests find the chunks' pixels. */
+  showChunks: (on: boolean) => void;
   tool: string; // the edit tool in use, "" when not editing
   edits: number; // edits the server acknowledged (durable)
   pendingEdits: number; // edits sent and not yet acknowledged
@@ -109,6 +111,7 @@ const state: StrataState = {
   moveBy: () => {},
   shore: () => ({ cols: 0, rows: 0, wet: [], x: [], z: [], span: [], ground: [], level: [] }),
   showWater: () => {},
+  showChunks: () => {},
   tool: "",
   edits: 0,
   pendingEdits: 0,
@@ -401,7 +404,8 @@ function* heldTiles(): Iterable<Tile> {
 // ---- volume chunks -----------------------------------------------------------------------------------
 // Where the world's surface is not a heightfield (volume regions), the server streams chunk meshes;
 // the tiles hide the vertices the chunks override.
-const chunks = new ChunkLayer(scene);
+const chunks = new ChunkLayer(scene, splatOn);
+state.showChunks = (on) => chunks.show(on);
 let wantedChunks = new Set<string>();
 /** Whether a held chunk gives the surface at world (x, y, z): the tiles hide marked vertices there. */
 const covered = (x: number, y: number, z: number) => chunks.covers(x, y, z, cellM);
