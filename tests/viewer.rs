@@ -11,7 +11,8 @@
 //! volume element: chunk frames arrive for the arch and it shows
 //! (`target/viewer-{arch,no-arch}.png`), and, without Ptex pages, the chunks' pixels (found by
 //! hiding the chunks) change with the texture splatting against `?splat=0`
-//! (`target/viewer-arch-{splat,flat}.png`); `tests/js/cave.mjs` opens worlds with and without a
+//! (`target/viewer-arch-{splat,flat}.png`) and, once every quad of the chunks has its Ptex page,
+//! with the pages against `?ptex=0` (`target/viewer-arch-ptex.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
 //! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
 //! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0` (both `?splat=0`): pages

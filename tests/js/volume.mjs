@@ -21,6 +21,13 @@
 // picture: mean |Δ RGB| at least SPLAT_DIFF_MIN (tests/js/images.mjs). Both runs draw the same
 // tiles and chunks from the same camera, so chunks drawn with their vertex colours in both give
 // 0.00 there; the splat draws them with the Ptex bake's palette and its patterns instead.
+//
+// The chunks' Ptex pages (web/src/ptex.ts, one page per quad): the arch's world opened once more
+// with Ptex pages and without the splat (`&splat=0`, `<with>-ptex.png`) waits until every quad
+// of the held chunks is drawn with a page (`__strata.ptexChunkFaces` = `chunkQuads`) and fails
+// unless, over the chunks' pixels (as above, in this run and the vertex-colour one), the picture
+// differs from the vertex colours' (`&ptex=0&splat=0`) by at least PTEX_DIFF_MIN: with no page
+// applied the chunks would be drawn with their vertex colours in both, 0.00 there.
 import { launch } from "./chromium.mjs";
 import { differingPixels, meanRgbDiffIn } from "./images.mjs";
 import { PNG } from "pngjs";
@@ -50,6 +57,11 @@ const CHUNK_PIXELS_MIN = 2000;
 // detail from this distance: their finest octaves are a metre wide and faint; the chunks' own
 // facets and lighting dominate the Laplacian, 4.6 with and without.)
 const SPLAT_DIFF_MIN = 3;
+// Over the chunks' pixels, the Ptex pages against the vertex colours: mean |Δ RGB| at least this.
+// Seen: 9.61 over 18 125 pixels (every one of the 3 022 quads paged); 0.00 when no page is drawn
+// on the chunks (both runs then draw their vertex colours), so a third of the difference seen
+// fails pages missing on two thirds of them.
+const PTEX_DIFF_MIN = 3;
 
 async function create(scene) {
   const r = await fetch(`http://${addr}/v1/worlds`, {
@@ -92,6 +104,7 @@ try {
     ["arch without chunks", withArch, withPath.replace(/\.png$/, "-no-chunks.png")],
     ["arch splat", withArch, withPath.replace(/\.png$/, "-splat.png")],
     ["arch flat", withArch, withPath.replace(/\.png$/, "-flat.png")],
+    ["arch ptex", withArch, withPath.replace(/\.png$/, "-ptex.png")],
   ]) {
     const page = await browser.newPage();
     const consoleErrors = [];
@@ -103,23 +116,32 @@ try {
       "arch without chunks": "&chunk_rings=",
       "arch splat": "&ptex=0",
       "arch flat": "&ptex=0&splat=0",
+      "arch ptex": "&splat=0",
     };
     const url = `http://${addr}/?world=${id}&x=32&z=24&dist=170&pitch=22&rings=1,1,1,1${extra[name] ?? ""}`;
     await page.goto(url, { waitUntil: "load" });
+    // The Ptex run also waits for every quad of the held chunks to be drawn with a page.
+    const paged = name === "arch ptex";
     await page
-      .waitForFunction(() => window.__strata && window.__strata.idle && window.__strata.inFlight === 0, null, {
-        timeout: 240_000,
-        polling: 250,
-      })
-      .catch(() => failures.push(`${name}: the view did not finish streaming`));
+      .waitForFunction(
+        (paged) => {
+          const s = window.__strata;
+          if (!s || !s.idle || s.inFlight !== 0) return false;
+          return !paged || (s.chunkQuads > 0 && s.ptexChunkFaces >= s.chunkQuads);
+        },
+        paged,
+        { timeout: 240_000, polling: 250 },
+      )
+      .catch(() => failures.push(`${name}: the view${paged ? " and its chunks' pages" : ""} did not finish streaming`));
     await page.waitForTimeout(1500);
     const s = await page.evaluate(() => ({ ...window.__strata }));
     console.log(
-      `${name}: ${s.tiles} tiles, ${s.chunks} chunk frames, ${s.heldChunks} chunks held, ` +
+      `${name}: ${s.tiles} tiles, ${s.chunks} chunk frames, ${s.heldChunks} chunks held (${s.chunkQuads} quads, ` +
+        `${s.ptexChunkFaces} with a Ptex page, ${s.ptexChunkDetail} in detail), ` +
         `${s.hiddenTiles} tiles with vertices hidden under chunks, errors ${s.errors.join(" | ")}`,
     );
     if (s.errors.length) failures.push(`${name}: the viewer shows errors: ${s.errors.join(" | ")}`);
-    const chunked = name === "arch" || name === "arch splat" || name === "arch flat";
+    const chunked = name.startsWith("arch") && name !== "arch without chunks";
     if (chunked && !(s.chunks > 0 && s.heldChunks > 0)) failures.push(`${name}: no chunk frames arrived for the arch`);
     if (chunked && !(s.hiddenTiles > 0)) failures.push(`${name}: no tile hides the vertices the arch's chunks draw`);
     if (!chunked && s.hiddenTiles !== 0) failures.push(`${name}: ${s.hiddenTiles} tiles hide vertices with no chunk held`);
@@ -127,7 +149,7 @@ try {
     if (consoleErrors.length) failures.push(`${name}: console errors:\n  ${consoleErrors.join("\n  ")}`);
     mkdirSync(dirname(path), { recursive: true });
     shots[name] = await page.screenshot({ path });
-    if (name === "arch splat" || name === "arch flat") {
+    if (name === "arch splat" || name === "arch flat" || name === "arch ptex") {
       // The same picture without the chunks: where it differs are the chunks' pixels.
       await page.evaluate(() => window.__strata.showChunks(false));
       const drawn = await page.evaluate(() => window.__strata.frames);
@@ -165,6 +187,20 @@ if (shots["arch splat"] && shots["arch flat"] && hidden["arch splat"] && hidden[
   if (!(diff >= SPLAT_DIFF_MIN)) failures.push(`the splat does not show on the chunks: mean |Δ RGB| ${diff.toFixed(2)} < ${SPLAT_DIFF_MIN}`);
 } else {
   failures.push("the splat and vertex-colour pictures of the arch were not all taken");
+}
+if (shots["arch ptex"] && shots["arch flat"] && hidden["arch ptex"] && hidden["arch flat"]) {
+  const paged = PNG.sync.read(shots["arch ptex"]);
+  const flat = PNG.sync.read(shots["arch flat"]);
+  const inPaged = differingPixels(paged, PNG.sync.read(hidden["arch ptex"]), CHUNK_PIXEL_MIN);
+  const inFlat = differingPixels(flat, PNG.sync.read(hidden["arch flat"]), CHUNK_PIXEL_MIN);
+  const mask = inPaged.map((v, p) => v & inFlat[p]);
+  const count = mask.reduce((n, v) => n + v, 0);
+  const diff = meanRgbDiffIn(paged, flat, mask);
+  console.log(`chunks' pixels: ${count}; Ptex pages against vertex colours there: mean |Δ RGB| ${diff.toFixed(2)} (at least ${PTEX_DIFF_MIN})`);
+  if (count < CHUNK_PIXELS_MIN) failures.push(`the chunks cover ${count} pixels with Ptex, fewer than ${CHUNK_PIXELS_MIN}`);
+  if (!(diff >= PTEX_DIFF_MIN)) failures.push(`the Ptex pages do not show on the chunks: mean |Δ RGB| ${diff.toFixed(2)} < ${PTEX_DIFF_MIN}`);
+} else {
+  failures.push("the Ptex and vertex-colour pictures of the arch were not all taken");
 }
 if (failures.length) {
   console.error(`volume test failed:\n- ${failures.join("\n- ")}`);

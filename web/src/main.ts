@@ -7,7 +7,8 @@
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
 // it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by
-// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts), ?splat=0
+// default the view asks for them, the tiles' faces' and the chunks' quads', and draws them with
+// their albedo, see ./ptex.ts), ?splat=0
 // no texture splatting (faces without a page are then drawn with the vertex colours, see ./splat.ts).
 // Without ?x=&z= the view opens on land with relief near the origin. With a world and a token the
 // edit tools are shown (see ./edit.ts). Rivers are drawn as ribbons along the server's river lines
@@ -81,6 +82,9 @@ interface StrataState {
   ptexApplied: number; // pages written into the texture arrays for faces of held tiles
   ptexFaces: number; // faces of the view's tiles drawn with a page
   ptexDetail: number; // of those, faces drawn with a detail page (16² or finer)
+  ptexChunkFaces: number; // faces (quads) of the held chunks drawn with a page
+  ptexChunkDetail: number; // of those, faces drawn with a detail page
+  chunkQuads: number; // quads of the held chunks (their Ptex faces)
   hiddenTiles: number; // held tiles with vertices hidden under held volume chunks
   splat: boolean; // whether the tiles are drawn with texture splatting (?splat=0 turns it off)
   curveHandles: number; // control-point handles the curve tool shows
@@ -136,6 +140,9 @@ const state: StrataState = {
   ptexApplied: 0,
   ptexFaces: 0,
   ptexDetail: 0,
+  ptexChunkFaces: 0,
+  ptexChunkDetail: 0,
+  chunkQuads: 0,
   hiddenTiles: 0,
   splat: false,
   curveHandles: 0,
@@ -404,7 +411,7 @@ function* heldTiles(): Iterable<Tile> {
 // ---- volume chunks -----------------------------------------------------------------------------------
 // Where the world's surface is not a heightfield (volume regions), the server streams chunk meshes;
 // the tiles hide the vertices the chunks override.
-const chunks = new ChunkLayer(scene, splatOn);
+const chunks = new ChunkLayer(scene, splatOn, ptexOn ? ptex : undefined);
 state.showChunks = (on) => chunks.show(on);
 let wantedChunks = new Set<string>();
 /** Whether a held chunk gives the surface at world (x, y, z): the tiles hide marked vertices there. */
@@ -415,6 +422,7 @@ let hiddenStale = false;
 
 function setHeldChunks(n: number): void {
   state.heldChunks = n;
+  state.chunkQuads = chunks.quadCount();
   hiddenStale = true;
 }
 
@@ -528,7 +536,8 @@ function sendView(force = false): void {
   const y = camera.position.y;
   lastForward.copy(forward);
   const view: Record<string, unknown> = { type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings };
-  if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M };
+  // `chunks`: the volume chunks' quads get pages too (./chunk.ts draws them).
+  if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M, chunks: true };
   send(view);
 }
 
@@ -609,7 +618,11 @@ function onDecoded(m: Decoded): void {
       // Not counted in flight: the view reply's `sending` counts tiles and chunks only.
       state.ptexFrames++;
       state.ptexPages += m.pages.count;
-      ptex.put(m.pages, (tile) => wanted.has(tile));
+      ptex.put(
+        m.pages,
+        (tile) => wanted.has(tile),
+        (chunk) => wantedChunks.has(chunk) && chunks.holds(chunk),
+      );
       updatePtexStats();
       return;
     }
@@ -631,6 +644,8 @@ function updatePtexStats(): void {
   state.ptexApplied = ptex.applied;
   state.ptexFaces = s.faces;
   state.ptexDetail = s.detail;
+  state.ptexChunkFaces = s.chunkFaces;
+  state.ptexChunkDetail = s.chunkDetail;
 }
 
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
@@ -652,6 +667,7 @@ function onControl(m: any): void {
       pruneToView();
       wantedChunks = new Set((m.chunks ?? []).map(addressKey));
       setHeldChunks(chunks.keep(wantedChunks));
+      ptex.keepChunks(wantedChunks);
       updatePtexStats();
       break;
     case "idle":
@@ -670,6 +686,7 @@ function onControl(m: any): void {
         wantedChunks.delete(addressKey(a));
         setHeldChunks(chunks.remove(addressKey(a)));
       }
+      ptex.keepChunks(wantedChunks);
       break;
     case "ptex":
       // The session's page budget; the faces listed left their detail level (their slots are free).
@@ -1032,7 +1049,9 @@ function frame(now: number): void {
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · chunks ${state.heldChunks} · v${state.version}`,
-      ptexOn ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · ${state.ptexFrames} frames` : "ptex off (?ptex=0)",
+      ptexOn
+        ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · chunks ${state.ptexChunkFaces} of ${state.chunkQuads} quads · ${state.ptexFrames} frames`
+        : "ptex off (?ptex=0)",
       `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
       `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–6: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");
