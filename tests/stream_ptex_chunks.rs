@@ -3,7 +3,7 @@
 //! with the arch volume element: a client that asks for them (`ptex.chunks`) gets a vista page
 //! for every face (surface-nets quad) of every chunk it holds, in frames naming chunk faces,
 //! within its session's budget, byte for byte the pages of the HTTP chunk route at the same
-//! version, and detail pages for the nearest; an edit that sends a chunk again sends its faces'
+//! version, and detail pages for the nearest, 16² at most (a quad is one lattice cell); an edit that sends a chunk again sends its faces'
 //! pages again at the new version; a client that does not ask gets tile faces only; a budget
 //! that cannot hold a chunk's faces holds none of them and says so once.
 
@@ -14,7 +14,7 @@ use std::time::Duration;
 use strata::edits::{synthesize, TileEdits};
 use strata::ptex::budget::page_bytes;
 use strata::stream::protocol::ChunkFrame;
-use strata::stream::ptex::{chunk_frame_quads, PageFace, PtexSettings};
+use strata::stream::ptex::{chunk_frame_quads, PageFace, PtexSettings, CHUNK_FACE_MAX_LEVEL};
 use strata::stream::ptex_frame::{decode, PtexFrame};
 use strata::terrain::{TileKey, WorldParams, WorldPlan};
 use strata::volume::chunk::ChunkKey;
@@ -232,10 +232,21 @@ async fn every_face_of_the_held_chunks_gets_the_http_routes_page_within_the_budg
         );
     }
     // Detail pages for the nearest faces, chunk faces among them (the camera is 40 m above the
-    // arch, within every level's threshold).
+    // arch, within every level's threshold), at 16² only (a quad's finest level); the finer
+    // levels go to tile faces.
     assert!(
         pages.iter().any(|p| p.2 > 0),
         "some chunk face gets a detail page"
+    );
+    assert!(
+        pages.iter().all(|p| p.2 <= CHUNK_FACE_MAX_LEVEL),
+        "a chunk face holds 16² at most"
+    );
+    assert!(
+        got.ptex
+            .iter()
+            .any(|f| f.level > CHUNK_FACE_MAX_LEVEL && !f.records.is_empty()),
+        "the finer levels go to tile faces"
     );
     // Within the budget: what the client holds (the last `ptex` message's count) and every page
     // it received fit the session's bytes.

@@ -14,7 +14,8 @@
 //! (`target/viewer-arch-{splat,flat}.png`) and, once every quad of the chunks has its Ptex page,
 //! with the pages against `?ptex=0` (`target/viewer-arch-ptex.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
-//! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
+//! picture (without Ptex pages, whose budget the cave's chunks share with the tiles) changes
+//! inside its projected box only (`target/viewer-{cave,no-cave}.png`);
 //! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0` (both `?splat=0`): pages
 //! arrive and every face of the held tiles is drawn with one, and the Ptex picture has many times
 //! the texture detail (mean |Laplacian| of the luminance) of the vertex colours' over the terrain

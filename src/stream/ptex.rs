@@ -25,6 +25,7 @@
 //!   budget and by the same rules, from the chunk frame on ([`PtexSession::hold_chunk`]); a
 //!   chunk sent again (an edit touched it) queues its faces' pages again, all of them, as its
 //!   quads may have changed (a new quad count releases the old faces and holds the new ones).
+//!   A chunk's face holds detail levels up to [`CHUNK_FACE_MAX_LEVEL`] (16²) only.
 //!   A batch holds faces of one kind, tile or chunk (their frames' records differ).
 //!
 //! Each session's budget is granted from the server's ([`PtexPool`]) when the client opts in and
@@ -52,6 +53,11 @@ pub const DEFAULT_SERVER_BUDGET_MB: u64 = 1024;
 /// Default distance thresholds of the detail levels 16² … 256², metres: a face may hold level
 /// `l` only nearer than `thresholds_m[l − 1]`.
 pub const DEFAULT_THRESHOLDS_M: [f32; 5] = [2048.0, 1024.0, 512.0, 256.0, 128.0];
+/// The finest detail level of a volume chunk's face (16²): a surface-nets quad is one lattice
+/// cell, and 16 texels a cell is the density of a tile face's finest page (256² over 16 cells).
+/// A finer page would spend a tile face's worth of texels on one cell, and the near chunks'
+/// quads would take the finest levels' few slots from the ground around them.
+pub const CHUNK_FACE_MAX_LEVEL: u8 = 1;
 /// Largest `far_m` of a view's `ptex`, metres.
 pub const MAX_FAR_M: f64 = 65_536.0;
 
@@ -352,10 +358,16 @@ impl PtexSession {
         self.chunk_pages
     }
 
-    /// Holds a new face: its index and vista page, or false when it does not fit the budget.
+    /// Holds a new face: its index and vista page, or false when it does not fit the budget. A
+    /// chunk's face is held up to [`CHUNK_FACE_MAX_LEVEL`].
     fn hold_new(&mut self, face: PageFace, seams: [bool; 4]) -> Option<u32> {
         let i = self.free.pop_first().unwrap_or(self.faces.len() as u32);
-        if self.budget.hold(i as usize).is_err() {
+        let max = if face.is_chunk() {
+            CHUNK_FACE_MAX_LEVEL
+        } else {
+            5
+        };
+        if self.budget.hold_up_to(i as usize, max).is_err() {
             self.free.insert(i);
             return None;
         }
