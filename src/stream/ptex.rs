@@ -250,11 +250,6 @@ impl PtexBatch {
     pub fn res(&self) -> u32 {
         LEVEL_RES[self.level as usize]
     }
-
-    /// Whether the pages are chunk faces'.
-    pub fn chunk_faces(&self) -> bool {
-        self.pages.first().is_some_and(|p| p.face.is_chunk())
-    }
 }
 
 /// A baked batch: the frame and the bounds of each page's face (from its samples).
