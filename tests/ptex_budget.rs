@@ -275,3 +275,58 @@ fn held_faces_come_and_go_within_the_budget_and_evicted_slots_are_announced() {
     }
     assert!(tight.hold(faces.len()).is_err());
 }
+
+/// A face held up to a level (a volume chunk's quad, held up to 16²) never holds a finer one:
+/// the next nearest faces take the finer levels' slots, and it takes a slot of its highest level
+/// when its distance allows; without the cap the same face takes the finest slot.
+#[test]
+fn a_face_held_up_to_a_level_leaves_the_finer_slots_to_the_next_nearest() {
+    let view = View {
+        eye: [0.0, 10.0, 0.0],
+        forward: [1.0, 0.0, 0.0],
+        cos_half_angle: 0.5,
+        far_m: 5000.0,
+    };
+    // Faces in a row ahead of the eye, face 0 nearest.
+    let faces: Vec<FaceBounds> = (0..40)
+        .map(|i| FaceBounds {
+            centre: [20.0 + 10.0 * i as f32, 10.0, 0.0],
+            radius: 1.0,
+        })
+        .collect();
+    let cfg = BudgetConfig {
+        // Every face's vista page and exactly one slot at the finest level.
+        bytes: faces.len() as u64 * page_bytes(8) + 5 * page_bytes(256),
+        thresholds_m: [4000.0, 3000.0, 2000.0, 1000.0, 500.0],
+    };
+    let run = |cap: u8| {
+        let mut b = Budget::empty(cfg);
+        b.hold_up_to(0, cap).expect("fits");
+        for f in 1..faces.len() {
+            b.hold(f).expect("fits");
+        }
+        b.update(&faces, &view);
+        b
+    };
+    let free = run(5);
+    assert_eq!(free.capacity()[4], 1, "one 256² slot");
+    assert_eq!(
+        free.level(0),
+        5,
+        "uncapped, the nearest face takes the finest slot"
+    );
+    let capped = run(1);
+    assert_eq!(
+        capped.level(0),
+        1,
+        "capped at 16², the nearest face holds 16²"
+    );
+    assert_eq!(capped.level(1), 5, "the next nearest takes the finest slot");
+    for f in 0..faces.len() {
+        assert!(capped.level(f) <= if f == 0 { 1 } else { 5 });
+    }
+    // The other faces hold what they held without the cap, one place nearer.
+    let levels = |b: &Budget| (1..faces.len()).map(|f| b.level(f)).collect::<Vec<_>>();
+    let shifted: Vec<u8> = (0..faces.len() - 1).map(|f| free.level(f)).collect();
+    assert_eq!(levels(&capped), shifted);
+}

@@ -62,6 +62,7 @@ async fn v1_is_the_default_and_v2_is_asked_for_by_query() {
     let hello = json_text(&next(&mut v1, Duration::from_secs(30)).await).expect("hello");
     assert_eq!(hello["protocol"], "strata.stream.v1");
     assert!(hello.get("credits").is_none(), "v1's hello is unchanged");
+    assert!(hello.get("biomes").is_none(), "v1's hello is unchanged");
     // A v1 session refuses v2 messages, naming the field.
     send(&mut v1, json!({"type": "credit", "frames": 1})).await;
     let m = json_text(&next(&mut v1, Duration::from_secs(30)).await).expect("error");
@@ -73,6 +74,12 @@ async fn v1_is_the_default_and_v2_is_asked_for_by_query() {
     let hello = json_text(&next(&mut v2, Duration::from_secs(30)).await).expect("hello");
     assert_eq!(hello["protocol"], "strata.stream.v2");
     assert_eq!(hello["credits"], 0);
+    // The biomes the tiles' weights mean: a bare seed is the default world, earth-1's six.
+    let params = strata::terrain::WorldParams::default();
+    let names: Vec<&str> = params.biomes.iter().map(|b| b.name.as_str()).collect();
+    assert_eq!(hello["generator"], "earth-1");
+    assert_eq!(hello["biomes"], json!(names));
+    assert_eq!(names.len(), 6, "earth-1's default biome set");
     // A bad protocol is a 400 naming the field, before the upgrade.
     let (status, body) =
         strata::bench::http::http(&addr, "GET", "/v1/seeds/3/stream?protocol=9", &[], "")

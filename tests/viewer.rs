@@ -9,11 +9,16 @@
 //! `tests/js/errors.mjs` opens a bad seed and an unknown world: the server's error is shown and
 //! the viewer stops reconnecting; `tests/js/volume.mjs` opens worlds with and without the arch
 //! volume element: chunk frames arrive for the arch and it shows
-//! (`target/viewer-{arch,no-arch}.png`); `tests/js/cave.mjs` opens worlds with and without a
+//! (`target/viewer-{arch,no-arch}.png`), and, without Ptex pages, the chunks' pixels (found by
+//! hiding the chunks) change with the texture splatting against `?splat=0`
+//! (`target/viewer-arch-{splat,flat}.png`) and, once every quad of the chunks has its Ptex page,
+//! with the pages against `?ptex=0` (`target/viewer-arch-ptex.png`); `tests/js/cave.mjs` opens worlds with and without a
 //! `strata` element whose cave opens to the ground: chunk frames arrive for the cave and the
-//! picture changes inside its projected box only (`target/viewer-{cave,no-cave}.png`);
-//! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0`: pages arrive and every
-//! face of the held tiles is drawn with one, and the pictures differ clearly over the terrain
+//! picture (without Ptex pages, whose budget the cave's chunks share with the tiles) changes
+//! inside its projected box only (`target/viewer-{cave,no-cave}.png`);
+//! `tests/js/ptex.mjs` opens seed 42 with Ptex pages and with `?ptex=0` (both `?splat=0`): pages
+//! arrive and every face of the held tiles is drawn with one, and the Ptex picture has many times
+//! the texture detail (mean |Laplacian| of the luminance) of the vertex colours' over the terrain
 //! (`target/viewer-{ptex,ptex-off}.png`). A second test runs `tests/js/tools.mjs`: the hill tool's
 //! profile read back from the tiles, the curve tool's drag of an arch's control point, and the
 //! texture splatting against the vertex colours and under the Ptex pages

@@ -28,6 +28,12 @@
 //!   the faces in the slots beyond the new count fall back to the vista level (listed in the
 //!   next update's `to_vista`). Faces never held (indices past the held ones, or released) are
 //!   not classified.
+//! - **Highest level of a face**: a face may be held with a highest detail level
+//!   ([`Budget::hold_up_to`]; 5 by default): the classification passes it over at the levels
+//!   above, where the next nearest faces take the slots, and it may take a slot from its highest
+//!   level down. A volume chunk's face is one lattice cell, a sixteenth of a tile face's side:
+//!   held up to 16² it has the texel density of a tile face's 256² page, and it does not take a
+//!   finer level's few slots from the tile faces around it.
 //!
 //! Pure and deterministic: the same faces and views give the same assignments.
 
@@ -117,6 +123,8 @@ pub struct Budget {
     owners: [Vec<Option<u32>>; 5],
     /// Whether each face is held.
     held: Vec<bool>,
+    /// The highest detail level each face may hold.
+    max_level: Vec<u8>,
     /// Faces held.
     held_count: usize,
     /// Faces that fell back to the vista level outside an update (their slots shrank away).
@@ -145,6 +153,7 @@ impl Budget {
             slot: vec![u32::MAX; faces],
             owners: std::array::from_fn(|l| vec![None; capacity[l]]),
             held: vec![true; faces],
+            max_level: vec![5; faces],
             held_count: faces,
             evicted: Vec::new(),
         })
@@ -160,6 +169,7 @@ impl Budget {
             slot: Vec::new(),
             owners: std::array::from_fn(|l| vec![None; capacity[l]]),
             held: Vec::new(),
+            max_level: Vec::new(),
             held_count: 0,
             evicted: Vec::new(),
         }
@@ -194,6 +204,15 @@ impl Budget {
     /// # Errors
     /// The vista pages of the held faces and this one would exceed the budget.
     pub fn hold(&mut self, f: usize) -> Result<(), BudgetError> {
+        self.hold_up_to(f, 5)
+    }
+
+    /// [`Budget::hold`] a face that may hold detail levels up to `max_level` only (1..=5; 0: the
+    /// vista level only). Holding a held face changes nothing.
+    ///
+    /// # Errors
+    /// The vista pages of the held faces and this one would exceed the budget.
+    pub fn hold_up_to(&mut self, f: usize, max_level: u8) -> Result<(), BudgetError> {
         if self.is_held(f) {
             return Ok(());
         }
@@ -207,10 +226,12 @@ impl Budget {
         }
         if f >= self.level.len() {
             self.level.resize(f + 1, 0);
+            self.max_level.resize(f + 1, 5);
             self.slot.resize(f + 1, u32::MAX);
             self.held.resize(f + 1, false);
         }
         self.held[f] = true;
+        self.max_level[f] = max_level.min(5);
         self.held_count += 1;
         self.recapacity();
         Ok(())
@@ -322,16 +343,23 @@ impl Budget {
             }
         }
         visible.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        // From the highest level down, the nearest faces not yet placed that may hold the level
+        // take its slots while their distance is below its threshold (the list is sorted by
+        // distance: past the threshold, so are the rest).
         let mut wanted = vec![0u8; self.level.len()];
-        let mut next = 0usize;
+        let mut placed = vec![false; visible.len()];
         for l in (0..5).rev() {
+            let level = l as u8 + 1;
             let mut taken = 0;
-            while next < visible.len()
-                && taken < self.capacity[l]
-                && visible[next].0 <= self.config.thresholds_m[l]
-            {
-                wanted[visible[next].1 as usize] = l as u8 + 1;
-                next += 1;
+            for (k, &(d, f)) in visible.iter().enumerate() {
+                if taken >= self.capacity[l] || d > self.config.thresholds_m[l] {
+                    break;
+                }
+                if placed[k] || self.max_level[f as usize] < level {
+                    continue;
+                }
+                wanted[f as usize] = level;
+                placed[k] = true;
                 taken += 1;
             }
         }

@@ -42,7 +42,7 @@ use super::noise::ANCHOR_M;
 use crate::terrain::plan::TILE_QUADS;
 use crate::terrain::tile::{Tile, TileKey};
 use crate::terrain::TILE_VERTS;
-use crate::volume::chunk::ChunkMesh;
+use crate::volume::chunk::{ChunkKey, ChunkMesh};
 use crate::volume::mesh::{Neighbor, NONE};
 use std::collections::BTreeMap;
 
@@ -270,6 +270,16 @@ impl TileFaceKey {
         let t = TILE_FACES as i64;
         (self.fz.rem_euclid(t) * t + self.fx.rem_euclid(t)) as u32
     }
+}
+
+/// A face of a volume chunk: quad `quad` of chunk `chunk` (face id = quad index,
+/// `api/ptex_pages_v1.md`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ChunkFaceKey {
+    /// The chunk.
+    pub chunk: ChunkKey,
+    /// The quad's index in the chunk's `quads`.
+    pub quad: u32,
 }
 
 /// The step across edge `k` of a tile face, `(dx, dz)` in faces.

@@ -6,17 +6,20 @@
 //! seams the session drew it with) reads the tile and the neighbouring tiles its borders need,
 //! through [`AppState::tile`] (the stage cache), and [`bake_faces`] bakes only the batch's faces,
 //! so a page is byte for byte the one the HTTP route serves for that tile and `res` (with the
-//! same materials and decals, [`super::images::world_materials`]).
+//! same materials and decals, [`super::images::world_materials`]). So are the faces of one
+//! volume chunk: the chunk is meshed as its routes mesh it ([`super::chunks::mesh`], the same
+//! tiles and solved regions) and its quads' faces ([`chunk_faces`]) baked as
+//! `GET …/ptex/{lod}/{x}/{y}/{z}?res=` bakes them.
 
 use super::edit_service::StreamView;
 use super::params::check_bounds;
 use super::AppState;
 use crate::ptex::budget::FaceBounds;
-use crate::ptex::face::{FaceSet, TileFacePlan};
+use crate::ptex::face::{chunk_faces, FaceSet, TileFacePlan};
 use crate::ptex::noise::ANCHOR_M;
 use crate::ptex::select::bake_faces;
 use crate::ptex::Pages;
-use crate::stream::ptex::{PtexBaked, PtexBatch};
+use crate::stream::ptex::{PageFace, PtexBaked, PtexBatch};
 use crate::stream::ptex_frame::{encode, PageRecord};
 use crate::stream::session::StreamError;
 use crate::terrain::TileKey;
@@ -52,6 +55,13 @@ fn bounds(set: &FaceSet, f: usize) -> FaceBounds {
     }
 }
 
+/// The faces a batch's pages are baked from: a tile's face plan and the tiles it reads, or a
+/// chunk's faces.
+enum Job {
+    Tile(TileFacePlan, Vec<Arc<crate::terrain::Tile>>),
+    Chunk(FaceSet),
+}
+
 /// Bakes `batch` from the world `view` into a frame of kind 3.
 pub(super) async fn frame(
     state: &AppState,
@@ -60,12 +70,29 @@ pub(super) async fn frame(
 ) -> Result<PtexBaked, StreamError> {
     let plan = view.view.plan.clone();
     let max_lod = plan.lods.len() as u32 - 1;
-    // The batch's pages by tile (and the seams it was drawn with), in batch order within each.
+    let mats = super::images::world_materials(state, &view.view)
+        .await
+        .map_err(|e| StreamError {
+            code: "internal",
+            message: format!("ptex materials failed: {}", e.message),
+            field: None,
+        })?;
+    // The batch's pages by tile (and the seams it was drawn with) or by chunk, in batch order
+    // within each.
     let mut by_tile: BTreeMap<(TileKey, [bool; 4]), Vec<usize>> = BTreeMap::new();
+    let mut by_chunk: BTreeMap<(u32, i64, i64, i64), Vec<usize>> = BTreeMap::new();
     for (k, p) in batch.pages.iter().enumerate() {
-        by_tile.entry((p.face.tile(), p.seams)).or_default().push(k);
+        match p.face {
+            PageFace::Tile(f) => by_tile.entry((f.tile(), p.seams)).or_default().push(k),
+            PageFace::Chunk(f) => {
+                let c = f.chunk;
+                by_chunk.entry((c.lod, c.x, c.y, c.z)).or_default().push(k);
+            }
+        }
     }
-    let mut jobs = Vec::new();
+    // Each job: a set of faces (built on the blocking pool) and the batch's pages in it, by
+    // their face's index in the set.
+    let mut jobs: Vec<(Job, Vec<(usize, usize)>)> = Vec::new();
     for ((key, seams), pages) in by_tile {
         let faces = TileFacePlan::new(key, seams, max_lod);
         let mut tiles = Vec::new();
@@ -76,17 +103,50 @@ pub(super) async fn frame(
             let s = if t == key { seams } else { [false; 4] };
             tiles.push(state.tile(&view.view, t, s).await);
         }
-        jobs.push((faces, tiles, pages));
+        let chosen = pages
+            .iter()
+            .filter_map(|&k| match batch.pages[k].face {
+                PageFace::Tile(f) => Some((k, f.id() as usize)),
+                PageFace::Chunk(_) => None,
+            })
+            .collect();
+        jobs.push((Job::Tile(faces, tiles), chosen));
     }
-    let batch = batch.clone();
-    let version = view.version;
-    let mats = super::images::world_materials(state, &view.view)
+    for ((lod, x, y, z), pages) in by_chunk {
+        let key = crate::volume::chunk::ChunkKey { lod, x, y, z };
+        let mesh = super::chunks::mesh(state, &view.view, key)
+            .await
+            .map_err(|e| StreamError {
+                code: "internal",
+                message: format!("meshing chunk {lod}/{x}/{y}/{z} for its Ptex pages failed: {e}"),
+                field: None,
+            })?;
+        let spacing_m = plan.lods[lod as usize].spacing_m;
+        let set = tokio::task::spawn_blocking({
+            let mats = mats.clone();
+            move || chunk_faces(&mesh, spacing_m, &mats)
+        })
         .await
         .map_err(|e| StreamError {
             code: "internal",
-            message: format!("ptex materials failed: {}", e.message),
+            message: format!("ptex chunk faces failed: {e}"),
             field: None,
         })?;
+        // A quad past the chunk's (meshed again since the session held its faces) has no page
+        // here: its chunk's fresh frame holds the new faces.
+        let chosen = pages
+            .iter()
+            .filter_map(|&k| match batch.pages[k].face {
+                PageFace::Chunk(f) if (f.quad as usize) < set.faces.len() => {
+                    Some((k, f.quad as usize))
+                }
+                _ => None,
+            })
+            .collect();
+        jobs.push((Job::Chunk(set), chosen));
+    }
+    let batch = batch.clone();
+    let version = view.version;
     tokio::task::spawn_blocking(move || {
         let res = batch.res();
         let mut all = Pages::default();
@@ -100,17 +160,17 @@ pub(super) async fn frame(
         ];
         let per = all.texels_per_face();
         let mut some = Pages::default();
-        for (faces, tiles, pages) in jobs {
-            let set = faces.build(
-                |t| tiles.iter().find(|x| x.key == t).map(Arc::as_ref),
-                &mats,
-            );
-            let chosen: Vec<usize> = pages
-                .iter()
-                .map(|&k| batch.pages[k].face.id() as usize)
-                .collect();
+        for (job, pages) in jobs {
+            let set = match job {
+                Job::Tile(faces, tiles) => faces.build(
+                    |t| tiles.iter().find(|x| x.key == t).map(Arc::as_ref),
+                    &mats,
+                ),
+                Job::Chunk(set) => set,
+            };
+            let chosen: Vec<usize> = pages.iter().map(|&(_, f)| f).collect();
             bake_faces(&set, &mats, res, &chosen, &mut some);
-            for (j, &k) in pages.iter().enumerate() {
+            for (j, &(k, _)) in pages.iter().enumerate() {
                 let (src, dst) = (j * per..(j + 1) * per, k * per);
                 all.albedo[dst..dst + per].copy_from_slice(&some.albedo[src.clone()]);
                 all.normal[dst..dst + per].copy_from_slice(&some.normal[src.clone()]);

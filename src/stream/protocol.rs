@@ -281,6 +281,13 @@ pub enum ServerMessage {
         /// v2: the credits the client holds now (0: nothing is sent before a `credit`).
         #[serde(skip_serializing_if = "Option::is_none")]
         credits: Option<u32>,
+        /// v2: the world's generator (`earth-1` or `classic`) at `version`.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        generator: Option<crate::terrain::Generator>,
+        /// v2: the names of the world's biomes at `version`, in the order of the tiles' biome
+        /// weights (the `bin` tile carries only their count).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        biomes: Option<Vec<String>>,
     },
     /// The view was accepted; `tiles` (and in v2 `chunks`) will arrive nearest first.
     View {

@@ -19,15 +19,23 @@
 //!   while tiles or chunks wait, every frame spending a credit;
 //! - an **edit** queues again the vista and detail pages of exactly the faces whose reach (the
 //!   face's footprint grown by its tile's input margin and one lattice cell, which its border
-//!   texels read from the neighbours) meets the dirty region.
+//!   texels read from the neighbours) meets the dirty region;
+//! - with `chunks: true` in the view's `ptex`, the faces of the volume chunks the session sends
+//!   (one per surface-nets quad, [`crate::ptex::face::chunk_faces`]) are held too, in the same
+//!   budget and by the same rules, from the chunk frame on ([`PtexSession::hold_chunk`]); a
+//!   chunk sent again (an edit touched it) queues its faces' pages again, all of them, as its
+//!   quads may have changed (a new quad count releases the old faces and holds the new ones).
+//!   A chunk's face holds detail levels up to [`CHUNK_FACE_MAX_LEVEL`] (16²) only.
+//!   A batch holds faces of one kind, tile or chunk (their frames' records differ).
 //!
 //! Each session's budget is granted from the server's ([`PtexPool`]) when the client opts in and
 //! given back when the session ends or a view leaves `ptex` out.
 
 use crate::ptex::budget::{Bake, Budget, BudgetConfig, FaceBounds, View, LEVEL_RES};
-use crate::ptex::face::{TileFaceKey, TILE_FACES};
+use crate::ptex::face::{ChunkFaceKey, TileFaceKey, TILE_FACES};
 use crate::scene::{margin_m, Rect};
 use crate::terrain::{TileKey, WorldParams};
+use crate::volume::chunk::ChunkKey;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeSet, HashMap, VecDeque};
 use std::sync::{Arc, Mutex};
@@ -45,6 +53,11 @@ pub const DEFAULT_SERVER_BUDGET_MB: u64 = 1024;
 /// Default distance thresholds of the detail levels 16² … 256², metres: a face may hold level
 /// `l` only nearer than `thresholds_m[l − 1]`.
 pub const DEFAULT_THRESHOLDS_M: [f32; 5] = [2048.0, 1024.0, 512.0, 256.0, 128.0];
+/// The finest detail level of a volume chunk's face (16²): a surface-nets quad is one lattice
+/// cell, and 16 texels a cell is the density of a tile face's finest page (256² over 16 cells).
+/// A finer page would spend a tile face's worth of texels on one cell, and the near chunks'
+/// quads would take the finest levels' few slots from the ground around them.
+pub const CHUNK_FACE_MAX_LEVEL: u8 = 1;
 /// Largest `far_m` of a view's `ptex`, metres.
 pub const MAX_FAR_M: f64 = 65_536.0;
 
@@ -142,6 +155,10 @@ pub struct PtexView {
     /// Far distance, metres, in `(0, MAX_FAR_M]` (default 8192).
     #[serde(default = "default_far")]
     pub far_m: f64,
+    /// Whether the faces of the session's volume chunks get pages too (default false: a client
+    /// that does not ask gets tile faces only, as before chunk pages existed).
+    #[serde(default)]
+    pub chunks: bool,
 }
 
 fn default_half_angle() -> f64 {
@@ -178,25 +195,53 @@ impl PtexView {
     }
 }
 
+/// A face a session holds: a height tile's or a volume chunk's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PageFace {
+    /// A face of a height tile's 4 × 4 grid.
+    Tile(TileFaceKey),
+    /// A surface-nets quad of a volume chunk.
+    Chunk(ChunkFaceKey),
+}
+
+impl PageFace {
+    /// Whether this is a chunk's face.
+    pub fn is_chunk(self) -> bool {
+        matches!(self, PageFace::Chunk(_))
+    }
+
+    /// How the `ptex` message names the face: `[lod, fx, fz]` for a tile's, `[lod, x, y, z,
+    /// quad]` for a chunk's.
+    pub fn address(self) -> Vec<i64> {
+        match self {
+            PageFace::Tile(f) => vec![i64::from(f.lod), f.fx, f.fz],
+            PageFace::Chunk(f) => {
+                let c = f.chunk;
+                vec![i64::from(c.lod), c.x, c.y, c.z, i64::from(f.quad)]
+            }
+        }
+    }
+}
+
 /// One page of a batch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BatchPage {
     /// The session's index of the face.
     pub index: u32,
     /// The face.
-    pub face: TileFaceKey,
-    /// Its tile's seam flags `n, e, s, w`.
+    pub face: PageFace,
+    /// Its tile's seam flags `n, e, s, w` (a chunk face: none).
     pub seams: [bool; 4],
     /// Layer of the level's texture array (the face's index at the vista level).
     pub slot: u32,
 }
 
-/// Pages of one level to bake into one frame.
+/// Pages of one level and one kind of face to bake into one frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PtexBatch {
     /// Level, 0 (vista) … 5.
     pub level: u8,
-    /// The pages.
+    /// The pages: all tile faces or all chunk faces.
     pub pages: Vec<BatchPage>,
 }
 
@@ -230,13 +275,14 @@ pub struct PtexMessage {
     pub faces: usize,
     /// Slots of the detail levels 16² … 256².
     pub capacity: [usize; 5],
-    /// `[lod, fx, fz]` of the faces that left their detail level (their slot is free).
-    pub to_vista: Vec<[i64; 3]>,
+    /// The faces that left their detail level (their slot is free): `[lod, fx, fz]` for a tile's
+    /// face, `[lod, x, y, z, quad]` for a chunk's.
+    pub to_vista: Vec<Vec<i64>>,
 }
 
 #[derive(Clone, Copy, Debug)]
 struct Held {
-    key: TileFaceKey,
+    key: PageFace,
     seams: [bool; 4],
     bounds: Option<FaceBounds>,
 }
@@ -247,7 +293,11 @@ pub struct PtexSession {
     grant: PtexGrant,
     budget: Budget,
     faces: Vec<Option<Held>>,
-    index: HashMap<TileFaceKey, u32>,
+    index: HashMap<PageFace, u32>,
+    /// The faces' indices of each held chunk, in quad order.
+    chunks: HashMap<ChunkKey, Vec<u32>>,
+    /// Whether the client asked for chunk faces' pages.
+    chunk_pages: bool,
     free: BTreeSet<u32>,
     view: Option<View>,
     due: bool,
@@ -270,6 +320,8 @@ impl PtexSession {
             budget,
             faces: Vec::new(),
             index: HashMap::new(),
+            chunks: HashMap::new(),
+            chunk_pages: false,
             free: BTreeSet::new(),
             view: None,
             due: false,
@@ -285,10 +337,100 @@ impl PtexSession {
         &self.budget
     }
 
-    /// The client's new view.
-    pub fn set_view(&mut self, view: View) {
+    /// The client's new view; `chunks`: whether it wants chunk faces' pages (turning them off
+    /// releases the chunk faces held).
+    pub fn set_view(&mut self, view: View, chunks: bool) {
         self.view = Some(view);
         self.due = true;
+        if self.chunk_pages && !chunks {
+            self.retain(|f| !f.is_chunk());
+        }
+        self.chunk_pages = chunks;
+    }
+
+    /// Whether the client asked for chunk faces' pages.
+    pub fn chunk_pages(&self) -> bool {
+        self.chunk_pages
+    }
+
+    /// Holds a new face: its index and vista page, or false when it does not fit the budget. A
+    /// chunk's face is held up to [`CHUNK_FACE_MAX_LEVEL`].
+    fn hold_new(&mut self, face: PageFace, seams: [bool; 4]) -> Option<u32> {
+        let i = self.free.pop_first().unwrap_or(self.faces.len() as u32);
+        let max = if face.is_chunk() {
+            CHUNK_FACE_MAX_LEVEL
+        } else {
+            5
+        };
+        if self.budget.hold_up_to(i as usize, max).is_err() {
+            self.free.insert(i);
+            return None;
+        }
+        if i as usize >= self.faces.len() {
+            self.faces.resize(i as usize + 1, None);
+        }
+        self.faces[i as usize] = Some(Held {
+            key: face,
+            seams,
+            bounds: None,
+        });
+        self.index.insert(face, i);
+        self.vista.push_back(i);
+        Some(i)
+    }
+
+    /// Notes, once per session, that a face did not fit: true unless this is the first time.
+    fn refuse(&mut self, fits: bool) -> bool {
+        let refused_now = !fits && !self.refused;
+        self.refused |= !fits;
+        !refused_now
+    }
+
+    /// Holds the `quads` faces of chunk `key`, just sent (or sent again): a chunk held with as
+    /// many faces queues all their pages again, one held with another count releases them and
+    /// holds the new ones. Does nothing unless the client asked for chunk pages. Returns false,
+    /// once per session, when a face did not fit the budget.
+    pub fn hold_chunk(&mut self, key: ChunkKey, quads: u32) -> bool {
+        if !self.chunk_pages {
+            return true;
+        }
+        if let Some(held) = self.chunks.get(&key) {
+            if held.len() == quads as usize {
+                let held = held.clone();
+                self.requeue(&held);
+                self.due = true;
+                return true;
+            }
+            self.retain(|f| !matches!(f, PageFace::Chunk(c) if c.chunk == key));
+        }
+        let mut fits = true;
+        let mut held = Vec::with_capacity(quads as usize);
+        for quad in 0..quads {
+            match self.hold_new(
+                PageFace::Chunk(ChunkFaceKey { chunk: key, quad }),
+                [false; 4],
+            ) {
+                Some(i) => held.push(i),
+                None => {
+                    fits = false;
+                    break;
+                }
+            }
+        }
+        // A chunk whose faces did not all fit holds none: a client draws a chunk's pages only
+        // with every face's.
+        if fits {
+            self.chunks.insert(key, held);
+        } else {
+            for i in held {
+                self.release(i);
+            }
+            let faces = &self.faces;
+            self.vista
+                .retain(|&i| faces.get(i as usize).is_some_and(Option::is_some));
+        }
+        self.due = true;
+        self.refuse(fits)
     }
 
     /// Holds the faces of tile `key` drawn with `seams` (a face already held with other seams is
@@ -302,7 +444,7 @@ impl PtexSession {
                 fx: key.x * t + id % t,
                 fz: key.z * t + id / t,
             };
-            if let Some(&i) = self.index.get(&face) {
+            if let Some(&i) = self.index.get(&PageFace::Tile(face)) {
                 let redrawn = match self.faces[i as usize].as_mut() {
                     Some(h) if h.seams != seams => {
                         h.seams = seams;
@@ -315,55 +457,69 @@ impl PtexSession {
                 }
                 continue;
             }
-            let i = self.free.pop_first().unwrap_or(self.faces.len() as u32);
-            if self.budget.hold(i as usize).is_err() {
-                self.free.insert(i);
+            if self.hold_new(PageFace::Tile(face), seams).is_none() {
                 fits = false;
-                continue;
             }
-            if i as usize >= self.faces.len() {
-                self.faces.resize(i as usize + 1, None);
-            }
-            self.faces[i as usize] = Some(Held {
-                key: face,
-                seams,
-                bounds: None,
-            });
-            self.index.insert(face, i);
-            self.vista.push_back(i);
         }
         self.due = true;
-        let refused_now = !fits && !self.refused;
-        self.refused |= !fits;
-        !refused_now
+        self.refuse(fits)
     }
 
-    /// Releases the faces of the tiles `keep` rejects (they left the view).
-    pub fn retain_tiles(&mut self, keep: impl Fn(TileKey) -> bool) {
-        let gone: Vec<(TileFaceKey, u32)> = self
+    /// Releases face `i`.
+    fn release(&mut self, i: u32) {
+        let Some(h) = self.faces.get(i as usize).copied().flatten() else {
+            return;
+        };
+        self.budget.release(i as usize);
+        self.index.remove(&h.key);
+        self.faces[i as usize] = None;
+        self.free.insert(i);
+        self.due = true;
+    }
+
+    /// Releases the faces `keep` rejects.
+    fn retain(&mut self, keep: impl Fn(PageFace) -> bool) {
+        let gone: Vec<u32> = self
             .index
             .iter()
-            .filter(|(f, _)| !keep(f.tile()))
-            .map(|(f, i)| (*f, *i))
+            .filter(|(f, _)| !keep(**f))
+            .map(|(_, i)| *i)
             .collect();
-        for (f, i) in gone {
-            self.budget.release(i as usize);
-            self.index.remove(&f);
-            self.faces[i as usize] = None;
-            self.free.insert(i);
-            self.due = true;
+        for i in gone {
+            self.release(i);
         }
         let faces = &self.faces;
+        // A chunk's faces are released together: its first tells.
+        self.chunks.retain(|c, held| {
+            held.first().is_some_and(|&i| {
+                matches!(faces.get(i as usize).copied().flatten(),
+                    Some(Held { key: PageFace::Chunk(f), .. }) if f.chunk == *c)
+            })
+        });
         self.vista
             .retain(|&i| faces.get(i as usize).is_some_and(Option::is_some));
     }
 
-    /// Queues again the pages of the held faces `touched` accepts; returns how many faces.
+    /// Releases the faces of the tiles `tile` rejects and of the chunks `chunk` rejects (they
+    /// left the view).
+    pub fn retain_products(
+        &mut self,
+        tile: impl Fn(TileKey) -> bool,
+        chunk: impl Fn(ChunkKey) -> bool,
+    ) {
+        self.retain(|f| match f {
+            PageFace::Tile(t) => tile(t.tile()),
+            PageFace::Chunk(c) => chunk(c.chunk),
+        });
+    }
+
+    /// Queues again the pages of the held tile faces `touched` accepts (chunk faces are queued
+    /// again when their chunk is sent again, [`PtexSession::hold_chunk`]); returns how many faces.
     pub fn invalidate(&mut self, touched: impl Fn(TileFaceKey) -> bool) -> usize {
         let mut hit: Vec<u32> = self
             .index
             .iter()
-            .filter(|(f, _)| touched(**f))
+            .filter(|(f, _)| matches!(f, PageFace::Tile(t) if touched(*t)))
             .map(|(_, i)| *i)
             .collect();
         hit.sort_unstable();
@@ -433,7 +589,7 @@ impl PtexSession {
             to_vista: to_vista
                 .iter()
                 .filter_map(|&f| self.faces.get(f as usize).copied().flatten())
-                .map(|h| [i64::from(h.key.lod), h.key.fx, h.key.fz])
+                .map(|h| h.key.address())
                 .collect(),
         }
     }
@@ -449,19 +605,29 @@ impl PtexSession {
     }
 
     fn take_batch(&mut self) -> Option<PtexBatch> {
-        let mut pages = Vec::new();
+        let mut pages: Vec<BatchPage> = Vec::new();
         while pages.len() < BATCH_PAGES {
-            let Some(i) = self.vista.pop_front() else {
+            let Some(&i) = self.vista.front() else {
                 break;
             };
-            if let Some(p) = self.page(i, i) {
-                pages.push(p);
+            let Some(p) = self.page(i, i) else {
+                self.vista.pop_front();
+                continue;
+            };
+            if pages
+                .first()
+                .is_some_and(|q| q.face.is_chunk() != p.face.is_chunk())
+            {
+                break;
             }
+            self.vista.pop_front();
+            pages.push(p);
         }
         if !pages.is_empty() {
             return Some(PtexBatch { level: 0, pages });
         }
         let mut level = 0u8;
+        let mut chunk = None;
         let mut texels = 0u64;
         let mut taken = 0;
         for b in &self.detail {
@@ -476,14 +642,21 @@ impl PtexSession {
             if level == 0 {
                 level = b.level;
             }
-            if b.level != level || texels + res * res > BATCH_TEXELS || pages.len() >= BATCH_PAGES {
+            let Some(p) = self.page(b.face, b.slot) else {
+                taken += 1;
+                continue;
+            };
+            let kind = *chunk.get_or_insert(p.face.is_chunk());
+            if b.level != level
+                || kind != p.face.is_chunk()
+                || texels + res * res > BATCH_TEXELS
+                || pages.len() >= BATCH_PAGES
+            {
                 break;
             }
             texels += res * res;
             taken += 1;
-            if let Some(p) = self.page(b.face, b.slot) {
-                pages.push(p);
-            }
+            pages.push(p);
         }
         self.detail.drain(..taken);
         (!pages.is_empty()).then_some(PtexBatch { level, pages })
@@ -505,6 +678,33 @@ impl PtexSession {
     pub fn hello(&mut self) -> PtexMessage {
         self.announced = Some(self.budget.capacity());
         self.message(&[])
+    }
+}
+
+/// The number of quads of a chunk frame's chunk (`api/chunk_format_v1.md`: `Q` of the `bin`
+/// header, `quad_count` of the `json` document and of the `glb` node's `extras`), or `None` for
+/// a frame it cannot read.
+pub fn chunk_frame_quads(frame: &[u8]) -> Option<u32> {
+    use super::protocol::FRAME_HEADER_BYTES;
+    let payload = frame.get(FRAME_HEADER_BYTES..)?;
+    let u32_at = |b: &[u8], o: usize| -> Option<u32> {
+        Some(u32::from_le_bytes(b.get(o..o + 4)?.try_into().ok()?))
+    };
+    let from_json = |doc: &serde_json::Value| {
+        doc.get("quad_count")
+            .and_then(serde_json::Value::as_u64)
+            .and_then(|q| u32::try_from(q).ok())
+    };
+    match payload.get(..4)? {
+        b"STCK" => u32_at(payload, 84),
+        b"glTF" => {
+            // The JSON chunk follows the 12-byte header: its length, its type, the document.
+            let len = u32_at(payload, 12)? as usize;
+            let doc: serde_json::Value = serde_json::from_slice(payload.get(20..20 + len)?).ok()?;
+            let extras = doc.get("nodes")?.get(0)?.get("extras")?;
+            from_json(extras)
+        }
+        _ => from_json(&serde_json::from_slice(payload).ok()?),
     }
 }
 

@@ -41,7 +41,9 @@ use super::protocol::TileFrame;
 use super::protocol::{
     chunk_address, ClientMessage, Protocol, ServerMessage, VolumeView, MAX_CREDITS,
 };
-use super::ptex::{face_reach, PtexBaked, PtexBatch, PtexGrant, PtexSession, PTEX_EVERY};
+use super::ptex::{
+    chunk_frame_quads, face_reach, PtexBaked, PtexBatch, PtexGrant, PtexSession, PTEX_EVERY,
+};
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use super::work::{merge, Product, Work};
 use crate::encode::Format;
@@ -387,6 +389,16 @@ pub async fn run<S: StreamSource>(
         version,
         queue_frames: QUEUE_FRAMES,
         credits: v2.then_some(0),
+        generator: v2.then_some(current.plan().params.generator),
+        biomes: v2.then(|| {
+            current
+                .plan()
+                .params
+                .biomes
+                .iter()
+                .map(|b| b.name.clone())
+                .collect()
+        }),
     };
     if !outbox.push(text(&hello)).await {
         return;
@@ -468,11 +480,11 @@ pub async fn run<S: StreamSource>(
                         }).and_then(|(tiles, fmt, chunks)| {
                             let eye = [x, volume.as_ref().map_or(0.0, |v| v.y), z];
                             let pv = match volume.as_ref().and_then(|v| v.ptex.as_ref()) {
-                                Some(p) => Some(p.view(eye).map_err(|(field, m)| StreamError {
+                                Some(p) => Some((p.view(eye).map_err(|(field, m)| StreamError {
                                     code: "bad_ptex",
                                     message: m,
                                     field: Some(format!("ptex.{field}").into()),
-                                })?),
+                                })?, p.chunks)),
                                 None => None,
                             };
                             Ok((tiles, fmt, chunks, pv))
@@ -482,7 +494,7 @@ pub async fn run<S: StreamSource>(
                             Ok((tiles, fmt, chunks, pv)) => {
                                 match pv {
                                     None => ptex = None,
-                                    Some(pv) => {
+                                    Some((pv, chunk_pages)) => {
                                         if ptex.is_none() {
                                             match source.ptex_grant() {
                                                 Some((grant, thresholds)) => {
@@ -497,7 +509,7 @@ pub async fn run<S: StreamSource>(
                                             }
                                         }
                                         if let Some(p) = ptex.as_mut() {
-                                            p.set_view(pv);
+                                            p.set_view(pv, chunk_pages);
                                         }
                                     }
                                 }
@@ -522,7 +534,7 @@ pub async fn run<S: StreamSource>(
                                 let in_view: HashSet<Product> = work.iter().map(Work::product).collect();
                                 held.retain(|p, _| in_view.contains(p));
                                 if let Some(p) = ptex.as_mut() {
-                                    p.retain_tiles(|k| in_view.contains(&Product::Tile(k)));
+                                    p.retain_products(|k| in_view.contains(&Product::Tile(k)), |k| in_view.contains(&Product::Chunk(k)));
                                 }
                                 let gone = outbox.withdraw_unless(&in_view);
                                 if v2 {
@@ -590,6 +602,10 @@ pub async fn run<S: StreamSource>(
                     if p.invalidate(|f| dirty.touches(&face_reach(params, f))) > 0 {
                         idle_sent = false;
                     }
+                    // The chunks that left the view release their faces; the stale ones queue
+                    // their pages again when their fresh frames are sent.
+                    let in_view: HashSet<Product> = work.iter().map(Work::product).collect();
+                    p.retain_products(|_| true, |k| in_view.contains(&Product::Chunk(k)));
                 }
                 if !stale.is_empty() || !dropped.is_empty() {
                     let tiles = stale.iter().filter_map(|w| match w {
@@ -675,13 +691,21 @@ pub async fn run<S: StreamSource>(
                         outbox.push_now(text(&error_message(&e, None)));
                     }
                     Ok(frame) => {
+                        // A chunk's faces, for a client that asked for their Ptex pages.
+                        let quads = match (&ptex, w) {
+                            (Some(p), Work::Chunk(_)) if p.chunk_pages() => chunk_frame_quads(&frame),
+                            _ => None,
+                        };
                         outbox.push_now(Outgoing::Frame { product: w.product(), bytes: frame });
                         held.insert(w.product(), version);
-                        if let (Some(p), Work::Tile(t)) = (ptex.as_mut(), w) {
-                            if !p.hold_tile(t.key, t.seams) {
-                                let e = refused("ptex_budget_exceeded", "rings", "the vista pages of the view's faces exceed the session's Ptex budget; faces beyond it get no pages");
-                                outbox.push_now(text(&error_message(&e, None)));
-                            }
+                        let fits = match (ptex.as_mut(), w) {
+                            (Some(p), Work::Tile(t)) => p.hold_tile(t.key, t.seams),
+                            (Some(p), Work::Chunk(c)) => quads.is_none_or(|q| p.hold_chunk(c, q)),
+                            _ => true,
+                        };
+                        if !fits {
+                            let e = refused("ptex_budget_exceeded", "rings", "the vista pages of the view's faces exceed the session's Ptex budget; faces beyond it get no pages");
+                            outbox.push_now(text(&error_message(&e, None)));
                         }
                         if v2 {
                             credits -= 1;

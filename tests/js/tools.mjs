@@ -24,7 +24,7 @@
 //    curve has that point moved on the horizontal plane (by at least MOVED_MIN metres, its
 //    height kept exactly) and no other point moved, the stream invalidated chunks and
 //    re-sent them, and at least one invalidated chunk's bytes differ between the two versions.
-// 3. Splatting. Opens seed 42 from 600 m at 35° (as ptex.mjs) without Ptex pages, with and
+// 3. Splatting. Opens seed 42 from 600 m at 35° without Ptex pages, with and
 //    without splatting (`?ptex=0`, `?ptex=0&splat=0`): the pictures differ over the terrain (mean
 //    |Δ RGB| below the horizon at least SPLAT_MIN) and the splatted one has more detail (mean
 //    |Laplacian| of the luminance below the horizon larger by DETAIL_GAIN times at least). Then
@@ -33,7 +33,7 @@
 // Every wait is on the viewer's state, never a fixed sleep (but for the 10 s over which the
 // splatting part reports each run's frame rate, which it does not assert).
 import { launch } from "./chromium.mjs";
-import { meanRgbDiff } from "./images.mjs";
+import { meanAbsLaplacian, meanRgbDiff } from "./images.mjs";
 import { PNG } from "pngjs";
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -104,7 +104,7 @@ async function settle(page, extra = () => true) {
 
 const stateOf = (page) =>
   page.evaluate(() => {
-    const { moveBy, shore, showWater, handlesOnScreen, ...rest } = window.__strata;
+    const { moveBy, shore, showWater, showChunks, handlesOnScreen, ...rest } = window.__strata;
     return rest;
   });
 
@@ -334,23 +334,6 @@ async function curve() {
   if (changed === 0) fail("curve: no chunk around the edit changed");
 }
 
-/** Mean |4y − neighbours| of the luminance below row `top`: how much fine detail the picture has. */
-function detail(img, top) {
-  const y = (x, r) => {
-    const p = 4 * (r * W + x);
-    return 0.2126 * img.data[p] + 0.7152 * img.data[p + 1] + 0.0722 * img.data[p + 2];
-  };
-  let sum = 0;
-  let n = 0;
-  for (let r = top + 1; r < H - 1; r++) {
-    for (let x = 1; x < W - 1; x++) {
-      sum += Math.abs(4 * y(x, r) - y(x - 1, r) - y(x + 1, r) - y(x, r - 1) - y(x, r + 1));
-      n++;
-    }
-  }
-  return sum / n;
-}
-
 async function splatting() {
   const place = "seed=42&x=-12000&z=26000&dist=600&pitch=35&rings=1,1,1,1,1,1";
   const shots = {};
@@ -387,8 +370,8 @@ async function splatting() {
   if (!on.splat || off.splat) fail(`splat flags: ${on.splat}, ${off.splat}`);
   const t = top(on, off);
   const diff = meanRgbDiff(on.img, off.img, t);
-  const dOn = detail(on.img, t);
-  const dOff = detail(off.img, t);
+  const dOn = meanAbsLaplacian(on.img, t + 1);
+  const dOff = meanAbsLaplacian(off.img, t + 1);
   const paged = meanRgbDiff(shots["ptex-splat"].img, shots["ptex-flat"].img, top(shots["ptex-splat"], shots["ptex-flat"]));
   console.log(
     `splat against vertex colours: mean |Δ RGB| ${diff.toFixed(2)} (at least ${SPLAT_MIN}); detail ${dOn.toFixed(2)} against ` +

@@ -29,8 +29,8 @@ function decode(data: ArrayBuffer): void {
       const arrays = [chunk.positions, chunk.normals, chunk.materials, chunk.quads, chunk.skirtPositions, chunk.skirtQuads];
       post({ type: "chunk", ...head, chunk }, arrays.map((a) => a.buffer));
     } else if (frame.kind === KIND_PTEX) {
-      const pages = decodePtex(frame.payload, frame.lod, frame.x, frame.z);
-      const arrays = [pages.lod, pages.slot, pages.fx, pages.fz, pages.albedo];
+      const pages = decodePtex(frame.payload, frame.lod, frame.x, frame.z, frame.faces);
+      const arrays = [pages.lod, pages.slot, pages.fx, pages.fz, pages.y, pages.quad, pages.albedo];
       post({ type: "ptex", ...head, pages }, arrays.map((a) => a.buffer));
     } else {
       post({ type: "other", ...head });

@@ -6,8 +6,8 @@ export const KIND_TILE = 1;
 export const KIND_CHUNK = 2;
 export const KIND_PTEX = 3;
 
-/** A frame's header fields; for Ptex pages `lod` is the level, `x` the pages' resolution and `z`
- * their count. */
+/** A frame's header fields; for Ptex pages `lod` is the level, `x` the pages' resolution, `z`
+ * their count and `faces` their faces' kind (0 height-tile faces, 1 volume-chunk faces). */
 export interface Frame {
   kind: number;
   lod: number;
@@ -17,6 +17,8 @@ export interface Frame {
   z: number;
   version: number;
   seams: number;
+  /** Ptex pages: the kind of their faces (0 tiles', 1 chunks'). */
+  faces: number;
   format: number;
   payload: DataView;
 }
@@ -48,7 +50,8 @@ function magic(v: DataView, at: number): string {
   return String.fromCharCode(v.getUint8(at), v.getUint8(at + 1), v.getUint8(at + 2), v.getUint8(at + 3));
 }
 
-/** The 44-byte little-endian frame header and its payload (a tile's seams or a chunk's y at 36). */
+/** The 44-byte little-endian frame header and its payload (a tile's seams, a chunk's y or the
+ * Ptex pages' kind of faces at 36). */
 export function decodeFrame(buf: ArrayBuffer): Frame {
   const v = new DataView(buf);
   if (buf.byteLength < FRAME_HEADER || magic(v, 0) !== "STRF") throw new Error("not a STRF frame");
@@ -66,6 +69,7 @@ export function decodeFrame(buf: ArrayBuffer): Frame {
     z: Number(v.getBigInt64(20, true)),
     version: Number(v.getBigUint64(28, true)),
     seams: kind === KIND_TILE ? v.getUint8(36) : 0,
+    faces: kind === KIND_PTEX ? v.getUint32(36, true) : 0,
     payload: new DataView(buf, FRAME_HEADER, len),
   };
 }

@@ -7,7 +7,8 @@
 // horizon, 90 straight down) from how high; ?rings=2,1,2,4,8,0,1,0,1 the LOD rings of the view
 // (the coarse levels reach past 30 km, so the ground meets the sky at the horizon, not short of
 // it), ?chunk_rings=2,2,2,2 the volume-chunk rings (empty for none), ?ptex=0 no Ptex pages (by
-// default the view asks for them and the tiles are drawn with their albedo, see ./ptex.ts), ?splat=0
+// default the view asks for them, the tiles' faces' and the chunks' quads', and draws them with
+// their albedo, see ./ptex.ts), ?splat=0
 // no texture splatting (faces without a page are then drawn with the vertex colours, see ./splat.ts).
 // Without ?x=&z= the view opens on land with relief near the origin. With a world and a token the
 // edit tools are shown (see ./edit.ts). Rivers are drawn as ribbons along the server's river lines
@@ -20,6 +21,7 @@ import type { Decoded, ToWorker } from "./decoded";
 import { decodeTile, type Tile } from "./frame";
 import { groundSample as sampleGround } from "./ground";
 import { CurveTool } from "./curveTool";
+import { biomeTints, DEFAULT_BIOMES } from "./biomes";
 import { buildMesh, disposeMesh, hasMarks, sharedMaterial, updateHidden } from "./mesh";
 import { addSplat } from "./splat";
 import { PtexStore } from "./ptex";
@@ -54,6 +56,8 @@ interface StrataState {
   shore: (cols: number, rows: number) => ShoreSamples;
   /** Shows or hides the water (sheets and ribbons): lets tests see what the water covers. */
   showWater: (on: boolean) => void;
+  /** Shows or hides the volume chunks: lets tests find the chunks' pixels. */
+  showChunks: (on: boolean) => void;
   tool: string; // the edit tool in use, "" when not editing
   edits: number; // edits the server acknowledged (durable)
   pendingEdits: number; // edits sent and not yet acknowledged
@@ -71,12 +75,16 @@ interface StrataState {
   flySpeed: number; // how fast WASD flies now, metres per second (it grows with the height above the ground)
   horizon: number; // the horizon line's row as a fraction of the picture's height from the top (0 when above it)
   protocol: string; // the stream protocol the server speaks
+  biomes: string[]; // the world's biomes in the order of the tiles' weights (the stream's hello)
   ptex: boolean; // whether the view asks for Ptex pages (?ptex=0 turns them off)
   ptexFrames: number; // Ptex frames (kind 3) received since the page loaded
   ptexPages: number; // pages in them
   ptexApplied: number; // pages written into the texture arrays for faces of held tiles
   ptexFaces: number; // faces of the view's tiles drawn with a page
   ptexDetail: number; // of those, faces drawn with a detail page (16² or finer)
+  ptexChunkFaces: number; // faces (quads) of the held chunks drawn with a page
+  ptexChunkDetail: number; // of those, faces drawn with a detail page
+  chunkQuads: number; // quads of the held chunks (their Ptex faces)
   hiddenTiles: number; // held tiles with vertices hidden under held volume chunks
   splat: boolean; // whether the tiles are drawn with texture splatting (?splat=0 turns it off)
   curveHandles: number; // control-point handles the curve tool shows
@@ -107,6 +115,7 @@ const state: StrataState = {
   moveBy: () => {},
   shore: () => ({ cols: 0, rows: 0, wet: [], x: [], z: [], span: [], ground: [], level: [] }),
   showWater: () => {},
+  showChunks: () => {},
   tool: "",
   edits: 0,
   pendingEdits: 0,
@@ -124,12 +133,16 @@ const state: StrataState = {
   flySpeed: 0,
   horizon: 0,
   protocol: "",
+  biomes: [],
   ptex: false,
   ptexFrames: 0,
   ptexPages: 0,
   ptexApplied: 0,
   ptexFaces: 0,
   ptexDetail: 0,
+  ptexChunkFaces: 0,
+  ptexChunkDetail: 0,
+  chunkQuads: 0,
   hiddenTiles: 0,
   splat: false,
   curveHandles: 0,
@@ -302,7 +315,7 @@ function putTile(tile: Tile, version: number): void {
   const key = tileKey(tile.lod, tile.x, tile.z);
   removeMesh(key);
   disposeRetiring(key);
-  const mesh = buildMesh(tile, covered, ptexOn ? ptex.material(key, tile.spacing) : sharedMaterial(splatOn));
+  const mesh = buildMesh(tile, covered, tints, ptexOn ? ptex.material(key, tile.spacing) : sharedMaterial(splatOn));
   terrain.add(mesh);
   held.set(key, { mesh, tile, version, marked: hasMarks(tile) });
   state.held = held.size;
@@ -398,7 +411,8 @@ function* heldTiles(): Iterable<Tile> {
 // ---- volume chunks -----------------------------------------------------------------------------------
 // Where the world's surface is not a heightfield (volume regions), the server streams chunk meshes;
 // the tiles hide the vertices the chunks override.
-const chunks = new ChunkLayer(scene);
+const chunks = new ChunkLayer(scene, splatOn, ptexOn ? ptex : undefined);
+state.showChunks = (on) => chunks.show(on);
 let wantedChunks = new Set<string>();
 /** Whether a held chunk gives the surface at world (x, y, z): the tiles hide marked vertices there. */
 const covered = (x: number, y: number, z: number) => chunks.covers(x, y, z, cellM);
@@ -408,6 +422,7 @@ let hiddenStale = false;
 
 function setHeldChunks(n: number): void {
   state.heldChunks = n;
+  state.chunkQuads = chunks.quadCount();
   hiddenStale = true;
 }
 
@@ -432,7 +447,10 @@ const addressKey = (a: number[]) => chunkKey(a[0], a[1], a[2], a[3]);
 let socketOpen = false;
 let lastCell = "";
 let lastSent = 0;
-let biomes: string[] = ["arctic", "tundra", "grassland", "desert"];
+// The world's biomes in the order of the tiles' weights, and their tints: the stream's `hello`
+// names them (./biomes.ts).
+let biomes: string[] = DEFAULT_BIOMES;
+let tints = biomeTints(biomes);
 
 /** The stream's URL (protocol v2), over `ws:`/`wss:` or, to read a refusal's JSON, `http:`/`https:`. */
 function streamUrl(http = false): string {
@@ -518,7 +536,8 @@ function sendView(force = false): void {
   const y = camera.position.y;
   lastForward.copy(forward);
   const view: Record<string, unknown> = { type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings };
-  if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M };
+  // `chunks`: the volume chunks' quads get pages too (./chunk.ts draws them).
+  if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M, chunks: true };
   send(view);
 }
 
@@ -599,7 +618,11 @@ function onDecoded(m: Decoded): void {
       // Not counted in flight: the view reply's `sending` counts tiles and chunks only.
       state.ptexFrames++;
       state.ptexPages += m.pages.count;
-      ptex.put(m.pages, (tile) => wanted.has(tile));
+      ptex.put(
+        m.pages,
+        (tile) => wanted.has(tile),
+        (chunk) => wantedChunks.has(chunk) && chunks.holds(chunk),
+      );
       updatePtexStats();
       return;
     }
@@ -621,6 +644,8 @@ function updatePtexStats(): void {
   state.ptexApplied = ptex.applied;
   state.ptexFaces = s.faces;
   state.ptexDetail = s.detail;
+  state.ptexChunkFaces = s.chunkFaces;
+  state.ptexChunkDetail = s.chunkDetail;
 }
 
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
@@ -629,6 +654,11 @@ function onControl(m: any): void {
     case "hello":
       state.version = m.version;
       state.protocol = m.protocol;
+      if (Array.isArray(m.biomes)) {
+        biomes = m.biomes;
+        tints = biomeTints(biomes);
+      }
+      state.biomes = biomes;
       break;
     case "view":
       state.views++;
@@ -637,6 +667,7 @@ function onControl(m: any): void {
       pruneToView();
       wantedChunks = new Set((m.chunks ?? []).map(addressKey));
       setHeldChunks(chunks.keep(wantedChunks));
+      ptex.keepChunks(wantedChunks);
       updatePtexStats();
       break;
     case "idle":
@@ -655,6 +686,7 @@ function onControl(m: any): void {
         wantedChunks.delete(addressKey(a));
         setHeldChunks(chunks.remove(addressKey(a)));
       }
+      ptex.keepChunks(wantedChunks);
       break;
     case "ptex":
       // The session's page budget; the faces listed left their detail level (their slots are free).
@@ -676,7 +708,6 @@ function onControl(m: any): void {
 fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
   .then((info) => {
-    if (Array.isArray(info?.world?.biomes)) biomes = info.world.biomes;
     if (typeof info?.limits?.max_river_lod === "number") {
       const sea = info?.world?.sea_level_m;
       rivers.enable(info.limits.max_river_lod, typeof sea === "number" ? sea : undefined);
@@ -1018,7 +1049,9 @@ function frame(now: number): void {
       `ground under camera ${ground.toFixed(1)} m, ${(p.y - ground).toFixed(0)} m above`,
       `cursor  ${probe()}`,
       `${fps.toFixed(0)} fps · tiles held ${state.held} · in flight ${state.inFlight} · received ${state.tiles} · chunks ${state.heldChunks} · v${state.version}`,
-      ptexOn ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · ${state.ptexFrames} frames` : "ptex off (?ptex=0)",
+      ptexOn
+        ? `ptex ${state.ptexFaces} faces textured, ${state.ptexDetail} in detail · chunks ${state.ptexChunkFaces} of ${state.chunkQuads} quads · ${state.ptexFrames} frames`
+        : "ptex off (?ptex=0)",
       `rivers ${r.ribbons} ribbons, ${(r.length / 1000).toFixed(1)} km${r.pending ? ` · ${r.pending} tiles' lines to load` : ""}`,
       `drag: orbit · right-drag: pan · wheel: zoom · WASD/arrows: fly · R/F: up/down${world && token ? " · 1–6: edit tools · Ctrl+Z: undo" : ""}`,
     ].join("\n");

@@ -1,8 +1,9 @@
 // STRT tiles as three.js meshes: 65×65 surface plus skirts (the glb layout of
-// api/tile_format_v1.md), vertex colours from biome weights and materials, the attributes of the
-// texture splatting (./splat.ts), water as a translucent sheet cut along the shoreline (see
-// ./water.ts).
+// api/tile_format_v1.md), vertex colours from biome weights (tinted by the world's biomes,
+// ./biomes.ts) and materials, the attributes of the texture splatting (./splat.ts), water as a
+// translucent sheet cut along the shoreline (see ./water.ts).
 import * as THREE from "three";
+import { tintOf } from "./biomes";
 import type { Tile } from "./frame";
 import { addSplat, splatVertex } from "./splat";
 import { setWater, waterMaterial } from "./water";
@@ -15,14 +16,6 @@ const MATERIAL = [
   [0.50, 0.39, 0.26],
   [0.52, 0.47, 0.42],
   [0.96, 0.97, 0.99],
-].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
-
-// Biomes in the default world's order: arctic, tundra, grassland, desert (tints).
-const BIOME = [
-  [0.88, 0.92, 0.97],
-  [0.52, 0.56, 0.40],
-  [0.30, 0.52, 0.20],
-  [0.88, 0.68, 0.40],
 ].map(([r, g, b]) => new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace));
 
 const indexCache = new Map<number, Uint16Array>();
@@ -132,8 +125,14 @@ export function sharedMaterial(splat: boolean): THREE.MeshLambertMaterial {
 }
 
 /** The mesh of `tile`, drawn with `material` (the shared vertex-colour material by default), its
- * marked vertices hidden where `covered` says a held chunk draws the surface. */
-export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material = terrainMaterial): THREE.Mesh {
+ * marked vertices hidden where `covered` says a held chunk draws the surface; `tints` are the
+ * world's biome tints in the order of the tile's weights (./biomes.ts). */
+export function buildMesh(
+  tile: Tile,
+  covered: Covered,
+  tints: readonly THREE.Color[],
+  material: THREE.Material = terrainMaterial,
+): THREE.Mesh {
   const { size, heights, normals, weights, materials, biomeCount: k } = tile;
   const n = size * size;
   const total = n + 4 * size;
@@ -155,7 +154,7 @@ export function buildMesh(tile: Tile, covered: Covered, material: THREE.Material
       b.setRGB(0, 0, 0);
       for (let bi = 0; bi < k; bi++) {
         const w = weights[v * k + bi] / 255;
-        const tint = BIOME[bi] ?? BIOME[BIOME.length - 1];
+        const tint = tintOf(tints, bi);
         b.r += w * tint.r;
         b.g += w * tint.g;
         b.b += w * tint.b;

@@ -16,9 +16,17 @@
 // colours, or the texture splatting of ./splat.ts when the store is given it (the page takes
 // precedence: it is the server's bake of the same materials; the splat is evaluated only for the
 // faces without a page). A face's best page is drawn: its detail page if it holds one, else its vista page.
+//
+// Volume chunks (the view asks for their faces' pages with `ptex.chunks`): a chunk face is a
+// surface-nets quad, its uv square the quad's (vertex 0 at (0, 0), 1 (1, 0), 2 (1, 1), 3 (0, 1),
+// api/chunk_format_v1.md). The chunk mesh gives each quad four vertices of its own with their
+// uv (./chunk.ts) and a per-vertex page entry (level, layer, page corner, as a tile's face
+// table), which the store fills as the quad's pages arrive (`chunkFaces`); the chunks share one
+// material (`chunkMaterial`) that samples the same texture arrays at `1 + uv·R`.
 import * as THREE from "three";
 import type { PtexPages } from "./ptexFormat";
 import { tileKey } from "./view";
+import { chunkKey } from "./chunkFormat";
 
 const LEVELS = 6;
 /** Tile faces per side (api/ptex_pages_v1.md: 4 × 4 faces, 16 lattice cells each). */
@@ -42,15 +50,28 @@ interface Level {
   owner: Map<number, string>;
 }
 
+/** A face with pages: a tile's (`lod`, `fx`, `fz`) or, with `chunk` set, quad `quad` of that
+ * chunk. */
 interface Face {
   lod: number;
   fx: number;
   fz: number;
+  chunk?: string;
+  quad?: number;
   vista?: number;
   detail?: { level: number; slot: number };
 }
 
+/** A held chunk's face entries (per quad: level, layer, page corner x, y; level −1 without a
+ * page) and what to tell when one changes. */
+interface ChunkFaces {
+  quads: number;
+  table: Float32Array;
+  changed: (quad: number) => void;
+}
+
 const faceKey = (lod: number, fx: number, fz: number): string => `${lod}/${fx}/${fz}`;
+const chunkFaceKey = (chunk: string, quad: number): string => `c:${chunk}:${quad}`;
 const faceTile = (f: Face): string => tileKey(f.lod, Math.floor(f.fx / FACES), Math.floor(f.fz / FACES));
 
 /** The GLSL that samples level `l`'s array (constant sampler per branch, as GLSL ES 3.0 wants). */
@@ -73,6 +94,41 @@ varying vec2 vPtexCell;
 uniform vec4 ptexFace[${FACES * FACES}];
 ${Array.from({ length: LEVELS }, (_, l) => `uniform highp sampler2DArray ptexAtlas${l};`).join("\n")}
 ${sampleLevels()}`;
+
+// A chunk's vertices carry their quad's page entry and their uv in it (./chunk.ts).
+const CHUNK_VERTEX_PARS = `
+attribute vec4 ptexPage;
+attribute vec2 ptexUv;
+varying vec4 vPtexPage;
+varying vec2 vPtexUv;`;
+
+const CHUNK_FRAGMENT_PARS = `
+varying vec4 vPtexPage;
+varying vec2 vPtexUv;
+${Array.from({ length: LEVELS }, (_, l) => `uniform highp sampler2DArray ptexAtlas${l};`).join("\n")}
+${sampleLevels()}`;
+
+// After the vertex colours: the quad's page, if it has one (the entry is the same at the quad's
+// four vertices), read at texel 1 + uv·R as a tile face's.
+const CHUNK_FRAGMENT_PTEX = `
+{
+#ifdef STRATA_SPLAT
+  vec3 splatP = strataSplatPosition();
+  vec3 splatGx = dFdx(splatP);
+  vec3 splatGy = dFdy(splatP);
+#endif
+  if (vPtexPage.x >= -0.5) {
+    float level = floor(vPtexPage.x + 0.5);
+    float res = 8.0 * exp2(level);
+    vec2 texel = floor(vPtexPage.zw + 0.5) + 1.0 + clamp(vPtexUv, 0.0, 1.0) * res;
+    diffuseColor.rgb = ptexAlbedo(int(level), texel, floor(vPtexPage.y + 0.5));
+  }
+#ifdef STRATA_SPLAT
+  else {
+    diffuseColor.rgb = strataSplat(splatP, splatGx, splatGy);
+  }
+#endif
+}`;
 
 // After the vertex colours: the face's page, if it has one. The tile's vertex (i, j) sits at
 // (i·spacing, j·spacing) in the mesh (skirts repeat their edge vertex's x and z). Face (fi, fj)
@@ -107,6 +163,9 @@ const FRAGMENT_PTEX = `
 export class PtexStore {
   private readonly levels: Level[] = [];
   private readonly faces = new Map<string, Face>();
+  /** Per held chunk key, its faces' entries. */
+  private readonly chunks = new Map<string, ChunkFaces>();
+  private chunkShared: THREE.MeshLambertMaterial | undefined;
   /** Per tile key, 16 × (level, layer, page corner x, y): what its material reads. */
   private readonly tables = new Map<string, Float32Array>();
   private readonly atlas: Record<string, { value: THREE.DataArrayTexture | null }> = {};
@@ -163,15 +222,90 @@ export class PtexStore {
     return m;
   }
 
-  /** Writes the pages of a frame whose tiles `holds` says are held; returns how many. */
-  put(pages: PtexPages, holds: (tile: string) => boolean): number {
+  /** The material every chunk mesh shares: its quads' pages, else the splat (or the vertex
+   * colours), double-sided and pushed back in depth as ./chunk.ts's. */
+  chunkMaterial(): THREE.MeshLambertMaterial {
+    if (this.chunkShared) return this.chunkShared;
+    const m = new THREE.MeshLambertMaterial({
+      vertexColors: !this.extra,
+      side: THREE.DoubleSide,
+      polygonOffset: true,
+      polygonOffsetFactor: 2,
+      polygonOffsetUnits: 4,
+    });
+    m.onBeforeCompile = (shader) => {
+      Object.assign(shader.uniforms, this.atlas);
+      shader.vertexShader = shader.vertexShader
+        .replace("#include <common>", `#include <common>${CHUNK_VERTEX_PARS}`)
+        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexPage = ptexPage;\n  vPtexUv = ptexUv;");
+      shader.fragmentShader = shader.fragmentShader
+        .replace("#include <common>", `#include <common>${CHUNK_FRAGMENT_PARS}`)
+        .replace("#include <color_fragment>", `#include <color_fragment>${CHUNK_FRAGMENT_PTEX}`);
+      this.extra?.patch(shader);
+    };
+    const cacheKey = `strata-ptex-chunk${this.extra ? `-${this.extra.key}` : ""}`;
+    m.customProgramCacheKey = () => cacheKey;
+    this.chunkShared = m;
+    return m;
+  }
+
+  /** The face entries of chunk `key` with `quads` quads (4 floats a quad: level, layer, page
+   * corner; level −1 without a page), `changed` called with a quad whose entry changes. A chunk
+   * held again with as many quads keeps its pages until new ones arrive; with another count its
+   * faces are forgotten (the server holds the new quads afresh). */
+  chunkFaces(key: string, quads: number, changed: (quad: number) => void): Float32Array {
+    const held = this.chunks.get(key);
+    if (held && held.quads === quads) {
+      held.changed = changed;
+      return held.table;
+    }
+    if (held) this.forgetChunk(key);
+    const table = new Float32Array(4 * quads);
+    for (let q = 0; q < quads; q++) table[4 * q] = -1;
+    this.chunks.set(key, { quads, table, changed });
+    return table;
+  }
+
+  /** Frees the pages of the chunks not in `wanted` (keys of the view's chunks). */
+  keepChunks(wanted: Set<string>): void {
+    for (const key of [...this.chunks.keys()]) if (!wanted.has(key)) this.forgetChunk(key);
+  }
+
+  private forgetChunk(key: string): void {
+    const held = this.chunks.get(key);
+    if (!held) return;
+    for (let q = 0; q < held.quads; q++) {
+      const fk = chunkFaceKey(key, q);
+      const face = this.faces.get(fk);
+      if (!face) continue;
+      if (face.vista !== undefined) this.free(fk, { level: 0, slot: face.vista });
+      if (face.detail) this.free(fk, face.detail);
+      this.faces.delete(fk);
+    }
+    this.chunks.delete(key);
+  }
+
+  /** Writes the pages of a frame whose tiles `holds` says are held (a frame of chunk faces:
+   * whose chunks `holdsChunk` says are, with the face entries of `chunkFaces`); returns how
+   * many. */
+  put(pages: PtexPages, holds: (tile: string) => boolean, holdsChunk: (chunk: string) => boolean = () => false): number {
     const level = this.levels[pages.level];
     const texels = level.s * level.s * 4;
     let n = 0;
     for (let k = 0; k < pages.count; k++) {
-      const key = faceKey(pages.lod[k], pages.fx[k], pages.fz[k]);
-      const face = this.faces.get(key) ?? { lod: pages.lod[k], fx: pages.fx[k], fz: pages.fz[k] };
-      if (!holds(faceTile(face))) continue; // its tile left the view since
+      let key: string;
+      let face: Face;
+      if (pages.chunk) {
+        const chunk = chunkKey(pages.lod[k], pages.fx[k], pages.y[k], pages.fz[k]);
+        const held = this.chunks.get(chunk);
+        if (!held || pages.quad[k] >= held.quads || !holdsChunk(chunk)) continue; // not held (any more)
+        key = chunkFaceKey(chunk, pages.quad[k]);
+        face = this.faces.get(key) ?? { lod: pages.lod[k], fx: pages.fx[k], fz: pages.fz[k], chunk, quad: pages.quad[k] };
+      } else {
+        key = faceKey(pages.lod[k], pages.fx[k], pages.fz[k]);
+        face = this.faces.get(key) ?? { lod: pages.lod[k], fx: pages.fx[k], fz: pages.fz[k] };
+        if (!holds(faceTile(face))) continue; // its tile left the view since
+      }
       const slot = pages.slot[k];
       if (!this.write(pages.level, slot, pages.albedo.subarray(k * texels, (k + 1) * texels))) continue;
       this.faces.set(key, face);
@@ -199,10 +333,11 @@ export class PtexStore {
     return n;
   }
 
-  /** The faces (`[lod, fx, fz]`) that left their detail level keep their vista page. */
+  /** The faces (`[lod, fx, fz]` of a tile's, `[lod, x, y, z, quad]` of a chunk's) that left
+   * their detail level keep their vista page. */
   toVista(faces: number[][]): void {
-    for (const [lod, fx, fz] of faces) {
-      const key = faceKey(lod, fx, fz);
+    for (const f of faces) {
+      const key = f.length === 5 ? chunkFaceKey(chunkKey(f[0], f[1], f[2], f[3]), f[4]) : faceKey(f[0], f[1], f[2]);
       const face = this.faces.get(key);
       if (!face?.detail) continue;
       this.free(key, face.detail);
@@ -211,10 +346,10 @@ export class PtexStore {
     }
   }
 
-  /** Frees the pages of the faces whose tile is not in `tiles` (keys of the view's tiles). */
+  /** Frees the pages of the tile faces whose tile is not in `tiles` (keys of the view's tiles). */
   keep(tiles: Set<string>): void {
     for (const [key, face] of [...this.faces]) {
-      if (tiles.has(faceTile(face))) continue;
+      if (face.chunk !== undefined || tiles.has(faceTile(face))) continue;
       if (face.vista !== undefined) this.free(key, { level: 0, slot: face.vista });
       if (face.detail) this.free(key, face.detail);
       this.faces.delete(key);
@@ -232,17 +367,28 @@ export class PtexStore {
     for (const level of this.levels) level.owner.clear();
     this.faces.clear();
     for (const t of this.tables.values()) for (let f = 0; f < FACES * FACES; f++) t[4 * f] = -1;
+    for (const c of this.chunks.values()) {
+      for (let q = 0; q < c.quads; q++) {
+        c.table[4 * q] = -1;
+        c.changed(q);
+      }
+    }
   }
 
-  /** Faces with a page and, of those, with a detail page. */
-  stats(): { faces: number; detail: number } {
-    let faces = 0;
-    let detail = 0;
+  /** Tile faces with a page and, of those, with a detail page; the same of chunk faces. */
+  stats(): { faces: number; detail: number; chunkFaces: number; chunkDetail: number } {
+    const out = { faces: 0, detail: 0, chunkFaces: 0, chunkDetail: 0 };
     for (const f of this.faces.values()) {
-      if (f.vista !== undefined || f.detail) faces++;
-      if (f.detail) detail++;
+      const paged = f.vista !== undefined || f.detail !== undefined;
+      if (f.chunk !== undefined) {
+        if (paged) out.chunkFaces++;
+        if (f.detail) out.chunkDetail++;
+      } else {
+        if (paged) out.faces++;
+        if (f.detail) out.detail++;
+      }
     }
-    return { faces, detail };
+    return out;
   }
 
   private free(key: string, at: { level: number; slot: number }): void {
@@ -252,10 +398,26 @@ export class PtexStore {
 
   /** Points the face's table entry at its best page (or at none). */
   private refresh(face: Face): void {
-    const t = this.table(faceTile(face));
-    const fi = face.fx - FACES * Math.floor(face.fx / FACES);
-    const fj = face.fz - FACES * Math.floor(face.fz / FACES);
-    const e = 4 * (fj * FACES + fi);
+    let t: Float32Array;
+    let e: number;
+    let chunk: ChunkFaces | undefined;
+    if (face.chunk !== undefined) {
+      chunk = this.chunks.get(face.chunk);
+      if (!chunk || face.quad === undefined || face.quad >= chunk.quads) return;
+      t = chunk.table;
+      e = 4 * face.quad;
+    } else {
+      t = this.table(faceTile(face));
+      const fi = face.fx - FACES * Math.floor(face.fx / FACES);
+      const fj = face.fz - FACES * Math.floor(face.fz / FACES);
+      e = 4 * (fj * FACES + fi);
+    }
+    this.point(face, t, e);
+    if (chunk && face.quad !== undefined) chunk.changed(face.quad);
+  }
+
+  /** Writes the entry at `e` of `t` for the face's best page (or none). */
+  private point(face: Face, t: Float32Array, e: number): void {
     const at = face.detail ?? (face.vista !== undefined ? { level: 0, slot: face.vista } : undefined);
     if (!at) {
       t[e] = -1;

@@ -223,6 +223,14 @@ export function addSplat(shader: THREE.WebGLProgramParametersWithUniforms, under
 /** The biome tint's share of the albedo. */
 const SHARE = BIOME_SHARE;
 
+/** Material `material`'s mid colour (linear, half way between its base and tint): the biome
+ * colour of a vertex without biome weights (a volume chunk's, ./chunk.ts), so its splat is the
+ * material's pattern untinted. */
+export function splatMidColour(material: number): THREE.Color {
+  const m = Math.min(BASE.length - 1, material);
+  return BASE_LINEAR[m].clone().lerp(TINT_LINEAR[m], 0.5);
+}
+
 /** Writes the splat attributes of vertex `v` (module docs): `base` and `span` (linear RGB, three
  * floats each) and `sel` (bytes: the amplitude over AMP_MAX of the channel material `material`
  * reads), from its material, its biome colour (linear) and the water's share of its colour. */
