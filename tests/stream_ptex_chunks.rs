@@ -187,15 +187,7 @@ const MAX_HTTP_TEXELS: u64 = 1 << 20;
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_face_of_the_held_chunks_gets_the_http_routes_page_within_the_budget() {
     let settings = PtexSettings::default();
-    let addr = serve(settings).await;
-    let (id, token) = arch_world(&addr).await;
-    let mut ws = connect(
-        &addr,
-        &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),
-    )
-    .await;
-    until_hello(&mut ws).await;
-    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    let (addr, id, mut ws) = open_session(settings).await;
     let y = f64::from(ground_at(32, 24)) + 40.0;
     send(&mut ws, view(y, true, false)).await;
     let got = until_idle(&mut ws).await;
@@ -337,6 +329,18 @@ async fn every_face_of_the_held_chunks_gets_the_http_routes_page_within_the_budg
     }
 }
 
+/// A server with `settings`, the arch world on it, and a protocol-2 session to it that has
+/// said hello and been granted 1,024 frames: the server's address, the world's id, the socket.
+async fn open_session(settings: PtexSettings) -> (String, String, Ws) {
+    let addr = serve(settings).await;
+    let (id, token) = arch_world(&addr).await;
+    let path = format!("/v1/worlds/{id}/stream?protocol=2&token={token}");
+    let mut ws = connect(&addr, &path).await;
+    until_hello(&mut ws).await;
+    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    (addr, id, ws)
+}
+
 async fn until_hello(ws: &mut Ws) {
     loop {
         let m = tokio::time::timeout(Duration::from_secs(30), ws.next())
@@ -356,12 +360,7 @@ async fn until_hello(ws: &mut Ws) {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_client_that_does_not_ask_gets_tile_faces_only_and_a_small_budget_holds_no_chunk() {
     // Without `chunks`, as clients before chunk pages: no chunk face is held or sent.
-    let addr = serve(PtexSettings::default()).await;
-    let (id, token) = arch_world(&addr).await;
-    let path = format!("/v1/worlds/{id}/stream?protocol=2&token={token}");
-    let mut ws = connect(&addr, &path).await;
-    until_hello(&mut ws).await;
-    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    let (_, _, mut ws) = open_session(PtexSettings::default()).await;
     let y = f64::from(ground_at(32, 24)) + 40.0;
     send(&mut ws, view(y, false, false)).await;
     let got = until_idle(&mut ws).await;
@@ -394,15 +393,7 @@ async fn a_client_that_does_not_ask_gets_tile_faces_only_and_a_small_budget_hold
         server_bytes: 1 << 30,
         ..PtexSettings::default()
     };
-    let addr = serve(small).await;
-    let (id, token) = arch_world(&addr).await;
-    let mut ws = connect(
-        &addr,
-        &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),
-    )
-    .await;
-    until_hello(&mut ws).await;
-    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    let (_, _, mut ws) = open_session(small).await;
     send(&mut ws, view(y, true, true)).await;
     let first = until_idle(&mut ws).await;
     assert!(first.chunks.is_empty(), "no chunk rings, no chunks");
