@@ -27,8 +27,9 @@ const AREAS: [(&str, f32, f32); 4] = [
     ("mountains", 110e3, -40e3),
 ];
 
-/// Follows the flow from `start` to its end and checks every step: heights fall strictly, the
-/// water level never rises, the discharge never falls. Returns the end and whether it is a lake.
+/// Follows the flow from `start` to its end and checks every step: heights fall strictly (or
+/// stay below the level of the lake the step leaves), the water level never rises, the
+/// discharge never falls. Returns the end and whether it is a lake.
 fn trace(net: &mut Network, start: NodeId, done: &mut HashSet<NodeId>) -> usize {
     let mut at = start;
     let mut steps = 0;
@@ -46,8 +47,10 @@ fn trace(net: &mut Network, start: NodeId, done: &mut HashSet<NodeId>) -> usize 
             return steps;
         };
         let m = net.node(d.0, d.1);
+        // Out of a lake that spills (`lakes: 3`, new worlds) the flow climbs to the lake's
+        // outlet, which lies below its level.
         assert!(
-            m.h < n.h,
+            m.h < n.h || n.lake.is_some_and(|l| m.h < l),
             "height rises from {at:?} to {d:?}: {n:?} → {m:?}"
         );
         assert!(
@@ -210,6 +213,56 @@ fn lakes_fill_their_depressions_to_the_outlet_and_shallow_pits_drain() {
         lakes > 0 && full > 0,
         "{lakes} lakes, {full} filled to an outlet"
     );
+}
+
+/// New worlds (`lakes: 3`): a lake whose flood found an outlet spills there, and its river
+/// goes on down to the sea or to a lake whose level is lower, never back into itself.
+#[test]
+fn lakes_spill_over_their_outlet_to_the_sea_or_a_lower_lake() {
+    let p = plan();
+    let (earth, rp) = parts(&p);
+    assert_eq!(rp.lakes, 3, "new worlds spill their lakes");
+    let mut net = Network::new(earth, rp);
+    let mut spills = 0;
+    for (_, x, z) in AREAS {
+        let (ci, ck) = ((x / rp.spacing_m) as i64, (z / rp.spacing_m) as i64);
+        for k in ck - 40..ck + 40 {
+            for i in ci - 40..ci + 40 {
+                let n = net.node(i, k);
+                let (Some(level), Some(d)) = (n.lake, n.down) else {
+                    continue;
+                };
+                let o = net.node(d.0, d.1);
+                if o.h <= n.h {
+                    continue;
+                }
+                // A step up out of a lake: its spill to the outlet, which lies below the level.
+                spills += 1;
+                assert!(o.h < level, "{:?} spills above its level: {o:?}", (i, k));
+                assert!(
+                    o.w <= n.w,
+                    "the water rises over the outlet of {:?}",
+                    (i, k)
+                );
+                let mut at = o;
+                let mut steps = 0;
+                loop {
+                    if let Some(l) = at.lake.filter(|_| at.h < o.h) {
+                        assert!(l <= level, "{:?} spills into a higher lake", (i, k));
+                        break;
+                    }
+                    let Some(next) = at.down else {
+                        assert!(at.sea, "{:?} spills into a closed basin at {at:?}", (i, k));
+                        break;
+                    };
+                    at = net.node(next.0, next.1);
+                    steps += 1;
+                    assert!(steps < 20_000, "the spill of {:?} never ends", (i, k));
+                }
+            }
+        }
+    }
+    assert!(spills >= 5, "only {spills} lakes spill over 4 × 80 × 80 km");
 }
 
 fn tile_bits(t: &strata::terrain::Tile) -> Vec<u32> {

@@ -16,16 +16,25 @@
 //! 3. **Discharge.** `Q(n) = min(upstream nodes including n, Q_MAX)`, computed by a depth-first
 //!    count that stops once `Q_MAX` is reached, so it reads at most `Q_MAX` nodes upstream and is
 //!    exact below the cap. It never falls downstream (`Q(down(n)) ≥ Q(n)`, also at the cap).
-//! 4. **Water level.** `W(n) = max(H(n) − incision(Q(n)), sea level)`: `H` falls strictly along
-//!    the flow and the incision grows with `Q`, so `W` never rises downstream.
+//! 4. **Water level.** `W(n) = max(H(n) − incision(Q(n)), B)`, `B` the level of the lake the
+//!    flow reaches first, or sea level: `H` falls strictly along the flow (out of a lake that
+//!    spills, step 5, it climbs to the outlet, below the lake's level, which is the pit's `W`),
+//!    the incision grows with `Q` and `B` never rises, so `W` never rises downstream.
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
-//!    Rivers end in the lake; lakes do not spill into further rivers. In worlds with `lakes: 2`
-//!    (the default of new worlds) the ground is shaped to meet each lake's level along a
-//!    curved shore ([`shores`]) before the carve; with `lakes: 1` a sample is lake water where
-//!    one of the four nodes around it holds a lake above its height, so the water can end along
-//!    straight lines between dry nodes.
+//!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
+//!    with `lakes: 3` (the default of new worlds) a node below the level whose steepest descent
+//!    runs back into the lake, or into a pit no lower than the lake's, is flooded too (on flat
+//!    land two neighbouring pits are each other's first node below the level), and a lake
+//!    whose flood found an outlet spills there when the flow from the outlet reaches the sea,
+//!    or first a lake whose `(level, index)` is lower (so levels never rise along a chain of
+//!    spills and the flow has no cycle): its pit drains to the outlet, the discharge goes on,
+//!    the water level through the lake is its level, and the carve cuts the rim down to it
+//!    along the spill's edge. In worlds with `lakes` 2 and 3 the ground is shaped to meet each
+//!    lake's level along a curved shore ([`shores`]) before the carve; with `lakes: 1` a sample
+//!    is lake water where one of the four nodes around it holds a lake above its height, so the
+//!    water can end along straight lines between dry nodes.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with

@@ -34,6 +34,7 @@ type Frame = (NodeId, Vec<NodeId>, usize, u32);
 pub fn clear_caches() {
     CACHES.heights.invalidate_all();
     CACHES.routes.invalidate_all();
+    CACHES.spills.invalidate_all();
     CACHES.flow.invalidate_all();
     CACHES.pieces.invalidate_all();
 }
@@ -48,6 +49,7 @@ type BlockKey = (u64, (i64, i64));
 struct Caches {
     heights: moka::sync::Cache<BlockKey, Arc<HeightBlock>>,
     routes: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
+    spills: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
     flow: moka::sync::Cache<BlockKey, Arc<FlowBlock>>,
     pieces: moka::sync::Cache<BlockKey, Arc<Vec<Piece>>>,
 }
@@ -72,9 +74,8 @@ static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches 
     heights: cache(HEIGHTS_BYTES, |b: &HeightBlock| {
         4 * b.h.len() + b.down.len() + 4 * b.relief.len()
     }),
-    routes: cache(ROUTES_BYTES, |b: &RouteBlock| {
-        48 * b.out.len() + b.into.values().map(|v| 48 + 16 * v.len()).sum::<usize>()
-    }),
+    routes: cache(ROUTES_BYTES, RouteBlock::weight),
+    spills: cache(ROUTES_BYTES, RouteBlock::weight),
     flow: cache(FLOW_BYTES, |b: &FlowBlock| {
         4 * (b.q.len() + b.lake.len() + b.w.len())
     }),
@@ -83,14 +84,22 @@ static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches 
     }),
 });
 
-/// The breached pits of one block: shallow pits that drain over their saddle to the outlet
-/// beyond it instead of holding a lake.
+/// The breached pits of one block (shallow pits that drain over their saddle to the outlet
+/// beyond it instead of holding a lake), or in `lakes: 3` worlds its spilling lakes (pits that
+/// hold a lake and drain from it to its outlet, [`Network::spill`]).
 #[derive(Default)]
 struct RouteBlock {
-    /// Breached pits of the block and their outlets.
+    /// Pits of the block and their outlets.
     out: HashMap<(i64, i64), (i64, i64)>,
-    /// Outlets in the block and the breached pits that drain into each, in index order.
+    /// Outlets in the block and the pits that drain into each, in index order.
     into: HashMap<(i64, i64), Vec<(i64, i64)>>,
+}
+
+impl RouteBlock {
+    /// Bytes the block's cache entry is weighed at.
+    fn weight(&self) -> usize {
+        48 * self.out.len() + self.into.values().map(|v| 48 + 16 * v.len()).sum::<usize>()
+    }
 }
 
 /// Heights (a one-node ring included) and flow directions of one block of nodes.
@@ -144,6 +153,7 @@ pub struct Network<'a> {
     pub(super) plan: &'a RiverPlan,
     heights: HashMap<(i64, i64), Arc<HeightBlock>>,
     routes: HashMap<(i64, i64), Arc<RouteBlock>>,
+    spills: HashMap<(i64, i64), Arc<RouteBlock>>,
     flows: HashMap<(i64, i64), Arc<FlowBlock>>,
 }
 
@@ -165,6 +175,7 @@ impl<'a> Network<'a> {
             plan,
             heights: HashMap::default(),
             routes: HashMap::default(),
+            spills: HashMap::default(),
             flows: HashMap::default(),
         }
     }
@@ -266,21 +277,110 @@ impl<'a> Network<'a> {
         rb
     }
 
-    /// The downstream neighbour of node `(i, k)`: its lattice neighbour of steepest descent, or
-    /// for a breached pit its outlet.
-    pub fn down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+    fn spill_block(&mut self, b: (i64, i64)) -> Arc<RouteBlock> {
+        if let Some(sb) = self.spills.get(&b) {
+            return sb.clone();
+        }
+        if let Some(sb) = CACHES.spills.get(&(self.plan.fingerprint, b)) {
+            self.spills.insert(b, sb.clone());
+            return sb;
+        }
+        let sb = Arc::new(self.compute_spills(b));
+        CACHES.spills.insert((self.plan.fingerprint, b), sb.clone());
+        self.spills.insert(b, sb.clone());
+        sb
+    }
+
+    /// The outlet of breached pit `(i, k)`, if it is one.
+    fn breached(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
+        self.route_block((bx, bz)).out.get(&(i, k)).copied()
+    }
+
+    /// Whether `(i, k)` holds a lake: a pit that is not breached.
+    fn is_lake_pit(&mut self, i: i64, k: i64) -> bool {
+        self.is_pit(i, k) && self.breached(i, k).is_none()
+    }
+
+    /// The downstream neighbour of `(i, k)` before lakes spill: its lattice neighbour of
+    /// steepest descent, or for a breached pit its outlet.
+    fn breach_down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
         if let Some(d) = self.lattice_down(i, k) {
             return Some(d);
         }
         if !self.is_pit(i, k) {
             return None;
         }
+        self.breached(i, k)
+    }
+
+    /// The outlet lake pit `(i, k)` spills to in `lakes: 3` worlds: the outlet of its flood, when
+    /// the flow from there ([`Network::breach_down`], at most [`LAKE_WALK`] steps) reaches the
+    /// sea, or first a lake pit whose `(level, index)` is below this one's. Levels never rise
+    /// along a chain of spills and the order is strict, so the flow has no cycle, and the
+    /// water levels that rest on the levels never rise downstream (module docs, steps 4–5).
+    fn spill(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        let (level, _, outlet) = self.flood(i, k);
+        let o = outlet?;
+        let mut at = o;
+        for _ in 0..=LAKE_WALK {
+            if self.is_lake_pit(at.0, at.1) {
+                if at == (i, k) {
+                    return None;
+                }
+                let other = self.flood(at.0, at.1).0;
+                let lower = other.total_cmp(&level).then(at.cmp(&(i, k))).is_lt();
+                return lower.then_some(o);
+            }
+            match self.breach_down(at.0, at.1) {
+                Some(next) => at = next,
+                None => return (self.height(at.0, at.1) < self.plan.sea_level_m).then_some(o),
+            }
+        }
+        None
+    }
+
+    fn compute_spills(&mut self, (bx, bz): (i64, i64)) -> RouteBlock {
+        let (i0, k0) = (bx * BLOCK, bz * BLOCK);
+        let inside =
+            |i: i64, k: i64| (i0..i0 + BLOCK).contains(&i) && (k0..k0 + BLOCK).contains(&k);
+        let mut sb = RouteBlock::default();
+        // An outlet lies within the flood radius (plus one) of its pit.
+        let r = LAKE_RADIUS + 1;
+        for k in k0 - r..k0 + BLOCK + r {
+            for i in i0 - r..i0 + BLOCK + r {
+                if !self.is_lake_pit(i, k) {
+                    continue;
+                }
+                let Some(o) = self.spill(i, k) else {
+                    continue;
+                };
+                if inside(i, k) {
+                    sb.out.insert((i, k), o);
+                }
+                if inside(o.0, o.1) {
+                    sb.into.entry(o).or_default().push((i, k));
+                }
+            }
+        }
+        sb
+    }
+
+    /// The downstream neighbour of node `(i, k)`: its lattice neighbour of steepest descent, for
+    /// a breached pit its outlet, and in `lakes: 3` worlds for a spilling lake its outlet.
+    pub fn down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
+        if let Some(d) = self.breach_down(i, k) {
+            return Some(d);
+        }
+        if self.plan.lakes < 3 || !self.is_pit(i, k) {
+            return None;
+        }
         let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
-        self.route_block((bx, bz)).out.get(&(i, k)).copied()
+        self.spill_block((bx, bz)).out.get(&(i, k)).copied()
     }
 
     /// The upstream neighbours of node `(i, k)`: lattice neighbours in [`OFFSETS`] order, then
-    /// the breached pits that drain into it.
+    /// the breached pits that drain into it, then (`lakes: 3`) the lakes that spill into it.
     pub fn upstream(&mut self, i: i64, k: i64) -> Vec<(i64, i64)> {
         let mut out = Vec::new();
         for (d, (di, dk)) in OFFSETS.iter().enumerate() {
@@ -295,6 +395,11 @@ impl<'a> Network<'a> {
         let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
         if let Some(pits) = self.route_block((bx, bz)).into.get(&(i, k)) {
             out.extend_from_slice(pits);
+        }
+        if self.plan.lakes >= 3 {
+            if let Some(lakes) = self.spill_block((bx, bz)).into.get(&(i, k)) {
+                out.extend_from_slice(lakes);
+            }
         }
         out
     }
@@ -434,7 +539,7 @@ impl<'a> Network<'a> {
         let mut levels: HashMap<(i64, i64), f32> = HashMap::default();
         for k in k0 - r..k0 + BLOCK + r {
             for i in i0 - r..i0 + BLOCK + r {
-                if self.down(i, k).is_some() || !self.is_pit(i, k) {
+                if !self.is_lake_pit(i, k) {
                     continue;
                 }
                 let (level, flooded, _) = self.flood(i, k);
@@ -488,6 +593,12 @@ impl<'a> Network<'a> {
             if let Some(&known) = memo.get(&at) {
                 break known;
             }
+            // A lake ends the flow, also one that spills (`lakes: 3`): the water levels rest
+            // on its level.
+            if self.plan.lakes >= 3 && self.is_lake_pit(at.0, at.1) {
+                memo.insert(at, (at, 0));
+                break (at, 0);
+            }
             match self.down(at.0, at.1) {
                 None => {
                     memo.insert(at, (at, 0));
@@ -529,7 +640,8 @@ impl<'a> Network<'a> {
                     .then(o.2.cmp(&self.2))
             }
         }
-        let mut level = self.height(i, k);
+        let floor = self.height(i, k);
+        let mut level = floor;
         let mut flooded = vec![(i, k)];
         let mut seen: HashSet<(i64, i64)> = HashSet::from([(i, k)]);
         let mut heap = BinaryHeap::new();
@@ -547,19 +659,49 @@ impl<'a> Network<'a> {
         };
         push(self, &mut heap, &mut seen, i, k);
         let mut outlet = None;
+        // `lakes: 3`: the nodes flooded so far, to tell an outlet from a node below the level
+        // whose flow runs back into the lake.
+        let spills = self.plan.lakes >= 3;
+        let mut lake: HashSet<(i64, i64)> = HashSet::new();
+        if spills {
+            lake.insert((i, k));
+        }
         while let Some(Entry(h, ni, nk)) = heap.pop() {
-            if h < level {
+            if h < level && !(spills && self.drains_into(ni, nk, &lake, floor)) {
                 outlet = Some((ni, nk));
                 break;
             }
             if flooded.len() >= LAKE_MAX_NODES || (ni - i).abs().max((nk - k).abs()) > LAKE_RADIUS {
                 break;
             }
-            level = h;
+            level = level.max(h);
             flooded.push((ni, nk));
+            if spills {
+                lake.insert((ni, nk));
+            }
             push(self, &mut heap, &mut seen, ni, nk);
         }
         (level, flooded, outlet)
+    }
+
+    /// Whether a node below a lake's level belongs to its basin rather than being its outlet
+    /// (`lakes: 3`): the steepest descent from `(i, k)` on the lattice ([`Network::lattice_down`],
+    /// at most [`LAKE_WALK`] steps) reaches a node of `lake`, or ends in a pit no lower than the
+    /// lake's `floor` (two pits on flat land, each the other's first node below its level: the
+    /// flood goes on over both). So an outlet drains to the sea or to a pit lower than the
+    /// lake's, and the pits along a chain of outlets fall strictly.
+    fn drains_into(&mut self, i: i64, k: i64, lake: &HashSet<(i64, i64)>, floor: f32) -> bool {
+        let mut at = (i, k);
+        for _ in 0..LAKE_WALK {
+            if lake.contains(&at) {
+                return true;
+            }
+            match self.lattice_down(at.0, at.1) {
+                Some(next) => at = next,
+                None => return self.height(at.0, at.1) >= floor,
+            }
+        }
+        false
     }
 }
 
