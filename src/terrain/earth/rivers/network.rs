@@ -12,8 +12,8 @@ use super::{
     RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_MAX_NODES, LAKE_RADIUS, LAKE_WALK, NONE, OFFSETS, Q_MAX,
     ROUTE_NOISE,
 };
-use rustc_hash::FxHashMap as HashMap;
-use std::collections::{BinaryHeap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+use std::collections::BinaryHeap;
 use std::sync::Arc;
 
 /// A node's lattice index `(i, k)`.
@@ -643,7 +643,8 @@ impl<'a> Network<'a> {
         let floor = self.height(i, k);
         let mut level = floor;
         let mut flooded = vec![(i, k)];
-        let mut seen: HashSet<(i64, i64)> = HashSet::from([(i, k)]);
+        let mut seen: HashSet<(i64, i64)> = HashSet::default();
+        seen.insert((i, k));
         let mut heap = BinaryHeap::new();
         let push = |net: &mut Self,
                     heap: &mut BinaryHeap<Entry>,
@@ -662,7 +663,7 @@ impl<'a> Network<'a> {
         // `lakes: 3`: the nodes flooded so far, to tell an outlet from a node below the level
         // whose flow runs back into the lake.
         let spills = self.plan.lakes >= 3;
-        let mut lake: HashSet<(i64, i64)> = HashSet::new();
+        let mut lake: HashSet<(i64, i64)> = HashSet::default();
         if spills {
             lake.insert((i, k));
         }
