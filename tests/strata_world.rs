@@ -438,8 +438,10 @@ fn chunks_sharing_a_vertex_give_it_the_same_bits_near_caves_and_on_the_ground() 
     }
     // A world of 0.25 m cells with 4 m voxels: probes reach 40 columns beyond their vertex's
     // cell, past the window's 31, which clamps them alike in every chunk.
-    let mut fine = WorldParams::default();
-    fine.cell_m = 0.25;
+    let fine = WorldParams {
+        cell_m: 0.25,
+        ..WorldParams::default()
+    };
     let mut world = World::with(fine, vec![geology_of(4.0)]);
     let mut keys = Vec::new();
     for z in 0..3 {
