@@ -32,6 +32,11 @@ fn cave_config() -> SubsurfaceConfig {
 }
 
 fn geology() -> Arc<Geology> {
+    geology_of(1.0)
+}
+
+/// The cave element with voxels of `voxel_m`.
+fn geology_of(voxel_m: f64) -> Arc<Geology> {
     Arc::new(Geology::new(
         SEED,
         StrataSpec {
@@ -39,7 +44,7 @@ fn geology() -> Arc<Geology> {
             min: [-3000.0, -3000.0],
             max: [3000.0, 3000.0],
             config: cave_config(),
-            voxel_m: 1.0,
+            voxel_m,
             carve: true,
             mark_openings: false,
         },
@@ -54,11 +59,21 @@ struct World {
 
 impl World {
     fn new(strata: bool) -> Self {
+        Self::of(WorldParams::default(), strata)
+    }
+
+    /// A world of `params` with the cave element when `strata`.
+    fn of(params: WorldParams, strata: bool) -> Self {
+        Self::with(params, if strata { vec![geology()] } else { Vec::new() })
+    }
+
+    /// A world of `params` with the `strata` elements `geos`.
+    fn with(params: WorldParams, geos: Vec<Arc<Geology>>) -> Self {
         Self {
-            plan: WorldPlan::new(SEED, WorldParams::default()).expect("default world"),
+            plan: WorldPlan::new(SEED, params).expect("world"),
             edits: TileEdits {
                 displacements: Vec::new(),
-                strata: if strata { vec![geology()] } else { Vec::new() },
+                strata: geos,
                 volumes: Vec::new(),
                 materials: None,
             },
@@ -79,10 +94,9 @@ impl World {
             self.tile(TileKey { lod: key.lod, x, z });
         }
         let cols = common::columns::columns(key, &self.tiles);
-        let s = self.plan.lods[key.lod as usize].spacing_m;
         mesh_world_chunk(
             key,
-            s,
+            &self.plan,
             &cols,
             &[],
             &self.edits.strata,
@@ -92,7 +106,7 @@ impl World {
         .expect("mesh")
     }
 
-    /// LOD-0 ground height (before breaches) at integer column `(gx, gz)`.
+    /// LOD-0 ground height (before breaches) at LOD-0 column `(gx, gz)`.
     fn ground(&mut self, gx: i64, gz: i64) -> f32 {
         let t = self.tile(TileKey {
             lod: 0,
@@ -102,7 +116,9 @@ impl World {
         let h = t.heights[(gz.rem_euclid(64) * 65 + gx.rem_euclid(64)) as usize];
         let geos = self.edits.strata.clone();
         let mut memos = strata::subsurface::world::memos(&geos);
-        strata::subsurface::world::ground_under(&geos, &mut memos, gx as f64, gz as f64, h)
+        let cell_m = f64::from(self.plan.params.cell_m);
+        let (x, z) = (gx as f64 * cell_m, gz as f64 * cell_m);
+        strata::subsurface::world::ground_under(&geos, &mut memos, x, z, h)
     }
 }
 
@@ -288,6 +304,206 @@ fn caves_carve_closed_cavities_seamless_across_chunk_borders() {
     assert!(
         volume < 0.0 && (-volume) > 0.4 * carved && (-volume) < 1.6 * carved,
         "enclosed {volume} m³ against {carved} m³ carved"
+    );
+}
+
+/// The default world of new worlds before `valleys: 4` became it: `valleys: 3`.
+fn third_valleys() -> WorldParams {
+    let mut params = WorldParams::default();
+    let rivers = params.earth.as_mut().and_then(|e| e.rivers.as_mut());
+    rivers.expect("the default world has rivers").valleys = 3;
+    params
+}
+
+/// The bits of every vertex of the chunks `keys` by global cell (in-cell offset, normal,
+/// material): how many vertices two chunks share, and each shared vertex whose bits differ
+/// between two chunks.
+fn shared_vertices(world: &mut World, keys: &[ChunkKey]) -> (usize, Vec<String>) {
+    type Bits = ([u32; 3], [u32; 3], u32);
+    let mut seen: BTreeMap<(u32, [i64; 3]), (Bits, ChunkKey)> = BTreeMap::new();
+    let (mut shared, mut differ) = (0, Vec::new());
+    for &key in keys {
+        let m = world.chunk(key);
+        assert_eq!(m.geology.len(), m.positions.len());
+        for (v, cell) in m.global_cells.iter().enumerate() {
+            let bits = (
+                m.offsets[v].map(f32::to_bits),
+                m.normals[v].map(f32::to_bits),
+                m.geology[v],
+            );
+            match seen.get(&(key.lod, *cell)) {
+                None => {
+                    seen.insert((key.lod, *cell), (bits, key));
+                }
+                Some(&(before, other)) => {
+                    shared += 1;
+                    if before != bits {
+                        differ.push(format!(
+                            "lod {} cell {cell:?}: {before:?} in {other:?}, {bits:?} in {key:?}",
+                            key.lod
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    (shared, differ)
+}
+
+/// The chunks of `lod` holding the caves of lattice cells `0..6 × 0..6` whose columns cross a
+/// chunk border, and the chunks holding the ground of chunk columns `x0..x0 + 4`, `z0..z0 + 3`.
+fn seam_chunks(world: &mut World, g: &Geology, lod: u32, x0: i64, z0: i64) -> Vec<ChunkKey> {
+    let side = 32i64 << lod;
+    let mut keys = BTreeSet::new();
+    for cz in 0..6 {
+        for cx in 0..6 {
+            let Some(cols) = cave_columns(g, (cx, cz)) else {
+                continue;
+            };
+            let xs: BTreeSet<i64> = cols.keys().map(|k| k.0.div_euclid(side)).collect();
+            let zs: BTreeSet<i64> = cols.keys().map(|k| k.1.div_euclid(side)).collect();
+            if xs.len() < 2 && zs.len() < 2 {
+                continue;
+            }
+            let (mut lo, mut hi) = (f64::MAX, f64::MIN);
+            for (&(gx, gz), &(a, b)) in &cols {
+                let ground = f64::from(world.ground(gx, gz));
+                lo = lo.min(ground + f64::from(a));
+                hi = hi.max(ground + f64::from(b));
+            }
+            let ys =
+                (lo.floor() as i64 - 2).div_euclid(side)..=(hi.ceil() as i64 + 2).div_euclid(side);
+            for &z in &zs {
+                for &x in &xs {
+                    for y in ys.clone() {
+                        keys.insert((lod, z, x, y));
+                    }
+                }
+            }
+        }
+    }
+    for z in z0..z0 + 3 {
+        for x in x0..x0 + 4 {
+            let (mut lo, mut hi) = (f64::MAX, f64::MIN);
+            for (i, k) in [(0, 0), (1, 0), (0, 1), (1, 1), (0, 0)].iter().enumerate() {
+                let half = if i == 4 { side / 2 } else { 0 };
+                let ground =
+                    f64::from(world.ground((x + k.0) * side + half, (z + k.1) * side + half));
+                lo = lo.min(ground);
+                hi = hi.max(ground);
+            }
+            let ys =
+                (lo.floor() as i64 - 4).div_euclid(side)..=(hi.ceil() as i64 + 4).div_euclid(side);
+            for y in ys {
+                keys.insert((lod, z, x, y));
+            }
+        }
+    }
+    keys.into_iter()
+        .map(|(lod, z, x, y)| ChunkKey { lod, x, y, z })
+        .collect()
+}
+
+/// Chunks that share a vertex give it the same in-cell offset, normal and material bits, over
+/// the chunks around the caves near the origin and along the ground, at LODs 0 and 1, on the
+/// default world (`valleys: 4`, where the test above once found vertex cell `[63, 805, 6]` with
+/// material 14 in one chunk and 11 in the other), on one with `valleys: 3`, and on one of
+/// 0.25 m cells with 4 m voxels, whose probes reach past the window's clamp.
+#[test]
+fn chunks_sharing_a_vertex_give_it_the_same_bits_near_caves_and_on_the_ground() {
+    let g = geology();
+    let mut report = Vec::new();
+    let mut failed = 0;
+    for (name, params) in [
+        ("default", WorldParams::default()),
+        ("valleys 3", third_valleys()),
+    ] {
+        let mut world = World::of(params, true);
+        for (lod, x0, z0) in [(0, -2, -1), (1, -1, -1)] {
+            let keys = seam_chunks(&mut world, &g, lod, x0, z0);
+            let (shared, differ) = shared_vertices(&mut world, &keys);
+            assert!(
+                shared > 1000,
+                "{name}, lod {lod}: {} chunks share only {shared} vertices",
+                keys.len()
+            );
+            report.push(format!(
+                "{name}, lod {lod}: {} chunks, {shared} shared vertices, {} differ",
+                keys.len(),
+                differ.len()
+            ));
+            failed += differ.len();
+            report.extend(differ.into_iter().take(8));
+        }
+    }
+    // A world of 0.25 m cells with 4 m voxels: probes reach 40 columns beyond their vertex's
+    // cell, past the window's 31, which clamps them alike in every chunk.
+    let fine = WorldParams {
+        cell_m: 0.25,
+        ..WorldParams::default()
+    };
+    let mut world = World::with(fine, vec![geology_of(4.0)]);
+    let mut keys = Vec::new();
+    for z in 0..3 {
+        for x in 0..4 {
+            let ground = f64::from(world.ground(x * 32 + 16, z * 32 + 16));
+            let y = (ground / 8.0).floor() as i64;
+            keys.extend((y - 2..=y + 2).map(|y| ChunkKey { lod: 0, x, y, z }));
+        }
+    }
+    let (shared, differ) = shared_vertices(&mut world, &keys);
+    assert!(shared > 500, "fine: only {shared} shared vertices");
+    report.push(format!(
+        "fine, lod 0: {} chunks, {shared} shared vertices, {} differ",
+        keys.len(),
+        differ.len()
+    ));
+    failed += differ.len();
+    report.extend(differ.into_iter().take(8));
+    eprintln!("{}", report.join("\n"));
+    assert_eq!(failed, 0, "{}", report.join("\n"));
+}
+
+/// The chunk bytes (`.bin`) of a world stored before `chunk_geology` (the default world of then,
+/// `d29b3c9`: `valleys: 3`, `lakes: 2`, no `chunk_geology`) over the chunks of the test above,
+/// pinned from the code before `chunk_geology: 2` existed: the seam fix leaves stored worlds'
+/// chunks as they were.
+const STORED_CHUNKS_BLAKE3: &str =
+    "3c7edcb8918cd855cc74ffd93887ea14edb86122f13881c03c9bc331f4dc4c55";
+
+#[test]
+fn chunks_of_a_world_stored_before_chunk_geology_keep_their_bytes() {
+    let g = geology();
+    let mut doc = serde_json::to_value(WorldParams::default()).expect("world document");
+    // The settings of new worlds then that today's default may have moved on from.
+    doc["earth"]["rivers"]["valleys"] = json!(3);
+    doc["earth"]["rivers"]["lakes"] = json!(2);
+    let fields = doc.as_object_mut().expect("an object");
+    fields
+        .remove("chunk_geology")
+        .expect("new worlds name chunk_geology");
+    let params: WorldParams = serde_json::from_value(doc).expect("a stored world document");
+    assert_eq!(params.chunk_geology, 1);
+    let mut world = World::of(params, true);
+    let mut hash = blake3::Hasher::new();
+    let mut chunks = 0;
+    for (lod, x0, z0) in [(0, -2, -1), (1, -1, -1)] {
+        for key in seam_chunks(&mut world, &g, lod, x0, z0) {
+            let m = world.chunk(key);
+            let info = strata::encode::chunk::ChunkInfo {
+                seed: SEED,
+                key,
+                spacing_m: world.plan.lods[lod as usize].spacing_m,
+            };
+            hash.update(&strata::encode::chunk::encode_bin(&info, &m));
+            chunks += 1;
+        }
+    }
+    assert!(chunks > 60, "{chunks} chunks");
+    assert_eq!(
+        hash.finalize().to_hex().as_str(),
+        STORED_CHUNKS_BLAKE3,
+        "{chunks} chunks"
     );
 }
 

@@ -45,10 +45,9 @@ fn tiles(plan: &WorldPlan, key: ChunkKey) -> Vec<(TileKey, Tile)> {
 fn chunk(plan: &WorldPlan, key: ChunkKey, volumes: &[Arc<SolvedVolume>]) -> ChunkMesh {
     let tiles = tiles(plan, key).into_iter().collect();
     let cols = common::columns::columns(key, &tiles);
-    let s = plan.lods[key.lod as usize].spacing_m;
     mesh_world_chunk(
         key,
-        s,
+        plan,
         &cols,
         volumes,
         &[],

@@ -24,7 +24,7 @@ use super::AppState;
 use crate::encode::chunk::{encode_bin, encode_json, ChunkInfo, BIN_CONTENT_TYPE};
 use crate::encode::{chunk_glb, Format};
 use crate::scene::Rect;
-use crate::subsurface::carve::mesh_world_chunk;
+use crate::subsurface::carve::{ground_rect, mesh_world_chunk};
 use crate::terrain::{TileKey, WorldPlan};
 use crate::volume::chunk::{
     gather_columns, max_chunk_xz, max_chunk_y, tiles_needed, ChunkKey, ChunkMesh, TileColumns,
@@ -99,7 +99,9 @@ pub fn check_chunk_bounds(plan: &WorldPlan, key: ChunkKey) -> Result<(), AppErro
     Ok(())
 }
 
-/// The ground-plane rectangle whose columns chunk `key` reads (its padded samples), metres.
+/// The ground-plane rectangle whose columns chunk `key` reads (its padded samples), metres: the
+/// `strata` elements meeting it are the chunk's in worlds with `chunk_geology: 1`; those with
+/// `2` take the elements meeting [`ground_rect`], the columns of the chunk and its neighbours.
 fn chunk_rect(key: ChunkKey, spacing_m: f32) -> Rect {
     let s = f64::from(spacing_m);
     let side = CHUNK_CELLS as f64 * s;
@@ -138,9 +140,13 @@ pub(super) async fn mesh(
     }
     let plan = &view.plan;
     let spacing_m = plan.lods[key.lod as usize].spacing_m;
-    let strata = view
-        .inputs
-        .strata_meeting(plan.seed, &chunk_rect(key, spacing_m));
+    let chunk_geology = plan.params.chunk_geology;
+    let rect = if chunk_geology >= 2 {
+        ground_rect(key, spacing_m, chunk_geology)
+    } else {
+        chunk_rect(key, spacing_m)
+    };
+    let strata = view.inputs.strata_meeting(plan.seed, &rect);
     let (lo, hi) = chunk_box(key, spacing_m);
     let mut volumes = Vec::new();
     for v in view.inputs.volumes_meeting(lo, hi) {
@@ -149,6 +155,7 @@ pub(super) async fn mesh(
         }
     }
     let offload = st.compute.offload();
+    let view = view.clone();
     tokio::task::spawn_blocking(move || {
         let views: Vec<TileColumns<'_>> = tiles
             .iter()
@@ -163,7 +170,7 @@ pub(super) async fn mesh(
             .ok_or_else(|| AppError::internal("chunk tiles are incomplete"))?;
         mesh_world_chunk(
             key,
-            spacing_m,
+            &view.plan,
             &cols,
             &volumes,
             &strata,

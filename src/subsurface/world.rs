@@ -32,6 +32,7 @@
 use super::chunk::ElementMemo;
 use super::plan::{Composition, SubsurfacePlan};
 use super::spec::StrataSpec;
+use crate::element::Rect;
 use crate::terrain::lattice::Window;
 use std::sync::Arc;
 
@@ -74,6 +75,15 @@ impl Geology {
     /// Voxel side, metres.
     pub fn voxel_m(&self) -> f64 {
         self.spec.voxel_m
+    }
+
+    /// Whether the element's bbox meets the closed rectangle `r` (metres).
+    pub fn meets(&self, r: Rect) -> bool {
+        Rect {
+            min: self.spec.min,
+            max: self.spec.max,
+        }
+        .intersects(&r)
     }
 
     /// Whether the column at `(x, z)` (metres) is inside the element's bbox.

@@ -175,6 +175,18 @@ pub struct WorldParams {
     pub texturing: Texturing,
     /// Scatter.
     pub scatter: ScatterParams,
+    /// How volume chunks find the subsurface material of their vertices (`subsurface::carve`),
+    /// 1 or 2. `1`: a vertex's probe into the solid reads the ground from the chunk's padded
+    /// columns, clamped to them, so two chunks sharing a vertex on their border can give it
+    /// different materials; worlds stored before `2` existed have no `chunk_geology` and keep
+    /// it, and their bytes. `2` (new worlds): the probe reads the ground from the columns of the
+    /// chunk and its eight neighbours, which hold every probe, at world-anchored positions, so
+    /// every chunk gives a vertex the same material.
+    #[serde(
+        default = "WorldParams::first_chunk_geology",
+        skip_serializing_if = "WorldParams::is_first_chunk_geology"
+    )]
+    pub chunk_geology: u32,
 }
 
 /// Most biomes a world may have.
@@ -313,6 +325,7 @@ impl WorldParams {
                 spacing_m: 4.0,
                 lattice: ScatterLattice::Levels,
             },
+            chunk_geology: 2,
         }
     }
 }
@@ -395,6 +408,7 @@ impl WorldParams {
                 spacing_m: 4.0,
                 lattice: ScatterLattice::Scan,
             },
+            chunk_geology: WorldParams::first_chunk_geology(),
         }
     }
 }
@@ -465,6 +479,14 @@ fn check_fractal(
 }
 
 impl WorldParams {
+    fn first_chunk_geology() -> u32 {
+        1
+    }
+
+    fn is_first_chunk_geology(v: &u32) -> bool {
+        *v == 1
+    }
+
     /// Checks every limit; the server calls this before accepting a scene.
     pub fn validate(&self) -> Result<(), ParamError> {
         check(
@@ -598,6 +620,11 @@ impl WorldParams {
             self.scatter.spacing_m.is_finite() && self.scatter.spacing_m >= self.cell_m,
             "scatter.spacing_m",
             "must be at least cell_m",
+        )?;
+        check(
+            (1..=2).contains(&self.chunk_geology),
+            "chunk_geology",
+            "must be 1 or 2",
         )?;
         Ok(())
     }

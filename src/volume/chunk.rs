@@ -35,6 +35,9 @@
 //! origin (`x·32·s, …`) in `f32`; [`ChunkMesh::global_cells`] and [`ChunkMesh::offsets`] give the
 //! exact global placement. Ptex neighbours owned by another chunk are reported as none
 //! (the quad's global grid edge, [`ChunkMesh::global_edges`], identifies them across chunks).
+//! What reads the ground farther than the padding (the subsurface materials of
+//! `subsurface::carve`) reads [`Columns::wide_heights`], the heights of the chunk's and its eight
+//! neighbours' columns, from the same tiles: a function of the global column like the rest.
 //!
 //! # Cross-LOD seams: skirts
 //!
@@ -116,6 +119,13 @@ pub fn tiles_needed(key: ChunkKey) -> Vec<(i64, i64)> {
     out
 }
 
+/// Columns of the wide height window around a chunk's padded grid on every side
+/// ([`Columns::wide_heights`]): with them the window holds the columns of the chunk and of its
+/// eight neighbours, which lie in the tiles of [`tiles_needed`].
+pub const WIDE_MARGIN: usize = CHUNK_CELLS - 1;
+/// Columns per side of the wide height window: three chunks' worth.
+pub const WIDE_SAMPLES: usize = CHUNK_SAMPLES + 2 * WIDE_MARGIN;
+
 /// The columns a chunk reads: `34 × 34` values, index `i + 34·j` for global column
 /// `(32·x − 1 + i, 32·z − 1 + j)`.
 #[derive(Clone, Debug, PartialEq)]
@@ -126,6 +136,11 @@ pub struct Columns {
     pub normal_y: Vec<f32>,
     /// Material id (tile proto-texturing material).
     pub materials: Vec<u8>,
+    /// Ground heights of the wide window, metres: `96 × 96` values ([`WIDE_SAMPLES`]), index
+    /// `i + 96·j` for global column `(32·x − 32 + i, 32·z − 32 + j)`, the padded grid's columns
+    /// and [`WIDE_MARGIN`] more on every side. What `subsurface::carve` reads the ground under a
+    /// vertex's material probe from (worlds with `chunk_geology: 2`); the solid reads `heights`.
+    pub wide_heights: Vec<f32>,
 }
 
 /// A tile's per-vertex data the chunk needs (65×65, index `j·65 + i`).
@@ -145,11 +160,29 @@ pub struct TileColumns<'a> {
 pub fn gather_columns(key: ChunkKey, tiles: &[TileColumns<'_>]) -> Option<Columns> {
     let [gx0, _, gz0] = key.first_cell();
     let n = CHUNK_SAMPLES;
+    let w = WIDE_SAMPLES as i64;
     let mut out = Columns {
         heights: Vec::with_capacity(n * n),
         normal_y: Vec::with_capacity(n * n),
         materials: Vec::with_capacity(n * n),
+        wide_heights: Vec::with_capacity(WIDE_SAMPLES * WIDE_SAMPLES),
     };
+    let first = -1 - WIDE_MARGIN as i64;
+    for j in 0..w {
+        let gz = gz0 + first + j;
+        let tz = gz.div_euclid(TILE_QUADS);
+        let row = (gz.rem_euclid(TILE_QUADS) * 65) as usize;
+        let mut tile: Option<&TileColumns<'_>> = None;
+        for i in 0..w {
+            let gx = gx0 + first + i;
+            let t = (gx.div_euclid(TILE_QUADS), tz);
+            if tile.is_none_or(|c| c.tile != t) {
+                tile = Some(tiles.iter().find(|c| c.tile == t)?);
+            }
+            let v = row + gx.rem_euclid(TILE_QUADS) as usize;
+            out.wide_heights.push(*tile?.heights.get(v)?);
+        }
+    }
     for j in 0..n as i64 {
         let gz = gz0 - 1 + j;
         for i in 0..n as i64 {
