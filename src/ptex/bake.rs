@@ -34,7 +34,9 @@ use super::decal::apply as apply_decals;
 use super::face::{Face, FaceSet};
 use super::image::mip_level;
 use super::material::{MaterialSet, Texture};
-use super::noise::{exp2i, fbm2, fbm3, octave_count, MAX_FREQ_LOG2, MIN_FREQ_LOG2};
+use super::noise::{
+    exp2i, fbm2_in, fbm3_in, octave_count, Cell2, Cell3, MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
+};
 use super::pages::Pages;
 use rayon::prelude::*;
 
@@ -47,28 +49,97 @@ pub fn bake(set: &FaceSet, mats: &MaterialSet, res: u32, out: &mut Pages) {
 }
 
 /// Bakes the interior texels of every face of `set` at `res` into `out` (reset to the set's
-/// faces; borders left zero).
+/// faces; borders left zero). The rows of all faces are shared among the cores (a set of one
+/// large face still uses them all), each worker reading the noise through its own
+/// [`NoiseCache`].
 pub fn bake_interior(set: &FaceSet, mats: &MaterialSet, res: u32, out: &mut Pages) {
     out.reset(res, set.faces.len());
-    let per = out.texels_per_face();
+    let faces: Vec<usize> = (0..set.faces.len()).collect();
+    bake_rows(set, mats, res, &faces, out);
+}
+
+/// Bakes the interior rows of faces `chosen` of `set` at `res` into `out` (face `k` of `out`
+/// being `chosen[k]`; `out` already reset to `chosen.len()` faces), rows in parallel.
+pub(crate) fn bake_rows(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    res: u32,
+    chosen: &[usize],
+    out: &mut Pages,
+) {
     let side = out.side();
     let r = res as usize;
+    let constants: Vec<(i32, f32)> = chosen
+        .iter()
+        .map(|&f| face_constants(&set.faces[f], res))
+        .collect();
     out.albedo
-        .par_chunks_mut(per)
-        .zip(out.normal.par_chunks_mut(per))
-        .zip(out.displacement.par_chunks_mut(per))
+        .par_chunks_mut(side)
+        .zip(out.normal.par_chunks_mut(side))
+        .zip(out.displacement.par_chunks_mut(side))
         .enumerate()
-        .for_each(|(f, ((alb, nrm), disp))| {
-            for j in 0..r {
-                for i in 0..r {
-                    let t = texel(set, mats, f, res, i as u32, j as u32);
-                    let k = (j + 1) * side + i + 1;
-                    alb[k] = t.albedo;
-                    nrm[k] = t.normal;
-                    disp[k] = t.displacement;
+        .for_each_init(
+            || NoiseCache::new(mats),
+            |cache, (row, ((alb, nrm), disp))| {
+                let (k, y) = (row / side, row % side);
+                if y == 0 || y > r {
+                    return;
                 }
-            }
-        });
+                let (f, j) = (chosen[k], (y - 1) as u32);
+                for i in 0..r {
+                    let t = texel_in(set, mats, f, res, constants[k], i as u32, j, cache);
+                    alb[i + 1] = t.albedo;
+                    nrm[i + 1] = t.normal;
+                    disp[i + 1] = t.displacement;
+                }
+            },
+        );
+}
+
+/// The lattice cells a worker's texels read last, per octave: of the displacement noise and of
+/// each material's pattern on each plane, apart for each of a texel's three points `p`,
+/// `p + δt₁`, `p + δt₂` (so each point's walk along a row keeps its cells). Any texel of any
+/// face may go through any cache: it only spares hashes (see [`Cell3`]), the bits are those
+/// of the noise without it.
+#[derive(Clone, Debug)]
+pub struct NoiseCache {
+    d3: [[Cell3; MAX_OCTAVES]; 3],
+    /// Octaves kept per material, plane and point.
+    stride: usize,
+    /// `[point][material][plane][octave]`.
+    d2: Vec<Cell2>,
+    materials: usize,
+}
+
+impl NoiseCache {
+    /// An empty cache for the materials of `mats`, keeping as many octaves of each pattern as
+    /// the material with the most has.
+    pub fn new(mats: &MaterialSet) -> Self {
+        let stride = mats
+            .materials
+            .iter()
+            .map(|m| m.octaves as usize)
+            .max()
+            .unwrap_or(0)
+            .min(MAX_OCTAVES);
+        let materials = mats.materials.len();
+        Self {
+            d3: [[Cell3::EMPTY; MAX_OCTAVES]; 3],
+            stride,
+            d2: vec![Cell2::EMPTY; 3 * materials * 3 * stride],
+            materials,
+        }
+    }
+
+    /// The cells of material `m`'s pattern on plane `axis` at point `point` (empty past the
+    /// materials the cache was made for).
+    fn pattern(&mut self, point: usize, m: usize, axis: usize) -> &mut [Cell2] {
+        if m >= self.materials {
+            return &mut [];
+        }
+        let at = ((point * self.materials + m) * 3 + axis) * self.stride;
+        &mut self.d2[at..at + self.stride]
+    }
 }
 
 /// One baked texel.
@@ -165,6 +236,7 @@ fn relief_t(
     q: [f32; 3],
     axis: usize,
     kmax: i32,
+    cells: &mut [Cell2],
 ) -> f32 {
     match mats.materials[m].texture {
         Some(Texture {
@@ -172,11 +244,12 @@ fn relief_t(
             repeat_log2,
             ..
         }) => image_sample(mats, h, repeat_log2, q, axis, kmax)[0],
-        _ => pattern(mats, m, anchor, q, axis, kmax),
+        _ => pattern(mats, m, anchor, q, axis, kmax, cells),
     }
 }
 
-/// The pattern `t ∈ [0, 1]` of material `m` at `q` on plane `axis`.
+/// The pattern `t ∈ [0, 1]` of material `m` at `q` on plane `axis`, its octaves through
+/// `cells`.
 fn pattern(
     mats: &MaterialSet,
     m: usize,
@@ -184,11 +257,13 @@ fn pattern(
     q: [f32; 3],
     axis: usize,
     kmax: i32,
+    cells: &mut [Cell2],
 ) -> f32 {
     let mat = &mats.materials[m];
     let count = octave_count(mat.freq_log2, mat.octaves, kmax);
     let seed = mats.seeds[m].wrapping_add(256 * axis as u32);
-    let v = fbm2(
+    let v = fbm2_in(
+        cells,
         plane(anchor, axis),
         plane(q, axis),
         mat.freq_log2,
@@ -260,7 +335,10 @@ fn interpolate(set: &FaceSet, mats: &MaterialSet, face: &Face, u: f32, v: f32) -
     out
 }
 
-/// `D(q)` with the geometric tri-planar weights `wg`.
+/// `D(q)` with the geometric tri-planar weights `wg`, the noise of point `point` (0: `p`, 1 and
+/// 2: the displaced points) through `cache`. At `p`, the patterns the relief reads are kept in
+/// `patterns` (`[material slot][plane]`) for the albedo, which reads them at `p` too.
+#[allow(clippy::too_many_arguments)]
 fn displacement(
     mats: &MaterialSet,
     pt: &Point,
@@ -268,15 +346,45 @@ fn displacement(
     q: [f32; 3],
     wg: [f32; 3],
     kmax: i32,
+    point: usize,
+    cache: &mut NoiseCache,
+    patterns: &mut [[Option<f32>; 3]; 4],
 ) -> f32 {
     let count = octave_count(mats.noise_freq_log2, mats.noise_octaves, kmax);
-    let mut d = pt.amp * fbm3(anchor, q, mats.noise_freq_log2, count, mats.noise_seed);
-    for m in 0..pt.count {
+    let noise = fbm3_in(
+        &mut cache.d3[point],
+        anchor,
+        q,
+        mats.noise_freq_log2,
+        count,
+        mats.noise_seed,
+    );
+    let mut d = pt.amp * noise;
+    for (m, kept) in patterns.iter_mut().enumerate().take(pt.count) {
         let id = pt.ids[m];
         let relief = mats.materials[id].relief_m;
+        let from_pattern = !matches!(
+            mats.materials[id].texture,
+            Some(Texture {
+                height: Some(_),
+                ..
+            })
+        );
         let mut r = 0.0f32;
         for (axis, w) in wg.iter().enumerate() {
-            r += w * (relief_t(mats, id, anchor, q, axis, kmax) - 0.5);
+            let t = relief_t(
+                mats,
+                id,
+                anchor,
+                q,
+                axis,
+                kmax,
+                cache.pattern(point, id, axis),
+            );
+            if point == 0 && from_pattern {
+                kept[axis] = Some(t);
+            }
+            r += w * (t - 0.5);
         }
         d += pt.weights[m] * (relief * r);
     }
@@ -293,8 +401,33 @@ fn snorm8(x: f32) -> u8 {
 
 /// Bakes texel `(i, j)` of face `f` of `set` at `res`.
 pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u32) -> Texel {
+    let constants = face_constants(&set.faces[f], res);
+    texel_in(
+        set,
+        mats,
+        f,
+        res,
+        constants,
+        i,
+        j,
+        &mut NoiseCache::new(mats),
+    )
+}
+
+/// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
+/// bytes.
+#[allow(clippy::too_many_arguments)]
+pub fn texel_in(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    (kmax, step): (i32, f32),
+    i: u32,
+    j: u32,
+    cache: &mut NoiseCache,
+) -> Texel {
     let face = &set.faces[f];
-    let (kmax, step) = face_constants(face, res);
     let r = res as f32;
     let (u, v) = ((i as f32 + 0.5) / r, (j as f32 + 0.5) / r);
     let pt = interpolate(set, mats, face, u, v);
@@ -309,9 +442,11 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
     let wg = triplanar(n);
     let a = face.anchor;
     let at = |t: [f32; 3]| -> [f32; 3] { std::array::from_fn(|c| pt.p[c] + step * t[c]) };
-    let d0 = displacement(mats, &pt, a, pt.p, wg, kmax);
-    let d1 = displacement(mats, &pt, a, at(t1), wg, kmax);
-    let d2 = displacement(mats, &pt, a, at(t2), wg, kmax);
+    let mut patterns = [[None; 3]; 4];
+    let mut unused = [[None; 3]; 4];
+    let d0 = displacement(mats, &pt, a, pt.p, wg, kmax, 0, cache, &mut patterns);
+    let d1 = displacement(mats, &pt, a, at(t1), wg, kmax, 1, cache, &mut unused);
+    let d2 = displacement(mats, &pt, a, at(t2), wg, kmax, 2, cache, &mut unused);
     let inv = 1.0 / step;
     let (g1, g2) = ((d1 - d0) * inv, (d2 - d0) * inv);
     let nd = normalize_or(std::array::from_fn(|c| n[c] - g1 * t1[c] - g2 * t2[c]), n);
@@ -319,13 +454,17 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
     let mut albedo = [0.0f32; 3];
     let mut rough = 0.0f32;
     let mut dominant = 0usize;
-    for m in 0..pt.count {
+    for (m, kept) in patterns.iter().enumerate().take(pt.count) {
         let id = pt.ids[m];
         let mat = &mats.materials[id];
         for (axis, w) in wd.iter().enumerate() {
             let k = pt.weights[m] * w;
+            let mut at_p = || match kept[axis] {
+                Some(t) => t,
+                None => pattern(mats, id, a, pt.p, axis, kmax, cache.pattern(0, id, axis)),
+            };
             let Some(tex) = mat.texture else {
-                let t = pattern(mats, id, a, pt.p, axis, kmax);
+                let t = at_p();
                 for (c, a) in albedo.iter_mut().enumerate() {
                     *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
                 }
@@ -338,7 +477,7 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
             }
             let t = match tex.roughness {
                 Some(r) => image_sample(mats, r, tex.repeat_log2, pt.p, axis, kmax)[0],
-                None => pattern(mats, id, a, pt.p, axis, kmax),
+                None => at_p(),
             };
             rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
         }
@@ -370,5 +509,89 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
             pt.ids[dominant] as u8,
         ],
         displacement: d0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ptex::face::TileFacePlan;
+    use crate::ptex::select::bake_faces;
+    use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+
+    /// The blake3 digest of the three planes of `pages`.
+    fn digest(pages: &Pages) -> String {
+        let mut h = blake3::Hasher::new();
+        for t in &pages.albedo {
+            h.update(t);
+        }
+        for t in &pages.normal {
+            h.update(t);
+        }
+        for d in &pages.displacement {
+            h.update(&d.to_bits().to_le_bytes());
+        }
+        h.finalize().to_hex()[..16].to_string()
+    }
+
+    #[test]
+    fn the_bake_keeps_the_bytes_of_the_build_before_its_speed_ups() {
+        // Digests of the bake before the cached lattice cells, the shared pattern values and the
+        // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256².
+        let plan = WorldPlan::new(7, WorldParams::default()).expect("plan");
+        let mats = MaterialSet::default_ground(plan.seed);
+        let mut got = Vec::new();
+        for (key, res) in [
+            (
+                TileKey {
+                    lod: 0,
+                    x: -20,
+                    z: 3,
+                },
+                8u32,
+            ),
+            (
+                TileKey {
+                    lod: 0,
+                    x: -13,
+                    z: -2,
+                },
+                64,
+            ),
+            (
+                TileKey {
+                    lod: 2,
+                    x: 3,
+                    z: -2,
+                },
+                16,
+            ),
+            (TileKey { lod: 0, x: 5, z: 9 }, 256),
+        ] {
+            let faces = TileFacePlan::new(key, [false, true, false, false], 12);
+            let tiles: Vec<_> = faces
+                .tiles()
+                .into_iter()
+                .map(|t| synthesize(&plan, t))
+                .collect();
+            let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+            let mut pages = Pages::default();
+            if res < 256 {
+                bake(&set, &mats, res, &mut pages);
+                got.push(format!("{res} whole {}", digest(&pages)));
+            }
+            bake_faces(&set, &mats, res, &[5, 0, 15], &mut pages);
+            got.push(format!("{res} chosen {}", digest(&pages)));
+        }
+        let want = [
+            "8 whole 442c91b79915bd9a",
+            "8 chosen 3d5f98aaca8ab6b6",
+            "64 whole e809b05ba0a77ca8",
+            "64 chosen 1f28e1ac513a7997",
+            "16 whole 78e49d6517b64973",
+            "16 chosen e4d4407d852c17fd",
+            "256 chosen ccbe524274f279a3",
+        ];
+        assert_eq!(got, want);
     }
 }

@@ -70,34 +70,107 @@ fn cell(base: i32, x: f32) -> (i32, f32) {
     (base.wrapping_add(fl as i32), x - fl)
 }
 
+/// Most octaves of one sum: one per exponent `MIN_FREQ_LOG2..=MAX_FREQ_LOG2`.
+pub const MAX_OCTAVES: usize = (MAX_FREQ_LOG2 - MIN_FREQ_LOG2 + 1) as usize;
+
+/// The lattice values at the corners of the cell one octave of a 3D sum read last, with the
+/// cell and seed they belong to. Neighbouring texels (and a texel's displaced points) mostly
+/// read the same cell of an octave coarser than a texel, and take the corners from here instead
+/// of hashing them again; the values are the hashes' own, so a sum through a cache has the same
+/// bits as one without.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cell3 {
+    key: Option<([i32; 3], u32)>,
+    v: [f32; 8],
+}
+
+impl Cell3 {
+    /// A cache holding no cell.
+    pub const EMPTY: Self = Self {
+        key: None,
+        v: [0.0; 8],
+    };
+}
+
+/// [`Cell3`] for a 2D sum.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cell2 {
+    key: Option<([i32; 2], u32)>,
+    v: [f32; 4],
+}
+
+impl Cell2 {
+    /// A cache holding no cell.
+    pub const EMPTY: Self = Self {
+        key: None,
+        v: [0.0; 4],
+    };
+}
+
 /// 3D value noise at `base + x` (lattice units), in `[−1, 1]`.
 pub fn value3(base: [i32; 3], x: [f32; 3], seed: u32) -> f32 {
+    let mut cache = Cell3::EMPTY;
+    value3_in(&mut cache, base, x, seed)
+}
+
+/// [`value3`] reading the corners from `cache` when it holds the cell (and leaving the cell's
+/// corners there).
+#[inline(always)]
+pub fn value3_in(cache: &mut Cell3, base: [i32; 3], x: [f32; 3], seed: u32) -> f32 {
     let (ix, fx) = cell(base[0], x[0]);
     let (iy, fy) = cell(base[1], x[1]);
     let (iz, fz) = cell(base[2], x[2]);
     let (u, v, w) = (fade(fx), fade(fy), fade(fz));
-    let c = |dx: i32, dy: i32, dz: i32| {
-        value(hash3(
-            ix.wrapping_add(dx),
-            iy.wrapping_add(dy),
-            iz.wrapping_add(dz),
-            seed,
-        ))
-    };
-    let x00 = lerp(c(0, 0, 0), c(1, 0, 0), u);
-    let x10 = lerp(c(0, 1, 0), c(1, 1, 0), u);
-    let x01 = lerp(c(0, 0, 1), c(1, 0, 1), u);
-    let x11 = lerp(c(0, 1, 1), c(1, 1, 1), u);
+    let key = Some(([ix, iy, iz], seed));
+    if cache.key != key {
+        let c = |dx: i32, dy: i32, dz: i32| {
+            value(hash3(
+                ix.wrapping_add(dx),
+                iy.wrapping_add(dy),
+                iz.wrapping_add(dz),
+                seed,
+            ))
+        };
+        cache.v = [
+            c(0, 0, 0),
+            c(1, 0, 0),
+            c(0, 1, 0),
+            c(1, 1, 0),
+            c(0, 0, 1),
+            c(1, 0, 1),
+            c(0, 1, 1),
+            c(1, 1, 1),
+        ];
+        cache.key = key;
+    }
+    let c = &cache.v;
+    let x00 = lerp(c[0], c[1], u);
+    let x10 = lerp(c[2], c[3], u);
+    let x01 = lerp(c[4], c[5], u);
+    let x11 = lerp(c[6], c[7], u);
     lerp(lerp(x00, x10, v), lerp(x01, x11, v), w)
 }
 
 /// 2D value noise at `base + x` (lattice units), in `[−1, 1]` (the 3D lattice at `z = 0`).
 pub fn value2(base: [i32; 2], x: [f32; 2], seed: u32) -> f32 {
+    let mut cache = Cell2::EMPTY;
+    value2_in(&mut cache, base, x, seed)
+}
+
+/// [`value2`] through a [`Cell2`] cache.
+#[inline(always)]
+pub fn value2_in(cache: &mut Cell2, base: [i32; 2], x: [f32; 2], seed: u32) -> f32 {
     let (ix, fx) = cell(base[0], x[0]);
     let (iy, fy) = cell(base[1], x[1]);
     let (u, v) = (fade(fx), fade(fy));
-    let c = |dx: i32, dy: i32| value(hash3(ix.wrapping_add(dx), iy.wrapping_add(dy), 0, seed));
-    lerp(lerp(c(0, 0), c(1, 0), u), lerp(c(0, 1), c(1, 1), u), v)
+    let key = Some(([ix, iy], seed));
+    if cache.key != key {
+        let c = |dx: i32, dy: i32| value(hash3(ix.wrapping_add(dx), iy.wrapping_add(dy), 0, seed));
+        cache.v = [c(0, 0), c(1, 0), c(0, 1), c(1, 1)];
+        cache.key = key;
+    }
+    let c = &cache.v;
+    lerp(lerp(c[0], c[1], u), lerp(c[2], c[3], u), v)
 }
 
 /// The octaves `k0, k0 + 1, …` of a sum, at most `octaves` of them and none above `kmax`.
@@ -109,26 +182,56 @@ pub fn octave_count(k0: i32, octaves: u32, kmax: i32) -> u32 {
 /// Fractal sum of 3D value noise at `anchor·256 m + p`: octave `o` has frequency `2^(k0 + o)`
 /// and amplitude `2^−o`, for `o < count`. Range `±(2 − 2^(1 − count))`.
 pub fn fbm3(anchor: [i32; 3], p: [f32; 3], k0: i32, count: u32, seed: u32) -> f32 {
+    fbm3_in(&mut [], anchor, p, k0, count, seed)
+}
+
+/// [`fbm3`] with octave `o` through `cells[o]` (octaves past the slice's end without a cache).
+#[inline(always)]
+pub fn fbm3_in(
+    cells: &mut [Cell3],
+    anchor: [i32; 3],
+    p: [f32; 3],
+    k0: i32,
+    count: u32,
+    seed: u32,
+) -> f32 {
     let mut sum = 0.0f32;
     for o in 0..count {
         let k = k0 + o as i32;
         let f = exp2i(k);
         let base = anchor.map(|a| anchor_lattice(a, k));
         let x = p.map(|c| c * f);
-        sum += exp2i(-(o as i32)) * value3(base, x, seed.wrapping_add(o));
+        let mut spare = Cell3::EMPTY;
+        let cache = cells.get_mut(o as usize).unwrap_or(&mut spare);
+        sum += exp2i(-(o as i32)) * value3_in(cache, base, x, seed.wrapping_add(o));
     }
     sum
 }
 
 /// Fractal sum of 2D value noise at `anchor·256 m + p` (the 2D analogue of [`fbm3`]).
 pub fn fbm2(anchor: [i32; 2], p: [f32; 2], k0: i32, count: u32, seed: u32) -> f32 {
+    fbm2_in(&mut [], anchor, p, k0, count, seed)
+}
+
+/// [`fbm2`] with octave `o` through `cells[o]` (octaves past the slice's end without a cache).
+#[inline(always)]
+pub fn fbm2_in(
+    cells: &mut [Cell2],
+    anchor: [i32; 2],
+    p: [f32; 2],
+    k0: i32,
+    count: u32,
+    seed: u32,
+) -> f32 {
     let mut sum = 0.0f32;
     for o in 0..count {
         let k = k0 + o as i32;
         let f = exp2i(k);
         let base = anchor.map(|a| anchor_lattice(a, k));
         let x = p.map(|c| c * f);
-        sum += exp2i(-(o as i32)) * value2(base, x, seed.wrapping_add(o));
+        let mut spare = Cell2::EMPTY;
+        let cache = cells.get_mut(o as usize).unwrap_or(&mut spare);
+        sum += exp2i(-(o as i32)) * value2_in(cache, base, x, seed.wrapping_add(o));
     }
     sum
 }
@@ -146,6 +249,27 @@ mod tests {
             let a = fbm3([1, 0, 0], p, k, count, 9);
             let b = fbm3([0, 0, 0], [p[0] + 256.0, p[1], p[2]], k, count, 9);
             assert_eq!(a.to_bits(), b.to_bits(), "k = {k}");
+        }
+    }
+
+    #[test]
+    fn sums_through_a_cache_have_the_bits_of_sums_without() {
+        // A walk of small and large steps, so the cells are hit, missed and hit again, under
+        // seeds and first octaves that change along it (a cache holding another seed's cell
+        // must not answer).
+        let mut c3 = [Cell3::EMPTY; MAX_OCTAVES];
+        let mut c2 = [Cell2::EMPTY; MAX_OCTAVES];
+        let mut x = [0.3f32, -1.7, 5.1];
+        for i in 0..4000u32 {
+            let step = if i % 97 == 0 { 3.7 } else { 0.013 };
+            x = [x[0] + step, x[1] + step * 0.5, x[2] - step * 0.25];
+            let (seed, k0, anchor) = (i / 50 % 2 * 11, (i / 75 % 3) as i32 - 2, [1, -2, 3]);
+            let a = fbm3(anchor, x, k0, 5, seed);
+            let b = fbm3_in(&mut c3, anchor, x, k0, 5, seed);
+            assert_eq!(a.to_bits(), b.to_bits(), "fbm3 at {x:?}");
+            let a = fbm2([4, -1], [x[0], x[2]], k0, 4, seed);
+            let b = fbm2_in(&mut c2, [4, -1], [x[0], x[2]], k0, 4, seed);
+            assert_eq!(a.to_bits(), b.to_bits(), "fbm2 at {x:?}");
         }
     }
 

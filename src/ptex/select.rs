@@ -7,7 +7,7 @@
 //! writes for the whole set (tested below), at a cost of `res² + 4·res` texels a face instead of
 //! the neighbours' `res²` each.
 
-use super::bake::{texel, Texel};
+use super::bake::{bake_rows, face_constants, texel_in, NoiseCache, Texel};
 use super::border::{border_source, border_texel};
 use super::face::FaceSet;
 use super::material::MaterialSet;
@@ -15,9 +15,11 @@ use super::pages::Pages;
 use rayon::prelude::*;
 
 /// Bakes faces `chosen` of `set` (indices into `set.faces`) at `res` into `out`, face `k` of
-/// `out` being `chosen[k]`, borders included.
+/// `out` being `chosen[k]`, borders included. The interiors' rows are shared among the cores
+/// (a batch of one 256² page uses them all), then each face's border in parallel.
 pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize], out: &mut Pages) {
     out.reset(res, chosen.len());
+    bake_rows(set, mats, res, chosen, out);
     let per = out.texels_per_face();
     let side = out.side();
     let r = res as i32;
@@ -27,49 +29,43 @@ pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize],
         .zip(out.normal.par_chunks_mut(per))
         .zip(out.displacement.par_chunks_mut(per))
         .zip(chosen.par_iter())
-        .for_each(|(((alb, nrm), disp), &f)| {
-            let mut put = |k: usize, t: Texel| {
-                alb[k] = t.albedo;
-                nrm[k] = t.normal;
-                disp[k] = t.displacement;
-            };
-            for j in 0..r {
-                for i in 0..r {
-                    put(at(i, j), texel(set, mats, f, res, i as u32, j as u32));
+        .for_each_init(
+            || NoiseCache::new(mats),
+            |cache, (((alb, nrm), disp), &f)| {
+                for k in 0..4 {
+                    for j in 0..res {
+                        let (bi, bj) = border_texel(res, k, j);
+                        let (sf, si, sj) = border_source(set, res, f, k, j);
+                        let t = if sf == f {
+                            let s = at(si, sj);
+                            Texel {
+                                albedo: alb[s],
+                                normal: nrm[s],
+                                displacement: disp[s],
+                            }
+                        } else {
+                            let constants = face_constants(&set.faces[sf], res);
+                            texel_in(set, mats, sf, res, constants, si as u32, sj as u32, cache)
+                        };
+                        let d = at(bi, bj);
+                        alb[d] = t.albedo;
+                        nrm[d] = t.normal;
+                        disp[d] = t.displacement;
+                    }
                 }
-            }
-            for k in 0..4 {
-                for j in 0..res {
-                    let (bi, bj) = border_texel(res, k, j);
-                    let (sf, si, sj) = border_source(set, res, f, k, j);
-                    let t = if sf == f {
-                        let s = at(si, sj);
-                        Texel {
-                            albedo: alb[s],
-                            normal: nrm[s],
-                            displacement: disp[s],
-                        }
-                    } else {
-                        texel(set, mats, sf, res, si as u32, sj as u32)
-                    };
-                    let d = at(bi, bj);
-                    alb[d] = t.albedo;
-                    nrm[d] = t.normal;
-                    disp[d] = t.displacement;
+                for (ci, cj, si, sj) in [
+                    (-1, -1, 0, 0),
+                    (r, -1, r - 1, 0),
+                    (r, r, r - 1, r - 1),
+                    (-1, r, 0, r - 1),
+                ] {
+                    let (d, s) = (at(ci, cj), at(si, sj));
+                    alb[d] = alb[s];
+                    nrm[d] = nrm[s];
+                    disp[d] = disp[s];
                 }
-            }
-            for (ci, cj, si, sj) in [
-                (-1, -1, 0, 0),
-                (r, -1, r - 1, 0),
-                (r, r, r - 1, r - 1),
-                (-1, r, 0, r - 1),
-            ] {
-                let (d, s) = (at(ci, cj), at(si, sj));
-                alb[d] = alb[s];
-                nrm[d] = nrm[s];
-                disp[d] = disp[s];
-            }
-        });
+            },
+        );
 }
 
 #[cfg(test)]

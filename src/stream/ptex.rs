@@ -547,6 +547,30 @@ impl PtexSession {
         self.detail.dedup();
     }
 
+    /// The pages queued now and their interior texels: the vista pages of held faces and the
+    /// detail pages whose face still holds that level and slot (what later batches bake).
+    pub fn queued(&self) -> (usize, u64) {
+        let vista = self
+            .vista
+            .iter()
+            .filter(|&&i| self.faces.get(i as usize).is_some_and(Option::is_some))
+            .count();
+        let texels = |level: u8| u64::from(LEVEL_RES[level as usize]).pow(2);
+        self.detail
+            .iter()
+            .filter(|b| self.current(b))
+            .fold((vista, vista as u64 * texels(0)), |(n, t), b| {
+                (n + 1, t + texels(b.level))
+            })
+    }
+
+    /// Whether detail page `b` is still its face's: held at that level in that slot.
+    fn current(&self, b: &Bake) -> bool {
+        self.budget.is_held(b.face as usize)
+            && self.budget.level(b.face as usize) == b.level
+            && self.budget.slot(b.face as usize) == Some(b.slot)
+    }
+
     /// Whether an update or a batch may be due.
     pub fn has_work(&self) -> bool {
         (self.due && self.view.is_some()) || !self.vista.is_empty() || !self.detail.is_empty()
@@ -631,10 +655,7 @@ impl PtexSession {
         let mut texels = 0u64;
         let mut taken = 0;
         for b in &self.detail {
-            let current = self.budget.is_held(b.face as usize)
-                && self.budget.level(b.face as usize) == b.level
-                && self.budget.slot(b.face as usize) == Some(b.slot);
-            if !current {
+            if !self.current(b) {
                 taken += 1;
                 continue;
             }
@@ -718,5 +739,61 @@ pub fn face_reach(world: &WorldParams, f: TileFaceKey) -> Rect {
     Rect {
         min: [f.fx as f64 * size - m, f.fz as f64 * size - m],
         max: [(f.fx + 1) as f64 * size + m, (f.fz + 1) as f64 * size + m],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_queued_pages_are_what_the_later_batches_bake() {
+        let settings = PtexSettings::default();
+        let pool = Arc::new(PtexPool::new(settings));
+        let grant = pool.grant().expect("grant");
+        let mut session = PtexSession::new(grant, settings.thresholds_m);
+        let view = View {
+            eye: [8.0, 40.0, 8.0],
+            forward: [0.0, -1.0, 0.0],
+            cos_half_angle: 0.5,
+            far_m: 4000.0,
+        };
+        session.set_view(view, false);
+        for x in 0..2 {
+            session.hold_tile(TileKey { lod: 0, x, z: 0 }, [false; 4]);
+        }
+        assert_eq!(session.queued(), (32, 32 * 64));
+        let (mut pages, mut texels, mut first) = (0usize, 0u64, None);
+        while let (_, Some(batch)) = session.next_batch() {
+            let bounds: Vec<FaceBounds> = batch
+                .pages
+                .iter()
+                .map(|p| match p.face {
+                    PageFace::Tile(f) => FaceBounds {
+                        centre: [f.fx as f32 * 16.0 + 8.0, 0.0, f.fz as f32 * 16.0 + 8.0],
+                        radius: 11.4,
+                    },
+                    PageFace::Chunk(_) => unreachable!("no chunk faces held"),
+                })
+                .collect();
+            session.baked(&batch, &bounds);
+            if batch.level == 0 {
+                assert_eq!(batch.pages.len(), 32, "every vista page in one batch");
+                continue;
+            }
+            // The first update after the vista pages queued every detail page at once.
+            first.get_or_insert_with(|| {
+                let (n, t) = session.queued();
+                (
+                    n + batch.pages.len(),
+                    t + u64::from(batch.res().pow(2)) * batch.pages.len() as u64,
+                )
+            });
+            pages += batch.pages.len();
+            texels += u64::from(batch.res().pow(2)) * batch.pages.len() as u64;
+        }
+        assert!(pages > 0, "faces under the eye take detail levels");
+        assert_eq!(first, Some((pages, texels)));
+        assert_eq!(session.queued(), (0, 0));
     }
 }
