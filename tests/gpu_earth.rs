@@ -192,8 +192,8 @@ fn dry_plan() -> WorldPlan {
 }
 
 /// The device's river carve (`shaders/rivers.wgsl`) against `earth::carve`, on tiles of the
-/// default world that cross river valleys at LODs 0, 3, 6 and 8 (all carve: `MAX_CARVE_LOD` is
-/// 8). Two comparisons:
+/// default world with `valleys: 4` that cross river valleys at LODs 0, 3, 6 and 8 (all carve:
+/// `MAX_CARVE_LOD` is 8). Two comparisons:
 ///
 /// - **Carved field, device vs CPU**, within [`height_tolerance`], the uncarved heights' own
 ///   slack (the carve reads the device's heights, which carry it); the test prints max |Δh|
@@ -211,7 +211,12 @@ fn dry_plan() -> WorldPlan {
 ///   bits).
 #[test]
 fn gpu_river_carve_matches_cpu() {
-    let plan = plan();
+    // `valleys: 4`, the newest valleys: its pieces' floodplains and slopes vary along them
+    // (those of `valleys: 3`, the default, are the same code with equal ends).
+    let mut params = WorldParams::default();
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.rivers.as_mut().expect("rivers").valleys = 4;
+    let plan = WorldPlan::new(SEED, params).expect("valleys 4 world");
     let dry = dry_plan();
     let earth = plan.earth.as_ref().expect("earth-1");
     let rp = earth.rivers.as_ref().expect("the default world has rivers");

@@ -572,8 +572,11 @@ fn a_varied_valley_narrows_and_steepens_along_its_piece_within_the_carve_bound()
             }
         }
     }
-    // The default world's valley shapes along a line of 2,000 points 150 m apart.
-    let plan = plan();
+    // A `valleys: 4` world's valley shapes along a line of 2,000 points 150 m apart.
+    let mut params = WorldParams::default();
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.rivers.as_mut().expect("rivers").valleys = 4;
+    let plan = WorldPlan::new(42, params).expect("valleys 4 world");
     let (_, rivers) = parts(&plan);
     let (mut f_lo, mut f_hi, mut s_lo, mut s_hi) = (f32::MAX, f32::MIN, f32::MAX, f32::MIN);
     for i in 0..2000 {
@@ -726,7 +729,7 @@ fn turns(plan: &WorldPlan, i0: i64, k0: i64, n: i64) -> Vec<f32> {
     out
 }
 
-/// `valleys: 3` (and `4`, the default) bends each piece so that it leaves and reaches its ends
+/// `valleys: 3` (the default, and `4`) bends each piece so that it leaves and reaches its ends
 /// along the river curve's tangents: consecutive pieces meet without a corner (below a degree at
 /// the 99th percentile; only hairpins, whose tangents are clamped to 45° off the chord, turn
 /// more) where `valleys: 2`'s eight straight pieces turn corners of about ten degrees, so the

@@ -1,7 +1,7 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 4` and `gullies: 2`,
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 3` and `gullies: 2`,
 //! whose tiles differ; the worlds stored with `valleys: 2`, `3` and `4` keep theirs too.
 
 mod common;
@@ -34,7 +34,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let earth = &doc["world"]["earth"];
     assert!(earth.get("gullies").is_none(), "{earth}");
 
-    // A bare seed is the new default, `valleys: 4`: the carved tile over a river differs.
+    // A bare seed is the new default, `valleys: 3`: the carved tile over a river differs.
     let stored = expected
         .lines()
         .find(|l| l.starts_with("1 3/-24/50 "))
@@ -45,7 +45,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     assert_ne!(
         blake3::hash(&bare).to_hex().as_str(),
         stored,
-        "bare seeds carve valleys: 4 and incised gullies"
+        "bare seeds carve valleys: 3 and incised gullies"
     );
 }
 
@@ -114,12 +114,12 @@ async fn a_world_stored_with_the_fourth_valleys_serves_the_same_tile_bytes() {
 }
 
 #[test]
-fn new_scenes_carve_the_fourth_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_third_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 4);
-    let mut third = scene.clone();
-    third["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(3);
-    strata::scene::Scene::from_value(&third).expect("valleys 3 is accepted");
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 3);
+    let mut fourth = scene.clone();
+    fourth["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(4);
+    strata::scene::Scene::from_value(&fourth).expect("valleys 4 is accepted");
     assert_eq!(scene["world"]["earth"]["gullies"], 2);
     let mut bad = scene.clone();
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(5);

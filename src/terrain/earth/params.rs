@@ -99,10 +99,10 @@ pub struct RiverParams {
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
     /// centre lines of eight straight pieces an edge instead of four; the land beyond keeps its
-    /// shape. `3`: the valleys of `2` along four bent pieces an edge, each a parabola through
-    /// the curve's middle, so the walls follow the curve without facets. `4` (new worlds): the
-    /// valleys of `3` whose floodplain narrows and widens and whose walls steepen and ease along
-    /// the river, so they read as eroded valleys instead of canals.
+    /// shape. `3` (new worlds): the valleys of `2` along four bent pieces an edge, each a
+    /// parabola through the curve's middle, so the walls follow the curve without facets. `4`
+    /// (asked for by name): the valleys of `3` whose floodplain narrows and widens and whose
+    /// walls steepen and ease along the river, so they read as eroded valleys instead of canals.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -130,7 +130,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 4,
+            valleys: 3,
             lakes: 3,
         }
     }

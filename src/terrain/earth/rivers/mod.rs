@@ -38,7 +38,7 @@
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
-//!    `valleys: 3` and `4` (the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
+//!    `valleys: 3` (the default of new worlds) and `4` into [`PIECES_3`] pieces, each a cubic offset
 //!    from its chord that leaves and reaches its ends along the curve's tangents
 //!    ([`Piece::sax`]; the edge's hashed bend is flat at the nodes), so the centre line has no
 //!    corner and the valley's walls follow the curve instead of showing a facet per piece.
@@ -61,7 +61,7 @@
 //!    floor keeps a valley sampled at 64 m from reading as a chain of pits. With `valleys: 3`
 //!    `V'` grows by 0 to 90 m of value noise ([`WALL_NOISE`]), so the walls of valleys in the
 //!    plains reach out in embayments between spurs instead of running as even banks. With
-//!    `valleys: 4` (the default of new worlds) each piece's floodplain half-width and wall slope
+//!    `valleys: 4` (asked for by name) each piece's floodplain half-width and wall slope
 //!    are linear between values at its ends ([`RiverPlan::valley_shape`]: the `valleys: 3`
 //!    floodplain times [`FLOOR_SCALE`], [`WALL_SLOPE`] times [`SLOPE_SCALE`], by value noise of
 //!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
