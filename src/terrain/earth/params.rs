@@ -111,11 +111,11 @@ pub struct RiverParams {
     /// The lakes, 1 to 3 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
     /// the four nodes around it holds a lake above its height, so a lake's water can end along
     /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
-    /// keep it, and their bytes. `2`: the ground is shaped to meet the lake's level along a
-    /// curved shore ([`super::rivers`]' shores), where the water ends. `3` (new worlds): the
-    /// lakes of `2`, and a lake whose flood found an outlet spills there, so its river goes on
-    /// to the sea or a lower lake through a valley cut in the rim down to the lake's level
-    /// instead of ending in a basin closed by the finer relief.
+    /// keep it, and their bytes. `2` (new worlds): the ground is shaped to meet the lake's level
+    /// along a curved shore ([`super::rivers`]' shores), where the water ends. `3` (asked for by
+    /// name): the lakes of `2`, and a lake whose flood found an outlet spills there, so its
+    /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
+    /// lake's level instead of ending in a basin closed by the finer relief.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
@@ -131,7 +131,7 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 3,
-            lakes: 3,
+            lakes: 2,
         }
     }
 }
