@@ -515,9 +515,8 @@ pub fn texel_in(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ptex::face::TileFacePlan;
     use crate::ptex::select::bake_faces;
-    use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+    use crate::terrain::{TileKey, WorldParams, WorldPlan};
 
     /// The blake3 digest of the three planes of `pages`.
     fn digest(pages: &Pages) -> String {
@@ -568,13 +567,7 @@ mod tests {
             ),
             (TileKey { lod: 0, x: 5, z: 9 }, 256),
         ] {
-            let faces = TileFacePlan::new(key, [false, true, false, false], 12);
-            let tiles: Vec<_> = faces
-                .tiles()
-                .into_iter()
-                .map(|t| synthesize(&plan, t))
-                .collect();
-            let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+            let set = crate::ptex::face::test_face_set(&plan, key, &mats);
             let mut pages = Pages::default();
             if res < 256 {
                 bake(&set, &mats, res, &mut pages);

@@ -296,6 +296,23 @@ pub struct TileFacePlan {
     pub links: Vec<[Link; 4]>,
 }
 
+/// The face set of tile `key` of `plan` with its east side snapped to the LOD above (so a
+/// border reads a coarser neighbour), its tiles synthesised here: the unit tests' fixture.
+#[cfg(test)]
+pub(crate) fn test_face_set(
+    plan: &crate::terrain::WorldPlan,
+    key: TileKey,
+    mats: &MaterialSet,
+) -> FaceSet {
+    let faces = TileFacePlan::new(key, [false, true, false, false], 12);
+    let tiles: Vec<Tile> = faces
+        .tiles()
+        .into_iter()
+        .map(|t| crate::terrain::synthesize(plan, t))
+        .collect();
+    faces.build(|t| tiles.iter().find(|x| x.key == t), mats)
+}
+
 impl TileFacePlan {
     /// The faces of tile `key` drawn with `seams` (`n, e, s, w`: the sides snapped to the LOD
     /// above, ignored when `key.lod` is `max_lod`).

@@ -71,8 +71,7 @@ pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize],
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ptex::face::TileFacePlan;
-    use crate::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+    use crate::terrain::{TileKey, WorldParams, WorldPlan};
 
     #[test]
     fn chosen_faces_are_the_whole_bakes_bytes() {
@@ -83,13 +82,7 @@ mod tests {
             x: 3,
             z: -2,
         };
-        let faces = TileFacePlan::new(key, [false, true, false, false], 12);
-        let tiles: Vec<_> = faces
-            .tiles()
-            .into_iter()
-            .map(|t| synthesize(&plan, t))
-            .collect();
-        let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+        let set = crate::ptex::face::test_face_set(&plan, key, &mats);
         let mut whole = Pages::default();
         crate::ptex::bake(&set, &mats, 16, &mut whole);
         let chosen = [0usize, 5, 3, 15, 12];

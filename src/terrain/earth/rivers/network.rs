@@ -251,7 +251,23 @@ impl<'a> Network<'a> {
         (self.height(o.0, o.1) < h && level - h < BREACH_DEPTH_M).then_some(o)
     }
 
-    fn compute_routes(&mut self, (bx, bz): (i64, i64)) -> RouteBlock {
+    fn compute_routes(&mut self, b: (i64, i64)) -> RouteBlock {
+        self.compute_outlets(b, |net, i, k| {
+            if net.is_pit(i, k) {
+                net.breach(i, k)
+            } else {
+                None
+            }
+        })
+    }
+
+    /// The pits within reach of block `b` that `outlet` routes (breaches, or in `lakes: 3`
+    /// worlds spills), and their outlets: those of the block's pits, and the block's outlets'.
+    fn compute_outlets(
+        &mut self,
+        (bx, bz): (i64, i64),
+        outlet: fn(&mut Self, i64, i64) -> Option<(i64, i64)>,
+    ) -> RouteBlock {
         let (i0, k0) = (bx * BLOCK, bz * BLOCK);
         let inside =
             |i: i64, k: i64| (i0..i0 + BLOCK).contains(&i) && (k0..k0 + BLOCK).contains(&k);
@@ -260,10 +276,7 @@ impl<'a> Network<'a> {
         let r = LAKE_RADIUS + 1;
         for k in k0 - r..k0 + BLOCK + r {
             for i in i0 - r..i0 + BLOCK + r {
-                if !self.is_pit(i, k) {
-                    continue;
-                }
-                let Some(o) = self.breach(i, k) else {
+                let Some(o) = outlet(self, i, k) else {
                     continue;
                 };
                 if inside(i, k) {
@@ -340,30 +353,14 @@ impl<'a> Network<'a> {
         None
     }
 
-    fn compute_spills(&mut self, (bx, bz): (i64, i64)) -> RouteBlock {
-        let (i0, k0) = (bx * BLOCK, bz * BLOCK);
-        let inside =
-            |i: i64, k: i64| (i0..i0 + BLOCK).contains(&i) && (k0..k0 + BLOCK).contains(&k);
-        let mut sb = RouteBlock::default();
-        // An outlet lies within the flood radius (plus one) of its pit.
-        let r = LAKE_RADIUS + 1;
-        for k in k0 - r..k0 + BLOCK + r {
-            for i in i0 - r..i0 + BLOCK + r {
-                if !self.is_lake_pit(i, k) {
-                    continue;
-                }
-                let Some(o) = self.spill(i, k) else {
-                    continue;
-                };
-                if inside(i, k) {
-                    sb.out.insert((i, k), o);
-                }
-                if inside(o.0, o.1) {
-                    sb.into.entry(o).or_default().push((i, k));
-                }
+    fn compute_spills(&mut self, b: (i64, i64)) -> RouteBlock {
+        self.compute_outlets(b, |net, i, k| {
+            if net.is_lake_pit(i, k) {
+                net.spill(i, k)
+            } else {
+                None
             }
-        }
-        sb
+        })
     }
 
     /// The downstream neighbour of node `(i, k)`: its lattice neighbour of steepest descent, for
@@ -721,7 +718,6 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
     let mut h = vec![0.0f32; m * m];
     let mut amp = vec![0.0f32; m * m];
     let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
-    let (mut e, mut a, mut r) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
     let ero = [plan.erosion; LANES];
     let rough = [1.0f32; LANES];
     let mut out = [0.0f32; LANES];
@@ -729,10 +725,13 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
         let c = (m * m - start).min(LANES);
         x[..c].copy_from_slice(&xs[start..start + c]);
         z[..c].copy_from_slice(&zs[start..start + c]);
-        kernel::heights(earth, plan.node_lod, &x, &z, &ero, &rough, &mut out);
+        // `kernel::heights`, keeping the relief amplitude its macro fields computed.
+        let mut p = kernel::Partial::start(earth, &x, &z);
+        amp[start..start + c].copy_from_slice(&p.amp[..c]);
+        let layers = &earth.lods[plan.node_lod].layers;
+        p.add_layers(earth, layers, &x, &z, &ero, &rough);
+        p.finish(&mut out);
         h[start..start + c].copy_from_slice(&out[..c]);
-        kernel::macro_fields(&earth.macro_plan, &x, &z, &mut e, &mut a, &mut r);
-        amp[start..start + c].copy_from_slice(&a[..c]);
     }
     let n = BLOCK as usize;
     let mut down = vec![NONE; n * n];
