@@ -39,6 +39,9 @@ pub fn clear_caches() {
     CACHES.pieces.invalidate_all();
 }
 
+/// A call's memo of one kind of block, by block index.
+type Memo<V> = HashMap<(i64, i64), Arc<V>>;
+
 /// A block of one world's network: the world's fingerprint ([`RiverPlan::fingerprint`]) and
 /// the block's index.
 type BlockKey = (u64, (i64, i64));
@@ -221,18 +224,31 @@ impl<'a> Network<'a> {
         }
     }
 
+    /// Block `b` from this call's memo (`memo`), else from the process cache, else computed by
+    /// `compute` and put in both.
+    fn block<V: Send + Sync + 'static>(
+        &mut self,
+        b: (i64, i64),
+        memo: fn(&mut Self) -> &mut Memo<V>,
+        cache: &moka::sync::Cache<BlockKey, Arc<V>>,
+        compute: fn(&mut Self, (i64, i64)) -> V,
+    ) -> Arc<V> {
+        if let Some(v) = memo(self).get(&b) {
+            return v.clone();
+        }
+        let key = (self.plan.fingerprint, b);
+        if let Some(v) = cache.get(&key) {
+            memo(self).insert(b, v.clone());
+            return v;
+        }
+        let v = Arc::new(compute(self, b));
+        cache.insert(key, v.clone());
+        memo(self).insert(b, v.clone());
+        v
+    }
+
     fn route_block(&mut self, b: (i64, i64)) -> Arc<RouteBlock> {
-        if let Some(rb) = self.routes.get(&b) {
-            return rb.clone();
-        }
-        if let Some(rb) = CACHES.routes.get(&(self.plan.fingerprint, b)) {
-            self.routes.insert(b, rb.clone());
-            return rb;
-        }
-        let rb = Arc::new(self.compute_routes(b));
-        CACHES.routes.insert((self.plan.fingerprint, b), rb.clone());
-        self.routes.insert(b, rb.clone());
-        rb
+        self.block(b, |n| &mut n.routes, &CACHES.routes, Self::compute_routes)
     }
 
     /// Whether `(i, k)` is a pit: land with no lower neighbour.
@@ -291,17 +307,7 @@ impl<'a> Network<'a> {
     }
 
     fn spill_block(&mut self, b: (i64, i64)) -> Arc<RouteBlock> {
-        if let Some(sb) = self.spills.get(&b) {
-            return sb.clone();
-        }
-        if let Some(sb) = CACHES.spills.get(&(self.plan.fingerprint, b)) {
-            self.spills.insert(b, sb.clone());
-            return sb;
-        }
-        let sb = Arc::new(self.compute_spills(b));
-        CACHES.spills.insert((self.plan.fingerprint, b), sb.clone());
-        self.spills.insert(b, sb.clone());
-        sb
+        self.block(b, |n| &mut n.spills, &CACHES.spills, Self::compute_spills)
     }
 
     /// The outlet of breached pit `(i, k)`, if it is one.
@@ -425,17 +431,7 @@ impl<'a> Network<'a> {
     }
 
     fn flow_block(&mut self, b: (i64, i64)) -> Arc<FlowBlock> {
-        if let Some(fb) = self.flows.get(&b) {
-            return fb.clone();
-        }
-        if let Some(fb) = CACHES.flow.get(&(self.plan.fingerprint, b)) {
-            self.flows.insert(b, fb.clone());
-            return fb;
-        }
-        let fb = Arc::new(self.compute_flow(b));
-        CACHES.flow.insert((self.plan.fingerprint, b), fb.clone());
-        self.flows.insert(b, fb.clone());
-        fb
+        self.block(b, |n| &mut n.flows, &CACHES.flow, Self::compute_flow)
     }
 
     /// Discharge of node `(i, k)`, nodes.
