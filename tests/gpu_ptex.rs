@@ -141,24 +141,6 @@ fn gpu_bake_matches_cpu_on_quads_and_tile_faces() {
     compare("tile", &tiles, &mats, 64);
 }
 
-/// An 8-bit RGBA PNG of `w × h` pixels.
-fn png_rgba(w: u32, h: u32, px: impl Fn(u32, u32) -> [u8; 4]) -> Vec<u8> {
-    let mut data = Vec::new();
-    for y in 0..h {
-        for x in 0..w {
-            data.extend_from_slice(&px(x, y));
-        }
-    }
-    let mut out = Vec::new();
-    let mut enc = png::Encoder::new(&mut out, w, h);
-    enc.set_color(png::ColorType::Rgba);
-    enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().expect("header");
-    writer.write_image_data(&data).expect("data");
-    writer.finish().expect("finish");
-    out
-}
-
 /// A set with images: `grass` an image material, `rock` overridden, and two decals at `a` and
 /// `b` (world `[x, z]`, metres).
 fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
@@ -167,19 +149,19 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
     use strata::ptex::image::{decode_png, hash_hex, image_hash};
     use strata::ptex::spec::{DecalSpec, MaterialSpec, PtexSpecs};
     let pngs = [
-        png_rgba(32, 32, |x, y| {
+        common::png::rgba(32, 32, |x, y| {
             [(x * 8) as u8, (y * 8) as u8, ((x ^ y) * 8) as u8, 255]
         }),
-        png_rgba(16, 16, |x, y| [((x + y) * 8) as u8, 0, 0, 255]),
-        png_rgba(64, 64, |x, y| {
+        common::png::rgba(16, 16, |x, y| [((x + y) * 8) as u8, 0, 0, 255]),
+        common::png::rgba(64, 64, |x, y| {
             let v = (((x as f32 * 0.3).sin() + (y as f32 * 0.2).cos()) * 60.0 + 128.0) as u8;
             [v, v, v, 255]
         }),
-        png_rgba(16, 8, |x, y| {
+        common::png::rgba(16, 8, |x, y| {
             let e = x.min(15 - x).min(2 * y.min(7 - y));
             [200, 40, 90, (e * 50).min(255) as u8]
         }),
-        png_rgba(8, 8, |x, _| [(x * 36) as u8, 0, 0, 255]),
+        common::png::rgba(8, 8, |x, _| [(x * 36) as u8, 0, 0, 255]),
     ];
     let hashes: Vec<String> = pngs.iter().map(|p| hash_hex(&image_hash(p))).collect();
     let images = pngs

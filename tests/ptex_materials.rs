@@ -39,34 +39,16 @@ const KEY: TileKey = TileKey {
 };
 const RES: u32 = 32;
 
-/// An 8-bit PNG of `w × h` RGBA pixels.
-fn png_rgba(w: u32, h: u32, px: impl Fn(u32, u32) -> [u8; 4]) -> Vec<u8> {
-    let mut data = Vec::new();
-    for y in 0..h {
-        for x in 0..w {
-            data.extend_from_slice(&px(x, y));
-        }
-    }
-    let mut out = Vec::new();
-    let mut enc = png::Encoder::new(&mut out, w, h);
-    enc.set_color(png::ColorType::Rgba);
-    enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().expect("header");
-    writer.write_image_data(&data).expect("data");
-    writer.finish().expect("finish");
-    out
-}
-
 /// The decal image: magenta, its alpha 255 over the middle 8 × 8 pixels and falling to 0 over
 /// the 4 pixels to each edge.
 fn decal_png() -> Vec<u8> {
     let ramp = |i: u32| (i.min(15 - i) * 64).min(255) as u8;
-    png_rgba(16, 16, |x, y| [250, 20, 200, ramp(x).min(ramp(y))])
+    common::png::rgba(16, 16, |x, y| [250, 20, 200, ramp(x).min(ramp(y))])
 }
 
 /// A 4 × 4 checker of two colours.
 fn checker_png() -> Vec<u8> {
-    png_rgba(4, 4, |x, y| {
+    common::png::rgba(4, 4, |x, y| {
         if (x + y) % 2 == 0 {
             [10, 200, 30, 255]
         } else {
@@ -414,7 +396,7 @@ async fn an_uploaded_decal_shows_in_the_pages_of_the_new_version_and_bad_input_i
     upload(&app, &id, tok, b"not a png at all, just text")
         .await
         .error(StatusCode::BAD_REQUEST, "invalid_image", Some("body"));
-    let odd = upload(&app, &id, tok, &png_rgba(3, 2, |_, _| [0; 4])).await;
+    let odd = upload(&app, &id, tok, &common::png::rgba(3, 2, |_, _| [0; 4])).await;
     odd.error(StatusCode::BAD_REQUEST, "invalid_image", Some("body"));
     assert!(odd.json()["error"]["message"]
         .as_str()

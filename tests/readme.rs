@@ -117,23 +117,12 @@ fn write_examples() {
 /// `docs/examples/puddle.png`: 64 × 64 RGBA, muddy water, its alpha 1 inside an oval and falling
 /// to 0 over the outer fifth of its radius.
 fn puddle_png() -> Vec<u8> {
-    let mut data = Vec::new();
-    for y in 0..64 {
-        for x in 0..64 {
-            let (u, v) = ((x as f32 + 0.5) / 32.0 - 1.0, (y as f32 + 0.5) / 32.0 - 1.0);
-            let r = (u * u + v * v).sqrt();
-            let a = ((1.0 - r) / 0.2).clamp(0.0, 1.0);
-            data.extend_from_slice(&[52, 58, 62, (a * 255.0).round() as u8]);
-        }
-    }
-    let mut out = Vec::new();
-    let mut enc = png::Encoder::new(&mut out, 64, 64);
-    enc.set_color(png::ColorType::Rgba);
-    enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().expect("PNG header");
-    writer.write_image_data(&data).expect("PNG data");
-    writer.finish().expect("PNG end");
-    out
+    common::png::rgba(64, 64, |x, y| {
+        let (u, v) = ((x as f32 + 0.5) / 32.0 - 1.0, (y as f32 + 0.5) / 32.0 - 1.0);
+        let r = (u * u + v * v).sqrt();
+        let a = ((1.0 - r) / 0.2).clamp(0.0, 1.0);
+        [52, 58, 62, (a * 255.0).round() as u8]
+    })
 }
 
 /// The planes of a tile's pack (`api/ptex_pages_v1.md`): albedo, normal and displacement bytes.

@@ -4,8 +4,8 @@
 //! Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element
 //! ([`arch`]), a `strata` element with one cave opening to the ground ([`cave`]), the Khronos
 //! glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the
-//! browser tests ([`js`]), tiles with river and lake water ([`water`]) and a throwaway
-//! PostgreSQL cluster ([`postgres`]).
+//! browser tests ([`js`]), tiles with river and lake water ([`water`]), PNG images ([`png`])
+//! and a throwaway PostgreSQL cluster ([`postgres`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
@@ -17,6 +17,7 @@ pub mod fixture;
 pub mod gltf;
 pub mod js;
 pub mod oneshot;
+pub mod png;
 pub mod postgres;
 pub mod raw;
 pub mod replica;
