@@ -5,7 +5,6 @@
 //! highest levels, and serves the HTTP route's bytes; an edit re-bakes only the faces it
 //! touched; the server's budget refuses a session it cannot hold.
 
-use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
 use std::collections::{HashMap, HashSet};
 use std::time::Duration;
@@ -21,29 +20,14 @@ use strata::stream::view::select;
 use strata::terrain::{TileKey, WorldParams, WorldPlan};
 use tokio_tungstenite::tungstenite::Message;
 
-type Ws =
-    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
+mod common;
+
+use common::ws::{connect, send, serve_ptex, Ws};
 
 const SEED: u64 = 11;
 /// The session budget of these tests: every face of a `[1, 1]` view at the vista level, and a
 /// few slots at each detail level (one at 256²).
 const SESSION_BYTES: u64 = 6 << 20;
-
-/// The app with `settings` on a real socket; returns `host:port`.
-async fn serve(settings: PtexSettings) -> String {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
-        .await
-        .expect("bind");
-    let addr = listener.local_addr().expect("addr");
-    tokio::spawn(async move {
-        let state =
-            strata::server::AppState::new(strata::compute::Compute::cpu()).with_ptex(settings);
-        axum::serve(listener, strata::server::app(state))
-            .await
-            .expect("serve");
-    });
-    addr.to_string()
-}
 
 fn settings() -> PtexSettings {
     PtexSettings {
@@ -53,25 +37,8 @@ fn settings() -> PtexSettings {
     }
 }
 
-async fn connect(addr: &str, path: &str) -> Ws {
-    tokio_tungstenite::connect_async(format!("ws://{addr}{path}"))
-        .await
-        .expect("connect")
-        .0
-}
-
 async fn next(ws: &mut Ws) -> Message {
-    tokio::time::timeout(Duration::from_secs(300), ws.next())
-        .await
-        .expect("a message in time")
-        .expect("stream open")
-        .expect("message")
-}
-
-async fn send(ws: &mut Ws, msg: Value) {
-    ws.send(Message::Text(msg.to_string().into()))
-        .await
-        .expect("send");
+    common::ws::next(ws, Duration::from_secs(300)).await
 }
 
 /// The tile face of a page record: these sessions never ask for chunk faces' pages, so a chunk
@@ -255,7 +222,7 @@ fn pack_page(pack: &[u8], id: usize) -> (Vec<u8>, Vec<u8>, Vec<u8>) {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_fly_through_stays_within_the_budget_with_every_vista_and_the_nearest_faces_highest() {
-    let addr = serve(settings()).await;
+    let addr = serve_ptex(settings()).await;
     let mut ws = connect(&addr, &format!("/v1/seeds/{SEED}/stream?protocol=2")).await;
     next(&mut ws).await;
     send(&mut ws, json!({"type": "credit", "frames": 16})).await;
@@ -381,7 +348,7 @@ async fn a_fly_through_stays_within_the_budget_with_every_vista_and_the_nearest_
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn an_edit_rebakes_only_the_faces_it_touched() {
-    let addr = serve(settings()).await;
+    let addr = serve_ptex(settings()).await;
     let body = json!({"seed": SEED, "public": true});
     let (status, text) = strata::bench::http::http(
         &addr,
@@ -481,7 +448,7 @@ async fn an_edit_rebakes_only_the_faces_it_touched() {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_session_the_servers_budget_cannot_hold_is_refused_naming_the_field() {
-    let addr = serve(PtexSettings {
+    let addr = serve_ptex(PtexSettings {
         session_bytes: SESSION_BYTES,
         server_bytes: SESSION_BYTES,
         ..PtexSettings::default()

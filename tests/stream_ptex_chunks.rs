@@ -7,7 +7,7 @@
 //! pages again at the new version; a client that does not ask gets tile faces only; a budget
 //! that cannot hold a chunk's faces holds none of them and says so once.
 
-use futures::{SinkExt, StreamExt};
+use futures::StreamExt;
 use serde_json::{json, Value};
 use std::collections::{HashMap, HashSet};
 use std::time::Duration;
@@ -22,39 +22,9 @@ use tokio_tungstenite::tungstenite::Message;
 
 mod common;
 
-type Ws =
-    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
+use common::ws::{connect, create_world, send, serve_ptex, Ws};
 
 const SEED: u64 = 7;
-
-/// The app with `settings` on a real socket; returns `host:port`.
-async fn serve(settings: PtexSettings) -> String {
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
-        .await
-        .expect("bind");
-    let addr = listener.local_addr().expect("addr");
-    tokio::spawn(async move {
-        let state =
-            strata::server::AppState::new(strata::compute::Compute::cpu()).with_ptex(settings);
-        axum::serve(listener, strata::server::app(state))
-            .await
-            .expect("serve");
-    });
-    addr.to_string()
-}
-
-async fn connect(addr: &str, path: &str) -> Ws {
-    tokio_tungstenite::connect_async(format!("ws://{addr}{path}"))
-        .await
-        .expect("connect")
-        .0
-}
-
-async fn send(ws: &mut Ws, msg: Value) {
-    ws.send(Message::Text(msg.to_string().into()))
-        .await
-        .expect("send");
-}
 
 fn ground_at(x: i64, z: i64) -> f32 {
     let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
@@ -64,23 +34,8 @@ fn ground_at(x: i64, z: i64) -> f32 {
 
 /// A public world of seed 7 with the arch standing at (32, 24); its id and admin token.
 async fn arch_world(addr: &str) -> (String, String) {
-    let body = json!({"seed": SEED, "public": true,
-                      "scene": {"volumes": [common::arch::arch_element(ground_at(32, 24))]}});
-    let (status, text) = strata::bench::http::http(
-        addr,
-        "POST",
-        "/v1/worlds",
-        &[("Content-Type", "application/json")],
-        &body.to_string(),
-    )
-    .await
-    .expect("HTTP");
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
-    let doc: Value = serde_json::from_slice(&text).expect("JSON");
-    (
-        doc["id"].as_str().expect("id").to_string(),
-        doc["tokens"]["admin"].as_str().expect("token").to_string(),
-    )
+    let arch = common::arch::arch_element(ground_at(32, 24));
+    create_world(addr, SEED, json!({"volumes": [arch]})).await
 }
 
 /// What arrives until `idle`.
@@ -332,7 +287,7 @@ async fn every_face_of_the_held_chunks_gets_the_http_routes_page_within_the_budg
 /// A server with `settings`, the arch world on it, and a protocol-2 session to it that has
 /// said hello and been granted 1,024 frames: the server's address, the world's id, the socket.
 async fn open_session(settings: PtexSettings) -> (String, String, Ws) {
-    let addr = serve(settings).await;
+    let addr = serve_ptex(settings).await;
     let (id, token) = arch_world(&addr).await;
     let path = format!("/v1/worlds/{id}/stream?protocol=2&token={token}");
     let mut ws = connect(&addr, &path).await;

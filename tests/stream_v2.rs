@@ -5,7 +5,6 @@
 //! the HTTP chunk route, re-sent after an edit) and of a cave that opens to the ground (the
 //! tiles marking the vertices where it does), and v1 still served by default.
 
-use futures::{SinkExt, StreamExt};
 use serde_json::{json, Value};
 use std::time::Duration;
 use strata::edits::{synthesize, TileEdits};
@@ -19,33 +18,11 @@ use tokio_tungstenite::tungstenite::Message;
 
 mod common;
 
-type Ws =
-    tokio_tungstenite::WebSocketStream<tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>>;
+use common::ws::{connect, create_world, next, send, Ws};
 
 /// The app on a real socket; returns `host:port`.
 async fn serve() -> String {
     common::oneshot::serve_cpu().await
-}
-
-async fn connect(addr: &str, path: &str) -> Ws {
-    tokio_tungstenite::connect_async(format!("ws://{addr}{path}"))
-        .await
-        .expect("connect")
-        .0
-}
-
-async fn next(ws: &mut Ws, limit: Duration) -> Message {
-    tokio::time::timeout(limit, ws.next())
-        .await
-        .expect("a message in time")
-        .expect("stream open")
-        .expect("message")
-}
-
-async fn send(ws: &mut Ws, msg: Value) {
-    ws.send(Message::Text(msg.to_string().into()))
-        .await
-        .expect("send");
 }
 
 fn json_text(m: &Message) -> Option<Value> {
@@ -315,24 +292,6 @@ async fn a_volume_region_streams_its_chunks_and_an_edit_resends_them() {
     }
 }
 
-async fn create_world(addr: &str, scene: Value) -> (String, String) {
-    let body = json!({"seed": SEED, "public": true, "scene": scene});
-    let (status, text) = strata::bench::http::http(
-        addr,
-        "POST",
-        "/v1/worlds",
-        &[("Content-Type", "application/json")],
-        &body.to_string(),
-    )
-    .await
-    .expect("HTTP");
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
-    let doc: Value = serde_json::from_slice(&text).expect("JSON");
-    let id = doc["id"].as_str().expect("id").to_string();
-    let token = doc["tokens"]["admin"].as_str().expect("token").to_string();
-    (id, token)
-}
-
 /// The world columns `(x, z)` whose vertices a JSON tile frame marks `volume_override`, with
 /// the marked vertices' heights.
 fn marked(t: &TileFrame) -> Vec<((i64, i64), f64)> {
@@ -375,7 +334,7 @@ fn chunk_keys(list: &Value) -> Vec<ChunkKey> {
 async fn a_cave_opening_to_the_ground_streams_its_chunks_and_tiles_mark_the_opening() {
     let addr = serve().await;
     let cave = common::cave::cave(SEED);
-    let (id, token) = create_world(&addr, json!({"strata": [cave.element.clone()]})).await;
+    let (id, token) = create_world(&addr, SEED, json!({"strata": [cave.element.clone()]})).await;
     let (cx, cz) = (
         (cave.min[0] + cave.max[0]) / 2.0,
         (cave.min[1] + cave.max[1]) / 2.0,

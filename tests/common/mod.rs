@@ -4,8 +4,8 @@
 //! Euler counts ([`topology`]), the seams of a block of tiles ([`seams`]), the arch volume element
 //! ([`arch`]), a `strata` element with one cave opening to the ground ([`cave`]), the Khronos
 //! glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the
-//! browser tests ([`js`]), tiles with river and lake water ([`water`]), PNG images ([`png`])
-//! and a throwaway PostgreSQL cluster ([`postgres`]).
+//! browser tests ([`js`]), tiles with river and lake water ([`water`]), PNG images ([`png`]),
+//! a stream client ([`ws`]) and a throwaway PostgreSQL cluster ([`postgres`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
@@ -24,6 +24,7 @@ pub mod replica;
 pub mod seams;
 pub mod topology;
 pub mod water;
+pub mod ws;
 
 use std::ffi::OsStr;
 use std::io::{BufRead, BufReader};
