@@ -154,10 +154,10 @@ pub struct Node {
 pub struct Network<'a> {
     pub(super) earth: &'a EarthPlan,
     pub(super) plan: &'a RiverPlan,
-    heights: HashMap<(i64, i64), Arc<HeightBlock>>,
-    routes: HashMap<(i64, i64), Arc<RouteBlock>>,
-    spills: HashMap<(i64, i64), Arc<RouteBlock>>,
-    flows: HashMap<(i64, i64), Arc<FlowBlock>>,
+    heights: Memo<HeightBlock>,
+    routes: Memo<RouteBlock>,
+    spills: Memo<RouteBlock>,
+    flows: Memo<FlowBlock>,
 }
 
 impl std::fmt::Debug for Network<'_> {
