@@ -22,7 +22,7 @@ use tokio_tungstenite::tungstenite::Message;
 
 mod common;
 
-use common::ws::{connect, send, serve_ptex, Ws};
+use common::ws::{connect, create_world, send, serve_ptex, Ws};
 
 const SEED: u64 = 11;
 /// The session budget of these tests: every face of a `[1, 1]` view at the vista level, and a
@@ -349,20 +349,7 @@ async fn a_fly_through_stays_within_the_budget_with_every_vista_and_the_nearest_
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn an_edit_rebakes_only_the_faces_it_touched() {
     let addr = serve_ptex(settings()).await;
-    let body = json!({"seed": SEED, "public": true});
-    let (status, text) = strata::bench::http::http(
-        &addr,
-        "POST",
-        "/v1/worlds",
-        &[("Content-Type", "application/json")],
-        &body.to_string(),
-    )
-    .await
-    .expect("HTTP");
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
-    let doc: Value = serde_json::from_slice(&text).expect("JSON");
-    let id = doc["id"].as_str().expect("id").to_string();
-    let token = doc["tokens"]["admin"].as_str().expect("token").to_string();
+    let (id, token) = create_world(&addr, SEED, None).await;
     let mut ws = connect(
         &addr,
         &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),

@@ -35,7 +35,7 @@ fn ground_at(x: i64, z: i64) -> f32 {
 /// A public world of seed 7 with the arch standing at (32, 24); its id and admin token.
 async fn arch_world(addr: &str) -> (String, String) {
     let arch = common::arch::arch_element(ground_at(32, 24));
-    create_world(addr, SEED, json!({"volumes": [arch]})).await
+    create_world(addr, SEED, Some(json!({"volumes": [arch]}))).await
 }
 
 /// What arrives until `idle`.

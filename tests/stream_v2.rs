@@ -195,21 +195,8 @@ async fn http_chunk(addr: &str, id: &str, key: ChunkKey, v: u64) -> Vec<u8> {
 async fn a_volume_region_streams_its_chunks_and_an_edit_resends_them() {
     let addr = serve().await;
     let ground = ground_at(32, 24);
-    let body = json!({"seed": SEED, "public": true,
-                      "scene": {"volumes": [common::arch::arch_element(ground)]}});
-    let (status, text) = strata::bench::http::http(
-        &addr,
-        "POST",
-        "/v1/worlds",
-        &[("Content-Type", "application/json")],
-        &body.to_string(),
-    )
-    .await
-    .expect("HTTP");
-    assert_eq!(status, 201, "{}", String::from_utf8_lossy(&text));
-    let doc: Value = serde_json::from_slice(&text).expect("JSON");
-    let id = doc["id"].as_str().expect("id").to_string();
-    let token = doc["tokens"]["admin"].as_str().expect("token").to_string();
+    let arch = common::arch::arch_element(ground);
+    let (id, token) = create_world(&addr, SEED, Some(json!({"volumes": [arch]}))).await;
 
     let mut ws = connect(
         &addr,
@@ -334,7 +321,8 @@ fn chunk_keys(list: &Value) -> Vec<ChunkKey> {
 async fn a_cave_opening_to_the_ground_streams_its_chunks_and_tiles_mark_the_opening() {
     let addr = serve().await;
     let cave = common::cave::cave(SEED);
-    let (id, token) = create_world(&addr, SEED, json!({"strata": [cave.element.clone()]})).await;
+    let (id, token) =
+        create_world(&addr, SEED, Some(json!({"strata": [cave.element.clone()]}))).await;
     let (cx, cz) = (
         (cave.min[0] + cave.max[0]) / 2.0,
         (cave.min[1] + cave.max[1]) / 2.0,

@@ -51,9 +51,13 @@ pub async fn send(ws: &mut Ws, msg: Value) {
         .expect("send");
 }
 
-/// Creates a public world of `seed` with `scene`; its id and admin token.
-pub async fn create_world(addr: &str, seed: u64, scene: Value) -> (String, String) {
-    let body = json!({"seed": seed, "public": true, "scene": scene});
+/// Creates a public world of `seed`, with `scene` if given (else the server's default scene);
+/// its id and admin token.
+pub async fn create_world(addr: &str, seed: u64, scene: Option<Value>) -> (String, String) {
+    let mut body = json!({"seed": seed, "public": true});
+    if let Some(scene) = scene {
+        body["scene"] = scene;
+    }
     let (status, text) = strata::bench::http::http(
         addr,
         "POST",
