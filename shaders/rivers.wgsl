@@ -54,7 +54,8 @@ struct CarveParams {
     shore_seed3: u32,
     shore_warp_m: f32,
     shore_warp_inv_m: f32,
-    _pad0: u32,
+    // Whether the carve keeps sills beside the lakes (`RiverJob::sills`, 0 or 1).
+    sills: u32,
     _pad1: u32,
     _pad2: u32,
 }
@@ -135,9 +136,10 @@ fn wall_width(x: f32, z: f32) -> f32 {
 }
 
 // `rivers::profile` (its height only, `carve::profile_at_foot` with the walls' added width
-// `wall`, metres): piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the
-// widened valley, the height is returned unchanged, bit for bit.
-fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
+// `wall`, metres, and the lake sill's level and weight, `sill.x` and `sill.y`; weight 0: none):
+// piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the widened
+// valley, the height is returned unchanged, bit for bit.
+fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32, sill: vec2<f32>) -> f32 {
     let abx = p.bx - p.ax;
     let abz = p.bz - p.az;
     let t = clamp01(rn((rn((x - p.ax) * abx) + rn((z - p.az) * abz)) * p.inv_len2));
@@ -171,6 +173,8 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32) -> f32 {
     if (d < p.half_width) {
         let r = div_rn(d, p.half_width);
         c = min(c, w - rn(p.depth * (1.0 - rn(r * r))));
+    } else if (sill.y > 0.0) {
+        c = c + rn((max(c, min(h, sill.x)) - c) * sill.y);
     }
     return c;
 }
@@ -212,12 +216,13 @@ fn node_lake(i: i32, k: i32) -> f32 {
     return lakes[u32(b) * params.lakes_w + u32(a)];
 }
 
-// `RiverJob::shore` (`rivers::shores`, with `RiverJob::lake_field`): the height `h` at `(x, z)`
-// clamped into the shore's wedge around the lake level, faded in with the lake weight; `h`
-// itself where no lake node around has weight or the world has the first lakes.
-fn shore(x: f32, z: f32, h: f32) -> f32 {
+// `RiverJob::shore_sill` (`rivers::shores`, with `RiverJob::lake_field`): the height `h` at
+// `(x, z)` clamped into the shore's wedge around the lake level, faded in with the lake weight
+// (`h` itself where no lake node around has weight or the world has the first lakes), then the
+// sill's level and weight (weight 0: none).
+fn shore(x: f32, z: f32, h: f32) -> vec3<f32> {
     if (params.shores == 0u || params.lakes_w == 0u) {
-        return h;
+        return vec3<f32>(h, 0.0, 0.0);
     }
     let qx = rn(x * params.shore_warp_inv_m);
     let qz = rn(z * params.shore_warp_inv_m);
@@ -248,7 +253,7 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
         }
     }
     if (weight <= 0.0) {
-        return h;
+        return vec3<f32>(h, 0.0, 0.0);
     }
     let level = div_rn(sum, weight);
     let n1 = clamp_to(
@@ -263,6 +268,10 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
     );
     let t = weight + (rn(SHORE_N1 * n1) + rn(SHORE_N2 * n2));
     let e = 0.5 - t;
+    var sill_s = 0.0;
+    if (params.sills != 0u) {
+        sill_s = rn(smoothstep_rn(0.0, SILL_FULL, weight) * smoothstep_rn(-SILL_E, 0.0, e));
+    }
     let gentle = rn(SHORE_GENTLE_M * e);
     let steep = rn(SHORE_STEEP_M * e);
     var lo = level + steep;
@@ -277,11 +286,11 @@ fn shore(x: f32, z: f32, h: f32) -> f32 {
     } else if (h > hi) {
         target_h = hi;
     } else {
-        return h;
+        return vec3<f32>(h, level, sill_s);
     }
     let g = smoothstep_rn(0.0, SHORE_FULL, weight);
     let change = clamp_to(rn((target_h - h) * g), -SHORE_MAX_M, SHORE_MAX_M);
-    return h + change;
+    return vec3<f32>(h + change, level, sill_s);
 }
 
 // Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).
@@ -300,7 +309,9 @@ fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workg
     // World position `(g as f32) * spacing`, as on the CPU.
     let x = rn(f32(params.gx0 + i32(idx % params.w)) * params.spacing);
     let z = rn(f32(params.gz0 + i32(idx / params.w)) * params.spacing);
-    let h = shore(x, z, heights[idx]);
+    let shaped = shore(x, z, heights[idx]);
+    let h = shaped.x;
+    let sill = shaped.yz;
     var c = h;
     let range = bin_range(x, z);
     var wall = 0.0;
@@ -308,7 +319,7 @@ fn river_carve(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workg
         wall = wall_width(x, z);
     }
     for (var k = range.x; k < range.y; k++) {
-        c = min(c, profile(pieces[bin_pieces[k]], x, z, h, wall));
+        c = min(c, profile(pieces[bin_pieces[k]], x, z, h, wall, sill));
     }
     heights[idx] = max(c, h - CARVE_MAX_M);
 }

@@ -327,6 +327,61 @@ fn gpu_river_carve_matches_cpu() {
     );
 }
 
+/// The lake sills of `lakes: 4` worlds (`rivers::shores`, step 5) on the device: at the outlet
+/// of the spilling lake south of the origin, the device's carve of its own uncarved heights
+/// equals the CPU carve of those heights bit for bit, and there the sills raise at least 1 000
+/// heights that the same carve without sills (`lakes: 3`) cuts lower, none of them lowered.
+#[test]
+fn gpu_river_carve_keeps_the_lake_sills_bit_for_bit() {
+    let world = |lakes: u32| {
+        let mut params = WorldParams::default();
+        let earth = params.earth.as_mut().expect("earth-1");
+        earth.rivers.as_mut().expect("rivers").lakes = lakes;
+        WorldPlan::new(SEED, params).expect("a world with spilling lakes")
+    };
+    let (plan, without) = (world(4), world(3));
+    let dry = dry_plan();
+    let (_adapter, device, queue) = software_device();
+    let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+    let key = |lod, x, z| TileKey { lod, x, z };
+    let mut raised = 0;
+    // LOD 3: the outlet's valleys; LOD 0: a sill's edge, where it fades in.
+    for k in [key(3, -1, 0), key(3, -1, 1), key(0, -7, 8)] {
+        let job = FieldJob::with_margin(k);
+        let spacing = plan.lods[k.lod as usize].spacing_m;
+        let carve = |plan: &WorldPlan, uncarved: &[f32]| {
+            let earth = plan.earth.as_ref().expect("earth-1");
+            let rp = earth.rivers.as_ref().expect("rivers");
+            let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+            let mut h = uncarved.to_vec();
+            strata::terrain::earth::carve(&rj, spacing, job, &mut h);
+            h
+        };
+        let gpu_bare = kernels
+            .field(&device, &queue, &dry, job, None)
+            .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
+        let expected = carve(&plan, &gpu_bare.heights);
+        let rep = compare(&device, &queue, &kernels, &plan, k);
+        for (v, (e, g)) in expected.iter().zip(&rep.gpu_heights).enumerate() {
+            assert_eq!(
+                e.to_bits(),
+                g.to_bits(),
+                "{k:?}, vertex ({}, {}): the device carves its height {} to {g}, the CPU carve \
+                 of that height gives {e}",
+                v % job.w,
+                v / job.w,
+                gpu_bare.heights[v]
+            );
+        }
+        for (a, b) in expected.iter().zip(carve(&without, &gpu_bare.heights)) {
+            assert!(*a >= b, "{k:?}: a sill lowered a height from {b} to {a}");
+            raised += usize::from(a.to_bits() != b.to_bits());
+        }
+    }
+    println!("lake sills: {raised} heights raised");
+    assert!(raised >= 1000, "only {raised} heights under a sill");
+}
+
 /// For scale: how far the CPU's own heights move when x moves by one ULP, on the mountain tile.
 #[test]
 fn one_ulp_sensitivity() {

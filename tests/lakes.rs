@@ -1,7 +1,8 @@
-//! Lake shores (`rivers.lakes: 2`, the default of new worlds; `terrain::earth::rivers`' shores):
-//! a lake's water ends where its ground rises to its level, so no lake has a straight side where
-//! the ground beyond stays below the water; the first lakes (`lakes: 1`, worlds stored before)
-//! keep the straight sides, which is how this test knows it can fail.
+//! Lake shores (`rivers.lakes: 2` and later; `terrain::earth::rivers`' shores): a lake's water
+//! ends where its ground rises to its level, so no lake has a straight side where the ground
+//! beyond stays below the water; the first lakes (`lakes: 1`, worlds stored before) keep the
+//! straight sides, which is how this test knows it can fail. Spilling lakes keep a sill where
+//! their river leaves (`lakes: 4`, the default of new worlds), which `lakes: 3` lacks.
 
 use strata::terrain::earth::rivers::kind;
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
@@ -130,18 +131,62 @@ fn lake_water_ends_where_its_ground_rises_to_its_level() {
     }
 }
 
+/// Where the river of the spilling lake south of the origin of seed 42 leaves it: the valleys
+/// there lie below the lake's level.
+const OUTLET: (f64, f64) = (-400.0, 650.0);
+
+/// A spilling lake keeps a sill where its river leaves (`lakes: 4`): the carve cuts no
+/// floodplain or valley wall below the lake's level beside its water, so no dry vertex next to
+/// the lake lies below its level. With `lakes: 3` the valley floors of the river that leaves the
+/// lake, and of the rivers that join it there, lie dry below the level right beside the water
+/// (a lake would flood them), which is how this test knows it can fail.
+#[test]
+fn spilling_lakes_keep_a_sill_where_their_river_leaves() {
+    let (sills, spilling) = (plan(4), plan(3));
+    let mut points = lake_points(&sills, 4);
+    points.push(OUTLET);
+    let mut low3 = 0;
+    for lod in [2u32, 4, 6] {
+        let (pairs, low) = shores_around(&sills, &points, lod);
+        let (pairs3, l3) = shores_around(&spilling, &points, lod);
+        println!(
+            "LOD {lod}: lakes 4: {pairs} shore pairs, {low} dry below the level; lakes 3: \
+             {pairs3} pairs, {l3} below"
+        );
+        assert!(pairs >= 50, "LOD {lod}: only {pairs} shore pairs");
+        assert_eq!(
+            low, 0,
+            "LOD {lod}: {low} of {pairs} dry shore vertices lie below their lake's level"
+        );
+        low3 += l3;
+    }
+    assert!(
+        low3 >= 20,
+        "lakes 3 should leave valley floors dry below the level at the outlet ({low3})"
+    );
+}
+
 /// The carve's faster paths (pruned bins, lanes) and the water grid give the scalar carve's
 /// and water's bits on tiles with shaped shores, where the shores change heights before the
-/// carve.
+/// carve, and with sills (`lakes: 4`), where the sills change the carve beside the lakes.
 #[test]
 fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
+    for lakes in [2, 4] {
+        faster_paths_are_bit_exact(lakes);
+    }
+}
+
+fn faster_paths_are_bit_exact(lakes: u32) {
     use strata::terrain::earth::rivers::{job_for, water_at, water_job_for};
-    let p = plan(2);
+    let p = plan(lakes);
     let earth = p.earth.as_ref().expect("earth-1");
     let rp = earth.rivers.as_ref().expect("rivers");
-    let points = lake_points(&p, 2);
+    let mut points = lake_points(&p, 2);
+    if lakes >= 4 {
+        points.push(OUTLET);
+    }
     let n = 65usize;
-    let (mut shored, mut lake) = (0usize, 0usize);
+    let (mut shored, mut lake, mut silled) = (0usize, 0usize, 0usize);
     for &(x, z) in &points {
         for lod in [0u32, 3, 5] {
             let key = common::water::key_at(&p, lod, x, z);
@@ -170,6 +215,7 @@ fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
                 let (x, z) = (xs[v % n], zs[v / n]);
                 let one = full.carve_one(x, z, *h);
                 shored += usize::from(full.shore(x, z, *h).to_bits() != h.to_bits());
+                silled += usize::from(full.shore_sill(x, z, *h).1.s > 0.0);
                 assert_eq!(
                     full.carve_pruned(&pruned, x, z, *h).to_bits(),
                     one.to_bits(),
@@ -190,7 +236,13 @@ fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
             }
         }
     }
-    println!("{shored} heights moved by the shores, {lake} lake vertices");
+    println!(
+        "lakes {lakes}: {shored} heights moved by the shores, {silled} under a sill, {lake} lake \
+         vertices"
+    );
     assert!(shored > 1000, "only {shored} heights moved by the shores");
     assert!(lake > 100, "only {lake} lake vertices");
+    if lakes >= 4 {
+        assert!(silled > 1000, "only {silled} heights under a sill");
+    }
 }

@@ -109,6 +109,8 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("SHORE_STEEP_M", rivers::SHORE_STEEP_M),
         ("SHORE_FULL", rivers::SHORE_FULL),
         ("SHORE_MAX_M", rivers::SHORE_MAX_M),
+        ("SILL_FULL", rivers::SILL_FULL),
+        ("SILL_E", rivers::SILL_E),
         ("LAKE_NONE", LAKE_NONE),
     ]
 }
@@ -321,7 +323,7 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         shore_seed3: rj.shore_seeds[3],
         shore_warp_m: rj.shore_warp_m,
         shore_warp_inv_m: rj.shore_warp_inv_m,
-        _pad0: 0,
+        sills: u32::from(rj.sills),
         _pad1: 0,
         _pad2: 0,
     })

@@ -374,9 +374,9 @@ pub struct GpuCarveParams {
     pub shore_warp_m: f32,
     /// `RiverJob::shore_warp_inv_m`.
     pub shore_warp_inv_m: f32,
+    /// `RiverJob::sills` (0 or 1).
+    pub sills: u32,
     /// Padding to a multiple of 16 bytes.
-    pub _pad0: u32,
-    /// Padding.
     pub _pad1: u32,
     /// Padding.
     pub _pad2: u32,

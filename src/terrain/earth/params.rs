@@ -108,14 +108,17 @@ pub struct RiverParams {
         skip_serializing_if = "RiverParams::is_first_valleys"
     )]
     pub valleys: u32,
-    /// The lakes, 1 to 3 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
+    /// The lakes, 1 to 4 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
     /// the four nodes around it holds a lake above its height, so a lake's water can end along
     /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
     /// keep it, and their bytes. `2` (new worlds): the ground is shaped to meet the lake's level
     /// along a curved shore ([`super::rivers`]' shores), where the water ends. `3` (asked for by
     /// name): the lakes of `2`, and a lake whose flood found an outlet spills there, so its
     /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
-    /// lake's level instead of ending in a basin closed by the finer relief.
+    /// lake's level instead of ending in a basin closed by the finer relief; but the valleys of
+    /// the rivers below the outlet are cut below the lake's level right beside its water. `4`
+    /// (asked for by name): the lakes of `3` held by a sill, where the carve cuts no floodplain
+    /// or valley wall below the lake's level beside its water (the shores' step 5).
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
@@ -177,9 +180,9 @@ impl RiverParams {
             "must be 1, 2, 3 or 4",
         )?;
         check(
-            (1..=3).contains(&self.lakes),
+            (1..=4).contains(&self.lakes),
             "rivers.lakes",
-            "must be 1, 2 or 3",
+            "must be 1, 2, 3 or 4",
         )
     }
 }

@@ -5,6 +5,7 @@ use super::super::super::hash::{hash2, signed_unit};
 use super::super::super::noise::lattice;
 use super::super::EarthPlan;
 use super::network::{Network, Node};
+use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
     Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
@@ -120,6 +121,9 @@ pub struct RiverJob {
     pub wall_seed: u32,
     /// Whether the lakes have shaped shores (`lakes: 2`, [`super::shores`]).
     pub shores: bool,
+    /// Whether the carve keeps a sill under the land beside a lake (`lakes: 4`,
+    /// [`super::shores`] step 5).
+    pub sills: bool,
     /// `RiverPlan::shore_seeds`: the shores' two noise octaves and the warp's x and z.
     pub shore_seeds: [u32; 4],
     /// Scale of the shores' warp, metres (`SHORE_WARP` node spacings).
@@ -522,6 +526,7 @@ impl Network<'_> {
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
             shores: self.plan.lakes >= 2,
+            sills: self.plan.lakes >= 4,
             shore_seeds: self.plan.shore_seeds,
             shore_warp_m: super::SHORE_WARP * s,
             shore_warp_inv_m: 1.0 / (super::SHORE_WARP_WAVE * s),
@@ -561,14 +566,23 @@ pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
-    profile_at_foot(p, t, d2, h, 0.0)
+    profile_at_foot(p, t, d2, h, 0.0, Sill::NONE)
 }
 
-/// [`profile`] given the sample's foot on the piece ([`foot`]) and the walls' added width at
+/// [`profile`] given the sample's foot on the piece ([`foot`]), the walls' added width at
 /// the sample ([`RiverJob::wall_width`], metres; 0 where the world has no wall noise, which
-/// leaves every bit as it was).
+/// leaves every bit as it was) and the lake sill there ([`RiverJob::shore_sill`]; outside the
+/// channel the valley is cut no lower than the sill, and [`Sill::NONE`] leaves every bit as it
+/// was).
 #[inline(always)]
-fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Option<f32>) {
+fn profile_at_foot(
+    p: &Piece,
+    t: f32,
+    d2: f32,
+    h: f32,
+    wall: f32,
+    sill: Sill,
+) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
         return (h, None);
     }
@@ -593,6 +607,8 @@ fn profile_at_foot(p: &Piece, t: f32, d2: f32, h: f32, wall: f32) -> (f32, Optio
         if p.wet > 0.0 {
             water = Some(w);
         }
+    } else if sill.s > 0.0 {
+        c = c + (c.max(h.min(sill.level)) - c) * sill.s;
     }
     (c, water)
 }
@@ -655,12 +671,12 @@ impl RiverJob {
     /// carves ([`profile`], with the walls' added width there) of the height shaped by the lake
     /// shores ([`RiverJob::shore`]), removing at most [`CARVE_MAX_M`] of that.
     pub fn carve_one(&self, x: f32, z: f32, h: f32) -> f32 {
-        let h = self.shore(x, z, h);
+        let (h, sill) = self.shore_sill(x, z, h);
         let wall = self.wall_width(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
             let (t, d2) = foot(p, x, z);
-            c = c.min(profile_at_foot(p, t, d2, h, wall).0);
+            c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
         }
         c.max(h - CARVE_MAX_M)
     }
@@ -740,7 +756,7 @@ impl RiverJob {
     /// [`RiverJob::carve_one`] through the pruned bins of [`RiverJob::pruned`] (the same bits
     /// for every sample whose height is at most its bin's highest).
     pub fn carve_pruned(&self, pruned: &PrunedBins, x: f32, z: f32, h: f32) -> f32 {
-        let h = self.shore(x, z, h);
+        let (h, sill) = self.shore_sill(x, z, h);
         let Some(b) = self.bin_index(x, z) else {
             return h.max(h - CARVE_MAX_M);
         };
@@ -761,7 +777,7 @@ impl RiverJob {
             // distance, not its square) never finds a sample in the channel that this does not.
             let in_channel = d2 <= p.half_width * p.half_width * 1.001;
             if d2 < r2 && (in_channel || c > p.wa.min(p.wb) - SKIP_MARGIN_M) {
-                c = c.min(profile_at_foot(p, t, d2, h, wall).0);
+                c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
             }
         }
         c.max(h - CARVE_MAX_M)

@@ -38,11 +38,22 @@ impl RiverJob {
     /// first, as `carve_pruned` does).
     pub fn carve_grid(&self, xs: &[f32], zs: &[f32], heights: &mut [f32]) {
         assert_eq!(heights.len(), xs.len() * zs.len(), "a grid of heights");
-        // The lake shores first: the carve reads the heights they shape (`carve_pruned`).
+        // The lake shores first: the carve reads the heights they shape (`carve_pruned`), and
+        // with sills the lake level and sill weight of each sample (empty: none).
+        let (mut sill_level, mut sill_s) = (Vec::new(), Vec::new());
         if self.shores && !self.lakes.is_empty() {
+            if self.sills {
+                sill_level = vec![0.0f32; heights.len()];
+                sill_s = vec![0.0f32; heights.len()];
+            }
             for (j, row) in heights.chunks_mut(xs.len()).enumerate() {
                 for (i, h) in row.iter_mut().enumerate() {
-                    *h = self.shore(xs[i], zs[j], *h);
+                    let sill;
+                    (*h, sill) = self.shore_sill(xs[i], zs[j], *h);
+                    if self.sills {
+                        let v = j * xs.len() + i;
+                        (sill_level[v], sill_s[v]) = (sill.level, sill.s);
+                    }
                 }
             }
         }
@@ -100,12 +111,16 @@ impl RiverJob {
             let entries = &pruned.entries[pruned.start[b] as usize..pruned.start[b + 1] as usize];
             for group in order[first[b] as usize..first[b + 1] as usize].chunks(LANES) {
                 let (mut x, mut z, mut h) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+                let (mut sl, mut ss) = ([0.0; LANES], [0.0; LANES]);
                 for (l, &v) in group.iter().enumerate() {
                     let v = v as usize;
                     (x[l], z[l]) = (xs[v % xs.len()], zs[v / xs.len()]);
                     h[l] = heights[v];
+                    if !sill_s.is_empty() {
+                        (sl[l], ss[l]) = (sill_level[v], sill_s[v]);
+                    }
                 }
-                let c = self.carve_lanes(entries, &x, &z, &h);
+                let c = self.carve_lanes(entries, &x, &z, &h, (&sl, &ss));
                 for (l, &v) in group.iter().enumerate() {
                     heights[v as usize] = c[l];
                 }
@@ -133,9 +148,11 @@ impl RiverJob {
     }
 
     /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
-    /// `entries`: the lowest of the pieces' profiles, each applied where the scalar code applies
-    /// it, at most [`CARVE_MAX_M`] below the height.
-    fn carve_lanes(&self, entries: &[(u32, f32)], x: &L, z: &L, h: &L) -> L {
+    /// `entries`, with the sills' levels and weights `sill` (weight 0: none): the lowest of the
+    /// pieces' profiles, each applied where the scalar code applies it, at most
+    /// [`CARVE_MAX_M`] below the height.
+    fn carve_lanes(&self, entries: &[(u32, f32)], x: &L, z: &L, h: &L, sill: (&L, &L)) -> L {
+        let (sill_level, sill_s) = sill;
         let wall = self.wall_lanes(x, z);
         let mut c = *h;
         for &(i, r2) in entries {
@@ -163,8 +180,11 @@ impl RiverJob {
                     hl
                 };
                 let r = d / p.half_width;
+                let silled = walled + (walled.max(hl.min(sill_level[l])) - walled) * sill_s[l];
                 let cut = if d < p.half_width {
                     walled.min(w - p.depth * (1.0 - r * r))
+                } else if sill_s[l] > 0.0 {
+                    silled
                 } else {
                     walled
                 };

@@ -24,15 +24,18 @@
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
 //!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
-//!    with `lakes: 3` (asked for by name) a node below the level whose steepest descent
+//!    with `lakes` 3 and 4 (asked for by name) a node below the level whose steepest descent
 //!    runs back into the lake, or into a pit no lower than the lake's, is flooded too (on flat
 //!    land two neighbouring pits are each other's first node below the level), and a lake
 //!    whose flood found an outlet spills there when the flow from the outlet reaches the sea,
 //!    or first a lake whose `(level, index)` is lower (so levels never rise along a chain of
 //!    spills and the flow has no cycle): its pit drains to the outlet, the discharge goes on,
 //!    the water level through the lake is its level, and the carve cuts the rim down to it
-//!    along the spill's edge. In worlds with `lakes` 2 and 3 the ground is shaped to meet each
-//!    lake's level along a curved shore ([`shores`]) before the carve; with `lakes: 1` a sample
+//!    along the spill's edge. In worlds with `lakes` 2 to 4 the ground is shaped to meet each
+//!    lake's level along a curved shore ([`shores`]) before the carve, and with `lakes: 4` the
+//!    carve keeps a sill there: it cuts no floodplain or valley wall below the lake's level on
+//!    the land beside the water (the river that leaves a spilling lake, and those that join it
+//!    near the outlet, run lower than the lake); with `lakes: 1` a sample
 //!    is lake water where one of the four nodes around it holds a lake above its height, so the
 //!    water can end along straight lines between dry nodes.
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
@@ -96,9 +99,9 @@ pub use carve::{
 pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
 pub use shores::{
-    LakeField, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
+    LakeField, Sill, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
     SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_STEEP_M, SHORE_WARP,
-    SHORE_WARP_WAVE,
+    SHORE_WARP_WAVE, SILL_E, SILL_FULL,
 };
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};

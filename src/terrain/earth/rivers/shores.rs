@@ -1,6 +1,6 @@
-//! Lake shores of `lakes: 2` worlds: the terrain shaped to meet each lake's level along a
-//! curved shoreline, so a lake's water ends where its ground rises, never along a line of the
-//! node lattice.
+//! Lake shores of worlds with `lakes` 2 and later: the terrain shaped to meet each lake's level
+//! along a curved shoreline, so a lake's water ends where its ground rises, never along a line
+//! of the node lattice.
 //!
 //! The first lakes (`lakes: 1`, worlds stored before shores existed) flood a sample when one of
 //! the four nodes around it holds a lake above its height ([`RiverJob::lake_level`]); where the
@@ -27,6 +27,17 @@
 //!    it is at most [`SHORE_MAX_M`] either way, the LOD bound of the LODs that skip it.
 //! 4. **Water.** A sample is lake water where `e < 0` and its carved height is below `L`
 //!    ([`RiverJob::shore_level`]).
+//! 5. **Sill** (`lakes: 4`). The shores raise the land beside a lake above `L`, but the carve
+//!    runs after them, and the floodplains and walls of rivers whose water is lower than the
+//!    lake (the river that leaves a spilling lake, and those that join it near the outlet) cut
+//!    that land below `L` right beside the water: dry ground below the lake's level, which a
+//!    lake would flood, along a straight edge where the shore ends. So outside its channel a
+//!    piece cuts the land no lower than `min(h, L)` (`h` the shaped height), blended in with
+//!    `s = smoothstep(0, SILL_FULL, I) · smoothstep(−SILL_E, 0, e)` ([`Sill`]): in full on the
+//!    land side of the shore wherever the lake weight is at least [`SILL_FULL`], fading to
+//!    nothing where it reaches 0 (so the heights stay continuous across cells) and within
+//!    [`SILL_E`] inside the shore (where the ground it leaves below `L` is lake water). The
+//!    channels keep their cut, so the river that leaves the lake runs wet through its sill.
 //!
 //! The shores apply to the heights before the river carve (valleys of rivers flowing into the
 //! lake cut through the raised land to their water levels, which are no lower than the lake's).
@@ -57,6 +68,31 @@ pub const SHORE_STEEP_M: f32 = 240.0;
 pub const SHORE_FULL: f32 = 0.25;
 /// Largest change of a height by the shores, metres.
 pub const SHORE_MAX_M: f32 = 200.0;
+
+/// Lake weight from which the sill under the land beside a lake applies in full (step 5):
+/// about 130 m from the edge where the weight vanishes at the default 1 km node spacing, wider
+/// than a LOD-6 sample so no step of a 4-neighbour flood passes it. A power of two, as is
+/// [`SILL_E`]: the smoothsteps divide by them, and lavapipe's division, which the WGSL twin
+/// corrects to the rounded quotient from an estimate a few ULP off, was 4 ULP off after the
+/// correction for a quotient by 0.05 (exact by a power of two).
+pub const SILL_FULL: f32 = 0.125;
+/// Depth inside the shore, in units of `e`, over which the sill fades out (step 5).
+pub const SILL_E: f32 = 0.0625;
+
+/// The sill the carve keeps under a sample ([`RiverJob::shore_sill`], step 5 of the module
+/// docs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sill {
+    /// The lake level `L`, metres.
+    pub level: f32,
+    /// Its weight `s` in [0, 1]; 0: no sill.
+    pub s: f32,
+}
+
+impl Sill {
+    /// No sill: the carve as without one, bit for bit.
+    pub const NONE: Sill = Sill { level: 0.0, s: 0.0 };
+}
 
 /// Largest displacement of the point at which the lake field is read, in node spacings
 /// (`SHORE_WARP·1.5`, below one so the field reads only the job's window): a warp of wavelength
@@ -161,11 +197,26 @@ impl RiverJob {
     /// itself, bit for bit, where no lake is near or the world has the first lakes.
     #[inline]
     pub fn shore(&self, x: f32, z: f32, h: f32) -> f32 {
+        self.shore_sill(x, z, h).0
+    }
+
+    /// [`RiverJob::shore`] and the sill the carve keeps under the sample (step 5 of the module
+    /// docs; [`Sill::NONE`] without one or before `lakes: 4`).
+    #[inline]
+    pub fn shore_sill(&self, x: f32, z: f32, h: f32) -> (f32, Sill) {
         if !self.shores {
-            return h;
+            return (h, Sill::NONE);
         }
         let Some(f) = self.lake_field(x, z) else {
-            return h;
+            return (h, Sill::NONE);
+        };
+        let sill = if self.sills {
+            Sill {
+                level: f.level,
+                s: smoothstep(0.0, SILL_FULL, f.weight) * smoothstep(-SILL_E, 0.0, f.e),
+            }
+        } else {
+            Sill::NONE
         };
         let (gentle, steep) = (SHORE_GENTLE_M * f.e, SHORE_STEEP_M * f.e);
         let (lo, hi) = if f.e > 0.0 {
@@ -178,14 +229,14 @@ impl RiverJob {
         } else if h > hi {
             hi
         } else {
-            return h;
+            return (h, sill);
         };
         let g = smoothstep(0.0, SHORE_FULL, f.weight);
         let change = ((target - h) * g).clamp(-SHORE_MAX_M, SHORE_MAX_M);
-        h + change
+        (h + change, sill)
     }
 
-    /// The lake level over a sample at `(x, z)` of a `lakes: 2` world: the lake field's level
+    /// The lake level over a sample at `(x, z)` of a world with shaped shores: the lake field's level
     /// inside its shore (`e < 0`).
     pub fn shore_level(&self, x: f32, z: f32) -> Option<f32> {
         self.lake_field(x, z).filter(|f| f.e < 0.0).map(|f| f.level)
