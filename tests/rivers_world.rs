@@ -113,10 +113,31 @@ async fn a_world_stored_with_the_fourth_valleys_serves_the_same_tile_bytes() {
     assert_eq!(rivers["lakes"], 2, "{rivers}");
 }
 
+/// A world stored with spilling lakes (`lakes: 3`, `tests/fixtures/lakes3-world/`) keeps its
+/// bytes, at the outlet of a lake too, where new worlds (`lakes: 4`) keep a sill.
+#[tokio::test]
+async fn a_world_stored_with_the_third_lakes_serves_the_same_tile_bytes() {
+    const WORLD: &str = "5a5a562e2374e4b29e09148a";
+    const FIXTURE: &str = "lakes3-world";
+    let (_data, server) = common::fixture::serve(FIXTURE);
+    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
+        let query = if format == "2" { "&format=2" } else { "" };
+        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=2{query}")
+    })
+    .await;
+    assert_eq!(checked, 44, "every fixture tile was checked");
+    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/2")).await;
+    assert_eq!(status, 200);
+    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
+    let rivers = &doc["scene"]["world"]["earth"]["rivers"];
+    assert_eq!(rivers["lakes"], 3, "{rivers}");
+}
+
 #[test]
 fn new_scenes_carve_the_third_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
     assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 3);
+    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
     let mut fourth = scene.clone();
     fourth["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(4);
     strata::scene::Scene::from_value(&fourth).expect("valleys 4 is accepted");

@@ -111,13 +111,13 @@ pub struct RiverParams {
     /// The lakes, 1 to 4 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
     /// the four nodes around it holds a lake above its height, so a lake's water can end along
     /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
-    /// keep it, and their bytes. `2` (new worlds): the ground is shaped to meet the lake's level
+    /// keep it, and their bytes. `2`: the ground is shaped to meet the lake's level
     /// along a curved shore ([`super::rivers`]' shores), where the water ends. `3` (asked for by
     /// name): the lakes of `2`, and a lake whose flood found an outlet spills there, so its
     /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
     /// lake's level instead of ending in a basin closed by the finer relief; but the valleys of
     /// the rivers below the outlet are cut below the lake's level right beside its water. `4`
-    /// (asked for by name): the lakes of `3` held by a sill, where the carve cuts no floodplain
+    /// (new worlds): the lakes of `3` held by a sill, where the carve cuts no floodplain
     /// or valley wall below the lake's level beside its water (the shores' step 5).
     #[serde(
         default = "RiverParams::first_lakes",
@@ -134,7 +134,7 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 3,
-            lakes: 2,
+            lakes: 4,
         }
     }
 }

@@ -24,7 +24,7 @@
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
 //!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
-//!    with `lakes` 3 and 4 (asked for by name) a node below the level whose steepest descent
+//!    with `lakes` 3 and 4 (4: the default of new worlds) a node below the level whose steepest descent
 //!    runs back into the lake, or into a pit no lower than the lake's, is flooded too (on flat
 //!    land two neighbouring pits are each other's first node below the level), and a lake
 //!    whose flood found an outlet spills there when the flow from the outlet reaches the sea,
