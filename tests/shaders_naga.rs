@@ -359,7 +359,8 @@ fn river_carve_structs_match_the_wgsl_layout() {
             shore_seed2,
             shore_seed3,
             shore_warp_m,
-            shore_warp_inv_m
+            shore_warp_inv_m,
+            sills
         ]
     );
     check_layout!(
