@@ -35,7 +35,8 @@ use super::face::{Face, FaceSet};
 use super::image::mip_level;
 use super::material::{MaterialSet, Texture};
 use super::noise::{
-    exp2i, fbm2_in, fbm3_in, octave_count, Cell2, Cell3, MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
+    exp2i, fbm2_in, fbm2_lanes, fbm3_in, fbm3_lanes, octave_count, Cell2, Cell3, Lanes, LANES,
+    MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
 };
 use super::pages::Pages;
 use rayon::prelude::*;
@@ -86,11 +87,25 @@ pub(crate) fn bake_rows(
                     return;
                 }
                 let (f, j) = (chosen[k], (y - 1) as u32);
-                for i in 0..r {
-                    let t = texel_in(set, mats, f, res, constants[k], i as u32, j, cache);
+                let mut put = |i: usize, t: &Texel| {
                     alb[i + 1] = t.albedo;
                     nrm[i + 1] = t.normal;
                     disp[i + 1] = t.displacement;
+                };
+                let mut i = 0;
+                while i + LANES <= r {
+                    let ij = std::array::from_fn(|l| ((i + l) as u32, j));
+                    let texels = texels_lanes(set, mats, f, res, constants[k], ij, cache);
+                    for (l, t) in texels.iter().enumerate() {
+                        put(i + l, t);
+                    }
+                    i += LANES;
+                }
+                for i in i..r {
+                    put(
+                        i,
+                        &texel_in(set, mats, f, res, constants[k], i as u32, j, cache),
+                    );
                 }
             },
         );
@@ -109,6 +124,8 @@ pub struct NoiseCache {
     /// `[point][material][plane][octave]`.
     d2: Vec<Cell2>,
     materials: usize,
+    /// The patterns of the lanes of [`texels_lanes`], `[material][point][plane]`.
+    lanes: Vec<[[Lanes; 3]; 3]>,
 }
 
 impl NoiseCache {
@@ -128,6 +145,7 @@ impl NoiseCache {
             stride,
             d2: vec![Cell2::EMPTY; 3 * materials * 3 * stride],
             materials,
+            lanes: vec![[[[0.0; LANES]; 3]; 3]; materials],
         }
     }
 
@@ -359,34 +377,53 @@ fn displacement(
         count,
         mats.noise_seed,
     );
-    let mut d = pt.amp * noise;
-    for (m, kept) in patterns.iter_mut().enumerate().take(pt.count) {
-        let id = pt.ids[m];
-        let relief = mats.materials[id].relief_m;
-        let from_pattern = !matches!(
-            mats.materials[id].texture,
-            Some(Texture {
-                height: Some(_),
-                ..
-            })
+    relief_sum(mats, pt, noise, wg, |m, id, axis| {
+        let t = relief_t(
+            mats,
+            id,
+            anchor,
+            q,
+            axis,
+            kmax,
+            cache.pattern(point, id, axis),
         );
+        if point == 0 && relief_from_pattern(mats, id) {
+            patterns[m][axis] = Some(t);
+        }
+        t
+    })
+}
+
+/// Whether material `id`'s relief is its pattern (not a height image).
+fn relief_from_pattern(mats: &MaterialSet, id: usize) -> bool {
+    !matches!(
+        mats.materials[id].texture,
+        Some(Texture {
+            height: Some(_),
+            ..
+        })
+    )
+}
+
+/// `D = a·noise + Σₘ bₘ·(reliefₘ·Σ_axis w_axis·(t − ½))` with `relief(m, id, axis)` the relief
+/// `t` of material slot `m` (material `id`) on plane `axis`.
+fn relief_sum(
+    mats: &MaterialSet,
+    pt: &Point,
+    noise: f32,
+    wg: [f32; 3],
+    mut relief: impl FnMut(usize, usize, usize) -> f32,
+) -> f32 {
+    let mut d = pt.amp * noise;
+    for m in 0..pt.count {
+        let id = pt.ids[m];
+        let relief_m = mats.materials[id].relief_m;
         let mut r = 0.0f32;
         for (axis, w) in wg.iter().enumerate() {
-            let t = relief_t(
-                mats,
-                id,
-                anchor,
-                q,
-                axis,
-                kmax,
-                cache.pattern(point, id, axis),
-            );
-            if point == 0 && from_pattern {
-                kept[axis] = Some(t);
-            }
+            let t = relief(m, id, axis);
             r += w * (t - 0.5);
         }
-        d += pt.weights[m] * (relief * r);
+        d += pt.weights[m] * (relief_m * r);
     }
     d
 }
@@ -414,20 +451,25 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
     )
 }
 
-/// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
-/// bytes.
-#[allow(clippy::too_many_arguments)]
-pub fn texel_in(
+/// A texel's interpolated inputs, tangent frame, geometric tri-planar weights and the points
+/// `p`, `p + δt₁`, `p + δt₂` its displacement is read at.
+struct Frame {
+    pt: Point,
+    t1: [f32; 3],
+    t2: [f32; 3],
+    wg: [f32; 3],
+    q: [[f32; 3]; 3],
+}
+
+/// The [`Frame`] of texel `(i, j)` of `face` at `res` with the step `step`.
+fn frame(
     set: &FaceSet,
     mats: &MaterialSet,
-    f: usize,
+    face: &Face,
     res: u32,
-    (kmax, step): (i32, f32),
-    i: u32,
-    j: u32,
-    cache: &mut NoiseCache,
-) -> Texel {
-    let face = &set.faces[f];
+    step: f32,
+    (i, j): (u32, u32),
+) -> Frame {
     let r = res as f32;
     let (u, v) = ((i as f32 + 0.5) / r, (j as f32 + 0.5) / r);
     let pt = interpolate(set, mats, face, u, v);
@@ -440,13 +482,24 @@ pub fn texel_in(
     let t1 = normalize_or(cross(helper, n), [1.0, 0.0, 0.0]);
     let t2 = cross(n, t1);
     let wg = triplanar(n);
-    let a = face.anchor;
     let at = |t: [f32; 3]| -> [f32; 3] { std::array::from_fn(|c| pt.p[c] + step * t[c]) };
-    let mut patterns = [[None; 3]; 4];
-    let mut unused = [[None; 3]; 4];
-    let d0 = displacement(mats, &pt, a, pt.p, wg, kmax, 0, cache, &mut patterns);
-    let d1 = displacement(mats, &pt, a, at(t1), wg, kmax, 1, cache, &mut unused);
-    let d2 = displacement(mats, &pt, a, at(t2), wg, kmax, 2, cache, &mut unused);
+    let q = [pt.p, at(t1), at(t2)];
+    Frame { pt, t1, t2, wg, q }
+}
+
+/// Steps 4 to 7 of a texel: the displaced normal from the displacements `d` at the frame's
+/// three points, the tri-planar blend (`at_p(m, id, axis)`: the pattern `t` of material slot `m`,
+/// material `id`, on plane `axis` at `p`), the decals and the quantisation.
+fn finish(
+    mats: &MaterialSet,
+    a: [i32; 3],
+    (kmax, step): (i32, f32),
+    fr: &Frame,
+    [d0, d1, d2]: [f32; 3],
+    mut at_p: impl FnMut(usize, usize, usize) -> f32,
+) -> Texel {
+    let pt = &fr.pt;
+    let (n, t1, t2) = (pt.n, fr.t1, fr.t2);
     let inv = 1.0 / step;
     let (g1, g2) = ((d1 - d0) * inv, (d2 - d0) * inv);
     let nd = normalize_or(std::array::from_fn(|c| n[c] - g1 * t1[c] - g2 * t2[c]), n);
@@ -454,17 +507,13 @@ pub fn texel_in(
     let mut albedo = [0.0f32; 3];
     let mut rough = 0.0f32;
     let mut dominant = 0usize;
-    for (m, kept) in patterns.iter().enumerate().take(pt.count) {
+    for m in 0..pt.count {
         let id = pt.ids[m];
         let mat = &mats.materials[id];
         for (axis, w) in wd.iter().enumerate() {
             let k = pt.weights[m] * w;
-            let mut at_p = || match kept[axis] {
-                Some(t) => t,
-                None => pattern(mats, id, a, pt.p, axis, kmax, cache.pattern(0, id, axis)),
-            };
             let Some(tex) = mat.texture else {
-                let t = at_p();
+                let t = at_p(m, id, axis);
                 for (c, a) in albedo.iter_mut().enumerate() {
                     *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
                 }
@@ -477,7 +526,7 @@ pub fn texel_in(
             }
             let t = match tex.roughness {
                 Some(r) => image_sample(mats, r, tex.repeat_log2, pt.p, axis, kmax)[0],
-                None => at_p(),
+                None => at_p(m, id, axis),
             };
             rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
         }
@@ -510,6 +559,152 @@ pub fn texel_in(
         ],
         displacement: d0,
     }
+}
+
+/// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
+/// bytes.
+#[allow(clippy::too_many_arguments)]
+pub fn texel_in(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    constants: (i32, f32),
+    i: u32,
+    j: u32,
+    cache: &mut NoiseCache,
+) -> Texel {
+    let (kmax, step) = constants;
+    let face = &set.faces[f];
+    let fr = frame(set, mats, face, res, step, (i, j));
+    let a = face.anchor;
+    let mut patterns = [[None; 3]; 4];
+    let mut unused = [[None; 3]; 4];
+    let (pt, wg) = (&fr.pt, fr.wg);
+    let d0 = displacement(mats, pt, a, fr.q[0], wg, kmax, 0, cache, &mut patterns);
+    let d1 = displacement(mats, pt, a, fr.q[1], wg, kmax, 1, cache, &mut unused);
+    let d2 = displacement(mats, pt, a, fr.q[2], wg, kmax, 2, cache, &mut unused);
+    finish(
+        mats,
+        a,
+        constants,
+        &fr,
+        [d0, d1, d2],
+        |m, id, axis| match patterns[m][axis] {
+            Some(t) => t,
+            None => pattern(mats, id, a, pt.p, axis, kmax, cache.pattern(0, id, axis)),
+        },
+    )
+}
+
+/// [`texel_in`] at [`LANES`] texels `ij` of face `f` side by side: the same bytes, texel by
+/// texel. Each texel's inputs, frame and blend are [`texel_in`]'s own code; the noise sums (the
+/// displacement noise at the three points of every lane, and the pattern of each material any
+/// lane holds, on each plane, at the points that read it) are taken for all lanes at once with
+/// [`fbm3_lanes`] and [`fbm2_lanes`], which keep each lane's operations and their order.
+pub(crate) fn texels_lanes(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    constants: (i32, f32),
+    ij: [(u32, u32); LANES],
+    cache: &mut NoiseCache,
+) -> [Texel; LANES] {
+    let (kmax, step) = constants;
+    let face = &set.faces[f];
+    let a = face.anchor;
+    let frames: [Frame; LANES] = std::array::from_fn(|l| frame(set, mats, face, res, step, ij[l]));
+    // The materials the lanes hold, as bits (a set past 64 materials goes one texel at a time).
+    let mut present = 0u64;
+    for fr in &frames {
+        for &id in &fr.pt.ids[..fr.pt.count] {
+            if id >= 64 {
+                return ij.map(|(i, j)| texel_in(set, mats, f, res, constants, i, j, cache));
+            }
+            present |= 1u64 << id;
+        }
+    }
+    let q: [[Lanes; 3]; 3] = std::array::from_fn(|point| {
+        std::array::from_fn(|c| std::array::from_fn(|l| frames[l].q[point][c]))
+    });
+    let count = octave_count(mats.noise_freq_log2, mats.noise_octaves, kmax);
+    let noise: [Lanes; 3] = std::array::from_fn(|point| {
+        fbm3_lanes(
+            &mut cache.d3[point],
+            a,
+            &q[point],
+            mats.noise_freq_log2,
+            count,
+            mats.noise_seed,
+        )
+    });
+    if cache.lanes.len() < mats.materials.len() {
+        cache
+            .lanes
+            .resize(mats.materials.len(), [[[0.0; LANES]; 3]; 3]);
+    }
+    let mut bits = present;
+    while bits != 0 {
+        let id = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        let from_pattern = relief_from_pattern(mats, id);
+        let albedo_pattern = mats.materials[id]
+            .texture
+            .is_none_or(|t| t.roughness.is_none());
+        let points = if from_pattern {
+            3
+        } else {
+            usize::from(albedo_pattern)
+        };
+        for (point, q) in q.iter().enumerate().take(points) {
+            for axis in 0..3 {
+                let t = pattern_lanes(mats, id, a, q, axis, kmax, cache.pattern(point, id, axis));
+                cache.lanes[id][point][axis] = t;
+            }
+        }
+    }
+    let kept = &cache.lanes;
+    std::array::from_fn(|l| {
+        let fr = &frames[l];
+        let d: [f32; 3] = std::array::from_fn(|point| {
+            relief_sum(mats, &fr.pt, noise[point][l], fr.wg, |_, id, axis| {
+                if relief_from_pattern(mats, id) {
+                    kept[id][point][axis][l]
+                } else {
+                    relief_t(mats, id, a, fr.q[point], axis, kmax, &mut [])
+                }
+            })
+        });
+        finish(mats, a, constants, fr, d, |_, id, axis| {
+            kept[id][0][axis][l]
+        })
+    })
+}
+
+/// [`pattern`] at [`LANES`] points `q` (`[axis][lane]`).
+fn pattern_lanes(
+    mats: &MaterialSet,
+    m: usize,
+    anchor: [i32; 3],
+    q: &[Lanes; 3],
+    axis: usize,
+    kmax: i32,
+    cells: &mut [Cell2],
+) -> Lanes {
+    let mat = &mats.materials[m];
+    let count = octave_count(mat.freq_log2, mat.octaves, kmax);
+    let seed = mats.seeds[m].wrapping_add(256 * axis as u32);
+    let [u, v] = plane([&q[0], &q[1], &q[2]], axis);
+    let v = fbm2_lanes(
+        cells,
+        plane(anchor, axis),
+        [u, v],
+        mat.freq_log2,
+        count,
+        seed,
+    );
+    v.map(|v| (0.5 + 0.5 * v).clamp(0.0, 1.0))
 }
 
 #[cfg(test)]
@@ -586,5 +781,91 @@ mod tests {
             "256 chosen ccbe524274f279a3",
         ];
         assert_eq!(got, want);
+    }
+
+    #[test]
+    fn lanes_give_each_texel_the_bytes_of_texel() {
+        // Image materials (albedo only; albedo and height; every image) and a decal beside the
+        // procedural ones, lanes along rows, down columns and scattered over the face.
+        use crate::ptex::decal::Decal;
+        use crate::ptex::image::Image;
+        use std::sync::Arc;
+        let plan = WorldPlan::new(3, WorldParams::default()).expect("plan");
+        let mut mats = MaterialSet::default_ground(plan.seed);
+        let image = |seed: u32| {
+            let texels = (0..64u32)
+                .map(|i| {
+                    let h = crate::terrain::hash::mix32(i ^ seed);
+                    h.to_le_bytes()
+                })
+                .collect();
+            Arc::new(Image::new(8, 8, texels))
+        };
+        mats.images = (0..4).map(image).collect();
+        let texture = |albedo, roughness, height| {
+            Some(Texture {
+                albedo,
+                roughness,
+                height,
+                repeat_log2: 1,
+            })
+        };
+        for (id, tex) in [
+            (1, texture(0, None, None)),
+            (2, texture(1, None, Some(2))),
+            (4, texture(3, Some(0), Some(1))),
+        ] {
+            mats.materials[id].texture = tex;
+        }
+        let key = TileKey {
+            lod: 0,
+            x: -13,
+            z: -2,
+        };
+        let set = crate::ptex::face::test_face_set(&plan, key, &mats);
+        let centre = set.samples[set.faces[5].first as usize].position;
+        let a = set.faces[5].anchor;
+        mats.decals.push(Decal {
+            anchor: [a[0], a[2]],
+            offset: [centre[0], centre[2]],
+            inv_size: [1.0 / 30.0, 1.0 / 20.0],
+            cos: 0.8,
+            sin: 0.6,
+            opacity: 0.7,
+            roughness: Some(0.2),
+            image: 2,
+            mask: None,
+            density_log2: 0,
+            mask_density_log2: 0,
+        });
+        let mut cache = NoiseCache::new(&mats);
+        for res in [8u32, 16, 64] {
+            for f in [0usize, 5, 10, 15, 17] {
+                let constants = face_constants(&set.faces[f], res);
+                let r = res as usize;
+                let groups: Vec<[(u32, u32); LANES]> = (0..r * r / LANES)
+                    .flat_map(|g| {
+                        let row = std::array::from_fn(|l| ((g * LANES + l) % r, g * LANES / r));
+                        let column = row.map(|(i, j)| (j, i));
+                        let scattered = row.map(|(i, j)| ((i * 5 + j) % r, (j * 3 + i * 7) % r));
+                        [row, column, scattered]
+                    })
+                    .map(|g| g.map(|(i, j)| (i as u32, j as u32)))
+                    .collect();
+                for ij in groups {
+                    let got = texels_lanes(&set, &mats, f, res, constants, ij, &mut cache);
+                    for (l, &(i, j)) in ij.iter().enumerate() {
+                        let want = texel(&set, &mats, f, res, i, j);
+                        assert_eq!(got[l].albedo, want.albedo, "{res} face {f} ({i}, {j})");
+                        assert_eq!(got[l].normal, want.normal, "{res} face {f} ({i}, {j})");
+                        assert_eq!(
+                            got[l].displacement.to_bits(),
+                            want.displacement.to_bits(),
+                            "{res} face {f} ({i}, {j})"
+                        );
+                    }
+                }
+            }
+        }
     }
 }
