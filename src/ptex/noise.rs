@@ -256,10 +256,25 @@ pub type Lanes = [f32; LANES];
 /// [`cell`] in every lane.
 #[inline(always)]
 fn cell_lanes(base: i32, x: &Lanes) -> ([i32; LANES], Lanes) {
-    let mut i = [0i32; LANES];
+    let mut fl = [0.0f32; LANES];
     let mut f = [0.0f32; LANES];
+    let mut within = true;
     for l in 0..LANES {
-        (i[l], f[l]) = cell(base, x[l]);
+        fl[l] = x[l].floor();
+        f[l] = x[l] - fl[l];
+        within &= (-2_147_483_648.0..2_147_483_648.0).contains(&fl[l]);
+    }
+    let mut i = [0i32; LANES];
+    if within {
+        for l in 0..LANES {
+            // SAFETY: `fl[l]` is an integer in the range of `i32` (checked above; NaN is not),
+            // so the conversion is exact and equals `fl[l] as i32`.
+            i[l] = base.wrapping_add(unsafe { fl[l].to_int_unchecked::<i32>() });
+        }
+    } else {
+        for l in 0..LANES {
+            i[l] = base.wrapping_add(fl[l] as i32);
+        }
     }
     (i, f)
 }
