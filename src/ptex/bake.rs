@@ -28,6 +28,13 @@
 //!
 //! Every input is an `f32` function of the face; no state, no order dependence: the same face
 //! gives the same bytes in any set, on any thread.
+//!
+//! The bake takes a row's texels (and the texels a border reads from a neighbour) [`LANES`] at
+//! a time (`texels_lanes`): each lane goes through [`texel`]'s `f32` operations in the same
+//! order (Rust neither contracts nor reorders them), so the grouping changes no bit, and the
+//! compiler runs the lanes side by side in vector registers. A lattice cell every lane lies in
+//! is hashed once (and kept per octave for the next lanes); a group holding an image material
+//! takes its relief and blend texel by texel.
 
 use super::border::fill_borders;
 use super::decal::apply as apply_decals;
@@ -87,25 +94,16 @@ pub(crate) fn bake_rows(
                     return;
                 }
                 let (f, j) = (chosen[k], (y - 1) as u32);
-                let mut put = |i: usize, t: &Texel| {
-                    alb[i + 1] = t.albedo;
-                    nrm[i + 1] = t.normal;
-                    disp[i + 1] = t.displacement;
-                };
-                let mut i = 0;
-                while i + LANES <= r {
-                    let ij = std::array::from_fn(|l| ((i + l) as u32, j));
+                // The row in runs of [`LANES`] texels, a short last run repeating its last
+                // texel in the spare lanes.
+                for i in (0..r).step_by(LANES) {
+                    let ij = std::array::from_fn(|l| ((i + l).min(r - 1) as u32, j));
                     let texels = texels_lanes(set, mats, f, res, constants[k], ij, cache);
-                    for (l, t) in texels.iter().enumerate() {
-                        put(i + l, t);
+                    for (l, t) in texels.iter().enumerate().take(r - i) {
+                        alb[i + l + 1] = t.albedo;
+                        nrm[i + l + 1] = t.normal;
+                        disp[i + l + 1] = t.displacement;
                     }
-                    i += LANES;
-                }
-                for i in i..r {
-                    put(
-                        i,
-                        &texel_in(set, mats, f, res, constants[k], i as u32, j, cache),
-                    );
                 }
             },
         );
@@ -936,6 +934,36 @@ pub(crate) fn texels_lanes(
             }
         }
     }
+    if !mats.decals.is_empty() {
+        for l in 0..LANES {
+            let mut alb = [albedo[0][l], albedo[1][l], albedo[2][l]];
+            let p = [fr.p[0][l], fr.p[1][l], fr.p[2][l]];
+            apply_decals(
+                &mats.decals,
+                &mats.images,
+                a,
+                p,
+                kmax,
+                &mut alb,
+                &mut rough[l],
+            );
+            for (c, x) in alb.into_iter().enumerate() {
+                albedo[c][l] = x;
+            }
+        }
+    }
+    // The quantisation, lane by lane.
+    let mut bytes = [[0u8; LANES]; 7];
+    for (b, x) in bytes.iter_mut().zip(albedo.iter().chain([&rough])) {
+        for l in 0..LANES {
+            b[l] = unorm8(x[l]);
+        }
+    }
+    for (b, x) in bytes[4..].iter_mut().zip(&nd) {
+        for l in 0..LANES {
+            b[l] = snorm8(x[l]);
+        }
+    }
     std::array::from_fn(|l| {
         let mut dominant = 0usize;
         for m in 0..fr.count[l] {
@@ -944,18 +972,12 @@ pub(crate) fn texels_lanes(
                 dominant = m;
             }
         }
-        let mut alb = [albedo[0][l], albedo[1][l], albedo[2][l]];
-        let mut rgh = rough[l];
-        if !mats.decals.is_empty() {
-            let p = [fr.p[0][l], fr.p[1][l], fr.p[2][l]];
-            apply_decals(&mats.decals, &mats.images, a, p, kmax, &mut alb, &mut rgh);
-        }
         Texel {
-            albedo: [unorm8(alb[0]), unorm8(alb[1]), unorm8(alb[2]), unorm8(rgh)],
+            albedo: [bytes[0][l], bytes[1][l], bytes[2][l], bytes[3][l]],
             normal: [
-                snorm8(nd[0][l]),
-                snorm8(nd[1][l]),
-                snorm8(nd[2][l]),
+                bytes[4][l],
+                bytes[5][l],
+                bytes[6][l],
                 fr.ids[dominant][l] as u8,
             ],
             displacement: d[0][l],

@@ -10,6 +10,9 @@
 //! `f32`. So the lattice cell and the fraction inside it are the same bits on every device, and
 //! the WGSL twin (`shaders/ptex.wgsl`) differs from this reference only in the rounding of the
 //! interpolation arithmetic.
+//!
+//! [`fbm3_lanes`] and [`fbm2_lanes`] take [`LANES`] points side by side (the bake's texels of a
+//! row): each lane's bits are those of [`fbm3`] and [`fbm2`] at its point.
 
 use crate::terrain::hash::{mix32, PRIME_X, PRIME_Z};
 
