@@ -891,8 +891,8 @@ pub(crate) fn texels_lanes(
         for (d, t) in d.iter_mut().zip(t) {
             for l in 0..LANES {
                 let mut r = 0.0f32;
-                for axis in 0..3 {
-                    r += fr.wg[axis][l] * (t[axis][l] - 0.5);
+                for (w, t) in fr.wg.iter().zip(t) {
+                    r += w[l] * (t[l] - 0.5);
                 }
                 d[l] = if m < fr.count[l] {
                     d[l] + fr.weights[m][l] * (relief[l] * r)
@@ -907,8 +907,8 @@ pub(crate) fn texels_lanes(
     let mut raw = [[0.0f32; LANES]; 3];
     for l in 0..LANES {
         let (g1, g2) = ((d[1][l] - d[0][l]) * inv, (d[2][l] - d[0][l]) * inv);
-        for c in 0..3 {
-            raw[c][l] = fr.n[c][l] - g1 * fr.t1[c][l] - g2 * fr.t2[c][l];
+        for (c, raw) in raw.iter_mut().enumerate() {
+            raw[l] = fr.n[c][l] - g1 * fr.t1[c][l] - g2 * fr.t2[c][l];
         }
     }
     let nd = normalize_or_lanes(&raw, &fr.n);
