@@ -28,6 +28,13 @@
 //!
 //! Every input is an `f32` function of the face; no state, no order dependence: the same face
 //! gives the same bytes in any set, on any thread.
+//!
+//! The bake takes a row's texels (and the texels a border reads from a neighbour) [`LANES`] at
+//! a time (`texels_lanes`): each lane goes through [`texel`]'s `f32` operations in the same
+//! order (Rust neither contracts nor reorders them), so the grouping changes no bit, and the
+//! compiler runs the lanes side by side in vector registers. A lattice cell every lane lies in
+//! is hashed once (and kept per octave for the next lanes); a group holding an image material
+//! takes its relief and blend texel by texel.
 
 use super::border::fill_borders;
 use super::decal::apply as apply_decals;
@@ -35,7 +42,8 @@ use super::face::{Face, FaceSet};
 use super::image::mip_level;
 use super::material::{MaterialSet, Texture};
 use super::noise::{
-    exp2i, fbm2_in, fbm3_in, octave_count, Cell2, Cell3, MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
+    exp2i, fbm2_in, fbm2_lanes, fbm3_in, fbm3_lanes, octave_count, Cell2, Cell3, Lanes, LANES,
+    MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
 };
 use super::pages::Pages;
 use rayon::prelude::*;
@@ -86,11 +94,16 @@ pub(crate) fn bake_rows(
                     return;
                 }
                 let (f, j) = (chosen[k], (y - 1) as u32);
-                for i in 0..r {
-                    let t = texel_in(set, mats, f, res, constants[k], i as u32, j, cache);
-                    alb[i + 1] = t.albedo;
-                    nrm[i + 1] = t.normal;
-                    disp[i + 1] = t.displacement;
+                // The row in runs of [`LANES`] texels, a short last run repeating its last
+                // texel in the spare lanes.
+                for i in (0..r).step_by(LANES) {
+                    let ij = std::array::from_fn(|l| ((i + l).min(r - 1) as u32, j));
+                    let texels = texels_lanes(set, mats, f, res, constants[k], ij, cache);
+                    for (l, t) in texels.iter().enumerate().take(r - i) {
+                        alb[i + l + 1] = t.albedo;
+                        nrm[i + l + 1] = t.normal;
+                        disp[i + l + 1] = t.displacement;
+                    }
                 }
             },
         );
@@ -109,6 +122,8 @@ pub struct NoiseCache {
     /// `[point][material][plane][octave]`.
     d2: Vec<Cell2>,
     materials: usize,
+    /// The patterns of the lanes of [`texels_lanes`], `[material][point][plane]`.
+    lanes: Vec<[[Lanes; 3]; 3]>,
 }
 
 impl NoiseCache {
@@ -128,6 +143,7 @@ impl NoiseCache {
             stride,
             d2: vec![Cell2::EMPTY; 3 * materials * 3 * stride],
             materials,
+            lanes: vec![[[[0.0; LANES]; 3]; 3]; materials],
         }
     }
 
@@ -359,34 +375,53 @@ fn displacement(
         count,
         mats.noise_seed,
     );
-    let mut d = pt.amp * noise;
-    for (m, kept) in patterns.iter_mut().enumerate().take(pt.count) {
-        let id = pt.ids[m];
-        let relief = mats.materials[id].relief_m;
-        let from_pattern = !matches!(
-            mats.materials[id].texture,
-            Some(Texture {
-                height: Some(_),
-                ..
-            })
+    relief_sum(mats, pt, noise, wg, |m, id, axis| {
+        let t = relief_t(
+            mats,
+            id,
+            anchor,
+            q,
+            axis,
+            kmax,
+            cache.pattern(point, id, axis),
         );
+        if point == 0 && relief_from_pattern(mats, id) {
+            patterns[m][axis] = Some(t);
+        }
+        t
+    })
+}
+
+/// Whether material `id`'s relief is its pattern (not a height image).
+fn relief_from_pattern(mats: &MaterialSet, id: usize) -> bool {
+    !matches!(
+        mats.materials[id].texture,
+        Some(Texture {
+            height: Some(_),
+            ..
+        })
+    )
+}
+
+/// `D = a·noise + Σₘ bₘ·(reliefₘ·Σ_axis w_axis·(t − ½))` with `relief(m, id, axis)` the relief
+/// `t` of material slot `m` (material `id`) on plane `axis`.
+fn relief_sum(
+    mats: &MaterialSet,
+    pt: &Point,
+    noise: f32,
+    wg: [f32; 3],
+    mut relief: impl FnMut(usize, usize, usize) -> f32,
+) -> f32 {
+    let mut d = pt.amp * noise;
+    for m in 0..pt.count {
+        let id = pt.ids[m];
+        let relief_m = mats.materials[id].relief_m;
         let mut r = 0.0f32;
         for (axis, w) in wg.iter().enumerate() {
-            let t = relief_t(
-                mats,
-                id,
-                anchor,
-                q,
-                axis,
-                kmax,
-                cache.pattern(point, id, axis),
-            );
-            if point == 0 && from_pattern {
-                kept[axis] = Some(t);
-            }
+            let t = relief(m, id, axis);
             r += w * (t - 0.5);
         }
-        d += pt.weights[m] * (relief * r);
+        d += pt.weights[m] * (relief_m * r);
     }
     d
 }
@@ -414,20 +449,25 @@ pub fn texel(set: &FaceSet, mats: &MaterialSet, f: usize, res: u32, i: u32, j: u
     )
 }
 
-/// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
-/// bytes.
-#[allow(clippy::too_many_arguments)]
-pub fn texel_in(
+/// A texel's interpolated inputs, tangent frame, geometric tri-planar weights and the points
+/// `p`, `p + δt₁`, `p + δt₂` its displacement is read at.
+struct Frame {
+    pt: Point,
+    t1: [f32; 3],
+    t2: [f32; 3],
+    wg: [f32; 3],
+    q: [[f32; 3]; 3],
+}
+
+/// The [`Frame`] of texel `(i, j)` of `face` at `res` with the step `step`.
+fn frame(
     set: &FaceSet,
     mats: &MaterialSet,
-    f: usize,
+    face: &Face,
     res: u32,
-    (kmax, step): (i32, f32),
-    i: u32,
-    j: u32,
-    cache: &mut NoiseCache,
-) -> Texel {
-    let face = &set.faces[f];
+    step: f32,
+    (i, j): (u32, u32),
+) -> Frame {
     let r = res as f32;
     let (u, v) = ((i as f32 + 0.5) / r, (j as f32 + 0.5) / r);
     let pt = interpolate(set, mats, face, u, v);
@@ -440,13 +480,24 @@ pub fn texel_in(
     let t1 = normalize_or(cross(helper, n), [1.0, 0.0, 0.0]);
     let t2 = cross(n, t1);
     let wg = triplanar(n);
-    let a = face.anchor;
     let at = |t: [f32; 3]| -> [f32; 3] { std::array::from_fn(|c| pt.p[c] + step * t[c]) };
-    let mut patterns = [[None; 3]; 4];
-    let mut unused = [[None; 3]; 4];
-    let d0 = displacement(mats, &pt, a, pt.p, wg, kmax, 0, cache, &mut patterns);
-    let d1 = displacement(mats, &pt, a, at(t1), wg, kmax, 1, cache, &mut unused);
-    let d2 = displacement(mats, &pt, a, at(t2), wg, kmax, 2, cache, &mut unused);
+    let q = [pt.p, at(t1), at(t2)];
+    Frame { pt, t1, t2, wg, q }
+}
+
+/// Steps 4 to 7 of a texel: the displaced normal from the displacements `d` at the frame's
+/// three points, the tri-planar blend (`at_p(m, id, axis)`: the pattern `t` of material slot `m`,
+/// material `id`, on plane `axis` at `p`), the decals and the quantisation.
+fn finish(
+    mats: &MaterialSet,
+    a: [i32; 3],
+    (kmax, step): (i32, f32),
+    fr: &Frame,
+    [d0, d1, d2]: [f32; 3],
+    mut at_p: impl FnMut(usize, usize, usize) -> f32,
+) -> Texel {
+    let pt = &fr.pt;
+    let (n, t1, t2) = (pt.n, fr.t1, fr.t2);
     let inv = 1.0 / step;
     let (g1, g2) = ((d1 - d0) * inv, (d2 - d0) * inv);
     let nd = normalize_or(std::array::from_fn(|c| n[c] - g1 * t1[c] - g2 * t2[c]), n);
@@ -454,17 +505,13 @@ pub fn texel_in(
     let mut albedo = [0.0f32; 3];
     let mut rough = 0.0f32;
     let mut dominant = 0usize;
-    for (m, kept) in patterns.iter().enumerate().take(pt.count) {
+    for m in 0..pt.count {
         let id = pt.ids[m];
         let mat = &mats.materials[id];
         for (axis, w) in wd.iter().enumerate() {
             let k = pt.weights[m] * w;
-            let mut at_p = || match kept[axis] {
-                Some(t) => t,
-                None => pattern(mats, id, a, pt.p, axis, kmax, cache.pattern(0, id, axis)),
-            };
             let Some(tex) = mat.texture else {
-                let t = at_p();
+                let t = at_p(m, id, axis);
                 for (c, a) in albedo.iter_mut().enumerate() {
                     *a += k * (mat.base[c] + (mat.tint[c] - mat.base[c]) * t);
                 }
@@ -477,7 +524,7 @@ pub fn texel_in(
             }
             let t = match tex.roughness {
                 Some(r) => image_sample(mats, r, tex.repeat_log2, pt.p, axis, kmax)[0],
-                None => at_p(),
+                None => at_p(m, id, axis),
             };
             rough += k * (mat.roughness[0] + (mat.roughness[1] - mat.roughness[0]) * t);
         }
@@ -510,6 +557,457 @@ pub fn texel_in(
         ],
         displacement: d0,
     }
+}
+
+/// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
+/// bytes.
+#[allow(clippy::too_many_arguments)]
+pub fn texel_in(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    constants: (i32, f32),
+    i: u32,
+    j: u32,
+    cache: &mut NoiseCache,
+) -> Texel {
+    let (kmax, step) = constants;
+    let face = &set.faces[f];
+    let fr = frame(set, mats, face, res, step, (i, j));
+    let a = face.anchor;
+    let mut patterns = [[None; 3]; 4];
+    let mut unused = [[None; 3]; 4];
+    let (pt, wg) = (&fr.pt, fr.wg);
+    let d0 = displacement(mats, pt, a, fr.q[0], wg, kmax, 0, cache, &mut patterns);
+    let d1 = displacement(mats, pt, a, fr.q[1], wg, kmax, 1, cache, &mut unused);
+    let d2 = displacement(mats, pt, a, fr.q[2], wg, kmax, 2, cache, &mut unused);
+    finish(
+        mats,
+        a,
+        constants,
+        &fr,
+        [d0, d1, d2],
+        |m, id, axis| match patterns[m][axis] {
+            Some(t) => t,
+            None => pattern(mats, id, a, pt.p, axis, kmax, cache.pattern(0, id, axis)),
+        },
+    )
+}
+
+/// One lane quantity per axis, `[axis][lane]`.
+type Lanes3 = [Lanes; 3];
+
+/// [`Frame`] at [`LANES`] texels, `[…][lane]`.
+struct FrameLanes {
+    p: Lanes3,
+    n: Lanes3,
+    amp: Lanes,
+    /// Merged material indices and weights by slot, `count` of them in each lane (the others
+    /// 0).
+    ids: [[usize; LANES]; 4],
+    weights: [Lanes; 4],
+    count: [usize; LANES],
+    t1: Lanes3,
+    t2: Lanes3,
+    wg: Lanes3,
+    q: [Lanes3; 3],
+}
+
+/// `v` in every lane.
+fn splat3(v: [f32; 3]) -> Lanes3 {
+    v.map(|c| [c; LANES])
+}
+
+#[inline(always)]
+fn cross_lanes(a: &Lanes3, b: &Lanes3) -> Lanes3 {
+    let mut out = [[0.0; LANES]; 3];
+    for l in 0..LANES {
+        out[0][l] = a[1][l] * b[2][l] - a[2][l] * b[1][l];
+        out[1][l] = a[2][l] * b[0][l] - a[0][l] * b[2][l];
+        out[2][l] = a[0][l] * b[1][l] - a[1][l] * b[0][l];
+    }
+    out
+}
+
+/// [`normalize_or`] in every lane.
+#[inline(always)]
+fn normalize_or_lanes(v: &Lanes3, fallback: &Lanes3) -> Lanes3 {
+    let mut l2 = [0.0f32; LANES];
+    let mut inv = [0.0f32; LANES];
+    for l in 0..LANES {
+        l2[l] = v[0][l] * v[0][l] + v[1][l] * v[1][l] + v[2][l] * v[2][l];
+        inv[l] = 1.0 / l2[l].sqrt();
+    }
+    let mut out = [[0.0; LANES]; 3];
+    for c in 0..3 {
+        for l in 0..LANES {
+            out[c][l] = if l2[l] < 1e-20 {
+                fallback[c][l]
+            } else {
+                v[c][l] * inv[l]
+            };
+        }
+    }
+    out
+}
+
+/// [`triplanar`] in every lane.
+#[inline(always)]
+fn triplanar_lanes(n: &Lanes3) -> Lanes3 {
+    let mut a = [[0.0f32; LANES]; 3];
+    for c in 0..3 {
+        for l in 0..LANES {
+            let c2 = n[c][l] * n[c][l];
+            a[c][l] = c2 * c2;
+        }
+    }
+    let mut inv = [0.0f32; LANES];
+    for l in 0..LANES {
+        let s = a[0][l] + a[1][l] + a[2][l];
+        inv[l] = 1.0 / s;
+    }
+    for a in &mut a {
+        for l in 0..LANES {
+            a[l] *= inv[l];
+        }
+    }
+    a
+}
+
+/// [`frame`] at texels `ij` of `face`, lane by lane the same operations.
+fn frame_lanes(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    face: &Face,
+    res: u32,
+    step: f32,
+    ij: &[(u32, u32); LANES],
+) -> FrameLanes {
+    let n = face.n as usize;
+    let (last, span, r) = ((n - 2) as f32, (n - 1) as f32, res as f32);
+    let mut w = [[0.0f32; LANES]; 4];
+    let mut base = [0usize; LANES];
+    for l in 0..LANES {
+        let (i, j) = ij[l];
+        let (u, v) = ((i as f32 + 0.5) / r, (j as f32 + 0.5) / r);
+        let (gu, gv) = (u * span, v * span);
+        let cu = gu.floor().min(last);
+        let cv = gv.floor().min(last);
+        let (fu, fv) = (gu - cu, gv - cv);
+        base[l] = face.first as usize + cv as usize * n + cu as usize;
+        w[0][l] = (1.0 - fu) * (1.0 - fv);
+        w[1][l] = fu * (1.0 - fv);
+        w[2][l] = (1.0 - fu) * fv;
+        w[3][l] = fu * fv;
+    }
+    // The four samples of each lane, `[sample][component][lane]` (4: the noise amplitude).
+    let mut sp = [[[0.0f32; LANES]; 3]; 4];
+    let mut sn = [[[0.0f32; LANES]; 3]; 4];
+    let mut sa = [[0.0f32; LANES]; 4];
+    let mut ids = [[0usize; LANES]; 4];
+    let mut weights = [[0.0f32; LANES]; 4];
+    let mut count = [0usize; LANES];
+    for l in 0..LANES {
+        for (k, off) in [0, 1, n, n + 1].into_iter().enumerate() {
+            let s = &set.samples[base[l] + off];
+            for c in 0..3 {
+                sp[k][c][l] = s.position[c];
+                sn[k][c][l] = s.normal[c];
+            }
+            sa[k][l] = s.noise_m;
+            let id = mats.index(s.material);
+            match (0..count[l]).find(|&at| ids[at][l] == id) {
+                Some(at) => weights[at][l] += w[k][l],
+                None => {
+                    ids[count[l]][l] = id;
+                    weights[count[l]][l] = w[k][l];
+                    count[l] += 1;
+                }
+            }
+        }
+    }
+    let mix = |s: [&Lanes; 4], out: &mut Lanes| {
+        for l in 0..LANES {
+            out[l] = w[0][l] * s[0][l] + w[1][l] * s[1][l] + w[2][l] * s[2][l] + w[3][l] * s[3][l];
+        }
+    };
+    let mut p = [[0.0f32; LANES]; 3];
+    let mut nn = [[0.0f32; LANES]; 3];
+    let mut amp = [0.0f32; LANES];
+    for c in 0..3 {
+        mix([&sp[0][c], &sp[1][c], &sp[2][c], &sp[3][c]], &mut p[c]);
+        mix([&sn[0][c], &sn[1][c], &sn[2][c], &sn[3][c]], &mut nn[c]);
+    }
+    mix([&sa[0], &sa[1], &sa[2], &sa[3]], &mut amp);
+    let nrm = normalize_or_lanes(&nn, &splat3([0.0, 1.0, 0.0]));
+    let mut helper = [[0.0f32; LANES]; 3];
+    for l in 0..LANES {
+        let up = nrm[1][l].abs() < 0.9;
+        helper[0][l] = if up { 0.0 } else { 1.0 };
+        helper[1][l] = if up { 1.0 } else { 0.0 };
+    }
+    let t1 = normalize_or_lanes(&cross_lanes(&helper, &nrm), &splat3([1.0, 0.0, 0.0]));
+    let t2 = cross_lanes(&nrm, &t1);
+    let wg = triplanar_lanes(&nrm);
+    let mut q = [p; 3];
+    for (q, t) in q[1..].iter_mut().zip([&t1, &t2]) {
+        for c in 0..3 {
+            for l in 0..LANES {
+                q[c][l] = p[c][l] + step * t[c][l];
+            }
+        }
+    }
+    FrameLanes {
+        p,
+        n: nrm,
+        amp,
+        ids,
+        weights,
+        count,
+        t1,
+        t2,
+        wg,
+        q,
+    }
+}
+
+/// [`texel_in`] at [`LANES`] texels `ij` of face `f` side by side: the same bytes, texel by
+/// texel, each lane going through the same operations in the same order. The noise sums (the
+/// displacement noise at the three points of every lane, and the pattern of each material any
+/// lane holds, on each plane, at the points that read it) are taken for all lanes at once with
+/// [`fbm3_lanes`] and [`fbm2_lanes`]; where the lanes hold only procedural materials the
+/// interpolation, relief, displaced normal, blend and quantisation go lane by lane too, else
+/// (image materials) each texel's relief and blend are [`texel_in`]'s own code.
+pub(crate) fn texels_lanes(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    constants: (i32, f32),
+    ij: [(u32, u32); LANES],
+    cache: &mut NoiseCache,
+) -> [Texel; LANES] {
+    let (kmax, step) = constants;
+    let face = &set.faces[f];
+    let a = face.anchor;
+    let fr = frame_lanes(set, mats, face, res, step, &ij);
+    // The materials the lanes hold, as bits (a set past 64 materials goes one texel at a time).
+    let mut present = 0u64;
+    let mut slots = 0;
+    for l in 0..LANES {
+        for m in 0..fr.count[l] {
+            let id = fr.ids[m][l];
+            if id >= 64 {
+                return ij.map(|(i, j)| texel_in(set, mats, f, res, constants, i, j, cache));
+            }
+            present |= 1u64 << id;
+        }
+        slots = slots.max(fr.count[l]);
+    }
+    let count = octave_count(mats.noise_freq_log2, mats.noise_octaves, kmax);
+    let noise: [Lanes; 3] = std::array::from_fn(|point| {
+        fbm3_lanes(
+            &mut cache.d3[point],
+            a,
+            &fr.q[point],
+            mats.noise_freq_log2,
+            count,
+            mats.noise_seed,
+        )
+    });
+    if cache.lanes.len() < mats.materials.len() {
+        cache
+            .lanes
+            .resize(mats.materials.len(), [[[0.0; LANES]; 3]; 3]);
+    }
+    let mut textured = false;
+    let mut bits = present;
+    while bits != 0 {
+        let id = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        textured |= mats.materials[id].texture.is_some();
+        let from_pattern = relief_from_pattern(mats, id);
+        let albedo_pattern = mats.materials[id]
+            .texture
+            .is_none_or(|t| t.roughness.is_none());
+        let points = if from_pattern {
+            3
+        } else {
+            usize::from(albedo_pattern)
+        };
+        for (point, q) in fr.q.iter().enumerate().take(points) {
+            for axis in 0..3 {
+                let t = pattern_lanes(mats, id, a, q, axis, kmax, cache.pattern(point, id, axis));
+                cache.lanes[id][point][axis] = t;
+            }
+        }
+    }
+    let kept = &cache.lanes;
+    if textured {
+        return std::array::from_fn(|l| {
+            let fr = frame(set, mats, face, res, step, ij[l]);
+            let d: [f32; 3] = std::array::from_fn(|point| {
+                relief_sum(mats, &fr.pt, noise[point][l], fr.wg, |_, id, axis| {
+                    if relief_from_pattern(mats, id) {
+                        kept[id][point][axis][l]
+                    } else {
+                        relief_t(mats, id, a, fr.q[point], axis, kmax, &mut [])
+                    }
+                })
+            });
+            finish(mats, a, constants, &fr, d, |_, id, axis| {
+                kept[id][0][axis][l]
+            })
+        });
+    }
+    // Each slot's patterns, `[slot][point][plane]` (a slot past a lane's count holds another
+    // material's or stale values, which the lane leaves out).
+    let mut t = [[[[0.0f32; LANES]; 3]; 3]; 4];
+    for (m, t) in t.iter_mut().enumerate().take(slots) {
+        let ids = &fr.ids[m];
+        if ids.iter().all(|&id| id == ids[0]) {
+            *t = kept[ids[0]];
+        } else {
+            for (l, &id) in ids.iter().enumerate() {
+                for (point, t) in t.iter_mut().enumerate() {
+                    for (axis, t) in t.iter_mut().enumerate() {
+                        t[l] = kept[id][point][axis][l];
+                    }
+                }
+            }
+        }
+    }
+    let material = |m: usize, l: usize| &mats.materials[fr.ids[m][l]];
+    // The relief: [`relief_sum`], lane by lane.
+    let mut d = noise;
+    for (d, noise) in d.iter_mut().zip(&noise) {
+        for l in 0..LANES {
+            d[l] = fr.amp[l] * noise[l];
+        }
+    }
+    for (m, t) in t.iter().enumerate().take(slots) {
+        let relief: Lanes = std::array::from_fn(|l| material(m, l).relief_m);
+        for (d, t) in d.iter_mut().zip(t) {
+            for l in 0..LANES {
+                let mut r = 0.0f32;
+                for (w, t) in fr.wg.iter().zip(t) {
+                    r += w[l] * (t[l] - 0.5);
+                }
+                d[l] = if m < fr.count[l] {
+                    d[l] + fr.weights[m][l] * (relief[l] * r)
+                } else {
+                    d[l]
+                };
+            }
+        }
+    }
+    // The displaced normal and the blend: [`finish`], lane by lane.
+    let inv = 1.0 / step;
+    let mut raw = [[0.0f32; LANES]; 3];
+    for l in 0..LANES {
+        let (g1, g2) = ((d[1][l] - d[0][l]) * inv, (d[2][l] - d[0][l]) * inv);
+        for (c, raw) in raw.iter_mut().enumerate() {
+            raw[l] = fr.n[c][l] - g1 * fr.t1[c][l] - g2 * fr.t2[c][l];
+        }
+    }
+    let nd = normalize_or_lanes(&raw, &fr.n);
+    let wd = triplanar_lanes(&nd);
+    let mut albedo = [[0.0f32; LANES]; 3];
+    let mut rough = [0.0f32; LANES];
+    for (m, t) in t.iter().enumerate().take(slots) {
+        let base: Lanes3 = std::array::from_fn(|c| std::array::from_fn(|l| material(m, l).base[c]));
+        let tint: Lanes3 = std::array::from_fn(|c| std::array::from_fn(|l| material(m, l).tint[c]));
+        let r0: Lanes = std::array::from_fn(|l| material(m, l).roughness[0]);
+        let r1: Lanes = std::array::from_fn(|l| material(m, l).roughness[1]);
+        for axis in 0..3 {
+            let t = &t[0][axis];
+            for l in 0..LANES {
+                let k = fr.weights[m][l] * wd[axis][l];
+                let on = m < fr.count[l];
+                for c in 0..3 {
+                    let x = albedo[c][l] + k * (base[c][l] + (tint[c][l] - base[c][l]) * t[l]);
+                    albedo[c][l] = if on { x } else { albedo[c][l] };
+                }
+                let x = rough[l] + k * (r0[l] + (r1[l] - r0[l]) * t[l]);
+                rough[l] = if on { x } else { rough[l] };
+            }
+        }
+    }
+    if !mats.decals.is_empty() {
+        for l in 0..LANES {
+            let mut alb = [albedo[0][l], albedo[1][l], albedo[2][l]];
+            let p = [fr.p[0][l], fr.p[1][l], fr.p[2][l]];
+            apply_decals(
+                &mats.decals,
+                &mats.images,
+                a,
+                p,
+                kmax,
+                &mut alb,
+                &mut rough[l],
+            );
+            for (c, x) in alb.into_iter().enumerate() {
+                albedo[c][l] = x;
+            }
+        }
+    }
+    // The quantisation, lane by lane.
+    let mut bytes = [[0u8; LANES]; 7];
+    for (b, x) in bytes.iter_mut().zip(albedo.iter().chain([&rough])) {
+        for l in 0..LANES {
+            b[l] = unorm8(x[l]);
+        }
+    }
+    for (b, x) in bytes[4..].iter_mut().zip(&nd) {
+        for l in 0..LANES {
+            b[l] = snorm8(x[l]);
+        }
+    }
+    std::array::from_fn(|l| {
+        let mut dominant = 0usize;
+        for m in 0..fr.count[l] {
+            let (w, best) = (fr.weights[m][l], fr.weights[dominant][l]);
+            if w > best || (w == best && fr.ids[m][l] < fr.ids[dominant][l]) {
+                dominant = m;
+            }
+        }
+        Texel {
+            albedo: [bytes[0][l], bytes[1][l], bytes[2][l], bytes[3][l]],
+            normal: [
+                bytes[4][l],
+                bytes[5][l],
+                bytes[6][l],
+                fr.ids[dominant][l] as u8,
+            ],
+            displacement: d[0][l],
+        }
+    })
+}
+
+/// [`pattern`] at [`LANES`] points `q` (`[axis][lane]`).
+fn pattern_lanes(
+    mats: &MaterialSet,
+    m: usize,
+    anchor: [i32; 3],
+    q: &[Lanes; 3],
+    axis: usize,
+    kmax: i32,
+    cells: &mut [Cell2],
+) -> Lanes {
+    let mat = &mats.materials[m];
+    let count = octave_count(mat.freq_log2, mat.octaves, kmax);
+    let seed = mats.seeds[m].wrapping_add(256 * axis as u32);
+    let [u, v] = plane([&q[0], &q[1], &q[2]], axis);
+    let v = fbm2_lanes(
+        cells,
+        plane(anchor, axis),
+        [u, v],
+        mat.freq_log2,
+        count,
+        seed,
+    );
+    v.map(|v| (0.5 + 0.5 * v).clamp(0.0, 1.0))
 }
 
 #[cfg(test)]
@@ -586,5 +1084,125 @@ mod tests {
             "256 chosen ccbe524274f279a3",
         ];
         assert_eq!(got, want);
+    }
+
+    #[test]
+    fn lanes_give_each_texel_the_bytes_of_texel() {
+        // Image materials (albedo only; albedo and height; every image) and a decal beside the
+        // procedural ones, lanes along rows, down columns and scattered over the face.
+        use crate::ptex::decal::Decal;
+        use crate::ptex::image::Image;
+        use std::sync::Arc;
+        let plan = WorldPlan::new(7, WorldParams::default()).expect("plan");
+        let mut mats = MaterialSet::default_ground(plan.seed);
+        let image = |seed: u32| {
+            let texels = (0..64u32)
+                .map(|i| {
+                    let h = crate::terrain::hash::mix32(i ^ seed);
+                    h.to_le_bytes()
+                })
+                .collect();
+            Arc::new(Image::new(8, 8, texels))
+        };
+        mats.images = (0..4).map(image).collect();
+        let texture = |albedo, roughness, height| {
+            Some(Texture {
+                albedo,
+                roughness,
+                height,
+                repeat_log2: 1,
+            })
+        };
+        let procedural = mats.clone();
+        for (id, tex) in [
+            (1, texture(0, None, None)),
+            (2, texture(1, None, Some(2))),
+            (4, texture(3, Some(0), Some(1))),
+        ] {
+            mats.materials[id].texture = tex;
+        }
+        // The first tile of a walk with a face of two materials or more, and its faces of most
+        // materials.
+        let materials = |set: &FaceSet, f: usize| {
+            let face = &set.faces[f];
+            let n = (face.n * face.n) as usize;
+            let first = face.first as usize;
+            let ids: std::collections::BTreeSet<u32> = set.samples[first..first + n]
+                .iter()
+                .map(|s| s.material)
+                .collect();
+            ids.len()
+        };
+        let (set, faces) = (0..64)
+            .find_map(|k: i64| {
+                let key = TileKey {
+                    lod: (k % 3) as u32,
+                    x: 5 * k - 40,
+                    z: 3 * k - 20,
+                };
+                let set = crate::ptex::face::test_face_set(&plan, key, &mats);
+                let mut faces: Vec<usize> = (0..set.faces.len()).collect();
+                faces.sort_by_key(|&f| std::cmp::Reverse(materials(&set, f)));
+                faces.truncate(4);
+                (materials(&set, faces[0]) >= 2).then_some((set, faces))
+            })
+            .expect("a tile of two materials");
+        let centre = set.samples[set.faces[faces[0]].first as usize].position;
+        let a = set.faces[faces[0]].anchor;
+        let decal = Decal {
+            anchor: [a[0], a[2]],
+            offset: [centre[0], centre[2]],
+            inv_size: [1.0 / 30.0, 1.0 / 20.0],
+            cos: 0.8,
+            sin: 0.6,
+            opacity: 0.7,
+            roughness: Some(0.2),
+            image: 2,
+            mask: None,
+            density_log2: 0,
+            mask_density_log2: 0,
+        };
+        let mut decaled = procedural;
+        decaled.decals.push(decal);
+        mats.decals.push(decal);
+        for mats in [mats, decaled] {
+            lanes_match(&set, &faces, &mats);
+        }
+    }
+
+    /// Asserts that [`texels_lanes`] gives [`texel`]'s bytes over faces `faces` of `set`.
+    fn lanes_match(set: &FaceSet, faces: &[usize], mats: &MaterialSet) {
+        let mut cache = NoiseCache::new(mats);
+        let mut dominant = std::collections::BTreeSet::new();
+        for res in [8u32, 16, 64] {
+            for &f in faces {
+                let constants = face_constants(&set.faces[f], res);
+                let r = res as usize;
+                let groups: Vec<[(u32, u32); LANES]> = (0..r * r / LANES)
+                    .flat_map(|g| {
+                        let row = std::array::from_fn(|l| ((g * LANES + l) % r, g * LANES / r));
+                        let column = row.map(|(i, j)| (j, i));
+                        let scattered = row.map(|(i, j)| ((i * 5 + j) % r, (j * 3 + i * 7) % r));
+                        [row, column, scattered]
+                    })
+                    .map(|g| g.map(|(i, j)| (i as u32, j as u32)))
+                    .collect();
+                for ij in groups {
+                    let got = texels_lanes(set, mats, f, res, constants, ij, &mut cache);
+                    for (l, &(i, j)) in ij.iter().enumerate() {
+                        let want = texel(set, mats, f, res, i, j);
+                        dominant.insert(want.normal[3]);
+                        assert_eq!(got[l].albedo, want.albedo, "{res} face {f} ({i}, {j})");
+                        assert_eq!(got[l].normal, want.normal, "{res} face {f} ({i}, {j})");
+                        assert_eq!(
+                            got[l].displacement.to_bits(),
+                            want.displacement.to_bits(),
+                            "{res} face {f} ({i}, {j})"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(dominant.len() >= 2, "materials {dominant:?}");
     }
 }

@@ -10,6 +10,9 @@
 //! `f32`. So the lattice cell and the fraction inside it are the same bits on every device, and
 //! the WGSL twin (`shaders/ptex.wgsl`) differs from this reference only in the rounding of the
 //! interpolation arithmetic.
+//!
+//! [`fbm3_lanes`] and [`fbm2_lanes`] take [`LANES`] points side by side (the bake's texels of a
+//! row): each lane's bits are those of [`fbm3`] and [`fbm2`] at its point.
 
 use crate::terrain::hash::{mix32, PRIME_X, PRIME_Z};
 
@@ -107,6 +110,36 @@ impl Cell2 {
     };
 }
 
+/// The lattice values at the corners of cell `(ix, iy, iz)`, `x` fastest.
+#[inline(always)]
+fn corners3(ix: i32, iy: i32, iz: i32, seed: u32) -> [f32; 8] {
+    let c = |dx: i32, dy: i32, dz: i32| {
+        value(hash3(
+            ix.wrapping_add(dx),
+            iy.wrapping_add(dy),
+            iz.wrapping_add(dz),
+            seed,
+        ))
+    };
+    [
+        c(0, 0, 0),
+        c(1, 0, 0),
+        c(0, 1, 0),
+        c(1, 1, 0),
+        c(0, 0, 1),
+        c(1, 0, 1),
+        c(0, 1, 1),
+        c(1, 1, 1),
+    ]
+}
+
+/// The lattice values at the corners of 2D cell `(ix, iy)` (the 3D lattice at `z = 0`).
+#[inline(always)]
+fn corners2(ix: i32, iy: i32, seed: u32) -> [f32; 4] {
+    let c = |dx: i32, dy: i32| value(hash3(ix.wrapping_add(dx), iy.wrapping_add(dy), 0, seed));
+    [c(0, 0), c(1, 0), c(0, 1), c(1, 1)]
+}
+
 /// 3D value noise at `base + x` (lattice units), in `[−1, 1]`.
 pub fn value3(base: [i32; 3], x: [f32; 3], seed: u32) -> f32 {
     let mut cache = Cell3::EMPTY;
@@ -123,24 +156,7 @@ pub fn value3_in(cache: &mut Cell3, base: [i32; 3], x: [f32; 3], seed: u32) -> f
     let (u, v, w) = (fade(fx), fade(fy), fade(fz));
     let key = Some(([ix, iy, iz], seed));
     if cache.key != key {
-        let c = |dx: i32, dy: i32, dz: i32| {
-            value(hash3(
-                ix.wrapping_add(dx),
-                iy.wrapping_add(dy),
-                iz.wrapping_add(dz),
-                seed,
-            ))
-        };
-        cache.v = [
-            c(0, 0, 0),
-            c(1, 0, 0),
-            c(0, 1, 0),
-            c(1, 1, 0),
-            c(0, 0, 1),
-            c(1, 0, 1),
-            c(0, 1, 1),
-            c(1, 1, 1),
-        ];
+        cache.v = corners3(ix, iy, iz, seed);
         cache.key = key;
     }
     let c = &cache.v;
@@ -165,8 +181,7 @@ pub fn value2_in(cache: &mut Cell2, base: [i32; 2], x: [f32; 2], seed: u32) -> f
     let (u, v) = (fade(fx), fade(fy));
     let key = Some(([ix, iy], seed));
     if cache.key != key {
-        let c = |dx: i32, dy: i32| value(hash3(ix.wrapping_add(dx), iy.wrapping_add(dy), 0, seed));
-        cache.v = [c(0, 0), c(1, 0), c(0, 1), c(1, 1)];
+        cache.v = corners2(ix, iy, seed);
         cache.key = key;
     }
     let c = &cache.v;
@@ -236,6 +251,192 @@ pub fn fbm2_in(
     sum
 }
 
+/// Points evaluated side by side by the lane sums ([`fbm3_lanes`], [`fbm2_lanes`]).
+pub const LANES: usize = 8;
+/// One `f32` per lane.
+pub type Lanes = [f32; LANES];
+
+/// [`cell`] in every lane.
+#[inline(always)]
+fn cell_lanes(base: i32, x: &Lanes) -> ([i32; LANES], Lanes) {
+    let mut fl = [0.0f32; LANES];
+    let mut f = [0.0f32; LANES];
+    let mut within = true;
+    for l in 0..LANES {
+        fl[l] = x[l].floor();
+        f[l] = x[l] - fl[l];
+        within &= (-2_147_483_648.0..2_147_483_648.0).contains(&fl[l]);
+    }
+    let mut i = [0i32; LANES];
+    if within {
+        for l in 0..LANES {
+            // SAFETY: `fl[l]` is an integer in the range of `i32` (checked above; NaN is not),
+            // so the conversion is exact and equals `fl[l] as i32`.
+            i[l] = base.wrapping_add(unsafe { fl[l].to_int_unchecked::<i32>() });
+        }
+    } else {
+        for l in 0..LANES {
+            i[l] = base.wrapping_add(fl[l] as i32);
+        }
+    }
+    (i, f)
+}
+
+/// Whether every lane of each of `cells` holds lane 0's value.
+#[inline(always)]
+fn uniform<const D: usize>(cells: [&[i32; LANES]; D]) -> bool {
+    let mut same = true;
+    for c in cells {
+        for l in 1..LANES {
+            same &= c[l] == c[0];
+        }
+    }
+    same
+}
+
+/// The lattice values at the corners of each lane's 3D cell, `[corner][lane]`, the corners of
+/// `x` fastest; integer hashes lane by lane, so each is [`corners3`]'s value.
+#[inline(always)]
+fn corners3_lanes(
+    ix: &[i32; LANES],
+    iy: &[i32; LANES],
+    iz: &[i32; LANES],
+    seed: u32,
+) -> [Lanes; 8] {
+    let mut c = [[0.0f32; LANES]; 8];
+    for l in 0..LANES {
+        let x = [ix[l] as u32, ix[l].wrapping_add(1) as u32].map(|v| v.wrapping_mul(PRIME_X));
+        let y = [iy[l] as u32, iy[l].wrapping_add(1) as u32].map(|v| v.wrapping_mul(PRIME_Y));
+        let z = [iz[l] as u32, iz[l].wrapping_add(1) as u32].map(|v| v.wrapping_mul(PRIME_Z));
+        for (k, corner) in c.iter_mut().enumerate() {
+            corner[l] = value(mix32(x[k & 1] ^ y[(k >> 1) & 1] ^ z[k >> 2] ^ seed));
+        }
+    }
+    c
+}
+
+/// [`corners3_lanes`] for 2D cells (the 3D lattice at `z = 0`, so the z term is `0`).
+#[inline(always)]
+fn corners2_lanes(ix: &[i32; LANES], iy: &[i32; LANES], seed: u32) -> [Lanes; 4] {
+    let mut c = [[0.0f32; LANES]; 4];
+    for l in 0..LANES {
+        let x = [ix[l] as u32, ix[l].wrapping_add(1) as u32].map(|v| v.wrapping_mul(PRIME_X));
+        let y = [iy[l] as u32, iy[l].wrapping_add(1) as u32].map(|v| v.wrapping_mul(PRIME_Y));
+        for (k, corner) in c.iter_mut().enumerate() {
+            corner[l] = value(mix32(x[k & 1] ^ y[k >> 1] ^ seed));
+        }
+    }
+    c
+}
+
+/// [`value3_in`] at [`LANES`] points, lane by lane the same operations in the same order (so
+/// the same bits): where every lane lies in one cell its corners come from `cache` (or are
+/// hashed once and left there), else each lane's corners are hashed side by side.
+#[inline(always)]
+pub fn value3_lanes(cache: &mut Cell3, base: [i32; 3], x: [&Lanes; 3], seed: u32) -> Lanes {
+    let (ix, fx) = cell_lanes(base[0], x[0]);
+    let (iy, fy) = cell_lanes(base[1], x[1]);
+    let (iz, fz) = cell_lanes(base[2], x[2]);
+    let c = if uniform([&ix, &iy, &iz]) {
+        let key = Some(([ix[0], iy[0], iz[0]], seed));
+        if cache.key != key {
+            cache.v = corners3(ix[0], iy[0], iz[0], seed);
+            cache.key = key;
+        }
+        cache.v.map(|v| [v; LANES])
+    } else {
+        corners3_lanes(&ix, &iy, &iz, seed)
+    };
+    let mut out = [0.0f32; LANES];
+    for l in 0..LANES {
+        let (u, v, w) = (fade(fx[l]), fade(fy[l]), fade(fz[l]));
+        let x00 = lerp(c[0][l], c[1][l], u);
+        let x10 = lerp(c[2][l], c[3][l], u);
+        let x01 = lerp(c[4][l], c[5][l], u);
+        let x11 = lerp(c[6][l], c[7][l], u);
+        out[l] = lerp(lerp(x00, x10, v), lerp(x01, x11, v), w);
+    }
+    out
+}
+
+/// [`value2_in`] at [`LANES`] points (as [`value3_lanes`]).
+#[inline(always)]
+pub fn value2_lanes(cache: &mut Cell2, base: [i32; 2], x: [&Lanes; 2], seed: u32) -> Lanes {
+    let (ix, fx) = cell_lanes(base[0], x[0]);
+    let (iy, fy) = cell_lanes(base[1], x[1]);
+    let c = if uniform([&ix, &iy]) {
+        let key = Some(([ix[0], iy[0]], seed));
+        if cache.key != key {
+            cache.v = corners2(ix[0], iy[0], seed);
+            cache.key = key;
+        }
+        cache.v.map(|v| [v; LANES])
+    } else {
+        corners2_lanes(&ix, &iy, seed)
+    };
+    let mut out = [0.0f32; LANES];
+    for l in 0..LANES {
+        let (u, v) = (fade(fx[l]), fade(fy[l]));
+        out[l] = lerp(lerp(c[0][l], c[1][l], u), lerp(c[2][l], c[3][l], u), v);
+    }
+    out
+}
+
+/// [`fbm3_in`] at [`LANES`] points `p` (`[axis][lane]`): each lane's bits are those of
+/// [`fbm3`] at its point.
+#[inline(always)]
+pub fn fbm3_lanes(
+    cells: &mut [Cell3],
+    anchor: [i32; 3],
+    p: &[Lanes; 3],
+    k0: i32,
+    count: u32,
+    seed: u32,
+) -> Lanes {
+    let mut sum = [0.0f32; LANES];
+    for o in 0..count {
+        let k = k0 + o as i32;
+        let f = exp2i(k);
+        let base = anchor.map(|a| anchor_lattice(a, k));
+        let x = p.map(|c| c.map(|v| v * f));
+        let mut spare = Cell3::EMPTY;
+        let cache = cells.get_mut(o as usize).unwrap_or(&mut spare);
+        let v = value3_lanes(cache, base, [&x[0], &x[1], &x[2]], seed.wrapping_add(o));
+        let amp = exp2i(-(o as i32));
+        for l in 0..LANES {
+            sum[l] += amp * v[l];
+        }
+    }
+    sum
+}
+
+/// [`fbm2_in`] at [`LANES`] points (as [`fbm3_lanes`]).
+#[inline(always)]
+pub fn fbm2_lanes(
+    cells: &mut [Cell2],
+    anchor: [i32; 2],
+    p: [&Lanes; 2],
+    k0: i32,
+    count: u32,
+    seed: u32,
+) -> Lanes {
+    let mut sum = [0.0f32; LANES];
+    for o in 0..count {
+        let k = k0 + o as i32;
+        let f = exp2i(k);
+        let base = anchor.map(|a| anchor_lattice(a, k));
+        let x = p.map(|c| c.map(|v| v * f));
+        let mut spare = Cell2::EMPTY;
+        let cache = cells.get_mut(o as usize).unwrap_or(&mut spare);
+        let v = value2_lanes(cache, base, [&x[0], &x[1]], seed.wrapping_add(o));
+        let amp = exp2i(-(o as i32));
+        for l in 0..LANES {
+            sum[l] += amp * v[l];
+        }
+    }
+    sum
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -286,5 +487,41 @@ mod tests {
         assert_eq!(octave_count(-2, 4, 0), 3);
         assert_eq!(octave_count(2, 4, 0), 0);
         assert_eq!(exp2i(-3), 0.125);
+    }
+
+    #[test]
+    fn lane_sums_have_the_bits_of_sums_one_point_at_a_time() {
+        // Lanes spread over one cell, over a few and over many (so both the shared-cell and the
+        // lane-by-lane corners are taken), through caches and without.
+        let mut c3 = [Cell3::EMPTY; MAX_OCTAVES];
+        let mut c2 = [Cell2::EMPTY; MAX_OCTAVES];
+        for i in 0..600u32 {
+            let spread = [0.001f32, 0.07, 1.3][i as usize % 3];
+            let start = [
+                0.3 + i as f32 * 0.11,
+                -1.7 + i as f32 * 0.05,
+                5.1 - i as f32 * 0.02,
+            ];
+            let p: [Lanes; 3] = std::array::from_fn(|c| {
+                std::array::from_fn(|l| start[c] + spread * (l * (c + 1)) as f32)
+            });
+            let (seed, k0, anchor) = (i / 50 % 2 * 11, (i / 75 % 4) as i32 - 3, [1, -2, 3]);
+            let none: &mut [Cell3] = &mut [];
+            for cells in [&mut c3[..], none] {
+                let got = fbm3_lanes(cells, anchor, &p, k0, 5, seed);
+                for l in 0..LANES {
+                    let want = fbm3(anchor, [p[0][l], p[1][l], p[2][l]], k0, 5, seed);
+                    assert_eq!(got[l].to_bits(), want.to_bits(), "fbm3 lane {l} of {i}");
+                }
+            }
+            let none: &mut [Cell2] = &mut [];
+            for cells in [&mut c2[..], none] {
+                let got = fbm2_lanes(cells, [4, -1], [&p[0], &p[2]], k0, 4, seed);
+                for l in 0..LANES {
+                    let want = fbm2([4, -1], [p[0][l], p[2][l]], k0, 4, seed);
+                    assert_eq!(got[l].to_bits(), want.to_bits(), "fbm2 lane {l} of {i}");
+                }
+            }
+        }
     }
 }

@@ -7,16 +7,18 @@
 //! writes for the whole set (tested below), at a cost of `res² + 4·res` texels a face instead of
 //! the neighbours' `res²` each.
 
-use super::bake::{bake_rows, face_constants, texel_in, NoiseCache, Texel};
+use super::bake::{bake_rows, face_constants, texels_lanes, NoiseCache};
 use super::border::{border_source, border_texel};
 use super::face::FaceSet;
 use super::material::MaterialSet;
+use super::noise::LANES;
 use super::pages::Pages;
 use rayon::prelude::*;
 
 /// Bakes faces `chosen` of `set` (indices into `set.faces`) at `res` into `out`, face `k` of
 /// `out` being `chosen[k]`, borders included. The interiors' rows are shared among the cores
-/// (a batch of one 256² page uses them all), then each face's border in parallel.
+/// (a batch of one 256² page uses them all), then each face's border in parallel (the texels
+/// a border reads from a neighbour baked [`LANES`] at a time, as the interiors' are).
 pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize], out: &mut Pages) {
     out.reset(res, chosen.len());
     bake_rows(set, mats, res, chosen, out);
@@ -30,27 +32,41 @@ pub fn bake_faces(set: &FaceSet, mats: &MaterialSet, res: u32, chosen: &[usize],
         .zip(out.displacement.par_chunks_mut(per))
         .zip(chosen.par_iter())
         .for_each_init(
-            || NoiseCache::new(mats),
-            |cache, (((alb, nrm), disp), &f)| {
+            || (NoiseCache::new(mats), Vec::new()),
+            |(cache, todo), (((alb, nrm), disp), &f)| {
+                // Border texels read from the face itself are copies; those of neighbours are
+                // baked in runs of one source face, up to [`LANES`] texels side by side.
+                todo.clear();
                 for k in 0..4 {
                     for j in 0..res {
                         let (bi, bj) = border_texel(res, k, j);
                         let (sf, si, sj) = border_source(set, res, f, k, j);
-                        let t = if sf == f {
-                            let s = at(si, sj);
-                            Texel {
-                                albedo: alb[s],
-                                normal: nrm[s],
-                                displacement: disp[s],
-                            }
-                        } else {
-                            let constants = face_constants(&set.faces[sf], res);
-                            texel_in(set, mats, sf, res, constants, si as u32, sj as u32, cache)
-                        };
                         let d = at(bi, bj);
-                        alb[d] = t.albedo;
-                        nrm[d] = t.normal;
-                        disp[d] = t.displacement;
+                        if sf == f {
+                            let s = at(si, sj);
+                            alb[d] = alb[s];
+                            nrm[d] = nrm[s];
+                            disp[d] = disp[s];
+                        } else {
+                            todo.push((d, sf, si as u32, sj as u32));
+                        }
+                    }
+                }
+                for run in todo.chunk_by(|a, b| a.1 == b.1) {
+                    let sf = run[0].1;
+                    let constants = face_constants(&set.faces[sf], res);
+                    for part in run.chunks(LANES) {
+                        // A short run repeats its last texel in the spare lanes.
+                        let ij = std::array::from_fn(|l| {
+                            let (_, _, si, sj) = part[l.min(part.len() - 1)];
+                            (si, sj)
+                        });
+                        let texels = texels_lanes(set, mats, sf, res, constants, ij, cache);
+                        for (&(d, ..), t) in part.iter().zip(&texels) {
+                            alb[d] = t.albedo;
+                            nrm[d] = t.normal;
+                            disp[d] = t.displacement;
+                        }
                     }
                 }
                 for (ci, cj, si, sj) in [

@@ -11,10 +11,13 @@
 //! - each **update** (before a batch is produced, when a view or new face bounds arrived since
 //!   the last) classifies the held faces whose vista page has been baked (their bounds come from
 //!   their samples) by frustum and distance with the budget's thresholds: detail pages are queued
-//!   highest level first, and faces that left their detail level are announced in a `ptex`
-//!   message;
+//!   nearest face first (by the distance from the eye to the face's bounding sphere; ties:
+//!   higher level first, then face index), and faces that left their detail level are announced
+//!   in a `ptex` message;
 //! - pages are baked in **batches** of one level, at most [`BATCH_PAGES`] pages and
-//!   [`BATCH_TEXELS`] interior texels each (one 256² page), one frame of kind 3 each; the session
+//!   [`BATCH_TEXELS`] interior texels each (one 256² page), one frame of kind 3 each: the level
+//!   and kind of the nearest queued page, then the next queued pages of that level and kind in
+//!   queue order (the others wait for later batches); the session
 //!   interleaves them with tile and chunk frames, at most one batch per [`PTEX_EVERY`] frames
 //!   while tiles or chunks wait, every frame spending a credit;
 //! - an **edit** queues again the vista and detail pages of exactly the faces whose reach (the
@@ -541,9 +544,34 @@ impl PtexSession {
         self.sort_detail();
     }
 
+    /// Sorts the detail queue nearest face first (the distance from the eye to the face's
+    /// bounding sphere; faces without bounds, or all of them without a view, last), ties by
+    /// level, highest first, then face index, and drops repeated pages.
     fn sort_detail(&mut self) {
-        self.detail
-            .sort_by(|a, b| b.level.cmp(&a.level).then(a.face.cmp(&b.face)));
+        let (faces, view) = (&self.faces, self.view);
+        let distance = |face: u32| -> f32 {
+            let bounds = faces
+                .get(face as usize)
+                .copied()
+                .flatten()
+                .and_then(|h| h.bounds);
+            match (bounds, view) {
+                (Some(b), Some(v)) => {
+                    let d: [f32; 3] = std::array::from_fn(|c| b.centre[c] - v.eye[c]);
+                    ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - b.radius).max(0.0)
+                }
+                _ => f32::INFINITY,
+            }
+        };
+        // Distances are at least 0, where the bits of an f32 order as the numbers do.
+        self.detail.sort_by_cached_key(|b| {
+            (
+                distance(b.face).to_bits(),
+                std::cmp::Reverse(b.level),
+                b.face,
+                b.slot,
+            )
+        });
         self.detail.dedup();
     }
 
@@ -650,36 +678,42 @@ impl PtexSession {
         if !pages.is_empty() {
             return Some(PtexBatch { level: 0, pages });
         }
+        // The nearest current page sets the batch's level and kind; later pages of another
+        // level or kind keep their place in the queue, pages no longer their face's are dropped.
         let mut level = 0u8;
         let mut chunk = None;
         let mut texels = 0u64;
-        let mut taken = 0;
-        for b in &self.detail {
-            if !self.current(b) {
-                taken += 1;
+        let mut full = false;
+        let mut waiting = Vec::with_capacity(self.detail.len());
+        for b in std::mem::take(&mut self.detail) {
+            if full {
+                waiting.push(b);
                 continue;
             }
+            if !self.current(&b) {
+                continue;
+            }
+            let Some(p) = self.page(b.face, b.slot) else {
+                continue;
+            };
             let res = u64::from(LEVEL_RES[b.level as usize]);
             if level == 0 {
                 level = b.level;
             }
-            let Some(p) = self.page(b.face, b.slot) else {
-                taken += 1;
-                continue;
-            };
             let kind = *chunk.get_or_insert(p.face.is_chunk());
-            if b.level != level
-                || kind != p.face.is_chunk()
-                || texels + res * res > BATCH_TEXELS
-                || pages.len() >= BATCH_PAGES
-            {
-                break;
+            if b.level != level || kind != p.face.is_chunk() {
+                waiting.push(b);
+                continue;
+            }
+            if texels + res * res > BATCH_TEXELS || pages.len() >= BATCH_PAGES {
+                full = true;
+                waiting.push(b);
+                continue;
             }
             texels += res * res;
-            taken += 1;
             pages.push(p);
         }
-        self.detail.drain(..taken);
+        self.detail = waiting;
         (!pages.is_empty()).then_some(PtexBatch { level, pages })
     }
 
@@ -795,5 +829,50 @@ mod tests {
         assert!(pages > 0, "faces under the eye take detail levels");
         assert_eq!(first, Some((pages, texels)));
         assert_eq!(session.queued(), (0, 0));
+    }
+
+    #[test]
+    fn the_first_detail_batch_holds_the_nearest_queued_face() {
+        // The eye 20 m above the centre of face (7, 3), the last of the two tiles' faces: the
+        // 256² level holds several faces of lower index, and its batch holds one page.
+        let settings = PtexSettings::default();
+        let pool = Arc::new(PtexPool::new(settings));
+        let grant = pool.grant().expect("grant");
+        let mut session = PtexSession::new(grant, settings.thresholds_m);
+        let view = View {
+            eye: [7.0 * 16.0 + 8.0, 20.0, 3.0 * 16.0 + 8.0],
+            forward: [0.0, -1.0, 0.0],
+            cos_half_angle: 0.5,
+            far_m: 4000.0,
+        };
+        session.set_view(view, false);
+        for x in 0..2 {
+            session.hold_tile(TileKey { lod: 0, x, z: 0 }, [false; 4]);
+        }
+        let bounds = |p: &BatchPage| match p.face {
+            PageFace::Tile(f) => FaceBounds {
+                centre: [f.fx as f32 * 16.0 + 8.0, 0.0, f.fz as f32 * 16.0 + 8.0],
+                radius: 11.4,
+            },
+            PageFace::Chunk(_) => unreachable!("no chunk faces held"),
+        };
+        let mut first = None;
+        while let (_, Some(batch)) = session.next_batch() {
+            let b: Vec<FaceBounds> = batch.pages.iter().map(bounds).collect();
+            session.baked(&batch, &b);
+            if batch.level > 0 {
+                first = Some(batch);
+                break;
+            }
+        }
+        let first = first.expect("a detail batch");
+        assert_eq!(first.level, 5, "the nearest face holds 256²");
+        let faces: Vec<PageFace> = first.pages.iter().map(|p| p.face).collect();
+        let nearest = PageFace::Tile(TileFaceKey {
+            lod: 0,
+            fx: 7,
+            fz: 3,
+        });
+        assert_eq!(faces, [nearest]);
     }
 }
