@@ -191,6 +191,22 @@ fn dry_plan() -> WorldPlan {
     WorldPlan::new(SEED, params).expect("default world without rivers")
 }
 
+/// Every height the device carved (`gpu`) has the bits of the CPU carve (`expected`) of the
+/// device's own uncarved height (`bare`), on a job `w` samples wide.
+fn assert_same_carve(k: TileKey, w: usize, bare: &[f32], expected: &[f32], gpu: &[f32]) {
+    for (v, (e, g)) in expected.iter().zip(gpu).enumerate() {
+        assert_eq!(
+            e.to_bits(),
+            g.to_bits(),
+            "{k:?}, vertex ({}, {}): the device carves its height {} to {g}, the CPU carve of \
+             that height gives {e}",
+            v % w,
+            v / w,
+            bare[v]
+        );
+    }
+}
+
 /// The device's river carve (`shaders/rivers.wgsl`) against `earth::carve`, on tiles of the
 /// default world with `valleys: 4` that cross river valleys at LODs 0, 3, 6 and 8 (all carve:
 /// `MAX_CARVE_LOD` is 8). Two comparisons:
@@ -298,17 +314,7 @@ fn gpu_river_carve_matches_cpu() {
             .field(&device, &queue, &dry, job, None)
             .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
         let expected = carve(&gpu_bare.heights);
-        for (v, (e, g)) in expected.iter().zip(&rep.gpu_heights).enumerate() {
-            assert_eq!(
-                e.to_bits(),
-                g.to_bits(),
-                "{k:?}, vertex ({}, {}): the device carves its height {} to {g}, the CPU carve \
-                 of that height gives {e}",
-                v % job.w,
-                v / job.w,
-                gpu_bare.heights[v]
-            );
-        }
+        assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
     }
     println!(
         "river carve overall: max |Δh| {max_dh:.3e} m, {differing} of {samples} heights not \
@@ -362,17 +368,7 @@ fn gpu_river_carve_keeps_the_lake_sills_bit_for_bit() {
             .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
         let expected = carve(&plan, &gpu_bare.heights);
         let rep = compare(&device, &queue, &kernels, &plan, k);
-        for (v, (e, g)) in expected.iter().zip(&rep.gpu_heights).enumerate() {
-            assert_eq!(
-                e.to_bits(),
-                g.to_bits(),
-                "{k:?}, vertex ({}, {}): the device carves its height {} to {g}, the CPU carve \
-                 of that height gives {e}",
-                v % job.w,
-                v / job.w,
-                gpu_bare.heights[v]
-            );
-        }
+        assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
         for (a, b) in expected.iter().zip(carve(&without, &gpu_bare.heights)) {
             assert!(*a >= b, "{k:?}: a sill lowered a height from {b} to {a}");
             raised += usize::from(a.to_bits() != b.to_bits());

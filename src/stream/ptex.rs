@@ -780,14 +780,15 @@ pub fn face_reach(world: &WorldParams, f: TileFaceKey) -> Rect {
 mod tests {
     use super::*;
 
-    #[test]
-    fn the_queued_pages_are_what_the_later_batches_bake() {
+    /// A session with the default settings, looking straight down from `eye` (metres), that
+    /// holds LOD-0 tiles (0, 0) and (1, 0).
+    fn session_over_two_tiles(eye: [f32; 3]) -> PtexSession {
         let settings = PtexSettings::default();
         let pool = Arc::new(PtexPool::new(settings));
         let grant = pool.grant().expect("grant");
         let mut session = PtexSession::new(grant, settings.thresholds_m);
         let view = View {
-            eye: [8.0, 40.0, 8.0],
+            eye,
             forward: [0.0, -1.0, 0.0],
             cos_half_angle: 0.5,
             far_m: 4000.0,
@@ -796,20 +797,27 @@ mod tests {
         for x in 0..2 {
             session.hold_tile(TileKey { lod: 0, x, z: 0 }, [false; 4]);
         }
+        session
+    }
+
+    /// The bounds of a page's face of [`session_over_two_tiles`] (16 m faces on the ground).
+    fn bounds(p: &BatchPage) -> FaceBounds {
+        match p.face {
+            PageFace::Tile(f) => FaceBounds {
+                centre: [f.fx as f32 * 16.0 + 8.0, 0.0, f.fz as f32 * 16.0 + 8.0],
+                radius: 11.4,
+            },
+            PageFace::Chunk(_) => unreachable!("no chunk faces held"),
+        }
+    }
+
+    #[test]
+    fn the_queued_pages_are_what_the_later_batches_bake() {
+        let mut session = session_over_two_tiles([8.0, 40.0, 8.0]);
         assert_eq!(session.queued(), (32, 32 * 64));
         let (mut pages, mut texels, mut first) = (0usize, 0u64, None);
         while let (_, Some(batch)) = session.next_batch() {
-            let bounds: Vec<FaceBounds> = batch
-                .pages
-                .iter()
-                .map(|p| match p.face {
-                    PageFace::Tile(f) => FaceBounds {
-                        centre: [f.fx as f32 * 16.0 + 8.0, 0.0, f.fz as f32 * 16.0 + 8.0],
-                        radius: 11.4,
-                    },
-                    PageFace::Chunk(_) => unreachable!("no chunk faces held"),
-                })
-                .collect();
+            let bounds: Vec<FaceBounds> = batch.pages.iter().map(bounds).collect();
             session.baked(&batch, &bounds);
             if batch.level == 0 {
                 assert_eq!(batch.pages.len(), 32, "every vista page in one batch");
@@ -835,27 +843,7 @@ mod tests {
     fn the_first_detail_batch_holds_the_nearest_queued_face() {
         // The eye 20 m above the centre of face (7, 3), the last of the two tiles' faces: the
         // 256² level holds several faces of lower index, and its batch holds one page.
-        let settings = PtexSettings::default();
-        let pool = Arc::new(PtexPool::new(settings));
-        let grant = pool.grant().expect("grant");
-        let mut session = PtexSession::new(grant, settings.thresholds_m);
-        let view = View {
-            eye: [7.0 * 16.0 + 8.0, 20.0, 3.0 * 16.0 + 8.0],
-            forward: [0.0, -1.0, 0.0],
-            cos_half_angle: 0.5,
-            far_m: 4000.0,
-        };
-        session.set_view(view, false);
-        for x in 0..2 {
-            session.hold_tile(TileKey { lod: 0, x, z: 0 }, [false; 4]);
-        }
-        let bounds = |p: &BatchPage| match p.face {
-            PageFace::Tile(f) => FaceBounds {
-                centre: [f.fx as f32 * 16.0 + 8.0, 0.0, f.fz as f32 * 16.0 + 8.0],
-                radius: 11.4,
-            },
-            PageFace::Chunk(_) => unreachable!("no chunk faces held"),
-        };
+        let mut session = session_over_two_tiles([7.0 * 16.0 + 8.0, 20.0, 3.0 * 16.0 + 8.0]);
         let mut first = None;
         while let (_, Some(batch)) = session.next_batch() {
             let b: Vec<FaceBounds> = batch.pages.iter().map(bounds).collect();
