@@ -433,12 +433,18 @@ impl Budget {
     }
 }
 
+/// The distance from `eye` to a face's sphere (0 inside it), and the offset from `eye` to the
+/// sphere's centre with its length.
+pub fn sphere_distance(b: &FaceBounds, eye: [f32; 3]) -> (f32, [f32; 3], f32) {
+    let d: [f32; 3] = std::array::from_fn(|c| b.centre[c] - eye[c]);
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    ((len - b.radius).max(0.0), d, len)
+}
+
 /// The distance from the eye to a face's sphere when the sphere meets the view cone and lies
 /// within the far distance.
 pub fn distance_in_view(b: &FaceBounds, view: &View) -> Option<f32> {
-    let d: [f32; 3] = std::array::from_fn(|c| b.centre[c] - view.eye[c]);
-    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-    let dist = (len - b.radius).max(0.0);
+    let (dist, d, len) = sphere_distance(b, view.eye);
     if dist > view.far_m {
         return None;
     }

@@ -34,7 +34,9 @@
 //! Each session's budget is granted from the server's ([`PtexPool`]) when the client opts in and
 //! given back when the session ends or a view leaves `ptex` out.
 
-use crate::ptex::budget::{Bake, Budget, BudgetConfig, FaceBounds, View, LEVEL_RES};
+use crate::ptex::budget::{
+    sphere_distance, Bake, Budget, BudgetConfig, FaceBounds, View, LEVEL_RES,
+};
 use crate::ptex::face::{ChunkFaceKey, TileFaceKey, TILE_FACES};
 use crate::scene::{margin_m, Rect};
 use crate::terrain::{TileKey, WorldParams};
@@ -556,10 +558,7 @@ impl PtexSession {
                 .flatten()
                 .and_then(|h| h.bounds);
             match (bounds, view) {
-                (Some(b), Some(v)) => {
-                    let d: [f32; 3] = std::array::from_fn(|c| b.centre[c] - v.eye[c]);
-                    ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - b.radius).max(0.0)
-                }
+                (Some(b), Some(v)) => sphere_distance(&b, v.eye).0,
                 _ => f32::INFINITY,
             }
         };
