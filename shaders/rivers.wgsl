@@ -56,8 +56,10 @@ struct CarveParams {
     shore_warp_inv_m: f32,
     // Whether the carve keeps sills beside the lakes (`RiverJob::sills`, 0 or 1).
     sills: u32,
-    _pad1: u32,
-    _pad2: u32,
+    // The walls' spur value per unit of clamped spur noise (`RiverJob::spur_scale`, 0: no
+    // spurs) and the spur noise's stream seed.
+    spur_scale: f32,
+    spur_seed: u32,
 }
 
 // `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
@@ -135,6 +137,24 @@ fn wall_width(x: f32, z: f32) -> f32 {
     return params.wall_noise * (clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP);
 }
 
+// `RiverJob::spur`: the walls' spur value of the river whose foot is at `(fx, fz)`, exactly 0
+// without spurs.
+fn spur_at(fx: f32, fz: f32) -> f32 {
+    if (params.spur_scale == 0.0) {
+        return 0.0;
+    }
+    let n = lattice(rn(fx * SPUR_INV_M), rn(fz * SPUR_INV_M), params.spur_seed);
+    return rn(clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * params.spur_scale);
+}
+
+// `carve::spur_step`: the smoothstep from `e0` to `e1` at `x`, its place bent by the spur value
+// `s` (with `s = 0` the bits of `smoothstep_rn`).
+fn spur_step_rn(e0: f32, e1: f32, x: f32, s: f32) -> f32 {
+    let t0 = clamp01(div_rn(x - e0, e1 - e0));
+    let t = t0 + rn(s * rn(t0 * (1.0 - t0)));
+    return rn(rn(t * t) * (3.0 - rn(2.0 * t)));
+}
+
 // `rivers::profile` (its height only, `carve::profile_at_foot` with the walls' added width
 // `wall`, metres, and the lake sill's level and weight, `sill.x` and `sill.y`; weight 0: none):
 // piece `p` applied to a sample at `(x, z)` of height `h`. Beyond the reach, or the widened
@@ -147,8 +167,10 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32, sill: vec2<f32>) -> f32 
     let k = rn(t * (1.0 - t));
     let ka = rn(k * (1.0 - t));
     let kb = rn(k * t);
-    let dx = x - ((p.ax + rn(t * abx)) + (rn(ka * p.sax) + rn(kb * p.sbx)));
-    let dz = z - ((p.az + rn(t * abz)) + (rn(ka * p.saz) + rn(kb * p.sbz)));
+    let fx = (p.ax + rn(t * abx)) + (rn(ka * p.sax) + rn(kb * p.sbx));
+    let fz = (p.az + rn(t * abz)) + (rn(ka * p.saz) + rn(kb * p.sbz));
+    let dx = x - fx;
+    let dz = z - fz;
     let d2 = rn(dx * dx) + rn(dz * dz);
     if (d2 >= rn(p.reach * p.reach)) {
         return h;
@@ -166,7 +188,7 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32, sill: vec2<f32>) -> f32 
         let slope = p.slope_a + rn((p.slope_b - p.slope_a) * t);
         let v = clamp_to(floor + div_rn(h - w, slope) + wall, p.valley, p.reach);
         if (d < v) {
-            let g = smoothstep_rn(floor, v, d);
+            let g = spur_step_rn(floor, v, d, spur_at(fx, fz));
             c = w + rn((h - w) * g);
         }
     }

@@ -208,7 +208,7 @@ fn assert_same_carve(k: TileKey, w: usize, bare: &[f32], expected: &[f32], gpu: 
 }
 
 /// The device's river carve (`shaders/rivers.wgsl`) against `earth::carve`, on tiles of the
-/// default world with `valleys: 4` that cross river valleys at LODs 0, 3, 6 and 8 (all carve:
+/// default world with `valleys: 4` and `5` that cross river valleys at LODs 0, 3, 6 and 8 (all carve:
 /// `MAX_CARVE_LOD` is 8). Two comparisons:
 ///
 /// - **Carved field, device vs CPU**, within [`height_tolerance`], the uncarved heights' own
@@ -227,12 +227,19 @@ fn assert_same_carve(k: TileKey, w: usize, bare: &[f32], expected: &[f32], gpu: 
 ///   bits).
 #[test]
 fn gpu_river_carve_matches_cpu() {
-    // `valleys: 4`, the newest valleys: its pieces' floodplains and slopes vary along them
-    // (those of `valleys: 3`, the default, are the same code with equal ends).
+    // `valleys: 4`: its pieces' floodplains and slopes vary along them (those of `valleys: 3`,
+    // the default, are the same code with equal ends); `valleys: 5`: the walls' spurs, read at
+    // each sample's foot on every piece.
+    for valleys in [4, 5] {
+        river_carve_matches_cpu(valleys);
+    }
+}
+
+fn river_carve_matches_cpu(valleys: u32) {
     let mut params = WorldParams::default();
     let earth = params.earth.as_mut().expect("earth-1");
-    earth.rivers.as_mut().expect("rivers").valleys = 4;
-    let plan = WorldPlan::new(SEED, params).expect("valleys 4 world");
+    earth.rivers.as_mut().expect("rivers").valleys = valleys;
+    let plan = WorldPlan::new(SEED, params).expect("valleys world");
     let dry = dry_plan();
     let earth = plan.earth.as_ref().expect("earth-1");
     let rp = earth.rivers.as_ref().expect("the default world has rivers");

@@ -617,9 +617,22 @@ fn a_varied_valley_narrows_and_steepens_along_its_piece_within_the_carve_bound()
 /// `RiverJob::water_grid`) gives every sample's water surface and kind, bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
 #[test]
 fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
+    // The default world, and `valleys: 5`, whose walls' spurs the lanes read at each foot.
+    for p in [plan(), valleys_plan(5)] {
+        pruned_and_water_jobs_agree(&p);
+    }
+}
+
+fn valleys_plan(valleys: u32) -> WorldPlan {
+    let mut params = WorldParams::default();
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.rivers.as_mut().expect("rivers").valleys = valleys;
+    WorldPlan::new(42, params).expect("a valleys world")
+}
+
+fn pruned_and_water_jobs_agree(p: &WorldPlan) {
     use strata::terrain::earth::rivers::{job_for, water_at, water_job_for};
-    let p = plan();
-    let (earth, rp) = parts(&p);
+    let (earth, rp) = parts(p);
     let n = 65usize;
     let (mut tiles, mut wet, mut left_out) = (0, 0, 0usize);
     for (name, cx, cz) in AREAS {
@@ -639,7 +652,7 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
                 .take(3);
             for key in keys {
                 tiles += 1;
-                let t = synthesize(&p, key);
+                let t = synthesize(p, key);
                 let (gx0, gz0) = (key.x * 64, key.z * 64);
                 let at = |v: usize| {
                     let x = (gx0 + (v % n) as i64) as f32 * spacing;
@@ -701,6 +714,100 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
     assert!(tiles >= 8, "only {tiles} tiles with river lines");
     assert!(wet > 0, "no sample of the tiles lies in a river channel");
     assert!(left_out > 0, "the pruning left no piece out of any bin");
+}
+
+/// `valleys: 5`: the spur value bends a wall's place between the floor and the valley's edge
+/// without breaking its rise (so the spurs add no pit along the way down to the river), keeps
+/// its ends, and with no spur gives the plain smoothstep's bits.
+#[test]
+fn a_spur_bends_the_wall_and_keeps_it_rising() {
+    use strata::terrain::earth::rivers::{spur_step, SPUR};
+    let smooth = |x: f32| {
+        let t = ((x - 40.0) / 360.0_f32).clamp(0.0, 1.0);
+        t * t * (3.0 - 2.0 * t)
+    };
+    for k in 0..=20 {
+        let s = SPUR * (k as f32 / 10.0 - 1.0);
+        assert_eq!(
+            spur_step(40.0, 400.0, 40.0, s),
+            0.0,
+            "{s}: the floor's edge"
+        );
+        assert_eq!(
+            spur_step(40.0, 400.0, 400.0, s),
+            1.0,
+            "{s}: the valley's edge"
+        );
+        let mut last = 0.0f32;
+        for i in 0..=3600 {
+            let d = 40.0 + i as f32 * 0.1;
+            let g = spur_step(40.0, 400.0, d, s);
+            assert!(g >= last, "{s}: the wall falls at {d} m ({last} then {g})");
+            last = g;
+            if s == 0.0 {
+                assert_eq!(g.to_bits(), smooth(d).to_bits(), "{d} m: no spur");
+            }
+        }
+    }
+    // Halfway up the wall a full spur raises the ground by a fifth of the wall's height or more
+    // and a full hollow lowers it as much.
+    let (up, down) = (
+        spur_step(40.0, 400.0, 220.0, SPUR),
+        spur_step(40.0, 400.0, 220.0, -SPUR),
+    );
+    assert!(
+        up - smooth(220.0) > 0.2 && smooth(220.0) - down > 0.2,
+        "{down} {up}"
+    );
+}
+
+/// `valleys: 5` against `valleys: 3` on the default world's carved tiles: the spurs move the
+/// valley walls (by metres in every area, by tens of metres in most; where a valley is cut by
+/// the full `CARVE_MAX_M`, as in much of the mountains' area, the limit holds the wall), while the rivers, lakes and seas
+/// kinds of water over every vertex stay as they were.
+#[test]
+fn spurs_move_the_walls_and_leave_the_rivers() {
+    let (three, five) = (plan(), valleys_plan(5));
+    let mut highest = 0.0f32;
+    for (name, cx, cz) in AREAS {
+        let lod = 5u32;
+        let spacing = three.lods[lod as usize].spacing_m;
+        let span = 64.0 * spacing;
+        let key = TileKey {
+            lod,
+            x: (cx / span).floor() as i64,
+            z: (cz / span).floor() as i64,
+        };
+        let (mut moved, mut most) = (0usize, 0.0f32);
+        for dz in -2..=2 {
+            for dx in -2..=2 {
+                let k = TileKey {
+                    x: key.x + dx,
+                    z: key.z + dz,
+                    ..key
+                };
+                let (a, b) = (synthesize(&three, k), synthesize(&five, k));
+                assert_eq!(
+                    a.water_kind, b.water_kind,
+                    "{name} {k:?}: the spurs moved water"
+                );
+                for (ha, hb) in a.heights.iter().zip(&b.heights) {
+                    moved += usize::from(ha.to_bits() != hb.to_bits());
+                    most = most.max((ha - hb).abs());
+                }
+            }
+        }
+        println!("{name}: {moved} heights moved, at most {most:.1} m");
+        assert!(
+            moved > 100 && most > 2.0,
+            "{name}: {moved} heights, {most} m"
+        );
+        highest = highest.max(most);
+    }
+    assert!(
+        highest > 50.0,
+        "the spurs move mountain walls by {highest} m at most"
+    );
 }
 
 /// Largest turn, degrees, between the end of each piece and the start of the next along the

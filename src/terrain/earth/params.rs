@@ -94,15 +94,18 @@ pub struct RiverParams {
     pub density: f32,
     /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
     pub incision_m: f32,
-    /// The valleys' shape, 1 to 4 ([`super::rivers`], step 6). `1`: at least 250 m wide and
+    /// The valleys' shape, 1 to 5 ([`super::rivers`], step 6). `1`: at least 250 m wide and
     /// more by discharge, so the land between rivers is pulled towards the planes of their water
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
     /// centre lines of eight straight pieces an edge instead of four; the land beyond keeps its
-    /// shape. `3` (new worlds): the valleys of `2` along four bent pieces an edge, each a
+    /// shape. `3`: the valleys of `2` along four bent pieces an edge, each a
     /// parabola through the curve's middle, so the walls follow the curve without facets. `4`
     /// (asked for by name): the valleys of `3` whose floodplain narrows and widens and whose
     /// walls steepen and ease along the river, so they read as eroded valleys instead of canals.
+    /// `5` (new worlds): the valleys of `3` whose walls have spurs and hollows running down to
+    /// the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease wanders
+    /// instead of running straight.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -175,9 +178,9 @@ impl RiverParams {
             &format!("{m} [0, 300]"),
         )?;
         check(
-            (1..=4).contains(&self.valleys),
+            (1..=5).contains(&self.valleys),
             "rivers.valleys",
-            "must be 1, 2, 3 or 4",
+            "must be 1, 2, 3, 4 or 5",
         )?;
         check(
             (1..=4).contains(&self.lakes),

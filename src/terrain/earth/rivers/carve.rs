@@ -8,7 +8,7 @@ use super::network::{Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    Q_MAX, REACH, SPUR_INV_M, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
@@ -119,6 +119,11 @@ pub struct RiverJob {
     pub wall_noise: f32,
     /// `RiverPlan::wall_seed`.
     pub wall_seed: u32,
+    /// `RiverPlan::spur_scale`: the spur noise's clamped value times this is a wall's spur value
+    /// `s` ([`super::SPUR`]; 0: no spurs, and every bit as before them).
+    pub spur_scale: f32,
+    /// `RiverPlan::spur_seed`.
+    pub spur_seed: u32,
     /// Whether the lakes have shaped shores (`lakes: 2`, [`super::shores`]).
     pub shores: bool,
     /// Whether the carve keeps a sill under the land beside a lake (`lakes: 4`,
@@ -149,14 +154,33 @@ pub(super) fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
 /// the added term is `+0`, so straight pieces give the bits they gave before bends existed.
 #[inline(always)]
 pub(super) fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
+    let (t, d2, _, _) = foot_point(p, x, z);
+    (t, d2)
+}
+
+/// [`foot`] and the curve's point at `t` (the foot itself, metres), where the spur noise is
+/// read ([`RiverJob::spur`]).
+#[inline(always)]
+pub(super) fn foot_point(p: &Piece, x: f32, z: f32) -> (f32, f32, f32, f32) {
     let (t, abx, abz) = chord_t(p, x, z);
     let k = t * (1.0 - t);
     let (ka, kb) = (k * (1.0 - t), k * t);
-    let (dx, dz) = (
-        x - (p.ax + t * abx + (ka * p.sax + kb * p.sbx)),
-        z - (p.az + t * abz + (ka * p.saz + kb * p.sbz)),
+    let (fx, fz) = (
+        p.ax + t * abx + (ka * p.sax + kb * p.sbx),
+        p.az + t * abz + (ka * p.saz + kb * p.sbz),
     );
-    (t, dx * dx + dz * dz)
+    let (dx, dz) = (x - fx, z - fz);
+    (t, dx * dx + dz * dz, fx, fz)
+}
+
+/// The smoothstep from `e0` to `e1` at `x` with its place bent by the spur value `s`
+/// ([`super::SPUR`]): `t = clamp((x − e0) / (e1 − e0), 0, 1)`, `t' = t + s·t·(1 − t)`,
+/// `t'²·(3 − 2t')`. With `s = 0` the bits of [`smoothstep`].
+#[inline(always)]
+pub fn spur_step(e0: f32, e1: f32, x: f32, s: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    let t = t + s * (t * (1.0 - t));
+    t * t * (3.0 - 2.0 * t)
 }
 
 /// Distance from piece `p`'s chord (the segment from `a` to `b`) to the point `(x, z)`, metres.
@@ -525,6 +549,8 @@ impl Network<'_> {
             lakes,
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
+            spur_scale: self.plan.spur_scale,
+            spur_seed: self.plan.spur_seed,
             shores: self.plan.lakes >= 2,
             sills: self.plan.lakes >= 4,
             shore_seeds: self.plan.shore_seeds,
@@ -560,20 +586,22 @@ pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 /// the slope `k` are linear in `t` between the piece's ends ([`Piece::floodplain`],
 /// [`Piece::floodplain_b`], [`Piece::slope_a`], [`Piece::slope_b`]; `k` is [`super::WALL_SLOPE`]
 /// before `valleys: 4`); neither depends on `h`, so the slope of the result in `h` stays in
-/// [−¼, 1] (the smoothstep's `g − u·g'` is at least −¼). In `valleys: 1` worlds the floodplain is 0, so `F = b`. Below
+/// [−¼, 1] (the smoothstep's `g − u·g'` is at least −¼; with a spur `s`, `valleys: 5`, the
+/// bent place `u' = u + s·u·(1 − u)` gives `g(u') − u·g'(u')·(1 + s·(1 − 2u))`, which stays
+/// above −1 for `|s| < 1`). In `valleys: 1` worlds the floodplain is 0, so `F = b`. Below
 /// `W` nothing changes. Inside the channel the ground is cut to the parabola
 /// `W − c·(1 − (d/b)²)`. Beyond `V'` the height is `h`, bit for bit.
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
-    profile_at_foot(p, t, d2, h, 0.0, Sill::NONE)
+    profile_at_foot(p, t, d2, h, 0.0, Sill::NONE, 0.0)
 }
 
 /// [`profile`] given the sample's foot on the piece ([`foot`]), the walls' added width at
 /// the sample ([`RiverJob::wall_width`], metres; 0 where the world has no wall noise, which
 /// leaves every bit as it was) and the lake sill there ([`RiverJob::shore_sill`]; outside the
 /// channel the valley is cut no lower than the sill, and [`Sill::NONE`] leaves every bit as it
-/// was).
+/// was), and the wall's spur value there ([`RiverJob::spur`]; 0 leaves every bit as it was).
 #[inline(always)]
 fn profile_at_foot(
     p: &Piece,
@@ -582,6 +610,7 @@ fn profile_at_foot(
     h: f32,
     wall: f32,
     sill: Sill,
+    spur: f32,
 ) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
         return (h, None);
@@ -596,7 +625,7 @@ fn profile_at_foot(
         let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
         let v = (floor + (h - w) / slope + wall).clamp(p.valley, p.reach);
         if d < v {
-            let g = smoothstep(floor, v, d);
+            let g = spur_step(floor, v, d, spur);
             c = w + (h - w) * g;
         }
     }
@@ -662,6 +691,18 @@ impl RiverJob {
         self.wall_noise * (n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP)
     }
 
+    /// The spur value of the walls whose river's foot is at `(fx, fz)` ([`super::SPUR`]):
+    /// `spur_scale ·` the spur noise there clamped to ±[`WALL_NOISE_CLAMP`], so `|s| ≤ SPUR`;
+    /// exactly 0 in worlds without spurs.
+    #[inline(always)]
+    pub fn spur(&self, fx: f32, fz: f32) -> f32 {
+        if self.spur_scale == 0.0 {
+            return 0.0;
+        }
+        let n = lattice(fx * SPUR_INV_M, fz * SPUR_INV_M, self.spur_seed);
+        n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * self.spur_scale
+    }
+
     /// The largest [`RiverJob::wall_width`] anywhere, metres (0 without wall noise).
     fn wall_width_max(&self) -> f32 {
         self.wall_noise * (2.0 * WALL_NOISE_CLAMP)
@@ -675,8 +716,9 @@ impl RiverJob {
         let wall = self.wall_width(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
-            let (t, d2) = foot(p, x, z);
-            c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
+            let (t, d2, fx, fz) = foot_point(p, x, z);
+            let spur = self.spur(fx, fz);
+            c = c.min(profile_at_foot(p, t, d2, h, wall, sill, spur).0);
         }
         c.max(h - CARVE_MAX_M)
     }
@@ -769,7 +811,7 @@ impl RiverJob {
         };
         for &(i, r2) in &pruned.entries[range] {
             let p = &self.pieces[i as usize];
-            let (t, d2) = foot(p, x, z);
+            let (t, d2, fx, fz) = foot_point(p, x, z);
             // Outside its channel a piece lowers a sample to its water level at most, which is
             // no lower than its ends' lower level (less a centimetre for rounding): a sample
             // already carved below that keeps its height, as `min` would keep it. The channel
@@ -777,7 +819,8 @@ impl RiverJob {
             // distance, not its square) never finds a sample in the channel that this does not.
             let in_channel = d2 <= p.half_width * p.half_width * 1.001;
             if d2 < r2 && (in_channel || c > p.wa.min(p.wb) - SKIP_MARGIN_M) {
-                c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
+                let spur = self.spur(fx, fz);
+                c = c.min(profile_at_foot(p, t, d2, h, wall, sill, spur).0);
             }
         }
         c.max(h - CARVE_MAX_M)

@@ -10,8 +10,8 @@
 //! which is what the scalar carve returns for them (`h.max(h − CARVE_MAX_M)` is `h`).
 
 use super::super::super::fractal::lattice_n;
-use super::carve::{foot, smoothstep, RiverJob, SKIP_MARGIN_M};
-use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
+use super::carve::{foot_point, spur_step, RiverJob, SKIP_MARGIN_M};
+use super::{CARVE_MAX_M, SPUR_INV_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
 /// it unrolls a loop of eight and then does not).
@@ -147,6 +147,24 @@ impl RiverJob {
         wall
     }
 
+    /// [`RiverJob::spur`] of `LANES` feet.
+    fn spur_lanes(&self, fx: &L, fz: &L) -> L {
+        let mut spur = [0.0; LANES];
+        if self.spur_scale == 0.0 {
+            return spur;
+        }
+        let (mut qx, mut qz, mut n) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+        for l in 0..LANES {
+            qx[l] = fx[l] * SPUR_INV_M;
+            qz[l] = fz[l] * SPUR_INV_M;
+        }
+        lattice_n(&qx, &qz, self.spur_seed, &mut n);
+        for l in 0..LANES {
+            spur[l] = n[l].clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * self.spur_scale;
+        }
+        spur
+    }
+
     /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
     /// `entries`, with the sills' levels and weights `sill` (weight 0: none): the lowest of the
     /// pieces' profiles, each applied where the scalar code applies it, at most
@@ -162,8 +180,14 @@ impl RiverJob {
             let reach2 = p.reach * p.reach;
             let channel2 = p.half_width * p.half_width * 1.001;
             let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
+            let (mut ts, mut d2s, mut fxs, mut fzs) =
+                ([0.0; LANES], [0.0; LANES], [0.0; LANES], [0.0; LANES]);
             for l in 0..LANES {
-                let (t, d2) = foot(p, x[l], z[l]);
+                (ts[l], d2s[l], fxs[l], fzs[l]) = foot_point(p, x[l], z[l]);
+            }
+            let spur = self.spur_lanes(&fxs, &fzs);
+            for l in 0..LANES {
+                let (t, d2) = (ts[l], d2s[l]);
                 let (hl, cl) = (h[l], c[l]);
                 // `profile_at_foot`, both arms of each branch computed.
                 let d = d2.sqrt();
@@ -173,7 +197,7 @@ impl RiverJob {
                     .max(p.floodplain + (p.floodplain_b - p.floodplain) * t);
                 let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
                 let v = clamp(floor + (hl - w) / slope + wall[l], p.valley, p.reach);
-                let g = smoothstep(floor, v, d);
+                let g = spur_step(floor, v, d, spur[l]);
                 let walled = if (hl > w) & (d < v) {
                     w + (hl - w) * g
                 } else {

@@ -70,7 +70,11 @@
 //!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
 //!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
 //!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
-//!    read as canals.
+//!    read as canals. With `valleys: 5` (the valleys of `3`; not `4`'s) each wall's smoothstep
+//!    runs over a place bent by a spur value read at the sample's foot on the river ([`SPUR`]):
+//!    spurs and hollows run straight down each wall to its river, and where the walls of two
+//!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
+//!    wanders with both rivers' spurs instead of running straight, equidistant from them.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -83,7 +87,8 @@
 //! [`CARVE_MAX_M`], the most the carve may remove, and in worlds with shores by
 //! [`SHORE_MAX_M`], the most the shores change. (Finer LODs carve with the same pieces, and a
 //! sample's carved height moves by no more than its uncarved height does — each profile's slope
-//! in `h` lies in [−¼, 1], the shores' in [0, 1], and the minimum over pieces keeps that — so
+//! in `h` lies in [−¼, 1] (in (−1, 1] with the spurs of `valleys: 5`), the shores' in [0, 1],
+//! and the minimum over pieces keeps that — so
 //! their bound stands.)
 
 mod carve;
@@ -94,7 +99,8 @@ mod shores;
 mod water;
 
 pub use carve::{
-    job_for, profile, water_at, water_job_for, Edge, Piece, PrunedBins, RiverJob, PIECE_LEN2_EPS,
+    job_for, profile, spur_step, water_at, water_job_for, Edge, Piece, PrunedBins, RiverJob,
+    PIECE_LEN2_EPS,
 };
 pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
@@ -163,6 +169,20 @@ pub const WALL_NOISE_M: f32 = 192.0;
 pub const WALL_NOISE_INV_M: f32 = 1.0 / WALL_NOISE_M;
 /// Largest magnitude of the walls' noise value `n`.
 pub const WALL_NOISE_CLAMP: f32 = 1.5;
+/// Largest spur value of the `valleys: 5` walls: a sample's place `u` in `[0, 1]` between the
+/// floor's edge and the valley's edge is bent to `u + s·u·(1 − u)`, `s` = `SPUR ·` value noise
+/// of wavelength [`SPUR_M`] read at the sample's foot on the river and clamped as the walls'
+/// noise is ([`WALL_NOISE_CLAMP`]). A wall rises sooner where `s > 0` (a spur reaching towards
+/// the river) and later where `s < 0` (a hollow between spurs); since `s` depends on the foot
+/// only, spurs and hollows run straight down the wall to the river, as they do on eroded
+/// valley sides, and where the walls of two valleys meet, the crease between them wanders with
+/// both rivers' spurs instead of running as the straight line equidistant from them. `|s| < 1`,
+/// so the bent place still rises monotonically across the wall: the spurs add no pit.
+pub const SPUR: f32 = 0.9;
+/// Wavelength of the spur noise along the river, metres.
+pub const SPUR_M: f32 = 560.0;
+/// `1 / SPUR_M`, 1/m: the spur noise is read at the foot's `(x, z) · SPUR_INV_M` (CPU and WGSL).
+pub const SPUR_INV_M: f32 = 1.0 / SPUR_M;
 /// Wavelength of the `valleys: 4` noise that scales a floodplain's width along its river,
 /// metres: about four pieces of a default edge, so the width's piecewise-linear course between
 /// piece ends shows no corners.
@@ -257,8 +277,12 @@ pub struct RiverPlan {
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
     /// Whether each piece's floodplain width and wall slope vary along the river
-    /// (`valleys: 4`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
+    /// (`valleys: 4` only, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
     pub varied_valleys: bool,
+    /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0.
+    pub spur_scale: f32,
+    /// Stream seed of the spur noise.
+    pub spur_seed: u32,
     /// Stream seeds of the `valleys: 4` floodplain and slope noises.
     pub valley_seeds: [u32; 2],
     /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
@@ -301,7 +325,13 @@ impl RiverPlan {
             fingerprint,
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
-            varied_valleys: params.valleys >= 4,
+            varied_valleys: params.valleys == 4,
+            spur_scale: if params.valleys >= 5 {
+                SPUR / WALL_NOISE_CLAMP
+            } else {
+                0.0
+            },
+            spur_seed: stream(seed, purpose::EARTH, 408),
             valley_seeds: [406, 407].map(|k| stream(seed, purpose::EARTH, k)),
             lakes: params.lakes,
             shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
