@@ -31,6 +31,17 @@ fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
     }
 }
 
+/// The value noise of stream `seed` at `(x, z) · inv_m` of `LANES` points, each clamped to
+/// ±[`WALL_NOISE_CLAMP`]: the walls' width noise and the spur noise, as the scalar code reads
+/// them.
+fn clamped_noise(x: &L, z: &L, inv_m: f32, seed: u32) -> L {
+    let qx: L = std::array::from_fn(|l| x[l] * inv_m);
+    let qz: L = std::array::from_fn(|l| z[l] * inv_m);
+    let mut n = [0.0; LANES];
+    lattice_n(&qx, &qz, seed, &mut n);
+    n.map(|v| v.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP))
+}
+
 impl RiverJob {
     /// Carves the grid of samples at `(xs[i], zs[j])` (metres) whose heights are
     /// `heights[j · xs.len() + i]`: each gets [`RiverJob::carve_pruned`] with the bins pruned
@@ -130,39 +141,20 @@ impl RiverJob {
 
     /// [`RiverJob::wall_width`] of `LANES` samples.
     fn wall_lanes(&self, x: &L, z: &L) -> L {
-        let mut wall = [0.0; LANES];
         if self.wall_noise == 0.0 {
-            return wall;
+            return [0.0; LANES];
         }
-        let (mut qx, mut qz, mut n) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
-        for l in 0..LANES {
-            qx[l] = x[l] * WALL_NOISE_INV_M;
-            qz[l] = z[l] * WALL_NOISE_INV_M;
-        }
-        lattice_n(&qx, &qz, self.wall_seed, &mut n);
-        for l in 0..LANES {
-            wall[l] = self.wall_noise
-                * (n[l].clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP);
-        }
-        wall
+        let n = clamped_noise(x, z, WALL_NOISE_INV_M, self.wall_seed);
+        std::array::from_fn(|l| self.wall_noise * (n[l] + WALL_NOISE_CLAMP))
     }
 
     /// [`RiverJob::spur`] of `LANES` feet.
     fn spur_lanes(&self, fx: &L, fz: &L) -> L {
-        let mut spur = [0.0; LANES];
         if self.spur_scale == 0.0 {
-            return spur;
+            return [0.0; LANES];
         }
-        let (mut qx, mut qz, mut n) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
-        for l in 0..LANES {
-            qx[l] = fx[l] * SPUR_INV_M;
-            qz[l] = fz[l] * SPUR_INV_M;
-        }
-        lattice_n(&qx, &qz, self.spur_seed, &mut n);
-        for l in 0..LANES {
-            spur[l] = n[l].clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * self.spur_scale;
-        }
-        spur
+        let n = clamped_noise(fx, fz, SPUR_INV_M, self.spur_seed);
+        std::array::from_fn(|l| n[l] * self.spur_scale)
     }
 
     /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
