@@ -10,7 +10,7 @@
 //! which is what the scalar carve returns for them (`h.max(h − CARVE_MAX_M)` is `h`).
 
 use super::super::super::fractal::lattice_n;
-use super::carve::{foot_point, spur_step, RiverJob, SKIP_MARGIN_M};
+use super::carve::{foot, foot_point, smoothstep, spur_step, Piece, RiverJob, SKIP_MARGIN_M};
 use super::{CARVE_MAX_M, SPUR_INV_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
@@ -148,12 +148,17 @@ impl RiverJob {
         std::array::from_fn(|l| self.wall_noise * (n[l] + WALL_NOISE_CLAMP))
     }
 
-    /// [`RiverJob::spur`] of `LANES` feet.
-    fn spur_lanes(&self, fx: &L, fz: &L) -> L {
+    /// [`RiverJob::spur`] at the feet of `LANES` samples on piece `p` (in worlds without spurs
+    /// zeros, without finding the feet: the carve's loop finds them, and keeps its shape).
+    fn spur_lanes(&self, p: &Piece, x: &L, z: &L) -> L {
         if self.spur_scale == 0.0 {
             return [0.0; LANES];
         }
-        let n = clamped_noise(fx, fz, SPUR_INV_M, self.spur_seed);
+        let (mut fx, mut fz) = ([0.0; LANES], [0.0; LANES]);
+        for l in 0..LANES {
+            (_, _, fx[l], fz[l]) = foot_point(p, x[l], z[l]);
+        }
+        let n = clamped_noise(&fx, &fz, SPUR_INV_M, self.spur_seed);
         std::array::from_fn(|l| n[l] * self.spur_scale)
     }
 
@@ -162,57 +167,81 @@ impl RiverJob {
     /// pieces' profiles, each applied where the scalar code applies it, at most
     /// [`CARVE_MAX_M`] below the height.
     fn carve_lanes(&self, entries: &[(u32, f32)], x: &L, z: &L, h: &L, sill: (&L, &L)) -> L {
-        let (sill_level, sill_s) = sill;
         let wall = self.wall_lanes(x, z);
         let mut c = *h;
         for &(i, r2) in entries {
             // A copy: LLVM does not vectorise the loop below while it reads the piece through a
             // reference it cannot prove unaliased with `c`.
             let p = &{ self.pieces[i as usize] };
-            let reach2 = p.reach * p.reach;
-            let channel2 = p.half_width * p.half_width * 1.001;
-            let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
-            let (mut ts, mut d2s, mut fxs, mut fzs) =
-                ([0.0; LANES], [0.0; LANES], [0.0; LANES], [0.0; LANES]);
-            for l in 0..LANES {
-                (ts[l], d2s[l], fxs[l], fzs[l]) = foot_point(p, x[l], z[l]);
-            }
-            let spur = self.spur_lanes(&fxs, &fzs);
-            for l in 0..LANES {
-                let (t, d2) = (ts[l], d2s[l]);
-                let (hl, cl) = (h[l], c[l]);
-                // `profile_at_foot`, both arms of each branch computed.
-                let d = d2.sqrt();
-                let w = p.wa + (p.wb - p.wa) * t;
-                let floor = p
-                    .half_width
-                    .max(p.floodplain + (p.floodplain_b - p.floodplain) * t);
-                let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
-                let v = clamp(floor + (hl - w) / slope + wall[l], p.valley, p.reach);
-                let g = spur_step(floor, v, d, spur[l]);
-                let walled = if (hl > w) & (d < v) {
-                    w + (hl - w) * g
-                } else {
-                    hl
-                };
-                let r = d / p.half_width;
-                let silled = walled + (walled.max(hl.min(sill_level[l])) - walled) * sill_s[l];
-                let cut = if d < p.half_width {
-                    walled.min(w - p.depth * (1.0 - r * r))
-                } else if sill_s[l] > 0.0 {
-                    silled
-                } else {
-                    walled
-                };
-                let profile = if d2 >= reach2 { hl } else { cut };
-                // `carve_pruned`'s test of whether the piece can lower the sample.
-                let applies = (d2 < r2) & ((d2 <= channel2) | (cl > floor_w));
-                c[l] = if applies { cl.min(profile) } else { cl };
+            if self.spur_scale == 0.0 {
+                piece_lanes::<false>(p, r2, x, z, h, &wall, &[0.0; LANES], sill, &mut c);
+            } else {
+                let spur = self.spur_lanes(p, x, z);
+                piece_lanes::<true>(p, r2, x, z, h, &wall, &spur, sill, &mut c);
             }
         }
         for l in 0..LANES {
             c[l] = c[l].max(h[l] - CARVE_MAX_M);
         }
         c
+    }
+}
+
+/// Piece `p`'s profile ([`super::carve::profile`] with the walls' added width `wall`, the
+/// spurs' values `spur` where `SPURS`, and the sills `sill`) applied to `LANES` samples of
+/// heights `h` whose carve so far is `c`, where [`RiverJob::carve_pruned`] applies it (`r2`:
+/// the piece's pruned squared radius). Without spurs the wall's step is the plain smoothstep,
+/// which the spur step with `s = 0` equals bit for bit; the two loops only differ in cost.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn piece_lanes<const SPURS: bool>(
+    p: &Piece,
+    r2: f32,
+    x: &L,
+    z: &L,
+    h: &L,
+    wall: &L,
+    spur: &L,
+    sill: (&L, &L),
+    c: &mut L,
+) {
+    let (sill_level, sill_s) = sill;
+    let reach2 = p.reach * p.reach;
+    let channel2 = p.half_width * p.half_width * 1.001;
+    let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
+    for l in 0..LANES {
+        let (t, d2) = foot(p, x[l], z[l]);
+        let (hl, cl) = (h[l], c[l]);
+        // `profile_at_foot`, both arms of each branch computed.
+        let d = d2.sqrt();
+        let w = p.wa + (p.wb - p.wa) * t;
+        let floor = p
+            .half_width
+            .max(p.floodplain + (p.floodplain_b - p.floodplain) * t);
+        let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
+        let v = clamp(floor + (hl - w) / slope + wall[l], p.valley, p.reach);
+        let g = if SPURS {
+            spur_step(floor, v, d, spur[l])
+        } else {
+            smoothstep(floor, v, d)
+        };
+        let walled = if (hl > w) & (d < v) {
+            w + (hl - w) * g
+        } else {
+            hl
+        };
+        let r = d / p.half_width;
+        let silled = walled + (walled.max(hl.min(sill_level[l])) - walled) * sill_s[l];
+        let cut = if d < p.half_width {
+            walled.min(w - p.depth * (1.0 - r * r))
+        } else if sill_s[l] > 0.0 {
+            silled
+        } else {
+            walled
+        };
+        let profile = if d2 >= reach2 { hl } else { cut };
+        // `carve_pruned`'s test of whether the piece can lower the sample.
+        let applies = (d2 < r2) & ((d2 <= channel2) | (cl > floor_w));
+        c[l] = if applies { cl.min(profile) } else { cl };
     }
 }
