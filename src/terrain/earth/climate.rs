@@ -13,6 +13,11 @@
 //! metres, so a world point gets the same weights at every LOD and in every tile (its node cell
 //! and offsets are computed in `f64` from the vertex's lattice index), and the weights change
 //! smoothly over kilometres, so no LOD sees a biome step that another does not.
+//!
+//! **Shared work.** At the LOD whose vertex spacing is the node spacing (LOD 12 at a 1 m cell)
+//! every vertex is a node: the weights are the nodes' own (no interpolation), and the nodes'
+//! macro fields ([`NodeMacro`], the bits the height function computes at the same positions)
+//! are handed to the heights, which then skip their own macro fields (`super::field`).
 
 use super::super::biome::BiomeMapPlan;
 use super::super::blur::{blur_weights, kernel};
@@ -58,28 +63,66 @@ impl ClimatePlan {
     }
 }
 
+/// The macro fields (elevation, relief amplitude, ridge mix: [`super::kernel`]'s `macro_fields`)
+/// of the climate nodes of a grid, row-major like the node biomes.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NodeMacro {
+    /// Node columns (the blur margin included).
+    pub w: usize,
+    /// Elevation `e(c)` at each node.
+    pub elev: Vec<f32>,
+    /// Relief amplitude `A` at each node.
+    pub amp: Vec<f32>,
+    /// Ridge mix `ρ` at each node.
+    pub ridge: Vec<f32>,
+}
+
 /// The biomes of the climate nodes of a grid, `(cols[i], rows[j])` at `out[j·w + i]` (metres,
-/// node multiples; `w = cols.len()`).
-fn node_biomes(plan: &EarthPlan, cols: &[f32], rows: &[f32], out: &mut [u8]) {
+/// node multiples; `w = cols.len()`), and the nodes' macro fields they were read from.
+fn node_biomes(plan: &EarthPlan, cols: &[f32], rows: &[f32], out: &mut [u8]) -> NodeMacro {
     let c = &plan.climate;
     let (mut xs, mut zs) = (Vec::with_capacity(out.len()), Vec::with_capacity(out.len()));
     for &z in rows {
         xs.extend_from_slice(cols);
         zs.extend(std::iter::repeat_n(z, cols.len()));
     }
-    let mut elevation = vec![0.0f32; xs.len()];
-    super::macro_elevation_batch(plan, &xs, &zs, &mut elevation);
+    let mut m = NodeMacro {
+        w: cols.len(),
+        elev: vec![0.0f32; xs.len()],
+        amp: vec![0.0f32; xs.len()],
+        ridge: vec![0.0f32; xs.len()],
+    };
+    super::macro_fields_batch(plan, &xs, &zs, &mut m.elev, &mut m.amp, &mut m.ridge);
     let shifted: Vec<f32> = rows.iter().map(|z| z + c.latitude_offset_m).collect();
     let nearest = c.map.nearest_grid(cols, &shifted);
     for (n, id) in out.iter_mut().enumerate() {
+        // The large-scale elevation `e + 0.33 · A · ρ` ([`super::macro_elevation_batch`]).
+        let elevation = m.elev[n] + 0.33 * m.amp[n] * m.ridge[n];
         let warmth = c.map.value_of(&nearest[n]);
-        let v = (warmth - elevation[n].max(0.0) / c.lapse_m).clamp(0.0, 1.0);
+        let v = (warmth - elevation.max(0.0) / c.lapse_m).clamp(0.0, 1.0);
         *id = ((v * c.count as f32) as usize).min(c.count - 1) as u8;
     }
+    m
 }
 
 /// Biome weights of a job's samples, `out[v · K + b]`, vertex-major like `Field::weights`.
 pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
+    weights_and_macro(plan, spacing_m, job).0
+}
+
+/// Whether every sample of a LOD with vertex spacing `spacing_m` is a climate node (the
+/// spacing is the node spacing): then the weights need no interpolation and the nodes' macro
+/// fields are the samples'.
+pub fn samples_are_nodes(spacing_m: f32) -> bool {
+    spacing_m as f64 == NODE_SPACING_M
+}
+
+/// Biome weights of a job's samples, `out[v · K + b]`, vertex-major like `Field::weights`, and
+/// the climate nodes' macro fields (the blur margin included): where [`samples_are_nodes`],
+/// sample `(i, j)` is node `(i + r, j + r)` of them, `r` the blur kernel's radius, and its macro
+/// fields are those of the height function at the sample, the same bits (a node at lattice
+/// index `g` sits at `(g · 4096) as f32`, which is `g as f32 · 4096`, the sample's position).
+pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Vec<f32>, NodeMacro) {
     let k = plan.climate.count;
     let r = plan.climate.kernel.len() / 2;
     let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
@@ -95,11 +138,25 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
     let cols: Vec<f32> = (0..bw as i64).map(|i| at(i0 - r as i64 + i)).collect();
     let rows: Vec<f32> = (0..bh as i64).map(|j| at(j0 - r as i64 + j)).collect();
     let mut ids = vec![0u8; bw * bh];
-    node_biomes(plan, &cols, &rows, &mut ids);
+    let node_macro = node_biomes(plan, &cols, &rows, &mut ids);
     let (nw, nh) = (bw - 2 * r, bh - 2 * r);
     let mut nodes = vec![0.0f32; nw * nh * k];
     blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut nodes);
     let mut out = vec![0.0f32; job.w * job.h * k];
+    if samples_are_nodes(spacing_m) {
+        // Sample `(i, j)` is node `(i, j)` and every offset is 0: the lerps below would add
+        // `(b − a) · 0 = ±0` to `a` (which is never −0), giving `a`, so the weights are the
+        // node's, clamped, the same bits.
+        for j in 0..job.h {
+            for i in 0..job.w {
+                let (v, n) = ((j * job.w + i) * k, (j * nw + i) * k);
+                for bi in 0..k {
+                    out[v + bi] = nodes[n + bi].clamp(0.0, 1.0);
+                }
+            }
+        }
+        return (out, node_macro);
+    }
     // Each column's node and offset, computed once for all rows.
     let cols: Vec<(usize, f32)> = (0..job.w)
         .map(|i| {
@@ -163,5 +220,5 @@ pub fn weights(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Vec<f32> {
             }
         }
     }
-    out
+    (out, node_macro)
 }

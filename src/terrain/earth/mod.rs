@@ -437,6 +437,30 @@ pub fn snow_shift(
     out
 }
 
+/// The macro fields (elevation `e(c)`, relief amplitude `A`, ridge mix `ρ`) at world positions,
+/// each the bits the height function computes at that position.
+pub fn macro_fields_batch(
+    plan: &EarthPlan,
+    xs: &[f32],
+    zs: &[f32],
+    elev: &mut [f32],
+    amp: &mut [f32],
+    ridge: &mut [f32],
+) {
+    let mut x = [0.0f32; LANES];
+    let mut z = [0.0f32; LANES];
+    let (mut e, mut a, mut r) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+    for start in (0..xs.len()).step_by(LANES) {
+        let n = (xs.len() - start).min(LANES);
+        x[..n].copy_from_slice(&xs[start..start + n]);
+        z[..n].copy_from_slice(&zs[start..start + n]);
+        kernel::macro_fields(&plan.macro_plan, &x, &z, &mut e, &mut a, &mut r);
+        elev[start..start + n].copy_from_slice(&e[..n]);
+        amp[start..start + n].copy_from_slice(&a[..n]);
+        ridge[start..start + n].copy_from_slice(&r[..n]);
+    }
+}
+
 /// Large-scale elevation (continent and mean mountain relief, metres) at world positions, for
 /// the climate: `e(c) + 0.33 · A · ρ`.
 pub fn macro_elevation_batch(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
@@ -464,7 +488,7 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         w,
         h,
     } = job;
-    let weights = climate::weights(plan, spacing_m, job);
+    let (weights, node_macro) = climate::weights_and_macro(plan, spacing_m, job);
     let relief = lattice::relief_of(plan, &weights);
     let n = w * h;
     let mut heights = vec![0.0f32; n];
@@ -478,6 +502,31 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
             &relief,
             &mut heights,
         );
+    } else if climate::samples_are_nodes(spacing_m) {
+        // Every sample is a climate node, whose macro fields the climate computed.
+        let r = plan.climate.kernel.len() / 2;
+        let layers = &plan.lods[lod as usize].layers;
+        let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
+        let (mut ero, mut rough, mut out) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+        let mut p = kernel::Partial::zero();
+        for start in (0..n).step_by(LANES) {
+            let m = (n - start).min(LANES);
+            for l in 0..m {
+                let v = start + l;
+                let (i, j) = (v % w, v / w);
+                x[l] = (gx0 + i as i64) as f32 * spacing_m;
+                z[l] = (gz0 + j as i64) as f32 * spacing_m;
+                (ero[l], rough[l]) = relief[v];
+                let node = (j + r) * node_macro.w + i + r;
+                p.elev[l] = node_macro.elev[node];
+                p.amp[l] = node_macro.amp[node];
+                p.ridge[l] = node_macro.ridge[node];
+                (p.h[l], p.gx[l], p.gz[l]) = (0.0, 0.0, 0.0);
+            }
+            p.add_layers(plan, layers, &x, &z, &ero, &rough);
+            p.finish(&mut out);
+            heights[start..start + m].copy_from_slice(&out[..m]);
+        }
     } else {
         let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
         let (mut ero, mut rough, mut out) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
