@@ -227,9 +227,9 @@ fn assert_same_carve(k: TileKey, w: usize, bare: &[f32], expected: &[f32], gpu: 
 ///   bits).
 #[test]
 fn gpu_river_carve_matches_cpu() {
-    // `valleys: 4`: its pieces' floodplains and slopes vary along them (those of `valleys: 3`,
-    // the default, are the same code with equal ends); `valleys: 5`: the walls' spurs, read at
-    // each sample's foot on every piece.
+    // `valleys: 4`: its pieces' floodplains and slopes vary along them (those of `valleys: 3`
+    // are the same code with equal ends); `valleys: 5`, the default: those and the walls'
+    // spurs, read at each sample's foot on every piece.
     for valleys in [4, 5] {
         river_carve_matches_cpu(valleys);
     }

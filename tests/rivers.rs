@@ -617,8 +617,9 @@ fn a_varied_valley_narrows_and_steepens_along_its_piece_within_the_carve_bound()
 /// `RiverJob::water_grid`) gives every sample's water surface and kind, bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
 #[test]
 fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
-    // The default world, and `valleys: 5`, whose walls' spurs the lanes read at each foot.
-    for p in [plan(), valleys_plan(5)] {
+    // The default world (`valleys: 5`, whose walls' spurs the lanes read at each foot), and
+    // `valleys: 3`, without spurs or varied floodplains.
+    for p in [plan(), valleys_plan(3)] {
         pruned_and_water_jobs_agree(&p);
     }
 }
@@ -761,17 +762,17 @@ fn a_spur_bends_the_wall_and_keeps_it_rising() {
     );
 }
 
-/// `valleys: 5` against `valleys: 3` on the default world's carved tiles: the spurs move the
+/// `valleys: 5` (the default) against `valleys: 4` on the default world's carved tiles: the spurs move the
 /// valley walls (by metres in every area, by tens of metres in most; where a valley is cut by
 /// the full `CARVE_MAX_M`, as in much of the mountains' area, the limit holds the wall), while the rivers, lakes and seas
 /// kinds of water over every vertex stay as they were.
 #[test]
 fn spurs_move_the_walls_and_leave_the_rivers() {
-    let (three, five) = (plan(), valleys_plan(5));
+    let (four, five) = (valleys_plan(4), plan());
     let mut highest = 0.0f32;
     for (name, cx, cz) in AREAS {
         let lod = 5u32;
-        let spacing = three.lods[lod as usize].spacing_m;
+        let spacing = four.lods[lod as usize].spacing_m;
         let span = 64.0 * spacing;
         let key = TileKey {
             lod,
@@ -786,7 +787,7 @@ fn spurs_move_the_walls_and_leave_the_rivers() {
                     z: key.z + dz,
                     ..key
                 };
-                let (a, b) = (synthesize(&three, k), synthesize(&five, k));
+                let (a, b) = (synthesize(&four, k), synthesize(&five, k));
                 assert_eq!(
                     a.water_kind, b.water_kind,
                     "{name} {k:?}: the spurs moved water"
@@ -841,7 +842,7 @@ fn turns(plan: &WorldPlan, i0: i64, k0: i64, n: i64) -> Vec<f32> {
     out
 }
 
-/// `valleys: 3` (the default, and `4`) bends each piece so that it leaves and reaches its ends
+/// `valleys: 3` (and `4`, `5`, the default) bends each piece so that it leaves and reaches its ends
 /// along the river curve's tangents: consecutive pieces meet without a corner (below a degree at
 /// the 99th percentile; only hairpins, whose tangents are clamped to 45° off the chord, turn
 /// more) where `valleys: 2`'s eight straight pieces turn corners of about ten degrees, so the

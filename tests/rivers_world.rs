@@ -1,7 +1,7 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 3` and `gullies: 2`,
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 5` and `gullies: 2`,
 //! whose tiles differ; the worlds stored with `valleys: 2`, `3` and `4` keep theirs too.
 
 mod common;
@@ -34,7 +34,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let earth = &doc["world"]["earth"];
     assert!(earth.get("gullies").is_none(), "{earth}");
 
-    // A bare seed is the new default, `valleys: 3`: the carved tile over a river differs.
+    // A bare seed is the new default, `valleys: 5`: the carved tile over a river differs.
     let stored = expected
         .lines()
         .find(|l| l.starts_with("1 3/-24/50 "))
@@ -45,7 +45,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     assert_ne!(
         blake3::hash(&bare).to_hex().as_str(),
         stored,
-        "bare seeds carve valleys: 3 and incised gullies"
+        "bare seeds carve valleys: 5 and incised gullies"
     );
 }
 
@@ -133,17 +133,58 @@ async fn a_world_stored_with_the_third_lakes_serves_the_same_tile_bytes() {
     assert_eq!(rivers["lakes"], 3, "{rivers}");
 }
 
+/// A world stored with the default of new worlds before `valleys: 5` (`valleys: 3` and
+/// `lakes: 4`, `tests/fixtures/lakes4-world/`) keeps its bytes, where a bare seed, `valleys: 5`,
+/// carves some of those tiles differently.
+#[tokio::test]
+async fn a_world_stored_with_the_third_valleys_and_fourth_lakes_serves_the_same_tile_bytes() {
+    const WORLD: &str = "7b17dd174bc41c52d847e85a";
+    const FIXTURE: &str = "lakes4-world";
+    let (_data, server) = common::fixture::serve(FIXTURE);
+    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
+        let query = if format == "2" { "&format=2" } else { "" };
+        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}")
+    })
+    .await;
+    assert_eq!(checked, 44, "every fixture tile was checked");
+    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/1")).await;
+    assert_eq!(status, 200);
+    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
+    let rivers = &doc["scene"]["world"]["earth"]["rivers"];
+    assert_eq!(
+        (&rivers["valleys"], &rivers["lakes"]),
+        (&3.into(), &4.into()),
+        "{rivers}"
+    );
+    let pinned = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
+        .expect("fixture hashes");
+    let mut differ = 0;
+    for line in pinned.lines().filter(|l| l.starts_with("1 ")) {
+        let mut parts = line.split_whitespace().skip(1);
+        let (key, hash) = (parts.next().expect("key"), parts.next().expect("hash"));
+        let (status, bare) = get(&server.addr, &format!("/v1/seeds/42/tiles/{key}.bin")).await;
+        assert_eq!(status, 200, "{key}");
+        differ += usize::from(blake3::hash(&bare).to_hex().as_str() != hash);
+    }
+    assert!(
+        differ > 0,
+        "a bare seed carves valleys: 5, which no fixture tile shows"
+    );
+}
+
 #[test]
-fn new_scenes_carve_the_third_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_fifth_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 3);
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 5);
     assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
-    let mut fourth = scene.clone();
-    fourth["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(4);
-    strata::scene::Scene::from_value(&fourth).expect("valleys 4 is accepted");
+    for known in [3, 4] {
+        let mut older = scene.clone();
+        older["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(known);
+        strata::scene::Scene::from_value(&older).expect("older valleys are accepted");
+    }
     assert_eq!(scene["world"]["earth"]["gullies"], 2);
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(5);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 5 is refused");
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(6);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 6 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
 }

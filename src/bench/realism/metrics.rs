@@ -555,6 +555,18 @@ impl BorderCurvature {
         })
     }
 
+    /// Whether both sides are marked but one holds less than `min_side` of all the cells, too
+    /// few for its mean to be compared.
+    pub fn one_side_only(&self, min_side: f64) -> bool {
+        let cells = (self.border_cells + self.other_cells) as f64;
+        self.border_cells > 0 && (self.border_cells.min(self.other_cells) as f64) < min_side * cells
+    }
+
+    /// [`BorderCurvature::ratio`] where each side holds at least `min_side` of all the cells.
+    pub fn two_sided_ratio(&self, min_side: f64) -> Option<f64> {
+        self.ratio().filter(|_| !self.one_side_only(min_side))
+    }
+
     /// Pools two measurements.
     pub fn add(&mut self, other: &BorderCurvature) {
         self.border_sum += other.border_sum;

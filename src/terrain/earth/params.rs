@@ -99,11 +99,11 @@ pub struct RiverParams {
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
     /// centre lines of eight straight pieces an edge instead of four; the land beyond keeps its
-    /// shape. `3`: the valleys of `2` along four bent pieces an edge, each a
+    /// shape. `3` (new worlds until `5`): the valleys of `2` along four bent pieces an edge, each a
     /// parabola through the curve's middle, so the walls follow the curve without facets. `4`
     /// (asked for by name): the valleys of `3` whose floodplain narrows and widens and whose
     /// walls steepen and ease along the river, so they read as eroded valleys instead of canals.
-    /// `5` (new worlds): the valleys of `3` whose walls have spurs and hollows running down to
+    /// `5` (new worlds): the valleys of `4` whose walls have spurs and hollows running down to
     /// the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease wanders
     /// instead of running straight.
     #[serde(
@@ -136,7 +136,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 3,
+            valleys: 5,
             lakes: 4,
         }
     }

@@ -120,3 +120,35 @@ fn hypsometry_of_a_plane_and_resampling() {
     assert_eq!((r.w, r.h), (41, 41));
     assert!((r.heights[1] - 2.5).abs() < 1e-6);
 }
+
+#[test]
+fn a_border_ratio_needs_cells_on_both_sides() {
+    // The far area at 64 m once compared 260,093 border cells with 7 others.
+    let lopsided = BorderCurvature {
+        border_sum: 260_093.0,
+        border_cells: 260_093,
+        other_sum: 3.0,
+        other_cells: 7,
+    };
+    assert!(lopsided.ratio().is_some());
+    assert!(lopsided.one_side_only(0.01));
+    assert_eq!(lopsided.two_sided_ratio(0.01), None);
+    // The origin's area at 64 m: 47,774 border cells of 260,100.
+    let fair = BorderCurvature {
+        border_sum: 47_774.0 * 1.2,
+        border_cells: 47_774,
+        other_sum: 212_326.0,
+        other_cells: 212_326,
+    };
+    assert!(!fair.one_side_only(0.01));
+    let r = fair.two_sided_ratio(0.01).unwrap_or(f64::NAN);
+    assert!((r - 1.2).abs() < 1e-9, "{r}");
+    // No border at all is not "one side only": there is nothing to compare.
+    let none = BorderCurvature {
+        other_sum: 1.0,
+        other_cells: 100,
+        ..BorderCurvature::default()
+    };
+    assert!(!none.one_side_only(0.01));
+    assert_eq!(none.two_sided_ratio(0.01), None);
+}

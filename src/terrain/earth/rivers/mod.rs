@@ -41,7 +41,7 @@
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
-//!    `valleys: 3` (the default of new worlds) and `4` into [`PIECES_3`] pieces, each a cubic offset
+//!    `valleys: 3` and later (`5` is the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
 //!    from its chord that leaves and reaches its ends along the curve's tangents
 //!    ([`Piece::sax`]; the edge's hashed bend is flat at the nodes), so the centre line has no
 //!    corner and the valley's walls follow the curve instead of showing a facet per piece.
@@ -64,13 +64,13 @@
 //!    floor keeps a valley sampled at 64 m from reading as a chain of pits. With `valleys: 3`
 //!    `V'` grows by 0 to 90 m of value noise ([`WALL_NOISE`]), so the walls of valleys in the
 //!    plains reach out in embayments between spurs instead of running as even banks. With
-//!    `valleys: 4` (asked for by name) each piece's floodplain half-width and wall slope
+//!    `valleys: 4` (and `5`) each piece's floodplain half-width and wall slope
 //!    are linear between values at its ends ([`RiverPlan::valley_shape`]: the `valleys: 3`
 //!    floodplain times [`FLOOR_SCALE`], [`WALL_SLOPE`] times [`SLOPE_SCALE`], by value noise of
 //!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
 //!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
 //!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
-//!    read as canals. With `valleys: 5` (the valleys of `3`; not `4`'s) each wall's smoothstep
+//!    read as canals. With `valleys: 5` (the default of new worlds: the valleys of `4`) each wall's smoothstep
 //!    runs over a place bent by a spur value read at the sample's foot on the river ([`SPUR`]):
 //!    spurs and hollows run straight down each wall to its river, and where the walls of two
 //!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
@@ -277,7 +277,7 @@ pub struct RiverPlan {
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
     /// Whether each piece's floodplain width and wall slope vary along the river
-    /// (`valleys: 4` only, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
+    /// (`valleys: 4` and `5`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
     pub varied_valleys: bool,
     /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0.
     pub spur_scale: f32,
@@ -325,7 +325,7 @@ impl RiverPlan {
             fingerprint,
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
-            varied_valleys: params.valleys == 4,
+            varied_valleys: params.valleys >= 4,
             spur_scale: if params.valleys >= 5 {
                 SPUR / WALL_NOISE_CLAMP
             } else {
