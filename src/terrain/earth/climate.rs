@@ -5,7 +5,7 @@
 //! [`NODE_SPACING_M`] (4 km), read at `z + latitude_offset_m` so the origin lies at mid-latitude, and
 //! made colder with altitude: the Voronoi value (0 at the pole, 1 at the equator) falls by
 //! `e / lapse_m` where `e ≥ 0` is the large-scale elevation at the node (continent and mean
-//! mountain relief, [`super::macro_elevation_batch`]). The node's biome is `⌊value · K⌋`.
+//! mountain relief, [`super::macro_elevation`]). The node's biome is `⌊value · K⌋`.
 //!
 //! The one-hot node biomes are blurred on the node lattice with a Gaussian of radius
 //! `blur_radius_m` (`σ = radius / 3`, [`crate::terrain::blur`]) and each vertex takes the
@@ -96,8 +96,7 @@ fn node_biomes(plan: &EarthPlan, cols: &[f32], rows: &[f32], out: &mut [u8]) -> 
     let shifted: Vec<f32> = rows.iter().map(|z| z + c.latitude_offset_m).collect();
     let nearest = c.map.nearest_grid(cols, &shifted);
     for (n, id) in out.iter_mut().enumerate() {
-        // The large-scale elevation `e + 0.33 · A · ρ` ([`super::macro_elevation_batch`]).
-        let elevation = m.elev[n] + 0.33 * m.amp[n] * m.ridge[n];
+        let elevation = super::macro_elevation(m.elev[n], m.amp[n], m.ridge[n]);
         let warmth = c.map.value_of(&nearest[n]);
         let v = (warmth - elevation.max(0.0) / c.lapse_m).clamp(0.0, 1.0);
         *id = ((v * c.count as f32) as usize).min(c.count - 1) as u8;

@@ -461,20 +461,20 @@ pub fn macro_fields_batch(
     }
 }
 
-/// Large-scale elevation (continent and mean mountain relief, metres) at world positions, for
-/// the climate: `e(c) + 0.33 · A · ρ`.
+/// Large-scale elevation (continent and mean mountain relief, metres) of the macro fields at a
+/// position, for the climate: `e(c) + 0.33 · A · ρ`.
+#[inline]
+pub fn macro_elevation(elev: f32, amp: f32, ridge: f32) -> f32 {
+    elev + 0.33 * amp * ridge
+}
+
+/// [`macro_elevation`] at world positions.
 pub fn macro_elevation_batch(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
-    let mut x = [0.0f32; LANES];
-    let mut z = [0.0f32; LANES];
-    let (mut e, mut a, mut r) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
-    for start in (0..xs.len()).step_by(LANES) {
-        let n = (xs.len() - start).min(LANES);
-        x[..n].copy_from_slice(&xs[start..start + n]);
-        z[..n].copy_from_slice(&zs[start..start + n]);
-        kernel::macro_fields(&plan.macro_plan, &x, &z, &mut e, &mut a, &mut r);
-        for l in 0..n {
-            out[start + l] = e[l] + 0.33 * a[l] * r[l];
-        }
+    let n = xs.len();
+    let (mut e, mut a, mut r) = (vec![0.0f32; n], vec![0.0f32; n], vec![0.0f32; n]);
+    macro_fields_batch(plan, xs, zs, &mut e, &mut a, &mut r);
+    for (k, o) in out.iter_mut().enumerate().take(n) {
+        *o = macro_elevation(e[k], a[k], r[k]);
     }
 }
 
