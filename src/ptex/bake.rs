@@ -1034,8 +1034,14 @@ mod tests {
     #[test]
     fn the_bake_keeps_the_bytes_of_the_build_before_its_speed_ups() {
         // Digests of the bake before the cached lattice cells, the shared pattern values and the
-        // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256².
-        let plan = WorldPlan::new(7, WorldParams::default()).expect("plan");
+        // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
+        // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
+        // carve `valleys: 5`, which moves these tiles' heights, the bake's input).
+        let mut params = WorldParams::default();
+        if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
+            rivers.valleys = 3;
+        }
+        let plan = WorldPlan::new(7, params).expect("plan");
         let mats = MaterialSet::default_ground(plan.seed);
         let mut got = Vec::new();
         for (key, res) in [
