@@ -8,7 +8,7 @@
 // and removes at most CARVE_MAX_M.
 //
 // The river job itself (the drainage network, its pieces and their binning) is built on the CPU
-// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (twenty f32), `bin_start` and
+// (`rivers::job_for`) and uploaded: `pieces` is `rivers::Piece` (twenty-two f32), `bin_start` and
 // `bin_pieces` are the job's bins in CSR form, `lakes` the levels of its lake window, and
 // `CarveParams` is `gpu::layout::GpuCarveParams`, field for field. Before the carve, the lake
 // shores shape each height (`shore`, the twin of `RiverJob::shore`).
@@ -56,10 +56,8 @@ struct CarveParams {
     shore_warp_inv_m: f32,
     // Whether the carve keeps sills beside the lakes (`RiverJob::sills`, 0 or 1).
     sills: u32,
-    // The walls' spur value per unit of clamped spur noise (`RiverJob::spur_scale`, 0: no
-    // spurs) and the spur noise's stream seed.
-    spur_scale: f32,
-    spur_seed: u32,
+    _pad1: u32,
+    _pad2: u32,
 }
 
 // `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
@@ -85,6 +83,9 @@ struct Piece {
     floodplain_b: f32,
     slope_a: f32,
     slope_b: f32,
+    // The walls' spur value at the ends (`valleys: 5`; 0 before).
+    spur_a: f32,
+    spur_b: f32,
 }
 
 const WORKGROUP: u32 = 64u;
@@ -137,16 +138,6 @@ fn wall_width(x: f32, z: f32) -> f32 {
     return params.wall_noise * (clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP);
 }
 
-// `RiverJob::spur`: the walls' spur value of the river whose foot is at `(fx, fz)`, exactly 0
-// without spurs.
-fn spur_at(fx: f32, fz: f32) -> f32 {
-    if (params.spur_scale == 0.0) {
-        return 0.0;
-    }
-    let n = lattice(rn(fx * SPUR_INV_M), rn(fz * SPUR_INV_M), params.spur_seed);
-    return rn(clamp_to(n, -WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * params.spur_scale);
-}
-
 // `carve::spur_step`: the smoothstep from `e0` to `e1` at `x`, its place bent by the spur value
 // `s` (with `s = 0` the bits of `smoothstep_rn`).
 fn spur_step_rn(e0: f32, e1: f32, x: f32, s: f32) -> f32 {
@@ -167,10 +158,8 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32, sill: vec2<f32>) -> f32 
     let k = rn(t * (1.0 - t));
     let ka = rn(k * (1.0 - t));
     let kb = rn(k * t);
-    let fx = (p.ax + rn(t * abx)) + (rn(ka * p.sax) + rn(kb * p.sbx));
-    let fz = (p.az + rn(t * abz)) + (rn(ka * p.saz) + rn(kb * p.sbz));
-    let dx = x - fx;
-    let dz = z - fz;
+    let dx = x - ((p.ax + rn(t * abx)) + (rn(ka * p.sax) + rn(kb * p.sbx)));
+    let dz = z - ((p.az + rn(t * abz)) + (rn(ka * p.saz) + rn(kb * p.sbz)));
     let d2 = rn(dx * dx) + rn(dz * dz);
     if (d2 >= rn(p.reach * p.reach)) {
         return h;
@@ -188,7 +177,8 @@ fn profile(p: Piece, x: f32, z: f32, h: f32, wall: f32, sill: vec2<f32>) -> f32 
         let slope = p.slope_a + rn((p.slope_b - p.slope_a) * t);
         let v = clamp_to(floor + div_rn(h - w, slope) + wall, p.valley, p.reach);
         if (d < v) {
-            let g = spur_step_rn(floor, v, d, spur_at(fx, fz));
+            let spur = p.spur_a + rn((p.spur_b - p.spur_a) * t);
+            let g = spur_step_rn(floor, v, d, spur);
             c = w + rn((h - w) * g);
         }
     }

@@ -494,6 +494,8 @@ fn floodplain_piece() -> strata::terrain::earth::rivers::Piece {
         floodplain_b: 60.0,
         slope_a: strata::terrain::earth::rivers::WALL_SLOPE,
         slope_b: strata::terrain::earth::rivers::WALL_SLOPE,
+        spur_a: 0.0,
+        spur_b: 0.0,
     }
 }
 
@@ -719,7 +721,8 @@ fn pruned_and_water_jobs_agree(p: &WorldPlan) {
 
 /// `valleys: 5`: the spur value bends a wall's place between the floor and the valley's edge
 /// without breaking its rise (so the spurs add no pit along the way down to the river), keeps
-/// its ends, and with no spur gives the plain smoothstep's bits.
+/// its ends, and with no spur gives the plain smoothstep's bits; a piece's spur value is linear
+/// between its ends.
 #[test]
 fn a_spur_bends_the_wall_and_keeps_it_rising() {
     use strata::terrain::earth::rivers::{spur_step, SPUR};
@@ -760,6 +763,31 @@ fn a_spur_bends_the_wall_and_keeps_it_rising() {
         up - smooth(220.0) > 0.2 && smooth(220.0) - down > 0.2,
         "{down} {up}"
     );
+    // A piece whose spur value runs from a full spur upstream to a full hollow downstream: its
+    // wall stands higher than the spurless one at the upstream end, lower at the downstream
+    // end, as high halfway (the value is 0 there), and rises away from the river everywhere.
+    use strata::terrain::earth::rivers::{profile, Piece};
+    let plain = floodplain_piece();
+    let spurred = Piece {
+        spur_a: SPUR,
+        spur_b: -SPUR,
+        ..plain
+    };
+    let (h, d) = (300.0f32, 300.0f32);
+    assert!(profile(&spurred, 0.0, d, h).0 > profile(&plain, 0.0, d, h).0 + 10.0);
+    assert!(profile(&spurred, 100.0, d, h).0 < profile(&plain, 100.0, d, h).0 - 10.0);
+    assert_eq!(
+        profile(&spurred, 50.0, d, h).0.to_bits(),
+        profile(&plain, 50.0, d, h).0.to_bits()
+    );
+    for x in [0.0f32, 25.0, 75.0, 100.0] {
+        let mut last = f32::MIN;
+        for i in 0..=1000 {
+            let c = profile(&spurred, x, i as f32, h).0;
+            assert!(c >= last, "{x}, {i} m: the wall falls ({last} then {c})");
+            last = c;
+        }
+    }
 }
 
 /// `valleys: 5` (the default) against `valleys: 4` on the default world's carved tiles: the spurs move the

@@ -360,9 +360,7 @@ fn river_carve_structs_match_the_wgsl_layout() {
             shore_seed3,
             shore_warp_m,
             shore_warp_inv_m,
-            sills,
-            spur_scale,
-            spur_seed
+            sills
         ]
     );
     check_layout!(
@@ -389,7 +387,9 @@ fn river_carve_structs_match_the_wgsl_layout() {
             sbz,
             floodplain_b,
             slope_a,
-            slope_b
+            slope_b,
+            spur_a,
+            spur_b
         ]
     );
 }

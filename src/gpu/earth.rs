@@ -99,7 +99,6 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("PIECE_LEN2_EPS", rivers::PIECE_LEN2_EPS),
         ("WALL_NOISE_INV_M", rivers::WALL_NOISE_INV_M),
         ("WALL_NOISE_CLAMP", rivers::WALL_NOISE_CLAMP),
-        ("SPUR_INV_M", rivers::SPUR_INV_M),
         // `rivers::RiverJob::shore` (`rivers::shores`).
         ("SHORE_NOISE_INV_M", rivers::SHORE_NOISE_INV_M),
         ("SHORE_NOISE2_INV_M", rivers::SHORE_NOISE2_INV_M),
@@ -325,8 +324,8 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         shore_warp_m: rj.shore_warp_m,
         shore_warp_inv_m: rj.shore_warp_inv_m,
         sills: u32::from(rj.sills),
-        spur_scale: rj.spur_scale,
-        spur_seed: rj.spur_seed,
+        _pad1: 0,
+        _pad2: 0,
     })
 }
 

@@ -376,8 +376,8 @@ pub struct GpuCarveParams {
     pub shore_warp_inv_m: f32,
     /// `RiverJob::sills` (0 or 1).
     pub sills: u32,
-    /// `RiverJob::spur_scale`: the walls' spur value per unit of clamped spur noise (0: none).
-    pub spur_scale: f32,
-    /// `RiverJob::spur_seed`.
-    pub spur_seed: u32,
+    /// Padding to a multiple of 16 bytes.
+    pub _pad1: u32,
+    /// Padding.
+    pub _pad2: u32,
 }

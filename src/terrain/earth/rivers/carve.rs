@@ -8,7 +8,7 @@ use super::network::{Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, SPUR_INV_M, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
@@ -16,8 +16,9 @@ use super::{
 /// leaves `a` with slope `sa` and reaches `b` with slope `−sb` (metres per unit `t`), so its
 /// tangents at the ends are the river curve's (straight where both are zero, as in every world
 /// before `valleys: 3`). The floodplain's half-width and the walls' mean slope are linear in
-/// `t` between their values at the ends (equal ends before `valleys: 4`). Twenty `f32`, the
-/// layout of the WGSL twin's storage array.
+/// `t` between their values at the ends (equal ends before `valleys: 4`), and so is the walls'
+/// spur value (0 before `valleys: 5`). Twenty-two `f32`, the layout of the WGSL twin's storage
+/// array.
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 #[repr(C)]
 pub struct Piece {
@@ -68,6 +69,10 @@ pub struct Piece {
     pub slope_a: f32,
     /// Mean slope of the walls at the downstream end, rise over run.
     pub slope_b: f32,
+    /// The walls' spur value at the upstream end ([`super::SPUR`]; 0 before `valleys: 5`).
+    pub spur_a: f32,
+    /// The walls' spur value at the downstream end.
+    pub spur_b: f32,
 }
 
 impl Piece {
@@ -119,11 +124,6 @@ pub struct RiverJob {
     pub wall_noise: f32,
     /// `RiverPlan::wall_seed`.
     pub wall_seed: u32,
-    /// `RiverPlan::spur_scale`: the spur noise's clamped value times this is a wall's spur value
-    /// `s` ([`super::SPUR`]; 0: no spurs, and every bit as before them).
-    pub spur_scale: f32,
-    /// `RiverPlan::spur_seed`.
-    pub spur_seed: u32,
     /// Whether the lakes have shaped shores (`lakes: 2`, [`super::shores`]).
     pub shores: bool,
     /// Whether the carve keeps a sill under the land beside a lake (`lakes: 4`,
@@ -154,23 +154,14 @@ pub(super) fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
 /// the added term is `+0`, so straight pieces give the bits they gave before bends existed.
 #[inline(always)]
 pub(super) fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
-    let (t, d2, _, _) = foot_point(p, x, z);
-    (t, d2)
-}
-
-/// [`foot`] and the curve's point at `t` (the foot itself, metres), where the spur noise is
-/// read ([`RiverJob::spur`]).
-#[inline(always)]
-pub(super) fn foot_point(p: &Piece, x: f32, z: f32) -> (f32, f32, f32, f32) {
     let (t, abx, abz) = chord_t(p, x, z);
     let k = t * (1.0 - t);
     let (ka, kb) = (k * (1.0 - t), k * t);
-    let (fx, fz) = (
-        p.ax + t * abx + (ka * p.sax + kb * p.sbx),
-        p.az + t * abz + (ka * p.saz + kb * p.sbz),
+    let (dx, dz) = (
+        x - (p.ax + t * abx + (ka * p.sax + kb * p.sbx)),
+        z - (p.az + t * abz + (ka * p.saz + kb * p.sbz)),
     );
-    let (dx, dz) = (x - fx, z - fz);
-    (t, dx * dx + dz * dz, fx, fz)
+    (t, dx * dx + dz * dz)
 }
 
 /// The smoothstep from `e0` to `e1` at `x` with its place bent by the spur value `s`
@@ -406,6 +397,8 @@ impl Network<'_> {
                         floodplain_b: fb,
                         slope_a: sa,
                         slope_b: sb,
+                        spur_a: self.plan.spur_at(p[0][0], p[0][1]),
+                        spur_b: self.plan.spur_at(p[1][0], p[1][1]),
                     });
                 }
             }
@@ -549,8 +542,6 @@ impl Network<'_> {
             lakes,
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
-            spur_scale: self.plan.spur_scale,
-            spur_seed: self.plan.spur_seed,
             shores: self.plan.lakes >= 2,
             sills: self.plan.lakes >= 4,
             shore_seeds: self.plan.shore_seeds,
@@ -594,14 +585,15 @@ pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
 #[inline(always)]
 pub fn profile(p: &Piece, x: f32, z: f32, h: f32) -> (f32, Option<f32>) {
     let (t, d2) = foot(p, x, z);
-    profile_at_foot(p, t, d2, h, 0.0, Sill::NONE, 0.0)
+    profile_at_foot(p, t, d2, h, 0.0, Sill::NONE)
 }
 
 /// [`profile`] given the sample's foot on the piece ([`foot`]), the walls' added width at
 /// the sample ([`RiverJob::wall_width`], metres; 0 where the world has no wall noise, which
 /// leaves every bit as it was) and the lake sill there ([`RiverJob::shore_sill`]; outside the
 /// channel the valley is cut no lower than the sill, and [`Sill::NONE`] leaves every bit as it
-/// was), and the wall's spur value there ([`RiverJob::spur`]; 0 leaves every bit as it was).
+/// was). The walls' spur value is linear along the piece between [`Piece::spur_a`] and
+/// [`Piece::spur_b`] (0 at both ends leaves every bit as it was).
 #[inline(always)]
 fn profile_at_foot(
     p: &Piece,
@@ -610,7 +602,6 @@ fn profile_at_foot(
     h: f32,
     wall: f32,
     sill: Sill,
-    spur: f32,
 ) -> (f32, Option<f32>) {
     if d2 >= p.reach * p.reach {
         return (h, None);
@@ -625,6 +616,7 @@ fn profile_at_foot(
         let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
         let v = (floor + (h - w) / slope + wall).clamp(p.valley, p.reach);
         if d < v {
+            let spur = p.spur_a + (p.spur_b - p.spur_a) * t;
             let g = spur_step(floor, v, d, spur);
             c = w + (h - w) * g;
         }
@@ -691,18 +683,6 @@ impl RiverJob {
         self.wall_noise * (n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP)
     }
 
-    /// The spur value of the walls whose river's foot is at `(fx, fz)` ([`super::SPUR`]):
-    /// `spur_scale ·` the spur noise there clamped to ±[`WALL_NOISE_CLAMP`], so `|s| ≤ SPUR`;
-    /// exactly 0 in worlds without spurs.
-    #[inline(always)]
-    pub fn spur(&self, fx: f32, fz: f32) -> f32 {
-        if self.spur_scale == 0.0 {
-            return 0.0;
-        }
-        let n = lattice(fx * SPUR_INV_M, fz * SPUR_INV_M, self.spur_seed);
-        n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * self.spur_scale
-    }
-
     /// The largest [`RiverJob::wall_width`] anywhere, metres (0 without wall noise).
     fn wall_width_max(&self) -> f32 {
         self.wall_noise * (2.0 * WALL_NOISE_CLAMP)
@@ -716,9 +696,8 @@ impl RiverJob {
         let wall = self.wall_width(x, z);
         let mut c = h;
         for p in self.pieces_at(x, z) {
-            let (t, d2, fx, fz) = foot_point(p, x, z);
-            let spur = self.spur(fx, fz);
-            c = c.min(profile_at_foot(p, t, d2, h, wall, sill, spur).0);
+            let (t, d2) = foot(p, x, z);
+            c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
         }
         c.max(h - CARVE_MAX_M)
     }
@@ -811,7 +790,7 @@ impl RiverJob {
         };
         for &(i, r2) in &pruned.entries[range] {
             let p = &self.pieces[i as usize];
-            let (t, d2, fx, fz) = foot_point(p, x, z);
+            let (t, d2) = foot(p, x, z);
             // Outside its channel a piece lowers a sample to its water level at most, which is
             // no lower than its ends' lower level (less a centimetre for rounding): a sample
             // already carved below that keeps its height, as `min` would keep it. The channel
@@ -819,8 +798,7 @@ impl RiverJob {
             // distance, not its square) never finds a sample in the channel that this does not.
             let in_channel = d2 <= p.half_width * p.half_width * 1.001;
             if d2 < r2 && (in_channel || c > p.wa.min(p.wb) - SKIP_MARGIN_M) {
-                let spur = self.spur(fx, fz);
-                c = c.min(profile_at_foot(p, t, d2, h, wall, sill, spur).0);
+                c = c.min(profile_at_foot(p, t, d2, h, wall, sill).0);
             }
         }
         c.max(h - CARVE_MAX_M)

@@ -10,8 +10,8 @@
 //! which is what the scalar carve returns for them (`h.max(h − CARVE_MAX_M)` is `h`).
 
 use super::super::super::fractal::lattice_n;
-use super::carve::{foot, foot_point, smoothstep, spur_step, Piece, RiverJob, SKIP_MARGIN_M};
-use super::{CARVE_MAX_M, SPUR_INV_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
+use super::carve::{foot, smoothstep, spur_step, Piece, RiverJob, SKIP_MARGIN_M};
+use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
 /// it unrolls a loop of eight and then does not).
@@ -32,8 +32,7 @@ fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 }
 
 /// The value noise of stream `seed` at `(x, z) · inv_m` of `LANES` points, each clamped to
-/// ±[`WALL_NOISE_CLAMP`]: the walls' width noise and the spur noise, as the scalar code reads
-/// them.
+/// ±[`WALL_NOISE_CLAMP`]: the walls' width noise as the scalar code reads it.
 fn clamped_noise(x: &L, z: &L, inv_m: f32, seed: u32) -> L {
     let qx: L = std::array::from_fn(|l| x[l] * inv_m);
     let qz: L = std::array::from_fn(|l| z[l] * inv_m);
@@ -148,20 +147,6 @@ impl RiverJob {
         std::array::from_fn(|l| self.wall_noise * (n[l] + WALL_NOISE_CLAMP))
     }
 
-    /// [`RiverJob::spur`] at the feet of `LANES` samples on piece `p` (in worlds without spurs
-    /// zeros, without finding the feet: the carve's loop finds them, and keeps its shape).
-    fn spur_lanes(&self, p: &Piece, x: &L, z: &L) -> L {
-        if self.spur_scale == 0.0 {
-            return [0.0; LANES];
-        }
-        let (mut fx, mut fz) = ([0.0; LANES], [0.0; LANES]);
-        for l in 0..LANES {
-            (_, _, fx[l], fz[l]) = foot_point(p, x[l], z[l]);
-        }
-        let n = clamped_noise(&fx, &fz, SPUR_INV_M, self.spur_seed);
-        std::array::from_fn(|l| n[l] * self.spur_scale)
-    }
-
     /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
     /// `entries`, with the sills' levels and weights `sill` (weight 0: none): the lowest of the
     /// pieces' profiles, each applied where the scalar code applies it, at most
@@ -173,11 +158,10 @@ impl RiverJob {
             // A copy: LLVM does not vectorise the loop below while it reads the piece through a
             // reference it cannot prove unaliased with `c`.
             let p = &{ self.pieces[i as usize] };
-            if self.spur_scale == 0.0 {
-                piece_lanes::<false>(p, r2, x, z, h, &wall, &[0.0; LANES], sill, &mut c);
+            if p.spur_a == 0.0 && p.spur_b == 0.0 {
+                piece_lanes::<false>(p, r2, x, z, h, &wall, sill, &mut c);
             } else {
-                let spur = self.spur_lanes(p, x, z);
-                piece_lanes::<true>(p, r2, x, z, h, &wall, &spur, sill, &mut c);
+                piece_lanes::<true>(p, r2, x, z, h, &wall, sill, &mut c);
             }
         }
         for l in 0..LANES {
@@ -188,10 +172,11 @@ impl RiverJob {
 }
 
 /// Piece `p`'s profile ([`super::carve::profile`] with the walls' added width `wall`, the
-/// spurs' values `spur` where `SPURS`, and the sills `sill`) applied to `LANES` samples of
-/// heights `h` whose carve so far is `c`, where [`RiverJob::carve_pruned`] applies it (`r2`:
-/// the piece's pruned squared radius). Without spurs the wall's step is the plain smoothstep,
-/// which the spur step with `s = 0` equals bit for bit; the two loops only differ in cost.
+/// piece's spurs where `SPURS`, and the sills `sill`) applied to `LANES` samples of heights `h`
+/// whose carve so far is `c`, where [`RiverJob::carve_pruned`] applies it (`r2`: the piece's
+/// pruned squared radius). Without spurs (both ends' values 0) the wall's step is the plain
+/// smoothstep, which the spur step with `s = 0` equals bit for bit; the two loops differ only
+/// in cost.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn piece_lanes<const SPURS: bool>(
@@ -201,7 +186,6 @@ fn piece_lanes<const SPURS: bool>(
     z: &L,
     h: &L,
     wall: &L,
-    spur: &L,
     sill: (&L, &L),
     c: &mut L,
 ) {
@@ -221,7 +205,7 @@ fn piece_lanes<const SPURS: bool>(
         let slope = p.slope_a + (p.slope_b - p.slope_a) * t;
         let v = clamp(floor + (hl - w) / slope + wall[l], p.valley, p.reach);
         let g = if SPURS {
-            spur_step(floor, v, d, spur[l])
+            spur_step(floor, v, d, p.spur_a + (p.spur_b - p.spur_a) * t)
         } else {
             smoothstep(floor, v, d)
         };

@@ -71,7 +71,7 @@
 //!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
 //!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
 //!    read as canals. With `valleys: 5` (the default of new worlds: the valleys of `4`) each wall's smoothstep
-//!    runs over a place bent by a spur value read at the sample's foot on the river ([`SPUR`]):
+//!    runs over a place bent by a spur value at the sample's foot on the river ([`SPUR`]):
 //!    spurs and hollows run straight down each wall to its river, and where the walls of two
 //!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
 //!    wanders with both rivers' spurs instead of running straight, equidistant from them.
@@ -170,14 +170,16 @@ pub const WALL_NOISE_INV_M: f32 = 1.0 / WALL_NOISE_M;
 /// Largest magnitude of the walls' noise value `n`.
 pub const WALL_NOISE_CLAMP: f32 = 1.5;
 /// Largest spur value of the `valleys: 5` walls: a sample's place `u` in `[0, 1]` between the
-/// floor's edge and the valley's edge is bent to `u + s·u·(1 − u)`, `s` = `SPUR ·` value noise
-/// of wavelength [`SPUR_M`] read at the sample's foot on the river and clamped as the walls'
-/// noise is ([`WALL_NOISE_CLAMP`]). A wall rises sooner where `s > 0` (a spur reaching towards
-/// the river) and later where `s < 0` (a hollow between spurs); since `s` depends on the foot
-/// only, spurs and hollows run straight down the wall to the river, as they do on eroded
-/// valley sides, and where the walls of two valleys meet, the crease between them wanders with
-/// both rivers' spurs instead of running as the straight line equidistant from them. `|s| < 1`,
-/// so the bent place still rises monotonically across the wall: the spurs add no pit.
+/// floor's edge and the valley's edge is bent to `u + s·u·(1 − u)`, `s` linear along each piece
+/// between `SPUR ·` value noise of wavelength [`SPUR_M`] read at its ends and clamped as the
+/// walls' noise is ([`WALL_NOISE_CLAMP`]). A wall rises sooner where `s > 0` (a spur reaching
+/// towards the river) and later where `s < 0` (a hollow between spurs); since `s` depends on
+/// the sample's foot on the river only, spurs and hollows run straight down the wall to the
+/// river, as they do on eroded valley sides, and where the walls of two valleys meet, the
+/// crease between them wanders with both rivers' spurs instead of running as the straight line
+/// equidistant from them. `|s| < 1`, so the bent place still rises monotonically across the
+/// wall: the spurs add no pit. (Reading the noise at the ends, not at each foot, keeps the
+/// carve's cost: a sample pays one interpolation per piece.)
 pub const SPUR: f32 = 0.9;
 /// Wavelength of the spur noise along the river, metres.
 pub const SPUR_M: f32 = 560.0;
@@ -279,7 +281,8 @@ pub struct RiverPlan {
     /// Whether each piece's floodplain width and wall slope vary along the river
     /// (`valleys: 4` and `5`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
     pub varied_valleys: bool,
-    /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0.
+    /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0
+    /// ([`RiverPlan::spur_at`]).
     pub spur_scale: f32,
     /// Stream seed of the spur noise.
     pub spur_seed: u32,
@@ -370,6 +373,19 @@ impl RiverPlan {
             (floodplain * f).max(floodplain.min(FLOOR_NARROWEST_M)),
             WALL_SLOPE * s,
         )
+    }
+
+    /// The walls' spur value at the point `(x, z)` of a centre line ([`SPUR`]): `spur_scale ·`
+    /// the spur noise there clamped to ±[`WALL_NOISE_CLAMP`], so `|s| ≤ SPUR`; exactly 0 in
+    /// worlds without spurs. A piece keeps the values at its ends ([`Piece::spur_a`],
+    /// [`Piece::spur_b`]; pieces that meet share the point, so they agree) and its walls take
+    /// the value linear between them at each sample's foot.
+    pub fn spur_at(&self, x: f32, z: f32) -> f32 {
+        if self.spur_scale == 0.0 {
+            return 0.0;
+        }
+        let n = lattice(x * SPUR_INV_M, z * SPUR_INV_M, self.spur_seed);
+        n.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) * self.spur_scale
     }
 
     fn jitter(&self, i: i64, k: i64) -> (f32, f32) {
