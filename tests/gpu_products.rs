@@ -178,7 +178,12 @@ async fn every_twinned_stage_runs_on_the_device_and_its_products_match_the_cpu()
     // The twins differ from the CPU by a few ULP per sample, which travel through the diffusion;
     // the surface then moves by far less than a voxel, so every vertex of one mesh lies within
     // a millimetre (a thousandth of the 1 m spacing; measured: 5e-5 m on lavapipe) of a vertex
-    // of the other, and a sign flip near the surface may add or drop a vertex or two.
+    // of the other, and a sign flip near the surface may add or drop a vertex or two. Where a
+    // chunk holds the ground of the authored region, the ground is the tiles' heights, which
+    // differ by the solves' tolerance above (`worst_h`), and its vertices move with it: by up to
+    // twice that where the ground is steep and a crossing slides along a level edge (measured:
+    // 3.7 mm beside heights 2.75 mm apart), so the bound is 1 mm plus twice `worst_h`.
+    let vertex_bound = 1e-3 + 2.0 * worst_h;
     let ground = ground_at(32, 24);
     let y0 = (f64::from(ground) / 32.0).floor() as i64;
     let mut compared = 0;
@@ -200,8 +205,8 @@ async fn every_twinned_stage_runs_on_the_device_and_its_products_match_the_cpu()
         );
         assert!((ratio - 1.0).abs() <= 0.01, "vertex counts {ratio}");
         assert!(
-            d <= 1e-3,
-            "chunk ({x}, {y}): a vertex {d} m from the other mesh"
+            d <= vertex_bound,
+            "chunk ({x}, {y}): a vertex {d} m from the other mesh (bound {vertex_bound} m)"
         );
         compared += 1;
     }
