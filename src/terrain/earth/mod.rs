@@ -468,16 +468,6 @@ pub fn macro_elevation(elev: f32, amp: f32, ridge: f32) -> f32 {
     elev + 0.33 * amp * ridge
 }
 
-/// [`macro_elevation`] at world positions.
-pub fn macro_elevation_batch(plan: &EarthPlan, xs: &[f32], zs: &[f32], out: &mut [f32]) {
-    let n = xs.len();
-    let (mut e, mut a, mut r) = (vec![0.0f32; n], vec![0.0f32; n], vec![0.0f32; n]);
-    macro_fields_batch(plan, xs, zs, &mut e, &mut a, &mut r);
-    for (k, o) in out.iter_mut().enumerate().take(n) {
-        *o = macro_elevation(e[k], a[k], r[k]);
-    }
-}
-
 /// Heights and biome weights of a job's lattice samples: the CPU reference of `earth-1` (the
 /// WGSL twin is `shaders/earth.wgsl`).
 pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {

@@ -31,16 +31,6 @@ fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
     }
 }
 
-/// The value noise of stream `seed` at `(x, z) · inv_m` of `LANES` points, each clamped to
-/// ±[`WALL_NOISE_CLAMP`]: the walls' width noise as the scalar code reads it.
-fn clamped_noise(x: &L, z: &L, inv_m: f32, seed: u32) -> L {
-    let qx: L = std::array::from_fn(|l| x[l] * inv_m);
-    let qz: L = std::array::from_fn(|l| z[l] * inv_m);
-    let mut n = [0.0; LANES];
-    lattice_n(&qx, &qz, seed, &mut n);
-    n.map(|v| v.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP))
-}
-
 impl RiverJob {
     /// Carves the grid of samples at `(xs[i], zs[j])` (metres) whose heights are
     /// `heights[j · xs.len() + i]`: each gets [`RiverJob::carve_pruned`] with the bins pruned
@@ -143,8 +133,13 @@ impl RiverJob {
         if self.wall_noise == 0.0 {
             return [0.0; LANES];
         }
-        let n = clamped_noise(x, z, WALL_NOISE_INV_M, self.wall_seed);
-        std::array::from_fn(|l| self.wall_noise * (n[l] + WALL_NOISE_CLAMP))
+        let qx: L = std::array::from_fn(|l| x[l] * WALL_NOISE_INV_M);
+        let qz: L = std::array::from_fn(|l| z[l] * WALL_NOISE_INV_M);
+        let mut n = [0.0; LANES];
+        lattice_n(&qx, &qz, self.wall_seed, &mut n);
+        n.map(|v| {
+            self.wall_noise * (v.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP)
+        })
     }
 
     /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
