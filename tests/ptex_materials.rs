@@ -8,7 +8,9 @@
 //! - a decal changes texels inside its rectangle only, its mask's edge blends, and a re-bake
 //!   gives the same bytes;
 //! - over HTTP: images upload and read back by content hash, edits naming them change the pages
-//!   of the new version only, and bad input is refused with the field and the limit.
+//!   of the new version only, and bad input is refused with the field and the limit;
+//! - the decoded images stay within their share of `--memory-budget`, and images the cache let
+//!   go are decoded again into the same pages.
 
 use axum::http::{Method, StatusCode};
 use axum::Router;
@@ -473,6 +475,81 @@ async fn an_uploaded_decal_shows_in_the_pages_of_the_new_version_and_bad_input_i
     assert_eq!(
         get_as(&app, &far, &token).await.body,
         get_as(&app, &format!("{far}&v=1"), &token).await.body
+    );
+}
+
+/// `strata_cache_bytes` and `strata_cache_budget_bytes` of the `images` cache, from `/metrics`.
+async fn image_cache_bytes(app: &Router) -> (f64, f64) {
+    let m = send::<&str>(app, Method::GET, "/metrics", &[], None).await;
+    let text = String::from_utf8_lossy(&m.body).to_string();
+    let read = |name: &str| {
+        let line = format!("{name}{{cache=\"images\"}} ");
+        text.lines()
+            .find_map(|l| l.strip_prefix(line.as_str()))
+            .and_then(|v| v.trim().parse::<f64>().ok())
+            .unwrap_or_else(|| panic!("{line} missing from /metrics"))
+    };
+    (
+        read("strata_cache_bytes"),
+        read("strata_cache_budget_bytes"),
+    )
+}
+
+#[tokio::test]
+async fn decoded_images_stay_within_their_share_of_the_memory_budget_and_bake_the_same_pages() {
+    // A 2 MiB budget leaves the images 256 KiB: three of the four 128² images below (87,380
+    // bytes each with their mip chain) fit, the fourth evicts one.
+    let dir = tempfile::tempdir().expect("tmp");
+    let store: Arc<dyn SceneStore> = Arc::new(SqliteStore::open_in_dir(dir.path()).expect("store"));
+    let small = app(AppState::new(Compute::cpu())
+        .with_memory_budget(strata::server::budget::MemoryBudget::from_mb(2))
+        .with_worlds(store, None));
+    let (id, token) = private_world(&small, SEED).await;
+    let mut patch = Vec::new();
+    for (i, name) in ["rock", "grass", "sand", "dirt"].into_iter().enumerate() {
+        let png = common::png::rgba(128, 128, |x, y| {
+            let on = (x / 16 + y / 16) % 2 == 0;
+            [40 * i as u8 + if on { 90 } else { 10 }, 200, 30, 255]
+        });
+        upload(&small, &id, Some(&token), &png)
+            .await
+            .status_is(StatusCode::CREATED);
+        patch.push(json!({"op": "add", "path": "/materials/-", "value": {
+            "id": format!("m{i}"), "bbox": {"min": [0, 0], "max": [0, 0]}, "name": name,
+            "texture": {"albedo": hash_hex(&image_hash(&png)), "repeat_m": 4}}}));
+    }
+    edit(&small, &id, &token, Value::Array(patch)).await.ok();
+
+    let pages = [
+        format!("/v1/worlds/{id}/ptex/tiles/2/3/-2?res=16"),
+        format!("/v1/worlds/{id}/ptex/tiles/0/-1/1?res=32"),
+        format!("/v1/worlds/{id}/ptex/tiles/1/0/0?res=16"),
+    ];
+    let mut first = Vec::new();
+    for page in &pages {
+        let r = get_as(&small, page, &token).await;
+        r.ok();
+        first.push(r.body);
+        let (bytes, budget) = image_cache_bytes(&small).await;
+        assert_eq!(budget, (256 << 10) as f64);
+        assert!(
+            bytes > 0.0 && bytes <= budget,
+            "{bytes} bytes of images against {budget}"
+        );
+    }
+    // A server with the default budget, on the same store, bakes the same pages: the images the
+    // small one let go and decoded again gave the same texels.
+    let big = service(dir.path());
+    for (page, body) in pages.iter().zip(&first) {
+        let r = get_as(&big, page, &token).await;
+        r.ok();
+        assert_eq!(&r.body, body, "{page}");
+    }
+    let (bytes, _) = image_cache_bytes(&big).await;
+    assert_eq!(
+        bytes,
+        4.0 * (87_380.0 + 128.0),
+        "the default share holds all four"
     );
 }
 

@@ -1,11 +1,12 @@
 //! The process-wide memory budget of the caches (`strata serve --memory-budget MB`, or
 //! `STRATA_MEMORY_BUDGET`; default [`DEFAULT_MEMORY_BUDGET_MB`] = 512 MiB), split between the
-//! five caches by fixed fractions, since each is its own [`crate::cache::Memo`]:
+//! seven caches by fixed fractions, since each is its own [`crate::cache::Memo`]:
 //!
 //! | cache | share | default |
 //! |---|---|---|
-//! | stage cache, finished tiles ([`crate::cache::StageCache`]) | 1/2 | 256 MiB |
+//! | stage cache, finished tiles ([`crate::cache::StageCache`]) | 3/8 | 192 MiB |
 //! | encoded bodies ([`super::bodies::BodyCache`]) | 1/4 | 128 MiB |
+//! | decoded images of materials and decals ([`super::images::ImageCache`]) | 1/8 | 64 MiB |
 //! | solved authored regions ([`super::regions::RegionCache`]) | 1/8 | 64 MiB |
 //! | solved volume regions ([`super::volumes::VolumeCache`]) | 1/16 | 32 MiB |
 //! | world plans of stored worlds (`worlds::VersionPlans`) | 3/64 | 24 MiB |
@@ -27,6 +28,8 @@ pub struct MemoryBudget {
     pub total: usize,
     /// Stage cache (memory tier).
     pub stage: usize,
+    /// Decoded images of the worlds' materials and decals.
+    pub images: usize,
     /// Encoded bodies.
     pub bodies: usize,
     /// Solved volume regions.
@@ -45,7 +48,8 @@ impl MemoryBudget {
         let part = |n: usize, d: usize| total / d * n;
         Self {
             total,
-            stage: part(1, 2),
+            stage: part(3, 8),
+            images: part(1, 8),
             bodies: part(1, 4),
             volumes: part(1, 16),
             regions: part(1, 8),
@@ -73,12 +77,15 @@ mod tests {
     #[test]
     fn the_shares_add_up_to_the_budget_and_keep_todays_defaults() {
         let b = MemoryBudget::default();
-        let sum = b.stage + b.bodies + b.volumes + b.regions + b.world_plans + b.seed_plans;
+        let sum =
+            b.stage + b.images + b.bodies + b.volumes + b.regions + b.world_plans + b.seed_plans;
         assert_eq!(sum, b.total);
-        assert_eq!(b.stage, crate::cache::DEFAULT_BUDGET_BYTES);
+        // The images' eighth came out of the stage cache's half.
+        assert_eq!(b.stage + b.images, crate::cache::DEFAULT_BUDGET_BYTES);
+        assert_eq!(b.images, 64 << 20);
         assert_eq!(b.bodies, super::super::bodies::DEFAULT_BODY_BUDGET_BYTES);
         let odd = MemoryBudget::new(1_000_003);
-        let sum = odd.stage + odd.bodies + odd.volumes + odd.regions;
+        let sum = odd.stage + odd.images + odd.bodies + odd.volumes + odd.regions;
         assert!(sum + odd.world_plans + odd.seed_plans <= odd.total);
     }
 
@@ -87,7 +94,8 @@ mod tests {
         let b = MemoryBudget::from_mb(64);
         let st = super::super::AppState::new(crate::compute::Compute::cpu()).with_memory_budget(b);
         assert_eq!(st.memory_budget(), b);
-        assert_eq!(st.cache.budget_bytes(), 32 << 20);
+        assert_eq!(st.cache.budget_bytes(), 24 << 20);
+        assert_eq!(st.images.stats().budget_bytes, 8 << 20);
         assert_eq!(st.bodies.budget_bytes(), 16 << 20);
         assert_eq!(st.volumes.size().2, 4 << 20);
         assert_eq!(st.regions.size().2, 8 << 20);

@@ -122,15 +122,15 @@ async fn download(
     Ok(res)
 }
 
-/// Decoded images by hash, held weakly: the views that use an image share one decode (every edit
-/// makes a new version and view), and it is freed with the last of them. Hashes name bytes, so
-/// worlds holding the same image share it too.
+/// Decoded images by hash, held weakly: whoever holds an image (a bake under way, a stream
+/// session's batch) shares one decode with every other user, also after [`ImageCache`] let it
+/// go. Hashes name bytes, so worlds holding the same image share it too.
 fn live() -> &'static Mutex<HashMap<[u8; 32], Weak<Image>>> {
     static LIVE: OnceLock<Mutex<HashMap<[u8; 32], Weak<Image>>>> = OnceLock::new();
     LIVE.get_or_init(Mutex::default)
 }
 
-/// The decoded image `hash` if a view holds it.
+/// The decoded image `hash` if anyone holds it.
 fn held(hash: &[u8; 32]) -> Option<Arc<Image>> {
     let map = live().lock().unwrap_or_else(|p| p.into_inner());
     map.get(hash).and_then(Weak::upgrade)
@@ -148,10 +148,81 @@ fn decoded(hash: [u8; 32], png: &[u8]) -> Result<Arc<Image>, AppError> {
     Ok(img)
 }
 
+/// The decoded images of the worlds' materials and decals, by hash, within their share of
+/// `--memory-budget` ([`super::budget`]), each weighed by its texels (every mip level). A world
+/// version's [`MaterialSet`] is built from it on every use and held only while a bake runs, so
+/// the images held besides the cache are those of the bakes under way; one that was let go is
+/// read from the store and decoded again (the same bytes, so the same texels).
+pub struct ImageCache {
+    memo: crate::cache::Memo<[u8; 32], Arc<Image>>,
+}
+
+impl std::fmt::Debug for ImageCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ImageCache")
+            .field("budget", &self.memo.budget_bytes())
+            .finish()
+    }
+}
+
+impl Default for ImageCache {
+    fn default() -> Self {
+        Self::new(super::budget::MemoryBudget::default().images)
+    }
+}
+
+impl ImageCache {
+    /// An empty cache of at most `budget_bytes`.
+    pub fn new(budget_bytes: usize) -> Self {
+        Self {
+            memo: crate::cache::Memo::new(budget_bytes, |_, img: &Arc<Image>| img.bytes()),
+        }
+    }
+
+    /// Hits, misses, evictions and bytes.
+    pub fn stats(&self) -> crate::cache::MemoStats {
+        self.memo.stats()
+    }
+
+    /// Image `h` of world `id`: from the cache, from a holder, or read from the store and
+    /// decoded on the blocking pool; `None` if the store lacks it.
+    async fn get(
+        &self,
+        st: &AppState,
+        id: &str,
+        h: [u8; 32],
+    ) -> Result<Option<Arc<Image>>, AppError> {
+        let got = self
+            .memo
+            .try_get_or_compute_async(h, || async {
+                if let Some(img) = held(&h) {
+                    return Ok(img);
+                }
+                let png = st
+                    .worlds
+                    .store
+                    .image(id, h)
+                    .await
+                    .map_err(store_error)?
+                    .ok_or(None)?;
+                tokio::task::spawn_blocking(move || decoded(h, &png))
+                    .await
+                    .map_err(|e| AppError::internal(format!("decoding an image failed: {e}")))?
+                    .map_err(Some)
+            })
+            .await;
+        match got {
+            Ok((img, _)) => Ok(Some(img)),
+            Err(None) => Ok(None),
+            Err(Some(e)) => Err(e),
+        }
+    }
+}
+
 /// The materials (and decals) world `view`'s pages bake with: the default set when its scene
 /// has no `materials` or `decals` (a bare seed, or a world without them: the bytes of before
-/// these elements), else the set its elements make with their images loaded from the store and
-/// decoded. Built once per view.
+/// these elements), else the set its elements make with their images from [`ImageCache`].
+/// Built on every call (the images are the only heavy part); hold it only while baking.
 ///
 /// # Errors
 /// A store failure, or a stored image that no longer decodes (500).
@@ -159,44 +230,28 @@ pub async fn world_materials(
     st: &AppState,
     view: &WorldView,
 ) -> Result<Arc<MaterialSet>, AppError> {
-    view.materials
-        .get_or_try_init(|| async {
-            let specs = view.inputs.ptex().clone();
-            let seed = view.seed();
-            let Some((id, _)) = &view.world else {
-                return Ok(Arc::new(MaterialSet::default_ground(seed)));
-            };
-            if specs.is_empty() {
-                return Ok(Arc::new(MaterialSet::default_ground(seed)));
+    let specs = view.inputs.ptex();
+    let seed = view.seed();
+    let Some((id, _)) = &view.world else {
+        return Ok(Arc::new(MaterialSet::default_ground(seed)));
+    };
+    if specs.is_empty() {
+        return Ok(Arc::new(MaterialSet::default_ground(seed)));
+    }
+    let mut images: HashMap<[u8; 32], Arc<Image>> = HashMap::new();
+    for h in specs.images() {
+        if images.contains_key(&h) {
+            continue;
+        }
+        match st.images.get(st, id, h).await? {
+            Some(img) => {
+                images.insert(h, img);
             }
-            let mut images: HashMap<[u8; 32], Arc<Image>> = HashMap::new();
-            let mut pngs = Vec::new();
-            for h in specs.images() {
-                if images.contains_key(&h) || pngs.iter().any(|(k, _)| *k == h) {
-                    continue;
-                }
-                if let Some(img) = held(&h) {
-                    images.insert(h, img);
-                    continue;
-                }
-                match st.worlds.store.image(id, h).await.map_err(store_error)? {
-                    Some(png) => pngs.push((h, png)),
-                    None => {
-                        let image = hash_hex(&h);
-                        tracing::error!(world = %id, %image, "a scene names an image the store lacks");
-                    }
-                }
+            None => {
+                let image = hash_hex(&h);
+                tracing::error!(world = %id, %image, "a scene names an image the store lacks");
             }
-            let set = tokio::task::spawn_blocking(move || {
-                for (h, png) in pngs {
-                    images.insert(h, decoded(h, &png)?);
-                }
-                Ok::<_, AppError>(specs.set(seed, &images))
-            })
-            .await
-            .map_err(|e| AppError::internal(format!("loading the materials failed: {e}")))??;
-            Ok(Arc::new(set))
-        })
-        .await
-        .cloned()
+        }
+    }
+    Ok(Arc::new(specs.set(seed, &images)))
 }

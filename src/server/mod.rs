@@ -149,6 +149,8 @@ pub struct AppState {
     pub regions: Arc<regions::RegionCache>,
     /// Solved volume regions.
     pub volumes: Arc<volumes::VolumeCache>,
+    /// Decoded images of the worlds' materials and decals.
+    pub images: Arc<images::ImageCache>,
     /// Open stream sessions and the signal that closes them at shutdown.
     pub sessions: Sessions,
     /// Origins besides the server's own that may call every route from a browser.
@@ -181,7 +183,7 @@ impl AppState {
             web: None,
             worlds: Arc::new(worlds::Worlds::new(store, None)),
             metrics: Arc::default(),
-            cache: Arc::new(StageCache::default()),
+            cache: Arc::new(StageCache::new(budget::MemoryBudget::default().stage)),
             bodies: Arc::default(),
             jobs: Arc::new(jobs::Jobs::new(
                 default_jobs_dir(),
@@ -189,6 +191,7 @@ impl AppState {
             )),
             regions: Arc::default(),
             volumes: Arc::default(),
+            images: Arc::default(),
             sessions: Sessions::default(),
             cors: cors::CorsOrigins::default(),
             rate: Arc::default(),
@@ -240,6 +243,7 @@ impl AppState {
         self.bodies = Arc::new(bodies::BodyCache::new(budget.bodies));
         self.regions = Arc::new(regions::RegionCache::new(budget.regions));
         self.volumes = Arc::new(volumes::VolumeCache::new(budget.volumes));
+        self.images = Arc::new(images::ImageCache::new(budget.images));
         self.plans = Arc::new(PlanCache::new(
             self.limits.plan_cache_seeds,
             budget.seed_plans,
@@ -259,8 +263,8 @@ impl AppState {
         self.budget
     }
 
-    /// Keeps finished tiles in `cache` instead of a memory-only cache of
-    /// [`crate::cache::DEFAULT_BUDGET_BYTES`].
+    /// Keeps finished tiles in `cache` instead of a memory-only cache of the budget's stage
+    /// share ([`budget::MemoryBudget::stage`]).
     pub fn with_cache(mut self, cache: StageCache) -> Self {
         self.cache = Arc::new(cache);
         self

@@ -36,9 +36,6 @@ pub struct WorldView {
     pub plan: Arc<WorldPlan>,
     /// The parsed scene's elements and digests.
     pub inputs: Arc<SceneInputs>,
-    /// The materials and decals its Ptex pages bake with, loaded on first use
-    /// ([`super::images::world_materials`]).
-    pub materials: tokio::sync::OnceCell<Arc<crate::ptex::MaterialSet>>,
 }
 
 impl WorldView {
@@ -48,7 +45,6 @@ impl WorldView {
             world: Some((id.to_owned(), version)),
             plan,
             inputs,
-            materials: tokio::sync::OnceCell::new(),
         }
     }
 
@@ -59,7 +55,6 @@ impl WorldView {
             world: None,
             plan,
             inputs,
-            materials: tokio::sync::OnceCell::new(),
         }
     }
 
