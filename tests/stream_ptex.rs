@@ -3,7 +3,8 @@
 //! sequence of view messages) never makes the client hold more than its session's budget, keeps
 //! the vista level complete for every face of the view, gives the nearest faces in view the
 //! highest levels, and serves the HTTP route's bytes; an edit re-bakes only the faces it
-//! touched; the server's budget refuses a session it cannot hold.
+//! touched, and an edit of the materials re-bakes the pages without re-sending a tile; the
+//! server's budget refuses a session it cannot hold.
 
 use serde_json::{json, Value};
 use std::collections::{HashMap, HashSet};
@@ -160,7 +161,16 @@ impl Replica {
 /// Reads until `idle`, granting a credit per frame and checking the budget after each; returns
 /// the Ptex frames and the text messages.
 async fn until_idle(ws: &mut Ws, replica: &mut Replica) -> (Vec<PtexFrame>, Vec<Value>) {
-    let (mut frames, mut msgs) = (Vec::new(), Vec::new());
+    let (frames, msgs, _) = until_idle_counting_tiles(ws, replica).await;
+    (frames, msgs)
+}
+
+/// [`until_idle`], and the number of tile frames that came.
+async fn until_idle_counting_tiles(
+    ws: &mut Ws,
+    replica: &mut Replica,
+) -> (Vec<PtexFrame>, Vec<Value>, usize) {
+    let (mut frames, mut msgs, mut tiles) = (Vec::new(), Vec::new(), 0);
     loop {
         match next(ws).await {
             Message::Binary(b) => {
@@ -170,6 +180,7 @@ async fn until_idle(ws: &mut Ws, replica: &mut Replica) -> (Vec<PtexFrame>, Vec<
                     frames.push(f);
                 } else {
                     TileFrame::decode(&b).expect("a tile or Ptex frame");
+                    tiles += 1;
                 }
                 assert!(
                     replica.bytes() <= replica.budget,
@@ -187,7 +198,7 @@ async fn until_idle(ws: &mut Ws, replica: &mut Replica) -> (Vec<PtexFrame>, Vec<
                 let idle = v["type"] == "idle";
                 msgs.push(v);
                 if idle {
-                    return (frames, msgs);
+                    return (frames, msgs, tiles);
                 }
             }
             _ => {}
@@ -431,6 +442,38 @@ async fn an_edit_rebakes_only_the_faces_it_touched() {
             );
         }
     }
+
+    // A material override changes every page and no tile: the pages come again, the tiles do
+    // not (no invalidation, no tile frame).
+    let material = json!({"id": "m", "bbox": {"min": [0, 0], "max": [0, 0]}, "name": "grass",
+        "base": [0.6, 0.2, 0.1]});
+    send(
+        &mut ws,
+        json!({"type": "edit", "id": "e2",
+               "patch": [{"op": "add", "path": "/materials/-", "value": material}]}),
+    )
+    .await;
+    let (frames, msgs, tile_frames) = until_idle_counting_tiles(&mut ws, &mut replica).await;
+    assert!(
+        msgs.iter().any(|m| m["type"] == "ack" && m["version"] == 3),
+        "{msgs:?}"
+    );
+    assert!(
+        !msgs.iter().any(|m| m["type"] == "invalidate"),
+        "a material edit invalidates no tile: {msgs:?}"
+    );
+    assert_eq!(tile_frames, 0, "a material edit re-sends no tile");
+    let vista: HashSet<TileFaceKey> = frames
+        .iter()
+        .filter(|f| f.level == 0)
+        .flat_map(|f| f.records.iter().map(tile_face))
+        .collect();
+    assert_eq!(
+        vista,
+        faces_of(&tiles).into_iter().collect(),
+        "every vista page is baked again with the new material"
+    );
+    assert!(frames.iter().all(|f| f.version == 3));
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

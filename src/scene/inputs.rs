@@ -10,7 +10,9 @@
 //! 5. the seam flags `n, e, s, w` (one byte each, 0 or 1);
 //! 6. the number of scene elements that [reach](tile_reach) the tile (`u64`), then for each of
 //!    them, in [`super::ELEMENT_KINDS`] order and document order within an array: the index of
-//!    its array (`u8`) and blake3 of the element's canonical JSON.
+//!    its array (`u8`) and blake3 of the element's canonical JSON. Only the arrays that shape
+//!    the surface count ([`super::shapes_surface`]): `materials` and `decals` change Ptex pages,
+//!    never a tile's bytes, so they are not a tile's inputs.
 //!
 //! Canonical JSON: no whitespace, object keys sorted by their UTF-8 bytes, strings escaped as
 //! serde_json escapes them, numbers as serde_json prints them (shortest round-trip form).
@@ -157,6 +159,7 @@ pub struct SceneInputs {
     world: WorldParams,
     world_digest: [u8; 32],
     elements: Vec<ElementInput>,
+    surface_digest: [u8; 32],
     regions: Vec<RegionInput>,
     strata: Vec<StrataInput>,
     volumes: Vec<VolumeInput>,
@@ -224,7 +227,7 @@ pub struct RegionInput {
 impl SceneInputs {
     /// The inputs of a scene.
     pub fn new(scene: &Scene) -> Self {
-        let elements = scene
+        let elements: Vec<ElementInput> = scene
             .kinds()
             .into_iter()
             .enumerate()
@@ -237,6 +240,7 @@ impl SceneInputs {
             })
             .collect();
         let world_digest = digest(&scene.world);
+        let surface_digest = surface_digest(&world_digest, &elements);
         let regions = scene
             .regions
             .iter()
@@ -279,6 +283,7 @@ impl SceneInputs {
         Self {
             world: scene.world.clone(),
             world_digest,
+            surface_digest,
             elements,
             regions,
             strata,
@@ -353,9 +358,11 @@ impl SceneInputs {
 
     /// The inputs of a world with these settings and no elements (a bare seed's world).
     pub fn bare(world: &WorldParams) -> Self {
+        let world_digest = digest(world);
         Self {
             world: world.clone(),
-            world_digest: digest(world),
+            surface_digest: surface_digest(&world_digest, &[]),
+            world_digest,
             elements: Vec::new(),
             regions: Vec::new(),
             strata: Vec::new(),
@@ -367,6 +374,13 @@ impl SceneInputs {
     /// The world settings.
     pub fn world(&self) -> &WorldParams {
         &self.world
+    }
+
+    /// Digest of everything tiles and volume chunks read: the world settings and the elements
+    /// of the arrays that shape the surface ([`super::shapes_surface`]), in order. Two versions
+    /// with equal digests have the same tiles and chunks; they may differ in their Ptex pages.
+    pub fn surface_digest(&self) -> [u8; 32] {
+        self.surface_digest
     }
 
     /// Number of elements of the scene.
@@ -390,7 +404,7 @@ impl SceneInputs {
         let touching: Vec<&ElementInput> = self
             .elements
             .iter()
-            .filter(|e| e.rect.intersects(&reach))
+            .filter(|e| super::shapes_surface(e.kind as usize) && e.rect.intersects(&reach))
             .collect();
         let mut h = blake3::Hasher::new();
         h.update(INPUTS_DOMAIN);
@@ -408,6 +422,22 @@ impl SceneInputs {
         }
         *h.finalize().as_bytes()
     }
+}
+
+/// [`SceneInputs::surface_digest`] of a scene whose world digest is `world` and whose elements are
+/// `elements`.
+fn surface_digest(world: &[u8; 32], elements: &[ElementInput]) -> [u8; 32] {
+    let mut h = blake3::Hasher::new();
+    h.update(b"strata.surface\0");
+    h.update(world);
+    for e in elements
+        .iter()
+        .filter(|e| super::shapes_surface(e.kind as usize))
+    {
+        h.update(&[e.kind]);
+        h.update(&e.digest);
+    }
+    *h.finalize().as_bytes()
 }
 
 /// The input hash of tile `key` (seam flags `seams`) of the world `(seed, scene)`; see the module
@@ -531,7 +561,8 @@ mod tests {
             ),
             (
                 "element array",
-                json!({"decals": [region("r", [90.0, 90.0], [100.0, 100.0], 1)]}),
+                json!({"strata": [{"id": "r", "bbox": {"min": [90.0, 90.0], "max": [100.0, 100.0]},
+                                   "preset": "A3"}]}),
             ),
             (
                 "element added",
@@ -557,6 +588,39 @@ mod tests {
             SceneInputs::new(&ab).tile(7, KEY, [false; 4]),
             SceneInputs::new(&ba).tile(7, KEY, [false; 4]),
             "order"
+        );
+    }
+
+    #[test]
+    fn materials_and_decals_are_not_a_tiles_inputs_nor_its_surface() {
+        let base_scene = with_regions(json!([region("r", [90.0, 90.0], [100.0, 100.0], 1)]));
+        let base = SceneInputs::new(&base_scene);
+        let mut ptex = base_scene.to_value();
+        ptex["decals"] = json!([region("d", [90.0, 90.0], [100.0, 100.0], 1)]);
+        ptex["materials"] = json!([region("m", [0.0, 0.0], [0.0, 0.0], 1)]);
+        let with_ptex = SceneInputs::new(&Scene::from_value(&ptex).expect("valid"));
+        assert_eq!(
+            with_ptex.tile(7, KEY, [false; 4]),
+            base.tile(7, KEY, [false; 4])
+        );
+        assert_eq!(with_ptex.surface_digest(), base.surface_digest());
+        // A region in reach changes both; the world settings change the surface.
+        let other = with_regions(json!([region("r", [90.0, 90.0], [100.0, 100.0], 2)]));
+        let other = SceneInputs::new(&other);
+        assert_ne!(
+            other.tile(7, KEY, [false; 4]),
+            base.tile(7, KEY, [false; 4])
+        );
+        assert_ne!(other.surface_digest(), base.surface_digest());
+        let mut sea = base_scene.clone();
+        sea.world.sea_level_m += 1.0;
+        assert_ne!(
+            SceneInputs::new(&sea).surface_digest(),
+            base.surface_digest()
+        );
+        assert_eq!(
+            SceneInputs::bare(&base_scene.world).surface_digest(),
+            SceneInputs::new(&Scene::default()).surface_digest()
         );
     }
 

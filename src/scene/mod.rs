@@ -31,6 +31,17 @@ use serde_json::Value;
 
 /// The element arrays of a scene, in document order.
 pub const ELEMENT_KINDS: [&str; 5] = ["regions", "volumes", "strata", "materials", "decals"];
+/// The element arrays that only the Ptex bake reads (the last of [`ELEMENT_KINDS`]): tiles and
+/// volume chunks do not depend on them.
+pub const PTEX_KINDS: [&str; 2] = ["materials", "decals"];
+
+/// Whether elements of the array `ELEMENT_KINDS[kind]` can change tiles and volume chunks (the
+/// surface), not only Ptex pages.
+pub fn shapes_surface(kind: usize) -> bool {
+    ELEMENT_KINDS
+        .get(kind)
+        .is_some_and(|name| !PTEX_KINDS.contains(name))
+}
 /// A scene document.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

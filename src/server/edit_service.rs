@@ -257,9 +257,23 @@ impl EditChannels {
             match worlds.view_of(id, version).await {
                 // A session that left since is not an error.
                 Ok(view) => {
+                    // An edit of the Ptex elements only leaves the tiles and chunks as they were:
+                    // the sessions re-send none of them (the previous version's view is usually
+                    // still cached; without it, everything `dirty` says is stale).
+                    let before = match version.checked_sub(1).filter(|v| *v > 0) {
+                        Some(v) => worlds.view_of(id, v).await.ok(),
+                        None => None,
+                    };
+                    let surface = match before {
+                        Some(b) if b.inputs.surface_digest() == view.inputs.surface_digest() => {
+                            Dirty::Nothing
+                        }
+                        _ => dirty.clone(),
+                    };
                     let _ = tx.send(WorldEdit {
                         view: StreamView { version, view },
                         dirty: dirty.clone(),
+                        surface,
                     });
                 }
                 Err(e) => {

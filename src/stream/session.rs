@@ -7,7 +7,9 @@
 //!   height tiles under the caves near the ground, which the reply waits for), an edit is
 //!   applied and acknowledged, a v2 `credit` lets more frames go;
 //! - edit events: held products whose reach (footprint plus the margin their inputs are read
-//!   from, `scene::tile_reach`) meets the dirty region are invalidated (one text message); their
+//!   from, `scene::tile_reach`) meets the dirty region are invalidated (one text message; tiles
+//!   and chunks by the edit's surface region, [`WorldEdit::surface`], which an edit of the
+//!   Ptex elements alone leaves empty); their
 //!   queued frames are withdrawn (superseded frames are coalesced) and they are queued again,
 //!   ahead of the rest, in view order;
 //! - production: while work is pending, the outbox has room and (v2) the client has credit, the
@@ -154,8 +156,11 @@ pub trait SourceView: Send + Sync + 'static {
 pub struct WorldEdit<V> {
     /// The view of the version the edit made.
     pub view: V,
-    /// What it changed.
+    /// What it changed: where its Ptex pages may differ.
     pub dirty: Dirty,
+    /// Where its tiles and volume chunks may differ: [`Dirty::Nothing`] for an edit of
+    /// `materials` or `decals` only ([`crate::scene::PTEX_KINDS`]), else `dirty`.
+    pub surface: Dirty,
 }
 
 /// What a stream shows: a bare seed or a stored world. The server implements it for both.
@@ -565,11 +570,11 @@ pub async fn run<S: StreamSource>(
                 }
             }
             ev = edit_event => {
-                let (next, dirty) = match ev {
-                    Ok(ev) => (ev.view, ev.dirty),
+                let (next, dirty, surface) = match ev {
+                    Ok(ev) => (ev.view, ev.dirty, ev.surface),
                     // Missed edits: the store's current version, everything stale.
                     Err(broadcast::error::RecvError::Lagged(_)) => match source.current().await {
-                        Ok(v) => (v, Dirty::Everything),
+                        Ok(v) => (v, Dirty::Everything, Dirty::Everything),
                         Err(_) => continue,
                     },
                     Err(broadcast::error::RecvError::Closed) => { edits = None; continue; }
@@ -589,8 +594,8 @@ pub async fn run<S: StreamSource>(
                 let dropped: Vec<ChunkKey> = old_chunks.into_iter().filter(|k| !now_in.contains(k) && held.remove(&Product::Chunk(*k)).is_some()).collect();
                 let work = view.work(cell_m);
                 let stale: Vec<Work> = work.iter().filter(|w| held.contains_key(&w.product()) && match w {
-                    Work::Tile(t) => dirty.touches(&crate::scene::tile_reach(params, t.key)),
-                    Work::Chunk(c) => dirty.touches(&chunk_reach(params, *c)),
+                    Work::Tile(t) => surface.touches(&crate::scene::tile_reach(params, t.key)),
+                    Work::Chunk(c) => surface.touches(&chunk_reach(params, *c)),
                 }).copied().collect();
                 // Products not held stay pending; held products the edit does not touch are
                 // current.
