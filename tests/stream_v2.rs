@@ -453,3 +453,62 @@ async fn a_cave_opening_to_the_ground_streams_its_chunks_and_tiles_mark_the_open
         .iter()
         .all(|t| t.version == 2 && marked(t).is_empty()));
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn an_edit_of_the_biomes_sends_their_new_names_before_the_fresh_tiles() {
+    let addr = serve().await;
+    let (id, token) = create_world(&addr, SEED, None).await;
+    let mut ws = connect(
+        &addr,
+        &format!("/v1/worlds/{id}/stream?protocol=2&token={token}"),
+    )
+    .await;
+    let hello = json_text(&next(&mut ws, Duration::from_secs(30)).await).expect("hello");
+    let mut names: Vec<String> = serde_json::from_value(hello["biomes"].clone()).expect("names");
+    send(&mut ws, json!({"type": "credit", "frames": 1024})).await;
+    send(
+        &mut ws,
+        json!({"type": "view", "x": 0, "z": 0, "y": 300, "rings": [1]}),
+    )
+    .await;
+    until_idle(&mut ws).await;
+
+    // An edit elsewhere in the scene sends no `world` message.
+    let region = json!([{"op": "add", "path": "/regions/-",
+                         "value": {"id": "r1", "bbox": {"min": [10.0, 10.0], "max": [20.0, 20.0]}}}]);
+    send(
+        &mut ws,
+        json!({"type": "edit", "id": "e1", "patch": region}),
+    )
+    .await;
+    let (_, _, msgs) = until_idle(&mut ws).await;
+    assert!(msgs.iter().any(|m| m["type"] == "ack"), "{msgs:?}");
+    assert!(!msgs.iter().any(|m| m["type"] == "world"), "{msgs:?}");
+
+    // A renamed biome: the new names come before the invalidation and the fresh tiles.
+    names[0] = "glacier".into();
+    let rename = json!([{"op": "replace", "path": "/world/biomes/0/name", "value": "glacier"}]);
+    send(
+        &mut ws,
+        json!({"type": "edit", "id": "e2", "patch": rename}),
+    )
+    .await;
+    let (_, tiles, msgs) = until_idle(&mut ws).await;
+    assert!(
+        msgs.iter().any(|m| m["type"] == "ack" && m["version"] == 3),
+        "{msgs:?}"
+    );
+    let world = msgs
+        .iter()
+        .position(|m| m["type"] == "world")
+        .expect("a world message");
+    assert_eq!(msgs[world]["version"], 3);
+    assert_eq!(msgs[world]["generator"], "earth-1");
+    assert_eq!(msgs[world]["biomes"], json!(names));
+    let invalidate = msgs
+        .iter()
+        .position(|m| m["type"] == "invalidate")
+        .expect("every held tile is stale");
+    assert!(world < invalidate, "{msgs:?}");
+    assert_eq!(tiles.len(), select(0.0, 0.0, &[1], 1.0).len());
+}

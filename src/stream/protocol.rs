@@ -289,6 +289,17 @@ pub enum ServerMessage {
         #[serde(skip_serializing_if = "Option::is_none")]
         biomes: Option<Vec<String>>,
     },
+    /// v2: an edit changed the world's generator or its biomes (their names or their order):
+    /// sent before the edit's `invalidate`, so the client reads the fresh tiles' biome weights
+    /// with the new names.
+    World {
+        /// The world version whose generator and biomes these are.
+        version: u64,
+        /// The world's generator (`earth-1` or `classic`).
+        generator: crate::terrain::Generator,
+        /// The names of the world's biomes, in the order of the tiles' biome weights.
+        biomes: Vec<String>,
+    },
     /// The view was accepted; `tiles` (and in v2 `chunks`) will arrive nearest first.
     View {
         /// Tiles in the view.

@@ -150,6 +150,11 @@ pub trait SourceView: Send + Sync + 'static {
     fn cave_sites(&self, area: [f64; 4], centre: [f64; 2]) -> Vec<CaveSite>;
 }
 
+/// The names of `plan`'s biomes, in the order of its tiles' biome weights.
+fn biome_names(plan: &WorldPlan) -> Vec<String> {
+    plan.params.biomes.iter().map(|b| b.name.clone()).collect()
+}
+
 /// An edit of the stream's world, with the view of the version it made, so a session reads
 /// nothing per edit.
 #[derive(Clone, Debug)]
@@ -395,15 +400,7 @@ pub async fn run<S: StreamSource>(
         queue_frames: QUEUE_FRAMES,
         credits: v2.then_some(0),
         generator: v2.then_some(current.plan().params.generator),
-        biomes: v2.then(|| {
-            current
-                .plan()
-                .params
-                .biomes
-                .iter()
-                .map(|b| b.name.clone())
-                .collect()
-        }),
+        biomes: v2.then(|| biome_names(current.plan())),
     };
     if !outbox.push(text(&hello)).await {
         return;
@@ -583,8 +580,17 @@ pub async fn run<S: StreamSource>(
                 // concurrently): an older one still invalidates what it touched, and products
                 // are produced from the newest version seen, which includes it.
                 if next.version() > version {
+                    let (generator, biomes) = (next.plan().params.generator, biome_names(next.plan()));
+                    let changed = generator != current.plan().params.generator
+                        || biomes != biome_names(current.plan());
                     current = next;
                     version = current.version();
+                    if v2 && changed {
+                        let msg = ServerMessage::World { version, generator, biomes };
+                        if !outbox.push(text(&msg)).await {
+                            break;
+                        }
+                    }
                 }
                 let params = &current.plan().params;
                 // The edit may add or remove volume regions or caves: the view's chunks follow.

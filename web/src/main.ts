@@ -660,6 +660,14 @@ function onControl(m: any): void {
       }
       state.biomes = biomes;
       break;
+    case "world":
+      // An edit changed the generator or the biomes: the fresh tiles that follow weigh these.
+      if (Array.isArray(m.biomes)) {
+        biomes = m.biomes;
+        tints = biomeTints(biomes);
+      }
+      state.biomes = biomes;
+      break;
     case "view":
       state.views++;
       state.inFlight = m.sending;
