@@ -206,6 +206,15 @@ async fn until_idle_counting_tiles(
     }
 }
 
+/// The faces whose vista pages (level 0) `frames` carry.
+fn vista_faces(frames: &[PtexFrame]) -> HashSet<TileFaceKey> {
+    frames
+        .iter()
+        .filter(|f| f.level == 0)
+        .flat_map(|f| f.records.iter().map(tile_face))
+        .collect()
+}
+
 fn faces_of(tiles: &HashSet<TileKey>) -> Vec<TileFaceKey> {
     let mut out = Vec::new();
     for t in tiles {
@@ -409,11 +418,7 @@ async fn an_edit_rebakes_only_the_faces_it_touched() {
         })
         .collect();
     assert!(!touched.is_empty() && touched.len() < 16 * tiles.len());
-    let vista: HashSet<TileFaceKey> = frames
-        .iter()
-        .filter(|f| f.level == 0)
-        .flat_map(|f| f.records.iter().map(tile_face))
-        .collect();
+    let vista = vista_faces(&frames);
     assert_eq!(
         vista, touched,
         "the vista pages of exactly the touched faces are baked again"
@@ -463,11 +468,7 @@ async fn an_edit_rebakes_only_the_faces_it_touched() {
         "a material edit invalidates no tile: {msgs:?}"
     );
     assert_eq!(tile_frames, 0, "a material edit re-sends no tile");
-    let vista: HashSet<TileFaceKey> = frames
-        .iter()
-        .filter(|f| f.level == 0)
-        .flat_map(|f| f.records.iter().map(tile_face))
-        .collect();
+    let vista = vista_faces(&frames);
     assert_eq!(
         vista,
         faces_of(&tiles).into_iter().collect(),
