@@ -115,17 +115,26 @@ async fn chunk_frame(
     Ok(frame.body.clone())
 }
 
-/// A stored world: the latest version, its edit events, edits by callers with the edit role.
-struct WorldSource {
-    state: AppState,
-    id: String,
-    caller: crate::server::access::Caller,
+/// What a session streams: a bare seed (version 1 forever, no edits) or a stored world (the
+/// latest version, its edit events, edits by callers with the edit role).
+enum Of {
+    Seed(StreamView),
+    World {
+        id: String,
+        caller: crate::server::access::Caller,
+    },
 }
 
-impl WorldSource {
-    async fn meta(&self) -> Result<crate::store::WorldMeta, AppError> {
-        self.state.worlds.store.meta(&self.id).await.map_err(|e| {
-            tracing::warn!(world = %self.id, "stream: world lookup failed: {e}");
+/// The server's [`StreamSource`]: products through the state's caches, whichever world.
+struct Source {
+    state: AppState,
+    of: Of,
+}
+
+impl Source {
+    async fn meta(&self, id: &str) -> Result<crate::store::WorldMeta, AppError> {
+        self.state.worlds.store.meta(id).await.map_err(|e| {
+            tracing::warn!(world = %id, "stream: world lookup failed: {e}");
             AppError::new(
                 axum::http::StatusCode::NOT_FOUND,
                 crate::server::error::code::WORLD_NOT_FOUND,
@@ -137,20 +146,28 @@ impl WorldSource {
 }
 
 #[async_trait::async_trait]
-impl StreamSource for WorldSource {
+impl StreamSource for Source {
     type View = StreamView;
 
     async fn current(&self) -> Result<StreamView, StreamError> {
-        let meta = self.meta().await?;
-        let view = self.state.worlds.view(&meta, meta.version).await?;
-        Ok(StreamView {
-            version: meta.version,
-            view,
-        })
+        match &self.of {
+            Of::Seed(view) => Ok(view.clone()),
+            Of::World { id, .. } => {
+                let meta = self.meta(id).await?;
+                let view = self.state.worlds.view(&meta, meta.version).await?;
+                Ok(StreamView {
+                    version: meta.version,
+                    view,
+                })
+            }
+        }
     }
 
     fn subscribe_edits(&self) -> Option<broadcast::Receiver<WorldEdit>> {
-        Some(self.state.worlds.subscribe_world(&self.id))
+        match &self.of {
+            Of::Seed(_) => None,
+            Of::World { id, .. } => Some(self.state.worlds.subscribe_world(id)),
+        }
     }
 
     async fn frame(
@@ -194,8 +211,16 @@ impl StreamSource for WorldSource {
         patch: serde_json::Value,
         if_match: Option<u64>,
     ) -> Result<u64, StreamError> {
-        let meta = self.meta().await?;
-        self.caller.require(&meta, crate::store::Role::Edit)?;
+        let Of::World { id, caller } = &self.of else {
+            return Err(AppError::new(
+                axum::http::StatusCode::FORBIDDEN,
+                "read_only",
+                "a bare seed has no scene to edit; create a world (POST /v1/worlds) and stream it",
+            )
+            .into());
+        };
+        let meta = self.meta(id).await?;
+        caller.require(&meta, crate::store::Role::Edit)?;
         let patch: json_patch::Patch = serde_json::from_value(patch).map_err(|e| {
             AppError::bad_request(
                 crate::server::error::code::BAD_BODY,
@@ -204,11 +229,31 @@ impl StreamSource for WorldSource {
             )
         })?;
         Ok(
-            crate::server::edit_service::commit_edit(&self.state, &self.id, patch, if_match)
+            crate::server::edit_service::commit_edit(&self.state, id, patch, if_match)
                 .await?
                 .version,
         )
     }
+}
+
+/// The upgrade's answer: the session of `source` runs on the socket, holding the connection's
+/// slot, tracked by the state's sessions (so shutdown closes it).
+fn upgrade(
+    ws: WebSocketUpgrade,
+    source: Source,
+    slot: Option<axum::Extension<super::connections::ConnectionSlot>>,
+    protocol: Protocol,
+) -> Response {
+    let sessions = source.state.sessions.clone();
+    let source = Arc::new(source);
+    ws.max_message_size(MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| async move {
+            // The connection's slot stays taken while the session runs.
+            let _slot = slot;
+            sessions
+                .track(|closing| run(socket, source, closing, protocol))
+                .await;
+        })
 }
 
 /// 426 `upgrade_required` (field `Upgrade`, with `Upgrade: websocket`) in the JSON error shape,
@@ -289,85 +334,11 @@ async fn world_stream(
         Ok(ws) => ws,
         Err(e) => return Ok(upgrade_required(&e)),
     };
-    let sessions = state.sessions.clone();
-    let source = Arc::new(WorldSource { state, id, caller });
-    Ok(ws
-        .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| async move {
-            // The connection's slot stays taken while the session runs.
-            let _slot = slot;
-            sessions
-                .track(|closing| run(socket, source, closing, protocol))
-                .await;
-        }))
-}
-
-/// A bare seed: version 1 forever, no edits.
-struct SeedSource {
-    state: AppState,
-    view: StreamView,
-}
-
-#[async_trait::async_trait]
-impl StreamSource for SeedSource {
-    type View = StreamView;
-
-    async fn current(&self) -> Result<StreamView, StreamError> {
-        Ok(self.view.clone())
-    }
-
-    fn subscribe_edits(&self) -> Option<broadcast::Receiver<WorldEdit>> {
-        None
-    }
-
-    async fn frame(
-        &self,
-        view: &StreamView,
-        key: TileKey,
-        seams: [bool; 4],
-        format: Format,
-    ) -> Result<Bytes, StreamError> {
-        tile_frame(&self.state, view, key, seams, format).await
-    }
-
-    async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {
-        self.state.tile(&view.view, key, [false; 4]).await
-    }
-
-    async fn chunk_frame(
-        &self,
-        view: &StreamView,
-        key: ChunkKey,
-        format: Format,
-    ) -> Result<Bytes, StreamError> {
-        chunk_frame(&self.state, view, key, format).await
-    }
-
-    fn ptex_grant(&self) -> Option<(PtexGrant, [f32; 5])> {
-        let grant = self.state.ptex.grant()?;
-        Some((grant, self.state.ptex.settings().thresholds_m))
-    }
-
-    async fn ptex_frame(
-        &self,
-        view: &StreamView,
-        batch: &PtexBatch,
-    ) -> Result<PtexBaked, StreamError> {
-        super::stream_ptex::frame(&self.state, view, batch).await
-    }
-
-    async fn edit(
-        &self,
-        _patch: serde_json::Value,
-        _if_match: Option<u64>,
-    ) -> Result<u64, StreamError> {
-        Err(AppError::new(
-            axum::http::StatusCode::FORBIDDEN,
-            "read_only",
-            "a bare seed has no scene to edit; create a world (POST /v1/worlds) and stream it",
-        )
-        .into())
-    }
+    let source = Source {
+        state,
+        of: Of::World { id, caller },
+    };
+    Ok(upgrade(ws, source, slot, protocol))
 }
 
 async fn seed_stream(
@@ -387,17 +358,11 @@ async fn seed_stream(
         version: 1,
         view: state.bare_view(seed).await?,
     };
-    let sessions = state.sessions.clone();
-    let source = Arc::new(SeedSource { state, view });
-    Ok(ws
-        .max_message_size(MAX_MESSAGE_BYTES)
-        .on_upgrade(move |socket| async move {
-            // The connection's slot stays taken while the session runs.
-            let _slot = slot;
-            sessions
-                .track(|closing| run(socket, source, closing, protocol))
-                .await;
-        }))
+    let source = Source {
+        state,
+        of: Of::Seed(view),
+    };
+    Ok(upgrade(ws, source, slot, protocol))
 }
 
 /// A stream frame as the body cache keeps it.
