@@ -164,6 +164,46 @@ pub struct Job {
 }
 
 impl Job {
+    /// A job of `spec`'s `shard` of world `world` at `version`, queued to run in this process,
+    /// its archive at `path`; `synced` is the status the [`Ledger`] holds for it (`None`: it is
+    /// this process's alone).
+    #[allow(clippy::too_many_arguments)]
+    fn queued(
+        path: PathBuf,
+        id: String,
+        world: String,
+        version: u64,
+        (spec, shard): (ExportSpec, Shard),
+        edits: crate::edits::TileEdits,
+        reserved: u64,
+        seq: u64,
+        synced: Option<Status>,
+    ) -> Self {
+        let total = spec.keys(shard).len();
+        Self {
+            path,
+            id,
+            world,
+            version,
+            spec,
+            shard,
+            edits,
+            reserved,
+            stored: AtomicU64::new(0),
+            finished: OnceLock::new(),
+            finished_unix: OnceLock::new(),
+            synced: Mutex::new(synced),
+            seq,
+            state: watch::Sender::new(Progress {
+                status: Status::Queued,
+                done: 0,
+                total,
+                error: None,
+            }),
+            cancel: AtomicBool::new(false),
+        }
+    }
+
     /// The current state.
     pub fn progress(&self) -> Progress {
         self.state.borrow().clone()
@@ -537,32 +577,20 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
-        let total = spec.keys(shard).len();
         let reserved = export::size::archive_bound(plan, &spec, shard);
         quota::too_large(reserved, &self.limits)?;
         let id = new_job_id()?;
-        let job = Arc::new(Job {
-            path: self.dir.join(format!("{id}.tar")),
-            id: id.clone(),
-            world: world.to_string(),
+        let job = Arc::new(Job::queued(
+            self.dir.join(format!("{id}.tar")),
+            id.clone(),
+            world.to_string(),
             version,
-            spec,
-            shard,
+            (spec, shard),
             edits,
             reserved,
-            stored: AtomicU64::new(0),
-            finished: OnceLock::new(),
-            finished_unix: OnceLock::new(),
-            synced: Mutex::new(Some(Status::Queued)),
-            seq: self.seq.fetch_add(1, Ordering::Relaxed),
-            state: watch::Sender::new(Progress {
-                status: Status::Queued,
-                done: 0,
-                total,
-                error: None,
-            }),
-            cancel: AtomicBool::new(false),
-        });
+            self.seq.fetch_add(1, Ordering::Relaxed),
+            Some(Status::Queued),
+        ));
         let quota = crate::store::JobQuota {
             world_bytes: self.limits.world_budget_bytes,
             disk_bytes: self.limits.disk_budget_bytes,
@@ -602,7 +630,7 @@ impl Jobs {
             jobs.insert(id, job.clone());
         }
         tracing::info!(
-            job = %job.id, world, version, tiles = total,
+            job = %job.id, world, version, tiles = job.progress().total,
             shard = format!("{}/{}", shard.index + 1, shard.count), "export job queued"
         );
         Ok(job)
@@ -651,29 +679,17 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Arc<Job> {
-        let total = spec.keys(shard).len();
-        let job = Arc::new(Job {
-            path: self.dir.join(format!("{}.tar", record.id)),
-            id: record.id.clone(),
-            world: record.world.clone(),
-            version: record.version,
-            spec,
-            shard,
+        let job = Arc::new(Job::queued(
+            self.dir.join(format!("{}.tar", record.id)),
+            record.id.clone(),
+            record.world.clone(),
+            record.version,
+            (spec, shard),
             edits,
-            reserved: record.reserved,
-            stored: AtomicU64::new(0),
-            finished: OnceLock::new(),
-            finished_unix: OnceLock::new(),
-            synced: Mutex::new(Some(Status::Queued)),
-            seq: self.seq.fetch_add(1, Ordering::Relaxed),
-            state: watch::Sender::new(Progress {
-                status: Status::Queued,
-                done: 0,
-                total,
-                error: None,
-            }),
-            cancel: AtomicBool::new(false),
-        });
+            record.reserved,
+            self.seq.fetch_add(1, Ordering::Relaxed),
+            Some(Status::Queued),
+        ));
         if let Some(old) = self.jobs().insert(job.id.clone(), job.clone()) {
             old.cancel();
         }
@@ -715,7 +731,6 @@ impl Jobs {
         spec: ExportSpec,
         shard: Shard,
     ) -> Result<Arc<Job>, SubmitError> {
-        let total = spec.keys(shard).len();
         let reserved = export::size::archive_bound(plan, &spec, shard);
         self.expire();
         let evicted = {
@@ -737,28 +752,17 @@ impl Jobs {
                     break id;
                 }
             };
-            let job = Arc::new(Job {
-                path: self.dir.join(format!("{id}.tar")),
-                id: id.clone(),
-                world: world.to_string(),
+            let job = Arc::new(Job::queued(
+                self.dir.join(format!("{id}.tar")),
+                id.clone(),
+                world.to_string(),
                 version,
-                spec,
-                shard,
+                (spec, shard),
                 edits,
                 reserved,
-                stored: AtomicU64::new(0),
-                finished: OnceLock::new(),
-                finished_unix: OnceLock::new(),
-                synced: Mutex::new(None),
-                seq: self.seq.fetch_add(1, Ordering::Relaxed),
-                state: watch::Sender::new(Progress {
-                    status: Status::Queued,
-                    done: 0,
-                    total,
-                    error: None,
-                }),
-                cancel: AtomicBool::new(false),
-            });
+                self.seq.fetch_add(1, Ordering::Relaxed),
+                None,
+            ));
             let evicted = evict(&mut jobs, self.limits.max_finished);
             jobs.insert(id, job.clone());
             (job, evicted)
@@ -776,7 +780,7 @@ impl Jobs {
             });
         }
         tracing::info!(
-            job = %job.id, world, version, tiles = total,
+            job = %job.id, world, version, tiles = job.progress().total,
             shard = format!("{}/{}", shard.index + 1, shard.count), "export job queued"
         );
         Ok(job)
