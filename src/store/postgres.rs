@@ -22,11 +22,11 @@ mod jobs;
 mod migrate;
 pub mod notify;
 
-use super::shared::{backend, now, parse_json, prepare_edit, replay};
+use super::shared::{admit_image, backend, image_hash_of, now, parse_json, prepare_edit, replay};
 use super::{
     canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
     JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
-    MAX_LOG_ENTRIES, MAX_WORLD_IMAGES,
+    MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use deadpool_postgres::{GenericClient, Manager, ManagerConfig, Pool, RecyclingMethod, Runtime};
@@ -166,11 +166,7 @@ async fn image_hashes(c: &impl GenericClient, id: &str) -> Result<Vec<[u8; 32]>,
         .await
         .map_err(db)?;
     rows.iter()
-        .map(|r| {
-            r.get::<_, Vec<u8>>(0)
-                .try_into()
-                .map_err(|_| StoreError::Backend("an image hash is not 32 bytes".into()))
-        })
+        .map(|r| image_hash_of(r.get::<_, Vec<u8>>(0)))
         .collect()
 }
 
@@ -485,14 +481,8 @@ impl SceneStore for PostgresStore {
             .await
             .map_err(db)?
             .ok_or_else(|| StoreError::WorldNotFound(id.to_string()))?;
-        let known = image_hashes(&tx, id).await?;
-        if known.contains(&hash) {
+        if !admit_image(&image_hashes(&tx, id).await?, &hash)? {
             return Ok(false);
-        }
-        if known.len() >= MAX_WORLD_IMAGES {
-            return Err(StoreError::TooManyImages {
-                limit: MAX_WORLD_IMAGES,
-            });
         }
         tx.execute(
             "INSERT INTO images (world_id, hash, png, created_at) VALUES ($1, $2, $3, $4)",

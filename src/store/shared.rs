@@ -12,6 +12,33 @@ pub(super) fn backend(e: impl std::fmt::Display) -> StoreError {
 }
 
 /// Seconds since the Unix epoch (0 if the clock is before it).
+/// Whether an upload of image `hash` to a world already holding `known` stores a row: `false`
+/// when the world holds it (uploads are idempotent), `true` when there is room.
+///
+/// # Errors
+/// [`StoreError::TooManyImages`] when the world holds [`super::MAX_WORLD_IMAGES`] others.
+pub(super) fn admit_image(known: &[[u8; 32]], hash: &[u8; 32]) -> Result<bool, StoreError> {
+    if known.contains(hash) {
+        return Ok(false);
+    }
+    if known.len() >= super::MAX_WORLD_IMAGES {
+        return Err(StoreError::TooManyImages {
+            limit: super::MAX_WORLD_IMAGES,
+        });
+    }
+    Ok(true)
+}
+
+/// An image hash as a row stores it (32 bytes).
+///
+/// # Errors
+/// [`StoreError::Backend`] for a value of another length.
+pub(super) fn image_hash_of(bytes: Vec<u8>) -> Result<[u8; 32], StoreError> {
+    bytes
+        .try_into()
+        .map_err(|_| StoreError::Backend("an image hash is not 32 bytes".into()))
+}
+
 pub(super) fn now() -> i64 {
     std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)

@@ -32,11 +32,11 @@
 //! materials and decals); an older file is migrated when opened.
 
 use super::jobs::{refusal, Held, CHARGE_SQL};
-use super::shared::{backend, now, parse_json, prepare_edit, replay};
+use super::shared::{admit_image, backend, image_hash_of, now, parse_json, prepare_edit, replay};
 use super::{
     canonical_scene, scene_text, Admission, EditApplied, EditRecord, JobQuota, JobRecord,
     JobUpdate, NewWorld, Role, SceneStore, StoreError, TokenGrant, TokenHash, WorldHead, WorldMeta,
-    MAX_LOG_ENTRIES, MAX_WORLD_IMAGES,
+    MAX_LOG_ENTRIES,
 };
 use async_trait::async_trait;
 use rusqlite::{params, Connection, OptionalExtension, TransactionBehavior};
@@ -549,14 +549,8 @@ impl SceneStore for SqliteStore {
         let id = id.to_string();
         self.write(move |tx| {
             load_meta(tx, &id)?;
-            let known = image_hashes(tx, &id)?;
-            if known.contains(&hash) {
+            if !admit_image(&image_hashes(tx, &id)?, &hash)? {
                 return Ok(false);
-            }
-            if known.len() >= MAX_WORLD_IMAGES {
-                return Err(StoreError::TooManyImages {
-                    limit: MAX_WORLD_IMAGES,
-                });
             }
             tx.execute(
                 "INSERT INTO images (world_id, hash, png, created_at) VALUES (?1, ?2, ?3, ?4)",
@@ -740,16 +734,8 @@ fn image_hashes(conn: &Connection, id: &str) -> Result<Vec<[u8; 32]>, StoreError
     let rows = stmt
         .query_map(params![id], |r| r.get::<_, Vec<u8>>(0))
         .map_err(backend)?;
-    let mut out = Vec::new();
-    for row in rows {
-        let bytes = row.map_err(backend)?;
-        out.push(
-            bytes
-                .try_into()
-                .map_err(|_| StoreError::Backend("an image hash is not 32 bytes".into()))?,
-        );
-    }
-    Ok(out)
+    rows.map(|row| image_hash_of(row.map_err(backend)?))
+        .collect()
 }
 
 fn insert_job_row(tx: &rusqlite::Transaction<'_>, job: &JobRecord) -> Result<(), StoreError> {
