@@ -648,25 +648,27 @@ function updatePtexStats(): void {
   state.ptexChunkDetail = s.chunkDetail;
 }
 
+/** The biome names of a `hello` or `world` message (v1's hello has none: the default world's
+ * stay). */
+function setBiomes(names: unknown): void {
+  if (Array.isArray(names)) {
+    biomes = names;
+    tints = biomeTints(biomes);
+  }
+  state.biomes = biomes;
+}
+
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 function onControl(m: any): void {
   switch (m.type) {
     case "hello":
       state.version = m.version;
       state.protocol = m.protocol;
-      if (Array.isArray(m.biomes)) {
-        biomes = m.biomes;
-        tints = biomeTints(biomes);
-      }
-      state.biomes = biomes;
+      setBiomes(m.biomes);
       break;
     case "world":
       // An edit changed the generator or the biomes: the fresh tiles that follow weigh these.
-      if (Array.isArray(m.biomes)) {
-        biomes = m.biomes;
-        tints = biomeTints(biomes);
-      }
-      state.biomes = biomes;
+      setBiomes(m.biomes);
       break;
     case "view":
       state.views++;
