@@ -11,23 +11,38 @@ use common::fixture::get;
 const WORLD: &str = "c7ff83f4aec16857c06ae2d9";
 const FIXTURE: &str = "rivers-world";
 
-#[tokio::test]
-async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
-    let (_data, server) = common::fixture::serve(FIXTURE);
-    let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
-        .expect("fixture hashes");
-    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
+/// Serves fixture `fixture` and checks that world `world` answers every pinned tile (formats 1
+/// and 2, at `version`) with the pinned bytes: `tiles` of them. Returns the data directory and
+/// the server (kept alive by the caller) and the stored scene at `version`.
+async fn stored_world(
+    fixture: &str,
+    world: &str,
+    version: u64,
+    tiles: usize,
+) -> (tempfile::TempDir, common::Server, serde_json::Value) {
+    let (data, server) = common::fixture::serve(fixture);
+    let checked = common::fixture::check_pinned(&server, fixture, "tiles.blake3", |format, key| {
         let query = if format == "2" { "&format=2" } else { "" };
-        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}")
+        format!("/v1/worlds/{world}/tiles/{key}.bin?v={version}{query}")
     })
     .await;
-    assert_eq!(checked, 20, "every fixture tile was checked");
-
-    // The stored scene has rivers but no `valleys`, and reading it does not add one.
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/1")).await;
+    assert_eq!(checked, tiles, "every fixture tile was checked");
+    let (status, body) = get(
+        &server.addr,
+        &format!("/v1/worlds/{world}/versions/{version}"),
+    )
+    .await;
     assert_eq!(status, 200);
     let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    let doc = &doc["scene"];
+    (data, server, doc["scene"].clone())
+}
+
+#[tokio::test]
+async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
+    let expected = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
+        .expect("fixture hashes");
+    // The stored scene has rivers but no `valleys`, and reading it does not add one.
+    let (_data, server, doc) = stored_world(FIXTURE, WORLD, 1, 20).await;
     let rivers = &doc["world"]["earth"]["rivers"];
     assert_eq!(rivers["enabled"], true, "{rivers}");
     assert!(rivers.get("valleys").is_none(), "{rivers}");
@@ -55,18 +70,8 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
 async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
     const WORLD2: &str = "2e8854b197caf02ebd61ed80";
     const FIXTURE2: &str = "valleys2-world";
-    let (_data, server) = common::fixture::serve(FIXTURE2);
-    let checked =
-        common::fixture::check_pinned(&server, FIXTURE2, "tiles.blake3", |format, key| {
-            let query = if format == "2" { "&format=2" } else { "" };
-            format!("/v1/worlds/{WORLD2}/tiles/{key}.bin?v=1{query}")
-        })
-        .await;
-    assert_eq!(checked, 20, "every fixture tile was checked");
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD2}/versions/1")).await;
-    assert_eq!(status, 200);
-    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    let earth = &doc["scene"]["world"]["earth"];
+    let (_data, _server, scene) = stored_world(FIXTURE2, WORLD2, 1, 20).await;
+    let earth = &scene["world"]["earth"];
     assert_eq!(earth["rivers"]["valleys"], 2, "{earth}");
     assert_eq!(earth["lattice_cells"], 16, "{earth}");
 }
@@ -77,18 +82,8 @@ async fn a_world_stored_with_the_second_valleys_serves_the_same_tile_bytes() {
 async fn a_world_stored_with_the_third_valleys_serves_the_same_tile_bytes() {
     const WORLD3: &str = "f78fa8d5daf52fef3cc7abe5";
     const FIXTURE3: &str = "valleys3-world";
-    let (_data, server) = common::fixture::serve(FIXTURE3);
-    let checked =
-        common::fixture::check_pinned(&server, FIXTURE3, "tiles.blake3", |format, key| {
-            let query = if format == "2" { "&format=2" } else { "" };
-            format!("/v1/worlds/{WORLD3}/tiles/{key}.bin?v=1{query}")
-        })
-        .await;
-    assert_eq!(checked, 34, "every fixture tile was checked");
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD3}/versions/1")).await;
-    assert_eq!(status, 200);
-    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    assert_eq!(doc["scene"]["world"]["earth"]["rivers"]["valleys"], 3);
+    let (_data, _server, scene) = stored_world(FIXTURE3, WORLD3, 1, 34).await;
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 3);
 }
 
 /// A world stored with `valleys: 4` and `lakes: 2` (`tests/fixtures/valleys4-world/`) keeps its
@@ -97,18 +92,8 @@ async fn a_world_stored_with_the_third_valleys_serves_the_same_tile_bytes() {
 async fn a_world_stored_with_the_fourth_valleys_serves_the_same_tile_bytes() {
     const WORLD4: &str = "2da01e54111ab1b68701ca3b";
     const FIXTURE4: &str = "valleys4-world";
-    let (_data, server) = common::fixture::serve(FIXTURE4);
-    let checked =
-        common::fixture::check_pinned(&server, FIXTURE4, "tiles.blake3", |format, key| {
-            let query = if format == "2" { "&format=2" } else { "" };
-            format!("/v1/worlds/{WORLD4}/tiles/{key}.bin?v=1{query}")
-        })
-        .await;
-    assert_eq!(checked, 34, "every fixture tile was checked");
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD4}/versions/1")).await;
-    assert_eq!(status, 200);
-    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    let rivers = &doc["scene"]["world"]["earth"]["rivers"];
+    let (_data, _server, scene) = stored_world(FIXTURE4, WORLD4, 1, 34).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
     assert_eq!(rivers["valleys"], 4, "{rivers}");
     assert_eq!(rivers["lakes"], 2, "{rivers}");
 }
@@ -119,17 +104,8 @@ async fn a_world_stored_with_the_fourth_valleys_serves_the_same_tile_bytes() {
 async fn a_world_stored_with_the_third_lakes_serves_the_same_tile_bytes() {
     const WORLD: &str = "5a5a562e2374e4b29e09148a";
     const FIXTURE: &str = "lakes3-world";
-    let (_data, server) = common::fixture::serve(FIXTURE);
-    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
-        let query = if format == "2" { "&format=2" } else { "" };
-        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=2{query}")
-    })
-    .await;
-    assert_eq!(checked, 44, "every fixture tile was checked");
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/2")).await;
-    assert_eq!(status, 200);
-    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    let rivers = &doc["scene"]["world"]["earth"]["rivers"];
+    let (_data, _server, scene) = stored_world(FIXTURE, WORLD, 2, 44).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
     assert_eq!(rivers["lakes"], 3, "{rivers}");
 }
 
@@ -140,17 +116,8 @@ async fn a_world_stored_with_the_third_lakes_serves_the_same_tile_bytes() {
 async fn a_world_stored_with_the_third_valleys_and_fourth_lakes_serves_the_same_tile_bytes() {
     const WORLD: &str = "7b17dd174bc41c52d847e85a";
     const FIXTURE: &str = "lakes4-world";
-    let (_data, server) = common::fixture::serve(FIXTURE);
-    let checked = common::fixture::check_pinned(&server, FIXTURE, "tiles.blake3", |format, key| {
-        let query = if format == "2" { "&format=2" } else { "" };
-        format!("/v1/worlds/{WORLD}/tiles/{key}.bin?v=1{query}")
-    })
-    .await;
-    assert_eq!(checked, 44, "every fixture tile was checked");
-    let (status, body) = get(&server.addr, &format!("/v1/worlds/{WORLD}/versions/1")).await;
-    assert_eq!(status, 200);
-    let doc: serde_json::Value = serde_json::from_slice(&body).expect("scene JSON");
-    let rivers = &doc["scene"]["world"]["earth"]["rivers"];
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 44).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
     assert_eq!(
         (&rivers["valleys"], &rivers["lakes"]),
         (&3.into(), &4.into()),
