@@ -70,9 +70,10 @@
 //!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
 //!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
 //!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
-//!    read as canals. With `valleys: 5` (the default of new worlds: the valleys of `4`) each wall's smoothstep
-//!    runs over a place bent by a spur value at the sample's foot on the river ([`SPUR`]):
-//!    spurs and hollows run straight down each wall to its river, and where the walls of two
+//!    read as canals. With `valleys: 5` (the default of new worlds: the valleys of `4`) each
+//!    wall's smoothstep runs over a place bent by a spur value ([`SPUR`]), linear along each
+//!    piece between the spur noise at its ends ([`Piece::spur_a`]) and taken at the sample's
+//!    foot on the piece: spurs and hollows run straight down each wall to its river, and where the walls of two
 //!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
 //!    wanders with both rivers' spurs instead of running straight, equidistant from them.
 //!
