@@ -195,6 +195,81 @@ async fn chunk_pages_have_a_face_per_quad_and_big_bakes_are_refused_before_bakin
         .error(StatusCode::BAD_REQUEST, "lod_out_of_range", Some("lod"));
 }
 
+/// An edit of world `id`: the JSON Patch `patch` posted as the bearer of `token`.
+async fn edit(app: &Router, id: &str, token: &str, patch: serde_json::Value) {
+    let headers = [
+        ("authorization", format!("Bearer {token}")),
+        ("content-type", "application/json-patch+json".to_string()),
+    ];
+    let uri = format!("/v1/worlds/{id}/edits");
+    let r = common::oneshot::send(
+        app,
+        Method::POST,
+        &uri,
+        &headers,
+        Some(patch.to_string().as_bytes()),
+    )
+    .await;
+    assert!(r.status.is_success(), "{:?}", r.status);
+}
+
+/// An authored region of `side` metres centred on `(x, z)` that raises its centre to 300 m.
+fn peak(id: &str, x: f64, z: f64, side: f64) -> serde_json::Value {
+    serde_json::json!([{"op": "add", "path": "/regions/-", "value": {
+        "id": id,
+        "bbox": {"min": [x - side / 2.0, z - side / 2.0], "max": [x + side / 2.0, z + side / 2.0]},
+        "samples": 65,
+        "ops": [{"op": "elevation", "shape": {"point": [x, z]}, "elevation_m": 300, "radius_m": 40}]
+    }}])
+}
+
+#[tokio::test]
+async fn a_chunk_is_meshed_once_for_its_formats_and_pages_and_again_only_when_an_edit_meets_it() {
+    let st = AppState::new(Compute::cpu());
+    let app = app(st.clone());
+    let (id, token) = common::oneshot::private_world(&app, SEED).await;
+    let plan = WorldPlan::new(SEED, WorldParams::default()).expect("default world");
+    let tile = synthesize(&plan, TileKey { lod: 0, x: 0, z: 0 });
+    let y = (tile.heights[16 * 65 + 16] / 32.0).floor() as i64;
+    let at = |v: u64, what: &str| format!("/v1/worlds/{id}/{what}?v={v}");
+    let misses = || st.chunk_meshes.stats().misses;
+    // Three formats and two page resolutions of one chunk: one meshing.
+    let mut bodies = Vec::new();
+    for what in [
+        format!("chunks/0/0/{y}/0.json"),
+        format!("chunks/0/0/{y}/0.bin"),
+        format!("ptex/0/0/{y}/0"),
+    ] {
+        for res in ["8", "16"] {
+            let uri = format!("{}&res={res}", at(1, &what));
+            let r = common::oneshot::get_as(&app, &uri, &token).await;
+            r.ok();
+            bodies.push((uri, r.body));
+        }
+    }
+    assert_eq!(misses(), 1, "one chunk, meshed once");
+    assert!(st.chunk_meshes.stats().hits >= 5);
+    assert!(st.chunk_meshes.stats().bytes > 0);
+    // The cache changes no byte: a server that has not meshed the chunk answers the same.
+    let mut fresh = AppState::new(Compute::cpu());
+    fresh.worlds = st.worlds.clone();
+    let fresh_app = strata::server::app(fresh);
+    for (uri, body) in &bodies {
+        let r = common::oneshot::get_as(&fresh_app, uri, &token).await;
+        r.ok();
+        assert_eq!(&r.body, body, "{uri}");
+    }
+    // An edit 4 km away keeps the mesh; one over the chunk meshes it again.
+    edit(&app, &id, &token, peak("far", 4096.0, 4096.0, 512.0)).await;
+    let pages = format!("{}&res=8", at(2, &format!("ptex/0/0/{y}/0")));
+    common::oneshot::get_as(&app, &pages, &token).await.ok();
+    assert_eq!(misses(), 1, "an edit elsewhere keeps the chunk's mesh");
+    edit(&app, &id, &token, peak("near", 16.0, 16.0, 1024.0)).await;
+    let chunk = at(3, &format!("chunks/0/0/{y}/0.json"));
+    common::oneshot::get_as(&app, &chunk, &token).await.ok();
+    assert_eq!(misses(), 2, "an edit over the chunk meshes it again");
+}
+
 #[tokio::test]
 async fn a_tile_page_costs_at_most_the_stated_texels_and_info_states_the_limits() {
     let app = app(AppState::new(Compute::cpu()));

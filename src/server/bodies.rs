@@ -10,7 +10,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
 /// Default budget of encoded bodies, bytes.
-pub const DEFAULT_BODY_BUDGET_BYTES: usize = 128 << 20;
+pub const DEFAULT_BODY_BUDGET_BYTES: usize = 96 << 20;
 
 /// Key: the tile's input hash and the format's extension.
 pub type BodyKey = ([u8; 32], &'static str);

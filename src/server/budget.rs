@@ -1,11 +1,12 @@
 //! The process-wide memory budget of the caches (`strata serve --memory-budget MB`, or
 //! `STRATA_MEMORY_BUDGET`; default [`DEFAULT_MEMORY_BUDGET_MB`] = 512 MiB), split between the
-//! seven caches by fixed fractions, since each is its own [`crate::cache::Memo`]:
+//! eight caches by fixed fractions, since each is its own [`crate::cache::Memo`]:
 //!
 //! | cache | share | default |
 //! |---|---|---|
 //! | stage cache, finished tiles ([`crate::cache::StageCache`]) | 3/8 | 192 MiB |
-//! | encoded bodies ([`super::bodies::BodyCache`]) | 1/4 | 128 MiB |
+//! | encoded bodies ([`super::bodies::BodyCache`]) | 3/16 | 96 MiB |
+//! | meshed volume chunks ([`super::chunk_meshes::ChunkMeshCache`]) | 1/16 | 32 MiB |
 //! | decoded images of materials and decals ([`super::images::ImageCache`]) | 1/8 | 64 MiB |
 //! | solved authored regions ([`super::regions::RegionCache`]) | 1/8 | 64 MiB |
 //! | solved volume regions ([`super::volumes::VolumeCache`]) | 1/16 | 32 MiB |
@@ -32,6 +33,8 @@ pub struct MemoryBudget {
     pub images: usize,
     /// Encoded bodies.
     pub bodies: usize,
+    /// Meshed volume chunks.
+    pub chunk_meshes: usize,
     /// Solved volume regions.
     pub volumes: usize,
     /// Solved authored regions.
@@ -50,7 +53,8 @@ impl MemoryBudget {
             total,
             stage: part(3, 8),
             images: part(1, 8),
-            bodies: part(1, 4),
+            bodies: part(3, 16),
+            chunk_meshes: part(1, 16),
             volumes: part(1, 16),
             regions: part(1, 8),
             world_plans: part(3, 64),
@@ -77,15 +81,28 @@ mod tests {
     #[test]
     fn the_shares_add_up_to_the_budget_and_keep_todays_defaults() {
         let b = MemoryBudget::default();
-        let sum =
-            b.stage + b.images + b.bodies + b.volumes + b.regions + b.world_plans + b.seed_plans;
+        let sum = b.stage
+            + b.images
+            + b.bodies
+            + b.chunk_meshes
+            + b.volumes
+            + b.regions
+            + b.world_plans
+            + b.seed_plans;
         assert_eq!(sum, b.total);
         // The images' eighth came out of the stage cache's half.
         assert_eq!(b.stage + b.images, crate::cache::DEFAULT_BUDGET_BYTES);
         assert_eq!(b.images, 64 << 20);
         assert_eq!(b.bodies, super::super::bodies::DEFAULT_BODY_BUDGET_BYTES);
+        // The chunk meshes' sixteenth came out of the bodies' quarter.
+        assert_eq!(b.bodies + b.chunk_meshes, 128 << 20);
+        assert_eq!(
+            b.chunk_meshes,
+            super::super::chunk_meshes::CHUNK_MESH_CACHE_BYTES
+        );
         let odd = MemoryBudget::new(1_000_003);
-        let sum = odd.stage + odd.images + odd.bodies + odd.volumes + odd.regions;
+        let sum =
+            odd.stage + odd.images + odd.bodies + odd.chunk_meshes + odd.volumes + odd.regions;
         assert!(sum + odd.world_plans + odd.seed_plans <= odd.total);
     }
 
@@ -96,7 +113,8 @@ mod tests {
         assert_eq!(st.memory_budget(), b);
         assert_eq!(st.cache.budget_bytes(), 24 << 20);
         assert_eq!(st.images.stats().budget_bytes, 8 << 20);
-        assert_eq!(st.bodies.budget_bytes(), 16 << 20);
+        assert_eq!(st.bodies.budget_bytes(), 12 << 20);
+        assert_eq!(st.chunk_meshes.stats().budget_bytes, 4 << 20);
         assert_eq!(st.volumes.size().2, 4 << 20);
         assert_eq!(st.regions.size().2, 8 << 20);
         assert!(st.plans.size().2 <= b.seed_plans as u64);

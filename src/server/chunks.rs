@@ -113,7 +113,7 @@ fn chunk_rect(key: ChunkKey, spacing_m: f32) -> Rect {
 }
 
 /// The world-space box of a chunk's padded samples, metres (`[x, y, z]` corners).
-fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
+pub(super) fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
     let s = f64::from(spacing_m);
     let first = key.first_cell();
     (
@@ -122,30 +122,51 @@ fn chunk_box(key: ChunkKey, spacing_m: f32) -> ([f64; 3], [f64; 3]) {
     )
 }
 
-/// Meshes chunk `key` of the world `view` (its tiles through the stage cache, its strata and
-/// volume elements), on the blocking pool; the caller holds the synthesis slot.
+/// The height tiles chunk `key` reads its columns from (the same LOD's).
+pub(super) fn tile_keys(key: ChunkKey) -> impl Iterator<Item = TileKey> {
+    tiles_needed(key)
+        .into_iter()
+        .map(move |(x, z)| TileKey { lod: key.lod, x, z })
+}
+
+/// The ground-plane rectangle whose `strata` elements chunk `key` takes: [`ground_rect`] in
+/// worlds with `chunk_geology` 2 and later, else [`chunk_rect`].
+pub(super) fn columns_rect(plan: &WorldPlan, key: ChunkKey, spacing_m: f32) -> Rect {
+    let chunk_geology = plan.params.chunk_geology;
+    if chunk_geology >= 2 {
+        ground_rect(key, spacing_m, chunk_geology)
+    } else {
+        chunk_rect(key, spacing_m)
+    }
+}
+
+/// The mesh of chunk `key` of the world `view`: from the state's chunk mesh cache
+/// ([`super::chunk_meshes`]), or meshed (its tiles through the stage cache, its strata and
+/// volume elements) on the blocking pool; the caller holds the synthesis slot.
 pub(super) async fn mesh(
+    st: &AppState,
+    view: &Arc<WorldView>,
+    key: ChunkKey,
+) -> Result<Arc<ChunkMesh>, AppError> {
+    let hash = super::chunk_meshes::mesh_key(view, key);
+    st.chunk_meshes
+        .get(hash, || mesh_uncached(st, view, key))
+        .await
+}
+
+/// Meshes chunk `key` of the world `view` on the blocking pool.
+async fn mesh_uncached(
     st: &AppState,
     view: &Arc<WorldView>,
     key: ChunkKey,
 ) -> Result<ChunkMesh, AppError> {
     let mut tiles = Vec::new();
-    for (tx, tz) in tiles_needed(key) {
-        let tk = TileKey {
-            lod: key.lod,
-            x: tx,
-            z: tz,
-        };
-        tiles.push(((tx, tz), st.tile(view, tk, [false; 4]).await));
+    for tk in tile_keys(key) {
+        tiles.push(((tk.x, tk.z), st.tile(view, tk, [false; 4]).await));
     }
     let plan = &view.plan;
     let spacing_m = plan.lods[key.lod as usize].spacing_m;
-    let chunk_geology = plan.params.chunk_geology;
-    let rect = if chunk_geology >= 2 {
-        ground_rect(key, spacing_m, chunk_geology)
-    } else {
-        chunk_rect(key, spacing_m)
-    };
+    let rect = columns_rect(plan, key, spacing_m);
     let strata = view.inputs.strata_meeting(plan.seed, &rect);
     let (lo, hi) = chunk_box(key, spacing_m);
     let mut volumes = Vec::new();
@@ -214,9 +235,9 @@ pub(super) async fn product(
 }
 
 /// `GET /v1/seeds/{seed}/chunks/{lod}/{x}/{y}/{z}.{ext}` and
-/// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`. Every request meshes its chunk
-/// (chunk bodies are not cached; their tiles are), so each is charged to the client's rate
-/// limit ([`super::rate_limit`]).
+/// `GET /v1/worlds/{id}/chunks/{lod}/{x}/{y}/{z}.{ext}[?v=N]`. Chunk bodies are not cached
+/// (their tiles and meshes are, [`super::chunk_meshes`]), so every request encodes its chunk and
+/// is charged to the client's rate limit ([`super::rate_limit`]).
 async fn chunk(
     _charge: super::rate_limit::Charge,
     world: WorldAt,

@@ -18,7 +18,7 @@
 //! | `strata_stage_seconds_total` (counter) | `stage` |
 //! | `strata_stage_cache_evictions_total`, `strata_stage_cache_disk_writes_total`, `strata_stage_cache_disk_errors_total` (counters) | |
 //! | `strata_stage_cache_bytes`, `strata_stage_cache_budget_bytes`, `strata_stage_cache_entries` (gauges) | |
-//! | `strata_cache_bytes`, `strata_cache_budget_bytes` (gauges): every cache's share of `--memory-budget` | `cache`: `stage`, `bodies`, `images`, `regions`, `volumes`, `seed_plans`, `world_plans` |
+//! | `strata_cache_bytes`, `strata_cache_budget_bytes` (gauges): every cache's share of `--memory-budget` | `cache`: `stage`, `bodies`, `images`, `chunk_meshes`, `regions`, `volumes`, `seed_plans`, `world_plans` |
 //! | `strata_memory_budget_bytes` (gauge): `--memory-budget` | |
 //! | `strata_device_jobs_total` (counter): jobs of the stages with a WGSL twin sent for the GPU device | `stage`: `field`, `poisson`, `diffusion`, `propagation`, `bitangents`, `meshing`; `result`: `device` (ran there), `failed` (recomputed on the CPU; the device is then lost), `skipped` (not sent: device lost, or input beyond the kernel's limits) |
 
@@ -403,7 +403,7 @@ fn service_gauges(out: &mut String, st: &AppState) {
     }
 }
 
-/// Bytes held and budgets of the seven caches, and the process-wide budget.
+/// Bytes held and budgets of the eight caches, and the process-wide budget.
 fn cache_sizes(out: &mut String, st: &AppState, stage: &crate::cache::CacheStats) {
     let (_, body_bytes) = st.bodies.size();
     let (_, region_bytes, region_budget) = st.regions.size();
@@ -411,10 +411,12 @@ fn cache_sizes(out: &mut String, st: &AppState, stage: &crate::cache::CacheStats
     let (_, seed_bytes, seed_budget) = st.plans.size();
     let (_, world_bytes, world_budget) = st.worlds.plan_size();
     let images = st.images.stats();
+    let meshes = st.chunk_meshes.stats();
     let rows = [
         ("stage", stage.bytes, stage.budget_bytes),
         ("bodies", body_bytes as u64, st.bodies.budget_bytes() as u64),
         ("images", images.bytes, images.budget_bytes),
+        ("chunk_meshes", meshes.bytes, meshes.budget_bytes),
         ("regions", region_bytes, region_budget),
         ("volumes", volume_bytes, volume_budget),
         ("seed_plans", seed_bytes, seed_budget),

@@ -33,6 +33,7 @@ pub mod access;
 pub mod args;
 pub mod bodies;
 pub mod budget;
+pub mod chunk_meshes;
 pub mod chunks;
 pub mod connections;
 pub mod cors;
@@ -151,6 +152,8 @@ pub struct AppState {
     pub volumes: Arc<volumes::VolumeCache>,
     /// Decoded images of the worlds' materials and decals.
     pub images: Arc<images::ImageCache>,
+    /// Meshed volume chunks by input hash.
+    pub chunk_meshes: Arc<chunk_meshes::ChunkMeshCache>,
     /// Open stream sessions and the signal that closes them at shutdown.
     pub sessions: Sessions,
     /// Origins besides the server's own that may call every route from a browser.
@@ -192,6 +195,7 @@ impl AppState {
             regions: Arc::default(),
             volumes: Arc::default(),
             images: Arc::default(),
+            chunk_meshes: Arc::default(),
             sessions: Sessions::default(),
             cors: cors::CorsOrigins::default(),
             rate: Arc::default(),
@@ -244,6 +248,7 @@ impl AppState {
         self.regions = Arc::new(regions::RegionCache::new(budget.regions));
         self.volumes = Arc::new(volumes::VolumeCache::new(budget.volumes));
         self.images = Arc::new(images::ImageCache::new(budget.images));
+        self.chunk_meshes = Arc::new(chunk_meshes::ChunkMeshCache::new(budget.chunk_meshes));
         self.plans = Arc::new(PlanCache::new(
             self.limits.plan_cache_seeds,
             budget.seed_plans,

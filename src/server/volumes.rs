@@ -53,6 +53,24 @@ impl Weigh for SolvedVolume {
     }
 }
 
+/// The key of `volume`'s solution in the world `view`: the seed, and a blake3 of the element's
+/// digest and those of the authored regions and `strata` elements its ground takes.
+pub(super) fn volume_key(view: &WorldView, volume: &VolumeInput) -> (u64, [u8; 32]) {
+    let rect = ground_rect(&view.plan, &volume.spec);
+    let mut key = blake3::Hasher::new();
+    key.update(b"strata.volume-inputs\0");
+    key.update(&volume.digest);
+    for r in view.inputs.regions_meeting(&rect) {
+        key.update(&r.digest);
+    }
+    for s in view.inputs.strata() {
+        if s.rect().intersects(&rect) {
+            key.update(&s.digest);
+        }
+    }
+    (view.plan.seed, *key.finalize().as_bytes())
+}
+
 impl VolumeCache {
     /// The solved region of `volume` in the world `view`, solving it (and the authored regions
     /// its ground takes, through the state's region cache) if needed. `None` if the pipeline
@@ -65,18 +83,7 @@ impl VolumeCache {
     ) -> Option<Arc<SolvedVolume>> {
         let plan = &view.plan;
         let rect = ground_rect(plan, &volume.spec);
-        let mut key = blake3::Hasher::new();
-        key.update(b"strata.volume-inputs\0");
-        key.update(&volume.digest);
-        for r in view.inputs.regions_meeting(&rect) {
-            key.update(&r.digest);
-        }
-        for s in view.inputs.strata() {
-            if s.rect().intersects(&rect) {
-                key.update(&s.digest);
-            }
-        }
-        let key = (plan.seed, *key.finalize().as_bytes());
+        let key = volume_key(view, volume);
         let edits = view.ground_edits(st, &rect).await;
         let (p, spec) = (plan.clone(), volume.spec.clone());
         let offload = st.compute.offload();
