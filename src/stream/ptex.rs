@@ -17,8 +17,8 @@
 //! - pages are baked in **batches** of one level, at most [`BATCH_PAGES`] pages and
 //!   [`BATCH_TEXELS`] interior texels each (one 256² page), one frame of kind 3 each: the level
 //!   and kind of the nearest queued page, then the next queued pages of that level and kind in
-//!   queue order (the others wait for later batches); the session
-//!   interleaves them with tile and chunk frames, at most one batch per [`PTEX_EVERY`] frames
+//!   queue order (the others wait for later batches); vista and detail batches alternate
+//!   while both kinds of page wait; the session interleaves them with tile and chunk frames, at most one batch per [`PTEX_EVERY`] frames
 //!   while tiles or chunks wait, every frame spending a credit;
 //! - an **edit** queues again the vista and detail pages of exactly the faces whose reach (the
 //!   face's footprint grown by its tile's input margin and one lattice cell, which its border
@@ -308,6 +308,9 @@ pub struct PtexSession {
     due: bool,
     vista: VecDeque<u32>,
     detail: Vec<Bake>,
+    /// Whether the next batch is a detail batch when both vista and detail pages wait (they
+    /// alternate).
+    detail_turn: bool,
     announced: Option<[usize; 5]>,
     refused: bool,
 }
@@ -332,6 +335,7 @@ impl PtexSession {
             due: false,
             vista: VecDeque::new(),
             detail: Vec::new(),
+            detail_turn: false,
             announced: None,
             refused: false,
         }
@@ -655,7 +659,24 @@ impl PtexSession {
         })
     }
 
+    /// The next batch: vista and detail batches alternate while both kinds of page wait, so a
+    /// client still receiving its far tiles' vista pages gets the nearest faces' detail pages
+    /// meanwhile (vista first would leave the faces under the camera at 8² until every tile of
+    /// the view had arrived, minutes for a client that renders at a few frames a second).
     fn take_batch(&mut self) -> Option<PtexBatch> {
+        let batch = if self.detail_turn {
+            self.take_detail().or_else(|| self.take_vista())
+        } else {
+            self.take_vista().or_else(|| self.take_detail())
+        };
+        if let Some(b) = &batch {
+            self.detail_turn = b.level == 0;
+        }
+        batch
+    }
+
+    /// A batch of queued vista pages, in queue order, of one kind of face.
+    fn take_vista(&mut self) -> Option<PtexBatch> {
         let mut pages: Vec<BatchPage> = Vec::new();
         while pages.len() < BATCH_PAGES {
             let Some(&i) = self.vista.front() else {
@@ -674,11 +695,14 @@ impl PtexSession {
             self.vista.pop_front();
             pages.push(p);
         }
-        if !pages.is_empty() {
-            return Some(PtexBatch { level: 0, pages });
-        }
-        // The nearest current page sets the batch's level and kind; later pages of another
-        // level or kind keep their place in the queue, pages no longer their face's are dropped.
+        (!pages.is_empty()).then_some(PtexBatch { level: 0, pages })
+    }
+
+    /// A batch of queued detail pages: the nearest current page sets the batch's level and
+    /// kind; later pages of another level or kind keep their place in the queue, pages no
+    /// longer their face's are dropped.
+    fn take_detail(&mut self) -> Option<PtexBatch> {
+        let mut pages: Vec<BatchPage> = Vec::new();
         let mut level = 0u8;
         let mut chunk = None;
         let mut texels = 0u64;
@@ -836,6 +860,43 @@ mod tests {
         assert!(pages > 0, "faces under the eye take detail levels");
         assert_eq!(first, Some((pages, texels)));
         assert_eq!(session.queued(), (0, 0));
+    }
+
+    #[test]
+    fn detail_batches_alternate_with_vista_batches_while_both_wait() {
+        // The eye 20 m above face (7, 3): once the first vista batch gave the bounds, the
+        // nearest faces' detail pages are queued; then 40 more tiles arrive (640 vista pages,
+        // three batches). The detail pages do not wait for them: batches alternate.
+        let mut session = session_over_two_tiles([7.0 * 16.0 + 8.0, 20.0, 3.0 * 16.0 + 8.0]);
+        let (_, first) = session.next_batch();
+        let first = first.expect("the vista batch of the first two tiles");
+        assert_eq!((first.level, first.pages.len()), (0, 32));
+        let b: Vec<FaceBounds> = first.pages.iter().map(bounds).collect();
+        session.baked(&first, &b);
+        for x in 2..42 {
+            session.hold_tile(TileKey { lod: 0, x, z: 0 }, [false; 4]);
+        }
+        let mut levels = Vec::new();
+        let mut vista_pages = 0;
+        while let (_, Some(batch)) = session.next_batch() {
+            let b: Vec<FaceBounds> = batch.pages.iter().map(bounds).collect();
+            session.baked(&batch, &b);
+            if batch.level == 0 {
+                vista_pages += batch.pages.len();
+            }
+            levels.push(batch.level);
+        }
+        assert_eq!(vista_pages, 640, "every new face's vista page");
+        assert_eq!(
+            levels[0], 5,
+            "the nearest face's 256² page first: {levels:?}"
+        );
+        // While vista pages waited (the first five batches at least), every other batch was a
+        // detail batch.
+        let last_vista = levels.iter().rposition(|&l| l == 0).expect("vista batches");
+        for (k, l) in levels[..=last_vista].iter().enumerate() {
+            assert_eq!(*l == 0, k % 2 == 1, "batch {k} in {levels:?}");
+        }
     }
 
     #[test]
