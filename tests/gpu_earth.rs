@@ -228,9 +228,10 @@ fn assert_same_carve(k: TileKey, w: usize, bare: &[f32], expected: &[f32], gpu: 
 #[test]
 fn gpu_river_carve_matches_cpu() {
     // `valleys: 4`: its pieces' floodplains and slopes vary along them (those of `valleys: 3`
-    // are the same code with equal ends); `valleys: 5`, the default: those and the walls'
-    // spurs, read at each sample's foot on every piece.
-    for valleys in [4, 5] {
+    // are the same code with equal ends); `valleys: 6`, the default: those, the walls' spurs,
+    // read at each sample's foot on every piece, and slopes scaled by the relief on the host
+    // (the shader's code is that of `valleys: 5`, which stored worlds keep).
+    for valleys in [4, 6] {
         river_carve_matches_cpu(valleys);
     }
 }

@@ -619,8 +619,8 @@ fn a_varied_valley_narrows_and_steepens_along_its_piece_within_the_carve_bound()
 /// `RiverJob::water_grid`) gives every sample's water surface and kind, bit for bit. The heights carved are the tile's raised by 40 m, so the valleys' walls apply.
 #[test]
 fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
-    // The default world (`valleys: 5`, whose walls' spurs the lanes read at each foot), and
-    // `valleys: 3`, without spurs or varied floodplains.
+    // The default world (`valleys: 6`, whose walls' spurs the lanes read at each foot and whose
+    // walls' slopes fall with the relief), and `valleys: 3`, without spurs or varied floodplains.
     for p in [plan(), valleys_plan(3)] {
         pruned_and_water_jobs_agree(&p);
     }
@@ -790,13 +790,13 @@ fn a_spur_bends_the_wall_and_keeps_it_rising() {
     }
 }
 
-/// `valleys: 5` (the default) against `valleys: 4` on the default world's carved tiles: the spurs move the
+/// `valleys: 5` against `valleys: 4` on the default world's carved tiles: the spurs move the
 /// valley walls (by metres in every area, by tens of metres in most; where a valley is cut by
 /// the full `CARVE_MAX_M`, as in much of the mountains' area, the limit holds the wall), while the rivers, lakes and seas
 /// kinds of water over every vertex stay as they were.
 #[test]
 fn spurs_move_the_walls_and_leave_the_rivers() {
-    let (four, five) = (valleys_plan(4), plan());
+    let (four, five) = (valleys_plan(4), valleys_plan(5));
     let mut highest = 0.0f32;
     for (name, cx, cz) in AREAS {
         let lod = 5u32;
@@ -837,6 +837,51 @@ fn spurs_move_the_walls_and_leave_the_rivers() {
         highest > 50.0,
         "the spurs move mountain walls by {highest} m at most"
     );
+}
+
+/// `valleys: 6` (the default) against `valleys: 5` on the default world's carved tiles: gentler
+/// walls only widen valleys, so no height rises (each wall's profile falls as its slope does, and
+/// the lowest profile and the carve's limit keep that), the water stays where it was, and in the
+/// low relief of the origin's plains the walls move by metres over many samples.
+#[test]
+fn gentler_walls_in_low_relief_widen_the_valleys_and_leave_the_rivers() {
+    let (five, six) = (valleys_plan(5), plan());
+    for (name, cx, cz) in AREAS {
+        let lod = 5u32;
+        let span = 64.0 * five.lods[lod as usize].spacing_m;
+        let key = TileKey {
+            lod,
+            x: (cx / span).floor() as i64,
+            z: (cz / span).floor() as i64,
+        };
+        let (mut lower, mut most) = (0usize, 0.0f32);
+        for dz in -1..=1 {
+            for dx in -1..=1 {
+                let k = TileKey {
+                    x: key.x + dx,
+                    z: key.z + dz,
+                    ..key
+                };
+                let (a, b) = (synthesize(&five, k), synthesize(&six, k));
+                assert_eq!(
+                    a.water_kind, b.water_kind,
+                    "{name} {k:?}: the walls moved water"
+                );
+                for (h5, h6) in a.heights.iter().zip(&b.heights) {
+                    assert!(h6 <= h5, "{name} {k:?}: a gentler wall raised {h5} to {h6}");
+                    lower += usize::from(h6 < h5);
+                    most = most.max(h5 - h6);
+                }
+            }
+        }
+        println!("{name}: {lower} heights lowered, at most {most:.1} m");
+        if name == "origin" {
+            assert!(
+                lower > 1000 && most > 2.0,
+                "{name}: {lower} heights, {most} m"
+            );
+        }
+    }
 }
 
 /// Largest turn, degrees, between the end of each piece and the start of the next along the

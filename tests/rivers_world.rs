@@ -1,8 +1,8 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 5` and `gullies: 2`,
-//! whose tiles differ; the worlds stored with `valleys: 2`, `3` and `4` keep theirs too.
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 2`,
+//! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too.
 
 mod common;
 
@@ -49,7 +49,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let earth = &doc["world"]["earth"];
     assert!(earth.get("gullies").is_none(), "{earth}");
 
-    // A bare seed is the new default, `valleys: 5`: the carved tile over a river differs.
+    // A bare seed is the new default, `valleys: 6`: the carved tile over a river differs.
     let stored = expected
         .lines()
         .find(|l| l.starts_with("1 3/-24/50 "))
@@ -60,7 +60,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     assert_ne!(
         blake3::hash(&bare).to_hex().as_str(),
         stored,
-        "bare seeds carve valleys: 5 and incised gullies"
+        "bare seeds carve valleys: 6 and incised gullies"
     );
 }
 
@@ -139,19 +139,49 @@ async fn a_world_stored_with_the_third_valleys_and_fourth_lakes_serves_the_same_
     );
 }
 
+/// A world stored with the default of new worlds before `valleys: 6` (`valleys: 5` and
+/// `lakes: 4`, `tests/fixtures/valleys5-world/`) keeps its bytes, where a bare seed, `valleys: 6`,
+/// whose walls are gentler in low relief, carves some of those tiles differently.
+#[tokio::test]
+async fn a_world_stored_with_the_fifth_valleys_serves_the_same_tile_bytes() {
+    const WORLD: &str = "bb61cdcb5d903e32f303403f";
+    const FIXTURE: &str = "valleys5-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 44).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
+    assert_eq!(
+        (&rivers["valleys"], &rivers["lakes"]),
+        (&5.into(), &4.into()),
+        "{rivers}"
+    );
+    let pinned = std::fs::read_to_string(common::fixture::path(FIXTURE, "tiles.blake3"))
+        .expect("fixture hashes");
+    let mut differ = 0;
+    for line in pinned.lines().filter(|l| l.starts_with("1 ")) {
+        let mut parts = line.split_whitespace().skip(1);
+        let (key, hash) = (parts.next().expect("key"), parts.next().expect("hash"));
+        let (status, bare) = get(&server.addr, &format!("/v1/seeds/42/tiles/{key}.bin")).await;
+        assert_eq!(status, 200, "{key}");
+        differ += usize::from(blake3::hash(&bare).to_hex().as_str() != hash);
+    }
+    assert!(
+        differ > 0,
+        "a bare seed carves valleys: 6, which no fixture tile shows"
+    );
+}
+
 #[test]
-fn new_scenes_carve_the_fifth_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_sixth_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 5);
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 6);
     assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
-    for known in [3, 4] {
+    for known in [3, 4, 5] {
         let mut older = scene.clone();
         older["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&older).expect("older valleys are accepted");
     }
     assert_eq!(scene["world"]["earth"]["gullies"], 2);
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(6);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 6 is refused");
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(7);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 7 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
 }

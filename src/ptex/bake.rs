@@ -1036,7 +1036,7 @@ mod tests {
         // Digests of the bake before the cached lattice cells, the shared pattern values and the
         // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
-        // carve `valleys: 5`, which moves these tiles' heights, the bake's input).
+        // carve later valleys, which move these tiles' heights, the bake's input).
         let mut params = WorldParams::default();
         if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
             rivers.valleys = 3;

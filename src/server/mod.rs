@@ -608,6 +608,10 @@ pub async fn serve(args: ServeArgs) -> anyhow::Result<()> {
         total_mb = budget.total >> 20,
         stage_mb = budget.stage >> 20,
         bodies_mb = budget.bodies >> 20,
+        images_mb = budget.images >> 20,
+        chunk_meshes_mb = budget.chunk_meshes >> 20,
+        regions_mb = budget.regions >> 20,
+        volumes_mb = budget.volumes >> 20,
         "cache memory budget"
     );
     let ledger = jobs::Ledger::new(store.clone(), Duration::from_secs(args.export_lease))

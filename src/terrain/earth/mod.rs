@@ -416,25 +416,41 @@ pub fn snow_shift(
     spacing_m: f32,
     normals: &[[f32; 3]],
 ) -> Vec<f32> {
-    const N: usize = 8;
+    use super::fractal::{gaussian_fast, lattice_index};
+    use super::noise::{corner_hashes, fade, interpolate};
     let n = super::plan::TILE_VERTS;
     let seed = plan.snow_seed;
-    let mut out = Vec::with_capacity(normals.len());
-    let (mut xs, mut zs, mut noise) = ([0.0f32; N], [0.0f32; N], [0.0f32; N]);
-    for (c, chunk) in normals.chunks(N).enumerate() {
-        for l in 0..N {
-            let v = (c * N + l).min(normals.len() - 1);
-            let gx = key.x * super::plan::TILE_QUADS + (v % n) as i64;
-            let gz = key.z * super::plan::TILE_QUADS + (v / n) as i64;
-            xs[l] = gx as f32 * spacing_m / SNOW_NOISE_SCALE_M;
-            zs[l] = gz as f32 * spacing_m / SNOW_NOISE_SCALE_M;
-        }
-        super::fractal::lattice_n(&xs, &zs, seed, &mut noise);
-        for (nrm, noise) in chunk.iter().zip(noise) {
-            out.push(SNOW_ASPECT_M * nrm[2] + SNOW_NOISE_M * noise);
-        }
-    }
-    out
+    // The noise of `fractal::lattice_n`, the same bits, with its per-axis parts computed once a
+    // column and once a row and each lattice cell's corners once a run of vertices in it (a
+    // cell is 300 m: a LOD-0 tile lies in at most four).
+    let axis = |t0: i64| -> Vec<(u32, f32)> {
+        (0..n as i64)
+            .map(|i| {
+                let c = (t0 * super::plan::TILE_QUADS + i) as f32 * spacing_m / SNOW_NOISE_SCALE_M;
+                let f = c.floor();
+                (lattice_index(f), fade(c - f))
+            })
+            .collect()
+    };
+    let (cols, rows) = (axis(key.x), axis(key.z));
+    let mut cell: Option<((u32, u32), [f32; 4])> = None;
+    normals
+        .iter()
+        .enumerate()
+        .map(|(v, nrm)| {
+            let v = v.min(n * n - 1);
+            let ((ix, u), (iz, w)) = (cols[v % n], rows[v / n]);
+            let corners = match cell {
+                Some((at, c)) if at == (ix, iz) => c,
+                _ => {
+                    let c = corner_hashes(ix, iz, seed).map(gaussian_fast);
+                    cell = Some(((ix, iz), c));
+                    c
+                }
+            };
+            SNOW_ASPECT_M * nrm[2] + SNOW_NOISE_M * interpolate(corners, u, w)
+        })
+        .collect()
 }
 
 /// The macro fields (elevation `e(c)`, relief amplitude `A`, ridge mix `ρ`) at world positions,

@@ -94,7 +94,7 @@ pub struct RiverParams {
     pub density: f32,
     /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
     pub incision_m: f32,
-    /// The valleys' shape, 1 to 5 ([`super::rivers`], step 6). `1`: at least 250 m wide and
+    /// The valleys' shape, 1 to 6 ([`super::rivers`], step 6). `1`: at least 250 m wide and
     /// more by discharge, so the land between rivers is pulled towards the planes of their water
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
@@ -103,9 +103,11 @@ pub struct RiverParams {
     /// parabola through the curve's middle, so the walls follow the curve without facets. `4`
     /// (asked for by name): the valleys of `3` whose floodplain narrows and widens and whose
     /// walls steepen and ease along the river, so they read as eroded valleys instead of canals.
-    /// `5` (new worlds): the valleys of `4` whose walls have spurs and hollows running down to
-    /// the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease wanders
-    /// instead of running straight.
+    /// `5` (new worlds until `6`): the valleys of `4` whose walls have spurs and hollows running
+    /// down to the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease
+    /// wanders instead of running straight. `6` (new worlds): the valleys of `5` whose walls are
+    /// gentler where the relief is lower ([`super::rivers::RELIEF_WALLS_MIN`]), so the rivers of
+    /// a plain run in broad swales instead of a maze of trenches.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -136,7 +138,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 5,
+            valleys: 6,
             lakes: 4,
         }
     }
@@ -178,9 +180,9 @@ impl RiverParams {
             &format!("{m} [0, 300]"),
         )?;
         check(
-            (1..=5).contains(&self.valleys),
+            (1..=6).contains(&self.valleys),
             "rivers.valleys",
-            "must be 1, 2, 3, 4 or 5",
+            "must be 1, 2, 3, 4, 5 or 6",
         )?;
         check(
             (1..=4).contains(&self.lakes),

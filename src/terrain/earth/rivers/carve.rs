@@ -8,7 +8,7 @@ use super::network::{Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    Q_MAX, REACH, RELIEF_WALLS_MIN, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
@@ -371,7 +371,14 @@ impl Network<'_> {
                 // `valleys: 4`: the floodplain's width and the walls' slope at a point of the
                 // centre line, scaled by value noise (one value at a point shared by the pieces
                 // that meet there, so they agree).
-                let shape = |x: f32, z: f32| self.plan.valley_shape(x, z, floodplain);
+                // `valleys: 6`: gentler walls where the relief is lower (one factor an edge).
+                let walls = self.plan.relief_walls.then(|| {
+                    (RELIEF_WALLS_MIN + (1.0 - RELIEF_WALLS_MIN) * relief.max(0.0).sqrt()).min(1.0)
+                });
+                let shape = |x: f32, z: f32| {
+                    let (f, slope) = self.plan.valley_shape(x, z, floodplain);
+                    (f, walls.map_or(slope, |w| slope * w))
+                };
                 for (p, bend) in edge.points.windows(2).zip(&edge.bends) {
                     let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
                     let (fa, sa) = shape(p[0][0], p[0][1]);

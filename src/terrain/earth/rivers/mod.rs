@@ -41,7 +41,7 @@
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
-//!    `valleys: 3` and later (`5` is the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
+//!    `valleys: 3` and later (`6` is the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
 //!    from its chord that leaves and reaches its ends along the curve's tangents
 //!    ([`Piece::sax`]; the edge's hashed bend is flat at the nodes), so the centre line has no
 //!    corner and the valley's walls follow the curve instead of showing a facet per piece.
@@ -70,12 +70,15 @@
 //!    the end's position, shared by the pieces that meet there), so a valley narrows to a gorge
 //!    and opens to a wide floor, and its walls steepen to bluffs and ease to long banks, along
 //!    its river; at 8 m spacing the `valleys: 3` floors of one width between walls of one slope
-//!    read as canals. With `valleys: 5` (the default of new worlds: the valleys of `4`) each
+//!    read as canals. With `valleys: 5` (the valleys of `4`) each
 //!    wall's smoothstep runs over a place bent by a spur value ([`SPUR`]), linear along each
 //!    piece between the spur noise at its ends ([`Piece::spur_a`]) and taken at the sample's
 //!    foot on the piece: spurs and hollows run straight down each wall to its river, and where the walls of two
 //!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
 //!    wanders with both rivers' spurs instead of running straight, equidistant from them.
+//!    With `valleys: 6` (the default of new worlds: the valleys of `5`) an edge's walls are
+//!    gentler where the relief is lower ([`RELIEF_WALLS_MIN`]): in plains a river runs in a
+//!    broad swale between low rises rather than a trench between flat banks.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -204,6 +207,17 @@ pub const SLOPE_NOISE_M: f32 = 700.0;
 /// eased banks (about 18°) to steep bluffs (about 35°). Gentler walls are wider, and the carve
 /// of a LOD-6 tile cost a quarter more with factors down to 0.55.
 pub const SLOPE_SCALE: (f32, f32) = (0.7, 1.5);
+/// Smallest factor of the `valleys: 6` walls' slope, where the relief is lowest: a wall's slope
+/// (from [`RiverPlan::valley_shape`]) is scaled by `RELIEF_WALLS_MIN + (1 − RELIEF_WALLS_MIN)·√r`
+/// (at most 1), `r` the relief amplitude of the macro fields at the edge's upper node over the
+/// world's largest (`EarthPlan::inv_relief_max`): about 0.52 in the default world's plains
+/// (walls of 10° to 20° instead of 18° to 35°), 0.7 in its hill country, 1 in the highest
+/// mountains. Valleys cut into low land have gentle sides: with walls as steep as the
+/// mountains' the rivers of a plain, a valley every kilometre, read at 64 m as a maze of
+/// trenches between flat ground. Gentler walls are wider, and the carve's cost grows with the
+/// samples they cover: with this factor a LOD-0 tile of `bench tiles`' plains strip costs
+/// about 6.6 % more than with `valleys: 5` (0.3: 8 %).
+pub const RELIEF_WALLS_MIN: f32 = 0.4;
 /// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
 pub const FLOODPLAIN: f32 = 4.0;
 /// Half-width of the smallest `valleys: 2` floodplain, metres.
@@ -282,6 +296,8 @@ pub struct RiverPlan {
     /// Whether each piece's floodplain width and wall slope vary along the river
     /// (`valleys: 4` and `5`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
     pub varied_valleys: bool,
+    /// Whether the walls' slope falls with the relief (`valleys: 6`, [`RELIEF_WALLS_MIN`]).
+    pub relief_walls: bool,
     /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0
     /// ([`RiverPlan::spur_at`]).
     pub spur_scale: f32,
@@ -330,6 +346,7 @@ impl RiverPlan {
             wall_noise: if params.valleys >= 3 { WALL_NOISE } else { 0.0 },
             wall_seed: stream(seed, purpose::EARTH, 401),
             varied_valleys: params.valleys >= 4,
+            relief_walls: params.valleys >= 6,
             spur_scale: if params.valleys >= 5 {
                 SPUR / WALL_NOISE_CLAMP
             } else {
