@@ -5,8 +5,8 @@
 //! bit for bit.
 
 use std::collections::HashSet;
-use strata::terrain::earth::rivers::{clear_caches, kind, LineEnd, Network, NodeId, RiverPlan};
-use strata::terrain::earth::{tile_rivers, EarthPlan};
+use strata::terrain::earth::rivers::{kind, LineEnd, Network, NodeId, RiverPlan};
+use strata::terrain::earth::{clear_caches, tile_rivers, EarthPlan};
 use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
 
 fn plan() -> WorldPlan {

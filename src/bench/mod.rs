@@ -4,7 +4,7 @@
 //! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
 //! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process; then (issue 17)
 //! `earth-1` tiles of the default world at LOD 0 against fastnoise-lite's time for 4 225
-//! samples, and coarse LODs against LOD 0, cold (the river network's caches emptied) and warm
+//! samples, and coarse LODs against LOD 0, cold (the process-wide caches emptied) and warm
 //! (the same tiles again). With `--json` each
 //! figure is one JSON object per line, units in the key names.
 //!
@@ -55,14 +55,14 @@ fn ms_per_tile(plan: &WorldPlan, keys: &[TileKey]) -> f64 {
     start.elapsed().as_secs_f64() * 1e3 / keys.len() as f64
 }
 
-/// Milliseconds per tile of `keys`, cold and warm: the first pass after emptying the river
-/// network's caches, then the same keys again with what that pass cached (after four tiles to
+/// Milliseconds per tile of `keys`, cold and warm: the first pass after emptying the
+/// process-wide caches (the river network's blocks, the climate's node windows), then the same keys again with what that pass cached (after four tiles to
 /// warm the code up).
 fn cold_warm_ms(plan: &WorldPlan, keys: &[TileKey]) -> (f64, f64) {
     for k in keys.iter().take(4) {
         black_box(synthesize(plan, *k));
     }
-    crate::terrain::earth::rivers::clear_caches();
+    crate::terrain::earth::clear_caches();
     let pass = || {
         let start = Instant::now();
         for k in keys {
@@ -309,7 +309,7 @@ fn earth_tiles(args: &BenchArgs) -> anyhow::Result<()> {
             "  earth-1, one core: {lod0:.3} ms per LOD-0 tile, {mountains:.3} ms in the mountains; fastnoise-lite 4225 8-octave samples {fnl_tile_ms:.3} ms: ratio {ratio:.2}, median of 5 alternating rounds (target ≤ {TARGET_EARTH_RATIO})"
         ),
     );
-    // Coarse LODs against LOD 0, each cold (the river network's caches emptied first: every
+    // Coarse LODs against LOD 0, each cold (the process-wide caches emptied first: every
     // tile builds the network blocks it reads, as the first tiles of a region do) and warm (the
     // same tiles again with those blocks cached, as a server streaming a region has them: tiles
     // of every LOD and their neighbours share the blocks). LOD 0 is the plains strip, timed the

@@ -17,7 +17,8 @@
 //! budget; what the process holds besides is a fixed overhead on top, which `strata bench serve`
 //! measures: code and runtime, requests in flight, allocator slack, and the `earth-1` river
 //! block caches (`terrain::earth::rivers::network`, process-wide `moka` caches of their own,
-//! 200 MiB in all, outside this budget because `terrain` sits below `cache` and `server`).
+//! 200 MiB in all) and climate node windows (`terrain::earth::climate`, 16 MiB), outside this
+//! budget because `terrain` sits below `cache` and `server`.
 
 /// Default of `--memory-budget`, MiB.
 pub const DEFAULT_MEMORY_BUDGET_MB: u64 = 512;

@@ -192,6 +192,9 @@ pub struct EarthPlan {
     pub snow_seed: u32,
     /// Rivers and lakes, when the world has them enabled.
     pub rivers: Option<rivers::RiverPlan>,
+    /// Identifies the world function the climate nodes are computed from (the seed and the
+    /// world settings): the key of [`climate`]'s process-wide cache of node windows.
+    pub fingerprint: u64,
 }
 
 fn octaves(
@@ -384,6 +387,12 @@ impl EarthPlan {
                 l.bound_m += rivers::CARVE_MAX_M + shores;
             }
         }
+        let mut hasher = blake3::Hasher::new();
+        hasher.update(b"strata climate v1");
+        hasher.update(&seed.to_le_bytes());
+        hasher.update(&world);
+        let mut first = [0u8; 8];
+        first.copy_from_slice(&hasher.finalize().as_bytes()[..8]);
         Self {
             macro_plan,
             lods,
@@ -393,8 +402,17 @@ impl EarthPlan {
             inv_relief_max: (1.0 / a_max) as f32,
             snow_seed: stream(seed, purpose::EARTH, 300),
             rivers,
+            fingerprint: u64::from_le_bytes(first),
         }
     }
+}
+
+/// Empties the process-wide caches of every world (the river network's blocks and the climate's
+/// node windows); the results stay the same: tests use it to compute a tile from nothing, and
+/// `bench tiles` to time a cold pass.
+pub fn clear_caches() {
+    rivers::clear_caches();
+    climate::clear_cache();
 }
 
 /// How far north-facing slopes pull the snow line down (and south-facing ones push it up), per
