@@ -56,8 +56,8 @@ fn ms_per_tile(plan: &WorldPlan, keys: &[TileKey]) -> f64 {
 }
 
 /// Milliseconds per tile of `keys`, cold and warm: the first pass after emptying the
-/// process-wide caches (the river network's blocks, the climate's node windows), then the same keys again with what that pass cached (after four tiles to
-/// warm the code up).
+/// process-wide caches (the river network's blocks, the climate's node windows), then the same
+/// keys again with what that pass cached (after four tiles to warm the code up).
 fn cold_warm_ms(plan: &WorldPlan, keys: &[TileKey]) -> (f64, f64) {
     for k in keys.iter().take(4) {
         black_box(synthesize(plan, *k));

@@ -18,8 +18,9 @@
 //!   [`BATCH_TEXELS`] interior texels each (one 256² page), one frame of kind 3 each: the level
 //!   and kind of the nearest queued page, then the next queued pages of that level and kind in
 //!   queue order (the others wait for later batches); vista and detail batches alternate
-//!   while both kinds of page wait; the session interleaves them with tile and chunk frames, at most one batch per [`PTEX_EVERY`] frames
-//!   while tiles or chunks wait, every frame spending a credit;
+//!   while both kinds of page wait; the session interleaves them with tile and chunk frames,
+//!   at most one batch per [`PTEX_EVERY`] frames while tiles or chunks wait, every frame
+//!   spending a credit;
 //! - an **edit** queues again the vista and detail pages of exactly the faces whose reach (the
 //!   face's footprint grown by its tile's input margin and one lattice cell, which its border
 //!   texels read from the neighbours) meets the dirty region;
