@@ -122,9 +122,17 @@ const WINDOW_MAX_NODES: usize = 3;
 /// Byte budget of [`WINDOWS`].
 const WINDOWS_BYTES: u64 = 16 << 20;
 
-/// A node window: the blurred weights of its nodes and the macro fields of its nodes with the
-/// blur margin.
-type Window = Arc<(Vec<f32>, NodeMacro)>;
+/// A node window of a job: the blurred biome weights of its nodes (the nodes around its
+/// samples) and the macro fields of those nodes with the blur margin.
+#[derive(Debug)]
+pub struct NodeWindow {
+    /// Blurred weights, `K` per node, row-major.
+    pub weights: Vec<f32>,
+    /// The nodes' macro fields, the blur margin included.
+    pub node_macro: NodeMacro,
+}
+
+type Window = Arc<NodeWindow>;
 
 /// A window's key: the world's fingerprint, its first and last node column and row.
 type WindowKey = (u64, i64, i64, i64, i64);
@@ -139,8 +147,8 @@ static WINDOWS: std::sync::LazyLock<moka::sync::Cache<WindowKey, Window>> =
         moka::sync::Cache::builder()
             .max_capacity(WINDOWS_BYTES)
             .weigher(|_, w: &Window| {
-                let m = &w.1;
-                let floats = w.0.len() + m.elev.len() + m.amp.len() + m.ridge.len();
+                let m = &w.node_macro;
+                let floats = w.weights.len() + m.elev.len() + m.amp.len() + m.ridge.len();
                 (64 + 4 * floats).min(u32::MAX as usize) as u32
             })
             .build()
@@ -156,7 +164,11 @@ pub fn clear_cache() {
 /// sample `(i, j)` is node `(i + r, j + r)` of them, `r` the blur kernel's radius, and its macro
 /// fields are those of the height function at the sample, the same bits (a node at lattice
 /// index `g` sits at `(g · 4096) as f32`, which is `g as f32 · 4096`, the sample's position).
-pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Vec<f32>, NodeMacro) {
+pub fn weights_and_macro(
+    plan: &EarthPlan,
+    spacing_m: f32,
+    job: FieldJob,
+) -> (Vec<f32>, Arc<NodeWindow>) {
     let k = plan.climate.count;
     let r = plan.climate.kernel.len() / 2;
     let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
@@ -175,9 +187,12 @@ pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Ve
         let rows: Vec<f32> = (0..bh as i64).map(|j| at(j0 - r as i64 + j)).collect();
         let mut ids = vec![0u8; bw * bh];
         let node_macro = node_biomes(plan, &cols, &rows, &mut ids);
-        let mut nodes = vec![0.0f32; nw * nh * k];
-        blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut nodes);
-        Arc::new((nodes, node_macro))
+        let mut weights = vec![0.0f32; nw * nh * k];
+        blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut weights);
+        Arc::new(NodeWindow {
+            weights,
+            node_macro,
+        })
     };
     // A window of at most 3 × 3 nodes (every tile up to LOD 6, whose samples lie in one or two
     // node cells a side) is shared by the tiles in the same cells: 4,096 LOD-0 tiles a cell.
@@ -186,7 +201,7 @@ pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Ve
     } else {
         nodes_of()
     };
-    let (nodes, node_macro) = (&window.0, window.1.clone());
+    let nodes = &window.weights;
     let mut out = vec![0.0f32; job.w * job.h * k];
     if samples_are_nodes(spacing_m) {
         // Sample `(i, j)` is node `(i, j)` and every offset is 0: the lerps below would add
@@ -200,7 +215,7 @@ pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Ve
                 }
             }
         }
-        return (out, node_macro);
+        return (out, window);
     }
     // Each column's node and offset, computed once for all rows.
     let cols: Vec<(usize, f32)> = (0..job.w)
@@ -265,5 +280,5 @@ pub fn weights_and_macro(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> (Ve
             }
         }
     }
-    (out, node_macro)
+    (out, window)
 }

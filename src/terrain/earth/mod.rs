@@ -387,12 +387,6 @@ impl EarthPlan {
                 l.bound_m += rivers::CARVE_MAX_M + shores;
             }
         }
-        let mut hasher = blake3::Hasher::new();
-        hasher.update(b"strata climate v1");
-        hasher.update(&seed.to_le_bytes());
-        hasher.update(&world);
-        let mut first = [0u8; 8];
-        first.copy_from_slice(&hasher.finalize().as_bytes()[..8]);
         Self {
             macro_plan,
             lods,
@@ -402,9 +396,22 @@ impl EarthPlan {
             inv_relief_max: (1.0 / a_max) as f32,
             snow_seed: stream(seed, purpose::EARTH, 300),
             rivers,
-            fingerprint: u64::from_le_bytes(first),
+            fingerprint: fingerprint(b"strata climate v1", seed, &world),
         }
     }
+}
+
+/// The first eight bytes of the blake3 of `domain`, the seed and the serialised world settings
+/// `world`: the key under which the process-wide caches keep a world's blocks, so worlds and
+/// versions with equal settings share them.
+pub(crate) fn fingerprint(domain: &[u8], seed: u64, world: &[u8]) -> u64 {
+    let mut hasher = blake3::Hasher::new();
+    hasher.update(domain);
+    hasher.update(&seed.to_le_bytes());
+    hasher.update(world);
+    let mut first = [0u8; 8];
+    first.copy_from_slice(&hasher.finalize().as_bytes()[..8]);
+    u64::from_le_bytes(first)
 }
 
 /// Empties the process-wide caches of every world (the river network's blocks and the climate's
@@ -512,7 +519,8 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         w,
         h,
     } = job;
-    let (weights, node_macro) = climate::weights_and_macro(plan, spacing_m, job);
+    let (weights, window) = climate::weights_and_macro(plan, spacing_m, job);
+    let node_macro = &window.node_macro;
     let relief = lattice::relief_of(plan, &weights);
     let n = w * h;
     let mut heights = vec![0.0f32; n];

@@ -325,14 +325,7 @@ impl RiverPlan {
         erosion: f32,
         world: &[u8],
     ) -> Self {
-        let mut hasher = blake3::Hasher::new();
-        hasher.update(b"strata rivers v1");
-        hasher.update(&seed.to_le_bytes());
-        hasher.update(world);
-        let digest = hasher.finalize();
-        let mut first = [0u8; 8];
-        first.copy_from_slice(&digest.as_bytes()[..8]);
-        let fingerprint = u64::from_le_bytes(first);
+        let fingerprint = super::fingerprint(b"strata rivers v1", seed, world);
         let lod = libm::log2((params.spacing_m * NODE_LOD_FACTOR / cell_m) as f64).floor();
         Self {
             spacing_m: params.spacing_m,
