@@ -512,3 +512,70 @@ async fn an_edit_of_the_biomes_sends_their_new_names_before_the_fresh_tiles() {
     assert!(world < invalidate, "{msgs:?}");
     assert_eq!(tiles.len(), select(0.0, 0.0, &[1], 1.0).len());
 }
+
+/// A v2 view with `tile_format: 2` gets tile frames whose payloads are the version 2 tiles
+/// (each vertex's water surface and kind) that `GET …/tiles/…bin?format=2` serves, so a client
+/// tells lake water from a river's without guessing; `tile_format` is checked like `format`.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn tile_format_2_streams_the_tiles_with_their_water_kinds() {
+    let addr = serve().await;
+    let mut ws = connect(&addr, "/v1/seeds/42/stream?protocol=2").await;
+    let hello = json_text(&next(&mut ws, Duration::from_secs(30)).await).expect("hello");
+    assert_eq!(hello["protocol"], "strata.stream.v2");
+    for (bad, field) in [
+        (json!({"tile_format": 3}), "tile_format"),
+        (json!({"tile_format": 2, "format": "png"}), "tile_format"),
+    ] {
+        let mut view = json!({"type": "view", "x": 60000, "z": -18000, "rings": [1]});
+        for (k, v) in bad.as_object().expect("fields") {
+            view[k] = v.clone();
+        }
+        send(&mut ws, view).await;
+        let m = json_text(&next(&mut ws, Duration::from_secs(30)).await).expect("error");
+        assert_eq!(
+            (m["code"].as_str(), m["field"].as_str()),
+            (Some("unknown_format"), Some(field)),
+            "{m}"
+        );
+    }
+    // One LOD-6 tile and its ring around a lake that a river crosses (seed 42).
+    send(&mut ws, json!({"type": "credit", "frames": 64})).await;
+    send(
+        &mut ws,
+        json!({"type": "view", "x": 60000, "z": -18000, "rings": [0, 0, 0, 0, 0, 0, 1], "tile_format": 2}),
+    )
+    .await;
+    let (_, tiles, _) = until_idle(&mut ws).await;
+    assert!(
+        tiles.len() >= 9,
+        "a ring of LOD-6 tiles at least: {}",
+        tiles.len()
+    );
+    let mut kinds = [0usize; 4];
+    for t in &tiles {
+        let s = |b: bool| u8::from(b).to_string();
+        let path = format!(
+            "/v1/seeds/42/tiles/{}/{}/{}.bin?format=2&seams={}",
+            t.key.lod,
+            t.key.x,
+            t.key.z,
+            t.seams.map(s).join(",")
+        );
+        let (status, body) = strata::bench::http::http(&addr, "GET", &path, &[], "")
+            .await
+            .expect("HTTP");
+        assert_eq!(status, 200, "{path}");
+        assert_eq!(t.payload, body, "the frame of {path} carries its bytes");
+        // The header's version (offset 4) and water kind section (offset 112), little-endian.
+        let p = &t.payload;
+        assert_eq!(u16::from_le_bytes([p[4], p[5]]), 2, "a version 2 tile");
+        let at = u32::from_le_bytes([p[112], p[113], p[114], p[115]]) as usize;
+        for &k in &p[at..at + 65 * 65] {
+            kinds[k as usize] += 1;
+        }
+    }
+    assert!(
+        kinds[2] > 0 && kinds[3] > 0,
+        "the view holds lake and river water: {kinds:?}"
+    );
+}

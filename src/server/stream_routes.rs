@@ -36,7 +36,7 @@ impl From<AppError> for StreamError {
     }
 }
 
-/// The frame of tile `key` of the world `view`: the tile's body (through the body cache) behind
+/// The frame of tile `key` of the world `view` in `format` of `version`: the tile's body (through the body cache) behind
 /// a frame header, itself kept in the body cache under a key of its own, so the clients
 /// streaming one area share one copy of each frame, the frames in their queues included.
 async fn tile_frame(
@@ -45,8 +45,9 @@ async fn tile_frame(
     key: TileKey,
     seams: [bool; 4],
     format: Format,
+    version: TileVersion,
 ) -> Result<Bytes, StreamError> {
-    let tag = TileVersion::V1.tag(format);
+    let tag = version.tag(format);
     let tile_hash = view.view.tile_hash(key, seams);
     // The frame names the world version, so its key does too; the domain string keeps frame
     // keys apart from the tile bodies' input hashes.
@@ -62,8 +63,7 @@ async fn tile_frame(
             // Boxed: the tile product's future nested in this one exceeds the compiler's
             // layout depth otherwise.
             let product =
-                Box::pin(state.tile_product(&view.view, key, seams, format, TileVersion::V1))
-                    .await?;
+                Box::pin(state.tile_product(&view.view, key, seams, format, version)).await?;
             let bytes = TileFrame::encode_parts(key, format, view.version, seams, &product.body);
             Ok(frame_product(bytes))
         })
@@ -176,8 +176,9 @@ impl StreamSource for Source {
         key: TileKey,
         seams: [bool; 4],
         format: Format,
+        version: TileVersion,
     ) -> Result<Bytes, StreamError> {
-        tile_frame(&self.state, view, key, seams, format).await
+        tile_frame(&self.state, view, key, seams, format, version).await
     }
 
     async fn ground_tile(&self, view: &StreamView, key: TileKey) -> Arc<crate::terrain::Tile> {

@@ -113,6 +113,9 @@ pub struct VolumeView {
     pub chunk_format: Option<String>,
     /// Ptex pages: the client opts in with its view direction ([`super::ptex`]).
     pub ptex: Option<super::ptex::PtexView>,
+    /// Version of the tile frames' encoding, `1` (default) or `2` (`api/tile_format_v2.md`:
+    /// each vertex's water surface and kind); `None` when not given.
+    pub tile_format: Option<u32>,
 }
 
 #[derive(Deserialize)]
@@ -143,6 +146,8 @@ struct ViewFieldsV2 {
     chunk_format: Option<String>,
     #[serde(default)]
     ptex: Option<super::ptex::PtexView>,
+    #[serde(default)]
+    tile_format: Option<u32>,
 }
 
 #[derive(Deserialize)]
@@ -206,6 +211,7 @@ impl ClientMessage {
                         chunks: f.chunks,
                         chunk_format: f.chunk_format,
                         ptex: f.ptex,
+                        tile_format: f.tile_format,
                     }),
                 })
             }

@@ -48,7 +48,7 @@ use super::ptex::{
 };
 use super::view::{select, ViewTile, MAX_VIEW_TILES};
 use super::work::{merge, Product, Work};
-use crate::encode::Format;
+use crate::encode::{Format, TileVersion};
 use crate::scene::{Dirty, Rect};
 use crate::subsurface::openings::CaveSite;
 use crate::terrain::{Tile, TileKey, WorldParams, WorldPlan};
@@ -184,7 +184,7 @@ pub trait StreamSource: Send + Sync + 'static {
         patch: serde_json::Value,
         if_match: Option<u64>,
     ) -> Result<u64, StreamError>;
-    /// The frame of tile `key` with `seams` of the world `view` in `format` (its bytes as
+    /// The frame of tile `key` with `seams` of the world `view` in `format` of `version` (its bytes as
     /// [`TileFrame::encode`] writes them, with the view's version): reference-counted bytes a
     /// source shares between the clients that stream the same tile.
     async fn frame(
@@ -193,6 +193,7 @@ pub trait StreamSource: Send + Sync + 'static {
         key: TileKey,
         seams: [bool; 4],
         format: Format,
+        version: TileVersion,
     ) -> Result<axum::body::Bytes, StreamError>;
     /// Height tile `key` of the world `view` without seams: the tile a volume chunk reads its
     /// columns from (the cave selection reads its ground, [`super::cave_chunks`]).
@@ -405,7 +406,7 @@ pub async fn run<S: StreamSource>(
     if !outbox.push(text(&hello)).await {
         return;
     }
-    let mut format = Format::Bin;
+    let mut format = (Format::Bin, TileVersion::V1);
     let mut view = ViewState::default();
     let mut held: HashMap<Product, u64> = HashMap::new();
     let mut pending: VecDeque<Work> = VecDeque::new();
@@ -474,6 +475,9 @@ pub async fn run<S: StreamSource>(
                     }
                     Ok(ClientMessage::View { x, z, rings, format: f, volume }) => {
                         let accepted = view_of(x, z, &rings, f.as_deref(), cell_m).and_then(|(tiles, fmt)| {
+                            let tile_format = volume.as_ref().and_then(|v| v.tile_format);
+                            Ok((tiles, (fmt, tile_version_of(tile_format, fmt)?)))
+                        }).and_then(|(tiles, fmt)| {
                             let chunks = match &volume {
                                 Some(vol) => Some(chunk_view_of(vol, current.plan())?),
                                 None => None,
@@ -686,7 +690,7 @@ pub async fn run<S: StreamSource>(
                 let produced = tokio::select! {
                     r = async {
                         match w {
-                            Work::Tile(t) => source.frame(&current, t.key, t.seams, format).await,
+                            Work::Tile(t) => source.frame(&current, t.key, t.seams, format.0, format.1).await,
                             Work::Chunk(c) => source.chunk_frame(&current, c, view.chunk_format.unwrap_or(Format::Bin)).await,
                         }
                     } => r,
@@ -754,6 +758,33 @@ pub async fn run<S: StreamSource>(
     }
     outbox.close();
     let _ = writer.await;
+}
+
+/// The tile encoding's version a v2 view asks for with `tile_format` (`1` when not given); `2`
+/// exists for `bin` and `json` only (`api/tile_format_v2.md`).
+fn tile_version_of(tile_format: Option<u32>, format: Format) -> Result<TileVersion, StreamError> {
+    let version = match tile_format {
+        None | Some(1) => TileVersion::V1,
+        Some(2) => TileVersion::V2,
+        Some(n) => {
+            return Err(refused(
+                "unknown_format",
+                "tile_format",
+                format!("tile_format must be 1 or 2, got {n}"),
+            ))
+        }
+    };
+    if !version.has(format) {
+        return Err(refused(
+            "unknown_format",
+            "tile_format",
+            format!(
+                "tile_format 2 exists for the bin and json tiles, not {}",
+                format.extension()
+            ),
+        ));
+    }
+    Ok(version)
 }
 
 /// Validates a view message: its position within the world, its rings and format; returns the

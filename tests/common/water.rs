@@ -97,3 +97,75 @@ pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Ti
     }
     panic!("no LOD-{lod} tile with {lakes} lake and {streams} river vertices near the origin");
 }
+
+/// A point where a river line of the default world runs into a lake it crosses: the line point
+/// over a LOD-6 tile's lake vertex (of a lake found by [`lake_tile`]'s search) nearest a dry
+/// vertex. A river line runs on through a lake at the lake's level, so a client that took the
+/// line's water for the river's would cut the lake's sheet along it. Panics if none is found.
+pub fn river_into_lake(plan: &WorldPlan) -> (f64, f64) {
+    let earth = plan.earth.as_ref().expect("an earth-1 world");
+    let coarsest = rivers::MAX_CARVE_LOD as u32;
+    let mut best: Option<((f64, f64), f64)> = None;
+    for (x, z) in [(0, 0), (-1, 0), (0, -1), (-1, -1)] {
+        let coarse = synthesize(
+            plan,
+            TileKey {
+                lod: coarsest,
+                x,
+                z,
+            },
+        );
+        let s = coarse.spacing_m as f64;
+        let mut keys: Vec<TileKey> = (0..coarse.water_kind.len())
+            .filter(|&v| coarse.water_kind[v] == rivers::kind::LAKE)
+            .map(|v| {
+                let wx = coarse.origin_x_m() + (v % 65) as f64 * s;
+                let wz = coarse.origin_z_m() + (v / 65) as f64 * s;
+                key_at(plan, 6, wx, wz)
+            })
+            .collect();
+        keys.sort_by_key(|k| (k.x, k.z));
+        keys.dedup();
+        for key in keys {
+            let tile = synthesize(plan, key);
+            let d = tile.spacing_m as f64;
+            let vertex = |px: f64, pz: f64| -> Option<usize> {
+                let i = ((px - tile.origin_x_m()) / d).round();
+                let j = ((pz - tile.origin_z_m()) / d).round();
+                ((0.0..65.0).contains(&i) && (0.0..65.0).contains(&j))
+                    .then_some(j as usize * 65 + i as usize)
+            };
+            let dry: Vec<(f64, f64)> = (0..65 * 65)
+                .filter(|&v| tile.water_kind[v] == rivers::kind::NONE)
+                .map(|v| {
+                    (
+                        tile.origin_x_m() + (v % 65) as f64 * d,
+                        tile.origin_z_m() + (v / 65) as f64 * d,
+                    )
+                })
+                .collect();
+            for line in tile_rivers(earth, key, tile.spacing_m) {
+                for p in &line.points {
+                    let (px, pz) = (p[0] as f64, p[1] as f64);
+                    let Some(v) = vertex(px, pz) else { continue };
+                    if tile.water_kind[v] != rivers::kind::LAKE {
+                        continue;
+                    }
+                    let to_shore = dry
+                        .iter()
+                        .map(|&(x, z)| (x - px).hypot(z - pz))
+                        .fold(f64::INFINITY, f64::min);
+                    // Well inside the lake (its sheet around the line), the shore in view.
+                    if (300.0..800.0).contains(&to_shore) && best.is_none_or(|(_, b)| to_shore < b)
+                    {
+                        best = Some(((px, pz), to_shore));
+                    }
+                }
+            }
+            if best.is_some() {
+                return best.map(|(p, _)| p).expect("found");
+            }
+        }
+    }
+    panic!("no river line through a lake near the origin");
+}

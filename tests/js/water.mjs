@@ -1,8 +1,8 @@
 // Water in the viewer (issue 19, Done-when 4): node water.mjs <server host:port> <places JSON>
 // <screenshot dir>
 //
-// <places JSON> is `[{"name", "x", "z", "dist", "rings"}]` (seed 42; a coast, a lake and a river,
-// found by tests/viewer_water.rs from the tiles). For each place the viewer looks straight down
+// <places JSON> is `[{"name", "x", "z", "dist", "rings", "max_cracks"?}]` (seed 42; a coast, a
+// lake, a river and a river line crossing a lake, found by tests/viewer_water.rs from the tiles). For each place the viewer looks straight down
 // (pitch 89°) at (x, z) from `dist` metres; once the view has streamed (and the river lines have
 // arrived) the test takes a screenshot (`<dir>/water-<name>.png`), hides the panels (which would
 // read as dry land over the water) and computes
@@ -245,6 +245,8 @@ try {
         `over ${dists.length} edge points, ${alongBorder} along tile borders away from the shoreline ` +
         `(${(100 * borderShare).toFixed(2)} %), ${cracks} crack points closed → ${shotPath}`,
     );
+    if (place.max_cracks !== undefined && cracks > place.max_cracks)
+      failures.push(`${place.name}: ${cracks} crack points in the water > ${place.max_cracks}: a gap in a sheet`);
     if (s.errors.length) failures.push(`${place.name}: the viewer shows errors: ${s.errors.join(" | ")}`);
     if (known < 0.9 * cols * rows) failures.push(`${place.name}: only ${known} of ${cols * rows} points over held tiles`);
     if (share < MIN_SHARE || share > 1 - MIN_SHARE)

@@ -22,7 +22,7 @@ function decode(data: ArrayBuffer): void {
     if (frame.format !== 2) throw new Error(`unexpected payload format ${frame.format}`);
     if (frame.kind === KIND_TILE) {
       const tile = decodeTile(frame.payload);
-      const arrays = [tile.heights, tile.normals, tile.weights, tile.materials, tile.waterDepth, tile.volumeOverride];
+      const arrays = [tile.heights, tile.normals, tile.weights, tile.materials, tile.waterDepth, tile.waterKind, tile.volumeOverride];
       post({ type: "tile", ...head, tile }, arrays.map((a) => a.buffer));
     } else if (frame.kind === KIND_CHUNK) {
       const chunk = decodeChunk(frame.payload);

@@ -40,6 +40,8 @@ export interface Tile {
   weights: Uint8Array;
   materials: Uint8Array;
   waterDepth: Float32Array;
+  /** Water kind per vertex (`api/tile_format_v2.md`: 0 none, 1 sea, 2 lake, 3 river); empty in a version 1 tile. */
+  waterKind: Uint8Array;
   /** 1 where a volume chunk gives the surface (the tile hides those vertices); empty when none. */
   volumeOverride: Uint8Array;
 }
@@ -74,11 +76,11 @@ export function decodeFrame(buf: ArrayBuffer): Frame {
   };
 }
 
-/** A `bin` tile: checks magic and version, reads sections at the offsets the header gives. */
+/** A `bin` tile of version 1 or 2: checks magic and version, reads sections at the offsets the header gives. */
 export function decodeTile(p: DataView): Tile {
   if (p.byteLength < 128 || magic(p, 0) !== "STRT") throw new Error("not a STRT tile");
   const version = p.getUint16(4, true);
-  if (version !== 1) throw new Error(`unknown tile version ${version}`);
+  if (version !== 1 && version !== 2) throw new Error(`unknown tile version ${version}`);
   const size = p.getUint16(36, true);
   const biomeCount = p.getUint16(38, true);
   const n = p.getUint32(40, true);
@@ -106,6 +108,7 @@ export function decodeTile(p: DataView): Tile {
     weights: bytes(p.getUint32(88, true), n * biomeCount),
     materials: bytes(p.getUint32(92, true), n),
     waterDepth: f32(p.getUint32(96, true), n),
+    waterKind: version === 2 ? bytes(p.getUint32(112, true), n) : new Uint8Array(0),
     volumeOverride: p.getUint32(104, true) ? bytes(p.getUint32(104, true), n) : new Uint8Array(0),
   };
 }

@@ -535,7 +535,8 @@ function sendView(force = false): void {
   state.viewTiles = wanted.size;
   const y = camera.position.y;
   lastForward.copy(forward);
-  const view: Record<string, unknown> = { type: "view", x, z, rings, format: "bin", y, chunk_rings: chunkRings };
+  // `tile_format: 2`: the tiles carry each vertex's water kind, so ./riverMask.ts knows a river's water from a lake's.
+  const view: Record<string, unknown> = { type: "view", x, z, rings, format: "bin", tile_format: 2, y, chunk_rings: chunkRings };
   // `chunks`: the volume chunks' quads get pages too (./chunk.ts draws them).
   if (ptexOn) view.ptex = { forward: forward.toArray(), half_angle_deg: halfAngleDeg(), far_m: PTEX_FAR_M, chunks: true };
   send(view);
@@ -718,10 +719,7 @@ function onControl(m: any): void {
 fetch(new URL("v1/info", `${location.origin}${location.pathname}`))
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`/v1/info: HTTP ${r.status}`))))
   .then((info) => {
-    if (typeof info?.limits?.max_river_lod === "number") {
-      const sea = info?.world?.sea_level_m;
-      rivers.enable(info.limits.max_river_lod, typeof sea === "number" ? sea : undefined);
-    }
+    if (typeof info?.limits?.max_river_lod === "number") rivers.enable(info.limits.max_river_lod);
     if (typeof info?.world?.cell_m === "number" && info.world.cell_m !== cellM) {
       cellM = info.world.cell_m;
       sendView(true);

@@ -1,6 +1,9 @@
 // River ribbons: each centre line of a tile as a band of its channel width, cut to the tile's
 // square (so the pieces of neighbouring tiles meet on their shared edge) and laid on the water
-// level, or just above the tile's ground where the ground is higher than the level.
+// level, or just above the tile's ground where the ground is higher than the level. A line runs on
+// through the lakes it crosses, at the lake's level: a piece whose corners all lie over lake water
+// (the tile's water kinds, `api/tile_format_v2.md`) is left to the lake's sheet, which would
+// otherwise show the band as a darker line across the lake.
 import * as THREE from "three";
 import type { Tile } from "./frame";
 import type { RiverLine } from "./riverLines";
@@ -34,7 +37,9 @@ export function buildRibbons(tile: Tile, lines: RiverLine[]): Ribbons {
   for (const line of lines) {
     const inside = clippedLength(line, rect);
     const before = pos.length;
-    ribbon(line, rect, step, (poly) => emit(poly, tile, pos));
+    ribbon(line, rect, step, (poly) => {
+      if (!overLake(poly, tile)) emit(poly, tile, pos);
+    });
     if (inside > 0 || pos.length > before) {
       count++;
       length += inside;
@@ -151,6 +156,19 @@ function clip(poly: Corner[], rect: Rect): Corner[] {
     if (cur.length < 3) return [];
   }
   return cur;
+}
+
+/** `api/tile_format_v2.md`'s water kind of a lake. */
+const KIND_LAKE = 2;
+
+/** Whether every corner of `poly` lies nearest a vertex of `tile` with lake water (never, in a tile without kinds). */
+function overLake(poly: Corner[], tile: Tile): boolean {
+  if (tile.waterKind.length === 0) return false;
+  return poly.every(([x, z]) => {
+    const i = Math.min(tile.size - 1, Math.max(0, Math.round((x - tile.originX) / tile.spacing)));
+    const j = Math.min(tile.size - 1, Math.max(0, Math.round((z - tile.originZ) / tile.spacing)));
+    return tile.waterKind[j * tile.size + i] === KIND_LAKE;
+  });
 }
 
 /** Appends `poly` as a fan of upward-facing triangles, each corner draped on the tile, relative to its origin. */

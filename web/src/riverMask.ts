@@ -1,32 +1,29 @@
-// Which of a tile's wet vertices hold river water that a ribbon draws instead. The tiles the
-// stream sends (`bin`, version 1) give each vertex's water depth but not whose water it is, so a
-// wet vertex counts as the river's when it lies near a river line of the tile and its water
-// surface is not the level of still water: the sea (sea level, and the last level of lines that
-// end in the sea) or a lake (the last level of lines that end in one).
+// Which of a tile's wet vertices hold river water that a ribbon draws instead: those whose water
+// kind is a river's (the stream's tiles are version 2, `api/tile_format_v2.md`) near a river line
+// of the tile. A river line also runs through the lakes it crosses, at the lake's level; the
+// kinds keep those lakes' vertices lake water, so the lake's sheet has no gap along the line.
 import type { Tile } from "./frame";
 import type { RiverLine } from "./riverLines";
 import { tileRect } from "./tileGround";
 
-/** Water surfaces this close to a still-water level are that sea or lake, metres. */
-const STILL_TOLERANCE_M = 0.05;
+/** `api/tile_format_v2.md`'s water kind of a river's channel. */
+const KIND_RIVER = 3;
 
 /**
- * One flag per vertex: 1 where the vertex is wet with river water near one of `lines` (within
- * half the channel's width plus one vertex spacing of its centre line), 0 elsewhere.
+ * One flag per vertex: 1 where the vertex holds river water (kind 3) near one of `lines` (within
+ * half the channel's width plus one vertex spacing of its centre line), 0 elsewhere. A version 1
+ * tile (no kinds) has none.
  */
-export function riverVertices(tile: Tile, lines: RiverLine[], seaLevel: number | undefined): Uint8Array {
-  const { size, spacing, heights, waterDepth } = tile;
+export function riverVertices(tile: Tile, lines: RiverLine[]): Uint8Array {
+  const { size, spacing, waterKind } = tile;
   const flags = new Uint8Array(size * size);
-  const still: number[] = seaLevel === undefined ? [] : [seaLevel];
-  for (const l of lines) if (l.ends === "sea" || l.ends === "lake") still.push(l.points[l.points.length - 1][2]);
+  if (waterKind.length === 0) return flags;
   const segments = nearSegments(tile, lines);
   if (segments.length === 0) return flags;
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {
       const v = j * size + i;
-      if (!(waterDepth[v] > 0)) continue;
-      const surface = heights[v] + waterDepth[v];
-      if (still.some((s) => Math.abs(surface - s) <= STILL_TOLERANCE_M)) continue;
+      if (waterKind[v] !== KIND_RIVER) continue;
       const x = tile.originX + i * spacing;
       const z = tile.originZ + j * spacing;
       for (const [ax, az, bx, bz, reach] of segments) {

@@ -51,7 +51,6 @@ export class RiverLayer {
   private readonly byUrl = new Map<string, Set<string>>(); // the held tiles each URL's lines serve
   private readonly loader: RiverLoader;
   private maxLod = -1;
-  private seaLevel: number | undefined;
 
   /**
    * `url(lod, x, z, version)` names the river lines of a tile at a world version; `headers` go with
@@ -66,9 +65,8 @@ export class RiverLayer {
   }
 
   /** Starts drawing at LODs `0..=maxLod` (`/v1/info`'s `limits.max_river_lod`). */
-  enable(maxLod: number, seaLevel: number | undefined): void {
+  enable(maxLod: number): void {
     this.maxLod = maxLod;
-    this.seaLevel = seaLevel;
     for (const [key, e] of this.entries) {
       this.release(key, e.url);
       e.url = this.sourceUrl(e.tile, e.version);
@@ -153,7 +151,7 @@ export class RiverLayer {
     e.count = r.count;
     e.length = r.length;
     if (!r.geometry) return;
-    setWater(e.mesh, e.tile, riverVertices(e.tile, lines, this.seaLevel));
+    setWater(e.mesh, e.tile, riverVertices(e.tile, lines));
     const ribbons = new THREE.Mesh(r.geometry, ribbonMaterial);
     ribbons.name = "rivers";
     ribbons.renderOrder = 2;
