@@ -98,10 +98,11 @@ pub fn lake_tile(plan: &WorldPlan, lod: u32, lakes: usize, streams: usize) -> Ti
     panic!("no LOD-{lod} tile with {lakes} lake and {streams} river vertices near the origin");
 }
 
-/// A point where a river line of the default world runs into a lake it crosses: the line point
-/// over a LOD-6 tile's lake vertex (of a lake found by [`lake_tile`]'s search) nearest a dry
-/// vertex. A river line runs on through a lake at the lake's level, so a client that took the
-/// line's water for the river's would cut the lake's sheet along it. Panics if none is found.
+/// A point where a river line of the default world runs through a lake: of the line points over a
+/// lake vertex of the first LOD-6 tile that has such points 300–800 m from the shore (its lakes
+/// found as [`lake_tile`] finds them), the one nearest the shore. A river line runs on through a
+/// lake at the lake's level, so a client that took the line's water for the river's would cut
+/// the lake's sheet along it. Panics if none is found.
 pub fn river_into_lake(plan: &WorldPlan) -> (f64, f64) {
     let earth = plan.earth.as_ref().expect("an earth-1 world");
     let coarsest = rivers::MAX_CARVE_LOD as u32;
@@ -155,15 +156,15 @@ pub fn river_into_lake(plan: &WorldPlan) -> (f64, f64) {
                         .iter()
                         .map(|&(x, z)| (x - px).hypot(z - pz))
                         .fold(f64::INFINITY, f64::min);
-                    // Well inside the lake (its sheet around the line), the shore in view.
+                    // Well inside the lake (its sheet all around the line), the shore in view.
                     if (300.0..800.0).contains(&to_shore) && best.is_none_or(|(_, b)| to_shore < b)
                     {
                         best = Some(((px, pz), to_shore));
                     }
                 }
             }
-            if best.is_some() {
-                return best.map(|(p, _)| p).expect("found");
+            if let Some((p, _)) = best {
+                return p;
             }
         }
     }

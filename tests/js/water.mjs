@@ -2,10 +2,11 @@
 // <screenshot dir>
 //
 // <places JSON> is `[{"name", "x", "z", "dist", "rings", "max_cracks"?}]` (seed 42; a coast, a
-// lake, a river and a river line crossing a lake, found by tests/viewer_water.rs from the tiles). For each place the viewer looks straight down
-// (pitch 89°) at (x, z) from `dist` metres; once the view has streamed (and the river lines have
-// arrived) the test takes a screenshot (`<dir>/water-<name>.png`), hides the panels (which would
-// read as dry land over the water) and computes
+// lake, a river and a river line crossing a lake, found by tests/viewer_water.rs from the tiles).
+// For each place the viewer looks straight down (pitch 89°) at (x, z) from `dist` metres; once
+// the view has streamed (and the river lines have arrived) the test takes a screenshot
+// (`<dir>/water-<name>.png`), hides the panels (which would read as dry land over the water) and
+// computes
 // - the water mask of the screenshot: on a grid of points every STEP pixels, a point is water
 //   where hiding the water (`__strata.showWater(false)`) changes its colour by more than
 //   DIFF_MIN (the sum of the three channels' differences, 0…765);
@@ -22,7 +23,8 @@
 // EDGE_MAX_PX of an edge of the heights' mask at the 95th percentile, and the screenshot's water
 // edges that run along tile borders are no more than BORDER_MAX of its edges unless the heights'
 // shoreline is there too (a sheet cut at a tile border would be a straight edge with land or
-// water of the heights on both sides).
+// water of the heights on both sides); and, at a place with `max_cracks`, unless it closed no
+// more cracks than that (a gap in a sheet along a line, as a lake cut where a river crosses it).
 import { launch } from "./chromium.mjs";
 import { PNG } from "pngjs";
 import { mkdirSync, writeFileSync } from "node:fs";

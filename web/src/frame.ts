@@ -46,6 +46,10 @@ export interface Tile {
   volumeOverride: Uint8Array;
 }
 
+/** Water kinds of a version 2 tile (`api/tile_format_v2.md`). */
+export const WATER_LAKE = 2;
+export const WATER_RIVER = 3;
+
 const FRAME_HEADER = 44;
 
 function magic(v: DataView, at: number): string {

@@ -5,7 +5,7 @@
 // (the tile's water kinds, `api/tile_format_v2.md`) is left to the lake's sheet, which would
 // otherwise show the band as a darker line across the lake.
 import * as THREE from "three";
-import type { Tile } from "./frame";
+import { WATER_LAKE, type Tile } from "./frame";
 import type { RiverLine } from "./riverLines";
 import { groundHeight, tileRect, type Rect } from "./tileGround";
 
@@ -158,16 +158,13 @@ function clip(poly: Corner[], rect: Rect): Corner[] {
   return cur;
 }
 
-/** `api/tile_format_v2.md`'s water kind of a lake. */
-const KIND_LAKE = 2;
-
 /** Whether every corner of `poly` lies nearest a vertex of `tile` with lake water (never, in a tile without kinds). */
 function overLake(poly: Corner[], tile: Tile): boolean {
   if (tile.waterKind.length === 0) return false;
   return poly.every(([x, z]) => {
     const i = Math.min(tile.size - 1, Math.max(0, Math.round((x - tile.originX) / tile.spacing)));
     const j = Math.min(tile.size - 1, Math.max(0, Math.round((z - tile.originZ) / tile.spacing)));
-    return tile.waterKind[j * tile.size + i] === KIND_LAKE;
+    return tile.waterKind[j * tile.size + i] === WATER_LAKE;
   });
 }
 

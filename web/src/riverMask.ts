@@ -2,12 +2,9 @@
 // kind is a river's (the stream's tiles are version 2, `api/tile_format_v2.md`) near a river line
 // of the tile. A river line also runs through the lakes it crosses, at the lake's level; the
 // kinds keep those lakes' vertices lake water, so the lake's sheet has no gap along the line.
-import type { Tile } from "./frame";
+import { WATER_RIVER, type Tile } from "./frame";
 import type { RiverLine } from "./riverLines";
 import { tileRect } from "./tileGround";
-
-/** `api/tile_format_v2.md`'s water kind of a river's channel. */
-const KIND_RIVER = 3;
 
 /**
  * One flag per vertex: 1 where the vertex holds river water (kind 3) near one of `lines` (within
@@ -23,7 +20,7 @@ export function riverVertices(tile: Tile, lines: RiverLine[]): Uint8Array {
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {
       const v = j * size + i;
-      if (waterKind[v] !== KIND_RIVER) continue;
+      if (waterKind[v] !== WATER_RIVER) continue;
       const x = tile.originX + i * spacing;
       const z = tile.originZ + j * spacing;
       for (const [ax, az, bx, bz, reach] of segments) {

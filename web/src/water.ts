@@ -22,15 +22,30 @@ export const waterMaterial = new THREE.MeshLambertMaterial({
   depthWrite: false,
 });
 
-/** The sheet's material: `waterMaterial` whose fragments on dry ground (depth ≤ 0) are discarded. */
+/** The sheet's opacity over shallow water (at the shore) and the most it reaches over deep water. */
+const SHALLOW_OPACITY = 0.55;
+const DEEP_OPACITY = 0.96;
+/** Depth over which the sheet goes from shallow to deep opacity (1 − 1/e of the way), metres. */
+const OPACITY_DEPTH_M = 12;
+
+/**
+ * The sheet's material: `waterMaterial` whose fragments on dry ground (depth ≤ 0) are discarded
+ * and whose opacity grows with the water's depth, so the ground shows through at the shore and a
+ * lake's or the sea's bed tens of metres down does not.
+ */
 export const sheetMaterial = waterMaterial.clone();
 sheetMaterial.onBeforeCompile = (shader) => {
+  const f = (v: number) => v.toFixed(4);
   shader.vertexShader = shader.vertexShader
     .replace("#include <common>", "#include <common>\nattribute float depth;\nvarying float vWaterDepth;")
     .replace("#include <begin_vertex>", "#include <begin_vertex>\nvWaterDepth = depth;");
   shader.fragmentShader = shader.fragmentShader
     .replace("#include <common>", "#include <common>\nvarying float vWaterDepth;")
-    .replace("void main() {", "void main() {\n\tif (vWaterDepth <= 0.0) discard;");
+    .replace("void main() {", "void main() {\n\tif (vWaterDepth <= 0.0) discard;")
+    .replace(
+      "#include <color_fragment>",
+      `#include <color_fragment>\n\tdiffuseColor.a = mix(${f(SHALLOW_OPACITY)}, ${f(DEEP_OPACITY)}, 1.0 - exp(-vWaterDepth / ${f(OPACITY_DEPTH_M)}));`,
+    );
 };
 sheetMaterial.customProgramCacheKey = () => "strata-water-sheet";
 
