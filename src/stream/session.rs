@@ -406,6 +406,7 @@ pub async fn run<S: StreamSource>(
     if !outbox.push(text(&hello)).await {
         return;
     }
+    // The tile frames' format and its version (`tile_format`, v2 views only).
     let mut format = (Format::Bin, TileVersion::V1);
     let mut view = ViewState::default();
     let mut held: HashMap<Product, u64> = HashMap::new();
@@ -690,7 +691,10 @@ pub async fn run<S: StreamSource>(
                 let produced = tokio::select! {
                     r = async {
                         match w {
-                            Work::Tile(t) => source.frame(&current, t.key, t.seams, format.0, format.1).await,
+                            Work::Tile(t) => {
+                                let (f, v) = format;
+                                source.frame(&current, t.key, t.seams, f, v).await
+                            }
                             Work::Chunk(c) => source.chunk_frame(&current, c, view.chunk_format.unwrap_or(Format::Bin)).await,
                         }
                     } => r,
