@@ -626,6 +626,22 @@ fn pruned_bins_and_the_water_job_give_the_full_jobs_heights_and_water() {
     }
 }
 
+/// The `(2r + 1)²` LOD-`lod` tiles of `p` around the one holding world point `(cx, cz)`, row by
+/// row.
+fn tiles_around(p: &WorldPlan, lod: u32, (cx, cz): (f32, f32), r: i64) -> Vec<TileKey> {
+    let span = 64.0 * p.lods[lod as usize].spacing_m;
+    let (tx, tz) = ((cx / span).floor() as i64, (cz / span).floor() as i64);
+    (-r..=r)
+        .flat_map(|b| {
+            (-r..=r).map(move |a| TileKey {
+                lod,
+                x: tx + a,
+                z: tz + b,
+            })
+        })
+        .collect()
+}
+
 fn valleys_plan(valleys: u32) -> WorldPlan {
     let mut params = WorldParams::default();
     let earth = params.earth.as_mut().expect("earth-1");
@@ -641,16 +657,8 @@ fn pruned_and_water_jobs_agree(p: &WorldPlan) {
     for (name, cx, cz) in AREAS {
         for lod in [0u32, 3, 6] {
             let spacing = p.lods[lod as usize].spacing_m;
-            let span = 64.0 * spacing;
-            let (tx, tz) = ((cx / span).floor() as i64, (cz / span).floor() as i64);
-            let keys = (-3..=3)
-                .flat_map(|b| {
-                    (-3..=3).map(move |a| TileKey {
-                        lod,
-                        x: tx + a,
-                        z: tz + b,
-                    })
-                })
+            let keys = tiles_around(p, lod, (cx, cz), 3)
+                .into_iter()
                 .filter(|k| !tile_rivers(earth, *k, spacing).is_empty())
                 .take(3);
             for key in keys {
@@ -799,31 +807,16 @@ fn spurs_move_the_walls_and_leave_the_rivers() {
     let (four, five) = (valleys_plan(4), valleys_plan(5));
     let mut highest = 0.0f32;
     for (name, cx, cz) in AREAS {
-        let lod = 5u32;
-        let spacing = four.lods[lod as usize].spacing_m;
-        let span = 64.0 * spacing;
-        let key = TileKey {
-            lod,
-            x: (cx / span).floor() as i64,
-            z: (cz / span).floor() as i64,
-        };
         let (mut moved, mut most) = (0usize, 0.0f32);
-        for dz in -2..=2 {
-            for dx in -2..=2 {
-                let k = TileKey {
-                    x: key.x + dx,
-                    z: key.z + dz,
-                    ..key
-                };
-                let (a, b) = (synthesize(&four, k), synthesize(&five, k));
-                assert_eq!(
-                    a.water_kind, b.water_kind,
-                    "{name} {k:?}: the spurs moved water"
-                );
-                for (ha, hb) in a.heights.iter().zip(&b.heights) {
-                    moved += usize::from(ha.to_bits() != hb.to_bits());
-                    most = most.max((ha - hb).abs());
-                }
+        for k in tiles_around(&four, 5, (cx, cz), 2) {
+            let (a, b) = (synthesize(&four, k), synthesize(&five, k));
+            assert_eq!(
+                a.water_kind, b.water_kind,
+                "{name} {k:?}: the spurs moved water"
+            );
+            for (ha, hb) in a.heights.iter().zip(&b.heights) {
+                moved += usize::from(ha.to_bits() != hb.to_bits());
+                most = most.max((ha - hb).abs());
             }
         }
         println!("{name}: {moved} heights moved, at most {most:.1} m");
@@ -847,31 +840,17 @@ fn spurs_move_the_walls_and_leave_the_rivers() {
 fn gentler_walls_in_low_relief_widen_the_valleys_and_leave_the_rivers() {
     let (five, six) = (valleys_plan(5), plan());
     for (name, cx, cz) in AREAS {
-        let lod = 5u32;
-        let span = 64.0 * five.lods[lod as usize].spacing_m;
-        let key = TileKey {
-            lod,
-            x: (cx / span).floor() as i64,
-            z: (cz / span).floor() as i64,
-        };
         let (mut lower, mut most) = (0usize, 0.0f32);
-        for dz in -1..=1 {
-            for dx in -1..=1 {
-                let k = TileKey {
-                    x: key.x + dx,
-                    z: key.z + dz,
-                    ..key
-                };
-                let (a, b) = (synthesize(&five, k), synthesize(&six, k));
-                assert_eq!(
-                    a.water_kind, b.water_kind,
-                    "{name} {k:?}: the walls moved water"
-                );
-                for (h5, h6) in a.heights.iter().zip(&b.heights) {
-                    assert!(h6 <= h5, "{name} {k:?}: a gentler wall raised {h5} to {h6}");
-                    lower += usize::from(h6 < h5);
-                    most = most.max(h5 - h6);
-                }
+        for k in tiles_around(&five, 5, (cx, cz), 1) {
+            let (a, b) = (synthesize(&five, k), synthesize(&six, k));
+            assert_eq!(
+                a.water_kind, b.water_kind,
+                "{name} {k:?}: the walls moved water"
+            );
+            for (h5, h6) in a.heights.iter().zip(&b.heights) {
+                assert!(h6 <= h5, "{name} {k:?}: a gentler wall raised {h5} to {h6}");
+                lower += usize::from(h6 < h5);
+                most = most.max(h5 - h6);
             }
         }
         println!("{name}: {lower} heights lowered, at most {most:.1} m");

@@ -36,9 +36,10 @@ impl From<AppError> for StreamError {
     }
 }
 
-/// The frame of tile `key` of the world `view` in `format` of `version`: the tile's body (through the body cache) behind
-/// a frame header, itself kept in the body cache under a key of its own, so the clients
-/// streaming one area share one copy of each frame, the frames in their queues included.
+/// The frame of tile `key` of the world `view` in `format` of `version`: the tile's body
+/// (through the body cache) behind a frame header, itself kept in the body cache under a key of
+/// its own, so the clients streaming one area share one copy of each frame, the frames in their
+/// queues included.
 async fn tile_frame(
     state: &AppState,
     view: &StreamView,

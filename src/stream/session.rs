@@ -184,9 +184,9 @@ pub trait StreamSource: Send + Sync + 'static {
         patch: serde_json::Value,
         if_match: Option<u64>,
     ) -> Result<u64, StreamError>;
-    /// The frame of tile `key` with `seams` of the world `view` in `format` of `version` (its bytes as
-    /// [`TileFrame::encode`] writes them, with the view's version): reference-counted bytes a
-    /// source shares between the clients that stream the same tile.
+    /// The frame of tile `key` with `seams` of the world `view` in `format` of `version` (its
+    /// bytes as [`TileFrame::encode`] writes them, with the view's version): reference-counted
+    /// bytes a source shares between the clients that stream the same tile.
     async fn frame(
         &self,
         view: &Self::View,
@@ -476,9 +476,7 @@ pub async fn run<S: StreamSource>(
                     }
                     Ok(ClientMessage::View { x, z, rings, format: f, volume }) => {
                         let accepted = view_of(x, z, &rings, f.as_deref(), cell_m).and_then(|(tiles, fmt)| {
-                            let tile_format = volume.as_ref().and_then(|v| v.tile_format);
-                            Ok((tiles, (fmt, tile_version_of(tile_format, fmt)?)))
-                        }).and_then(|(tiles, fmt)| {
+                            let fmt = (fmt, tile_version_of(volume.as_ref().and_then(|v| v.tile_format), fmt)?);
                             let chunks = match &volume {
                                 Some(vol) => Some(chunk_view_of(vol, current.plan())?),
                                 None => None,

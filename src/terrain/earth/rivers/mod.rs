@@ -41,8 +41,8 @@
 //! 6. **Carve.** Each edge `n → down(n)` with `Q(n) ≥ 2` is a uniform Catmull–Rom curve through
 //!    the main upstream neighbour, `n`, `down(n)` and its successor, cut into [`PIECES`]
 //!    ([`PIECES_2`] with `valleys: 2`) straight pieces with `W` linear along it; with
-//!    `valleys: 3` and later (`6` is the default of new worlds) into [`PIECES_3`] pieces, each a cubic offset
-//!    from its chord that leaves and reaches its ends along the curve's tangents
+//!    `valleys: 3` and later (`6` is the default of new worlds) into [`PIECES_3`] pieces, each a
+//!    cubic offset from its chord that leaves and reaches its ends along the curve's tangents
 //!    ([`Piece::sax`]; the edge's hashed bend is flat at the nodes), so the centre line has no
 //!    corner and the valley's walls follow the curve instead of showing a facet per piece.
 //!    Each piece
@@ -294,12 +294,12 @@ pub struct RiverPlan {
     /// Stream seed of the walls' width noise.
     pub wall_seed: u32,
     /// Whether each piece's floodplain width and wall slope vary along the river
-    /// (`valleys: 4` and `5`, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
+    /// (`valleys: 4` and later, [`FLOOR_SCALE`], [`SLOPE_SCALE`]).
     pub varied_valleys: bool,
     /// Whether the walls' slope falls with the relief (`valleys: 6`, [`RELIEF_WALLS_MIN`]).
     pub relief_walls: bool,
-    /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` (the spurs of the walls, [`SPUR`]), else 0
-    /// ([`RiverPlan::spur_at`]).
+    /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` and later (the spurs of the walls, [`SPUR`]),
+    /// else 0 ([`RiverPlan::spur_at`]).
     pub spur_scale: f32,
     /// Stream seed of the spur noise.
     pub spur_seed: u32,
