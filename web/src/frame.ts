@@ -47,6 +47,7 @@ export interface Tile {
 }
 
 /** Water kinds of a version 2 tile (`api/tile_format_v2.md`). */
+export const WATER_SEA = 1;
 export const WATER_LAKE = 2;
 export const WATER_RIVER = 3;
 

@@ -1,11 +1,11 @@
 // River ribbons: each centre line of a tile as a band of its channel width, cut to the tile's
 // square (so the pieces of neighbouring tiles meet on their shared edge) and laid on the water
 // level, or just above the tile's ground where the ground is higher than the level. A line runs on
-// through the lakes it crosses, at the lake's level: a piece whose corners all lie over lake water
-// (the tile's water kinds, `api/tile_format_v2.md`) is left to the lake's sheet, which would
-// otherwise show the band as a darker line across the lake.
+// through the lakes it crosses, at the lake's level, and ends a piece or two into the sea: a piece
+// whose corners all lie over lake or sea water (the tile's water kinds, `api/tile_format_v2.md`)
+// is left to that water's sheet, which would otherwise show the band as a darker line across it.
 import * as THREE from "three";
-import { WATER_LAKE, type Tile } from "./frame";
+import { WATER_LAKE, WATER_SEA, type Tile } from "./frame";
 import type { RiverLine } from "./riverLines";
 import { groundHeight, tileRect, type Rect } from "./tileGround";
 
@@ -38,7 +38,7 @@ export function buildRibbons(tile: Tile, lines: RiverLine[]): Ribbons {
     const inside = clippedLength(line, rect);
     const before = pos.length;
     ribbon(line, rect, step, (poly) => {
-      if (!overLake(poly, tile)) emit(poly, tile, pos);
+      if (!overStillWater(poly, tile)) emit(poly, tile, pos);
     });
     if (inside > 0 || pos.length > before) {
       count++;
@@ -158,13 +158,14 @@ function clip(poly: Corner[], rect: Rect): Corner[] {
   return cur;
 }
 
-/** Whether every corner of `poly` lies nearest a vertex of `tile` with lake water (never, in a tile without kinds). */
-function overLake(poly: Corner[], tile: Tile): boolean {
+/** Whether every corner of `poly` lies nearest a vertex of `tile` with lake or sea water (never, in a tile without kinds). */
+function overStillWater(poly: Corner[], tile: Tile): boolean {
   if (tile.waterKind.length === 0) return false;
   return poly.every(([x, z]) => {
     const i = Math.min(tile.size - 1, Math.max(0, Math.round((x - tile.originX) / tile.spacing)));
     const j = Math.min(tile.size - 1, Math.max(0, Math.round((z - tile.originZ) / tile.spacing)));
-    return tile.waterKind[j * tile.size + i] === WATER_LAKE;
+    const kind = tile.waterKind[j * tile.size + i];
+    return kind === WATER_LAKE || kind === WATER_SEA;
   });
 }
 
