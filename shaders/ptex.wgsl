@@ -24,7 +24,12 @@ struct Params {
     noise_seed: u32,
     materials: u32,
     decals: u32,
-    pad1: u32,
+    // 1 where the samples carry texel inputs (`surface`), weighed per texel by the thresholds below.
+    surface: u32,
+    blend_m: f32,
+    beach_m: f32,
+    rock_lo: f32,
+    rock_hi: f32,
 }
 
 struct Face {
@@ -98,6 +103,9 @@ struct Decal {
 // array) and its levels' texels, one packed RGBA8 word each, rows top to bottom.
 @group(0) @binding(5) var<storage, read> tex: array<u32>;
 @group(0) @binding(6) var<storage, read> decals: array<Decal>;
+// Texel inputs (`terrain::texture::surface_inputs`), two vec4 per sample: height above the sea,
+// height above the snow line, then the ground shares of the six proto-texturing materials.
+@group(0) @binding(7) var<storage, read> surface: array<vec4<f32>>;
 
 const NONE: u32 = 0xffffffffu;
 
@@ -404,6 +412,105 @@ fn interpolate(face: Face, u: f32, v: f32) {
     pt_p = p;
     pt_n = normalize_or(nn, vec3<f32>(0.0, 1.0, 0.0));
     pt_amp = amp;
+    if (params.surface == 1u) {
+        var s = array<f32, 8>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        for (var k = 0u; k < 4u; k = k + 1u) {
+            let lo = surface[2u * idx[k]];
+            let hi = surface[2u * idx[k] + 1u];
+            s[0] = s[0] + w[k] * lo.x;
+            s[1] = s[1] + w[k] * lo.y;
+            s[2] = s[2] + w[k] * lo.z;
+            s[3] = s[3] + w[k] * lo.w;
+            s[4] = s[4] + w[k] * hi.x;
+            s[5] = s[5] + w[k] * hi.y;
+            s[6] = s[6] + w[k] * hi.z;
+            s[7] = s[7] + w[k] * hi.w;
+        }
+        surface_slots(surface_weights(s, pt_n.y));
+    }
+}
+
+fn smoothstep_inv(e0: f32, inv_width: f32, x: f32) -> f32 {
+    let t = clamp((x - e0) * inv_width, 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+fn smoothstep_edges(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+// Twin of `terrain::texture::texel_weights`: the weight of each proto-texturing material (seabed,
+// sand, grass, dirt, rock, snow) at a texel with inputs `s` and normal y component `ny`.
+fn surface_weights(s: array<f32, 8>, ny: f32) -> array<f32, 6> {
+    let blend = params.blend_m;
+    let inv_blend = 1.0 / blend;
+    let above = s[0];
+    let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+    let rock = smoothstep_edges(params.rock_lo, params.rock_hi, ny) * (1.0 - wet);
+    let snow = smoothstep_inv(-blend, 0.5 * inv_blend, s[1]) * (1.0 - rock) * (1.0 - wet);
+    let beach = (1.0 - smoothstep_inv(params.beach_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+    let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    var out = array<f32, 6>(wet, beach, 0.0, 0.0, rock, snow);
+    for (var m = 0u; m < 6u; m = m + 1u) {
+        out[m] = out[m] + s[2u + m] * rest;
+    }
+    return out;
+}
+
+// Twin of `ptex::bake::surface_slots`: the materials of weight at least MIN_SURFACE_WEIGHT in id
+// order, at most four (the lightest left out, the higher id first on a tie), divided by their sum
+// and merged by material index; the samples' materials stay where none has weight.
+const MIN_SURFACE_WEIGHT: f32 = 1.0 / 512.0;
+
+fn surface_slots(weights: array<f32, 6>) {
+    var ids = array<u32, 6>(0u, 0u, 0u, 0u, 0u, 0u);
+    var ws = array<f32, 6>(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    var count = 0u;
+    for (var id = 0u; id < 6u; id = id + 1u) {
+        if (weights[id] >= MIN_SURFACE_WEIGHT) {
+            ids[count] = id;
+            ws[count] = weights[id];
+            count = count + 1u;
+        }
+    }
+    while (count > 4u) {
+        var lightest = 0u;
+        for (var k = 1u; k < count; k = k + 1u) {
+            if (ws[k] <= ws[lightest]) {
+                lightest = k;
+            }
+        }
+        for (var k = lightest; k + 1u < count; k = k + 1u) {
+            ids[k] = ids[k + 1u];
+            ws[k] = ws[k + 1u];
+        }
+        count = count - 1u;
+    }
+    if (count == 0u) {
+        return;
+    }
+    var total = 0.0;
+    for (var k = 0u; k < count; k = k + 1u) {
+        total = total + ws[k];
+    }
+    pt_count = 0u;
+    for (var k = 0u; k < count; k = k + 1u) {
+        ws[k] = ws[k] / total;
+        let index = material_index(ids[k]);
+        var found = false;
+        for (var m = 0u; m < pt_count; m = m + 1u) {
+            if (pt_ids[m] == index) {
+                pt_w[m] = pt_w[m] + ws[k];
+                found = true;
+            }
+        }
+        if (!found) {
+            pt_ids[pt_count] = index;
+            pt_w[pt_count] = ws[k];
+            pt_count = pt_count + 1u;
+        }
+    }
 }
 
 fn displacement(anchor: vec3<i32>, q: vec3<f32>, wg: vec3<f32>, kmax: i32) -> f32 {

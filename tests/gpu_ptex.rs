@@ -76,7 +76,7 @@ fn tile_set(plan: &WorldPlan, mats: &MaterialSet) -> FaceSet {
     };
     let faces = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1);
     let tile = synthesize(plan, key);
-    faces.build(|t| (t == key).then_some(&tile), mats)
+    faces.build(|t| (t == key).then_some(&tile), mats, plan)
 }
 
 fn compare(name: &str, set: &FaceSet, mats: &MaterialSet, res: u32) {

@@ -282,7 +282,7 @@ fn tile_pages(
         })
         .collect();
     let mats = MaterialSet::default_ground(plan.seed);
-    let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+    let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats, plan);
     let mut pages = Pages::default();
     bake(&set, &mats, res, &mut pages);
     (faces, set, pages)

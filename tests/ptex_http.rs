@@ -53,7 +53,7 @@ fn library_tile_pack(plan: &WorldPlan, key: TileKey, res: u32) -> Vec<u8> {
         .map(|t| synthesize(plan, t))
         .collect();
     let mats = MaterialSet::default_ground(plan.seed);
-    let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats);
+    let set = faces.build(|t| tiles.iter().find(|x| x.key == t), &mats, plan);
     let mut pages = Pages::default();
     bake(&set, &mats, res, &mut pages);
     let info = PackInfo {

@@ -19,6 +19,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use strata::compute::Compute;
 use strata::element::Element;
+use strata::ptex::bake::texel_materials;
 use strata::ptex::face::{FaceSet, TileFacePlan};
 use strata::ptex::image::{decode_png, hash_hex, image_hash, Image};
 use strata::ptex::spec::{DecalSpec, MaterialSpec, PtexSpecs};
@@ -73,7 +74,7 @@ fn plan() -> WorldPlan {
 fn tile_set(plan: &WorldPlan, key: TileKey, mats: &MaterialSet) -> FaceSet {
     let faces = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1);
     let tile = synthesize(plan, key);
-    let mut set = faces.build(|t| (t == key).then_some(&tile), mats);
+    let mut set = faces.build(|t| (t == key).then_some(&tile), mats, plan);
     set.output = set.faces.len();
     set
 }
@@ -84,9 +85,9 @@ fn bake(set: &FaceSet, mats: &MaterialSet) -> Pages {
     pages
 }
 
-/// What the bake interpolates at interior texel `(i, j)` of face `f`: the world-space `[x, z]`
-/// (anchor included) and the material ids of the four control samples around it.
-fn texel_inputs(set: &FaceSet, f: usize, i: u32, j: u32) -> ([f64; 2], Vec<u32>) {
+/// The world-space `[x, z]` (anchor included) the bake interpolates at interior texel `(i, j)` of
+/// face `f`.
+fn texel_world(set: &FaceSet, f: usize, i: u32, j: u32) -> [f64; 2] {
     let face = &set.faces[f];
     let n = face.n as usize;
     let r = RES as f32;
@@ -106,15 +107,10 @@ fn texel_inputs(set: &FaceSet, f: usize, i: u32, j: u32) -> ([f64; 2], Vec<u32>)
         fu * fv,
     ];
     let p: [f32; 3] = std::array::from_fn(|c| (0..4).map(|k| w[k] * s[k].position[c]).sum::<f32>());
-    let world = [
+    [
         f64::from(face.anchor[0]) * 256.0 + f64::from(p[0]),
         f64::from(face.anchor[2]) * 256.0 + f64::from(p[2]),
-    ];
-    let ids = (0..4)
-        .filter(|&k| w[k] > 0.0)
-        .map(|k| s[k].material)
-        .collect();
-    (world, ids)
+    ]
 }
 
 /// Every interior texel: `(face, i, j, index into the planes)`.
@@ -174,7 +170,7 @@ fn a_decal_changes_texels_inside_its_rectangle_only_and_its_mask_edge_blends() {
     let margin = [2.0 / 60.0, 2.0 / 36.0];
     let (mut inside, mut solid, mut blended) = (0, 0, 0);
     for (f, i, j, k) in texels(&plain) {
-        let (p, _) = texel_inputs(&set, f, i, j);
+        let p = texel_world(&set, f, i, j);
         let (u, v) = uv(p);
         let out = |t: f64, m: f64| t < -m || t > 1.0 + m;
         if out(u, margin[0]) || out(v, margin[1]) {
@@ -261,7 +257,13 @@ fn check_override(
     assert_eq!(with, bake(&set, &mats), "a re-bake gives the same bytes");
     let (mut without, mut only) = (0, 0);
     for (f, i, j, k) in texels(&plain) {
-        let (_, ids) = texel_inputs(&set, f, i, j);
+        // The materials the bake's step 1 gives the texel (`ptex_blend: 2`: those of positive
+        // weight by the thresholds at the texel).
+        let ids: Vec<u32> = texel_materials(&set, &plain_mats, f, RES, i, j)
+            .into_iter()
+            .filter(|&(_, w)| w > 0.0)
+            .map(|(m, _)| m as u32)
+            .collect();
         if !ids.contains(&id) {
             assert_eq!(
                 (with.albedo[k], with.normal[k], with.displacement[k]),

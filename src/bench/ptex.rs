@@ -30,8 +30,11 @@ fn faces(plan: &WorldPlan, mats: &MaterialSet, n: i64) -> Vec<FaceSet> {
                 z: 3 - 5 * i,
             };
             let tile = synthesize(plan, key);
-            let mut set = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1)
-                .build(|t| (t == key).then_some(&tile), mats);
+            let mut set = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1).build(
+                |t| (t == key).then_some(&tile),
+                mats,
+                plan,
+            );
             set.output = set.faces.len();
             set
         })

@@ -130,7 +130,7 @@ impl Scene {
                     self.tiles.insert(t, synthesize(&self.plan, t));
                 }
             }
-            let set = faces.build(|t| self.tiles.get(&t), &self.mats);
+            let set = faces.build(|t| self.tiles.get(&t), &self.mats, &self.plan);
             self.sets.insert(key, set);
         }
     }

@@ -269,7 +269,7 @@ pub fn ptx_member(
 ) -> Vec<u8> {
     use crate::ptex::face::TileFacePlan;
     let faces = TileFacePlan::new(tile.key, [false; 4], plan.lods.len() as u32 - 1);
-    let mut set = faces.build(|t| (t == tile.key).then_some(tile), mats);
+    let mut set = faces.build(|t| (t == tile.key).then_some(tile), mats, plan);
     set.output = set.faces.len();
     let mut pages = crate::ptex::Pages::default();
     crate::ptex::bake_interior(&set, mats, res, &mut pages);

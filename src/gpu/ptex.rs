@@ -55,8 +55,16 @@ pub struct GpuPtexParams {
     pub materials: u32,
     /// Decals in the set.
     pub decals: u32,
-    /// Padding.
-    pub pad: u32,
+    /// 1 where the samples carry texel inputs (`FaceSet::surface`), else 0.
+    pub surface: u32,
+    /// `TexelRule::blend_m`, metres.
+    pub blend_m: f32,
+    /// `TexelRule::beach_height_m`, metres.
+    pub beach_m: f32,
+    /// `cos` of the slope where rock starts.
+    pub rock_lo: f32,
+    /// `cos` of the slope where rock is complete.
+    pub rock_hi: f32,
 }
 
 /// `Face` of `shaders/ptex.wgsl`.
@@ -225,6 +233,18 @@ pub fn bake_interior_on_device(
             noise_m: s.noise_m,
         })
         .collect();
+    // Two vec4 per sample where the set has texel inputs (one zero pair otherwise: storage
+    // bindings may not be empty).
+    let rule = set.rule.filter(|_| set.surface.len() == set.samples.len());
+    let mut surface: Vec<[f32; 4]> = Vec::with_capacity(2 * set.surface.len());
+    if rule.is_some() {
+        for s in &set.surface {
+            surface.push([s[0], s[1], s[2], s[3]]);
+            surface.push([s[4], s[5], s[6], s[7]]);
+        }
+    } else {
+        surface.extend([[0.0; 4]; 2]);
+    }
     let (mut image_words, headers) = pack_images(&mats.images);
     let header = |i: Option<u32>| i.map_or(NONE, |i| headers[i as usize]);
     let materials: Vec<GpuMaterial> = mats
@@ -287,7 +307,11 @@ pub fn bake_interior_on_device(
         noise_seed: mats.noise_seed,
         materials: materials.len() as u32,
         decals: decal_count,
-        pad: 0,
+        surface: u32::from(rule.is_some()),
+        blend_m: rule.map_or(0.0, |r| r.blend_m),
+        beach_m: rule.map_or(0.0, |r| r.beach_height_m),
+        rock_lo: rule.map_or(0.0, |r| r.rock_cos.0),
+        rock_hi: rule.map_or(0.0, |r| r.rock_cos.1),
     };
     let scopes = Scopes::push(device);
     let (u, r, w) = (Binding::Uniform, Binding::Read, Binding::ReadWrite);
@@ -295,7 +319,7 @@ pub fn bake_interior_on_device(
         device,
         "strata ptex.wgsl",
         PTEX_WGSL,
-        &[u, r, r, r, w, r, r],
+        &[u, r, r, r, w, r, r, r],
     );
     let pipeline = program.pipeline(device, "bake");
     let storage = wgpu::BufferUsages::STORAGE;
@@ -342,11 +366,18 @@ pub fn bake_interior_on_device(
         bytemuck::cast_slice(&decals),
         storage,
     );
+    let tb = upload(
+        device,
+        queue,
+        "ptex texel inputs",
+        bytemuck::cast_slice(&surface),
+        storage,
+    );
     let group = bind_group(
         device,
         &program.layout,
         "ptex",
-        &[&ub, &fb, &sb, &mb, &ob, &ib, &db],
+        &[&ub, &fb, &sb, &mb, &ob, &ib, &db, &tb],
     );
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("strata ptex bake"),

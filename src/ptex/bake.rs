@@ -5,6 +5,14 @@
 //! 1. **Interpolation.** Bilinear in the face's control grid: position `p`, normal `n`
 //!    (normalised; `+Y` when it vanishes), noise amplitude `a`, and the weight of each material
 //!    id among the four surrounding samples (equal ids merged, in corner order `00, 10, 01, 11`).
+//!    Where the set has texel inputs ([`FaceSet::surface`]: height tiles of worlds with
+//!    `texturing.ptex_blend: 2`) the materials come from the inputs instead: their bilinear mix
+//!    (height above the sea and above the snow line, ground shares) and `n_y` go through the
+//!    proto-texturing thresholds ([`texel_weights`]), and the texel keeps the materials of
+//!    weight at least [`MIN_SURFACE_WEIGHT`], at most four, divided by their sum
+//!    ([`surface_slots`]). So a material's border runs where the thresholds cross at the
+//!    texel's own place (a contour of the snow line, a slope break) rather than along the
+//!    vertex lattice, whose one-hot materials blend in steps a vertex spacing wide.
 //! 2. **Octave cut.** A texel is `τ = size_m/res` metres; octaves of frequency above `1/(2τ)`
 //!    are left out (the finest is `kmax = ⌊log2(1/(2τ))⌋`), so a coarse page is the filtered
 //!    version of a fine one rather than its alias.
@@ -46,6 +54,8 @@ use super::noise::{
     MAX_FREQ_LOG2, MAX_OCTAVES, MIN_FREQ_LOG2,
 };
 use super::pages::Pages;
+use crate::terrain::texture::{texel_weights, TexelRule, SURFACE_INPUTS};
+use crate::terrain::world::MATERIALS;
 use rayon::prelude::*;
 
 /// Bakes every face of `set` at `res` into `out` (interiors, then borders), keeping only the
@@ -289,6 +299,28 @@ fn pattern(
     (0.5 + 0.5 * v).clamp(0.0, 1.0)
 }
 
+/// Step 1 at texel `(i, j)` of face `f` at resolution `res`: the materials the texel blends, as
+/// indices into `mats` with their weights (merged, at most four, in the order the later steps
+/// sum them).
+pub fn texel_materials(
+    set: &FaceSet,
+    mats: &MaterialSet,
+    f: usize,
+    res: u32,
+    i: u32,
+    j: u32,
+) -> Vec<(usize, f32)> {
+    let r = res as f32;
+    let pt = interpolate(
+        set,
+        mats,
+        &set.faces[f],
+        (i as f32 + 0.5) / r,
+        (j as f32 + 0.5) / r,
+    );
+    (0..pt.count).map(|k| (pt.ids[k], pt.weights[k])).collect()
+}
+
 /// The interpolated inputs of a texel.
 struct Point {
     p: [f32; 3],
@@ -337,6 +369,18 @@ fn interpolate(set: &FaceSet, mats: &MaterialSet, face: &Face, u: f32, v: f32) -
         weights: [0.0; 4],
         count: 0,
     };
+    if let Some(rule) = &set.rule {
+        let at = [base, base + 1, base + n as usize, base + n as usize + 1];
+        let inputs: [f32; SURFACE_INPUTS] = std::array::from_fn(|c| {
+            let g = |k: usize| set.surface[at[k]][c];
+            w[0] * g(0) + w[1] * g(1) + w[2] * g(2) + w[3] * g(3)
+        });
+        let (ids, weights, count) = surface_slots(rule, &inputs, out.n[1], mats);
+        if count > 0 {
+            (out.ids, out.weights, out.count) = (ids, weights, count);
+            return out;
+        }
+    }
     for k in 0..4 {
         let id = mats.index(s[k].material);
         match out.ids[..out.count].iter().position(|&x| x == id) {
@@ -349,6 +393,61 @@ fn interpolate(set: &FaceSet, mats: &MaterialSet, face: &Face, u: f32, v: f32) -
         }
     }
     out
+}
+
+/// Lightest weight of a material [`surface_slots`] keeps: below half a step of the 8-bit albedo,
+/// so leaving it out changes no colour by more than rounding, and the texel saves its pattern.
+pub const MIN_SURFACE_WEIGHT: f32 = 1.0 / 512.0;
+
+/// Step 1 with texel inputs ([`FaceSet::surface`]): the materials of a texel whose interpolated
+/// inputs are `inputs` and whose interpolated unit normal has the y component `normal_y`, from
+/// [`texel_weights`]: those of weight at least [`MIN_SURFACE_WEIGHT`] in id order, at most four
+/// (where more have weight, the lightest are left out, the higher id first on a tie), their
+/// weights divided by their sum, as set indices (ids one set index holds merged); a count of 0
+/// where none has weight.
+fn surface_slots(
+    rule: &TexelRule,
+    inputs: &[f32; SURFACE_INPUTS],
+    normal_y: f32,
+    mats: &MaterialSet,
+) -> ([usize; 4], [f32; 4], usize) {
+    let weights = texel_weights(rule, inputs, normal_y);
+    let mut kept = [(0usize, 0.0f32); MATERIALS.len()];
+    let mut count = 0;
+    for (id, &w) in weights.iter().enumerate() {
+        if w >= MIN_SURFACE_WEIGHT {
+            kept[count] = (id, w);
+            count += 1;
+        }
+    }
+    while count > 4 {
+        let mut lightest = 0;
+        for k in 1..count {
+            if kept[k].1 <= kept[lightest].1 {
+                lightest = k;
+            }
+        }
+        kept.copy_within(lightest + 1..count, lightest);
+        count -= 1;
+    }
+    let mut total = 0.0f32;
+    for &(_, w) in &kept[..count] {
+        total += w;
+    }
+    let (mut ids, mut out, mut slots) = ([0usize; 4], [0.0f32; 4], 0);
+    for &(id, w) in &kept[..count] {
+        let w = w / total;
+        let index = mats.index(id as u32);
+        match ids[..slots].iter().position(|&x| x == index) {
+            Some(at) => out[at] += w,
+            None => {
+                ids[slots] = index;
+                out[slots] = w;
+                slots += 1;
+            }
+        }
+    }
+    (ids, out, slots)
 }
 
 /// `D(q)` with the geometric tri-planar weights `wg`, the noise of point `point` (0: `p`, 1 and
@@ -741,6 +840,24 @@ fn frame_lanes(
     }
     mix([&sa[0], &sa[1], &sa[2], &sa[3]], &mut amp);
     let nrm = normalize_or_lanes(&nn, &splat3([0.0, 1.0, 0.0]));
+    if let Some(rule) = &set.rule {
+        for l in 0..LANES {
+            let at = [base[l], base[l] + 1, base[l] + n, base[l] + n + 1];
+            let inputs: [f32; SURFACE_INPUTS] = std::array::from_fn(|c| {
+                let g = |k: usize| set.surface[at[k]][c];
+                w[0][l] * g(0) + w[1][l] * g(1) + w[2][l] * g(2) + w[3][l] * g(3)
+            });
+            let (lane_ids, lane_weights, lane_count) =
+                surface_slots(rule, &inputs, nrm[1][l], mats);
+            if lane_count > 0 {
+                for k in 0..4 {
+                    ids[k][l] = lane_ids[k];
+                    weights[k][l] = lane_weights[k];
+                }
+                count[l] = lane_count;
+            }
+        }
+    }
     let mut helper = [[0.0f32; LANES]; 3];
     for l in 0..LANES {
         let up = nrm[1][l].abs() < 0.9;
@@ -1036,11 +1153,13 @@ mod tests {
         // Digests of the bake before the cached lattice cells, the shared pattern values and the
         // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
-        // carve later valleys, which move these tiles' heights, the bake's input).
+        // carve later valleys, which move these tiles' heights, the bake's input; and
+        // `ptex_blend: 1`, as every world stored before `2` bakes).
         let mut params = WorldParams::default();
         if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
             rivers.valleys = 3;
         }
+        params.texturing.ptex_blend = 1;
         let plan = WorldPlan::new(7, params).expect("plan");
         let mats = MaterialSet::default_ground(plan.seed);
         let mut got = Vec::new();

@@ -40,7 +40,9 @@
 use super::material::MaterialSet;
 use super::noise::ANCHOR_M;
 use crate::terrain::plan::TILE_QUADS;
-use crate::terrain::tile::{Tile, TileKey};
+use crate::terrain::texture::{TexelRule, SURFACE_INPUTS};
+use crate::terrain::tile::{surface_inputs, Tile, TileKey};
+use crate::terrain::WorldPlan;
 use crate::terrain::TILE_VERTS;
 use crate::volume::chunk::{ChunkKey, ChunkMesh};
 use crate::volume::mesh::{Neighbor, NONE};
@@ -126,6 +128,14 @@ pub struct FaceSet {
     pub links: Vec<[Link; 4]>,
     /// How many leading faces are the product's.
     pub output: usize,
+    /// Per sample, the inputs of the texel weighting function
+    /// ([`crate::terrain::texture::surface_inputs`]) where the faces are height tiles of a world
+    /// with `texturing.ptex_blend: 2`: the bake then weighs the materials of each texel by
+    /// [`FaceSet::rule`] at the texel ([`super::bake`], step 1). Empty otherwise (volume chunks,
+    /// stored worlds), where a texel blends its samples' materials.
+    pub surface: Vec<[f32; SURFACE_INPUTS]>,
+    /// The thresholds the bake evaluates with [`FaceSet::surface`].
+    pub rule: Option<TexelRule>,
 }
 
 impl FaceSet {
@@ -310,7 +320,7 @@ pub(crate) fn test_face_set(
         .into_iter()
         .map(|t| crate::terrain::synthesize(plan, t))
         .collect();
-    faces.build(|t| tiles.iter().find(|x| x.key == t), mats)
+    faces.build(|t| tiles.iter().find(|x| x.key == t), mats, plan)
 }
 
 impl TileFacePlan {
@@ -403,19 +413,34 @@ impl TileFacePlan {
         out
     }
 
-    /// The face set, reading each face's samples from its tile (`tile(key)`); a face whose tile
-    /// is missing is dropped with the links to it (those borders repeat their own edge).
+    /// The face set, reading each face's samples from its tile (`tile(key)`) of the world
+    /// `plan` (which says how the bake weighs the tiles' materials: [`FaceSet::surface`]); a
+    /// face whose tile is missing is dropped with the links to it (those borders repeat their
+    /// own edge).
     pub fn build<'a>(
         &self,
         tile: impl Fn(TileKey) -> Option<&'a Tile>,
         mats: &MaterialSet,
+        plan: &WorldPlan,
     ) -> FaceSet {
         let mut set = FaceSet::default();
         let mut remap = vec![NO_FACE; self.faces.len()];
+        // Each tile's texel inputs, computed once for the faces it holds.
+        let mut inputs: Vec<(TileKey, Option<Vec<[f32; SURFACE_INPUTS]>>)> = Vec::new();
         for (i, f) in self.faces.iter().enumerate() {
             let Some(t) = tile(f.tile()) else { continue };
+            let at = match inputs.iter().position(|(k, _)| *k == t.key) {
+                Some(at) => at,
+                None => {
+                    inputs.push((t.key, surface_inputs(plan, t)));
+                    inputs.len() - 1
+                }
+            };
             remap[i] = set.faces.len() as u32;
-            push_tile_face(&mut set, t, *f, mats);
+            push_tile_face(&mut set, t, *f, mats, inputs[at].1.as_deref());
+        }
+        if !set.surface.is_empty() {
+            set.rule = Some(plan.texture.texel_rule());
         }
         for (i, row) in self.links.iter().enumerate() {
             if remap[i] == NO_FACE {
@@ -432,8 +457,15 @@ impl TileFacePlan {
     }
 }
 
-/// Appends face `f` of tile `t` (its 17 × 17 lattice samples).
-fn push_tile_face(set: &mut FaceSet, t: &Tile, f: TileFaceKey, mats: &MaterialSet) {
+/// Appends face `f` of tile `t` (its 17 × 17 lattice samples), and their texel inputs where
+/// the tile has them (`surface`, by tile vertex).
+fn push_tile_face(
+    set: &mut FaceSet,
+    t: &Tile,
+    f: TileFaceKey,
+    mats: &MaterialSet,
+    surface: Option<&[[f32; SURFACE_INPUTS]]>,
+) {
     let c = TILE_FACE_CELLS;
     let n = c + 1;
     let t_faces = TILE_FACES as i64;
@@ -460,4 +492,11 @@ fn push_tile_face(set: &mut FaceSet, t: &Tile, f: TileFaceKey, mats: &MaterialSe
             mats.materials[mats.index(u32::from(m))].noise_m,
         )
     });
+    if let Some(surface) = surface {
+        for k in 0..n * n {
+            let (iu, iv) = (k % n, k / n);
+            set.surface
+                .push(surface[(fj * c + iu) * TILE_VERTS + fi * c + iv]);
+        }
+    }
 }

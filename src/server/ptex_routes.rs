@@ -241,6 +241,7 @@ async fn tile_pages(
             let set = faces.build(
                 |t| tiles.iter().find(|x| x.key == t).map(Arc::as_ref),
                 &mats,
+                &view.plan,
             );
             let info = PackInfo {
                 kind: PackKind::Tile,

@@ -165,6 +165,7 @@ pub(super) async fn frame(
                 Job::Tile(faces, tiles) => faces.build(
                     |t| tiles.iter().find(|x| x.key == t).map(Arc::as_ref),
                     &mats,
+                    &plan,
                 ),
                 Job::Chunk(set) => set,
             };

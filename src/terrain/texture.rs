@@ -102,6 +102,84 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     out
 }
 
+/// How many inputs of [`texel_weights`] a vertex carries ([`surface_inputs`]).
+pub const SURFACE_INPUTS: usize = 2 + MATERIALS.len();
+
+/// The inputs of [`texel_weights`] at a vertex: its height above the sea, its height above its
+/// snow line (the biome-weighted line moved by `snow_shift_m`), both metres, then the share of
+/// each material in [`MATERIALS`] order among the ground materials of the vertex's biomes (the
+/// weights of the biomes whose ground it is, summed). Every input is what the weighting
+/// function reads before its smooth steps, so a texel between vertices can take their bilinear
+/// mix and evaluate the steps at its own place (`ptex_blend: 2`).
+pub fn surface_inputs(
+    plan: &TexturePlan,
+    height_m: f32,
+    weights: &[f32],
+    snow_shift_m: f32,
+) -> [f32; SURFACE_INPUTS] {
+    let mut out = [0.0f32; SURFACE_INPUTS];
+    let mut line = 0.0f32;
+    for ((l, g), w) in plan.snow_line_m.iter().zip(&plan.ground).zip(weights) {
+        line += w * l;
+        out[2 + *g as usize] += w;
+    }
+    out[0] = height_m - plan.sea_level_m;
+    out[1] = height_m - (line + snow_shift_m);
+    out
+}
+
+/// The thresholds [`texel_weights`] reads, from a world's [`TexturePlan`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexelRule {
+    /// Width of the snow-line and beach transitions, metres.
+    pub blend_m: f32,
+    /// Beaches reach this high above the sea, metres.
+    pub beach_height_m: f32,
+    /// `cos` of the slope where rock starts and where it is complete.
+    pub rock_cos: (f32, f32),
+}
+
+impl TexturePlan {
+    /// The thresholds of [`texel_weights`].
+    pub fn texel_rule(&self) -> TexelRule {
+        TexelRule {
+            blend_m: self.height_blend_m,
+            beach_height_m: self.beach_height_m,
+            rock_cos: self.rock_cos,
+        }
+    }
+}
+
+/// The weight of each material ([`MATERIALS`] order) at a point whose [`surface_inputs`] are `s`
+/// (a texel's: the bilinear mix of its vertices') and whose unit normal has the y component
+/// `normal_y`: the smooth steps of [`material_weights`], each taken at the point. The weights
+/// sum to 1 where the ground shares do. `shaders/ptex.wgsl` (`surface_weights`) is its twin,
+/// operation for operation.
+pub fn texel_weights(
+    rule: &TexelRule,
+    s: &[f32; SURFACE_INPUTS],
+    normal_y: f32,
+) -> [f32; MATERIALS.len()] {
+    let blend = rule.blend_m;
+    let inv_blend = 1.0 / blend;
+    let above = s[0];
+    let wet = 1.0 - smoothstep_inv(-blend * 0.5, 2.0 * inv_blend, above);
+    let rock = smoothstep(rule.rock_cos.0, rule.rock_cos.1, normal_y) * (1.0 - wet);
+    let snow = smoothstep_inv(-blend, 0.5 * inv_blend, s[1]) * (1.0 - rock) * (1.0 - wet);
+    let beach =
+        (1.0 - smoothstep_inv(rule.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
+    let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    let mut out = [0.0f32; MATERIALS.len()];
+    out[material::SEABED as usize] = wet;
+    out[material::SAND as usize] = beach;
+    out[material::ROCK as usize] = rock;
+    out[material::SNOW as usize] = snow;
+    for (m, w) in out.iter_mut().enumerate() {
+        *w += s[2 + m] * rest;
+    }
+    out
+}
+
 /// Vertices per block of [`proto_texture_batch`]: the per-block rows live on the stack.
 const BLOCK: usize = 64;
 

@@ -20,7 +20,7 @@ use super::blur::blur_weights;
 use super::fractal::fbm_batch;
 use super::lattice::Window;
 use super::plan::{WorldPlan, TILE_QUADS, TILE_VERTEX_COUNT, TILE_VERTS};
-use super::texture::proto_texture_batch;
+use super::texture::{proto_texture_batch, surface_inputs as surface_inputs_at, SURFACE_INPUTS};
 
 /// Address of a height tile.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -312,6 +312,32 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         skirt_depth_m,
         volume_override: Vec::new(),
     }
+}
+
+/// The inputs of the texel weighting function at every vertex of `tile`
+/// ([`super::texture::surface_inputs`], vertex order), for the Ptex bake of worlds with
+/// `texturing.ptex_blend: 2`; `None` in other worlds, whose bake blends the vertices' dominant
+/// materials. The snow line's shift is the one [`finish`] gave the vertex (a function of its
+/// position and normal).
+pub fn surface_inputs(plan: &WorldPlan, tile: &Tile) -> Option<Vec<[f32; SURFACE_INPUTS]>> {
+    if plan.params.texturing.ptex_blend != 2 {
+        return None;
+    }
+    let shift = match &plan.earth {
+        Some(e) => super::earth::snow_shift(e, tile.key, tile.spacing_m, &tile.normals),
+        None => Vec::new(),
+    };
+    let k = tile.biome_count;
+    Some(
+        tile.heights
+            .iter()
+            .enumerate()
+            .map(|(v, &h)| {
+                let w = &tile.weights[v * k..(v + 1) * k];
+                surface_inputs_at(&plan.texture, h, w, shift.get(v).copied().unwrap_or(0.0))
+            })
+            .collect(),
+    )
 }
 
 /// Skirt depth: deep enough to hide the largest crack against a neighbour one LOD coarser, which

@@ -94,6 +94,30 @@ pub struct Texturing {
     pub beach_height_m: f32,
     /// Width of the snow-line and beach transitions, metres.
     pub height_blend_m: f32,
+    /// How the Ptex bake blends a height tile's ground materials, 1 or 2
+    /// ([`crate::ptex::bake`], step 1). `1`: each texel blends the dominant materials of the four
+    /// vertices around it by their bilinear weights, so a material's border runs along the
+    /// vertex lattice in steps one vertex spacing wide (64 m at LOD 6); worlds stored before `2`
+    /// existed have no `ptex_blend` and keep it, and their pages' bytes. `2` (new worlds): each
+    /// texel evaluates these thresholds at its own height and slope, from the height above the
+    /// sea, the height above the snow line, the normal and the biomes' ground shares
+    /// interpolated between the four vertices ([`crate::terrain::texture::texel_weights`]), so
+    /// a border follows the terrain's contours and slope breaks at the texel's resolution.
+    #[serde(
+        default = "Texturing::first_ptex_blend",
+        skip_serializing_if = "Texturing::is_first_ptex_blend"
+    )]
+    pub ptex_blend: u32,
+}
+
+impl Texturing {
+    fn first_ptex_blend() -> u32 {
+        1
+    }
+
+    fn is_first_ptex_blend(v: &u32) -> bool {
+        *v == 1
+    }
 }
 
 /// Scatter placement (Choroś §5).
@@ -320,6 +344,7 @@ impl WorldParams {
                 rock_blend_deg: 8.0,
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
+                ptex_blend: 2,
             },
             scatter: ScatterParams {
                 spacing_m: 4.0,
@@ -403,6 +428,7 @@ impl WorldParams {
                 rock_blend_deg: 8.0,
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
+                ptex_blend: Texturing::first_ptex_blend(),
             },
             scatter: ScatterParams {
                 spacing_m: 4.0,
@@ -624,6 +650,11 @@ impl WorldParams {
         check(
             (1..=2).contains(&self.chunk_geology),
             "chunk_geology",
+            "must be 1 or 2",
+        )?;
+        check(
+            (1..=2).contains(&self.texturing.ptex_blend),
+            "texturing.ptex_blend",
             "must be 1 or 2",
         )?;
         Ok(())
