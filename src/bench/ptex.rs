@@ -6,7 +6,9 @@
 //! 3D value fBm for the displacement and its two differences, and 24 4-octave 2D value fBm for
 //! the two materials' relief at three points and their albedo, on three planes each). The
 //! ratio is the peer's time over ours (above 1: the bake is faster than the same work with the
-//! crate). No target is set for the bake alone.
+//! crate). No target is set for the bake alone. Each round also bakes the same faces as a world
+//! stored before `texturing.ptex_blend: 2` does (the vertices' materials blended), and prints the
+//! new bake's time over that one.
 //!
 //! Then the level-of-detail update over about the paper's Table 2 scene
 //! ([`super::ptex_update`]).
@@ -71,38 +73,51 @@ fn peer_ms(texels: usize) -> f64 {
 /// Runs the bake benchmark.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     let plan = WorldPlan::new(7, WorldParams::default())?;
+    // The peer of the same run: the same faces baked as worlds stored before `ptex_blend: 2`
+    // bake them (each texel blends its vertices' dominant materials).
+    let mut stored = WorldParams::default();
+    stored.texturing.ptex_blend = 1;
+    let stored = WorldPlan::new(7, stored)?;
     let mats = MaterialSet::default_ground(plan.seed);
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
+    let bake_ms = |sets: &[FaceSet], res: u32, pages: &mut Pages| {
+        let start = Instant::now();
+        pool.install(|| {
+            for s in sets {
+                bake_interior(s, &mats, res, pages);
+                black_box(&*pages);
+            }
+        });
+        start.elapsed().as_secs_f64() * 1e3
+    };
     for (res, tiles, reps) in [(8u32, 16i64, 7usize), (64, 2, 5), (256, 1, 3)] {
         let sets = faces(&plan, &mats, tiles);
+        let stored_sets = faces(&stored, &mats, tiles);
         let face_count: usize = sets.iter().map(|s| s.faces.len()).sum();
         let texels = face_count * (res * res) as usize;
         let mut pages = Pages::default();
-        let mut ours = Vec::new();
-        let mut ratios = Vec::new();
+        let (mut ours, mut ratios, mut blend1, mut over) = (vec![], vec![], vec![], vec![]);
         for _ in 0..reps {
-            let start = Instant::now();
-            pool.install(|| {
-                for s in &sets {
-                    bake_interior(s, &mats, res, &mut pages);
-                    black_box(&pages);
-                }
-            });
-            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let ms = bake_ms(&sets, res, &mut pages);
+            let ms1 = bake_ms(&stored_sets, res, &mut pages);
             let peer = peer_ms(texels);
             ours.push(ms);
             ratios.push(peer / ms);
+            blend1.push(ms1);
+            over.push(ms / ms1);
         }
         let (ms, ratio) = (median(ours), median(ratios));
+        let (ms1, over) = (median(blend1), median(over));
         let faces_per_s = face_count as f64 / ms * 1e3;
         let mtexels_per_s = texels as f64 / ms / 1e3;
         emit(
             args,
             json!({"bench":"ptex","figure":"bake","res":res,"faces":face_count,"texels":texels,
                    "ms_per_core":ms,"faces_per_s_per_core":faces_per_s,
-                   "mtexels_per_s_per_core":mtexels_per_s,"fastnoise_lite_ratio":ratio}),
+                   "mtexels_per_s_per_core":mtexels_per_s,"fastnoise_lite_ratio":ratio,
+                   "ms_per_core_ptex_blend_1":ms1,"ratio_to_ptex_blend_1":over}),
             format!(
-                "bake {res}²: {face_count} faces in {ms:.1} ms on one core: {faces_per_s:.1} faces/s, {mtexels_per_s:.3} Mtexels/s; fastnoise-lite doing the same noise calls: ratio {ratio:.2}"
+                "bake {res}²: {face_count} faces in {ms:.1} ms on one core: {faces_per_s:.1} faces/s, {mtexels_per_s:.3} Mtexels/s; fastnoise-lite doing the same noise calls: ratio {ratio:.2}; stored worlds' blend (ptex_blend 1) {ms1:.1} ms: {over:.2} × that"
             ),
         );
     }
