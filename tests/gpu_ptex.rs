@@ -10,7 +10,9 @@
 //! identical; displacement within 1e-4 m + 1e-5·|d|. At most 2 % of the texels may differ at all,
 //! so a systematic deviation fails. The test prints how many texels are bit-identical.
 //!
-//! The same comparison runs with a world's materials and decals (`strata::ptex::spec`): an
+//! It runs on a tile where the texels weigh their materials by the proto-texturing thresholds
+//! at the texel (`texturing.ptex_blend: 2`, the twin's `surface_weights` and `surface_slots`),
+//! and with a world's materials and decals (`strata::ptex::spec`): an
 //! image material with albedo, roughness and height images, a procedural override, and two
 //! decals (one masked by its alpha, one by a separate mask image with roughness), over both
 //! face sets, so the twin's image sampling, mip levels and decal placement are checked too. On
@@ -20,6 +22,7 @@
 mod common;
 
 use strata::gpu::ptex::bake_interior_on_device;
+use strata::ptex::bake::texel_materials;
 use strata::ptex::face::TileFacePlan;
 use strata::ptex::{bake_interior, FaceSet, MaterialSet, Pages};
 use strata::terrain::tile::{synthesize, TileKey};
@@ -139,6 +142,34 @@ fn gpu_bake_matches_cpu_on_quads_and_tile_faces() {
     let tiles = tile_set(&plan, &mats);
     assert_eq!(tiles.faces.len(), 16);
     compare("tile", &tiles, &mats, 64);
+}
+
+#[test]
+fn gpu_bake_matches_cpu_where_texels_weigh_their_materials() {
+    // A tile of the default world (`texturing.ptex_blend: 2`) where the snow line crosses
+    // gentle ground and rock outcrops: the texels weigh snow, rock and grass by the thresholds
+    // at the texel (`surface_weights` in the twin), many of them two materials or more.
+    let plan = WorldPlan::new(42, WorldParams::default()).expect("default world");
+    let mats = MaterialSet::default_ground(42);
+    let key = TileKey {
+        lod: 5,
+        x: 63,
+        z: 64,
+    };
+    let tile = synthesize(&plan, key);
+    let mut set = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1).build(
+        |t| (t == key).then_some(&tile),
+        &mats,
+        &plan,
+    );
+    set.output = set.faces.len();
+    assert!(set.rule.is_some() && set.surface.len() == set.samples.len());
+    let mixed = (0..set.faces.len())
+        .flat_map(|f| (0..64u32).flat_map(move |j| (0..64u32).map(move |i| (f, i, j))))
+        .filter(|&(f, i, j)| texel_materials(&set, &mats, f, 64, i, j).len() >= 2)
+        .count();
+    assert!(mixed > 1000, "{mixed} texels of two materials or more");
+    compare("snow-line tile", &set, &mats, 64);
 }
 
 /// A set with images: `grass` an image material, `rock` overridden, and two decals at `a` and

@@ -235,7 +235,7 @@ pub fn bake_interior_on_device(
         .collect();
     // Two vec4 per sample where the set has texel inputs (one zero pair otherwise: storage
     // bindings may not be empty).
-    let rule = set.rule.filter(|_| set.surface.len() == set.samples.len());
+    let rule = set.texel_rule().copied();
     let mut surface: Vec<[f32; 4]> = Vec::with_capacity(2 * set.surface.len());
     if rule.is_some() {
         for s in &set.surface {

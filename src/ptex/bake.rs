@@ -369,7 +369,7 @@ fn interpolate(set: &FaceSet, mats: &MaterialSet, face: &Face, u: f32, v: f32) -
         weights: [0.0; 4],
         count: 0,
     };
-    if let Some(rule) = &set.rule {
+    if let Some(rule) = set.texel_rule() {
         let at = [base, base + 1, base + n as usize, base + n as usize + 1];
         let inputs: [f32; SURFACE_INPUTS] = std::array::from_fn(|c| {
             let g = |k: usize| set.surface[at[k]][c];
@@ -840,7 +840,7 @@ fn frame_lanes(
     }
     mix([&sa[0], &sa[1], &sa[2], &sa[3]], &mut amp);
     let nrm = normalize_or_lanes(&nn, &splat3([0.0, 1.0, 0.0]));
-    if let Some(rule) = &set.rule {
+    if let Some(rule) = set.texel_rule() {
         for l in 0..LANES {
             let at = [base[l], base[l] + 1, base[l] + n, base[l] + n + 1];
             let inputs: [f32; SURFACE_INPUTS] = std::array::from_fn(|c| {

@@ -139,6 +139,15 @@ pub struct FaceSet {
 }
 
 impl FaceSet {
+    /// The thresholds the bake weighs the texels' materials by, where every sample has texel
+    /// inputs ([`FaceSet::surface`]); `None` otherwise, where texels blend their samples'
+    /// materials.
+    pub fn texel_rule(&self) -> Option<&TexelRule> {
+        self.rule
+            .as_ref()
+            .filter(|_| self.surface.len() == self.samples.len())
+    }
+
     /// Adds a face whose samples are `grid` (`n × n`, `iu` fastest) at world positions
     /// `world(i)` (metres, `f64`), anchored at the floor of its first sample over 256 m.
     fn push_face(

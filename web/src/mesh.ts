@@ -5,7 +5,7 @@
 import * as THREE from "three";
 import { tintOf } from "./biomes";
 import type { Tile } from "./frame";
-import { addSplat, splatVertex } from "./splat";
+import { addSplat, macroFactor, splatVertex } from "./splat";
 import { setWater, waterMaterial } from "./water";
 
 // Materials: 0 seabed, 1 sand, 2 grass, 3 dirt, 4 rock, 5 snow.
@@ -140,6 +140,7 @@ export function buildMesh(
   const nor = new Float32Array(3 * total);
   const col = new Float32Array(3 * total);
   const splat = { base: new Float32Array(3 * total), span: new Float32Array(3 * total), sel: new Uint8Array(4 * total) };
+  const macro = new Float32Array(3 * total);
   const c = new THREE.Color();
   const b = new THREE.Color();
   for (let j = 0; j < size; j++) {
@@ -164,6 +165,7 @@ export function buildMesh(
       const wet = depth > 0 ? Math.min(depth / 60, 0.85) : 0;
       if (wet > 0) c.lerp(waterMaterial.color, wet);
       splatVertex(v, materials[v], b, wet, waterMaterial.color, splat);
+      macroFactor(tile.originX + i * tile.spacing, tile.originZ + j * tile.spacing, tile.spacing, macro, v);
       col[3 * v] = c.r;
       col[3 * v + 1] = c.g;
       col[3 * v + 2] = c.b;
@@ -177,6 +179,7 @@ export function buildMesh(
         pos[3 * d + a] = pos[3 * s + a];
         nor[3 * d + a] = nor[3 * s + a];
         col[3 * d + a] = col[3 * s + a];
+        macro[3 * d + a] = macro[3 * s + a];
       }
       for (let a = 0; a < 3; a++) {
         splat.base[3 * d + a] = splat.base[3 * s + a];
@@ -200,6 +203,7 @@ export function buildMesh(
   geo.setAttribute("splatBase", new THREE.BufferAttribute(splat.base, 3));
   geo.setAttribute("splatSpan", new THREE.BufferAttribute(splat.span, 3));
   geo.setAttribute("splatSel", new THREE.BufferAttribute(splat.sel, 4, true));
+  geo.setAttribute("ptexMacro", new THREE.BufferAttribute(macro, 3));
   geo.computeBoundingSphere();
   geo.computeBoundingBox();
   const mesh = new THREE.Mesh(geo, material);

@@ -87,10 +87,13 @@ function sampleLevels(): string {
 
 const VERTEX_PARS = `
 uniform float ptexSpacing;
-varying vec2 vPtexCell;`;
+attribute vec3 ptexMacro;
+varying vec2 vPtexCell;
+varying vec3 vPtexMacro;`;
 
 const FRAGMENT_PARS = `
 varying vec2 vPtexCell;
+varying vec3 vPtexMacro;
 uniform vec4 ptexFace[${FACES * FACES}];
 ${Array.from({ length: LEVELS }, (_, l) => `uniform highp sampler2DArray ptexAtlas${l};`).join("\n")}
 ${sampleLevels()}`;
@@ -150,7 +153,8 @@ const FRAGMENT_PTEX = `
     vec2 local = cell / ${CELLS_PER_FACE}.0 - f;
     float res = 8.0 * exp2(page.x);
     vec2 texel = page.zw + 1.0 + local.yx * res;
-    diffuseColor.rgb = ptexAlbedo(int(page.x + 0.5), texel, page.y);
+    // The large-scale variation of the tile's vertices (./splat.ts, macroFactor).
+    diffuseColor.rgb = ptexAlbedo(int(page.x + 0.5), texel, page.y) * vPtexMacro;
   }
 #ifdef STRATA_SPLAT
   else {
@@ -210,7 +214,7 @@ export class PtexStore {
       });
       shader.vertexShader = shader.vertexShader
         .replace("#include <common>", `#include <common>${VERTEX_PARS}`)
-        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;");
+        .replace("#include <begin_vertex>", "#include <begin_vertex>\n  vPtexCell = position.xz / ptexSpacing;\n  vPtexMacro = ptexMacro;");
       shader.fragmentShader = shader.fragmentShader
         .replace("#include <common>", `#include <common>${FRAGMENT_PARS}`)
         .replace("#include <color_fragment>", `#include <color_fragment>${FRAGMENT_PTEX}`);

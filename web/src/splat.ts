@@ -69,6 +69,17 @@ const AMP = [1.6, 1.4, 1.8, 1.6, 1.8, 1.0, 1.4, 1.8];
 const AMP_MAX = 2;
 /** The biome tint's share of the albedo. */
 const BIOME_SHARE = 0.2;
+/** How many times larger than the splat's the macro variation reads the patterns (macroFactor):
+ * a repeat of 1 km, features from 512 m down to a few metres. */
+const MACRO_SCALE = 4;
+/** The second read's scale: a repeat of 1.7 km, incommensurate with the first's. */
+const MACRO_SCALE_2 = 6.7;
+/** The macro variation's brightness per unit of the two patterns' sum (each spreads about ±0.15
+ * around ½: about ±15 % brightness). */
+const MACRO_BRIGHTNESS = 0.7;
+/** The macro variation's warm/cool shift per unit of the two patterns' sum (red up and blue
+ * down, or the reverse). */
+const MACRO_WARMTH = 0.3;
 
 /** A 32-bit integer hash of (seed, x, y) in [0, 1). */
 function hash(seed: number, x: number, y: number): number {
@@ -117,6 +128,14 @@ export function makePatterns(): Uint8Array {
   return data;
 }
 
+let bytes: Uint8Array | undefined;
+
+/** `makePatterns()`, made once for the splat's texture and the macro variation. */
+function patternBytes(): Uint8Array {
+  bytes ??= makePatterns();
+  return bytes;
+}
+
 const linear = (rgb: number[]) => new THREE.Color().setRGB(rgb[0], rgb[1], rgb[2], THREE.SRGBColorSpace);
 const BASE_LINEAR = BASE.map(linear);
 const TINT_LINEAR = TINT.map(linear);
@@ -126,7 +145,7 @@ let uniforms: Record<string, THREE.IUniform> | undefined;
 /** The uniforms every splatted material shares (the pattern texture is made on first use). */
 function sharedUniforms(): Record<string, THREE.IUniform> {
   if (uniforms) return uniforms;
-  const texture = new THREE.DataTexture(makePatterns(), SIZE, SIZE);
+  const texture = new THREE.DataTexture(patternBytes(), SIZE, SIZE);
   texture.format = THREE.RGBAFormat;
   texture.type = THREE.UnsignedByteType;
   texture.colorSpace = THREE.NoColorSpace;
@@ -199,6 +218,82 @@ vec3 strataSplat(vec3 p, vec3 gx, vec3 gy) {
   float t = clamp(0.5 + contrast * dot(pattern - 0.5, vSplatSel), 0.0, 1.0);
   return vSplatBase + vSplatSpan * t;
 }`;
+
+// The large-scale variation drawn over the Ptex pages (./ptex.ts, with or without the
+// splatting): a page carries its materials' patterns only down to its texel, and the default
+// materials' patterns are finer than a metre, so a vista page (8² texels a face) is one flat colour
+// and a meadow seen from a few hundred metres reads as a uniform green blanket, with the faces
+// holding detail pages standing out as grainy squares. `macroFactor` varies the albedo over tens
+// to hundreds of metres, the same at every page level and across faces and tiles (a function of
+// the world position): brightness and a warm or cool shift, each the sum of two patterns read at
+// MACRO_SCALE and MACRO_SCALE_2 times the splat's scale, turned by different angles, so the sum
+// repeats at neither period (one read alone tiles a 1 km grid of blobs across the far plains). It
+// is computed per vertex when a tile's mesh is built (./mesh.ts; a fragment pays one multiply, no
+// texture read: headless Chromium's software renderer is slow enough already) from the pattern
+// bytes' box-filtered mip at the tile's vertex spacing, so coarse tiles see the patterns' coarse
+// octaves only, as a mipmapped read would.
+
+/** The patterns' mip chain for `macroFactor`: level `l` holds `(SIZE >> l)²` texels of four
+ * channels in [0, 1], each the mean of the 2 × 2 texels below it. */
+let macroMips: Float32Array[] | undefined;
+
+function macroLevels(): Float32Array[] {
+  if (macroMips) return macroMips;
+  const levels = [Float32Array.from(patternBytes(), (b) => b / 255)];
+  for (let side = SIZE >> 1; side >= 1; side >>= 1) {
+    const up = levels[levels.length - 1];
+    const out = new Float32Array(side * side * 4);
+    for (let y = 0; y < side; y++) {
+      for (let x = 0; x < side; x++) {
+        for (let c = 0; c < 4; c++) {
+          const at = (yy: number, xx: number) => up[((2 * y + yy) * 2 * side + 2 * x + xx) * 4 + c];
+          out[(y * side + x) * 4 + c] = 0.25 * (at(0, 0) + at(0, 1) + at(1, 0) + at(1, 1));
+        }
+      }
+    }
+    levels.push(out);
+  }
+  macroMips = levels;
+  return levels;
+}
+
+/** Channel `c` of mip `level` at texture coordinates (u, v) (repeats of 1), bilinear, wrapped. */
+function macroSample(level: number, u: number, v: number, c: number): number {
+  const mips = macroLevels();
+  const l = Math.min(level, mips.length - 1);
+  const side = SIZE >> l;
+  const data = mips[l];
+  const x = u * side - 0.5;
+  const y = v * side - 0.5;
+  const i = Math.floor(x);
+  const j = Math.floor(y);
+  const fx = x - i;
+  const fy = y - j;
+  const at = (a: number, b: number) => data[((((b % side) + side) % side) * side + (((a % side) + side) % side)) * 4 + c];
+  const top = at(i, j) + (at(i + 1, j) - at(i, j)) * fx;
+  const bottom = at(i, j + 1) + (at(i + 1, j + 1) - at(i, j + 1)) * fx;
+  return top + (bottom - top) * fy;
+}
+
+/** Writes the macro factor (linear RGB multipliers) of a vertex at world (x, z) of a mesh whose
+ * vertices are `spacing` metres apart into `out` at `3·v` (module docs above). */
+export function macroFactor(x: number, z: number, spacing: number, out: Float32Array, v: number): void {
+  const read = (scale: number, cos: number, sin: number, cx: number, cy: number): [number, number] => {
+    const repeat = REPEAT_M * scale;
+    const texel = repeat / SIZE;
+    const level = Math.max(0, Math.ceil(Math.log2(spacing / texel)));
+    const u = (cos * z - sin * x) / repeat;
+    const w = (sin * z + cos * x) / repeat;
+    return [macroSample(level, u, w, cx), macroSample(level, u, w, cy)];
+  };
+  const [a0, a3] = read(MACRO_SCALE, 0.7986, 0.6018, 0, 3);
+  const [b2, b1] = read(MACRO_SCALE_2, 0.3256, -0.9455, 2, 1);
+  const bright = 1 + MACRO_BRIGHTNESS * (a0 + b2 - 1);
+  const warm = MACRO_WARMTH * (a3 + b1 - 1);
+  out[3 * v] = bright * (1 + warm);
+  out[3 * v + 1] = bright;
+  out[3 * v + 2] = bright * (1 - warm);
+}
 
 // Where no Ptex page is drawn after it: the splat replaces the vertex colours.
 const FRAGMENT = `
