@@ -8,8 +8,9 @@
 //!   `ptex_blend: 1` (worlds stored before it) the texels follow their vertices' dominant
 //!   materials and hundreds of them break that rule along the steps of the vertex lattice, so
 //!   the check can fail;
-//! - (the GPU twin bakes such a tile as the CPU does: `tests/gpu_ptex.rs`);
 //! - a stored world's document without `ptex_blend` reads as 1, and a new world writes 2.
+//!
+//! The WGSL twin's bake of such a tile is compared with the CPU's in `tests/gpu_ptex.rs`.
 
 mod common;
 
