@@ -373,6 +373,20 @@ fn material_index(id: u32) -> u32 {
     return min(id, params.materials - 1u);
 }
 
+// Adds weight `w` of material index `id` to the texel's slots: to its slot if it has one (equal
+// ids merged), else to a new slot.
+fn add_slot(id: u32, w: f32) {
+    for (var m = 0u; m < pt_count; m = m + 1u) {
+        if (pt_ids[m] == id) {
+            pt_w[m] = pt_w[m] + w;
+            return;
+        }
+    }
+    pt_ids[pt_count] = id;
+    pt_w[pt_count] = w;
+    pt_count = pt_count + 1u;
+}
+
 fn interpolate(face: Face, u: f32, v: f32) {
     let n = face.n;
     let last = f32(n - 2u);
@@ -395,19 +409,7 @@ fn interpolate(face: Face, u: f32, v: f32) {
         p = p + vec3<f32>(w[k] * s.px, w[k] * s.py, w[k] * s.pz);
         nn = nn + vec3<f32>(w[k] * s.nx, w[k] * s.ny, w[k] * s.nz);
         amp = amp + w[k] * s.noise_m;
-        let id = material_index(s.material);
-        var found = false;
-        for (var m = 0u; m < pt_count; m = m + 1u) {
-            if (pt_ids[m] == id) {
-                pt_w[m] = pt_w[m] + w[k];
-                found = true;
-            }
-        }
-        if (!found) {
-            pt_ids[pt_count] = id;
-            pt_w[pt_count] = w[k];
-            pt_count = pt_count + 1u;
-        }
+        add_slot(material_index(s.material), w[k]);
     }
     pt_p = p;
     pt_n = normalize_or(nn, vec3<f32>(0.0, 1.0, 0.0));
@@ -496,20 +498,7 @@ fn surface_slots(weights: array<f32, 6>) {
     }
     pt_count = 0u;
     for (var k = 0u; k < count; k = k + 1u) {
-        ws[k] = ws[k] / total;
-        let index = material_index(ids[k]);
-        var found = false;
-        for (var m = 0u; m < pt_count; m = m + 1u) {
-            if (pt_ids[m] == index) {
-                pt_w[m] = pt_w[m] + ws[k];
-                found = true;
-            }
-        }
-        if (!found) {
-            pt_ids[pt_count] = index;
-            pt_w[pt_count] = ws[k];
-            pt_count = pt_count + 1u;
-        }
+        add_slot(material_index(ids[k]), ws[k] / total);
     }
 }
 
