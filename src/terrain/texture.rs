@@ -154,7 +154,9 @@ impl TexturePlan {
 /// (a texel's: the bilinear mix of its vertices') and whose unit normal has the y component
 /// `normal_y`: the smooth steps of [`material_weights`], each taken at the point. The weights
 /// sum to 1 where the ground shares do. `shaders/ptex.wgsl` (`surface_weights`) is its twin,
-/// operation for operation.
+/// operation for operation. The same function as [`material_weights`], taken from the inputs
+/// before the thresholds; that one keeps its own order of operations because
+/// [`proto_texture_batch`] is pinned to its bits.
 pub fn texel_weights(
     rule: &TexelRule,
     s: &[f32; SURFACE_INPUTS],

@@ -95,7 +95,7 @@ pub struct Texturing {
     /// Width of the snow-line and beach transitions, metres.
     pub height_blend_m: f32,
     /// How the Ptex bake blends a height tile's ground materials, 1 or 2
-    /// ([`crate::ptex::bake`], step 1). `1`: each texel blends the dominant materials of the four
+    /// (`src/ptex/bake.rs`, step 1). `1`: each texel blends the dominant materials of the four
     /// vertices around it by their bilinear weights, so a material's border runs along the
     /// vertex lattice in steps one vertex spacing wide (64 m at LOD 6); worlds stored before `2`
     /// existed have no `ptex_blend` and keep it, and their pages' bytes. `2` (new worlds): each
