@@ -159,11 +159,17 @@ fn gpu_earth_field_matches_cpu() {
         key(12, -1, -1),
         key(12, 2, -3),
     ];
-    // LODs 0 and 3 run the lattice split (`earth::lattice`): the host uploads the nodes and
-    // the kernel interpolates them before the later layers.
+    // LODs 0 and 3 run the lattice split (`earth::lattice`) with the 16 m lattice, whose nodes
+    // the host computes from the 256 m lattice's; LOD 6 with the 256 m lattice alone (four
+    // samples a node); the host uploads the nodes and the kernel interpolates them before the
+    // later layers. LODs 9 and 12 have no split.
     let lods = &plan.earth.as_ref().expect("earth").lods;
-    assert!(lods[0].lattice.is_some() && lods[3].lattice.is_some());
-    assert!(lods[6].lattice.is_none());
+    assert!(lods[0].lattice.is_some_and(|l| l.outer.is_some()));
+    assert!(lods[3].lattice.is_some_and(|l| l.outer.is_some()));
+    assert!(lods[6]
+        .lattice
+        .is_some_and(|l| l.step == 4 && l.outer.is_none()));
+    assert!(lods[9].lattice.is_none() && lods[12].lattice.is_none());
     let (mut max_dh, mut differing, mut samples) = (0.0f32, 0, 0);
     let mut mountain_relief = 0.0f32;
     for k in cases {

@@ -2,7 +2,8 @@
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
 //! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 2`,
-//! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too.
+//! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too, and
+//! so does one stored with `valleys: 6` before new worlds got the coarse lattice.
 
 mod common;
 
@@ -164,6 +165,29 @@ async fn a_world_stored_with_the_fifth_valleys_serves_the_same_tile_bytes() {
     assert!(
         differ > 0,
         "a bare seed carves valleys: 6, which no fixture tile shows"
+    );
+}
+
+/// A world stored with the default of new worlds before the coarse lattice (`valleys: 6`,
+/// `lattice_cells: 16` and no `coarse_lattice_cells`, `tests/fixtures/valleys6-world/`) keeps its
+/// bytes, where a bare seed, whose LODs 0–7 interpolate the macro fields and the two longest
+/// layers from a 256 m lattice, gives its tiles of those LODs other bytes.
+#[tokio::test]
+async fn a_world_stored_with_the_sixth_valleys_and_no_coarse_lattice_serves_the_same_tile_bytes() {
+    const WORLD: &str = "960fa06a7301e7fd03952c53";
+    const FIXTURE: &str = "valleys6-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 48).await;
+    let earth = &scene["world"]["earth"];
+    assert_eq!(
+        (&earth["rivers"]["valleys"], &earth["lattice_cells"]),
+        (&6.into(), &16.into()),
+        "{earth}"
+    );
+    assert_eq!(earth.get("coarse_lattice_cells"), None, "{earth}");
+    let differ = bare_seed_differs(&server, FIXTURE).await;
+    assert!(
+        differ > 0,
+        "a bare seed reads the coarse lattice, which no fixture tile shows"
     );
 }
 

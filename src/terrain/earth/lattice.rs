@@ -1,5 +1,5 @@
-//! The lattice split of `earth-1`'s height sum: the large-scale part evaluated on a coarse world
-//! lattice and interpolated, the fine part at every sample.
+//! The lattice split of `earth-1`'s height sum: the large-scale part evaluated on coarse world
+//! lattices and interpolated, the fine part at every sample.
 //!
 //! Most of a LOD-0 sample's cost is in fields that barely change across a tile: the macro fields
 //! (warp, continents, belts, hills: eighteen octaves of wavelength 5 km and more) and the
@@ -24,22 +24,40 @@
 //! (the stencil's margin). At a node the weights are exactly `[0, 1, 0, 0]`, so a vertex that
 //! lies on a node gets the node's own values.
 //!
+//! **The coarse lattice.** With `EarthParams::coarse_lattice_cells` too (new worlds: 256, 256 m),
+//! the macro fields and the layers of wavelength at least [`COARSE_PREFIX_WAVES`] `· S` (the
+//! default world's two longest, 24 and 12 km) are evaluated at the nodes of that lattice
+//! (spacing `S`) instead, and interpolated the same way:
+//! - at LODs with at least two vertices to `s` (LODs 0–3), at the nodes of the fine lattice,
+//!   which then add the layers between the two prefixes ([`Lattice::outer`]);
+//! - at LODs with fewer to `s` but at least two to `S` (LODs 4–7: 16 to 128 m), at their
+//!   samples, which add the layers after the coarse prefix.
+//!
+//! A fine node and a sample of a coarser LOD at the same place read the same coarse nodes with
+//! the same weights (the offsets are exact fractions with power-of-two denominators), so both
+//! get the same bits for the coarse part, and the two LODs differ there only by the layers
+//! after it, as without the coarse lattice.
+//!
 //! **Accuracy and LOD.** A prefix layer has at least [`PREFIX_WAVES`] nodes per wavelength, where
 //! Catmull–Rom reproduces a sinusoid to within 0.2 % of its amplitude; the macro fields vary over
 //! kilometres. The gully stripes turn sharply around the points where their blended phasor
 //! vanishes, and there the interpolation rounds them off: against evaluating every layer at
 //! every sample the heights differ by 0.8 m at the 99th percentile and 3.3 m at most
-//! (`tests/earth_lattice.rs`). So the split is part of the world's definition, not an
-//! approximation of another: a world either has `lattice_cells` or not, for good. LODs whose
-//! spacing is at least the lattice spacing evaluate every layer at every vertex (each of their
-//! vertices is a node, where the interpolation gives the node's own values), so the LOD bound
-//! of [`super::EarthLod`] stands between a coarse LOD and LOD 0 at their shared vertices.
+//! (`tests/earth_lattice.rs`); the coarse lattice adds at most 0.4 m in tiles of 100–200 m
+//! relief. So the split is part of the world's definition, not an
+//! approximation of another: a world either has `lattice_cells` (and `coarse_lattice_cells`)
+//! or not, for good. LODs whose spacing is at least the coarse lattice's (or, without it, the
+//! fine one's) evaluate every layer at every vertex (each of their vertices is a node, where
+//! the interpolation gives the node's own values), so the LOD bound of [`super::EarthLod`]
+//! stands between a coarse LOD and LOD 0 at their shared vertices.
 //!
-//! **Cost.** A LOD-0 job of 67² samples reads 7² nodes: the macro fields' eighteen octaves and
-//! the prefix (13 of the default world's 17 LOD-0 layers) are evaluated 49 times instead of
-//! 4 489, and each sample pays the interpolation (24 multiply-adds after the rows) and the
-//! layers after the prefix. The WGSL twin (`shaders/earth.wgsl`) interpolates the nodes the host
-//! computes with [`nodes`], as it reads the climate's weights from the host.
+//! **Cost.** A LOD-0 job of 67² samples reads 7² nodes: the prefix (13 of the default world's 17
+//! LOD-0 layers) is evaluated 49 times instead of 4 489, the macro fields' eighteen octaves at
+//! the 4² or 5² coarse nodes around them, and each sample pays the interpolation (24
+//! multiply-adds after the rows) and the layers after the prefix. A LOD-6 job reads 19² coarse
+//! nodes instead of evaluating the macro fields at its 67² samples. The WGSL twin
+//! (`shaders/earth.wgsl`) interpolates the nodes the host computes with [`nodes`], as it reads
+//! the climate's weights from the host.
 
 use super::kernel::{Partial, LANES};
 use super::{climate, EarthPlan, Layer};
@@ -47,6 +65,12 @@ use crate::terrain::tile::FieldJob;
 
 /// A prefix layer's wavelength is at least this many lattice spacings.
 pub const PREFIX_WAVES: f64 = 12.0;
+/// A prefix layer of the coarse lattice (`EarthParams::coarse_lattice_cells`) has a wavelength
+/// of at least this many of its spacings. The layers' creases are sharper than their
+/// wavelengths say: on a 256 m lattice, with twelve nodes a wavelength, the 6 km ridged layer
+/// came out up to 9 m off and the 8 km gully layer up to 34 m (tiles of 100–200 m relief);
+/// with forty, the two longest layers (24 and 12 km) are at most 0.4 m off.
+pub const COARSE_PREFIX_WAVES: f64 = 40.0;
 /// Values kept per node: elevation, relief amplitude, ridge mix, layer sum and its gradient
 /// (x, z), then two zeros (eight `f32`, two `vec4` for the WGSL twin).
 pub const NODE_FIELDS: usize = 8;
@@ -58,26 +82,68 @@ pub struct Lattice {
     pub step: i64,
     /// Leading layers of the LOD evaluated at the nodes.
     pub prefix: usize,
+    /// The coarser lattice the nodes' macro fields and first layers are interpolated from
+    /// (`EarthParams::coarse_lattice_cells`), if the LOD is at least two samples to its spacing
+    /// too; `None`: the nodes evaluate them.
+    pub outer: Option<Level>,
 }
 
-impl Lattice {
-    /// The split of a LOD with vertex spacing `spacing_m` and `layers` on a lattice of
-    /// `lattice_m` (a power-of-two multiple of the spacing: `EarthParams::lattice_cells` LOD-0
-    /// spacings),
-    /// if its vertices are at least two to a lattice spacing.
-    pub fn for_lod(layers: &[Layer], spacing_m: f64, lattice_m: f64) -> Option<Self> {
+/// One lattice of a split: its spacing in samples of the LOD and the layers its nodes hold.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Level {
+    /// Samples of the LOD per lattice spacing (a power of two, at least 2).
+    pub step: i64,
+    /// Leading layers of the LOD evaluated at its nodes.
+    pub prefix: usize,
+}
+
+impl Level {
+    /// The level of a lattice of `lattice_m` for a LOD with vertex spacing `spacing_m` and
+    /// `layers`, if its vertices are at least two to a lattice spacing: the prefix is the
+    /// longest run of leading layers of wavelength at least `waves` lattice spacings.
+    pub fn for_lod(layers: &[Layer], spacing_m: f64, lattice_m: f64, waves: f64) -> Option<Self> {
         let step = (lattice_m / spacing_m).round();
         if step < 2.0 {
             return None;
         }
         let prefix = layers
             .iter()
-            .take_while(|l| 1.0 / l.octave.freq as f64 >= PREFIX_WAVES * lattice_m)
+            .take_while(|l| 1.0 / l.octave.freq as f64 >= waves * lattice_m)
             .count();
         Some(Self {
             step: step as i64,
             prefix,
         })
+    }
+}
+
+impl Lattice {
+    /// The split of a LOD with vertex spacing `spacing_m` and `layers` between a lattice of
+    /// `lattice_m` and one of `coarse_m` (each a power-of-two multiple of the spacing, either
+    /// absent): the finer lattice that has at least two vertices to its spacing, its nodes
+    /// reading the coarse one's where that has too; `None` when neither has.
+    pub fn for_lod(
+        layers: &[Layer],
+        spacing_m: f64,
+        lattice_m: Option<f64>,
+        coarse_m: Option<f64>,
+    ) -> Option<Self> {
+        let fine = lattice_m.and_then(|m| Level::for_lod(layers, spacing_m, m, PREFIX_WAVES));
+        let coarse =
+            coarse_m.and_then(|m| Level::for_lod(layers, spacing_m, m, COARSE_PREFIX_WAVES));
+        match (fine, coarse) {
+            (Some(f), outer) => Some(Self {
+                step: f.step,
+                prefix: f.prefix,
+                outer,
+            }),
+            (None, Some(c)) => Some(Self {
+                step: c.step,
+                prefix: c.prefix,
+                outer: None,
+            }),
+            (None, None) => None,
+        }
     }
 }
 
@@ -146,7 +212,11 @@ pub fn relief_of(plan: &EarthPlan, weights: &[f32]) -> Vec<(f32, f32)> {
         .collect()
 }
 
-/// The node values of `job` at LOD `lod` (vertex spacing `spacing_m`) split by `lat`.
+/// The node values of `job` at LOD `lod` (vertex spacing `spacing_m`) split by `lat`. Without
+/// an outer level a node starts from the macro fields at its position and adds the prefix; with
+/// one it starts from the outer nodes' values interpolated at it (as a sample of the LOD at the
+/// node would, bit for bit: the same nodes, the same weights) and adds the layers between the
+/// two prefixes.
 pub fn nodes(plan: &EarthPlan, lod: usize, spacing_m: f32, lat: Lattice, job: FieldJob) -> Nodes {
     let (i0, k0, w, h) = node_window(job, lat.step);
     let node_job = FieldJob {
@@ -158,23 +228,43 @@ pub fn nodes(plan: &EarthPlan, lod: usize, spacing_m: f32, lat: Lattice, job: Fi
     };
     let lattice_m = lat.step as f32 * spacing_m;
     let relief = relief_of(plan, &climate::weights(plan, lattice_m, node_job));
-    let prefix = &plan.lods[lod].layers[..lat.prefix];
+    // The outer level in units of this level's nodes.
+    let outer = lat.outer.map(|o| {
+        let inner = Lattice {
+            step: o.step / lat.step,
+            prefix: o.prefix,
+            outer: None,
+        };
+        let coarse = nodes(plan, lod, lattice_m, inner, node_job);
+        (Interpolated::new(&coarse, inner, node_job), o.prefix)
+    });
+    let first = outer.as_ref().map_or(0, |(_, p)| *p);
+    let layers = &plan.lods[lod].layers[first..lat.prefix];
     let n = w * h;
     let mut values = vec![[0.0f32; NODE_FIELDS]; n];
     let (mut x, mut z) = ([0.0f32; LANES], [0.0f32; LANES]);
     let (mut ero, mut rough) = ([0.0f32; LANES], [0.0f32; LANES]);
+    let mut p = Partial::zero();
     for start in (0..n).step_by(LANES) {
         let m = (n - start).min(LANES);
-        for l in 0..m {
-            let v = start + l;
-            let (a, b) = ((v % w) as i64, (v / w) as i64);
+        for l in 0..LANES {
+            // Lanes past the job repeat its last node, so every lane holds finite values.
+            let v = start + l.min(m - 1);
+            let (a, b) = (v % w, v / w);
             // A node's position as a sample of the LOD at it computes it.
-            x[l] = ((i0 + a) * lat.step) as f32 * spacing_m;
-            z[l] = ((k0 + b) * lat.step) as f32 * spacing_m;
+            x[l] = ((i0 + a as i64) * lat.step) as f32 * spacing_m;
+            z[l] = ((k0 + b as i64) * lat.step) as f32 * spacing_m;
             (ero[l], rough[l]) = relief[v];
+            if let Some((base, _)) = &outer {
+                let [e, am, r, hs, gx, gz] = base.at(a, b);
+                (p.elev[l], p.amp[l], p.ridge[l]) = (e, am, r);
+                (p.h[l], p.gx[l], p.gz[l]) = (hs, gx, gz);
+            }
         }
-        let mut p = Partial::start(plan, &x, &z);
-        p.add_layers(plan, prefix, &x, &z, &ero, &rough);
+        if outer.is_none() {
+            p = Partial::start(plan, &x, &z);
+        }
+        p.add_layers(plan, layers, &x, &z, &ero, &rough);
         for l in 0..m {
             values[start + l] = [
                 p.elev[l], p.amp[l], p.ridge[l], p.h[l], p.gx[l], p.gz[l], 0.0, 0.0,

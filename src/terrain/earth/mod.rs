@@ -33,7 +33,9 @@
 //!
 //! **Lattice split** ([`lattice`], worlds with `lattice_cells`): at LODs finer than the lattice, the
 //! macro fields and the leading layers of long wavelength are evaluated at the nodes of a world
-//! lattice and interpolated; the later layers at every sample.
+//! lattice and interpolated; the later layers at every sample. Worlds with `coarse_lattice_cells`
+//! (new worlds) take the macro fields and the longest layers from a second lattice of 256 m, at
+//! the first lattice's nodes and at the samples of LODs 4–7.
 //!
 //! Seams: every value is a function of the vertex's world position (its lattice index times the
 //! spacing, exact in `f32`), so neighbouring tiles share edge vertices bit for bit, as with the
@@ -342,10 +344,13 @@ impl EarthPlan {
                         });
                     }
                 }
-                let lattice = e.lattice_cells.and_then(|c| {
-                    let lattice_m = c as f64 * params.cell_m as f64;
-                    lattice::Lattice::for_lod(&layers, spacing, lattice_m)
-                });
+                let cells_m = |c: u32| c as f64 * params.cell_m as f64;
+                let lattice = lattice::Lattice::for_lod(
+                    &layers,
+                    spacing,
+                    e.lattice_cells.map(cells_m),
+                    e.coarse_lattice_cells.map(cells_m),
+                );
                 EarthLod {
                     layers,
                     bound_m: bound as f32,

@@ -67,6 +67,14 @@ pub struct EarthParams {
     /// layer at every vertex and keep their bytes; new worlds: 16 (16 m at the default 1 m cell).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lattice_cells: Option<u32>,
+    /// Spacing of a second, coarser world lattice, in LOD-0 vertex spacings: the macro fields
+    /// and the leading layers of longest wavelength are evaluated at its nodes and interpolated
+    /// at every LOD finer than it, at the samples of the LODs between the two lattices and at the
+    /// nodes of `lattice_cells` below them ([`super::lattice`]). A power of two in [4, 4096], at
+    /// least twice `lattice_cells`. Absent in worlds stored before it existed, which keep their
+    /// bytes; new worlds: 256 (256 m at the default 1 m cell).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coarse_lattice_cells: Option<u32>,
     /// Latitude of the origin as a distance from the pole, metres: the Voronoi map of
     /// Choroś & Topolski is read at `z + latitude_offset_m`, so the origin sits this far towards
     /// the equator.
@@ -217,6 +225,7 @@ impl Default for EarthParams {
             gully_octaves: 6,
             gullies: 2,
             lattice_cells: Some(16),
+            coarse_lattice_cells: Some(256),
             latitude_offset_m: 1_024_000.0,
             lapse_m: 10_000.0,
             rivers: Some(RiverParams::default()),
@@ -363,6 +372,15 @@ impl EarthParams {
                 (2..=256).contains(&c) && c.is_power_of_two(),
                 "lattice_cells",
                 "must be a power of two in [2, 256]",
+            )?;
+        }
+        if let Some(c) = self.coarse_lattice_cells {
+            check(
+                (4..=4096).contains(&c)
+                    && c.is_power_of_two()
+                    && self.lattice_cells.is_none_or(|f| c >= 2 * f),
+                "coarse_lattice_cells",
+                "must be a power of two in [4, 4096], at least twice lattice_cells",
             )?;
         }
         if let Some(r) = &self.rivers {

@@ -16,8 +16,8 @@ use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
 /// it unrolls a loop of eight and then does not).
 pub const LANES: usize = 64;
-
-type L = [f32; LANES];
+/// Lanes of a bin of at most 4 × 4 samples.
+const SMALL_LANES: usize = 16;
 
 /// `x.clamp(lo, hi)` without the check that `lo ≤ hi` (which the scalar code makes only where it
 /// uses the value): the same two comparisons in the same order, so the same bits.
@@ -109,44 +109,73 @@ impl RiverJob {
         }
         for b in (0..bins).filter(|&b| reached(b)) {
             let entries = &pruned.entries[pruned.start[b] as usize..pruned.start[b + 1] as usize];
+            let sills = (&sill_level[..], &sill_s[..]);
             for group in order[first[b] as usize..first[b + 1] as usize].chunks(LANES) {
-                let (mut x, mut z, mut h) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
-                let (mut sl, mut ss) = ([0.0; LANES], [0.0; LANES]);
-                for (l, &v) in group.iter().enumerate() {
-                    let v = v as usize;
-                    (x[l], z[l]) = (xs[v % xs.len()], zs[v / xs.len()]);
-                    h[l] = heights[v];
-                    if !sill_s.is_empty() {
-                        (sl[l], ss[l]) = (sill_level[v], sill_s[v]);
-                    }
-                }
-                let c = self.carve_lanes(entries, &x, &z, &h, (&sl, &ss));
-                for (l, &v) in group.iter().enumerate() {
-                    heights[v as usize] = c[l];
+                // A bin of 4 × 4 samples or fewer (coarse LODs, whose bins are a node spacing)
+                // in a quarter of the lanes.
+                if group.len() <= SMALL_LANES {
+                    self.carve_group::<SMALL_LANES>(entries, group, xs, zs, sills, heights);
+                } else {
+                    self.carve_group::<LANES>(entries, group, xs, zs, sills, heights);
                 }
             }
         }
     }
 
-    /// [`RiverJob::wall_width`] of `LANES` samples.
-    fn wall_lanes(&self, x: &L, z: &L) -> L {
-        if self.wall_noise == 0.0 {
-            return [0.0; LANES];
+    /// Carves the samples `group` (indices into the grid of `xs` × `zs`, at most `N`) of one bin
+    /// whose pruned pieces are `entries`, `N` side by side; `sills` holds each sample's sill
+    /// level and weight (empty: none).
+    fn carve_group<const N: usize>(
+        &self,
+        entries: &[(u32, f32)],
+        group: &[u32],
+        xs: &[f32],
+        zs: &[f32],
+        sills: (&[f32], &[f32]),
+        heights: &mut [f32],
+    ) {
+        let (mut x, mut z, mut h) = ([0.0; N], [0.0; N], [0.0; N]);
+        let (mut sl, mut ss) = ([0.0; N], [0.0; N]);
+        for (l, &v) in group.iter().enumerate() {
+            let v = v as usize;
+            (x[l], z[l]) = (xs[v % xs.len()], zs[v / xs.len()]);
+            h[l] = heights[v];
+            if !sills.1.is_empty() {
+                (sl[l], ss[l]) = (sills.0[v], sills.1[v]);
+            }
         }
-        let qx: L = std::array::from_fn(|l| x[l] * WALL_NOISE_INV_M);
-        let qz: L = std::array::from_fn(|l| z[l] * WALL_NOISE_INV_M);
-        let mut n = [0.0; LANES];
+        let c = self.carve_lanes(entries, &x, &z, &h, (&sl, &ss));
+        for (l, &v) in group.iter().enumerate() {
+            heights[v as usize] = c[l];
+        }
+    }
+
+    /// [`RiverJob::wall_width`] of `N` samples.
+    fn wall_lanes<const N: usize>(&self, x: &[f32; N], z: &[f32; N]) -> [f32; N] {
+        if self.wall_noise == 0.0 {
+            return [0.0; N];
+        }
+        let qx: [f32; N] = std::array::from_fn(|l| x[l] * WALL_NOISE_INV_M);
+        let qz: [f32; N] = std::array::from_fn(|l| z[l] * WALL_NOISE_INV_M);
+        let mut n = [0.0; N];
         lattice_n(&qx, &qz, self.wall_seed, &mut n);
         n.map(|v| {
             self.wall_noise * (v.clamp(-WALL_NOISE_CLAMP, WALL_NOISE_CLAMP) + WALL_NOISE_CLAMP)
         })
     }
 
-    /// [`RiverJob::carve_pruned`] of `LANES` samples of one bin, whose pruned pieces are
+    /// [`RiverJob::carve_pruned`] of `N` samples of one bin, whose pruned pieces are
     /// `entries`, with the sills' levels and weights `sill` (weight 0: none): the lowest of the
     /// pieces' profiles, each applied where the scalar code applies it, at most
     /// [`CARVE_MAX_M`] below the height.
-    fn carve_lanes(&self, entries: &[(u32, f32)], x: &L, z: &L, h: &L, sill: (&L, &L)) -> L {
+    fn carve_lanes<const N: usize>(
+        &self,
+        entries: &[(u32, f32)],
+        x: &[f32; N],
+        z: &[f32; N],
+        h: &[f32; N],
+        sill: (&[f32; N], &[f32; N]),
+    ) -> [f32; N] {
         let wall = self.wall_lanes(x, z);
         let mut c = *h;
         for &(i, r2) in entries {
@@ -154,12 +183,12 @@ impl RiverJob {
             // reference it cannot prove unaliased with `c`.
             let p = &{ self.pieces[i as usize] };
             if p.spur_a == 0.0 && p.spur_b == 0.0 {
-                piece_lanes::<false>(p, r2, x, z, h, &wall, sill, &mut c);
+                piece_lanes::<false, N>(p, r2, x, z, h, &wall, sill, &mut c);
             } else {
-                piece_lanes::<true>(p, r2, x, z, h, &wall, sill, &mut c);
+                piece_lanes::<true, N>(p, r2, x, z, h, &wall, sill, &mut c);
             }
         }
-        for l in 0..LANES {
+        for l in 0..N {
             c[l] = c[l].max(h[l] - CARVE_MAX_M);
         }
         c
@@ -167,28 +196,28 @@ impl RiverJob {
 }
 
 /// Piece `p`'s profile ([`super::carve::profile`] with the walls' added width `wall`, the
-/// piece's spurs where `SPURS`, and the sills `sill`) applied to `LANES` samples of heights `h`
+/// piece's spurs where `SPURS`, and the sills `sill`) applied to `N` samples of heights `h`
 /// whose carve so far is `c`, where [`RiverJob::carve_pruned`] applies it (`r2`: the piece's
 /// pruned squared radius). Without spurs (both ends' values 0) the wall's step is the plain
 /// smoothstep, which the spur step with `s = 0` equals bit for bit; the two loops differ only
 /// in cost.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn piece_lanes<const SPURS: bool>(
+fn piece_lanes<const SPURS: bool, const N: usize>(
     p: &Piece,
     r2: f32,
-    x: &L,
-    z: &L,
-    h: &L,
-    wall: &L,
-    sill: (&L, &L),
-    c: &mut L,
+    x: &[f32; N],
+    z: &[f32; N],
+    h: &[f32; N],
+    wall: &[f32; N],
+    sill: (&[f32; N], &[f32; N]),
+    c: &mut [f32; N],
 ) {
     let (sill_level, sill_s) = sill;
     let reach2 = p.reach * p.reach;
     let channel2 = p.half_width * p.half_width * 1.001;
     let floor_w = p.wa.min(p.wb) - SKIP_MARGIN_M;
-    for l in 0..LANES {
+    for l in 0..N {
         let (t, d2) = foot(p, x[l], z[l]);
         let (hl, cl) = (h[l], c[l]);
         // `profile_at_foot`, both arms of each branch computed.
