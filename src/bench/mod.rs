@@ -4,8 +4,9 @@
 //! 35-sample blur kernel, 8 warped octaves) on one core and on all cores, and runs the fBm part
 //! against the `fastnoise-lite` crate's 8-octave Perlin fBm in the same process; then (issue 17)
 //! `earth-1` tiles of the default world at LOD 0 against fastnoise-lite's time for 4 225
-//! samples, and coarse LODs against LOD 0, cold (the process-wide caches emptied) and warm
-//! (the same tiles again). With `--json` each
+//! samples, and every coarse LOD (1 to 12) against LOD 0, cold (the process-wide caches emptied)
+//! and warm (the same tiles again), beside the same ratios for the default world of stored
+//! worlds before the coarse lattice. With `--json` each
 //! figure is one JSON object per line, units in the key names.
 //!
 //! `strata bench serve` (issue 3) is in [`serve`]; `strata bench strata` (issue 6, the layered
@@ -313,10 +314,18 @@ fn earth_tiles(args: &BenchArgs) -> anyhow::Result<()> {
     // tile builds the network blocks it reads, as the first tiles of a region do) and warm (the
     // same tiles again with those blocks cached, as a server streaming a region has them: tiles
     // of every LOD and their neighbours share the blocks). LOD 0 is the plains strip, timed the
-    // same way in the same round; five rounds, the medians of the rounds' ratios.
-    for lod in [3u32, 6, 9, 12] {
+    // same way in the same round; five rounds, the medians of the rounds' ratios. The peer is
+    // the default world of stored worlds before the coarse lattice (`coarse_lattice_cells`
+    // absent), its coarse tiles against its own LOD 0 in the same rounds.
+    let mut stored = WorldParams::default();
+    if let Some(e) = stored.earth.as_mut() {
+        e.coarse_lattice_cells = None;
+    }
+    let peer = WorldPlan::new(7, stored)?;
+    for lod in 1u32..=12 {
         let coarse = strip(lod, -8, -8);
         let (mut cold, mut warm, mut cold_ms, mut warm_ms) = (vec![], vec![], vec![], vec![]);
+        let (mut peer_cold, mut peer_warm) = (vec![], vec![]);
         for _ in 0..5 {
             let (c0, w0) = cold_warm_ms(&plan, &plains);
             let (c, w) = cold_warm_ms(&plan, &coarse);
@@ -324,16 +333,22 @@ fn earth_tiles(args: &BenchArgs) -> anyhow::Result<()> {
             warm.push(w / w0);
             cold_ms.push(c);
             warm_ms.push(w);
+            let (c0, w0) = cold_warm_ms(&peer, &plains);
+            let (c, w) = cold_warm_ms(&peer, &coarse);
+            peer_cold.push(c / c0);
+            peer_warm.push(w / w0);
         }
         let (cold, warm) = (median(cold), median(warm));
         let (cold_ms, warm_ms) = (median(cold_ms), median(warm_ms));
+        let (peer_cold, peer_warm) = (median(peer_cold), median(peer_warm));
         emit(
             args,
             json!({"bench":"tiles","figure":"earth_lod","lod":lod,"ms_per_tile_cold":cold_ms,
                    "ms_per_tile_warm":warm_ms,"ratio_to_lod0_cold":cold,"ratio_to_lod0_warm":warm,
+                   "stored_ratio_to_lod0_cold":peer_cold,"stored_ratio_to_lod0_warm":peer_warm,
                    "target_ratio":1.0,"meets_target":cold <= 1.0 && warm <= 1.0}),
             format!(
-                "  earth-1 LOD {lod}: {cold_ms:.3} ms per tile cold, {warm_ms:.3} warm; {cold:.2} × LOD 0 cold, {warm:.2} warm, medians of 5 alternating rounds (target ≤ 1)"
+                "  earth-1 LOD {lod:>2}: {cold_ms:.3} ms per tile cold, {warm_ms:.3} warm; {cold:.2} × LOD 0 cold, {warm:.2} warm (stored worlds without the coarse lattice: {peer_cold:.2}, {peer_warm:.2}), medians of 5 alternating rounds (target ≤ 1)"
             ),
         );
     }

@@ -1153,9 +1153,13 @@ mod tests {
         // Digests of the bake before the cached lattice cells, the shared pattern values and the
         // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
-        // carve later valleys, which move these tiles' heights, the bake's input; and
-        // `ptex_blend: 1`, as every world stored before `2` bakes).
+        // carve later valleys, which move these tiles' heights, the bake's input; no coarse
+        // lattice, which moves them too; and `ptex_blend: 1`, as every world stored before `2`
+        // bakes).
         let mut params = WorldParams::default();
+        if let Some(e) = params.earth.as_mut() {
+            e.coarse_lattice_cells = None;
+        }
         if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
             rivers.valleys = 3;
         }
