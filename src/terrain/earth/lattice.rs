@@ -54,7 +54,7 @@
 //! **Cost.** A LOD-0 job of 67² samples reads 7² nodes: the prefix (13 of the default world's 17
 //! LOD-0 layers) is evaluated 49 times instead of 4 489, the macro fields' eighteen octaves at
 //! the 4² or 5² coarse nodes around them, and each sample pays the interpolation (24
-//! multiply-adds after the rows) and the layers after the prefix. A LOD-6 job reads 19² coarse
+//! multiply-adds after the rows) and the layers after the prefix. A LOD-6 job reads 21² coarse
 //! nodes instead of evaluating the macro fields at its 67² samples. The WGSL twin
 //! (`shaders/earth.wgsl`) interpolates the nodes the host computes with [`nodes`], as it reads
 //! the climate's weights from the host.
