@@ -16,7 +16,7 @@ mod common;
 
 use strata::ptex::face::TileFacePlan;
 use strata::ptex::{bake_interior, FaceSet, MaterialSet, Pages, TILE_FACES, TILE_FACE_CELLS};
-use strata::terrain::earth::snow_shift;
+use strata::terrain::earth::{snow_shift, tile_sea_snow_lines};
 use strata::terrain::tile::{synthesize, Tile, TileKey};
 use strata::terrain::world::{material, WorldParams};
 use strata::terrain::{WorldPlan, TILE_VERTS};
@@ -46,6 +46,9 @@ fn face_set(plan: &WorldPlan, tile: &Tile, mats: &MaterialSet) -> FaceSet {
 fn snow_truth(plan: &WorldPlan, tile: &Tile) -> Vec<Option<bool>> {
     let earth = plan.earth.as_ref().expect("an earth world");
     let shift = snow_shift(earth, tile.key, tile.spacing_m, &tile.normals);
+    // New worlds read the sea-level climate's snow line (`snow_lines: 2`) instead of the
+    // biome-weighted one.
+    let sea = tile_sea_snow_lines(earth, tile.key, tile.spacing_m);
     let rule = plan.texture.texel_rule();
     let blend = rule.blend_m;
     let k = tile.biome_count;
@@ -59,7 +62,11 @@ fn snow_truth(plan: &WorldPlan, tile: &Tile) -> Vec<Option<bool>> {
     // At each vertex: height above the sea, height above the snow line, ice share, normal.
     let at = |v: usize| -> ([f32; 3], [f32; 3]) {
         let w = &tile.weights[v * k..(v + 1) * k];
-        let line: f32 = w.iter().zip(&lines).map(|(w, l)| w * l).sum::<f32>() + shift[v];
+        let own = match sea.get(v) {
+            Some(&line) => line,
+            None => w.iter().zip(&lines).map(|(w, l)| w * l).sum::<f32>(),
+        };
+        let line = own + shift[v];
         let ice: f32 = w
             .iter()
             .zip(&ice)

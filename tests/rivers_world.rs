@@ -168,10 +168,11 @@ async fn a_world_stored_with_the_fifth_valleys_serves_the_same_tile_bytes() {
     );
 }
 
-/// A world stored with the default of new worlds before the coarse lattice (`valleys: 6`,
-/// `lattice_cells: 16` and no `coarse_lattice_cells`, `tests/fixtures/valleys6-world/`) keeps its
-/// bytes, where a bare seed, whose LODs 0–7 interpolate the macro fields and the two longest
-/// layers from a 256 m lattice, gives its tiles of those LODs other bytes.
+/// A world stored with the default of new worlds before the coarse lattice and the sea-level
+/// snow lines (`valleys: 6`, `lattice_cells: 16`, no `coarse_lattice_cells` and no `snow_lines`,
+/// `tests/fixtures/valleys6-world/`) keeps its bytes, where a bare seed, whose LODs 0–7
+/// interpolate the macro fields and the two longest layers from a 256 m lattice and whose snow
+/// starts at the sea-level climate's line, gives other bytes.
 #[tokio::test]
 async fn a_world_stored_with_the_sixth_valleys_and_no_coarse_lattice_serves_the_same_tile_bytes() {
     const WORLD: &str = "960fa06a7301e7fd03952c53";
@@ -184,10 +185,11 @@ async fn a_world_stored_with_the_sixth_valleys_and_no_coarse_lattice_serves_the_
         "{earth}"
     );
     assert_eq!(earth.get("coarse_lattice_cells"), None, "{earth}");
+    assert_eq!(earth.get("snow_lines"), None, "{earth}");
     let differ = bare_seed_differs(&server, FIXTURE).await;
     assert!(
         differ > 0,
-        "a bare seed reads the coarse lattice, which no fixture tile shows"
+        "a bare seed reads the coarse lattice and the sea-level snow lines, which no fixture tile shows"
     );
 }
 

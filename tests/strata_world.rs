@@ -461,7 +461,8 @@ fn chunks_sharing_a_vertex_give_it_the_same_bits_near_caves_and_on_the_ground() 
 }
 
 /// The chunk bytes (`.bin`) of a world stored before `chunk_geology` (the default world of then,
-/// `d29b3c9`: `valleys: 3`, `lakes: 2`, no `chunk_geology` and no `coarse_lattice_cells`) over the chunks of the test above,
+/// `d29b3c9`: `valleys: 3`, `lakes: 2`, no `chunk_geology`, `coarse_lattice_cells` or
+/// `snow_lines`) over the chunks of the test above,
 /// pinned from the code before `chunk_geology: 2` existed: the seam fix leaves stored worlds'
 /// chunks as they were.
 const STORED_CHUNKS_BLAKE3: &str =
@@ -474,10 +475,9 @@ fn chunks_of_a_world_stored_before_chunk_geology_keep_their_bytes() {
     // The settings of new worlds then that today's default may have moved on from.
     doc["earth"]["rivers"]["valleys"] = json!(3);
     doc["earth"]["rivers"]["lakes"] = json!(2);
-    doc["earth"]
-        .as_object_mut()
-        .expect("earth settings")
-        .remove("coarse_lattice_cells");
+    let earth = doc["earth"].as_object_mut().expect("earth settings");
+    earth.remove("coarse_lattice_cells");
+    earth.remove("snow_lines");
     let fields = doc.as_object_mut().expect("an object");
     fields
         .remove("chunk_geology")

@@ -421,7 +421,8 @@ impl EarthKernels {
         let earth = earth_plan(plan)?;
         let spacing = plan.lods[job.lod as usize].spacing_m;
         let n = job.w * job.h;
-        let weights = climate::weights(earth, spacing, job);
+        let (weights, window) = climate::weights_and_macro(earth, spacing, job);
+        let snow_line = climate::sea_snow_lines(spacing, job, &window);
         let relief: Vec<[f32; 2]> = lattice::relief_of(earth, &weights)
             .into_iter()
             .map(|(e, r)| [e, r])
@@ -569,6 +570,7 @@ impl EarthKernels {
             h: job.h,
             heights,
             weights,
+            snow_line,
         })
     }
 }

@@ -306,6 +306,7 @@ impl TileKernels {
             h: job.h,
             heights: float(&data[nk..nk + n]),
             weights: float(&data[..nk]),
+            snow_line: Vec::new(),
         };
         let ids = want_ids.then(|| data[nk + n..].iter().map(|&b| b as u8).collect());
         Ok((field, ids))

@@ -75,6 +75,18 @@ impl TexturePlan {
     }
 }
 
+impl TexturePlan {
+    /// The biome-weighted snow line of a vertex with biome weights `weights`, metres (before
+    /// its shift).
+    pub fn snow_line_of(&self, weights: &[f32]) -> f32 {
+        let mut line = 0.0f32;
+        for (l, w) in self.snow_line_m.iter().zip(weights) {
+            line += w * l;
+        }
+        line
+    }
+}
+
 /// Material weights, indexed like [`MATERIALS`].
 pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len()] {
     let mut out = [0.0f32; MATERIALS.len()];

@@ -44,6 +44,9 @@ pub struct Field {
     pub heights: Vec<f32>,
     /// Biome weights, `weights[v * k + b]`.
     pub weights: Vec<f32>,
+    /// The sea-level climate's snow line at each sample, metres, row-major (`earth-1` worlds
+    /// with `snow_lines: 2`, [`super::earth::climate::sea_snow_lines`]); empty otherwise.
+    pub snow_line: Vec<f32>,
 }
 
 /// One field job: the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of LOD `lod`.
@@ -157,6 +160,7 @@ pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
             h,
             heights,
             weights,
+            snow_line: Vec::new(),
         };
     }
     let mut idx = Vec::with_capacity(w * h);
@@ -185,6 +189,7 @@ pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
         h,
         heights,
         weights,
+        snow_line: Vec::new(),
     }
 }
 
@@ -272,10 +277,16 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         }
     }
     let mut materials = vec![0u8; TILE_VERTEX_COUNT];
-    let snow_shift = match &plan.earth {
+    let mut snow_shift = match &plan.earth {
         Some(e) => super::earth::snow_shift(e, key, spacing, &normals),
         None => Vec::new(),
     };
+    if !f.snow_line.is_empty() {
+        let sea: Vec<f32> = (0..TILE_VERTEX_COUNT)
+            .map(|v| f.snow_line[(v / TILE_VERTS + 1) * n + v % TILE_VERTS + 1])
+            .collect();
+        lift_to_sea_snow_lines(&plan.texture, &weights, k, &sea, &mut snow_shift);
+    }
     proto_texture_batch(
         &plan.texture,
         &heights,
@@ -323,11 +334,15 @@ pub fn surface_inputs(plan: &WorldPlan, tile: &Tile) -> Option<Vec<[f32; SURFACE
     if plan.params.texturing.ptex_blend != 2 {
         return None;
     }
-    let shift = match &plan.earth {
+    let k = tile.biome_count;
+    let mut shift = match &plan.earth {
         Some(e) => super::earth::snow_shift(e, tile.key, tile.spacing_m, &tile.normals),
         None => Vec::new(),
     };
-    let k = tile.biome_count;
+    if let Some(e) = plan.earth.as_ref().filter(|e| e.climate.sea_snow.is_some()) {
+        let sea = super::earth::tile_sea_snow_lines(e, tile.key, tile.spacing_m);
+        lift_to_sea_snow_lines(&plan.texture, &tile.weights, k, &sea, &mut shift);
+    }
     Some(
         tile.heights
             .iter()
@@ -338,6 +353,23 @@ pub fn surface_inputs(plan: &WorldPlan, tile: &Tile) -> Option<Vec<[f32; SURFACE
             })
             .collect(),
     )
+}
+
+/// Adds to each vertex's snow-line shift `shift` (its aspect and noise) the difference between
+/// the sea-level climate's snow line `sea[v]` and the line its biome weights `weights` (`k` a
+/// vertex) give, so the weighting function's line, `Σ_b w_b · line_b + shift`, becomes the
+/// sea-level line plus the shift (`EarthParams::snow_lines: 2`). The same arithmetic for a tile
+/// and its Ptex inputs, so both get the same bits.
+fn lift_to_sea_snow_lines(
+    texture: &super::texture::TexturePlan,
+    weights: &[f32],
+    k: usize,
+    sea: &[f32],
+    shift: &mut [f32],
+) {
+    for (v, (s, line)) in shift.iter_mut().zip(sea).enumerate() {
+        *s += line - texture.snow_line_of(&weights[v * k..(v + 1) * k]);
+    }
 }
 
 /// Skirt depth: deep enough to hide the largest crack against a neighbour one LOD coarser, which

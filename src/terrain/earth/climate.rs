@@ -14,6 +14,13 @@
 //! and offsets are computed in `f64` from the vertex's lattice index), and the weights change
 //! smoothly over kilometres, so no LOD sees a biome step that another does not.
 //!
+//! **Snow lines** (worlds with `EarthParams::snow_lines: 2`). The cooling moves a mountain's
+//! upper slopes into colder biomes, whose `snow_line_m` was meant for the lowlands of their own
+//! latitudes (the tundra's 600 m); read there, snow would reach as far down every range. So each
+//! node also keeps the snow line of its climate at sea level ([`sea_snow_lines`]): its blurred
+//! weights' mean biome index plus the `K·e / lapse_m` biomes the cooling took off, read in the
+//! biomes' snow lines between their centres; a vertex takes the bilinear mix of its four nodes'.
+//!
 //! **Shared work.** At the LOD whose vertex spacing is the node spacing (LOD 12 at a 1 m cell)
 //! every vertex is a node: the weights are the nodes' own (no interpolation), and the nodes'
 //! macro fields ([`NodeMacro`], the bits the height function computes at the same positions)
@@ -41,6 +48,9 @@ pub struct ClimatePlan {
     pub kernel: Vec<f32>,
     /// Number of biomes `K`.
     pub count: usize,
+    /// The biomes' snow lines (metres, clamped to ±10⁶) where the world reads the sea-level
+    /// climate's snow line (`EarthParams::snow_lines: 2`, [`sea_snow_lines`]); `None` otherwise.
+    pub sea_snow: Option<Vec<f32>>,
 }
 
 impl ClimatePlan {
@@ -51,6 +61,7 @@ impl ClimatePlan {
         latitude_offset_m: f32,
         lapse_m: f32,
         count: usize,
+        sea_snow: Option<Vec<f32>>,
     ) -> Self {
         let r = (blur_radius_m as f64 / NODE_SPACING_M).round() as usize;
         let sigma = (blur_radius_m as f64 / 3.0 / NODE_SPACING_M).max(1e-3) as f32;
@@ -60,6 +71,7 @@ impl ClimatePlan {
             lapse_m,
             kernel: kernel(r, sigma),
             count,
+            sea_snow,
         }
     }
 }
@@ -130,6 +142,9 @@ pub struct NodeWindow {
     pub weights: Vec<f32>,
     /// The nodes' macro fields, the blur margin included.
     pub node_macro: NodeMacro,
+    /// The sea-level climate's snow line at each node, metres, row-major like the weights
+    /// ([`sea_snow_lines`]); empty unless the world reads it.
+    pub sea_line: Vec<f32>,
 }
 
 type Window = Arc<NodeWindow>;
@@ -148,7 +163,8 @@ static WINDOWS: std::sync::LazyLock<moka::sync::Cache<WindowKey, Window>> =
             .max_capacity(WINDOWS_BYTES)
             .weigher(|_, w: &Window| {
                 let m = &w.node_macro;
-                let floats = w.weights.len() + m.elev.len() + m.amp.len() + m.ridge.len();
+                let floats =
+                    w.weights.len() + m.elev.len() + m.amp.len() + m.ridge.len() + w.sea_line.len();
                 (64 + 4 * floats).min(u32::MAX as usize) as u32
             })
             .build()
@@ -189,9 +205,14 @@ pub fn weights_and_macro(
         let node_macro = node_biomes(plan, &cols, &rows, &mut ids);
         let mut weights = vec![0.0f32; nw * nh * k];
         blur_weights(&ids, bw, bh, &plan.climate.kernel, k, &mut weights);
+        let sea_line = match &plan.climate.sea_snow {
+            Some(lines) => node_sea_lines(plan, lines, &weights, &node_macro, (nw, nh, r)),
+            None => Vec::new(),
+        };
         Arc::new(NodeWindow {
             weights,
             node_macro,
+            sea_line,
         })
     };
     // A window of at most 3 × 3 nodes (every tile up to LOD 6, whose samples lie in one or two
@@ -281,4 +302,85 @@ pub fn weights_and_macro(
         }
     }
     (out, window)
+}
+
+/// The sea-level climate's snow line at each node of a window (`EarthParams::snow_lines: 2`),
+/// metres: the node's climate before the altitude's cooling, as a fractional biome index, read
+/// in the biomes' snow lines `lines`.
+///
+/// The blurred weights give the node's climate as a mean biome index `m = Σ_b (b + ½)·w_b`; the
+/// cooling moved it down by `K·e / lapse_m` biomes, `e ≥ 0` the node's large-scale elevation (the
+/// one its biome was read at), so the sea-level index is `m + K·e / lapse_m`. Its snow line is
+/// the piecewise-linear interpolation of `lines` between the biomes' centres (the first's below
+/// the first centre, the last's above the last). `dims` = `(nw, nh, r)`: the window's nodes and
+/// the blur margin of `node_macro`. A function of the node's blurred weights and macro fields,
+/// so of its lattice index alone: every window gives a node the same bits.
+fn node_sea_lines(
+    plan: &EarthPlan,
+    lines: &[f32],
+    weights: &[f32],
+    node_macro: &NodeMacro,
+    (nw, nh, r): (usize, usize, usize),
+) -> Vec<f32> {
+    let c = &plan.climate;
+    let k = c.count;
+    let mut out = Vec::with_capacity(nw * nh);
+    for j in 0..nh {
+        for i in 0..nw {
+            let wv = &weights[(j * nw + i) * k..(j * nw + i + 1) * k];
+            let mut m = 0.0f32;
+            for (b, w) in wv.iter().enumerate() {
+                m += (b as f32 + 0.5) * w;
+            }
+            let n = (j + r) * node_macro.w + i + r;
+            let e =
+                super::macro_elevation(node_macro.elev[n], node_macro.amp[n], node_macro.ridge[n]);
+            let sea = m + k as f32 * e.max(0.0) / c.lapse_m;
+            out.push(snow_line_at_index(lines, sea));
+        }
+    }
+    out
+}
+
+/// The snow line at fractional biome index `x` (biome `b`'s centre at `b + ½`): linear between
+/// neighbouring centres, the end biomes' lines beyond the end centres.
+pub fn snow_line_at_index(lines: &[f32], x: f32) -> f32 {
+    let last = lines.len().saturating_sub(1);
+    let t = (x - 0.5).clamp(0.0, last as f32);
+    let b = (t.floor() as usize).min(last.saturating_sub(1));
+    if last == 0 {
+        return lines.first().copied().unwrap_or(0.0);
+    }
+    let f = t - b as f32;
+    lines[b] + (lines[b + 1] - lines[b]) * f
+}
+
+/// The sea-level climate's snow line (metres) at each sample of `job`, bilinear between the
+/// nodes of `window` (the job's node window from [`weights_and_macro`]) with the weights' node
+/// offsets; empty when the world does not read it. A function of the sample's lattice index.
+pub fn sea_snow_lines(spacing_m: f32, job: FieldJob, window: &NodeWindow) -> Vec<f32> {
+    if window.sea_line.is_empty() {
+        return Vec::new();
+    }
+    let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
+    let (i0, j0) = (node(job.gx0).floor() as i64, node(job.gz0).floor() as i64);
+    let i1 = node(job.gx0 + job.w as i64 - 1).floor() as i64 + 1;
+    let nw = (i1 - i0 + 1) as usize;
+    let at = |g: i64, g0: i64| {
+        let f = node(g);
+        let n = f.floor();
+        ((n as i64 - g0) as usize, (f - n) as f32)
+    };
+    let cols: Vec<(usize, f32)> = (0..job.w as i64).map(|i| at(job.gx0 + i, i0)).collect();
+    let mut out = Vec::with_capacity(job.w * job.h);
+    for j in 0..job.h as i64 {
+        let (rj, tz) = at(job.gz0 + j, j0);
+        for &(ri, tx) in &cols {
+            let v = |di: usize, dj: usize| window.sea_line[(rj + dj) * nw + ri + di];
+            let top = v(0, 0) + (v(1, 0) - v(0, 0)) * tx;
+            let bottom = v(0, 1) + (v(1, 1) - v(0, 1)) * tx;
+            out.push(top + (bottom - top) * tz);
+        }
+    }
+    out
 }

@@ -364,6 +364,13 @@ impl EarthPlan {
             e.latitude_offset_m,
             e.lapse_m,
             params.biomes.len(),
+            (e.snow_lines == 2).then(|| {
+                params
+                    .biomes
+                    .iter()
+                    .map(|b| b.snow_line_m.clamp(-1e6, 1e6))
+                    .collect()
+            }),
         );
         let mean_erosion = erosion.iter().sum::<f32>() / erosion.len().max(1) as f32;
         // The node heights read the whole world settings (edits are not in them), so worlds and
@@ -425,6 +432,21 @@ pub(crate) fn fingerprint(domain: &[u8], seed: u64, world: &[u8]) -> u64 {
 pub fn clear_caches() {
     rivers::clear_caches();
     climate::clear_cache();
+}
+
+/// The sea-level climate's snow line (metres) at each vertex of tile `key` (vertex order), as
+/// [`field`] gives it to the tile's samples ([`climate::sea_snow_lines`]); empty when the world
+/// does not read it. The Ptex inputs of a tile read it here, from the tile alone.
+pub fn tile_sea_snow_lines(
+    plan: &EarthPlan,
+    key: super::tile::TileKey,
+    spacing_m: f32,
+) -> Vec<f32> {
+    let n = super::plan::TILE_VERTS;
+    let q = super::plan::TILE_QUADS;
+    let job = FieldJob::new(key.lod, key.x * q, key.z * q, n, n);
+    let (_, window) = climate::weights_and_macro(plan, spacing_m, job);
+    climate::sea_snow_lines(spacing_m, job, &window)
 }
 
 /// How far north-facing slopes pull the snow line down (and south-facing ones push it up), per
@@ -525,6 +547,7 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         h,
     } = job;
     let (weights, window) = climate::weights_and_macro(plan, spacing_m, job);
+    let snow_line = climate::sea_snow_lines(spacing_m, job, &window);
     let node_macro = &window.node_macro;
     let relief = lattice::relief_of(plan, &weights);
     let n = w * h;
@@ -592,6 +615,7 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         h,
         heights,
         weights,
+        snow_line,
     }
 }
 

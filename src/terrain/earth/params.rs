@@ -75,6 +75,18 @@ pub struct EarthParams {
     /// bytes; new worlds: 256 (256 m at the default 1 m cell).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub coarse_lattice_cells: Option<u32>,
+    /// Whose snow lines a vertex reads, 1 or 2. `1`: the biomes' `snow_line_m` weighted by the
+    /// vertex's biome weights, which the climate has made colder with altitude, so a mountain's
+    /// upper slopes take the snow line of a colder biome (the tundra's 600 m on a range of the
+    /// temperate latitudes) and snow reaches far down every range (worlds stored before `2`
+    /// existed have no `snow_lines` and keep it, and their bytes). `2` (new worlds): the snow
+    /// line of the climate at sea level, the altitude's cooling taken back ([`super::climate`]),
+    /// so a biome's `snow_line_m` is the height where its own climate turns to snow.
+    #[serde(
+        default = "EarthParams::first_snow_lines",
+        skip_serializing_if = "EarthParams::is_first_snow_lines"
+    )]
+    pub snow_lines: u32,
     /// Latitude of the origin as a distance from the pole, metres: the Voronoi map of
     /// Choroś & Topolski is read at `z + latitude_offset_m`, so the origin sits this far towards
     /// the equator.
@@ -226,6 +238,7 @@ impl Default for EarthParams {
             gullies: 2,
             lattice_cells: Some(16),
             coarse_lattice_cells: Some(256),
+            snow_lines: 2,
             latitude_offset_m: 1_024_000.0,
             lapse_m: 10_000.0,
             rivers: Some(RiverParams::default()),
@@ -272,6 +285,14 @@ impl EarthParams {
         1
     }
 
+    fn first_snow_lines() -> u32 {
+        1
+    }
+
+    fn is_first_snow_lines(v: &u32) -> bool {
+        *v == 1
+    }
+
     fn is_first_gullies(v: &u32) -> bool {
         *v == 1
     }
@@ -280,6 +301,11 @@ impl EarthParams {
     pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
         let m = "must be in";
         check((1..=2).contains(&self.gullies), "gullies", "must be 1 or 2")?;
+        check(
+            (1..=2).contains(&self.snow_lines),
+            "snow_lines",
+            "must be 1 or 2",
+        )?;
         check(
             within(self.continent_scale_m, 10_000.0, 1.0e8),
             "continent_scale_m",
