@@ -141,17 +141,19 @@ fn snow_lies_lower_on_north_facing_slopes() {
             let t = synthesize(&p, TileKey { lod: 6, x, z });
             let ny: Vec<f32> = t.normals.iter().map(|n| n[1]).collect();
             let shift = earth::snow_shift(e, t.key, t.spacing_m, &t.normals);
-            // New worlds move every vertex's line to the sea-level climate's
-            // (`snow_lines: 2`): the plain texturing keeps that move, without aspect or noise.
-            let k = t.biome_count;
+            // New worlds read the sea-level climate's line (`snow_lines: 2`): the plain
+            // texturing reads it too, without aspect or noise.
             let sea = earth::tile_sea_snow_lines(e, t.key, t.spacing_m);
-            let lift: Vec<f32> = sea
-                .iter()
-                .enumerate()
-                .map(|(v, line)| line - p.texture.snow_line_of(&t.weights[v * k..(v + 1) * k]))
-                .collect();
             let mut plain = vec![0u8; t.heights.len()];
-            proto_texture_batch(&p.texture, &t.heights, &ny, &t.weights, &lift, &mut plain);
+            proto_texture_batch(
+                &p.texture,
+                &t.heights,
+                &ny,
+                &t.weights,
+                &sea,
+                &[],
+                &mut plain,
+            );
             for v in 0..t.heights.len() {
                 let (was, is) = (plain[v] == material::SNOW, t.materials[v] == material::SNOW);
                 let nz = t.normals[v][2];

@@ -75,18 +75,6 @@ impl TexturePlan {
     }
 }
 
-impl TexturePlan {
-    /// The biome-weighted snow line of a vertex with biome weights `weights`, metres (before
-    /// its shift).
-    pub fn snow_line_of(&self, weights: &[f32]) -> f32 {
-        let mut line = 0.0f32;
-        for (l, w) in self.snow_line_m.iter().zip(weights) {
-            line += w * l;
-        }
-        line
-    }
-}
-
 /// Material weights, indexed like [`MATERIALS`].
 pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len()] {
     let mut out = [0.0f32; MATERIALS.len()];
@@ -118,7 +106,8 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
 pub const SURFACE_INPUTS: usize = 2 + MATERIALS.len();
 
 /// The inputs of [`texel_weights`] at a vertex: its height above the sea, its height above its
-/// snow line (the biome-weighted line moved by `snow_shift_m`), both metres, then the share of
+/// snow line (`snow_line_m` where the world gives one, else the biome-weighted line; moved by
+/// `snow_shift_m`), both metres, then the share of
 /// each material in [`MATERIALS`] order among the ground materials of the vertex's biomes (the
 /// weights of the biomes whose ground it is, summed). Every input is what the weighting
 /// function reads before its smooth steps, so a texel between vertices can take their bilinear
@@ -127,6 +116,7 @@ pub fn surface_inputs(
     plan: &TexturePlan,
     height_m: f32,
     weights: &[f32],
+    snow_line_m: Option<f32>,
     snow_shift_m: f32,
 ) -> [f32; SURFACE_INPUTS] {
     let mut out = [0.0f32; SURFACE_INPUTS];
@@ -135,6 +125,7 @@ pub fn surface_inputs(
         line += w * l;
         out[2 + *g as usize] += w;
     }
+    let line = snow_line_m.unwrap_or(line);
     out[0] = height_m - plan.sea_level_m;
     out[1] = height_m - (line + snow_shift_m);
     out
@@ -198,8 +189,10 @@ pub fn texel_weights(
 const BLOCK: usize = 64;
 
 /// Dominant materials of many vertices: `out[v] = proto_texture(plan, vertex v)`. `weights` is
-/// vertex-major with `k` biomes; `snow_shift` (metres per vertex, or empty for none) moves each
-/// vertex's snow line, as `earth-1` does by aspect and noise.
+/// vertex-major with `k` biomes; `snow_line` (metres per vertex, or empty) replaces the
+/// biome-weighted snow line, as `earth-1` worlds with `snow_lines: 2` give the sea-level
+/// climate's; `snow_shift` (metres per vertex, or empty for none) moves each vertex's snow line,
+/// as `earth-1` does by aspect and noise.
 ///
 /// Works in blocks of [`BLOCK`] vertices: the biome-weighted snow line, the four smooth steps and
 /// `rest` as fixed-length rows, then one compare-and-select row per material in id order, so every
@@ -211,6 +204,7 @@ pub fn proto_texture_batch(
     heights: &[f32],
     normal_y: &[f32],
     weights: &[f32],
+    snow_line: &[f32],
     snow_shift: &[f32],
     out: &mut [u8],
 ) {
@@ -220,6 +214,7 @@ pub fn proto_texture_batch(
         normal_y.len() == n
             && out.len() == n
             && weights.len() == n * k
+            && (snow_line.is_empty() || snow_line.len() == n)
             && (snow_shift.is_empty() || snow_shift.len() == n)
             && k <= MAX_BIOMES,
         "proto_texture_batch: sizes"
@@ -261,6 +256,9 @@ pub fn proto_texture_batch(
                     }
                 }
             }
+        }
+        if !snow_line.is_empty() {
+            line[..len].copy_from_slice(&snow_line[blk * BLOCK..blk * BLOCK + len]);
         }
         if !snow_shift.is_empty() {
             let shift = &snow_shift[blk * BLOCK..blk * BLOCK + len];
@@ -380,7 +378,7 @@ mod tests {
         case: &str,
     ) -> Vec<u8> {
         let mut out = vec![0u8; heights.len()];
-        proto_texture_batch(p, heights, ny, weights, &[], &mut out);
+        proto_texture_batch(p, heights, ny, weights, &[], &[], &mut out);
         for v in 0..heights.len() {
             let s = Surface {
                 height_m: heights[v],

@@ -277,21 +277,25 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         }
     }
     let mut materials = vec![0u8; TILE_VERTEX_COUNT];
-    let mut snow_shift = match &plan.earth {
+    let snow_shift = match &plan.earth {
         Some(e) => super::earth::snow_shift(e, key, spacing, &normals),
         None => Vec::new(),
     };
+    // New `earth-1` worlds' sea-level snow lines, cropped to the tile like the weights.
+    let mut snow_line = Vec::new();
     if !f.snow_line.is_empty() {
-        let sea: Vec<f32> = (0..TILE_VERTEX_COUNT)
-            .map(|v| f.snow_line[(v / TILE_VERTS + 1) * n + v % TILE_VERTS + 1])
-            .collect();
-        lift_to_sea_snow_lines(&plan.texture, &weights, k, &sea, &mut snow_shift);
+        snow_line.reserve(TILE_VERTEX_COUNT);
+        for j in 0..TILE_VERTS {
+            let row = (j + 1) * n + 1;
+            snow_line.extend_from_slice(&f.snow_line[row..row + TILE_VERTS]);
+        }
     }
     proto_texture_batch(
         &plan.texture,
         &heights,
         &normal_y,
         &weights,
+        &snow_line,
         &snow_shift,
         &mut materials,
     );
@@ -335,41 +339,29 @@ pub fn surface_inputs(plan: &WorldPlan, tile: &Tile) -> Option<Vec<[f32; SURFACE
         return None;
     }
     let k = tile.biome_count;
-    let mut shift = match &plan.earth {
-        Some(e) => super::earth::snow_shift(e, tile.key, tile.spacing_m, &tile.normals),
-        None => Vec::new(),
+    let (shift, sea) = match &plan.earth {
+        Some(e) => (
+            super::earth::snow_shift(e, tile.key, tile.spacing_m, &tile.normals),
+            super::earth::tile_sea_snow_lines(e, tile.key, tile.spacing_m),
+        ),
+        None => (Vec::new(), Vec::new()),
     };
-    if let Some(e) = plan.earth.as_ref().filter(|e| e.climate.sea_snow.is_some()) {
-        let sea = super::earth::tile_sea_snow_lines(e, tile.key, tile.spacing_m);
-        lift_to_sea_snow_lines(&plan.texture, &tile.weights, k, &sea, &mut shift);
-    }
     Some(
         tile.heights
             .iter()
             .enumerate()
             .map(|(v, &h)| {
                 let w = &tile.weights[v * k..(v + 1) * k];
-                surface_inputs_at(&plan.texture, h, w, shift.get(v).copied().unwrap_or(0.0))
+                surface_inputs_at(
+                    &plan.texture,
+                    h,
+                    w,
+                    sea.get(v).copied(),
+                    shift.get(v).copied().unwrap_or(0.0),
+                )
             })
             .collect(),
     )
-}
-
-/// Adds to each vertex's snow-line shift `shift` (its aspect and noise) the difference between
-/// the sea-level climate's snow line `sea[v]` and the line its biome weights `weights` (`k` a
-/// vertex) give, so the weighting function's line, `Σ_b w_b · line_b + shift`, becomes the
-/// sea-level line plus the shift (`EarthParams::snow_lines: 2`). The same arithmetic for a tile
-/// and its Ptex inputs, so both get the same bits.
-fn lift_to_sea_snow_lines(
-    texture: &super::texture::TexturePlan,
-    weights: &[f32],
-    k: usize,
-    sea: &[f32],
-    shift: &mut [f32],
-) {
-    for (v, (s, line)) in shift.iter_mut().zip(sea).enumerate() {
-        *s += line - texture.snow_line_of(&weights[v * k..(v + 1) * k]);
-    }
 }
 
 /// Skirt depth: deep enough to hide the largest crack against a neighbour one LOD coarser, which

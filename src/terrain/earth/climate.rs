@@ -18,7 +18,7 @@
 //! upper slopes into colder biomes, whose `snow_line_m` was meant for the lowlands of their own
 //! latitudes (the tundra's 600 m); read there, snow would reach as far down every range. So each
 //! node also keeps the snow line of its climate at sea level ([`sea_snow_lines`]): its blurred
-//! weights' mean biome index plus the `K·e / lapse_m` biomes the cooling took off, read in the
+//! weights' mean biome index plus the `e · K / lapse_m` biomes the cooling took off, read in the
 //! biomes' snow lines between their centres; a vertex takes the bilinear mix of its four nodes'.
 //!
 //! **Shared work.** At the LOD whose vertex spacing is the node spacing (LOD 12 at a 1 m cell)
@@ -309,8 +309,8 @@ pub fn weights_and_macro(
 /// in the biomes' snow lines `lines`.
 ///
 /// The blurred weights give the node's climate as a mean biome index `m = Σ_b (b + ½)·w_b`; the
-/// cooling moved it down by `K·e / lapse_m` biomes, `e ≥ 0` the node's large-scale elevation (the
-/// one its biome was read at), so the sea-level index is `m + K·e / lapse_m`. Its snow line is
+/// cooling moved it down by `e · K / lapse_m` biomes, `e ≥ 0` the node's large-scale elevation
+/// (the one its biome was read at), so the sea-level index is `m + e · K / lapse_m`. Its snow line is
 /// the piecewise-linear interpolation of `lines` between the biomes' centres (the first's below
 /// the first centre, the last's above the last). `dims` = `(nw, nh, r)`: the window's nodes and
 /// the blur margin of `node_macro`. A function of the node's blurred weights and macro fields,
@@ -324,20 +324,29 @@ fn node_sea_lines(
 ) -> Vec<f32> {
     let c = &plan.climate;
     let k = c.count;
-    let mut out = Vec::with_capacity(nw * nh);
-    for j in 0..nh {
-        for i in 0..nw {
-            let wv = &weights[(j * nw + i) * k..(j * nw + i + 1) * k];
+    // Biomes per metre of elevation, and each biome's centre.
+    let per_m = k as f32 / c.lapse_m;
+    let centres: Vec<f32> = (0..k).map(|b| b as f32 + 0.5).collect();
+    let mut out = vec![0.0f32; nw * nh];
+    for (j, row) in out.chunks_exact_mut(nw).enumerate() {
+        let wrow = &weights[j * nw * k..(j + 1) * nw * k];
+        let n0 = (j + r) * node_macro.w + r;
+        let (elev, amp, ridge) = (
+            &node_macro.elev[n0..n0 + nw],
+            &node_macro.amp[n0..n0 + nw],
+            &node_macro.ridge[n0..n0 + nw],
+        );
+        for (i, (o, wv)) in row.iter_mut().zip(wrow.chunks_exact(k)).enumerate() {
             let mut m = 0.0f32;
-            for (b, w) in wv.iter().enumerate() {
-                m += (b as f32 + 0.5) * w;
+            for (w, centre) in wv.iter().zip(&centres) {
+                m += centre * w;
             }
-            let n = (j + r) * node_macro.w + i + r;
-            let e =
-                super::macro_elevation(node_macro.elev[n], node_macro.amp[n], node_macro.ridge[n]);
-            let sea = m + k as f32 * e.max(0.0) / c.lapse_m;
-            out.push(snow_line_at_index(lines, sea));
+            let e = super::macro_elevation(elev[i], amp[i], ridge[i]);
+            *o = m + e.max(0.0) * per_m;
         }
+    }
+    for x in &mut out {
+        *x = snow_line_at_index(lines, *x);
     }
     out
 }
@@ -373,14 +382,20 @@ pub fn sea_snow_lines(spacing_m: f32, job: FieldJob, window: &NodeWindow) -> Vec
     };
     let cols: Vec<(usize, f32)> = (0..job.w as i64).map(|i| at(job.gx0 + i, i0)).collect();
     let mut out = Vec::with_capacity(job.w * job.h);
+    // Each column's lerps along x on the node rows above and below it, once per node row.
+    let (mut top, mut bottom) = (vec![0.0f32; job.w], vec![0.0f32; job.w]);
+    let mut lerps_row = usize::MAX;
     for j in 0..job.h as i64 {
         let (rj, tz) = at(job.gz0 + j, j0);
-        for &(ri, tx) in &cols {
-            let v = |di: usize, dj: usize| window.sea_line[(rj + dj) * nw + ri + di];
-            let top = v(0, 0) + (v(1, 0) - v(0, 0)) * tx;
-            let bottom = v(0, 1) + (v(1, 1) - v(0, 1)) * tx;
-            out.push(top + (bottom - top) * tz);
+        if rj != lerps_row {
+            lerps_row = rj;
+            for (i, &(ri, tx)) in cols.iter().enumerate() {
+                let v = |di: usize, dj: usize| window.sea_line[(rj + dj) * nw + ri + di];
+                top[i] = v(0, 0) + (v(1, 0) - v(0, 0)) * tx;
+                bottom[i] = v(0, 1) + (v(1, 1) - v(0, 1)) * tx;
+            }
         }
+        out.extend(top.iter().zip(&bottom).map(|(t, b)| t + (b - t) * tz));
     }
     out
 }

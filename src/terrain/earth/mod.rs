@@ -442,6 +442,9 @@ pub fn tile_sea_snow_lines(
     key: super::tile::TileKey,
     spacing_m: f32,
 ) -> Vec<f32> {
+    if plan.climate.sea_snow.is_none() {
+        return Vec::new();
+    }
     let n = super::plan::TILE_VERTS;
     let q = super::plan::TILE_QUADS;
     let job = FieldJob::new(key.lod, key.x * q, key.z * q, n, n);
