@@ -356,7 +356,8 @@ fn node_sea_lines(
 pub fn snow_line_at_index(lines: &[f32], x: f32) -> f32 {
     let last = lines.len().saturating_sub(1);
     let t = (x - 0.5).clamp(0.0, last as f32);
-    let b = (t.floor() as usize).min(last.saturating_sub(1));
+    // `t ≥ 0`, so the cast truncates to its floor (without a call to `floorf`).
+    let b = (t as usize).min(last.saturating_sub(1));
     if last == 0 {
         return lines.first().copied().unwrap_or(0.0);
     }
