@@ -138,6 +138,12 @@ const WINDOWS_BYTES: u64 = 16 << 20;
 /// samples) and the macro fields of those nodes with the blur margin.
 #[derive(Debug)]
 pub struct NodeWindow {
+    /// First node column (world node index).
+    pub i0: i64,
+    /// First node row.
+    pub j0: i64,
+    /// Node columns (the blur margin left out).
+    pub nw: usize,
     /// Blurred weights, `K` per node, row-major.
     pub weights: Vec<f32>,
     /// The nodes' macro fields, the blur margin included.
@@ -175,19 +181,30 @@ pub fn clear_cache() {
     WINDOWS.invalidate_all();
 }
 
-/// Biome weights of a job's samples, `out[v · K + b]`, vertex-major like `Field::weights`, and
-/// the climate nodes' macro fields (the blur margin included): where [`samples_are_nodes`],
-/// sample `(i, j)` is node `(i + r, j + r)` of them, `r` the blur kernel's radius, and its macro
-/// fields are those of the height function at the sample, the same bits (a node at lattice
-/// index `g` sits at `(g · 4096) as f32`, which is `g as f32 · 4096`, the sample's position).
-pub fn weights_and_macro(
-    plan: &EarthPlan,
-    spacing_m: f32,
-    job: FieldJob,
-) -> (Vec<f32>, Arc<NodeWindow>) {
+/// The climate node of lattice index `g` of a LOD with vertex spacing `spacing_m`, as a
+/// fractional node coordinate (computed in `f64`, so every LOD gives a world point the same).
+fn node_coord(spacing_m: f32, g: i64) -> f64 {
+    g as f64 * spacing_m as f64 / NODE_SPACING_M
+}
+
+/// The node (counted from node `first`) and the offset from it of each of the `n` lattice
+/// indices from `g0`.
+fn node_offsets(spacing_m: f32, g0: i64, n: usize, first: i64) -> Vec<(usize, f32)> {
+    (0..n as i64)
+        .map(|i| {
+            let f = node_coord(spacing_m, g0 + i);
+            let n = f.floor();
+            ((n as i64 - first) as usize, (f - n) as f32)
+        })
+        .collect()
+}
+
+/// The node window of `job`: the blurred weights, macro fields and sea-level snow lines of the
+/// nodes around its samples (kept in [`WINDOWS`] when small).
+pub fn node_window(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Arc<NodeWindow> {
     let k = plan.climate.count;
     let r = plan.climate.kernel.len() / 2;
-    let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
+    let node = |g: i64| node_coord(spacing_m, g);
     let (i0, j0) = (node(job.gx0).floor() as i64, node(job.gz0).floor() as i64);
     let i1 = node(job.gx0 + job.w as i64 - 1).floor() as i64 + 1;
     let j1 = node(job.gz0 + job.h as i64 - 1).floor() as i64 + 1;
@@ -210,6 +227,9 @@ pub fn weights_and_macro(
             None => Vec::new(),
         };
         Arc::new(NodeWindow {
+            i0,
+            j0,
+            nw,
             weights,
             node_macro,
             sea_line,
@@ -217,12 +237,28 @@ pub fn weights_and_macro(
     };
     // A window of at most 3 × 3 nodes (every tile up to LOD 6, whose samples lie in one or two
     // node cells a side) is shared by the tiles in the same cells: 4,096 LOD-0 tiles a cell.
-    let window = if nw <= WINDOW_MAX_NODES && nh <= WINDOW_MAX_NODES {
+    if nw <= WINDOW_MAX_NODES && nh <= WINDOW_MAX_NODES {
         WINDOWS.get_with((plan.fingerprint, i0, j0, i1, j1), nodes_of)
     } else {
         nodes_of()
-    };
+    }
+}
+
+/// Biome weights of a job's samples, `out[v · K + b]`, vertex-major like `Field::weights`, and
+/// the climate nodes' macro fields (the blur margin included): where [`samples_are_nodes`],
+/// sample `(i, j)` is node `(i + r, j + r)` of them, `r` the blur kernel's radius, and its macro
+/// fields are those of the height function at the sample, the same bits (a node at lattice
+/// index `g` sits at `(g · 4096) as f32`, which is `g as f32 · 4096`, the sample's position).
+pub fn weights_and_macro(
+    plan: &EarthPlan,
+    spacing_m: f32,
+    job: FieldJob,
+) -> (Vec<f32>, Arc<NodeWindow>) {
+    let k = plan.climate.count;
+    let window = node_window(plan, spacing_m, job);
+    let (i0, j0, nw) = (window.i0, window.j0, window.nw);
     let nodes = &window.weights;
+    let nh = nodes.len() / (nw * k).max(1);
     let mut out = vec![0.0f32; job.w * job.h * k];
     if samples_are_nodes(spacing_m) {
         // Sample `(i, j)` is node `(i, j)` and every offset is 0: the lerps below would add
@@ -239,13 +275,7 @@ pub fn weights_and_macro(
         return (out, window);
     }
     // Each column's node and offset, computed once for all rows.
-    let cols: Vec<(usize, f32)> = (0..job.w)
-        .map(|i| {
-            let xf = node(job.gx0 + i as i64);
-            let ni = xf.floor();
-            ((ni as i64 - i0) as usize, (xf - ni) as f32)
-        })
-        .collect();
+    let cols = node_offsets(spacing_m, job.gx0, job.w, i0);
     // A node cell whose four corners hold the same weights gives every sample in it those
     // weights: the lerps below add `(a − a) · t = +0` to `a` (never −0: blurred weights are sums
     // of non-negative products), so copying them is the same bits, and most tiles lie in one.
@@ -266,11 +296,10 @@ pub fn weights_and_macro(
     // rows in the same node row: `(top, bottom)` of biome `bi` at `[(i · k + bi) · 2]`.
     let mut lerps = vec![0.0f32; job.w * k * 2];
     let mut lerps_row = usize::MAX;
-    for j in 0..job.h {
-        let zf = node(job.gz0 + j as i64);
-        let nj = zf.floor();
-        let tz = (zf - nj) as f32;
-        let rj = (nj as i64 - j0) as usize;
+    for (j, (rj, tz)) in node_offsets(spacing_m, job.gz0, job.h, j0)
+        .into_iter()
+        .enumerate()
+    {
         if rj != lerps_row {
             lerps_row = rj;
             for (i, &(ri, tx)) in cols.iter().enumerate() {
@@ -355,39 +384,31 @@ fn node_sea_lines(
 /// neighbouring centres, the end biomes' lines beyond the end centres.
 pub fn snow_line_at_index(lines: &[f32], x: f32) -> f32 {
     let last = lines.len().saturating_sub(1);
-    let t = (x - 0.5).clamp(0.0, last as f32);
-    // `t ≥ 0`, so the cast truncates to its floor (without a call to `floorf`).
-    let b = (t as usize).min(last.saturating_sub(1));
     if last == 0 {
         return lines.first().copied().unwrap_or(0.0);
     }
+    let t = (x - 0.5).clamp(0.0, last as f32);
+    // `t ≥ 0`, so the cast truncates to its floor (without a call to `floorf`).
+    let b = (t as usize).min(last - 1);
     let f = t - b as f32;
     lines[b] + (lines[b + 1] - lines[b]) * f
 }
 
 /// The sea-level climate's snow line (metres) at each sample of `job`, bilinear between the
-/// nodes of `window` (the job's node window from [`weights_and_macro`]) with the weights' node
-/// offsets; empty when the world does not read it. A function of the sample's lattice index.
+/// nodes of its node window ([`node_window`]) with the weights' node offsets; empty when the
+/// world does not read it. A function of the sample's lattice index.
 pub fn sea_snow_lines(spacing_m: f32, job: FieldJob, window: &NodeWindow) -> Vec<f32> {
     if window.sea_line.is_empty() {
         return Vec::new();
     }
-    let node = |g: i64| g as f64 * spacing_m as f64 / NODE_SPACING_M;
-    let (i0, j0) = (node(job.gx0).floor() as i64, node(job.gz0).floor() as i64);
-    let i1 = node(job.gx0 + job.w as i64 - 1).floor() as i64 + 1;
-    let nw = (i1 - i0 + 1) as usize;
-    let at = |g: i64, g0: i64| {
-        let f = node(g);
-        let n = f.floor();
-        ((n as i64 - g0) as usize, (f - n) as f32)
-    };
-    let cols: Vec<(usize, f32)> = (0..job.w as i64).map(|i| at(job.gx0 + i, i0)).collect();
+    let (i0, j0, nw) = (window.i0, window.j0, window.nw);
+    let cols = node_offsets(spacing_m, job.gx0, job.w, i0);
+    let rows = node_offsets(spacing_m, job.gz0, job.h, j0);
     let mut out = Vec::with_capacity(job.w * job.h);
     // Each column's lerps along x on the node rows above and below it, once per node row.
     let (mut top, mut bottom) = (vec![0.0f32; job.w], vec![0.0f32; job.w]);
     let mut lerps_row = usize::MAX;
-    for j in 0..job.h as i64 {
-        let (rj, tz) = at(job.gz0 + j, j0);
+    for &(rj, tz) in &rows {
         if rj != lerps_row {
             lerps_row = rj;
             for (i, &(ri, tx)) in cols.iter().enumerate() {

@@ -448,8 +448,7 @@ pub fn tile_sea_snow_lines(
     let n = super::plan::TILE_VERTS;
     let q = super::plan::TILE_QUADS;
     let job = FieldJob::new(key.lod, key.x * q, key.z * q, n, n);
-    let (_, window) = climate::weights_and_macro(plan, spacing_m, job);
-    climate::sea_snow_lines(spacing_m, job, &window)
+    climate::sea_snow_lines(spacing_m, job, &climate::node_window(plan, spacing_m, job))
 }
 
 /// How far north-facing slopes pull the snow line down (and south-facing ones push it up), per
