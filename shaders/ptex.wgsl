@@ -30,6 +30,11 @@ struct Params {
     beach_m: f32,
     rock_lo: f32,
     rock_hi: f32,
+    // `TexelRule::alpine_fraction` (0: no alpine zone), then padding to 16 bytes.
+    alpine: f32,
+    pad0: u32,
+    pad1: u32,
+    pad2: u32,
 }
 
 struct Face {
@@ -453,11 +458,23 @@ fn surface_weights(s: array<f32, 8>, ny: f32) -> array<f32, 6> {
     let snow = smoothstep_inv(-blend, 0.5 * inv_blend, s[1]) * (1.0 - rock) * (1.0 - wet);
     let beach = (1.0 - smoothstep_inv(params.beach_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
     let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
-    var out = array<f32, 6>(wet, beach, 0.0, 0.0, rock, snow);
+    let alpine = alpine_share(params.alpine, above - s[1], s[1]);
+    let ground = rest * (1.0 - alpine);
+    var out = array<f32, 6>(wet, beach, 0.0, 0.0, rock + rest * alpine, snow);
     for (var m = 0u; m < 6u; m = m + 1u) {
-        out[m] = out[m] + s[2u + m] * rest;
+        out[m] = out[m] + s[2u + m] * ground;
     }
     return out;
+}
+
+// Twin of `terrain::texture::alpine_share`: the alpine zone's share of the ground at
+// `above_line` metres above a snow line `line_above_sea` metres above the sea.
+fn alpine_share(fraction: f32, line_above_sea: f32, above_line: f32) -> f32 {
+    let band = fraction * max(line_above_sea, 0.0);
+    if band > 0.0 {
+        return smoothstep_inv(-band, 1.0 / (0.75 * band), above_line);
+    }
+    return 0.0;
 }
 
 // Twin of `ptex::bake::surface_slots`: the materials of weight at least MIN_SURFACE_WEIGHT in id

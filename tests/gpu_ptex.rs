@@ -12,12 +12,13 @@
 //!
 //! It runs on a tile where the texels weigh their materials by the proto-texturing thresholds
 //! at the texel (`texturing.ptex_blend: 2`, the twin's `surface_weights` and `surface_slots`),
-//! and with a world's materials and decals (`strata::ptex::spec`): an
-//! image material with albedo, roughness and height images, a procedural override, and two
-//! decals (one masked by its alpha, one by a separate mask image with roughness), over both
-//! face sets, so the twin's image sampling, mip levels and decal placement are checked too. On
-//! lavapipe both comparisons are bit-identical (the image bilinear interpolates the bytes, whose
-//! differences are exact, and scales once); the bounds above still apply to other adapters.
+//! on one where the alpine zone's band crosses the ground too (`alpine_share`), and with a
+//! world's materials and decals (`strata::ptex::spec`): an image material with albedo,
+//! roughness and height images, a procedural override, and two decals (one masked by its alpha,
+//! one by a separate mask image with roughness), over both face sets, so the twin's image
+//! sampling, mip levels and decal placement are checked too. On lavapipe both comparisons are
+//! bit-identical (the image bilinear interpolates the bytes, whose differences are exact, and
+//! scales once); the bounds above still apply to other adapters.
 
 mod common;
 
@@ -25,6 +26,7 @@ use strata::gpu::ptex::bake_interior_on_device;
 use strata::ptex::bake::texel_materials;
 use strata::ptex::face::TileFacePlan;
 use strata::ptex::{bake_interior, FaceSet, MaterialSet, Pages};
+use strata::terrain::texture::alpine_share;
 use strata::terrain::tile::{synthesize, TileKey};
 use strata::terrain::world::WorldParams;
 use strata::terrain::WorldPlan;
@@ -144,25 +146,27 @@ fn gpu_bake_matches_cpu_on_quads_and_tile_faces() {
     compare("tile", &tiles, &mats, 64);
 }
 
+/// The faces of tile `(lod, x, z)` of seed 42's default world, every face baked.
+fn default_world_tile(lod: u32, x: i64, z: i64, mats: &MaterialSet) -> FaceSet {
+    let plan = WorldPlan::new(42, WorldParams::default()).expect("default world");
+    let key = TileKey { lod, x, z };
+    let tile = synthesize(&plan, key);
+    let mut set = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1).build(
+        |t| (t == key).then_some(&tile),
+        mats,
+        &plan,
+    );
+    set.output = set.faces.len();
+    set
+}
+
 #[test]
 fn gpu_bake_matches_cpu_where_texels_weigh_their_materials() {
     // A tile of the default world (`texturing.ptex_blend: 2`) where the snow line crosses
     // gentle ground and rock outcrops: the texels weigh snow, rock and grass by the thresholds
     // at the texel (`surface_weights` in the twin), many of them two materials or more.
-    let plan = WorldPlan::new(42, WorldParams::default()).expect("default world");
     let mats = MaterialSet::default_ground(42);
-    let key = TileKey {
-        lod: 5,
-        x: 63,
-        z: 64,
-    };
-    let tile = synthesize(&plan, key);
-    let mut set = TileFacePlan::new(key, [false; 4], plan.lods.len() as u32 - 1).build(
-        |t| (t == key).then_some(&tile),
-        &mats,
-        &plan,
-    );
-    set.output = set.faces.len();
+    let set = default_world_tile(5, 63, 64, &mats);
     assert!(set.rule.is_some() && set.surface.len() == set.samples.len());
     let mixed = (0..set.faces.len())
         .flat_map(|f| (0..64u32).flat_map(move |j| (0..64u32).map(move |i| (f, i, j))))
@@ -170,6 +174,25 @@ fn gpu_bake_matches_cpu_where_texels_weigh_their_materials() {
         .count();
     assert!(mixed > 1000, "{mixed} texels of two materials or more");
     compare("snow-line tile", &set, &mats, 64);
+}
+
+#[test]
+fn gpu_bake_matches_cpu_in_the_alpine_zone() {
+    // A tile of the range 115 km from the origin whose upper slopes cross the alpine zone's band
+    // (`texturing.alpine_fraction`) up to the snow: the twin's `alpine_share` splits the
+    // ground of thousands of vertices between rock and the biomes' ground.
+    let mats = MaterialSet::default_ground(42);
+    let set = default_world_tile(5, 56, 54, &mats);
+    let rule = set.rule.expect("texel rule");
+    assert!(rule.alpine_fraction > 0.0);
+    let alpine = set
+        .surface
+        .iter()
+        .map(|s| alpine_share(rule.alpine_fraction, s[0] - s[1], s[1]))
+        .filter(|a| *a > 0.0 && *a < 1.0)
+        .count();
+    assert!(alpine > 1000, "{alpine} vertices inside the alpine band");
+    compare("alpine tile", &set, &mats, 64);
 }
 
 /// A set with images: `grass` an image material, `rock` overridden, and two decals at `a` and

@@ -11,29 +11,19 @@
 //!   `tests/rivers_world.rs`), new scenes write 2, and other values are refused naming the field.
 
 use strata::terrain::earth::{snow_shift, tile_sea_snow_lines};
-use strata::terrain::tile::{synthesize, Tile, TileKey};
+use strata::terrain::tile::Tile;
 use strata::terrain::world::material;
 use strata::terrain::{WorldParams, WorldPlan};
 
+mod common;
+use common::range::range_tiles;
+
 const SEED: u64 = 42;
-/// The centre of the `range` area of `strata bench realism` (its 8 and 64 m blocks), metres.
-const RANGE: (f64, f64) = (114_700.0, 114_700.0);
-const LOD: u32 = 5;
 
 fn plan(snow_lines: u32) -> WorldPlan {
     let mut params = WorldParams::default();
     params.earth.as_mut().expect("earth-1").snow_lines = snow_lines;
     WorldPlan::new(SEED, params).expect("default world")
-}
-
-/// The 4 × 4 LOD-5 tiles (2 km each) around the range's centre.
-fn range_tiles(plan: &WorldPlan) -> Vec<Tile> {
-    let span = 64.0 * plan.lods[LOD as usize].spacing_m as f64;
-    let (cx, cz) = ((RANGE.0 / span) as i64, (RANGE.1 / span) as i64);
-    (cz - 2..cz + 2)
-        .flat_map(|z| (cx - 2..cx + 2).map(move |x| TileKey { lod: LOD, x, z }))
-        .map(|key| synthesize(plan, key))
-        .collect()
 }
 
 /// Land vertices, snow vertices and the lowest snow vertex's height of `tiles`.

@@ -65,6 +65,10 @@ pub struct GpuPtexParams {
     pub rock_lo: f32,
     /// `cos` of the slope where rock is complete.
     pub rock_hi: f32,
+    /// `TexelRule::alpine_fraction` (0: no alpine zone).
+    pub alpine: f32,
+    /// Padding to 16 bytes.
+    pub pad: [u32; 3],
 }
 
 /// `Face` of `shaders/ptex.wgsl`.
@@ -312,6 +316,8 @@ pub fn bake_interior_on_device(
         beach_m: rule.map_or(0.0, |r| r.beach_height_m),
         rock_lo: rule.map_or(0.0, |r| r.rock_cos.0),
         rock_hi: rule.map_or(0.0, |r| r.rock_cos.1),
+        alpine: rule.map_or(0.0, |r| r.alpine_fraction),
+        pad: [0; 3],
     };
     let scopes = Scopes::push(device);
     let (u, r, w) = (Binding::Uniform, Binding::Read, Binding::ReadWrite);

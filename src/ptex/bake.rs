@@ -1154,8 +1154,8 @@ mod tests {
         // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
         // carve later valleys, which move these tiles' heights, the bake's input; no coarse
-        // lattice, which moves them too; the first snow lines; and `ptex_blend: 1`, as every
-        // world stored before `2` bakes).
+        // lattice, which moves them too; the first snow lines; no alpine zone; and
+        // `ptex_blend: 1`, as every world stored before `2` bakes).
         let mut params = WorldParams::default();
         if let Some(e) = params.earth.as_mut() {
             (e.coarse_lattice_cells, e.snow_lines) = (None, 1);
@@ -1164,6 +1164,7 @@ mod tests {
             rivers.valleys = 3;
         }
         params.texturing.ptex_blend = 1;
+        params.texturing.alpine_fraction = 0.0;
         let plan = WorldPlan::new(7, params).expect("plan");
         let mats = MaterialSet::default_ground(plan.seed);
         let mut got = Vec::new();

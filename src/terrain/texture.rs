@@ -7,7 +7,11 @@
 //!   the cosine of the slope), on land;
 //! - `snow` = above the biome-weighted snow line, where not rock;
 //! - `sand` (beach) = less than `beach_height_m` above the sea, where not rock;
-//! - each biome's ground material gets `w_b · (1 − rock) · (1 − snow) · (1 − beach)`.
+//! - in worlds with `alpine_fraction` `a > 0`, `rock` also takes the alpine share
+//!   `α = smoothstep(−a·L, −a·L/4, h − line)` of what the three above leave, `L` the snow
+//!   line's height above the sea: bare rock and scree above the tree line, from `(1 − a)·L`
+//!   above the sea up to the snow;
+//! - each biome's ground material gets `w_b · (1 − rock) · (1 − snow) · (1 − beach) · (1 − α)`.
 //!
 //! The vertex's material is the heaviest one (lowest id on ties). Steep rock thus suppresses
 //! grass as in the paper's Fig. 8.
@@ -48,6 +52,21 @@ pub struct TexturePlan {
     rock_cos: (f32, f32),
     ground: Vec<u8>,
     snow_line_m: Vec<f32>,
+    /// `Texturing::alpine_fraction` (0: no alpine zone).
+    alpine_fraction: f32,
+}
+
+/// The alpine zone's share of the ground (module docs) at `above_line` metres above a snow line
+/// that lies `line_above_sea` metres above the sea: 0 below `(1 − fraction)` of the line's
+/// height, 1 from a quarter of that band below the line up. 0 everywhere when `fraction` is 0.
+#[inline(always)]
+pub fn alpine_share(fraction: f32, line_above_sea: f32, above_line: f32) -> f32 {
+    let band = fraction * line_above_sea.max(0.0);
+    if band > 0.0 {
+        smoothstep_inv(-band, 1.0 / (0.75 * band), above_line)
+    } else {
+        0.0
+    }
 }
 
 impl TexturePlan {
@@ -71,6 +90,7 @@ impl TexturePlan {
                 .iter()
                 .map(|b| b.snow_line_m.clamp(-1e6, 1e6))
                 .collect(),
+            alpine_fraction: t.alpine_fraction,
         }
     }
 }
@@ -95,7 +115,16 @@ pub fn material_weights(plan: &TexturePlan, s: &Surface) -> [f32; MATERIALS.len(
     let beach =
         (1.0 - smoothstep_inv(plan.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
     out[material::SAND as usize] += beach;
-    let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    let mut rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    if plan.alpine_fraction > 0.0 {
+        let alpine = alpine_share(
+            plan.alpine_fraction,
+            snow_line - plan.sea_level_m,
+            s.height_m - snow_line,
+        );
+        out[material::ROCK as usize] += rest * alpine;
+        rest *= 1.0 - alpine;
+    }
     for (g, w) in plan.ground.iter().zip(s.weights) {
         out[*g as usize] += w * rest;
     }
@@ -140,6 +169,8 @@ pub struct TexelRule {
     pub beach_height_m: f32,
     /// `cos` of the slope where rock starts and where it is complete.
     pub rock_cos: (f32, f32),
+    /// `Texturing::alpine_fraction` (0: no alpine zone).
+    pub alpine_fraction: f32,
 }
 
 impl TexturePlan {
@@ -149,6 +180,7 @@ impl TexturePlan {
             blend_m: self.height_blend_m,
             beach_height_m: self.beach_height_m,
             rock_cos: self.rock_cos,
+            alpine_fraction: self.alpine_fraction,
         }
     }
 }
@@ -174,13 +206,18 @@ pub fn texel_weights(
     let beach =
         (1.0 - smoothstep_inv(rule.beach_height_m, inv_blend, above)) * (1.0 - wet) * (1.0 - rock);
     let rest = (1.0 - wet) * (1.0 - rock) * (1.0 - snow) * (1.0 - beach);
+    // The alpine zone: `s[0] − s[1]` is the snow line's height above the sea. Where the world
+    // has none the share is exactly 0, so `rest · 1` and `rock + 0` keep the bits of the
+    // worlds stored before it.
+    let alpine = alpine_share(rule.alpine_fraction, above - s[1], s[1]);
+    let ground = rest * (1.0 - alpine);
     let mut out = [0.0f32; MATERIALS.len()];
     out[material::SEABED as usize] = wet;
     out[material::SAND as usize] = beach;
-    out[material::ROCK as usize] = rock;
+    out[material::ROCK as usize] = rock + rest * alpine;
     out[material::SNOW as usize] = snow;
     for (m, w) in out.iter_mut().enumerate() {
-        *w += s[2 + m] * rest;
+        *w += s[2 + m] * ground;
     }
     out
 }
@@ -271,6 +308,7 @@ pub fn proto_texture_batch(
         let mut snow = [0.0f32; BLOCK];
         let mut beach = [0.0f32; BLOCK];
         let mut rest = [0.0f32; BLOCK];
+        let mut scree = [0.0f32; BLOCK];
         for v in 0..BLOCK {
             let h = hs[v];
             let above = h - plan.sea_level_m;
@@ -286,6 +324,14 @@ pub fn proto_texture_batch(
             beach[v] = be;
             rest[v] = (1.0 - we) * (1.0 - ro) * (1.0 - sn) * (1.0 - be);
         }
+        if plan.alpine_fraction > 0.0 {
+            for v in 0..BLOCK {
+                let line_above_sea = line[v] - plan.sea_level_m;
+                let alpine = alpine_share(plan.alpine_fraction, line_above_sea, hs[v] - line[v]);
+                scree[v] = rest[v] * alpine;
+                rest[v] *= 1.0 - alpine;
+            }
+        }
         let mut top = [0.0f32; BLOCK];
         let mut best = [0u8; BLOCK];
         for id in 0..MATERIALS.len() as u8 {
@@ -296,6 +342,11 @@ pub fn proto_texture_batch(
                 material::SNOW => snow,
                 _ => [0.0; BLOCK],
             };
+            if id == material::ROCK && plan.alpine_fraction > 0.0 {
+                for v in 0..BLOCK {
+                    row[v] += scree[v];
+                }
+            }
             for (b, g) in plan.ground.iter().enumerate() {
                 if *g != id || single.is_some_and(|s| s != b) {
                     continue;

@@ -108,9 +108,22 @@ pub struct Texturing {
         skip_serializing_if = "Texturing::is_first_ptex_blend"
     )]
     pub ptex_blend: u32,
+    /// The alpine zone, a fraction of the snow line's height above the sea: bare rock and
+    /// scree take over the ground from `(1 − alpine_fraction)` of that height up to a quarter
+    /// of the band below the snow line (above the tree line, where the climate's cooled
+    /// biomes would keep their grass and soil up to the summits;
+    /// [`crate::terrain::texture`]). `0.25` in new worlds (a 2.8 km snow line: rock from
+    /// 2.1 km, half the ground at 2.36 km, all of it from 2.63 km); worlds stored before it have none (`0`, absent) and keep
+    /// their materials and pages.
+    #[serde(default, skip_serializing_if = "Texturing::is_no_alpine")]
+    pub alpine_fraction: f32,
 }
 
 impl Texturing {
+    fn is_no_alpine(v: &f32) -> bool {
+        *v == 0.0
+    }
+
     fn first_ptex_blend() -> u32 {
         1
     }
@@ -345,6 +358,7 @@ impl WorldParams {
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
                 ptex_blend: 2,
+                alpine_fraction: 0.25,
             },
             scatter: ScatterParams {
                 spacing_m: 4.0,
@@ -429,6 +443,7 @@ impl WorldParams {
                 beach_height_m: 2.0,
                 height_blend_m: 6.0,
                 ptex_blend: Texturing::first_ptex_blend(),
+                alpine_fraction: 0.0,
             },
             scatter: ScatterParams {
                 spacing_m: 4.0,
@@ -656,6 +671,11 @@ impl WorldParams {
             (1..=2).contains(&self.texturing.ptex_blend),
             "texturing.ptex_blend",
             "must be 1 or 2",
+        )?;
+        check(
+            (0.0..=0.9).contains(&self.texturing.alpine_fraction),
+            "texturing.alpine_fraction",
+            "must be in [0, 0.9]",
         )?;
         Ok(())
     }

@@ -5,7 +5,8 @@
 //! ([`arch`]), a `strata` element with one cave opening to the ground ([`cave`]), the Khronos
 //! glTF validator ([`gltf`]), stored-world fixtures ([`fixture`]), the Node packages of the
 //! browser tests ([`js`]), tiles with river and lake water ([`water`]), PNG images ([`png`]),
-//! a stream client ([`ws`]) and a throwaway PostgreSQL cluster ([`postgres`]).
+//! a stream client ([`ws`]), a throwaway PostgreSQL cluster ([`postgres`]) and the tiles of a
+//! mountain range ([`range`]).
 
 #![allow(dead_code)] // Each test binary uses its own subset.
 
@@ -19,6 +20,7 @@ pub mod js;
 pub mod oneshot;
 pub mod png;
 pub mod postgres;
+pub mod range;
 pub mod raw;
 pub mod replica;
 pub mod seams;
