@@ -246,3 +246,72 @@ fn faster_paths_are_bit_exact(lakes: u32) {
         assert!(silled > 1000, "only {silled} heights under a sill");
     }
 }
+
+/// The basins a mountain belt's ridges close fill to their outlets (`lakes: 5`):
+/// in the range 112 km east and 100 km north of the origin, 65 km square at 64 m (the basins
+/// lie wholly inside: the fill drains the square's edges), the
+/// land that a priority-flood fill of the water surface (lakes and rivers included) raises by
+/// more than 2 m falls from over a fifth with the floods of `lakes: 4`, whose search stops at
+/// 256 nodes within 12 spacings and leaves a lake in each basin's bottom below a dry closed
+/// floor hundreds of metres deep, to a few percent; and fewer of the range's flows end inland.
+#[test]
+fn basins_closed_by_a_ranges_ridges_fill_to_their_outlets() {
+    use strata::bench::realism::{metrics, sample};
+    let closed = |lakes: u32| {
+        let p = plan(lakes);
+        let n = 16;
+        let s = sample::sample(
+            &p,
+            6,
+            sample::first_tile(&p, 6, 112_000.0, n),
+            sample::first_tile(&p, 6, -100_000.0, n),
+            n,
+            n,
+        );
+        metrics::depressions(&s.surface(), 0.0, 2.0).fraction
+    };
+    let (four, five) = (closed(4), closed(5));
+    println!(
+        "closed depressions > 2 m: lakes 4 {:.2} % of the land, lakes 5 {:.2} %",
+        100.0 * four,
+        100.0 * five
+    );
+    assert!(four > 0.2, "lakes 4: {four}");
+    assert!(five < 0.05, "lakes 5: {five}");
+
+    // The network's view: the flows from the range's nodes end inland (in a lake that does not
+    // spill) at fewer places with `lakes: 5`, a subset of those of `lakes: 4`: lakes whose
+    // floods stopped at 12 spacings found their outlets and spill towards the sea. (Four ends
+    // against six here: two basins more than 30 spacings long still stop their floods, and
+    // two lakes upstream of one cannot spill into it, whose level is higher.)
+    let inland_ends = |lakes: u32| {
+        let p = plan(lakes);
+        let earth = p.earth.as_ref().expect("earth-1");
+        let rp = earth.rivers.as_ref().expect("rivers");
+        let mut net = strata::terrain::earth::rivers::Network::new(earth, rp);
+        let mut ends = std::collections::BTreeSet::new();
+        for k in -116..-84 {
+            for i in 96..128 {
+                let mut at = (i, k);
+                for _ in 0..100_000 {
+                    match net.down(at.0, at.1) {
+                        Some(next) => at = next,
+                        None => break,
+                    }
+                }
+                let end = net.node(at.0, at.1);
+                assert!(end.down.is_none(), "the flow from {:?} ends", (i, k));
+                if !end.sea {
+                    ends.insert(at);
+                }
+            }
+        }
+        ends
+    };
+    let (four, five) = (inland_ends(4), inland_ends(5));
+    println!("flows ending inland: lakes 4 at {four:?}, lakes 5 at {five:?}");
+    assert!(
+        five.is_subset(&four) && five.len() < four.len(),
+        "lakes 4 ends the flows at {four:?}, lakes 5 at {five:?}"
+    );
+}

@@ -208,4 +208,13 @@ fn new_scenes_carve_the_sixth_valleys_and_accept_only_known_ones() {
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(7);
     let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 7 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
+    for known in [1, 2, 3, 5] {
+        let mut other = scene.clone();
+        other["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(known);
+        strata::scene::Scene::from_value(&other).expect("other known lakes are accepted");
+    }
+    let mut bad = scene.clone();
+    bad["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(6);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("lakes 6 is refused");
+    assert!(format!("{err:?}").contains("rivers/lakes"), "{err:?}");
 }

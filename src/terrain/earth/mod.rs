@@ -655,6 +655,8 @@ pub fn tile_water(
     let carved = key.lod as usize <= rivers::MAX_CARVE_LOD;
     let rj = if carved {
         rivers::water_job_for(plan, rp, spacing_m, gx0, gz0, n, n)
+    } else if rp.lakes >= 5 {
+        rivers::lake_job_for(plan, rp, spacing_m, gx0, gz0, n, n)
     } else {
         rivers::RiverJob::default()
     };

@@ -133,7 +133,7 @@ pub struct RiverParams {
         skip_serializing_if = "RiverParams::is_first_valleys"
     )]
     pub valleys: u32,
-    /// The lakes, 1 to 4 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
+    /// The lakes, 1 to 5 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
     /// the four nodes around it holds a lake above its height, so a lake's water can end along
     /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
     /// keep it, and their bytes. `2`: the ground is shaped to meet the lake's level
@@ -142,8 +142,14 @@ pub struct RiverParams {
     /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
     /// lake's level instead of ending in a basin closed by the finer relief; but the valleys of
     /// the rivers below the outlet are cut below the lake's level right beside its water. `4`
-    /// (new worlds): the lakes of `3` held by a sill, where the carve cuts no floodplain
-    /// or valley wall below the lake's level beside its water (the shores' step 5).
+    /// (new worlds): the lakes of `3` held by a sill, where the carve cuts no floodplain or
+    /// valley wall below the lake's level beside its water (the shores' step 5). `5` (asked for
+    /// by name; not yet the default: where a river runs up a valley the lake floods, the
+    /// viewer's ribbon and the lake's sheet leave gaps along it): the lakes of
+    /// `4` whose floods search 2048 instead of 256 nodes within 30 instead of 12 node
+    /// spacings, so the basins that a mountain belt's ridges close, tens of kilometres across,
+    /// fill to their outlets and spill, instead of holding a lake in their bottoms below a
+    /// closed dry floor hundreds of metres deep.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
@@ -205,9 +211,9 @@ impl RiverParams {
             "must be 1, 2, 3, 4, 5 or 6",
         )?;
         check(
-            (1..=4).contains(&self.lakes),
+            (1..=5).contains(&self.lakes),
             "rivers.lakes",
-            "must be 1, 2, 3 or 4",
+            "must be 1, 2, 3, 4 or 5",
         )
     }
 }

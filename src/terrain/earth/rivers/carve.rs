@@ -434,6 +434,69 @@ impl Network<'_> {
         })
     }
 
+    /// The job of the lakes alone over a rectangle (no river pieces): what tiles too coarse to
+    /// carve read to show the lakes over their uncarved heights (`lakes: 5`), and the lake
+    /// window and settings every job starts from.
+    pub fn lake_job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> RiverJob {
+        let (li0, lk0, lakes_w, lakes) = self.lake_window(x0, z0, x1, z1);
+        let s = self.plan.spacing_m;
+        RiverJob {
+            x0,
+            z0,
+            x1,
+            z1,
+            bin_m: (x1 - x0).max(z1 - z0).max(s),
+            spacing_m: s,
+            li0,
+            lk0,
+            lakes_w,
+            lakes,
+            wall_noise: self.plan.wall_noise,
+            wall_seed: self.plan.wall_seed,
+            shores: self.plan.lakes >= 2,
+            sills: self.plan.lakes >= 4,
+            shore_seeds: self.plan.shore_seeds,
+            shore_warp_m: super::SHORE_WARP * s,
+            shore_warp_inv_m: 1.0 / (super::SHORE_WARP_WAVE * s),
+            ..RiverJob::default()
+        }
+    }
+
+    /// The lake levels of the nodes a sample of the rectangle can read (the four around it,
+    /// after the shores' warp): the window's first node column and row, its width and the
+    /// levels (NaN where no lake), empty when no lake is readable.
+    fn lake_window(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> (i64, i64, usize, Vec<f32>) {
+        let s = self.plan.spacing_m;
+        // Lake levels of the nodes around the rectangle (a vertex reads the four around it).
+        let li0 = ((x0 / s) - 0.5).floor() as i64 - 1;
+        let li1 = ((x1 / s) - 0.5).floor() as i64 + 2;
+        let lk0 = ((z0 / s) - 0.5).floor() as i64 - 1;
+        let lk1 = ((z1 / s) - 0.5).floor() as i64 + 2;
+        let lakes_w = (li1 - li0 + 1) as usize;
+        let mut lakes = Vec::with_capacity(lakes_w * (lk1 - lk0 + 1) as usize);
+        for k in lk0..=lk1 {
+            for i in li0..=li1 {
+                lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
+            }
+        }
+        // No lake that a sample of the rectangle can read (the four nodes around it, after the
+        // shores' warp of less than half a spacing): an empty window, so `lake_level` and
+        // `lake_field` answer at once.
+        let reach = |i: i64, k: i64| {
+            let (ri0, ri1) = ((x0 / s - 1.0).floor() as i64, (x1 / s).floor() as i64 + 1);
+            let (rk0, rk1) = ((z0 / s - 1.0).floor() as i64, (z1 / s).floor() as i64 + 1);
+            (ri0..=ri1).contains(&i) && (rk0..=rk1).contains(&k)
+        };
+        let readable = (lk0..=lk1)
+            .flat_map(|k| (li0..=li1).map(move |i| (i, k)))
+            .zip(&lakes)
+            .any(|((i, k), l)| !l.is_nan() && reach(i, k));
+        if !readable {
+            lakes.clear();
+        }
+        (li0, lk0, lakes_w, lakes)
+    }
+
     /// The job of the pieces that come within `reach_of(piece)` metres of the rectangle, each in
     /// the bins whose centre is within that plus half a bin's diagonal.
     fn job_within(
@@ -504,56 +567,14 @@ impl Network<'_> {
             bin_pieces[fill[b as usize] as usize] = pi;
             fill[b as usize] += 1;
         }
-        // Lake levels of the nodes around the rectangle (a vertex reads the four around it).
-        let li0 = ((x0 / s) - 0.5).floor() as i64 - 1;
-        let li1 = ((x1 / s) - 0.5).floor() as i64 + 2;
-        let lk0 = ((z0 / s) - 0.5).floor() as i64 - 1;
-        let lk1 = ((z1 / s) - 0.5).floor() as i64 + 2;
-        let lakes_w = (li1 - li0 + 1) as usize;
-        let mut lakes = Vec::with_capacity(lakes_w * (lk1 - lk0 + 1) as usize);
-        for k in lk0..=lk1 {
-            for i in li0..=li1 {
-                lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
-            }
-        }
-        // No lake that a sample of the rectangle can read (the four nodes around it, after the
-        // shores' warp of less than half a spacing): an empty window, so `lake_level` and
-        // `lake_field` answer at once.
-        let reach = |i: i64, k: i64| {
-            let (ri0, ri1) = ((x0 / s - 1.0).floor() as i64, (x1 / s).floor() as i64 + 1);
-            let (rk0, rk1) = ((z0 / s - 1.0).floor() as i64, (z1 / s).floor() as i64 + 1);
-            (ri0..=ri1).contains(&i) && (rk0..=rk1).contains(&k)
-        };
-        let readable = (lk0..=lk1)
-            .flat_map(|k| (li0..=li1).map(move |i| (i, k)))
-            .zip(&lakes)
-            .any(|((i, k), l)| !l.is_nan() && reach(i, k));
-        if !readable {
-            lakes.clear();
-        }
         RiverJob {
             pieces,
-            x0,
-            z0,
-            x1,
-            z1,
             bin_m,
             bins_w,
             bins_h,
             bin_start,
             bin_pieces,
-            spacing_m: s,
-            li0,
-            lk0,
-            lakes_w,
-            lakes,
-            wall_noise: self.plan.wall_noise,
-            wall_seed: self.plan.wall_seed,
-            shores: self.plan.lakes >= 2,
-            sills: self.plan.lakes >= 4,
-            shore_seeds: self.plan.shore_seeds,
-            shore_warp_m: super::SHORE_WARP * s,
-            shore_warp_inv_m: 1.0 / (super::SHORE_WARP_WAVE * s),
+            ..self.lake_job(x0, z0, x1, z1)
         }
     }
 }
@@ -860,6 +881,24 @@ pub fn water_job_for(
     let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
     let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
     Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m)
+}
+
+/// The lakes alone over the samples `(gx0 + i, gz0 + j)·spacing` of a field (its world
+/// rectangle): the water of tiles too coarse to carve in worlds with `lakes: 5`.
+pub fn lake_job_for(
+    earth: &EarthPlan,
+    plan: &RiverPlan,
+    spacing_m: f32,
+    gx0: i64,
+    gz0: i64,
+    w: usize,
+    h: usize,
+) -> RiverJob {
+    let x0 = gx0 as f32 * spacing_m;
+    let z0 = gz0 as f32 * spacing_m;
+    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
+    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    Network::new(earth, plan).lake_job(x0, z0, x1, z1)
 }
 
 /// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height

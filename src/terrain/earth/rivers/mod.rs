@@ -22,7 +22,11 @@
 //!    the incision grows with `Q` and `B` never rises, so `W` never rises downstream.
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
-//!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level).
+//!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level;
+//!    [`LAKE_MAX_NODES_5`] and [`LAKE_RADIUS_5`] in worlds with `lakes: 5`, where the basins
+//!    that a mountain belt's ridges close fill to their outlets and spill instead of holding a
+//!    lake in their bottoms below a dry closed floor). Each pit's flood is computed once per
+//!    world and kept in a bounded process cache.
 //!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
 //!    with `lakes` 3 and 4 (4: the default of new worlds) a node below the level whose steepest descent
 //!    runs back into the lake, or into a pit no lower than the lake's, is flooded too (on flat
@@ -87,7 +91,10 @@
 //! the cache changes the time, never the bytes.
 //!
 //! LODs: the carve (and the lake shores before it) runs at LODs `0..=MAX_CARVE_LOD` (spacing up
-//! to half a node spacing by default); coarser tiles skip it, and their LOD bound grows by
+//! to half a node spacing by default); coarser tiles skip it (in worlds with `lakes: 5` their
+//! water still shows the lakes, the lake field of the shores over their uncarved heights:
+//! [`lake_job_for`]; before, a lake vanished beyond `MAX_CARVE_LOD`, and the basin it fills
+//! stood open beside the water of the finer tiles), and their LOD bound grows by
 //! [`CARVE_MAX_M`], the most the carve may remove, and in worlds with shores by
 //! [`SHORE_MAX_M`], the most the shores change. (Finer LODs carve with the same pieces, and a
 //! sample's carved height moves by no more than its uncarved height does — each profile's slope
@@ -103,8 +110,8 @@ mod shores;
 mod water;
 
 pub use carve::{
-    job_for, profile, spur_step, water_at, water_job_for, Edge, Piece, PrunedBins, RiverJob,
-    PIECE_LEN2_EPS,
+    job_for, lake_job_for, profile, spur_step, water_at, water_job_for, Edge, Piece, PrunedBins,
+    RiverJob, PIECE_LEN2_EPS,
 };
 pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
@@ -145,10 +152,18 @@ pub const PIECES_2: usize = 8;
 /// point halfway along it, whose ends' tangents nearly agree with its neighbours', so four
 /// follow the curve without the facets of eight straight ones, at half their cost.
 pub const PIECES_3: usize = 4;
-/// A lake's flood visits at most this many nodes.
+/// A lake's flood visits at most this many nodes (worlds with `lakes` 1 to 4).
 pub const LAKE_MAX_NODES: usize = 256;
-/// A lake's flood stays within this many spacings of its pit (Chebyshev distance).
+/// A lake's flood stays within this many spacings of its pit (Chebyshev distance; worlds with
+/// `lakes` 1 to 4).
 pub const LAKE_RADIUS: i64 = 12;
+/// [`LAKE_MAX_NODES`] of worlds with `lakes: 5`: the basins the mountain belts' ridges close,
+/// tens of kilometres across, fill to their outlets.
+pub const LAKE_MAX_NODES_5: usize = 2048;
+/// [`LAKE_RADIUS`] of worlds with `lakes: 5`: one less than a block, so the pits whose lakes
+/// can reach a block lie in the eight blocks around it (a larger radius reads a ring of blocks
+/// more for every block: a quarter more time for cold coarse tiles).
+pub const LAKE_RADIUS_5: i64 = 30;
 /// A pit whose lake would be shallower than this, metres, drains over its saddle instead.
 pub const BREACH_DEPTH_M: f32 = 20.0;
 /// Rivers are incised in full within half this many steps of where their flow ends (the sea or
@@ -308,6 +323,12 @@ pub struct RiverPlan {
     /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
     /// ([`shores`]).
     pub lakes: u32,
+    /// Most nodes a lake's flood visits: [`LAKE_MAX_NODES`], or [`LAKE_MAX_NODES_5`] with
+    /// `lakes: 5`.
+    pub lake_max_nodes: usize,
+    /// Chebyshev radius of a lake's flood, node spacings: [`LAKE_RADIUS`], or
+    /// [`LAKE_RADIUS_5`] with `lakes: 5`.
+    pub lake_radius: i64,
     /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
     pub shore_seeds: [u32; 4],
 }
@@ -348,6 +369,16 @@ impl RiverPlan {
             spur_seed: stream(seed, purpose::EARTH, 408),
             valley_seeds: [406, 407].map(|k| stream(seed, purpose::EARTH, k)),
             lakes: params.lakes,
+            lake_max_nodes: if params.lakes >= 5 {
+                LAKE_MAX_NODES_5
+            } else {
+                LAKE_MAX_NODES
+            },
+            lake_radius: if params.lakes >= 5 {
+                LAKE_RADIUS_5
+            } else {
+                LAKE_RADIUS
+            },
             shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {

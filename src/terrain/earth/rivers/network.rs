@@ -8,10 +8,7 @@ use super::super::super::hash::{hash2, unit};
 use super::super::kernel::{self, LANES};
 use super::super::EarthPlan;
 use super::carve::Piece;
-use super::{
-    RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_MAX_NODES, LAKE_RADIUS, LAKE_WALK, NONE, OFFSETS, Q_MAX,
-    ROUTE_NOISE,
-};
+use super::{RiverPlan, BLOCK, BREACH_DEPTH_M, LAKE_WALK, NONE, OFFSETS, Q_MAX, ROUTE_NOISE};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::collections::BinaryHeap;
 use std::sync::Arc;
@@ -37,6 +34,8 @@ pub fn clear_caches() {
     CACHES.spills.invalidate_all();
     CACHES.flow.invalidate_all();
     CACHES.pieces.invalidate_all();
+    CACHES.floods.invalidate_all();
+    CACHES.lakes.invalidate_all();
 }
 
 /// A call's memo of one kind of block, by block index.
@@ -55,6 +54,11 @@ struct Caches {
     spills: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
     flow: moka::sync::Cache<BlockKey, Arc<FlowBlock>>,
     pieces: moka::sync::Cache<BlockKey, Arc<Vec<Piece>>>,
+    /// The lakes of pits, by the world's fingerprint and the pit: the blocks around a pit
+    /// within a flood's radius all ask for its lake.
+    floods: moka::sync::Cache<BlockKey, Arc<Lake>>,
+    /// The lake levels of blocks, apart from their flow (coarse tiles read these alone).
+    lakes: moka::sync::Cache<BlockKey, Arc<LakeBlock>>,
 }
 
 /// Byte budgets of the caches.
@@ -62,6 +66,7 @@ const HEIGHTS_BYTES: u64 = 64 << 20;
 const ROUTES_BYTES: u64 = 8 << 20;
 const FLOW_BYTES: u64 = 64 << 20;
 const PIECES_BYTES: u64 = 64 << 20;
+const FLOODS_BYTES: u64 = 16 << 20;
 
 fn cache<V: Send + Sync + 'static>(
     bytes: u64,
@@ -79,12 +84,12 @@ static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches 
     }),
     routes: cache(ROUTES_BYTES, RouteBlock::weight),
     spills: cache(ROUTES_BYTES, RouteBlock::weight),
-    flow: cache(FLOW_BYTES, |b: &FlowBlock| {
-        4 * (b.q.len() + b.lake.len() + b.w.len())
-    }),
+    flow: cache(FLOW_BYTES, |b: &FlowBlock| 4 * (b.q.len() + b.w.len())),
     pieces: cache(PIECES_BYTES, |p: &Vec<Piece>| {
         std::mem::size_of::<Piece>() * p.len()
     }),
+    floods: cache(FLOODS_BYTES, |l: &Lake| 16 * l.1.len()),
+    lakes: cache(ROUTES_BYTES, |b: &LakeBlock| 4 * b.lake.len()),
 });
 
 /// The breached pits of one block (shallow pits that drain over their saddle to the outlet
@@ -115,14 +120,19 @@ struct HeightBlock {
     relief: Vec<f32>,
 }
 
-/// Discharge and lake levels of one block of nodes.
+/// Discharge and water levels of one block of nodes.
 struct FlowBlock {
     /// `BLOCK²` discharges, nodes.
     q: Vec<u32>,
-    /// `BLOCK²` levels of the highest lake covering each node, metres (NaN: none).
-    lake: Vec<f32>,
     /// `BLOCK²` water levels, metres.
     w: Vec<f32>,
+}
+
+/// Lake levels of one block of nodes (apart from the flow: tiles too coarse to carve read the
+/// lakes alone).
+struct LakeBlock {
+    /// `BLOCK²` levels of the highest lake covering each node, metres (NaN: none).
+    lake: Vec<f32>,
 }
 
 /// One node of the network as the products see it.
@@ -158,6 +168,7 @@ pub struct Network<'a> {
     routes: Memo<RouteBlock>,
     spills: Memo<RouteBlock>,
     flows: Memo<FlowBlock>,
+    lakes: Memo<LakeBlock>,
 }
 
 impl std::fmt::Debug for Network<'_> {
@@ -180,6 +191,7 @@ impl<'a> Network<'a> {
             routes: HashMap::default(),
             spills: HashMap::default(),
             flows: HashMap::default(),
+            lakes: HashMap::default(),
         }
     }
 
@@ -261,7 +273,8 @@ impl<'a> Network<'a> {
     /// chain of breaches and no flow can cycle) and the lake would be shallower than
     /// [`BREACH_DEPTH_M`].
     fn breach(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
-        let (level, _, outlet) = self.flood(i, k);
+        let lake = self.flood(i, k);
+        let (level, outlet) = (lake.0, lake.2);
         let h = self.height(i, k);
         let o = outlet?;
         (self.height(o.0, o.1) < h && level - h < BREACH_DEPTH_M).then_some(o)
@@ -277,6 +290,27 @@ impl<'a> Network<'a> {
         })
     }
 
+    /// The nodes in `is × ks` without a lattice neighbour below them (pits, and sea nodes
+    /// with no lower neighbour), in row order (`k`, then `i`): each height block of the range
+    /// is scanned for them, instead of asking every node.
+    fn sinks(&mut self, is: std::ops::Range<i64>, ks: std::ops::Range<i64>) -> Vec<(i64, i64)> {
+        let mut found = Vec::new();
+        for hz in block_of(ks.start).0..=block_of(ks.end - 1).0 {
+            for hx in block_of(is.start).0..=block_of(is.end - 1).0 {
+                let hb = self.height_block((hx, hz));
+                for (n, &d) in hb.down.iter().enumerate() {
+                    let i = hx * BLOCK + (n as i64 % BLOCK);
+                    let k = hz * BLOCK + (n as i64 / BLOCK);
+                    if d == NONE && is.contains(&i) && ks.contains(&k) {
+                        found.push((k, i));
+                    }
+                }
+            }
+        }
+        found.sort_unstable();
+        found.into_iter().map(|(k, i)| (i, k)).collect()
+    }
+
     /// The pits within reach of block `b` that `outlet` routes (breaches, or in `lakes: 3`
     /// worlds spills), and their outlets: those of the block's pits, and the block's outlets'.
     fn compute_outlets(
@@ -288,19 +322,19 @@ impl<'a> Network<'a> {
         let inside =
             |i: i64, k: i64| (i0..i0 + BLOCK).contains(&i) && (k0..k0 + BLOCK).contains(&k);
         let mut rb = RouteBlock::default();
-        // An outlet lies within the flood radius (plus one) of its pit.
-        let r = LAKE_RADIUS + 1;
-        for k in k0 - r..k0 + BLOCK + r {
-            for i in i0 - r..i0 + BLOCK + r {
-                let Some(o) = outlet(self, i, k) else {
-                    continue;
-                };
-                if inside(i, k) {
-                    rb.out.insert((i, k), o);
-                }
-                if inside(o.0, o.1) {
-                    rb.into.entry(o).or_default().push((i, k));
-                }
+        // An outlet lies within the flood radius (plus one) of its pit. Only nodes without a
+        // lattice neighbour below them can be pits: each height block of the margin is scanned
+        // for them, instead of asking every node of the margin.
+        let r = self.plan.lake_radius + 1;
+        for (i, k) in self.sinks(i0 - r..i0 + BLOCK + r, k0 - r..k0 + BLOCK + r) {
+            let Some(o) = outlet(self, i, k) else {
+                continue;
+            };
+            if inside(i, k) {
+                rb.out.insert((i, k), o);
+            }
+            if inside(o.0, o.1) {
+                rb.into.entry(o).or_default().push((i, k));
             }
         }
         rb
@@ -339,7 +373,8 @@ impl<'a> Network<'a> {
     /// along a chain of spills and the order is strict, so the flow has no cycle, and the
     /// water levels that rest on the levels never rise downstream (module docs, steps 4–5).
     fn spill(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
-        let (level, _, outlet) = self.flood(i, k);
+        let lake = self.flood(i, k);
+        let (level, outlet) = (lake.0, lake.2);
         let o = outlet?;
         let mut at = o;
         for _ in 0..=LAKE_WALK {
@@ -386,16 +421,33 @@ impl<'a> Network<'a> {
     /// the breached pits that drain into it, then (`lakes: 3`) the lakes that spill into it.
     pub fn upstream(&mut self, i: i64, k: i64) -> Vec<(i64, i64)> {
         let mut out = Vec::new();
+        let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
+        let n = BLOCK as usize;
+        // Inside its block a node's neighbours are in the same block: one lookup for all eight.
+        let interior = (1..n - 1).contains(&li) && (1..n - 1).contains(&lk);
+        let hb = interior.then(|| self.height_block((bx, bz)));
         for (d, (di, dk)) in OFFSETS.iter().enumerate() {
             if !self.plan.linked(i, k, d) {
                 continue;
             }
             let (ni, nk) = (i + di, k + dk);
-            if self.lattice_down(ni, nk) == Some((i, k)) {
+            let down = match &hb {
+                Some(hb) => {
+                    let v = (lk as i64 + dk) as usize * n + (li as i64 + di) as usize;
+                    match hb.down[v] {
+                        NONE => None,
+                        e => {
+                            let (ei, ek) = OFFSETS[e as usize];
+                            Some((ni + ei, nk + ek))
+                        }
+                    }
+                }
+                None => self.lattice_down(ni, nk),
+            };
+            if down == Some((i, k)) {
                 out.push((ni, nk));
             }
         }
-        let ((bx, _), (bz, _)) = (block_of(i), block_of(k));
         if let Some(pits) = self.route_block((bx, bz)).into.get(&(i, k)) {
             out.extend_from_slice(pits);
         }
@@ -440,10 +492,14 @@ impl<'a> Network<'a> {
         self.flow_block((bx, bz)).q[lk * BLOCK as usize + li]
     }
 
+    fn lake_block(&mut self, b: (i64, i64)) -> Arc<LakeBlock> {
+        self.block(b, |n| &mut n.lakes, &CACHES.lakes, Self::compute_lakes)
+    }
+
     /// Level of the highest lake covering node `(i, k)`.
     pub fn lake(&mut self, i: i64, k: i64) -> Option<f32> {
         let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
-        let l = self.flow_block((bx, bz)).lake[lk * BLOCK as usize + li];
+        let l = self.lake_block((bx, bz)).lake[lk * BLOCK as usize + li];
         (!l.is_nan()).then_some(l)
     }
 
@@ -517,31 +573,6 @@ impl<'a> Network<'a> {
                 q[lk * n + li] = self.count(i0 + li as i64, k0 + lk as i64, &mut memo);
             }
         }
-        let mut lake = vec![f32::NAN; n * n];
-        let raise = |lake: &mut Vec<f32>, fi: i64, fk: i64, level: f32| {
-            let (li, lk) = (fi - i0, fk - k0);
-            if (0..BLOCK).contains(&li) && (0..BLOCK).contains(&lk) {
-                let v = &mut lake[lk as usize * n + li as usize];
-                if v.is_nan() || level > *v {
-                    *v = level;
-                }
-            }
-        };
-        // The nodes each lake floods.
-        let r = LAKE_RADIUS;
-        let mut levels: HashMap<(i64, i64), f32> = HashMap::default();
-        for k in k0 - r..k0 + BLOCK + r {
-            for i in i0 - r..i0 + BLOCK + r {
-                if !self.is_lake_pit(i, k) {
-                    continue;
-                }
-                let (level, flooded, _) = self.flood(i, k);
-                levels.insert((i, k), level);
-                for (fi, fk) in flooded {
-                    raise(&mut lake, fi, fk, level);
-                }
-            }
-        }
         // Water levels: incised below the node height by the discharge, faded out with the
         // distance to the end of the flow, and never below the end's base level.
         let mut ends: Ends = HashMap::default();
@@ -556,14 +587,7 @@ impl<'a> Network<'a> {
                     continue;
                 };
                 let base = if self.is_pit(end.0, end.1) {
-                    match levels.get(&end) {
-                        Some(&l) => l,
-                        None => {
-                            let l = self.flood(end.0, end.1).0;
-                            levels.insert(end, l);
-                            l
-                        }
-                    }
+                    self.flood(end.0, end.1).0
                 } else {
                     self.plan.sea_level_m
                 };
@@ -572,7 +596,32 @@ impl<'a> Network<'a> {
                 w[lk * n + li] = (h - cut).max(base).min(h.max(base));
             }
         }
-        FlowBlock { q, lake, w }
+        FlowBlock { q, w }
+    }
+
+    /// The lake levels of block `b`: each node takes the highest level of the lakes whose
+    /// floods cover it (module docs, step 5).
+    fn compute_lakes(&mut self, (bx, bz): (i64, i64)) -> LakeBlock {
+        let n = BLOCK as usize;
+        let (i0, k0) = (bx * BLOCK, bz * BLOCK);
+        let mut lake = vec![f32::NAN; n * n];
+        let r = self.plan.lake_radius;
+        for (i, k) in self.sinks(i0 - r..i0 + BLOCK + r, k0 - r..k0 + BLOCK + r) {
+            if !self.is_lake_pit(i, k) {
+                continue;
+            }
+            let flood = self.flood(i, k);
+            for &(fi, fk) in &flood.1 {
+                let (li, lk) = (fi - i0, fk - k0);
+                if (0..BLOCK).contains(&li) && (0..BLOCK).contains(&lk) {
+                    let v = &mut lake[lk as usize * n + li as usize];
+                    if v.is_nan() || flood.0 > *v {
+                        *v = flood.0;
+                    }
+                }
+            }
+        }
+        LakeBlock { lake }
     }
 
     /// Where the flow from `(i, k)` ends (the sea or a pit) and in how many steps, if at most
@@ -615,8 +664,18 @@ impl<'a> Network<'a> {
 
     /// The lake of pit `(i, k)`: its level, the nodes it covers and the outlet (the first node
     /// below the level beyond the saddle; `None` when the search stopped first) (module docs,
-    /// step 5).
-    pub fn flood(&mut self, i: i64, k: i64) -> Lake {
+    /// step 5), from the process cache or computed.
+    pub fn flood(&mut self, i: i64, k: i64) -> Arc<Lake> {
+        let key = (self.plan.fingerprint, (i, k));
+        if let Some(lake) = CACHES.floods.get(&key) {
+            return lake;
+        }
+        let lake = Arc::new(self.compute_flood(i, k));
+        CACHES.floods.insert(key, lake.clone());
+        lake
+    }
+
+    fn compute_flood(&mut self, i: i64, k: i64) -> Lake {
         #[derive(PartialEq)]
         struct Entry(f32, i64, i64);
         impl Eq for Entry {}
@@ -665,7 +724,9 @@ impl<'a> Network<'a> {
                 outlet = Some((ni, nk));
                 break;
             }
-            if flooded.len() >= LAKE_MAX_NODES || (ni - i).abs().max((nk - k).abs()) > LAKE_RADIUS {
+            if flooded.len() >= self.plan.lake_max_nodes
+                || (ni - i).abs().max((nk - k).abs()) > self.plan.lake_radius
+            {
                 break;
             }
             level = level.max(h);
