@@ -846,6 +846,17 @@ impl RiverJob {
     }
 }
 
+/// The world rectangle `(x0, z0, x1, z1)`, metres, of the `w × h` samples
+/// `(gx0 + i, gz0 + j)·spacing_m` of a field.
+fn field_rect(spacing_m: f32, gx0: i64, gz0: i64, w: usize, h: usize) -> (f32, f32, f32, f32) {
+    (
+        gx0 as f32 * spacing_m,
+        gz0 as f32 * spacing_m,
+        (gx0 + w as i64 - 1) as f32 * spacing_m,
+        (gz0 + h as i64 - 1) as f32 * spacing_m,
+    )
+}
+
 /// The job of the samples `(gx0 + i, gz0 + j)·spacing` of a field (its world rectangle).
 pub fn job_for(
     earth: &EarthPlan,
@@ -856,10 +867,7 @@ pub fn job_for(
     w: usize,
     h: usize,
 ) -> RiverJob {
-    let x0 = gx0 as f32 * spacing_m;
-    let z0 = gz0 as f32 * spacing_m;
-    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
-    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
     // About 8 × 8 bins over the rectangle, at least 8 m and at most a node spacing.
     let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
     Network::new(earth, plan).job(x0, z0, x1, z1, bin_m)
@@ -875,10 +883,7 @@ pub fn water_job_for(
     w: usize,
     h: usize,
 ) -> RiverJob {
-    let x0 = gx0 as f32 * spacing_m;
-    let z0 = gz0 as f32 * spacing_m;
-    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
-    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
     let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
     Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m)
 }
@@ -894,10 +899,7 @@ pub fn lake_job_for(
     w: usize,
     h: usize,
 ) -> RiverJob {
-    let x0 = gx0 as f32 * spacing_m;
-    let z0 = gz0 as f32 * spacing_m;
-    let x1 = (gx0 + w as i64 - 1) as f32 * spacing_m;
-    let z1 = (gz0 + h as i64 - 1) as f32 * spacing_m;
+    let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
     Network::new(earth, plan).lake_job(x0, z0, x1, z1)
 }
 
