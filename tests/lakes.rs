@@ -248,7 +248,7 @@ fn faster_paths_are_bit_exact(lakes: u32) {
 }
 
 /// The basins a mountain belt's ridges close fill to their outlets (`lakes: 5`):
-/// in the range 112 km east and 100 km north of the origin, 65 km square at 64 m (the basins
+/// in the range around (112 km, −100 km), 65 km square at 64 m (the basins
 /// lie wholly inside: the fill drains the square's edges), the
 /// land that a priority-flood fill of the water surface (lakes and rivers included) raises by
 /// more than 2 m falls from over a fifth with the floods of `lakes: 4`, whose search stops at
