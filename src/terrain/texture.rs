@@ -462,6 +462,46 @@ mod tests {
     }
 
     #[test]
+    fn the_alpine_zone_is_rock_below_the_snow_line_alike_in_batch_and_alone() {
+        // The classic world's grassland has its snow line at 160 m: with an alpine fraction
+        // of ¼ its gentle ground is grass below 120 m and rock from 150 m up to the snow.
+        let mut params = WorldParams::classic();
+        params.texturing.alpine_fraction = 0.25;
+        let (alpine, bare) = (
+            TexturePlan::new(&params),
+            TexturePlan::new(&WorldParams::classic()),
+        );
+        let n = 800;
+        let heights: Vec<f32> = (0..n).map(|i| i as f32 * 0.25).collect();
+        let flat = vec![1.0f32; n];
+        let grass: Vec<f32> = (0..n * 4)
+            .map(|i| if i % 4 == 2 { 1.0 } else { 0.0 })
+            .collect();
+        let with = batch_matching_per_vertex(&alpine, &heights, &flat, &grass, "alpine");
+        let without = batch_matching_per_vertex(&bare, &heights, &flat, &grass, "no alpine");
+        let mut rock = 0;
+        for (v, h) in heights.iter().enumerate() {
+            if *h > 10.0 && *h < 119.5 {
+                assert_eq!(with[v], material::GRASS, "{h} m, below the band");
+            }
+            if *h > 150.5 && *h < 153.5 {
+                assert_eq!(
+                    (with[v], without[v]),
+                    (material::ROCK, material::GRASS),
+                    "{h} m"
+                );
+                rock += 1;
+            }
+        }
+        assert!(rock > 5, "{rock} vertices in the band's upper quarter");
+        // Mixed weights take the general path of the batch.
+        let mixed: Vec<f32> = (0..n * 4)
+            .map(|i| if i % 4 == (i / 40) % 4 { 0.7 } else { 0.1 })
+            .collect();
+        batch_matching_per_vertex(&alpine, &heights, &flat, &mixed, "alpine, mixed weights");
+    }
+
+    #[test]
     fn batch_equals_per_vertex() {
         let p = TexturePlan::new(&WorldParams::classic());
         let n = 300;

@@ -113,8 +113,8 @@ pub struct Texturing {
     /// of the band below the snow line (above the tree line, where the climate's cooled
     /// biomes would keep their grass and soil up to the summits;
     /// [`crate::terrain::texture`]). `0.25` in new worlds (a 2.8 km snow line: rock from
-    /// 2.1 km, half the ground at 2.36 km, all of it from 2.63 km); worlds stored before it have none (`0`, absent) and keep
-    /// their materials and pages.
+    /// 2.1 km, half the ground at 2.36 km, all of it from 2.63 km); worlds stored before it
+    /// have none (`0`, absent) and keep their materials and pages.
     #[serde(default, skip_serializing_if = "Texturing::is_no_alpine")]
     pub alpine_fraction: f32,
 }

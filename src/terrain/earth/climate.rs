@@ -339,9 +339,9 @@ pub fn weights_and_macro(
 ///
 /// The blurred weights give the node's climate as a mean biome index `m = Σ_b (b + ½)·w_b`; the
 /// cooling moved it down by `e · K / lapse_m` biomes, `e ≥ 0` the node's large-scale elevation
-/// (the one its biome was read at), so the sea-level index is `m + e · K / lapse_m`. Its snow line is
-/// the piecewise-linear interpolation of `lines` between the biomes' centres (the first's below
-/// the first centre, the last's above the last). `dims` = `(nw, nh, r)`: the window's nodes and
+/// (the one its biome was read at), so the sea-level index is `m + e · K / lapse_m`. Its snow
+/// line is the piecewise-linear interpolation of `lines` between the biomes' centres (the
+/// first's below the first centre, the last's above the last). `dims` = `(nw, nh, r)`: the window's nodes and
 /// the blur margin of `node_macro`. A function of the node's blurred weights and macro fields,
 /// so of its lattice index alone: every window gives a node the same bits.
 fn node_sea_lines(

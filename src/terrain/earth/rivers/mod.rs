@@ -28,9 +28,9 @@
 //!    lake in their bottoms below a dry closed floor). Each pit's flood is computed once per
 //!    world and kept in a bounded process cache.
 //!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
-//!    with `lakes` 3 and 4 (4: the default of new worlds) a node below the level whose steepest descent
-//!    runs back into the lake, or into a pit no lower than the lake's, is flooded too (on flat
-//!    land two neighbouring pits are each other's first node below the level), and a lake
+//!    with `lakes` 3 to 5 (4: the default of new worlds) a node below the level whose steepest
+//!    descent runs back into the lake, or into a pit no lower than the lake's, is flooded too (on
+//!    flat land two neighbouring pits are each other's first node below the level), and a lake
 //!    whose flood found an outlet spills there when the flow from the outlet reaches the sea,
 //!    or first a lake whose `(level, index)` is lower (so levels never rise along a chain of
 //!    spills and the flow has no cycle): its pit drains to the outlet, the discharge goes on,
