@@ -125,6 +125,20 @@ try {
     if (s.errors.length) failures.push(`the viewer shows errors: ${s.errors.join(" | ")}`);
     if (s.held < 1) failures.push("no tile meshes held");
     if (s.protocol !== "strata.stream.v2") failures.push(`the viewer speaks ${s.protocol}, not strata.stream.v2`);
+    // The fog is complete where the held ground ends, so its edge never stands on the horizon as
+    // a stepped wall: at most the distance from the camera to the nearest side of the held
+    // tiles' bounds, times the cosine of the view cone's half angle (the fog grows with depth).
+    const ground = await page.evaluate(() => window.__strata.heldGround());
+    const [cx, , cz] = ground.camera;
+    const b = ground.tiles.reduce(
+      (a, t) => [Math.min(a[0], t[0]), Math.min(a[1], t[1]), Math.max(a[2], t[2]), Math.max(a[3], t[3])],
+      [Infinity, Infinity, -Infinity, -Infinity],
+    );
+    const edge = Math.min(cx - b[0], cz - b[1], b[2] - cx, b[3] - cz);
+    const limit = edge * Math.cos((ground.halfAngleDeg * Math.PI) / 180);
+    console.log(`fog complete at ${s.fogFar.toFixed(0)} m; held ground's nearest edge ${edge.toFixed(0)} m (limit ${limit.toFixed(0)} m)`);
+    if (!(s.fogFar > 0 && s.fogFar <= limit + 1))
+      failures.push(`the fog is complete at ${s.fogFar} m, beyond the held ground's edge (${limit.toFixed(0)} m in depth)`);
     console.log(
       `rivers: ${s.rivers} ribbons, ${(s.riverLength / 1000).toFixed(2)} km of centre line, ` +
         `lines for ${s.riverTiles} tiles, ${s.riverPending} requests left`,

@@ -27,7 +27,7 @@ import { addSplat } from "./splat";
 import { PtexStore } from "./ptex";
 import { RiverLayer } from "./rivers";
 import { shoreSamples, type ShoreSamples } from "./shoreline";
-import { selectView, tileKey } from "./view";
+import { selectView, tileKey, viewExtentM, type Square } from "./view";
 import { addPatch, crestRegion, pointRegion, removePatch, TOOLS, type GroundPoint, type Tool } from "./edit";
 
 interface Held {
@@ -72,6 +72,8 @@ interface StrataState {
   reconnects: number; // reconnection attempts
   retiring: number; // tiles that left the view, kept until their replacements cover them
   minClearance: number; // lowest camera height above the ground before the collision check, metres
+  fogFar: number; // where the fog is complete, metres (the nearest edge of the held ground, or less)
+  heldGround: () => { camera: number[]; halfAngleDeg: number; tiles: number[][] }; // the camera, its view cone and each held tile's [x0, z0, x1, z1], metres
   flySpeed: number; // how fast WASD flies now, metres per second (it grows with the height above the ground)
   horizon: number; // the horizon line's row as a fraction of the picture's height from the top (0 when above it)
   protocol: string; // the stream protocol the server speaks
@@ -130,6 +132,8 @@ const state: StrataState = {
   reconnects: 0,
   retiring: 0,
   minClearance: Infinity,
+  fogFar: 0,
+  heldGround: () => ({ camera: [], halfAngleDeg: 0, tiles: [] }),
   flySpeed: 0,
   horizon: 0,
   protocol: "",
@@ -211,7 +215,12 @@ renderer.setSize(window.innerWidth, window.innerHeight);
 const SKY = new THREE.Color().setRGB(0.62, 0.74, 0.86, THREE.SRGBColorSpace);
 const scene = new THREE.Scene();
 scene.background = SKY;
-scene.fog = new THREE.Fog(SKY, 8000, 36000);
+// Linear fog from FOG_NEAR_M to at most FOG_FAR_M; `updateFog` brings the far end in to the edge
+// of the ground the view holds, so that edge never shows against the sky.
+const FOG_NEAR_M = 8000;
+const FOG_FAR_M = 36000;
+const fog = new THREE.Fog(SKY, FOG_NEAR_M, FOG_FAR_M);
+scene.fog = fog;
 scene.add(new THREE.HemisphereLight(0xdde8ff, 0x4a3c2a, 0.8));
 const sun = new THREE.DirectionalLight(0xfff1d8, 2.8);
 sun.position.set(-0.8, 0.55, -0.3);
@@ -233,6 +242,14 @@ state.moveBy = (dx, dz) => {
   controls.target.z += dz;
 };
 
+state.heldGround = () => ({
+  camera: camera.position.toArray(),
+  halfAngleDeg: halfAngleDeg(),
+  tiles: [...heldTiles()].map((t) => {
+    const side = t.spacing * (t.size - 1);
+    return [t.originX, t.originZ, t.originX + side, t.originZ + side];
+  }),
+});
 state.shore = (cols, rows) => shoreSamples([...heldTiles()], camera, cols, rows);
 state.showWater = (on) => {
   terrain.traverse((o) => {
@@ -507,6 +524,24 @@ function owe(): void {
 }
 
 const lastForward = new THREE.Vector3();
+/** The ground the last view sent holds (its coarsest square), metres; none before the first. */
+let extent: Square | undefined;
+
+/**
+ * Makes the fog complete where the held ground ends: at the nearest edge of the view's extent,
+ * shortened by the cosine of the view cone's half angle, since the fog grows with the depth along
+ * the view direction and an edge at the side of the picture is that much shallower than it is far.
+ * Without it the last ring's outer edge stood on the horizon as a stepped wall of tile edges.
+ */
+function updateFog(): void {
+  if (!extent) return;
+  const p = camera.position;
+  const edge = Math.min(p.x - extent.x0, extent.x1 - p.x, p.z - extent.z0, extent.z1 - p.z);
+  const far = Math.max(1000, Math.min(FOG_FAR_M, edge * Math.cos(THREE.MathUtils.degToRad(halfAngleDeg()))));
+  fog.far = far;
+  fog.near = Math.min(FOG_NEAR_M, 0.5 * far);
+  state.fogFar = far;
+}
 
 /** The half angle of the camera's view cone (to the picture's corners), degrees. */
 function halfAngleDeg(): number {
@@ -532,6 +567,7 @@ function sendView(force = false): void {
   lastCell = cell;
   lastSent = now;
   wanted = selectView(x, z, rings, cellM);
+  extent = viewExtentM(x, z, rings, cellM);
   state.viewTiles = wanted.size;
   const y = camera.position.y;
   lastForward.copy(forward);
@@ -1031,6 +1067,7 @@ function frame(now: number): void {
   controls.update();
   keepAboveGround();
   sendView(false); // throttled: only when the camera crossed a LOD-0 tile or turned
+  updateFog();
   refreshHidden();
   curveTool?.update(window.innerHeight);
   renderer.render(scene, camera);

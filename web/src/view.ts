@@ -12,7 +12,7 @@ export const tileKey = (lod: number, x: number, z: number): string => `${lod}/${
 const MAX_LEVELS = 13;
 const MAX_RINGS_PER_LEVEL = 16;
 
-interface Square {
+export interface Square {
   x0: number;
   z0: number;
   x1: number;
@@ -22,8 +22,8 @@ interface Square {
 const divEuclid2 = (v: number): number => Math.floor(v / 2);
 const remEuclid2 = (v: number): number => v - 2 * Math.floor(v / 2);
 
-/** The keys of the tiles of a view at `(x, z)` metres with `rings`, as the server selects them. */
-export function selectView(xM: number, zM: number, rings: number[], cellM: number): Set<string> {
+/** The squares of tile indices a view holds at each LOD, finest first, as the server selects them. */
+function viewSquares(xM: number, zM: number, rings: number[], cellM: number): Square[] {
   const levels = Math.min(rings.length, MAX_LEVELS);
   const squares: Square[] = [];
   for (let l = 0; l < levels; l++) {
@@ -50,6 +50,25 @@ export function selectView(xM: number, zM: number, rings: number[], cellM: numbe
     };
     squares.push(l + 1 < levels ? aligned : sq);
   }
+  return squares;
+}
+
+/**
+ * The ground a view at `(x, z)` metres with `rings` covers: its coarsest square, in metres
+ * (`x1`, `z1` exclusive). Beyond it nothing is drawn, so the fog must be complete at its edge.
+ */
+export function viewExtentM(xM: number, zM: number, rings: number[], cellM: number): Square {
+  const squares = viewSquares(xM, zM, rings, cellM);
+  const l = squares.length - 1;
+  if (l < 0) return { x0: xM, z0: zM, x1: xM, z1: zM };
+  const size = 64 * cellM * 2 ** l;
+  const sq = squares[l];
+  return { x0: sq.x0 * size, z0: sq.z0 * size, x1: (sq.x1 + 1) * size, z1: (sq.z1 + 1) * size };
+}
+
+/** The keys of the tiles of a view at `(x, z)` metres with `rings`, as the server selects them. */
+export function selectView(xM: number, zM: number, rings: number[], cellM: number): Set<string> {
+  const squares = viewSquares(xM, zM, rings, cellM);
   const out = new Set<string>();
   squares.forEach((sq, l) => {
     for (let z = sq.z0; z <= sq.z1; z++) {
