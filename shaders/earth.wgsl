@@ -82,13 +82,14 @@ const LAYER_RELIEF: u32 = 0u;
 const LAYER_GULLY: u32 = 1u;
 
 // `earth::Layer`: kind (LAYER_RELIEF or LAYER_GULLY), the relief flags as 0/1 (`ridged` on a gully
-// layer: incised), the amplitude.
+// layer: incised), the amplitude, and a gully layer's squared phasor floor (0: none).
 struct EarthLayer {
     kind: u32,
     fine: u32,
     ridged: u32,
     amp: f32,
     octave: EarthOctave,
+    floor2: f32,
 }
 
 const WORKGROUP: u32 = 64u;
@@ -267,8 +268,9 @@ fn macro_fields(x: f32, z: f32) -> vec3<f32> {
     return vec3<f32>(elev, amp, ridge);
 }
 
-// `kernel::gullies` for one sample: (stripe value, d/dx, d/dz) for stripes along g.
-fn gullies(o: EarthOctave, x: f32, z: f32, g: vec2<f32>) -> vec3<f32> {
+// `kernel::gullies` for one sample: (stripe value, d/dx, d/dz) for stripes along g, the phasor
+// divided by the larger of its magnitude and √floor2.
+fn gullies(o: EarthOctave, floor2: f32, x: f32, z: f32, g: vec2<f32>) -> vec3<f32> {
     let q = octave_coords(o, x, z);
     let k = rn(TAU * o.freq);
     let g2 = rn(g.x * g.x) + rn(g.y * g.y);
@@ -298,7 +300,7 @@ fn gullies(o: EarthOctave, x: f32, z: f32, g: vec2<f32>) -> vec3<f32> {
     let sb = sc01.x + rn((sc11.x - sc01.x) * wu);
     let c = ca + rn((cb - ca) * wv);
     let s = sa + rn((sb - sa) * wv);
-    let n = inv_sqrt((rn(c * c) + rn(s * s)) + GULLY_N_EPS);
+    let n = inv_sqrt(max(rn(c * c) + rn(s * s), floor2) + GULLY_N_EPS);
     let ds = rn(rn(-s * n) * k);
     return vec3<f32>(rn(c * n), rn(ds * tx), rn(ds * tz));
 }
@@ -452,7 +454,7 @@ fn earth_heights(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_wor
             gx += rn(rn(a * dsig) * wdx);
             gz += rn(rn(a * dsig) * wdz);
         } else {
-            var nd = gullies(o, x, z, vec2<f32>(gx, gz));
+            var nd = gullies(o, layer.floor2, x, z, vec2<f32>(gx, gz));
             if (layer.ridged != 0u) {
                 nd = incise(nd);
             }

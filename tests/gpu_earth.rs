@@ -145,8 +145,10 @@ fn gpu_earth_field_matches_cpu() {
         key(0, 0, 0),
         key(0, -3, -7),
         key(0, 9375, -40),
-        // LOD 3 (8 m, 512 m tiles).
+        // LOD 3 (8 m, 512 m tiles), and in the range 115 km out, where the gullies' phasors
+        // cancel (`gullies: 3` fades them there: tests/gullies.rs).
         key(3, -40, 25),
+        key(3, 219, 231),
         // LOD 6 (64 m, 4 096 m tiles): the mountain belt around x = 110 km, z = 0, and x ≈ −600 km.
         key(6, 26, 0),
         key(6, 26, -1),

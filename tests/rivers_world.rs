@@ -1,9 +1,10 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 2`,
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 3`,
 //! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too, and
-//! so does one stored with `valleys: 6` before new worlds got the coarse lattice.
+//! so do one stored with `valleys: 6` before new worlds got the coarse lattice and one stored
+//! with `gullies: 2`.
 
 mod common;
 
@@ -193,6 +194,26 @@ async fn a_world_stored_with_the_sixth_valleys_and_no_coarse_lattice_serves_the_
     );
 }
 
+/// A world stored with the default of new worlds before `gullies: 3` (`gullies: 2`, the coarse
+/// lattice, the sea-level snow lines and the alpine zone, `tests/fixtures/gullies2-world/`)
+/// keeps its bytes, in the range's mountains too, where a bare seed, whose gullies fade out
+/// where their phasors cancel, gives other bytes.
+#[tokio::test]
+async fn a_world_stored_with_the_second_gullies_serves_the_same_tile_bytes() {
+    const WORLD: &str = "d0f1ce5947322442edd5f13c";
+    const FIXTURE: &str = "gullies2-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 52).await;
+    let world = &scene["world"];
+    assert_eq!(world["earth"]["gullies"], 2, "{world}");
+    assert_eq!(world["earth"]["coarse_lattice_cells"], 256, "{world}");
+    assert_eq!(world["texturing"]["alpine_fraction"], 0.25, "{world}");
+    let differ = bare_seed_differs(&server, FIXTURE).await;
+    assert!(
+        differ > 0,
+        "a bare seed has gullies: 3, which no fixture tile shows"
+    );
+}
+
 #[test]
 fn new_scenes_carve_the_sixth_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
@@ -203,7 +224,7 @@ fn new_scenes_carve_the_sixth_valleys_and_accept_only_known_ones() {
         older["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&older).expect("older valleys are accepted");
     }
-    assert_eq!(scene["world"]["earth"]["gullies"], 2);
+    assert_eq!(scene["world"]["earth"]["gullies"], 3);
     let mut bad = scene.clone();
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(7);
     let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 7 is refused");

@@ -84,7 +84,7 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("INCISE_EPS", k::INCISE_EPS),
         ("INCISE_MEAN", k::INCISE_MEAN),
         ("INCISE_NORM", k::INCISE_NORM),
-        // `kernel::gullies`: `inv_sqrt(g2 + 1e-12)` and `inv_sqrt(c² + s² + 1e-6)`.
+        // `kernel::gullies`: `inv_sqrt(g2 + 1e-12)` and `inv_sqrt(max(c² + s², floor²) + 1e-6)`.
         ("GULLY_G_EPS", 1e-12),
         ("GULLY_N_EPS", 1e-6),
         // `trig::sincos_turns`.

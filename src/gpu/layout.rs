@@ -225,13 +225,15 @@ pub struct GpuEarthLayer {
     pub amp: f32,
     /// The layer's noise (`amp` unused).
     pub octave: GpuEarthOctave,
+    /// A gully layer's squared phasor floor (`LayerKind::Gully::floor2`); 0 for relief.
+    pub floor2: f32,
 }
 
 impl From<&Layer> for GpuEarthLayer {
     fn from(l: &Layer) -> Self {
-        let (kind, fine, ridged) = match l.kind {
-            LayerKind::Relief { fine, ridged } => (0, fine as u32, ridged as u32),
-            LayerKind::Gully { incised } => (1, 0, incised as u32),
+        let (kind, fine, ridged, floor2) = match l.kind {
+            LayerKind::Relief { fine, ridged } => (0, fine as u32, ridged as u32, 0.0),
+            LayerKind::Gully { incised, floor2 } => (1, 0, incised as u32, floor2),
         };
         Self {
             kind,
@@ -239,6 +241,7 @@ impl From<&Layer> for GpuEarthLayer {
             ridged,
             amp: l.amp,
             octave: GpuEarthOctave::from(&l.octave),
+            floor2,
         }
     }
 }

@@ -227,8 +227,20 @@ pub const RIDGE_EPS2: f32 = 0.12 * 0.12;
 /// largest (proportionally less where it is smaller); below it they fade in.
 pub const GULLY_SLOPE: f32 = 0.35;
 
+/// Square of the smallest magnitude of the blended phasor that [`gullies`] divides by in worlds
+/// with `gullies: 3` (magnitude 1/√8 ≈ 0.35; a power of two, so the WGSL twin's `max` compares
+/// the same value). Where the corners' phasors nearly cancel, the normalised stripe `c/|p|`
+/// turns from crest to trough within a fraction of a sample: the full depth of the gully (up to
+/// 320 m for the coarsest octave in a mountain belt) as a cliff one sample wide, seen in the
+/// viewer as vertical walls with a comb of stripes and at 8 m as knife-edge lines. Dividing by
+/// `max(|p|, 0.35)` keeps full stripes wherever the phasors agree and fades the stripe to 0
+/// continuously where they cancel. Over the range's 25 km at 8 m the edges steeper than 63° fell
+/// from 0.081 % to 0.016 % and the steepest from 87° to 80° (0.2: 0.030 %, 0.5: 0.011 %).
+pub const GULLY_PHASOR_FLOOR2: f32 = 0.125;
+
 /// One erosion-filter octave: returns the stripe value in `[−1, 1]` and its gradient (per metre)
-/// for stripes whose crests run along `(gx, gz)`.
+/// for stripes whose crests run along `(gx, gz)`, the blended phasor divided by the larger of its
+/// magnitude and `√floor2` ([`GULLY_PHASOR_FLOOR2`] in `gullies: 3` worlds, else 0).
 ///
 /// The four corners of the sample's cell each carry a wave `cos 2π(d·t' + φ_c)` through the
 /// sample, where `d` is the offset from the corner in cells, `t'` the unit vector across the
@@ -238,7 +250,17 @@ pub const GULLY_SLOPE: f32 = 0.35;
 /// weights and of the direction is neglected, as in the point-evaluable filters this follows).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn gullies(o: &NoiseOctave, xs: &L, zs: &L, gx: &L, gz: &L, out: &mut L, dx: &mut L, dz: &mut L) {
+fn gullies(
+    o: &NoiseOctave,
+    floor2: f32,
+    xs: &L,
+    zs: &L,
+    gx: &L,
+    gz: &L,
+    out: &mut L,
+    dx: &mut L,
+    dz: &mut L,
+) {
     let mut qx = [0.0; LANES];
     let mut qz = [0.0; LANES];
     octave_coords(o, xs, zs, &mut qx, &mut qz);
@@ -269,7 +291,8 @@ fn gullies(o: &NoiseOctave, xs: &L, zs: &L, gx: &L, gz: &L, out: &mut L, dx: &mu
         let sb = s01 + (s11 - s01) * wu;
         let c = ca + (cb - ca) * wv;
         let s = sa + (sb - sa) * wv;
-        let n = inv_sqrt(c * c + s * s + 1e-6);
+        // `max(x, 0)` is `x` for the sum of squares: worlds before `gullies: 3` keep their bits.
+        let n = inv_sqrt((c * c + s * s).max(floor2) + 1e-6);
         out[l] = c * n;
         // d/dp cos(θ) = −sin(θ) · 2π · freq · t (world frame).
         let ds = -s * n * k;
@@ -401,8 +424,8 @@ impl Partial {
                         gz[l] += a * dsig * wdz;
                     }
                 }
-                LayerKind::Gully { incised } => {
-                    gullies(o, xs, zs, gx, gz, &mut n, &mut dx, &mut dz);
+                LayerKind::Gully { incised, floor2 } => {
+                    gullies(o, floor2, xs, zs, gx, gz, &mut n, &mut dx, &mut dz);
                     if incised {
                         incise(&mut n, &mut dx, &mut dz);
                     }

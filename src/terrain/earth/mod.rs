@@ -135,7 +135,7 @@ pub struct MacroPlan {
 }
 
 /// What a layer adds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LayerKind {
     /// One relief octave; `fine` ones (wavelength at most the coarsest gully spacing) are scaled
     /// by the biome's roughness.
@@ -147,8 +147,13 @@ pub enum LayerKind {
     },
     /// One erosion-filter octave.
     Gully {
-        /// Incised cross-section (`EarthParams::gullies` 2): V-shaped troughs, rounded crests.
+        /// Incised cross-section (`EarthParams::gullies` 2 and 3): V-shaped troughs, rounded
+        /// crests.
         incised: bool,
+        /// Square of the smallest magnitude the blended phasor is divided by
+        /// (`EarthParams::gullies` 3: [`kernel::GULLY_PHASOR_FLOOR2`]; 0 before, which leaves
+        /// every bit as it was).
+        floor2: f32,
     },
 }
 
@@ -305,6 +310,11 @@ impl EarthPlan {
             let layer = Layer {
                 kind: LayerKind::Gully {
                     incised: e.gullies >= 2,
+                    floor2: if e.gullies >= 3 {
+                        kernel::GULLY_PHASOR_FLOOR2
+                    } else {
+                        0.0
+                    },
                 },
                 octave: o,
                 amp: amp as f32,

@@ -52,10 +52,13 @@ pub struct EarthParams {
     pub gully_scale_m: f32,
     /// Erosion filter: gully octaves, each half the spacing of the previous, in [0, 8].
     pub gully_octaves: u32,
-    /// Erosion filter: the gullies' cross-section, 1 or 2. `1`: a cosine, as high on its crests
+    /// Erosion filter: the gullies' cross-section, 1 to 3. `1`: a cosine, as high on its crests
     /// as it is deep in its troughs (worlds stored before `2` existed have no `gullies` and keep
-    /// it, and their bytes); `2` (new worlds): incised, V-shaped troughs between broad rounded
-    /// crests, so the stripes read as valleys cut into the slope ([`super::kernel`]).
+    /// it, and their bytes); `2` (new worlds until `3`): incised, V-shaped troughs between broad
+    /// rounded crests, so the stripes read as valleys cut into the slope ([`super::kernel`]);
+    /// `3` (new worlds): the gullies of `2` faded out where the stripes of a cell's corners
+    /// cancel, instead of flipping from crest to trough within a sample
+    /// ([`super::kernel::GULLY_PHASOR_FLOOR2`]): no cliffs one sample wide.
     #[serde(
         default = "EarthParams::first_gullies",
         skip_serializing_if = "EarthParams::is_first_gullies"
@@ -241,7 +244,7 @@ impl Default for EarthParams {
             erosion: 1.0,
             gully_scale_m: 8000.0,
             gully_octaves: 6,
-            gullies: 2,
+            gullies: 3,
             lattice_cells: Some(16),
             coarse_lattice_cells: Some(256),
             snow_lines: 2,
@@ -306,7 +309,11 @@ impl EarthParams {
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
     pub fn validate(&self, cell_m: f32) -> Result<(), ParamError> {
         let m = "must be in";
-        check((1..=2).contains(&self.gullies), "gullies", "must be 1 or 2")?;
+        check(
+            (1..=3).contains(&self.gullies),
+            "gullies",
+            "must be 1, 2 or 3",
+        )?;
         check(
             (1..=2).contains(&self.snow_lines),
             "snow_lines",
