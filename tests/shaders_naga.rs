@@ -288,7 +288,7 @@ fn earth_structs_match_the_wgsl_layout() {
         &module,
         "EarthLayer",
         GpuEarthLayer,
-        [kind, fine, ridged, amp, octave]
+        [kind, fine, ridged, amp, octave, floor2]
     );
     check_layout!(
         &module,

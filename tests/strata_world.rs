@@ -475,6 +475,7 @@ fn chunks_of_a_world_stored_before_chunk_geology_keep_their_bytes() {
     // The settings of new worlds then that today's default may have moved on from.
     doc["earth"]["rivers"]["valleys"] = json!(3);
     doc["earth"]["rivers"]["lakes"] = json!(2);
+    doc["earth"]["gullies"] = json!(2);
     let earth = doc["earth"].as_object_mut().expect("earth settings");
     earth.remove("coarse_lattice_cells");
     earth.remove("snow_lines");

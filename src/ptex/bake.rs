@@ -1154,11 +1154,11 @@ mod tests {
         // row-parallel interiors (main at d29b3c9), whole tiles and chosen faces, 8² to 256²,
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
         // carve later valleys, which move these tiles' heights, the bake's input; no coarse
-        // lattice, which moves them too; the first snow lines; no alpine zone; and
-        // `ptex_blend: 1`, as every world stored before `2` bakes).
+        // lattice, which moves them too; the first snow lines; no alpine zone; the second
+        // gullies; and `ptex_blend: 1`, as every world stored before `2` bakes).
         let mut params = WorldParams::default();
         if let Some(e) = params.earth.as_mut() {
-            (e.coarse_lattice_cells, e.snow_lines) = (None, 1);
+            (e.coarse_lattice_cells, e.snow_lines, e.gullies) = (None, 1, 2);
         }
         if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
             rivers.valleys = 3;
