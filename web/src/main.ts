@@ -528,15 +528,44 @@ const lastForward = new THREE.Vector3();
 let extent: Square | undefined;
 
 /**
- * Makes the fog complete where the held ground ends: at the nearest edge of the view's extent,
- * shortened by the cosine of the view cone's half angle, since the fog grows with the depth along
- * the view direction and an edge at the side of the picture is that much shallower than it is far.
- * Without it the last ring's outer edge stood on the horizon as a stepped wall of tile edges.
+ * The distance in the ground plane from `(x, z)` to the nearest tile of the view that has not
+ * arrived yet, metres (infinite when every one is held, or while tiles the view left still cover
+ * the ground: they stay until their replacements arrive). While a view loads, its far rings are
+ * the last to come, and the loaded rings' edge, their skirts hanging into nothing, stood on the
+ * horizon as flat-topped blocks.
  */
-function updateFog(): void {
+function nearestMissingM(x: number, z: number): number {
+  if (retiring.size > 0) return Infinity;
+  let best = Infinity;
+  for (const key of wanted) {
+    if (held.has(key)) continue;
+    const [lod, tx, tz] = key.split("/").map(Number);
+    const size = 64 * cellM * 2 ** lod;
+    const dx = Math.max(tx * size - x, x - (tx + 1) * size, 0);
+    const dz = Math.max(tz * size - z, z - (tz + 1) * size, 0);
+    best = Math.min(best, Math.hypot(dx, dz));
+  }
+  return best;
+}
+
+let missingM = Infinity;
+let missingAt = 0;
+
+/**
+ * Makes the fog complete where the held ground ends: at the nearest edge of the view's extent, or
+ * nearer where tiles of the view have not arrived yet, shortened by the cosine of the view cone's
+ * half angle, since the fog grows with the depth along the view direction and an edge at the side
+ * of the picture is that much shallower than it is far. Without it the last ring's outer edge
+ * stood on the horizon as a stepped wall of tile edges.
+ */
+function updateFog(now: number): void {
   if (!extent) return;
   const p = camera.position;
-  const edge = Math.min(p.x - extent.x0, extent.x1 - p.x, p.z - extent.z0, extent.z1 - p.z);
+  if (now - missingAt > 250) {
+    missingAt = now;
+    missingM = nearestMissingM(p.x, p.z);
+  }
+  const edge = Math.min(p.x - extent.x0, extent.x1 - p.x, p.z - extent.z0, extent.z1 - p.z, missingM);
   const far = Math.max(1000, Math.min(FOG_FAR_M, edge * Math.cos(THREE.MathUtils.degToRad(halfAngleDeg()))));
   fog.far = far;
   fog.near = Math.min(FOG_NEAR_M, 0.5 * far);
@@ -1067,7 +1096,7 @@ function frame(now: number): void {
   controls.update();
   keepAboveGround();
   sendView(false); // throttled: only when the camera crossed a LOD-0 tile or turned
-  updateFog();
+  updateFog(now);
   refreshHidden();
   curveTool?.update(window.innerHeight);
   renderer.render(scene, camera);
