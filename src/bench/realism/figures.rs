@@ -51,6 +51,8 @@ pub(super) fn figures_json(f: &Figures, v: &mut Value) {
     let add = json!({
         "slope_median_deg": f.slopes.median_deg,
         "slope_p95_deg": f.slopes.p95_deg,
+        "steepest_step_deg": f.slopes.steepest_step_deg,
+        "cliff_step_fraction": f.slopes.cliff_fraction,
         "depression_fraction_deeper_than_2m": f.depressions.fraction,
         "peaks_per_km2": f.extrema.peaks_per_km2,
         "pits_per_km2": f.extrema.pits_per_km2,
@@ -113,7 +115,8 @@ pub(super) fn curve(h: &Hypsometry) -> String {
         .join("/")
 }
 
-/// The rows every grid has: label and value text.
+/// The rows every grid has: label and value text (`mod.rs` attaches the targets by position: new
+/// rows go last).
 pub(super) fn rows(f: &Figures) -> Vec<(&'static str, String)> {
     vec![
         ("slope median, °", num(f.slopes.median_deg, 1)),
@@ -130,6 +133,14 @@ pub(super) fn rows(f: &Figures) -> Vec<(&'static str, String)> {
         ("gradient-direction anisotropy", num(f.anisotropy.ratio, 2)),
         ("land, %", num(100.0 * f.land_fraction, 1)),
         ("relief p5–p95, m", num(f.relief_m, 0)),
+        (
+            "steepest step between neighbours, °",
+            num(f.slopes.steepest_step_deg, 1),
+        ),
+        (
+            "neighbour steps steeper than 63°, %",
+            num(100.0 * f.slopes.cliff_fraction, 3),
+        ),
     ]
 }
 

@@ -187,9 +187,21 @@ pub struct Slopes {
     pub median_deg: f64,
     /// 95th percentile, degrees.
     pub p95_deg: f64,
+    /// Steepest step between two neighbouring cells (along a row or a column), degrees.
+    pub steepest_step_deg: f64,
+    /// Share of the neighbour pairs whose step is steeper than [`CLIFF_RISE`] (63.4°).
+    pub cliff_fraction: f64,
 }
 
-/// Slope median and 95th percentile over interior land cells, degrees.
+/// Rise over run between neighbouring cells above which a step counts as a cliff (63.4°): a
+/// face that steep over a whole cell is rare in real terrain at 8 m and more, and a run of such
+/// steps one cell wide is the mark of a discontinuity in the height function (the gullies of
+/// `gullies: 2` made them).
+pub const CLIFF_RISE: f64 = 2.0;
+
+/// Slope median and 95th percentile over interior land cells, degrees; the steepest step and
+/// the share of cliff steps between each interior land cell and its next cell along the row and
+/// the column.
 pub fn slopes(g: &Grid, sea_level_m: f64) -> Slopes {
     let mut deg: Vec<f64> = g
         .interior_land(sea_level_m)
@@ -198,9 +210,20 @@ pub fn slopes(g: &Grid, sea_level_m: f64) -> Slopes {
             gx.hypot(gz).atan().to_degrees()
         })
         .collect();
+    let (mut steepest, mut cliffs, mut pairs) = (0.0f64, 0usize, 0usize);
+    for (i, j) in g.interior_land(sea_level_m) {
+        for (a, b) in [(i + 1, j), (i, j + 1)] {
+            let rise = (g.at(a, b) - g.at(i, j)).abs() / g.spacing_m;
+            steepest = steepest.max(rise);
+            cliffs += usize::from(rise > CLIFF_RISE);
+            pairs += 1;
+        }
+    }
     Slopes {
         median_deg: percentile(&mut deg, 0.5),
         p95_deg: percentile(&mut deg, 0.95),
+        steepest_step_deg: steepest.atan().to_degrees(),
+        cliff_fraction: cliffs as f64 / pairs.max(1) as f64,
     }
 }
 

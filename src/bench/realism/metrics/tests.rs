@@ -40,6 +40,29 @@ fn tilted_plane_slope_is_its_angle() {
     let s = slopes(&g, f64::NEG_INFINITY);
     assert!((s.median_deg - 30.0).abs() < 0.01, "{s:?}");
     assert!((s.p95_deg - 30.0).abs() < 0.01, "{s:?}");
+    assert!(
+        s.steepest_step_deg < 30.0 && s.cliff_fraction == 0.0,
+        "{s:?}"
+    );
+}
+
+#[test]
+fn a_step_one_cell_wide_is_a_cliff() {
+    // A 10° plane with a 100 m step between x = 100 and 105 m (cells of 5 m).
+    let t = 10f64.to_radians().tan();
+    let g = Grid::from_fn(64, 48, 5.0, |x, z| {
+        100.0 + z * t + if x > 102.0 { 100.0 } else { 0.0 }
+    });
+    let s = slopes(&g, f64::NEG_INFINITY);
+    assert!(
+        (s.steepest_step_deg - 20f64.atan().to_degrees()).abs() < 0.1,
+        "{s:?}"
+    );
+    // One pair in each of the 46 interior rows, of 2 · 62 · 46 pairs.
+    assert!(
+        (s.cliff_fraction - 46.0 / (2.0 * 62.0 * 46.0)).abs() < 1e-9,
+        "{s:?}"
+    );
 }
 
 #[test]
