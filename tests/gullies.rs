@@ -5,42 +5,22 @@
 //! showed walls hundreds of metres high with a comb of stripes on them, and the heights of one
 //! LOD-3 tile drop 170 m between two samples 8 m apart.
 
-use strata::terrain::{synthesize, TileKey, WorldParams, WorldPlan};
+use strata::bench::realism::{metrics, sample};
+use strata::terrain::{WorldParams, WorldPlan};
 
-/// The 8 × 8 LOD-3 tiles (8 m spacing, 4.1 km square) around (113.7 km, 118.8 km), in the
-/// range, where the viewer showed the walls.
+/// The 8 × 8 LOD-3 tiles (8 m spacing, 4.1 km square) from tile (216, 228), around (113.7 km,
+/// 118.8 km) in the range, where the viewer showed the walls.
 const TILES: (i64, i64) = (216, 228);
 
-/// Rise over run between neighbouring samples of `plan`'s tiles: the steepest and the fraction
-/// of neighbour pairs steeper than 2 (63°).
-fn steepness(plan: &WorldPlan) -> (f32, f64) {
-    let (mut worst, mut steep, mut pairs) = (0.0f32, 0usize, 0usize);
-    for tz in TILES.1..TILES.1 + 8 {
-        for tx in TILES.0..TILES.0 + 8 {
-            let tile = synthesize(
-                plan,
-                TileKey {
-                    lod: 3,
-                    x: tx,
-                    z: tz,
-                },
-            );
-            let h = &tile.heights;
-            let n = (h.len() as f64).sqrt() as usize;
-            let spacing = tile.spacing_m;
-            for j in 0..n {
-                for i in 0..n - 1 {
-                    for (a, b) in [(j * n + i, j * n + i + 1), (i * n + j, (i + 1) * n + j)] {
-                        let rise = (h[a] - h[b]).abs() / spacing;
-                        worst = worst.max(rise);
-                        steep += usize::from(rise > 2.0);
-                        pairs += 1;
-                    }
-                }
-            }
-        }
-    }
-    (worst, steep as f64 / pairs as f64)
+/// The steepest step between neighbouring samples of `plan`'s ground there (rise over run) and
+/// the share of steps steeper than 63°, as `strata bench realism` measures them.
+fn steepness(plan: &WorldPlan) -> (f64, f64) {
+    let s = sample::sample(plan, 3, TILES.0, TILES.1, 8, 8);
+    let slopes = metrics::slopes(&s.grid, 0.0);
+    (
+        slopes.steepest_step_deg.to_radians().tan(),
+        slopes.cliff_fraction,
+    )
 }
 
 fn world(gullies: u32) -> WorldPlan {

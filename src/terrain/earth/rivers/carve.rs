@@ -857,6 +857,12 @@ fn field_rect(spacing_m: f32, gx0: i64, gz0: i64, w: usize, h: usize) -> (f32, f
     )
 }
 
+/// The bin side of a field's job over the rectangle `(x0, z0, x1, z1)`: about 8 × 8 bins over
+/// it, at least 8 m and at most a node spacing, metres.
+fn field_bin_m(plan: &RiverPlan, (x0, z0, x1, z1): (f32, f32, f32, f32)) -> f32 {
+    ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m)
+}
+
 /// The job of the samples `(gx0 + i, gz0 + j)·spacing` of a field (its world rectangle).
 pub fn job_for(
     earth: &EarthPlan,
@@ -868,8 +874,7 @@ pub fn job_for(
     h: usize,
 ) -> RiverJob {
     let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
-    // About 8 × 8 bins over the rectangle, at least 8 m and at most a node spacing.
-    let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
+    let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
     Network::new(earth, plan).job(x0, z0, x1, z1, bin_m)
 }
 
@@ -884,7 +889,7 @@ pub fn water_job_for(
     h: usize,
 ) -> RiverJob {
     let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
-    let bin_m = ((x1 - x0).max(z1 - z0) / 8.0).clamp(8.0, plan.spacing_m);
+    let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
     Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m)
 }
 
