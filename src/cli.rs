@@ -1,7 +1,8 @@
 //! Command-line interface: the `strata` command and its subcommands. Each subcommand's options
 //! belong to the module that runs it ([`ServeArgs`] to `server`, [`BenchArgs`] to `bench`,
-//! [`ExportArgs`] and [`JoinArgs`] to `export`), so no module imports this one; only `src/main.rs` does.
+//! [`ExportArgs`] and [`JoinArgs`] to `export`, [`HillshadeArgs`] to `bench::realism::preview`), so no module imports this one; only `src/main.rs` does.
 
+use crate::bench::realism::preview::HillshadeArgs;
 use crate::bench::BenchArgs;
 use crate::export::cli::ExportArgs;
 use crate::export::join::JoinArgs;
@@ -28,6 +29,8 @@ pub enum Command {
     Export(ExportArgs),
     /// Join the archives of an export's shards into the archive of the whole export.
     ExportJoin(JoinArgs),
+    /// Write a hillshade PNG of a square of a world and print its terrain figures.
+    Hillshade(HillshadeArgs),
 }
 
 /// Runs a parsed command line.
@@ -54,6 +57,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Command::Bench(args) => crate::bench::run(&args),
         Command::Export(args) => crate::export::cli::run(&args),
         Command::ExportJoin(args) => crate::export::join::run(&args),
+        Command::Hillshade(args) => crate::bench::realism::preview::run(&args),
     }
 }
 

@@ -50,6 +50,7 @@ pub mod dem;
 mod figures;
 pub mod hillshade;
 pub mod metrics;
+pub mod preview;
 pub mod sample;
 
 use super::emit;
