@@ -77,6 +77,8 @@ struct Mat {
     tex_rough: u32,
     tex_height: u32,
     repeat_log2: i32,
+    // Word offset of the normal map's header in `tex` (NONE: none).
+    tex_normal: u32,
 }
 
 // `gpu::ptex::GpuDecal`; `ptex::decal::Decal`.
@@ -611,8 +613,34 @@ fn bake(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
     apply_decals(a, pt_p, kmax);
     albedo = dec_albedo;
     rough = dec_rough;
+    // `bake::normal_maps`: each material's normal map tilts `nd` on each plane (a whiteout
+    // blend), weighted as the blend is.
+    var tilt = vec3<f32>(0.0);
+    var mapped = false;
+    for (var m = 0u; m < pt_count; m = m + 1u) {
+        let mat = mats[pt_ids[m]];
+        if (mat.tex_normal == NONE) {
+            continue;
+        }
+        mapped = true;
+        for (var axis = 0u; axis < 3u; axis = axis + 1u) {
+            let k = pt_w[m] * wd[axis];
+            let s = material_image(mat.tex_normal, mat.repeat_log2, pt_p, axis, kmax);
+            let a1 = (axis + 1u) % 3u;
+            let a2 = (axis + 2u) % 3u;
+            var v = vec3<f32>(0.0);
+            v[a1] = (2.0 * s.x - 1.0) + nd[a1];
+            v[a2] = (2.0 * s.y - 1.0) + nd[a2];
+            v[axis] = abs(2.0 * s.z - 1.0) * nd[axis];
+            tilt = tilt + k * (normalize_or(v, nd) - nd);
+        }
+    }
+    var nm = nd;
+    if (mapped) {
+        nm = normalize_or(nd + tilt, nd);
+    }
     let o = 3u * idx;
     out[o] = unorm8(albedo.x) | (unorm8(albedo.y) << 8u) | (unorm8(albedo.z) << 16u) | (unorm8(rough) << 24u);
-    out[o + 1u] = snorm8(nd.x) | (snorm8(nd.y) << 8u) | (snorm8(nd.z) << 16u) | ((pt_ids[dominant] & 0xffu) << 24u);
+    out[o + 1u] = snorm8(nm.x) | (snorm8(nm.y) << 8u) | (snorm8(nm.z) << 16u) | ((pt_ids[dominant] & 0xffu) << 24u);
     out[o + 2u] = bitcast<u32>(d0);
 }

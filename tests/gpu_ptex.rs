@@ -14,7 +14,7 @@
 //! at the texel (`texturing.ptex_blend: 2`, the twin's `surface_weights` and `surface_slots`),
 //! on one where the alpine zone's band crosses the ground too (`alpine_share`), and with a
 //! world's materials and decals (`strata::ptex::spec`): an image material with albedo,
-//! roughness and height images, a procedural override, and two decals (one masked by its alpha,
+//! roughness and height images and a normal map, a procedural override, and two decals (one masked by its alpha,
 //! one by a separate mask image with roughness), over both face sets, so the twin's image
 //! sampling, mip levels and decal placement are checked too. On lavapipe both comparisons are
 //! bit-identical (the image bilinear interpolates the bytes, whose differences are exact, and
@@ -195,7 +195,18 @@ fn gpu_bake_matches_cpu_in_the_alpine_zone() {
     compare("alpine tile", &set, &mats, 64);
 }
 
-/// A set with images: `grass` an image material, `rock` overridden, and two decals at `a` and
+/// A 32² tangent-space normal map of ripples: normals tilted up to about 35° both ways along
+/// each axis.
+fn normal_map() -> Vec<u8> {
+    common::png::rgba(32, 32, |x, y| {
+        let (a, b) = ((x as f32 * 0.4).sin() * 0.6, (y as f32 * 0.25).cos() * 0.4);
+        let inv = 1.0 / (a * a + b * b + 1.0).sqrt();
+        let byte = |c: f32| ((c * inv * 0.5 + 0.5) * 255.0).round() as u8;
+        [byte(a), byte(b), byte(1.0), 255]
+    })
+}
+
+/// A set with images: `grass` an image material (with a normal map), `rock` overridden, and two decals at `a` and
 /// `b` (world `[x, z]`, metres).
 fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
     use std::collections::HashMap;
@@ -216,6 +227,7 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
             [200, 40, 90, (e * 50).min(255) as u8]
         }),
         common::png::rgba(8, 8, |x, _| [(x * 36) as u8, 0, 0, 255]),
+        normal_map(),
     ];
     let hashes: Vec<String> = pngs.iter().map(|p| hash_hex(&image_hash(p))).collect();
     let images = pngs
@@ -234,7 +246,8 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
         materials: vec![
             MaterialSpec::from_element(&el(serde_json::json!({"id": "g", "bbox": zero,
                 "name": "grass", "relief_m": 0.3, "texture": {"albedo": hashes[0],
-                "roughness": hashes[1], "height": hashes[2], "repeat_m": 4}})))
+                "roughness": hashes[1], "height": hashes[2], "normal": hashes[5],
+                "repeat_m": 4}})))
             .expect("grass"),
             MaterialSpec::from_element(&el(serde_json::json!({"id": "r", "bbox": zero,
                 "name": "rock", "base": [0.2, 0.3, 0.4], "roughness": [0.1, 0.9]})))
@@ -252,7 +265,7 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
     };
     let set = specs.set(seed, &images);
     assert_eq!(set.validate(), Ok(()));
-    assert_eq!((set.images.len(), set.decals.len()), (5, 2));
+    assert_eq!((set.images.len(), set.decals.len()), (6, 2));
     set
 }
 
@@ -271,6 +284,25 @@ fn decal_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> usize {
         .count()
 }
 
+/// How many interior texels of `set` at `res` the normal maps of `mats` change (so the
+/// comparison covers tilted normals).
+fn normal_mapped_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> usize {
+    let mut bare = mats.clone();
+    for m in &mut bare.materials {
+        if let Some(t) = m.texture.as_mut() {
+            t.normal = None;
+        }
+    }
+    let (mut a, mut b) = (Pages::default(), Pages::default());
+    bake_interior(set, mats, res, &mut a);
+    bake_interior(set, &bare, res, &mut b);
+    a.normal
+        .iter()
+        .zip(&b.normal)
+        .filter(|(x, y)| x != y)
+        .count()
+}
+
 #[test]
 fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     let plan = WorldPlan::new(3, WorldParams::default()).expect("default world");
@@ -281,6 +313,11 @@ fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     assert!(
         touched > 1000,
         "the decals touch {touched} texels of the quads"
+    );
+    let tilted = normal_mapped_texels(&quads, &mats, 32);
+    assert!(
+        tilted > 300,
+        "the normal map tilts {tilted} texels of the quads"
     );
     compare("textured quads", &quads, &mats, 8);
     compare("textured quads", &quads, &mats, 32);
@@ -303,6 +340,11 @@ fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     assert!(
         touched > 300,
         "the decals touch {touched} texels of the tile"
+    );
+    let tilted = normal_mapped_texels(&tiles, &mats, 64);
+    assert!(
+        tilted > 300,
+        "the normal map tilts {tilted} texels of the tile"
     );
     compare("textured tile", &tiles, &mats, 64);
 }

@@ -624,3 +624,79 @@ async fn an_export_bakes_the_worlds_decal_into_its_ptx() {
     assert!(*ptx == want, "the export bakes the world's decal");
     assert!(want != plain, "the decal changes the tile's .ptx");
 }
+
+/// The albedo and normal planes of a tile's page pack (`api/ptex_pages_v1.md`).
+fn planes(body: &[u8]) -> (&[u8], &[u8]) {
+    let word = |at: usize| u32::from_le_bytes(body[at..at + 4].try_into().expect("u32")) as usize;
+    let (faces, side) = (word(52), word(56));
+    let plane = faces * side * side * 4;
+    let start = 64 + 40 * faces;
+    (
+        &body[start..start + plane],
+        &body[start + plane..start + 2 * plane],
+    )
+}
+
+#[tokio::test]
+async fn a_normal_map_tilts_the_pages_normals_and_nothing_else() {
+    let dir = tempfile::tempdir().expect("tmp");
+    let app = service(dir.path());
+    // Ripples along the map's x: normals leaning up to 35° either way.
+    let ripples = common::png::rgba(16, 16, |x, _| {
+        let a = (x as f32 * 0.8).sin() * 0.7;
+        let inv = 1.0 / (a * a + 1.0).sqrt();
+        [
+            ((a * inv * 0.5 + 0.5) * 255.0).round() as u8,
+            128,
+            ((inv * 0.5 + 0.5) * 255.0).round() as u8,
+            255,
+        ]
+    });
+    let albedo = checker_png();
+    let mut bodies = Vec::new();
+    for normal in [None, Some(&ripples)] {
+        let (id, token) = private_world(&app, SEED).await;
+        // One repeat of 64 m: 4 m a pixel, coarser than the page's 2 m texels, so the page
+        // reads the map's full level (a finer repeat would be its mean, nearly flat, there).
+        let mut texture = json!({"albedo": hash_hex(&image_hash(&albedo)), "repeat_m": 64});
+        for png in [Some(&albedo), normal].into_iter().flatten() {
+            upload(&app, &id, Some(&token), png)
+                .await
+                .status_is(StatusCode::CREATED);
+        }
+        if let Some(png) = normal {
+            texture["normal"] = json!(hash_hex(&image_hash(png)));
+        }
+        // Every ground material of the tile is the same image material.
+        let patch: Vec<Value> = ["seabed", "sand", "grass", "dirt", "rock", "snow"]
+            .into_iter()
+            .map(|name| {
+                json!({"op": "add", "path": "/materials/-", "value": {
+                    "id": name, "bbox": {"min": [0, 0], "max": [0, 0]}, "name": name,
+                    "texture": texture}})
+            })
+            .collect();
+        edit(&app, &id, &token, Value::Array(patch)).await.ok();
+        let page = format!("/v1/worlds/{id}/ptex/tiles/2/3/-2?res=32");
+        let r = get_as(&app, &page, &token).await;
+        r.ok();
+        bodies.push(r.body);
+    }
+    let ((albedo_a, normal_a), (albedo_b, normal_b)) = (planes(&bodies[0]), planes(&bodies[1]));
+    assert_eq!(
+        albedo_a, albedo_b,
+        "a normal map changes no albedo or roughness"
+    );
+    // On ground the map's x runs along world z (the Y plane's coordinates are (z, x)): the
+    // normals lean north and south by the map, in most texels by tens of steps.
+    let (mut moved, mut total, mut most) = (0usize, 0usize, 0u8);
+    for (a, b) in normal_a.chunks(4).zip(normal_b.chunks(4)) {
+        total += 1;
+        let dz = (a[2] as i8).abs_diff(b[2] as i8);
+        moved += usize::from(dz > 2);
+        most = most.max(dz);
+        assert_eq!(a[3], b[3], "the dominant material stays");
+    }
+    assert!(moved * 2 > total, "{moved} of {total} normals lean");
+    assert!(most > 40, "the largest lean is {most} steps");
+}

@@ -1105,7 +1105,8 @@ fn scene_schema_describes_what_the_server_accepts() {
     full["materials"] = json!([{"id": "materials-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "name": "moss", "base": [0.2, 0.4, 0.1], "tint": [0.1, 0.3, 0.1], "roughness": [0.6, 0.9],
         "relief_m": 0.05, "noise_m": 0.02, "freq_log2": 1, "octaves": 3,
-        "texture": {"albedo": image, "roughness": image, "height": image, "repeat_m": 2}}]);
+        "texture": {"albedo": image, "roughness": image, "height": image, "normal": image,
+            "repeat_m": 2}}]);
     full["decals"] = json!([{"id": "decals-1", "bbox": {"min": [-5.0, 0.0], "max": [5.0, 2.0]},
         "image": image, "mask": image, "center": [0.0, 1.0], "size_m": [4.0, 1.5],
         "rotation_deg": 10.0, "opacity": 0.5, "roughness": 0.3, "projection": "top_down"}]);

@@ -131,6 +131,8 @@ pub struct GpuMaterial {
     pub tex_height: u32,
     /// One repeat is `2^repeat_log2` metres.
     pub repeat_log2: i32,
+    /// Header offset of the normal map, or [`NONE`].
+    pub tex_normal: u32,
 }
 
 /// `Decal` of `shaders/ptex.wgsl` ([`crate::ptex::decal::Decal`]).
@@ -268,6 +270,7 @@ pub fn bake_interior_on_device(
             tex_rough: header(m.texture.and_then(|t| t.roughness)),
             tex_height: header(m.texture.and_then(|t| t.height)),
             repeat_log2: m.texture.map_or(0, |t| t.repeat_log2),
+            tex_normal: header(m.texture.and_then(|t| t.normal)),
         })
         .collect();
     let mut decals: Vec<GpuDecal> = mats

@@ -24,7 +24,9 @@
 //!    g₂t₂)`, `gₖ = (D(p + δtₖ) − D(p))/δ`.
 //! 5. **Tri-planar blend** with the displaced normal's weights `w(n')`: albedo and roughness of
 //!    each material's pattern on the three projection planes (X: `(y, z)`, Y: `(z, x)`, Z:
-//!    `(x, y)`), weighted by `bₘ·w_axis(n')`.
+//!    `(x, y)`), weighted by `bₘ·w_axis(n')`. A material with a normal map tilts `n'` by the
+//!    map's normal on each plane with the same weights (`normal_maps`: a whiteout blend per
+//!    plane), so the written normal is `n''`; without normal maps `n'' = n'`.
 //!    An image material ([`super::material::Texture`]) reads its albedo, and the `t` of its
 //!    roughness and relief where it has those images, from its images tiled on the plane
 //!    (coordinates times `2^−repeat_log2`, wrapped; bilinear at mip level `side_log2 −
@@ -641,6 +643,7 @@ fn finish(
         &mut albedo,
         &mut rough,
     );
+    let nd = normal_maps(mats, kmax, pt, nd, wd);
     Texel {
         albedo: [
             unorm8(albedo[0]),
@@ -656,6 +659,47 @@ fn finish(
         ],
         displacement: d0,
     }
+}
+
+/// Step 5's normal maps: each material of the texel with a normal map
+/// ([`Texture::normal`]) tilts the displaced normal `nd` on each projection plane, weighted by
+/// its weight times the plane's (`wd`, the blend's weights). On plane `axis` (coordinates `u`,
+/// `v` the world components `axis + 1`, `axis + 2`, mod 3) the map's unit normal `t = 2·s − 1`
+/// (`s` the sample, [`image_sample`]) and `nd` give the whiteout blend `(t_x + nd_u, t_y + nd_v,
+/// |t_z|·nd_axis)`, normalised: the map's relief as seen along the plane's normal, on either
+/// side of it. The result is `normalize(nd + Σ k·(blend − nd))`. Without a normal map among the
+/// texel's materials `nd` is returned as it is, so every other bake keeps its bytes.
+fn normal_maps(mats: &MaterialSet, kmax: i32, pt: &Point, nd: [f32; 3], wd: [f32; 3]) -> [f32; 3] {
+    let mut tilt = [0.0f32; 3];
+    let mut mapped = false;
+    for m in 0..pt.count {
+        let Some(Texture {
+            normal: Some(img),
+            repeat_log2,
+            ..
+        }) = mats.materials[pt.ids[m]].texture
+        else {
+            continue;
+        };
+        mapped = true;
+        for (axis, w) in wd.iter().enumerate() {
+            let k = pt.weights[m] * w;
+            let s = image_sample(mats, img, repeat_log2, pt.p, axis, kmax);
+            let (a1, a2) = ((axis + 1) % 3, (axis + 2) % 3);
+            let mut v = [0.0f32; 3];
+            v[a1] = (2.0 * s[0] - 1.0) + nd[a1];
+            v[a2] = (2.0 * s[1] - 1.0) + nd[a2];
+            v[axis] = (2.0 * s[2] - 1.0).abs() * nd[axis];
+            let v = normalize_or(v, nd);
+            for c in 0..3 {
+                tilt[c] += k * (v[c] - nd[c]);
+            }
+        }
+    }
+    if !mapped {
+        return nd;
+    }
+    normalize_or(std::array::from_fn(|c| nd[c] + tilt[c]), nd)
 }
 
 /// [`texel`] with the face's [`face_constants`] given and the noise through `cache`: the same
@@ -1133,6 +1177,62 @@ mod tests {
     use crate::ptex::select::bake_faces;
     use crate::terrain::{TileKey, WorldParams, WorldPlan};
 
+    /// Material 2 of the default set with a uniform normal map whose texels are `rgb`, and a
+    /// texel of that material alone on ground whose displaced normal is `nd`.
+    fn mapped(rgb: [u8; 3], nd: [f32; 3]) -> [f32; 3] {
+        use crate::ptex::image::Image;
+        let mut mats = MaterialSet::default_ground(7);
+        mats.images.push(std::sync::Arc::new(Image::new(
+            4,
+            4,
+            vec![[rgb[0], rgb[1], rgb[2], 255]; 16],
+        )));
+        mats.materials[2].texture = Some(Texture {
+            albedo: 0,
+            roughness: None,
+            height: None,
+            normal: Some(0),
+            repeat_log2: 0,
+        });
+        let pt = Point {
+            p: [3.2, 10.0, -7.9],
+            n: nd,
+            amp: 0.0,
+            ids: [2, 0, 0, 0],
+            weights: [1.0, 0.0, 0.0, 0.0],
+            count: 1,
+        };
+        normal_maps(&mats, 6, &pt, nd, triplanar(nd))
+    }
+
+    #[test]
+    fn a_normal_map_tilts_the_normal_the_way_its_relief_leans() {
+        let up = [0.0, 1.0, 0.0];
+        // A flat map (128, 128, 255) is the normal itself, to a byte.
+        let flat = mapped([128, 128, 255], up);
+        assert!(
+            flat.iter().zip(up).all(|(a, b)| (a - b).abs() < 0.01),
+            "{flat:?}"
+        );
+        // On ground facing up the plane is Y, whose coordinates are (z, x): the map's x leans
+        // the normal along world z, its y along world x, by the map's own angle.
+        let along_u = mapped([218, 128, 218], up);
+        assert!(along_u[2] > 0.6 && along_u[0].abs() < 0.01, "{along_u:?}");
+        let along_v = mapped([128, 38, 218], up);
+        assert!(along_v[0] < -0.6 && along_v[2].abs() < 0.01, "{along_v:?}");
+        // On a wall facing −X (plane X, coordinates (y, z)) the map's x leans it along world y.
+        let wall = mapped([218, 128, 218], [-1.0, 0.0, 0.0]);
+        assert!(
+            wall[1] > 0.6 && wall[0] < -0.6 && wall[2].abs() < 0.01,
+            "{wall:?}"
+        );
+        // Every result is a unit vector.
+        for n in [flat, along_u, along_v, wall] {
+            let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            assert!((l - 1.0).abs() < 1e-5, "|{n:?}| = {l}");
+        }
+    }
+
     /// The blake3 digest of the three planes of `pages`.
     fn digest(pages: &Pages) -> String {
         let mut h = blake3::Hasher::new();
@@ -1235,19 +1335,20 @@ mod tests {
             Arc::new(Image::new(8, 8, texels))
         };
         mats.images = (0..4).map(image).collect();
-        let texture = |albedo, roughness, height| {
+        let texture = |albedo, roughness, height, normal| {
             Some(Texture {
                 albedo,
                 roughness,
                 height,
+                normal,
                 repeat_log2: 1,
             })
         };
         let procedural = mats.clone();
         for (id, tex) in [
-            (1, texture(0, None, None)),
-            (2, texture(1, None, Some(2))),
-            (4, texture(3, Some(0), Some(1))),
+            (1, texture(0, None, None, None)),
+            (2, texture(1, None, Some(2), Some(0))),
+            (4, texture(3, Some(0), Some(1), None)),
         ] {
             mats.materials[id].texture = tex;
         }

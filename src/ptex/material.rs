@@ -16,7 +16,7 @@
 //!
 //! An image material ([`Texture`]) reads its albedo, and optionally the `t` of its roughness and
 //! relief, from uploaded images ([`super::image`]) tiled over the projection planes instead of
-//! the pattern.
+//! the pattern, and optionally a tangent-space normal map that tilts the baked normal.
 
 use super::decal::Decal;
 use super::image::Image;
@@ -60,6 +60,10 @@ pub struct Texture {
     /// Height image (its R channel `h` gives relief `relief_m·(h − ½)` metres); `None`: the
     /// procedural pattern's.
     pub height: Option<u32>,
+    /// Tangent-space normal map (R, G, B = `x, y, z` of a unit normal times ½ plus ½, `z` out of
+    /// the plane, `y` along the plane's second coordinate: the OpenGL convention), perturbing the
+    /// displaced normal where the material lies ([`super::bake`], step 5); `None`: no map.
+    pub normal: Option<u32>,
     /// One repeat is `2^repeat_log2` metres (`−2..=8`, so repeats line up with face anchors at
     /// multiples of 256 m).
     pub repeat_log2: i32,

@@ -133,6 +133,9 @@ pub struct TextureSpec {
     /// Height image hash (R channel; relief `relief_m·(h − ½)`).
     #[serde(default)]
     pub height: Option<String>,
+    /// Tangent-space normal map hash (RGB; [`crate::ptex::material::Texture::normal`]).
+    #[serde(default)]
+    pub normal: Option<String>,
     /// Metres per repeat: a power of two from 0.25 to 256.
     pub repeat_m: f64,
 }
@@ -203,6 +206,9 @@ impl MaterialSpec {
             if let Some(h) = &t.height {
                 image_ref("/texture/height", h)?;
             }
+            if let Some(n) = &t.normal {
+                image_ref("/texture/normal", n)?;
+            }
             repeat_log2(t.repeat_m)?;
         }
         Ok(())
@@ -217,6 +223,7 @@ impl MaterialSpec {
             ("/texture/albedo", Some(&t.albedo)),
             ("/texture/roughness", t.roughness.as_ref()),
             ("/texture/height", t.height.as_ref()),
+            ("/texture/normal", t.normal.as_ref()),
         ]
         .into_iter()
         .filter_map(|(at, h)| Some((at, parse_hash(h?)?)))
@@ -511,6 +518,7 @@ impl PtexSpecs {
                         albedo,
                         roughness: t.roughness.as_ref().and_then(|h| interned.index_of(h)),
                         height: t.height.as_ref().and_then(|h| interned.index_of(h)),
+                        normal: t.normal.as_ref().and_then(|h| interned.index_of(h)),
                         repeat_log2,
                     });
                 }
