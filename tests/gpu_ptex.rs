@@ -269,38 +269,31 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
     set
 }
 
-/// How many interior texels of `set` at `res` the decals of `mats` change (so the comparison
-/// covers decal texels).
-fn decal_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> usize {
-    let mut bare = mats.clone();
-    bare.decals.clear();
+/// How many interior texels of `set` at `res` differ between `mats` and `bare` (`mats` with
+/// something left out), in albedo and in normal: so the comparisons cover the decals' and the
+/// normal maps' texels.
+fn changed_texels(set: &FaceSet, mats: &MaterialSet, bare: &MaterialSet, res: u32) -> [usize; 2] {
     let (mut a, mut b) = (Pages::default(), Pages::default());
     bake_interior(set, mats, res, &mut a);
-    bake_interior(set, &bare, res, &mut b);
-    a.albedo
-        .iter()
-        .zip(&b.albedo)
-        .filter(|(x, y)| x != y)
-        .count()
+    bake_interior(set, bare, res, &mut b);
+    let differ = |x: &[[u8; 4]], y: &[[u8; 4]]| x.iter().zip(y).filter(|(p, q)| p != q).count();
+    [differ(&a.albedo, &b.albedo), differ(&a.normal, &b.normal)]
 }
 
-/// How many interior texels of `set` at `res` the normal maps of `mats` change (so the
-/// comparison covers tilted normals).
-fn normal_mapped_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> usize {
-    let mut bare = mats.clone();
-    for m in &mut bare.materials {
+/// Texels of `set` at `res` the decals of `mats` change (albedo) and its normal maps tilt.
+fn decal_and_normal_map_texels(set: &FaceSet, mats: &MaterialSet, res: u32) -> [usize; 2] {
+    let mut undecorated = mats.clone();
+    undecorated.decals.clear();
+    let mut unmapped = mats.clone();
+    for m in &mut unmapped.materials {
         if let Some(t) = m.texture.as_mut() {
             t.normal = None;
         }
     }
-    let (mut a, mut b) = (Pages::default(), Pages::default());
-    bake_interior(set, mats, res, &mut a);
-    bake_interior(set, &bare, res, &mut b);
-    a.normal
-        .iter()
-        .zip(&b.normal)
-        .filter(|(x, y)| x != y)
-        .count()
+    [
+        changed_texels(set, mats, &undecorated, res)[0],
+        changed_texels(set, mats, &unmapped, res)[1],
+    ]
 }
 
 #[test]
@@ -309,12 +302,11 @@ fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     // The quads span x −300…−274, z 9000…9024 (see quad_set).
     let mats = textured(3, [-290.0, 9008.0], [-280.0, 9016.0]);
     let quads = quad_set(&mats);
-    let touched = decal_texels(&quads, &mats, 32);
+    let [touched, tilted] = decal_and_normal_map_texels(&quads, &mats, 32);
     assert!(
         touched > 1000,
         "the decals touch {touched} texels of the quads"
     );
-    let tilted = normal_mapped_texels(&quads, &mats, 32);
     assert!(
         tilted > 300,
         "the normal map tilts {tilted} texels of the quads"
@@ -336,12 +328,11 @@ fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     ];
     let mats = textured(3, c, [c[0] + 20.0, c[1] - 15.0]);
     let tiles = tile_set(&plan, &mats);
-    let touched = decal_texels(&tiles, &mats, 64);
+    let [touched, tilted] = decal_and_normal_map_texels(&tiles, &mats, 64);
     assert!(
         touched > 300,
         "the decals touch {touched} texels of the tile"
     );
-    let tilted = normal_mapped_texels(&tiles, &mats, 64);
     assert!(
         tilted > 300,
         "the normal map tilts {tilted} texels of the tile"
