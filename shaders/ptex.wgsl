@@ -98,7 +98,8 @@ struct Decal {
     mask: u32,
     density_log2: i32,
     mask_density_log2: i32,
-    pad: u32,
+    // 1: fades with the facing (`decal::facing_weight`), else 0.
+    facing: u32,
 }
 
 @group(0) @binding(0) var<uniform> params: Params;
@@ -335,7 +336,7 @@ fn relief_t(m: u32, anchor: vec3<i32>, q: vec3<f32>, axis: u32, kmax: i32) -> f3
 var<private> dec_albedo: vec3<f32>;
 var<private> dec_rough: f32;
 
-fn apply_decals(anchor: vec3<i32>, p: vec3<f32>, kmax: i32) {
+fn apply_decals(anchor: vec3<i32>, p: vec3<f32>, ny: f32, kmax: i32) {
     for (var k = 0u; k < params.decals; k = k + 1u) {
         let d = decals[k];
         let cx = f32(d.ax - anchor.x) * 256.0 + d.ox;
@@ -356,7 +357,10 @@ fn apply_decals(anchor: vec3<i32>, p: vec3<f32>, kmax: i32) {
             let mask_level = mip_level(d.mask_density_log2, kmax, tex[d.mask + 2u]);
             mask = sample_image(d.mask, mask_level, u, v, false).x;
         }
-        let a = d.opacity * mask;
+        var a = d.opacity * mask;
+        if (d.facing != 0u) {
+            a = a * smoothstep_edges(DECAL_FACING_FROM, DECAL_FACING_FULL, ny);
+        }
         dec_albedo = vec3<f32>(
             dec_albedo.x + (c.x - dec_albedo.x) * a,
             dec_albedo.y + (c.y - dec_albedo.y) * a,
@@ -483,6 +487,9 @@ fn alpine_share(fraction: f32, line_above_sea: f32, above_line: f32) -> f32 {
 // order, at most four (the lightest left out, the higher id first on a tie), divided by their sum
 // and merged by material index; the samples' materials stay where none has weight.
 const MIN_SURFACE_WEIGHT: f32 = 1.0 / 512.0;
+// `ptex::decal::FACING_FROM` and `FACING_FULL`.
+const DECAL_FACING_FROM: f32 = 0.25;
+const DECAL_FACING_FULL: f32 = 0.5;
 
 fn surface_slots(weights: array<f32, 6>) {
     var ids = array<u32, 6>(0u, 0u, 0u, 0u, 0u, 0u);
@@ -610,7 +617,7 @@ fn bake(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
     }
     dec_albedo = albedo;
     dec_rough = rough;
-    apply_decals(a, pt_p, kmax);
+    apply_decals(a, pt_p, nd.y, kmax);
     albedo = dec_albedo;
     rough = dec_rough;
     // `bake::normal_maps`: each material's normal map tilts `nd` on each plane (a whiteout

@@ -15,7 +15,7 @@
 //! on one where the alpine zone's band crosses the ground too (`alpine_share`), and with a
 //! world's materials and decals (`strata::ptex::spec`): an image material with albedo,
 //! roughness and height images and a normal map, a procedural override, and two decals (one masked by its alpha,
-//! one by a separate mask image with roughness), over both face sets, so the twin's image
+//! one by a separate mask image with roughness, fading with the facing), over both face sets, so the twin's image
 //! sampling, mip levels and decal placement are checked too. On lavapipe both comparisons are
 //! bit-identical (the image bilinear interpolates the bytes, whose differences are exact, and
 //! scales once); the bounds above still apply to other adapters.
@@ -259,7 +259,8 @@ fn textured(seed: u64, a: [f64; 2], b: [f64; 2]) -> MaterialSet {
             .expect("decal a"),
             DecalSpec::from_element(&el(serde_json::json!({"id": "b", "bbox": box_at(b),
                 "image": hashes[0], "mask": hashes[4], "center": b, "size_m": [18, 18],
-                "rotation_deg": -35, "opacity": 0.8, "roughness": 0.2})))
+                "rotation_deg": -35, "opacity": 0.8, "roughness": 0.2,
+                "projection": "top_down_facing"})))
             .expect("decal b"),
         ],
     };
@@ -310,6 +311,16 @@ fn gpu_bake_matches_cpu_with_image_materials_and_decals() {
     assert!(
         tilted > 300,
         "the normal map tilts {tilted} texels of the quads"
+    );
+    // Decal b fades with the facing: some quads in its footprint are steep or face down.
+    let mut everywhere = mats.clone();
+    for d in &mut everywhere.decals {
+        d.facing = false;
+    }
+    let faded = changed_texels(&quads, &mats, &everywhere, 32)[0];
+    assert!(
+        faded > 50,
+        "the facing fade spares {faded} texels of the quads"
     );
     compare("textured quads", &quads, &mats, 8);
     compare("textured quads", &quads, &mats, 32);

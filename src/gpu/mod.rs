@@ -104,6 +104,15 @@ mod tests {
             crate::terrain::biome::RANGE
         )));
         assert_eq!(crate::terrain::biome::BLOCK, 8, "tile.wgsl shifts by 3");
+        for (name, v) in [
+            ("DECAL_FACING_FROM", crate::ptex::decal::FACING_FROM),
+            ("DECAL_FACING_FULL", crate::ptex::decal::FACING_FULL),
+        ] {
+            assert!(
+                ptex::PTEX_WGSL.contains(&format!("const {name}: f32 = {v:?};")),
+                "{name} = {v:?} in ptex.wgsl"
+            );
+        }
         assert_eq!(
             crate::terrain::world::MAX_BIOMES,
             8,

@@ -163,8 +163,8 @@ pub struct GpuDecal {
     pub density_log2: i32,
     /// Likewise for the mask.
     pub mask_density_log2: i32,
-    /// Padding.
-    pub pad: u32,
+    /// 1 when the decal fades with the surface's facing (`top_down_facing`), else 0.
+    pub facing: u32,
 }
 
 /// "No image" in [`GpuMaterial`] and [`GpuDecal`].
@@ -289,7 +289,7 @@ pub fn bake_interior_on_device(
             mask: header(d.mask),
             density_log2: d.density_log2,
             mask_density_log2: d.mask_density_log2,
-            pad: 0,
+            facing: u32::from(d.facing),
         })
         .collect();
     let decal_count = decals.len() as u32;

@@ -47,7 +47,7 @@
 //! takes its relief and blend texel by texel.
 
 use super::border::fill_borders;
-use super::decal::apply as apply_decals;
+use super::decal::{apply as apply_decals, Spot};
 use super::face::{Face, FaceSet};
 use super::image::mip_level;
 use super::material::{MaterialSet, Texture};
@@ -634,15 +634,13 @@ fn finish(
             dominant = m;
         }
     }
-    apply_decals(
-        &mats.decals,
-        &mats.images,
-        a,
-        pt.p,
+    let spot = Spot {
+        anchor: a,
+        p: pt.p,
+        normal_y: nd[1],
         kmax,
-        &mut albedo,
-        &mut rough,
-    );
+    };
+    apply_decals(&mats.decals, &mats.images, spot, &mut albedo, &mut rough);
     let nd = normal_maps(mats, kmax, pt, nd, wd);
     Texel {
         albedo: [
@@ -1099,15 +1097,13 @@ pub(crate) fn texels_lanes(
         for l in 0..LANES {
             let mut alb = [albedo[0][l], albedo[1][l], albedo[2][l]];
             let p = [fr.p[0][l], fr.p[1][l], fr.p[2][l]];
-            apply_decals(
-                &mats.decals,
-                &mats.images,
-                a,
+            let spot = Spot {
+                anchor: a,
                 p,
+                normal_y: nd[1][l],
                 kmax,
-                &mut alb,
-                &mut rough[l],
-            );
+            };
+            apply_decals(&mats.decals, &mats.images, spot, &mut alb, &mut rough[l]);
             for (c, x) in alb.into_iter().enumerate() {
                 albedo[c][l] = x;
             }
@@ -1392,10 +1388,18 @@ mod tests {
             mask: None,
             density_log2: 0,
             mask_density_log2: 0,
+            facing: false,
+        };
+        // And one that fades with the facing, turned the other way.
+        let facing = Decal {
+            sin: -0.6,
+            opacity: 0.9,
+            facing: true,
+            ..decal
         };
         let mut decaled = procedural;
-        decaled.decals.push(decal);
-        mats.decals.push(decal);
+        decaled.decals.extend([decal, facing]);
+        mats.decals.extend([decal, facing]);
         for mats in [mats, decaled] {
             lanes_match(&set, &faces, &mats);
         }

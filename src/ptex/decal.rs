@@ -11,6 +11,12 @@
 //! (sRGB-encoded, like the material blend) and, when the decal sets one, roughness `+=
 //! (roughness − r)·a`. Decals apply in document order, each over the result of the previous.
 //!
+//! A decal projected `top_down` paints every face in its footprint, walls and the undersides of
+//! overhangs included (where a top-down projection stretches or mirrors the image). One projected
+//! `top_down_facing` fades with the texel's displaced normal: its weight is multiplied by
+//! `smoothstep(FACING_FROM, FACING_FULL, n_y)`, whole on ground up to 60° steep, nothing on faces
+//! steeper than about 76° or facing down.
+//!
 //! The centre is held as an anchor (units of [`super::noise::ANCHOR_M`]) and an `f32` offset,
 //! so a face reads it relative to its own anchor with exact integer arithmetic, as the noise
 //! does.
@@ -43,6 +49,24 @@ pub struct Decal {
     pub density_log2: i32,
     /// Likewise for the mask image.
     pub mask_density_log2: i32,
+    /// Whether the decal fades with the surface's facing (`top_down_facing`).
+    pub facing: bool,
+}
+
+/// `n_y` below which a `top_down_facing` decal leaves a texel alone (about 76° of slope).
+pub const FACING_FROM: f32 = 0.25;
+/// `n_y` from which it applies whole (60° of slope).
+pub const FACING_FULL: f32 = 0.5;
+
+/// The weight a decal projected `facing` gives a texel whose displaced normal's y component is
+/// `normal_y`: 1 for a `top_down` decal.
+#[inline]
+pub fn facing_weight(facing: bool, normal_y: f32) -> f32 {
+    if !facing {
+        return 1.0;
+    }
+    let t = ((normal_y - FACING_FROM) / (FACING_FULL - FACING_FROM)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }
 
 impl Decal {
@@ -60,17 +84,34 @@ impl Decal {
     }
 }
 
-/// Applies `decals` at local position `p` of a face anchored at `anchor` whose finest octave is
-/// `kmax`, over `albedo` and `rough`.
+/// Where a texel reads the decals: its face's anchor, its local position `p` (`[x, y, z]`
+/// metres from `anchor·256 m`), its displaced normal's y component and the face's finest octave.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spot {
+    /// The face's anchor, units of 256 m.
+    pub anchor: [i32; 3],
+    /// Local position, metres.
+    pub p: [f32; 3],
+    /// `n_y` of the texel's displaced normal.
+    pub normal_y: f32,
+    /// The face's finest octave (the mip level's input).
+    pub kmax: i32,
+}
+
+/// Applies `decals` at `spot` over `albedo` and `rough`.
 pub fn apply(
     decals: &[Decal],
     images: &[Arc<Image>],
-    anchor: [i32; 3],
-    p: [f32; 3],
-    kmax: i32,
+    spot: Spot,
     albedo: &mut [f32; 3],
     rough: &mut f32,
 ) {
+    let Spot {
+        anchor,
+        p,
+        normal_y,
+        kmax,
+    } = spot;
     for d in decals {
         let Some((u, v)) = d.uv(anchor, p) else {
             continue;
@@ -94,12 +135,74 @@ pub fn apply(
             }
             None => c[3],
         };
-        let a = d.opacity * mask;
+        let mut a = d.opacity * mask;
+        if d.facing {
+            a *= facing_weight(true, normal_y);
+        }
         for (k, x) in albedo.iter_mut().enumerate() {
             *x += (c[k] - *x) * a;
         }
         if let Some(r) = d.roughness {
             *rough += (r - *rough) * a;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_facing_decal_fades_on_steep_and_downward_faces_only() {
+        assert_eq!(
+            facing_weight(false, -1.0),
+            1.0,
+            "top_down paints every face"
+        );
+        assert_eq!(facing_weight(true, 1.0), 1.0);
+        assert_eq!(
+            facing_weight(true, FACING_FULL),
+            1.0,
+            "whole up to 60 degrees"
+        );
+        assert_eq!(facing_weight(true, FACING_FROM), 0.0);
+        assert_eq!(facing_weight(true, -1.0), 0.0, "nothing under an overhang");
+        let half = facing_weight(true, 0.5 * (FACING_FROM + FACING_FULL));
+        assert!((half - 0.5).abs() < 1e-6, "{half}");
+        // Through `apply`: a 2 × 2 red image over a 10 m square at the anchor's origin.
+        let image = Arc::new(Image::new(2, 2, vec![[255, 0, 0, 255]; 4]));
+        let decal = |facing| Decal {
+            anchor: [0, 0],
+            offset: [0.0, 0.0],
+            inv_size: [0.1, 0.1],
+            cos: 1.0,
+            sin: 0.0,
+            opacity: 1.0,
+            roughness: None,
+            image: 0,
+            mask: None,
+            density_log2: -2,
+            mask_density_log2: 0,
+            facing,
+        };
+        let paint = |facing, normal_y| {
+            let (mut albedo, mut rough) = ([0.2f32, 0.4, 0.6], 0.5f32);
+            let images = [image.clone()];
+            let spot = Spot {
+                anchor: [0, 0, 0],
+                p: [1.0, 3.0, -2.0],
+                normal_y,
+                kmax: 0,
+            };
+            apply(&[decal(facing)], &images, spot, &mut albedo, &mut rough);
+            albedo
+        };
+        assert_eq!(paint(false, -1.0), [1.0, 0.0, 0.0]);
+        assert_eq!(paint(true, 0.9), paint(false, 0.9));
+        assert_eq!(
+            paint(true, -0.3),
+            [0.2, 0.4, 0.6],
+            "the underside keeps its albedo"
+        );
     }
 }

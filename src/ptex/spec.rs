@@ -277,6 +277,9 @@ pub struct DecalSpec {
     pub opacity: f64,
     /// Roughness blended in, if any.
     pub roughness: Option<f64>,
+    /// `projection: top_down_facing`: the decal fades on steep and downward faces
+    /// ([`crate::ptex::decal::facing_weight`]).
+    pub facing: bool,
 }
 
 #[derive(Deserialize)]
@@ -312,9 +315,11 @@ impl DecalSpec {
     /// The pointer (relative to the element) and limit of the first bad field.
     pub fn from_element(e: &Element) -> Result<Self, SpecError> {
         let f: DecalFields = fields(e)?;
-        if f.projection != "top_down" {
-            return Err(err("/projection", "the only projection is \"top_down\""));
-        }
+        let facing = match f.projection.as_str() {
+            "top_down" => false,
+            "top_down_facing" => true,
+            _ => return Err(err("/projection", "\"top_down\" or \"top_down_facing\"")),
+        };
         let image = image_ref("/image", &f.image)?;
         let mask = f
             .mask
@@ -352,6 +357,7 @@ impl DecalSpec {
             rotation_deg: f.rotation_deg,
             opacity: f.opacity,
             roughness: f.roughness,
+            facing,
         };
         let (lo, hi) = spec.extent();
         for k in 0..2 {
@@ -410,6 +416,7 @@ impl DecalSpec {
             mask: mask.map(|m| m.0),
             density_log2: density(image.1),
             mask_density_log2: mask.map_or(0, |m| density(m.1)),
+            facing: self.facing,
         }
     }
 }
@@ -586,5 +593,21 @@ mod tests {
             "the default materials keep their patterns"
         );
         assert_eq!(set.validate(), Ok(()));
+    }
+
+    #[test]
+    fn a_decal_is_projected_top_down_or_top_down_facing() {
+        let decal = |projection: &str| {
+            let e: Element = serde_json::from_value(json!({"id": "d",
+                "bbox": {"min": [-10, -10], "max": [10, 10]}, "image": "ab".repeat(32),
+                "center": [0, 0], "size_m": [8, 8], "projection": projection}))
+            .expect("element");
+            DecalSpec::from_element(&e)
+        };
+        assert!(!decal("top_down").expect("top_down").facing);
+        assert!(decal("top_down_facing").expect("facing").facing);
+        let e = decal("sideways").expect_err("refused");
+        assert_eq!(e.pointer, "/projection");
+        assert!(e.message.contains("top_down_facing"), "{}", e.message);
     }
 }
