@@ -119,17 +119,24 @@ impl FormatName {
     }
 }
 
+/// The world settings of a command's `--world` file (the `world` object of `POST /v1/worlds`),
+/// or those of new worlds without one (`strata export`, `strata hillshade`).
+///
+/// # Errors
+/// The file cannot be read, or does not hold a world's settings (the message names the file).
+pub fn world_settings(path: Option<&std::path::Path>) -> anyhow::Result<WorldParams> {
+    let Some(path) = path else {
+        return Ok(WorldParams::default());
+    };
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    serde_json::from_str::<WorldParams>(&text)
+        .with_context(|| format!("{} is not a world's settings", path.display()))
+}
+
 /// Runs `strata export`.
 pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
-    let params = match &args.world {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            serde_json::from_str::<WorldParams>(&text)
-                .with_context(|| format!("parsing {}", path.display()))?
-        }
-        None => WorldParams::default(),
-    };
+    let params = world_settings(args.world.as_deref())?;
     let plan = WorldPlan::new(args.seed, params)?;
     let Region { x0, z0, x1, z1 } = args.region;
     let products = args

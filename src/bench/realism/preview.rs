@@ -3,16 +3,18 @@
 //!
 //! `strata bench realism` shades five fixed areas of the default world; this command shades the
 //! `tiles × tiles` tiles of one LOD around any centre, of the default world or of the world
-//! settings in a JSON file (the `world` object of `POST /v1/worlds`, [`WorldParams`]), and prints
-//! the figures the bench prints for a grid ([`super::figures`]): slopes, steepest step, closed
-//! depressions, relief. The grid is the one the bench samples ([`super::sample::sample`]): the
-//! surface a DEM would record, lakes and rivers flat at their level and drawn blue.
+//! settings in a JSON file (the `world` object of `POST /v1/worlds`,
+//! [`crate::terrain::WorldParams`], read by [`crate::export::cli::world_settings`] as `strata
+//! export` reads it), and prints the figures the bench prints for a grid ([`super::figures`]):
+//! slopes, steepest step, closed depressions, relief. The grid is the one the bench samples
+//! ([`super::sample::sample`]): the surface a DEM would record, lakes and rivers flat at their
+//! level and drawn blue.
 
 use super::figures::{figures, figures_json, num};
 use super::hillshade;
 use super::sample::{first_tile, sample};
 use crate::terrain::plan::MAX_LOD;
-use crate::terrain::{WorldParams, WorldPlan};
+use crate::terrain::WorldPlan;
 use anyhow::Context;
 use serde_json::json;
 use std::path::PathBuf;
@@ -68,15 +70,7 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
         args.x.is_finite() && args.z.is_finite() && args.x.abs() <= 1e9 && args.z.abs() <= 1e9,
         "--x and --z must be finite metres within ±1e9"
     );
-    let params = match &args.world {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            serde_json::from_str::<WorldParams>(&text)
-                .with_context(|| format!("{} is not a world's settings", path.display()))?
-        }
-        None => WorldParams::default(),
-    };
+    let params = crate::export::cli::world_settings(args.world.as_deref())?;
     let start = Instant::now();
     let plan = WorldPlan::new(args.seed, params)?;
     let sea = plan.params.sea_level_m as f64;
