@@ -1,10 +1,12 @@
 //! Command-line interface: the `strata` command and its subcommands. Each subcommand's options
 //! belong to the module that runs it ([`ServeArgs`] to `server`, [`BenchArgs`] to `bench`,
-//! [`ExportArgs`] and [`JoinArgs`] to `export`, [`HillshadeArgs`] to `bench::realism::preview`), so no module imports this one; only `src/main.rs` does.
+//! [`ExportArgs`], [`JoinArgs`] and [`WorldSettingsArgs`] to `export`, [`HillshadeArgs`] to
+//! `bench::realism::preview`), so no module imports this one; only `src/main.rs` does.
 
 use crate::bench::realism::preview::HillshadeArgs;
 use crate::bench::BenchArgs;
 use crate::export::cli::ExportArgs;
+use crate::export::cli::WorldSettingsArgs;
 use crate::export::join::JoinArgs;
 use crate::server::ServeArgs;
 use clap::{Parser, Subcommand};
@@ -31,6 +33,8 @@ pub enum Command {
     ExportJoin(JoinArgs),
     /// Write a hillshade PNG of a square of a world and print its terrain figures.
     Hillshade(HillshadeArgs),
+    /// Print the settings of new worlds (or check and print a settings file) as JSON.
+    WorldSettings(WorldSettingsArgs),
 }
 
 /// Runs a parsed command line.
@@ -58,6 +62,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Command::Export(args) => crate::export::cli::run(&args),
         Command::ExportJoin(args) => crate::export::join::run(&args),
         Command::Hillshade(args) => crate::bench::realism::preview::run(&args),
+        Command::WorldSettings(args) => crate::export::cli::print_world_settings(&args),
     }
 }
 

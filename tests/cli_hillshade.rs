@@ -1,5 +1,6 @@
 //! The real `strata hillshade` command: a PNG of the square asked for, the same bytes on every
-//! run, the world settings of a file when given, and clear refusals of bad options.
+//! run, the world settings of a file when given, and clear refusals of bad options; and
+//! `strata world-settings`, which prints the settings such a file starts from.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -133,4 +134,38 @@ fn hillshade_refuses_bad_options_by_name() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("is not a world's settings"));
     assert!(!Path::new(out).exists(), "no picture for a refused command");
+}
+
+#[test]
+fn world_settings_prints_the_settings_of_new_worlds_in_full() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let text = ok(&strata(&["world-settings"]));
+    let printed: WorldParams = serde_json::from_str(&text).expect("world settings");
+    assert_eq!(printed, WorldParams::default());
+    // Given back, the file is checked and printed the same; and it shades the picture the
+    // defaults shade.
+    let file = dir.path().join("world.json");
+    std::fs::write(&file, &text).expect("write world.json");
+    let path = file.to_str().expect("utf-8 path");
+    assert_eq!(ok(&strata(&["world-settings", "--world", path])), text);
+    let (a, b) = (dir.path().join("a.png"), dir.path().join("b.png"));
+    let shade = |out: &Path, world: Option<&str>| {
+        let mut args = vec!["hillshade", "--lod", "4", "--tiles", "2", "--out"];
+        args.push(out.to_str().expect("utf-8 path"));
+        if let Some(w) = world {
+            args.extend(["--world", w]);
+        }
+        ok(&strata(&args));
+    };
+    shade(&a, None);
+    shade(&b, Some(path));
+    assert_eq!(decode(&a), decode(&b));
+    // Settings a world would refuse are refused here too, naming the file.
+    let mut bad: serde_json::Value = serde_json::from_str(&text).expect("json");
+    bad["cell_m"] = serde_json::json!(-1.0);
+    std::fs::write(&file, bad.to_string()).expect("write world.json");
+    let o = strata(&["world-settings", "--world", path]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("cell_m"), "{err}");
 }

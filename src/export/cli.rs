@@ -134,6 +134,27 @@ pub fn world_settings(path: Option<&std::path::Path>) -> anyhow::Result<WorldPar
         .with_context(|| format!("{} is not a world's settings", path.display()))
 }
 
+/// Options of `strata world-settings`.
+#[derive(Debug, clap::Args)]
+pub struct WorldSettingsArgs {
+    /// A JSON file of world settings to check and print in full; the settings of new worlds
+    /// when absent.
+    #[arg(long)]
+    pub world: Option<PathBuf>,
+}
+
+/// Runs `strata world-settings`: prints the settings of new worlds (or of the `--world` file,
+/// checked as a world's settings are), every field spelled out, as pretty JSON: a file to edit
+/// and give to `strata hillshade`, `strata export` or `POST /v1/worlds`. A file that leaves a
+/// field out gets the value of worlds stored before that field existed, not of new worlds, so
+/// start from this output.
+pub fn print_world_settings(args: &WorldSettingsArgs) -> anyhow::Result<()> {
+    let params = world_settings(args.world.as_deref())?;
+    WorldPlan::new(0, params.clone())?;
+    println!("{}", serde_json::to_string_pretty(&params)?);
+    Ok(())
+}
+
 /// Runs `strata export`.
 pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
     let params = world_settings(args.world.as_deref())?;
