@@ -119,8 +119,9 @@ impl FormatName {
     }
 }
 
-/// The world settings of a command's `--world` file (the `world` object of `POST /v1/worlds`),
-/// or those of new worlds without one (`strata export`, `strata hillshade`).
+/// The world settings of a command's `--world` file (a scene's `world` object, `scene.world`
+/// of `POST /v1/worlds`), or those of new worlds without one (`strata export`, `strata
+/// hillshade`).
 ///
 /// # Errors
 /// The file cannot be read, or does not hold a world's settings (the message names the file).

@@ -3,7 +3,7 @@
 //!
 //! `strata bench realism` shades five fixed areas of the default world; this command shades the
 //! `tiles × tiles` tiles of one LOD around any centre, of the default world or of the world
-//! settings in a JSON file (the `world` object of `POST /v1/worlds`,
+//! settings in a JSON file (a scene's `world` object, `scene.world` of `POST /v1/worlds`,
 //! [`crate::terrain::WorldParams`], read by [`crate::export::cli::world_settings`] as `strata
 //! export` reads it), and prints the figures the bench prints for a grid ([`super::figures`]):
 //! slopes, steepest step, closed depressions, relief. The grid is the one the bench samples
@@ -42,7 +42,7 @@ pub struct HillshadeArgs {
     /// Tiles per side of the square, 1 to 32 (each 64 vertex spacings).
     #[arg(long, default_value_t = 8)]
     pub tiles: usize,
-    /// A JSON file of world settings (the `world` object of `POST /v1/worlds`); the settings of
+    /// A JSON file of world settings (a scene's `world` object); the settings of
     /// new worlds when absent.
     #[arg(long)]
     pub world: Option<PathBuf>,
