@@ -151,7 +151,7 @@ pub struct WorldSettingsArgs {
 /// start from this output.
 pub fn print_world_settings(args: &WorldSettingsArgs) -> anyhow::Result<()> {
     let params = world_settings(args.world.as_deref())?;
-    WorldPlan::new(0, params.clone())?;
+    params.validate()?;
     println!("{}", serde_json::to_string_pretty(&params)?);
     Ok(())
 }

@@ -135,10 +135,8 @@ pub fn apply(
             }
             None => c[3],
         };
-        let mut a = d.opacity * mask;
-        if d.facing {
-            a *= facing_weight(true, normal_y);
-        }
+        // Times 1 for a `top_down` decal: the bits it had before facing existed.
+        let a = d.opacity * mask * facing_weight(d.facing, normal_y);
         for (k, x) in albedo.iter_mut().enumerate() {
             *x += (c[k] - *x) * a;
         }
