@@ -52,9 +52,11 @@ fn new_worlds_split_the_fine_lods_and_stored_ones_do_not() {
     let d = direct.earth.as_ref().expect("earth");
     assert!(d.lods.iter().all(|l| l.lattice.is_none()));
     // A world stored with the 16 m lattice and before the coarse one (the default of new worlds
-    // until then: tests/rivers_world.rs serves one) splits LODs 0–3 as it did.
+    // until then, with every gully octave: tests/rivers_world.rs serves one) splits LODs 0–3 as
+    // it did.
     let mut p = WorldParams::default();
-    p.earth.as_mut().expect("earth").coarse_lattice_cells = None;
+    let earth = p.earth.as_mut().expect("earth");
+    (earth.coarse_lattice_cells, earth.gully_first) = (None, 0);
     let fine = WorldPlan::new(7, p).expect("plan");
     let f = fine.earth.as_ref().expect("earth");
     for (lod, l) in f.lods.iter().enumerate() {

@@ -3,8 +3,8 @@
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
 //! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 3`,
 //! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too, and
-//! so do one stored with `valleys: 6` before new worlds got the coarse lattice and one stored
-//! with `gullies: 2`.
+//! so do one stored with `valleys: 6` before new worlds got the coarse lattice, one stored
+//! with `gullies: 2` and one stored with every gully octave (before `gully_first: 1`).
 
 mod common;
 
@@ -211,6 +211,24 @@ async fn a_world_stored_with_the_second_gullies_serves_the_same_tile_bytes() {
     assert!(
         differ > 0,
         "a bare seed has gullies: 3, which no fixture tile shows"
+    );
+}
+
+/// A world stored with the default of new worlds before `gully_first: 1` (every gully octave,
+/// `tests/fixtures/gullies3-world/`) keeps its bytes, in the range's canyon too, where a bare
+/// seed, which leaves the coarsest gully octave out, gives other bytes.
+#[tokio::test]
+async fn a_world_stored_with_every_gully_octave_serves_the_same_tile_bytes() {
+    const WORLD: &str = "154157a960e10ed0752e2d07";
+    const FIXTURE: &str = "gullies3-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 54).await;
+    let earth = &scene["world"]["earth"];
+    assert_eq!(earth["gullies"], 3, "{earth}");
+    assert_eq!(earth.get("gully_first"), None, "{earth}");
+    let differ = bare_seed_differs(&server, FIXTURE).await;
+    assert!(
+        differ > 0,
+        "a bare seed leaves the coarsest gully octave out, which no fixture tile shows"
     );
 }
 

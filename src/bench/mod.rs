@@ -316,10 +316,11 @@ fn earth_tiles(args: &BenchArgs) -> anyhow::Result<()> {
     // of every LOD and their neighbours share the blocks). LOD 0 is the plains strip, timed the
     // same way in the same round; five rounds, the medians of the rounds' ratios. The peer is
     // the default world of stored worlds before the coarse lattice (`coarse_lattice_cells`
-    // absent), its coarse tiles against its own LOD 0 in the same rounds.
+    // absent, every gully octave), its coarse tiles against its own LOD 0 in the same rounds.
     let mut stored = WorldParams::default();
     if let Some(e) = stored.earth.as_mut() {
         e.coarse_lattice_cells = None;
+        e.gully_first = 0;
     }
     let peer = WorldPlan::new(7, stored)?;
     for lod in 1u32..=12 {

@@ -1251,10 +1251,12 @@ mod tests {
         // over the default world of then as far as these tiles see it (`valleys: 3`; new worlds
         // carve later valleys, which move these tiles' heights, the bake's input; no coarse
         // lattice, which moves them too; the first snow lines; no alpine zone; the second
-        // gullies; and `ptex_blend: 1`, as every world stored before `2` bakes).
+        // gullies with every octave; and `ptex_blend: 1`, as every world stored before `2`
+        // bakes).
         let mut params = WorldParams::default();
         if let Some(e) = params.earth.as_mut() {
             (e.coarse_lattice_cells, e.snow_lines, e.gullies) = (None, 1, 2);
+            e.gully_first = 0;
         }
         if let Some(rivers) = params.earth.as_mut().and_then(|e| e.rivers.as_mut()) {
             rivers.valleys = 3;

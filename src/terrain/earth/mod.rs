@@ -15,8 +15,9 @@
 //!   3.6 km of ridged relief; hill country (550 m) and plains (90 m) elsewhere;
 //! - **relief layers**: up to 16 octaves from 24 km wavelength, each rotated by its own angle,
 //!   ridged in belts, damped by the slope accumulated so far;
-//! - **gully layers** (the erosion filter): five octaves from a 3 km lattice, interleaved with
-//!   the relief octaves of similar amplitude;
+//! - **gully layers** (the erosion filter): six octaves from an 8 km lattice down to 250 m, the
+//!   coarsest left out in new worlds (`gully_first`: its straight stripes cut canyons; the
+//!   rivers carve that scale), interleaved with the relief octaves of similar amplitude;
 //! - **climate** ([`climate`]): biome weights on a 4 km world lattice, colder with altitude.
 //!
 //! **LOD rule (§4.1, generalised).** Every layer has a reference amplitude `a_i · A_max` and a
@@ -303,7 +304,7 @@ impl EarthPlan {
             };
             all.push((layer, 1.0 / gain, smax, RELIEF_LOD_AMPLITUDE));
         }
-        for g in 0..e.gully_octaves as usize {
+        for g in e.gully_first as usize..e.gully_octaves as usize {
             let cell = e.gully_scale_m as f64 / (1u64 << g) as f64;
             let o = octave(seed, 200 + g as u32, cell, 0.0);
             let amp = GULLY_DEPTH as f64 * libm::pow(0.5, g as f64);

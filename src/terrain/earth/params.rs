@@ -64,6 +64,17 @@ pub struct EarthParams {
         skip_serializing_if = "EarthParams::is_first_gullies"
     )]
     pub gullies: u32,
+    /// Erosion filter: the first gully octave kept, in [0, `gully_octaves`]: octaves
+    /// `0..gully_first` are left out, and the others keep the lattice spacing
+    /// (`gully_scale_m / 2^g`), depth and lattice seeds they have without it. `0`: every octave
+    /// (worlds stored before it existed have no `gully_first` and keep it, and their bytes).
+    /// `1` (new worlds): the coarsest octave left out. Its stripes, straight across cells of
+    /// `gully_scale_m` (8 km by default) and about 9 % of the relief deep, cut canyons a few
+    /// hundred metres deep that run dead straight for kilometres (the range at (111.5 km,
+    /// 119 km), with 0.17 % of its 8 m steps steeper than 63°); the rivers carve valleys at
+    /// that scale.
+    #[serde(default, skip_serializing_if = "EarthParams::is_zero")]
+    pub gully_first: u32,
     /// Spacing of the world lattice on which the large-scale part of the height is evaluated and
     /// interpolated at finer LODs ([`super::lattice`]), in LOD-0 vertex spacings (`cell_m`): a
     /// power of two in [2, 256]. Absent in worlds stored before it existed, which evaluate every
@@ -245,6 +256,7 @@ impl Default for EarthParams {
             gully_scale_m: 8000.0,
             gully_octaves: 6,
             gullies: 3,
+            gully_first: 1,
             lattice_cells: Some(16),
             coarse_lattice_cells: Some(256),
             snow_lines: 2,
@@ -304,6 +316,10 @@ impl EarthParams {
 
     fn is_first_gullies(v: &u32) -> bool {
         *v == 1
+    }
+
+    fn is_zero(v: &u32) -> bool {
+        *v == 0
     }
 
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
@@ -395,6 +411,11 @@ impl EarthParams {
             self.gully_octaves as usize <= super::MAX_GULLY_OCTAVES,
             "gully_octaves",
             &format!("{m} [0, {}]", super::MAX_GULLY_OCTAVES),
+        )?;
+        check(
+            self.gully_first <= self.gully_octaves,
+            "gully_first",
+            &format!("{m} [0, gully_octaves ({})]", self.gully_octaves),
         )?;
         check(
             within(self.latitude_offset_m, -1.0e8, 1.0e8),
