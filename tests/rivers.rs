@@ -868,6 +868,53 @@ fn gentler_walls_in_low_relief_widen_the_valleys_and_leave_the_rivers() {
     }
 }
 
+/// `valleys: 7` (the default) against `valleys: 6`: where the relief is high only the larger
+/// rivers carve, so in the range at (114.7 km, 114.7 km) no height falls, most rise by tens of
+/// metres (the walls of a stream every kilometre cut a median 250 m there) and no vertex is river
+/// water that the larger rivers do not hold; in the plains of the origin, where the relief is
+/// under `RELIEF_SOURCE_FROM`, every edge still carves and the tiles keep their bits.
+#[test]
+fn in_high_relief_only_the_larger_rivers_carve() {
+    let (six, seven) = (valleys_plan(6), valleys_plan(7));
+    let (mut risen, mut samples, mut sum) = (0usize, 0usize, 0.0f64);
+    let mut rivers = (0usize, 0usize);
+    for k in tiles_around(&six, 3, (114_700.0, 114_700.0), 2) {
+        let (a, b) = (synthesize(&six, k), synthesize(&seven, k));
+        for v in 0..a.heights.len() {
+            let (h6, h7) = (a.heights[v], b.heights[v]);
+            assert!(
+                h7 >= h6,
+                "{k:?} vertex {v}: fewer valleys lowered {h6} to {h7}"
+            );
+            risen += usize::from(h7 > h6 + 1.0);
+            sum += f64::from(h7 - h6);
+            samples += 1;
+            let river = |t: &strata::terrain::tile::Tile| t.water_kind[v] == kind::RIVER;
+            assert!(
+                !river(&b) || river(&a),
+                "{k:?} vertex {v}: a river where valleys: 6 has none"
+            );
+            rivers.0 += usize::from(river(&a));
+            rivers.1 += usize::from(river(&b));
+        }
+    }
+    let mean = sum / samples as f64;
+    println!(
+        "range at 8 m: {risen} of {samples} heights risen by more than 1 m, {mean:.0} m on \
+         average; river vertices {} -> {}",
+        rivers.0, rivers.1
+    );
+    assert!(
+        risen * 2 > samples && mean > 50.0,
+        "{risen} of {samples} risen, {mean} m"
+    );
+    for k in tiles_around(&six, 5, (0.0, 0.0), 1) {
+        let (a, b) = (synthesize(&six, k), synthesize(&seven, k));
+        assert_eq!(a.heights, b.heights, "{k:?}: the plains keep their valleys");
+        assert_eq!(a.water_kind, b.water_kind, "{k:?}: and their rivers");
+    }
+}
+
 /// Largest turn, degrees, between the end of each piece and the start of the next along the
 /// edges out of the `n × n` nodes from `(i0, k0)`: the direction of a piece at its ends is the
 /// tangent of its parabola, `(b − a) ± s`, and for straight pieces the chord.

@@ -1,7 +1,7 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 6` and `gullies: 3`,
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 7` and `gullies: 3`,
 //! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too, and
 //! so do one stored with `valleys: 6` before new worlds got the coarse lattice, one stored
 //! with `gullies: 2` and one stored with every gully octave (before `gully_first: 1`).
@@ -67,7 +67,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     let earth = &doc["world"]["earth"];
     assert!(earth.get("gullies").is_none(), "{earth}");
 
-    // A bare seed is the new default, `valleys: 6`: the carved tile over a river differs.
+    // A bare seed is the new default, `valleys: 7`: the carved tile over a river differs.
     let stored = expected
         .lines()
         .find(|l| l.starts_with("1 3/-24/50 "))
@@ -78,7 +78,7 @@ async fn a_world_stored_with_the_first_valleys_serves_the_same_tile_bytes() {
     assert_ne!(
         blake3::hash(&bare).to_hex().as_str(),
         stored,
-        "bare seeds carve valleys: 6 and incised gullies"
+        "bare seeds carve valleys: 7 and incised gullies"
     );
 }
 
@@ -216,7 +216,8 @@ async fn a_world_stored_with_the_second_gullies_serves_the_same_tile_bytes() {
 
 /// A world stored with the default of new worlds before `gully_first: 1` (every gully octave,
 /// `tests/fixtures/gullies3-world/`) keeps its bytes, in the range's canyon too, where a bare
-/// seed, which leaves the coarsest gully octave out, gives other bytes.
+/// seed, which leaves the coarsest gully octave out (and carves `valleys: 7`), gives other
+/// bytes.
 #[tokio::test]
 async fn a_world_stored_with_every_gully_octave_serves_the_same_tile_bytes() {
     const WORLD: &str = "154157a960e10ed0752e2d07";
@@ -233,19 +234,19 @@ async fn a_world_stored_with_every_gully_octave_serves_the_same_tile_bytes() {
 }
 
 #[test]
-fn new_scenes_carve_the_sixth_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 6);
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 7);
     assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
-    for known in [3, 4, 5] {
+    for known in [3, 4, 5, 6] {
         let mut older = scene.clone();
         older["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&older).expect("older valleys are accepted");
     }
     assert_eq!(scene["world"]["earth"]["gullies"], 3);
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(7);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 7 is refused");
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(8);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 8 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
     for known in [1, 2, 3, 5] {
         let mut other = scene.clone();

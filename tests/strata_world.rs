@@ -479,6 +479,7 @@ fn chunks_of_a_world_stored_before_chunk_geology_keep_their_bytes() {
     let earth = doc["earth"].as_object_mut().expect("earth settings");
     earth.remove("coarse_lattice_cells");
     earth.remove("snow_lines");
+    earth.remove("gully_first");
     doc["texturing"]
         .as_object_mut()
         .expect("texturing settings")

@@ -128,7 +128,7 @@ pub struct RiverParams {
     pub density: f32,
     /// Incision of the largest rivers below the surrounding land, metres, in [0, 300].
     pub incision_m: f32,
-    /// The valleys' shape, 1 to 6 ([`super::rivers`], step 6). `1`: at least 250 m wide and
+    /// The valleys' shape, 1 to 7 ([`super::rivers`], step 6). `1`: at least 250 m wide and
     /// more by discharge, so the land between rivers is pulled towards the planes of their water
     /// levels (straight facets); worlds stored before `2` existed have no `valleys` and keep it,
     /// and their bytes. `2`: a floodplain and walls as wide as the height they climb, along
@@ -139,9 +139,13 @@ pub struct RiverParams {
     /// walls steepen and ease along the river, so they read as eroded valleys instead of canals.
     /// `5` (new worlds until `6`): the valleys of `4` whose walls have spurs and hollows running
     /// down to the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease
-    /// wanders instead of running straight. `6` (new worlds): the valleys of `5` whose walls are
-    /// gentler where the relief is lower ([`super::rivers::RELIEF_WALLS_MIN`]), so the rivers of
-    /// a plain run in broad swales instead of a maze of trenches.
+    /// wanders instead of running straight. `6` (new worlds until `7`): the valleys of `5` whose
+    /// walls are gentler where the relief is lower ([`super::rivers::RELIEF_WALLS_MIN`]), so the
+    /// rivers of a plain run in broad swales instead of a maze of trenches. `7` (new worlds): the
+    /// valleys of `6`, where the relief is high only for the larger rivers
+    /// ([`super::rivers::RELIEF_SOURCE_Q`]): a mountain's small streams, one a kilometre, carved
+    /// its whole surface into the bowls of their walls (a median 250 m cut in the range), and
+    /// the relief and its gullies now stand between the larger valleys.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -178,7 +182,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 6,
+            valleys: 7,
             lakes: 4,
         }
     }
@@ -220,9 +224,9 @@ impl RiverParams {
             &format!("{m} [0, 300]"),
         )?;
         check(
-            (1..=6).contains(&self.valleys),
+            (1..=7).contains(&self.valleys),
             "rivers.valleys",
-            "must be 1, 2, 3, 4, 5 or 6",
+            "must be 1, 2, 3, 4, 5, 6 or 7",
         )?;
         check(
             (1..=5).contains(&self.lakes),

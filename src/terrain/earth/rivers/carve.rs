@@ -8,7 +8,8 @@ use super::network::{Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, RELIEF_WALLS_MIN, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    Q_MAX, REACH, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN, VALLEY_MIN,
+    WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
@@ -332,6 +333,21 @@ impl Network<'_> {
         })
     }
 
+    /// Whether the edge out of node `(i, k)`, of discharge `q`, carves a valley: `q` at least
+    /// [`MIN_VALLEY_Q`], and with `valleys: 7` at least `1 + RELIEF_SOURCE_Q · a²`, `a` the
+    /// relief above [`RELIEF_SOURCE_FROM`] ([`RELIEF_SOURCE_Q`]).
+    pub(super) fn carves(&mut self, i: i64, k: i64, q: u32) -> bool {
+        if q < MIN_VALLEY_Q {
+            return false;
+        }
+        if !self.plan.relief_sources {
+            return true;
+        }
+        let r = self.relief(i, k) * self.earth.inv_relief_max;
+        let above = ((r - RELIEF_SOURCE_FROM) / (1.0 - RELIEF_SOURCE_FROM)).max(0.0);
+        q as f32 >= 1.0 + RELIEF_SOURCE_Q * above * above
+    }
+
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
     /// The pieces of the edges out of the nodes of piece block `b` ([`PIECE_BLOCK`] nodes a
     /// side), in node order (rows, then columns) and along each edge.
@@ -341,7 +357,7 @@ impl Network<'_> {
         for k in bz * PIECE_BLOCK..(bz + 1) * PIECE_BLOCK {
             for i in bx * PIECE_BLOCK..(bx + 1) * PIECE_BLOCK {
                 let q = self.q(i, k);
-                if q < MIN_VALLEY_Q {
+                if !self.carves(i, k, q) {
                     continue;
                 }
                 let Some(edge) = self.edge(i, k) else {

@@ -56,7 +56,8 @@ impl Network<'_> {
         let mut edges: Vec<Edge> = Vec::new();
         for k in nk0..=nk1 {
             for i in ni0..=ni1 {
-                if self.q(i, k) < wet {
+                let q = self.q(i, k);
+                if q < wet || !self.carves(i, k, q) {
                     continue;
                 }
                 let Some(e) = self.edge(i, k) else { continue };

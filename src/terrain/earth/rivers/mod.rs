@@ -82,7 +82,13 @@
 //!    wanders with both rivers' spurs instead of running straight, equidistant from them.
 //!    With `valleys: 6` (the default of new worlds: the valleys of `5`) an edge's walls are
 //!    gentler where the relief is lower ([`RELIEF_WALLS_MIN`]): in plains a river runs in a
-//!    broad swale between low rises rather than a trench between flat banks.
+//!    broad swale between low rises rather than a trench between flat banks. With `valleys: 7`
+//!    (the default of new worlds: the valleys of `6`) only the larger rivers carve where the
+//!    relief is high ([`RELIEF_SOURCE_Q`]): an edge whose discharge is below
+//!    `1 + RELIEF_SOURCE_Q · a²` (`a` the relief above [`RELIEF_SOURCE_FROM`]) carves no valley
+//!    and holds no water, so a range's surface
+//!    between its larger valleys is its own relief and gullies rather than the walls of a
+//!    stream every kilometre.
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -233,6 +239,20 @@ pub const SLOPE_SCALE: (f32, f32) = (0.7, 1.5);
 /// samples they cover: with this factor a LOD-0 tile of `bench tiles`' plains strip costs
 /// about 6.6 % more than with `valleys: 5` (0.3: 8 %).
 pub const RELIEF_WALLS_MIN: f32 = 0.4;
+/// Where the relief is high, `valleys: 7` carves only the larger rivers: an edge carves a valley
+/// (and holds water) when its discharge is at least `1 + RELIEF_SOURCE_Q · a²` nodes, where
+/// `a = max(0, (r − RELIEF_SOURCE_FROM) / (1 − RELIEF_SOURCE_FROM))` and `r` is the relief
+/// amplitude of the macro fields at its upper node over the world's largest (as for
+/// [`RELIEF_WALLS_MIN`]): every edge in plains and low hills (`r` up to 0.3; the origin's plain
+/// reads 0.17–0.23), from 9 nodes at `r` 0.65, from 33 in the highest mountains. With an edge
+/// carving every kilometre, a range's walls (as wide as the reach) covered all of it, and its
+/// surface was the walls' bowls meeting in creases (a median cut of 250 m in the range at
+/// (114.7 km, 114.7 km) at 8 m, 2 % of its samples cut by more than a metre after), with the
+/// relief's own ridges, spurs and gullies scaled away.
+pub const RELIEF_SOURCE_Q: f32 = 32.0;
+/// The relief (over the world's largest) up to which `valleys: 7` carves every edge
+/// ([`RELIEF_SOURCE_Q`]): the plains keep the valleys that drain their hollows.
+pub const RELIEF_SOURCE_FROM: f32 = 0.3;
 /// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
 pub const FLOODPLAIN: f32 = 4.0;
 /// Half-width of the smallest `valleys: 2` floodplain, metres.
@@ -313,6 +333,9 @@ pub struct RiverPlan {
     pub varied_valleys: bool,
     /// Whether the walls' slope falls with the relief (`valleys: 6`, [`RELIEF_WALLS_MIN`]).
     pub relief_walls: bool,
+    /// Whether only the larger rivers carve where the relief is high (`valleys: 7`,
+    /// [`RELIEF_SOURCE_Q`]).
+    pub relief_sources: bool,
     /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` and later (the spurs of the walls, [`SPUR`]),
     /// else 0 ([`RiverPlan::spur_at`]).
     pub spur_scale: f32,
@@ -361,6 +384,7 @@ impl RiverPlan {
             wall_seed: stream(seed, purpose::EARTH, 401),
             varied_valleys: params.valleys >= 4,
             relief_walls: params.valleys >= 6,
+            relief_sources: params.valleys >= 7,
             spur_scale: if params.valleys >= 5 {
                 SPUR / WALL_NOISE_CLAMP
             } else {
