@@ -33,6 +33,19 @@ fn plan(blend: u32) -> WorldPlan {
     WorldPlan::new(SEED, params).expect("default world")
 }
 
+/// [`plan`] on the relief of new worlds before `gully_first: 1` and `valleys: 7` (every gully
+/// octave, a valley for every stream): there the snow line crosses the steps of the vertices'
+/// lattice in many places, and the blend of `ptex_blend: 1` contradicts it (on today's relief,
+/// whose slopes the streams no longer carve into bowls, in a few dozen texels only).
+fn plan_of_before(blend: u32) -> WorldPlan {
+    let mut params = WorldParams::default();
+    params.texturing.ptex_blend = blend;
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.gully_first = 0;
+    earth.rivers.as_mut().expect("rivers").valleys = 6;
+    WorldPlan::new(SEED, params).expect("the world of before")
+}
+
 fn face_set(plan: &WorldPlan, tile: &Tile, mats: &MaterialSet) -> FaceSet {
     let faces = TileFacePlan::new(tile.key, [false; 4], plan.lods.len() as u32 - 1);
     let mut set = faces.build(|t| (t == tile.key).then_some(tile), mats, plan);
@@ -181,8 +194,16 @@ fn texels_are_snow_above_the_snow_line_and_not_below_it_with_blend_2_only() {
     println!("ptex_blend 2: {above} above, {below} below, {wrong} contradict");
     assert!(above > 2000 && below > 2000);
     assert_eq!(wrong, 0, "texels whose snow contradicts their snow line");
-    // The same tile of a stored world (the same heights: `ptex_blend` is the bake's alone).
-    let old = plan(1);
+    // On the relief of before, both blends of one tile (the same heights: `ptex_blend` is the
+    // bake's alone).
+    let before = plan_of_before(2);
+    let tile = snow_line_tile(&before);
+    let (_, _, wrong) = snow_check(&before, &tile);
+    assert_eq!(
+        wrong, 0,
+        "texels whose snow contradicts their snow line, relief of before"
+    );
+    let old = plan_of_before(1);
     let tile_old = synthesize(&old, tile.key);
     assert_eq!(tile_old.heights, tile.heights);
     let (_, _, wrong_old) = snow_check(&old, &tile_old);
