@@ -870,15 +870,17 @@ fn gentler_walls_in_low_relief_widen_the_valleys_and_leave_the_rivers() {
 
 /// `valleys: 7` (the default) against `valleys: 6`: where the relief is high only the larger
 /// rivers carve, so in the range at (114.7 km, 114.7 km) no height falls, most rise by tens of
-/// metres (the walls of a stream every kilometre cut a median 250 m there) and no vertex is river
-/// water that the larger rivers do not hold; in the plains of the origin, where the relief is
+/// metres (the walls of a stream every kilometre cut a median 250 m there) and river water stays
+/// only where the larger rivers run; in the plains of the origin, where the relief is
 /// under `RELIEF_SOURCE_FROM`, every edge still carves and the tiles keep their bits.
 #[test]
 fn in_high_relief_only_the_larger_rivers_carve() {
     let (six, seven) = (valleys_plan(6), valleys_plan(7));
     let (mut risen, mut samples, mut sum) = (0usize, 0usize, 0.0f64);
     let mut rivers = (0usize, 0usize);
-    for k in tiles_around(&six, 3, (114_700.0, 114_700.0), 2) {
+    let range = |lod, r| tiles_around(&six, lod, (114_700.0, 114_700.0), r);
+    // 2.6 km at 8 m and 20 km at 32 m, where the larger rivers run.
+    for k in range(3, 2).into_iter().chain(range(5, 2)) {
         let (a, b) = (synthesize(&six, k), synthesize(&seven, k));
         for v in 0..a.heights.len() {
             let (h6, h7) = (a.heights[v], b.heights[v]);
@@ -900,13 +902,17 @@ fn in_high_relief_only_the_larger_rivers_carve() {
     }
     let mean = sum / samples as f64;
     println!(
-        "range at 8 m: {risen} of {samples} heights risen by more than 1 m, {mean:.0} m on \
-         average; river vertices {} -> {}",
+        "range at 8 and 32 m: {risen} of {samples} heights risen by more than 1 m, {mean:.0} m \
+         on average; river vertices {} -> {}",
         rivers.0, rivers.1
     );
     assert!(
         risen * 2 > samples && mean > 50.0,
         "{risen} of {samples} risen, {mean} m"
+    );
+    assert!(
+        rivers.1 > 0 && rivers.1 < rivers.0,
+        "the larger rivers keep their water, the small streams lose theirs: {rivers:?}"
     );
     for k in tiles_around(&six, 5, (0.0, 0.0), 1) {
         let (a, b) = (synthesize(&six, k), synthesize(&seven, k));
