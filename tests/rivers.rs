@@ -921,6 +921,41 @@ fn in_high_relief_only_the_larger_rivers_carve() {
     }
 }
 
+/// `valleys: 7` carves the edges out of and into a lake whatever their discharge: west of the
+/// range's lake at (112.1 km, 126.5 km), where the mountains stand 800 m above its water, the
+/// shores' change (at most `SHORE_MAX_M`, faded in over the lake weight) met uncarved slopes as
+/// a wall, 0.6 % of the 8 m steps steeper than 63° and the steepest 74.6°; with the lake's
+/// small streams carved none is (the steepest 56.3°).
+#[test]
+fn a_lake_among_mountains_meets_them_without_a_wall() {
+    use strata::bench::realism::{metrics, sample};
+    let p = valleys_plan(7);
+    let n = 6;
+    let s = sample::sample(
+        &p,
+        3,
+        sample::first_tile(&p, 3, 112_080.0, n),
+        sample::first_tile(&p, 3, 126_500.0, n),
+        n,
+        n,
+    );
+    let slopes = metrics::slopes(&s.grid, 0.0);
+    println!(
+        "west of the range's lake at 8 m: steepest step {:.1}°, {:.3} % of the steps steeper \
+         than 63°",
+        slopes.steepest_step_deg,
+        100.0 * slopes.cliff_fraction
+    );
+    assert!(
+        s.water.iter().any(|w| !w.is_nan()),
+        "the lake is in the square"
+    );
+    assert!(
+        slopes.cliff_fraction == 0.0 && slopes.steepest_step_deg < 63.0,
+        "a wall beside the lake: {slopes:?}"
+    );
+}
+
 /// Largest turn, degrees, between the end of each piece and the start of the next along the
 /// edges out of the `n × n` nodes from `(i0, k0)`: the direction of a piece at its ends is the
 /// tangent of its parabola, `(b − a) ± s`, and for straight pieces the chord.

@@ -335,7 +335,7 @@ impl Network<'_> {
 
     /// Whether the edge out of node `(i, k)`, of discharge `q`, carves a valley: `q` at least
     /// [`MIN_VALLEY_Q`], and with `valleys: 7` at least `1 + RELIEF_SOURCE_Q · a²`, `a` the
-    /// relief above [`RELIEF_SOURCE_FROM`] ([`RELIEF_SOURCE_Q`]).
+    /// relief above [`RELIEF_SOURCE_FROM`] ([`RELIEF_SOURCE_Q`]), or out of or into a lake.
     pub(super) fn carves(&mut self, i: i64, k: i64, q: u32) -> bool {
         if q < MIN_VALLEY_Q {
             return false;
@@ -345,7 +345,16 @@ impl Network<'_> {
         }
         let r = self.relief(i, k) * self.earth.inv_relief_max;
         let above = ((r - RELIEF_SOURCE_FROM) / (1.0 - RELIEF_SOURCE_FROM)).max(0.0);
-        q as f32 >= 1.0 + RELIEF_SOURCE_Q * above * above
+        if q as f32 >= 1.0 + RELIEF_SOURCE_Q * above * above {
+            return true;
+        }
+        // The edges out of and into a lake carve whatever their discharge: a lake among
+        // uncarved mountains met them along the edge of its shores' reach, as a wall up to
+        // `SHORE_MAX_M` high a node spacing from its water.
+        self.lake(i, k).is_some()
+            || self
+                .down(i, k)
+                .is_some_and(|(a, b)| self.lake(a, b).is_some())
     }
 
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
