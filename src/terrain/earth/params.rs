@@ -142,10 +142,10 @@ pub struct RiverParams {
     /// wanders instead of running straight. `6` (new worlds until `7`): the valleys of `5` whose
     /// walls are gentler where the relief is lower ([`super::rivers::RELIEF_WALLS_MIN`]), so the
     /// rivers of a plain run in broad swales instead of a maze of trenches. `7` (new worlds): the
-    /// valleys of `6`, where the relief is high only for the larger rivers
-    /// ([`super::rivers::RELIEF_SOURCE_Q`]): a mountain's small streams, one a kilometre, carved
-    /// its whole surface into the bowls of their walls (a median 250 m cut in the range), and
-    /// the relief and its gullies now stand between the larger valleys.
+    /// valleys of `6`, where the relief is high only for the larger rivers and the streams out
+    /// of and into lakes ([`super::rivers::RELIEF_SOURCE_Q`]): a mountain's small streams, one
+    /// a kilometre, carved its whole surface into the bowls of their walls (a median 250 m cut
+    /// in the range), and the relief and its gullies now stand between the larger valleys.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"

@@ -80,7 +80,7 @@
 //!    foot on the piece: spurs and hollows run straight down each wall to its river, and where the walls of two
 //!    valleys meet (in mountains, everywhere: their walls are as wide as the reach) the crease
 //!    wanders with both rivers' spurs instead of running straight, equidistant from them.
-//!    With `valleys: 6` (the default of new worlds: the valleys of `5`) an edge's walls are
+//!    With `valleys: 6` (new worlds until `7`: the valleys of `5`) an edge's walls are
 //!    gentler where the relief is lower ([`RELIEF_WALLS_MIN`]): in plains a river runs in a
 //!    broad swale between low rises rather than a trench between flat banks. With `valleys: 7`
 //!    (the default of new worlds: the valleys of `6`) only the larger rivers carve where the
