@@ -79,6 +79,57 @@ fn hillshade_writes_the_square_asked_for_and_its_figures() {
     assert_eq!(std::fs::read(&a).expect("a"), std::fs::read(&b).expect("b"));
 }
 
+/// `--depressions` tints red exactly the land the closed-depression figure counts: the tinted
+/// share of the land pixels is the printed fraction, and the other pixels keep their colours.
+#[test]
+fn hillshade_tints_the_closed_depressions_it_counts() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let (plain, tinted) = (dir.path().join("plain.png"), dir.path().join("tinted.png"));
+    // LOD 12 (4 km) around the origin: uncarved, with closed basins.
+    let run = |out: &Path, extra: &[&str]| -> serde_json::Value {
+        let path = out.to_str().expect("utf-8 path");
+        let mut args = vec![
+            "hillshade",
+            "--lod",
+            "12",
+            "--tiles",
+            "2",
+            "--json",
+            "--out",
+            path,
+        ];
+        args.extend_from_slice(extra);
+        serde_json::from_str(ok(&strata(&args)).trim()).expect("one JSON object")
+    };
+    let v = run(&plain, &[]);
+    run(&tinted, &["--depressions"]);
+    let fraction = v["depression_fraction_deeper_than_2m"]
+        .as_f64()
+        .expect("a depression fraction");
+    assert!(fraction > 0.0, "the square should hold closed basins");
+    let (_, _, a) = decode(&plain);
+    let (_, _, b) = decode(&tinted);
+    let mut red = 0usize;
+    for (p, q) in a.chunks(3).zip(b.chunks(3)) {
+        if p != q {
+            assert_eq!(
+                q,
+                [p[0] / 2 + 128, p[1] / 2, p[2] / 2],
+                "{p:?} is tinted red"
+            );
+            red += 1;
+        }
+    }
+    // The figure's land: every cell above the sea, lakes and rivers too.
+    let cells = (a.len() / 3) as f64;
+    let land = (v["land_fraction"].as_f64().expect("land") * cells).round();
+    assert_eq!(
+        red as f64,
+        (fraction * land).round(),
+        "{red} tinted of {land} land cells against the figure {fraction}"
+    );
+}
+
 #[test]
 fn hillshade_reads_the_world_settings_of_a_file() {
     let dir = tempfile::tempdir().expect("tempdir");

@@ -1013,3 +1013,121 @@ fn bent_pieces_meet_their_neighbours_without_corners() {
     assert!(p(&bent, 0.99) < 1.0, "{report}");
     assert!(p(&straight, 0.5) > 5.0, "{report}");
 }
+
+/// The default world with `coarse` (0: tiles coarser than LOD 8 keep their uncarved heights).
+fn coarse_plan(coarse: u32) -> WorldPlan {
+    let mut params = WorldParams::default();
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.rivers.as_mut().expect("rivers").coarse = coarse;
+    WorldPlan::new(42, params).expect("a coarse world")
+}
+
+#[test]
+fn the_coarse_network_descends_and_ends_in_the_sea_a_lake_or_a_larger_river() {
+    let p = plan();
+    let earth = p.earth.as_ref().expect("earth-1");
+    let cp = earth
+        .coarse_rivers
+        .as_ref()
+        .expect("new worlds have the coarse network");
+    assert_eq!(cp.spacing_m, 4.0 * parts(&p).1.spacing_m);
+    assert_eq!(cp.q_scale, 16);
+    assert!(earth.carve_plan(9).is_some_and(|c| c == cp));
+    assert!(earth.carve_plan(10).is_some_and(|c| c == cp));
+    assert!(earth.carve_plan(11).is_none());
+    let mut net = Network::new(earth, cp);
+    let s = cp.spacing_m;
+    let mut done = HashSet::new();
+    for (name, x, z) in AREAS {
+        let (ci, ck) = ((x / s) as i64, (z / s) as i64);
+        let mut wet = 0;
+        for k in ck - 12..ck + 12 {
+            for i in ci - 12..ci + 12 {
+                let n = net.node(i, k);
+                if n.q >= cp.wet_q && !n.sea {
+                    wet += 1;
+                    trace(&mut net, (i, k), &mut done);
+                }
+            }
+        }
+        assert!(
+            wet > 50,
+            "{name}: only {wet} coarse river nodes in 96 × 96 km"
+        );
+    }
+}
+
+/// The land of `p`'s LOD-`lod` tiles `(tx0.., tz0..)` (`n × n`) in closed depressions deeper
+/// than 2 m, as `bench realism` measures it (lakes and rivers flat at their level), and the
+/// river vertices.
+fn depressions(p: &WorldPlan, lod: u32, (tx0, tz0): (i64, i64), n: usize) -> (f64, usize) {
+    use strata::bench::realism::{metrics, sample};
+    let s = sample::sample(p, lod, tx0, tz0, n, n);
+    let d = metrics::depressions(&s.surface(), p.params.sea_level_m as f64, 2.0);
+    let rivers = (0..n as i64)
+        .flat_map(|b| (0..n as i64).map(move |a| (a, b)))
+        .map(|(a, b)| {
+            let t = synthesize(
+                p,
+                TileKey {
+                    lod,
+                    x: tx0 + a,
+                    z: tz0 + b,
+                },
+            );
+            t.water_kind.iter().filter(|&&k| k == kind::RIVER).count()
+        })
+        .sum();
+    (d.fraction, rivers)
+}
+
+/// At 512 m (LOD 9) the uncarved relief holds closed basins over a sixth of the land around
+/// the origin (16.5 % in `bench realism`'s 262 km square; Jacksboro block-averaged to 512 m
+/// 9.8 %); the coarse network drains them through its valleys, whose floors
+/// (`COARSE_FLOOR_M` each side) are wide enough that the 512 m samples along them descend.
+#[test]
+fn coarse_tiles_drain_the_closed_basins_of_the_uncarved_relief() {
+    // 4 × 4 LOD-9 tiles (131 km) around the origin: plains, hills and the range's west flank.
+    let first = (-2, -2);
+    let (before, dry) = depressions(&coarse_plan(0), 9, first, 4);
+    let (after, wet) = depressions(&coarse_plan(1), 9, first, 4);
+    println!(
+        "LOD 9 around the origin: closed depressions {:.2} % -> {:.2} % of the land, river \
+         vertices {dry} -> {wet}",
+        100.0 * before,
+        100.0 * after
+    );
+    assert_eq!(dry, 0, "without the coarse network LOD 9 carves no river");
+    assert!(wet > 100, "the coarse network's rivers hold water at LOD 9");
+    assert!(
+        before > 0.1,
+        "the uncarved relief should hold closed basins: {before}"
+    );
+    assert!(
+        after <= 0.05 && after < 0.5 * before,
+        "closed depressions {before} -> {after}"
+    );
+}
+
+#[test]
+fn coarse_tiles_meet_their_neighbours_bit_for_bit() {
+    let p = plan();
+    for lod in [9u32, 10] {
+        let (mut checked, mut wet) = (0, 0);
+        for (tx, tz) in [(0i64, 0i64), (-1, -1), (1, 0)] {
+            let t = |x, z| synthesize(&p, TileKey { lod, x, z });
+            let (a, east, south) = (t(tx, tz), t(tx + 1, tz), t(tx, tz + 1));
+            for v in 0..65 {
+                for (va, vb, b) in [(v * 65 + 64, v * 65, &east), (64 * 65 + v, v, &south)] {
+                    assert_eq!(a.heights[va].to_bits(), b.heights[vb].to_bits());
+                    assert_eq!(a.water_depth[va].to_bits(), b.water_depth[vb].to_bits());
+                    assert_eq!(a.water_kind[va], b.water_kind[vb]);
+                    wet += usize::from(a.water_kind[va] == kind::RIVER);
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 3 * 2 * 65);
+        println!("LOD {lod}: {wet} river vertices on the checked edges");
+    }
+}

@@ -444,11 +444,7 @@ impl EarthKernels {
             layers.push(GpuEarthLayer::default());
         }
         // The river job of the carve, as `earth::field` builds it.
-        let river = match earth
-            .rivers
-            .as_ref()
-            .filter(|_| job.lod as usize <= rivers::MAX_CARVE_LOD)
-        {
+        let river = match earth.carve_plan(job.lod as usize) {
             Some(rp) => {
                 let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
                 let cp = carve_params(&params, &rj)?;

@@ -85,17 +85,22 @@ pub fn write_png(
     sea_level_m: f64,
     water: Option<&[bool]>,
 ) -> anyhow::Result<()> {
+    write_rgb(path, g.w, g.h, &rgb(g, sea_level_m, water))
+}
+
+/// Writes `w × h` RGB pixels (rows from the north) to `path` as a PNG, creating its folder.
+pub fn write_rgb(path: &Path, w: usize, h: usize, pixels: &[u8]) -> anyhow::Result<()> {
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }
     let mut bytes = Vec::new();
     {
-        let mut enc = png::Encoder::new(&mut bytes, g.w as u32, g.h as u32);
+        let mut enc = png::Encoder::new(&mut bytes, w as u32, h as u32);
         enc.set_color(png::ColorType::Rgb);
         enc.set_depth(png::BitDepth::Eight);
         enc.set_compression(png::Compression::High);
         let mut writer = enc.write_header()?;
-        writer.write_image_data(&rgb(g, sea_level_m, water))?;
+        writer.write_image_data(pixels)?;
         writer.finish()?;
     }
     std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))

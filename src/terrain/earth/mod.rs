@@ -200,6 +200,9 @@ pub struct EarthPlan {
     pub snow_seed: u32,
     /// Rivers and lakes, when the world has them enabled.
     pub rivers: Option<rivers::RiverPlan>,
+    /// The coarse network that carves LODs `MAX_CARVE_LOD + 1 ..= MAX_COARSE_LOD`, in worlds
+    /// with rivers and `coarse: 1` ([`EarthPlan::carve_plan`]).
+    pub coarse_rivers: Option<rivers::RiverPlan>,
     /// Identifies the world function the climate nodes are computed from (the seed and the
     /// world settings): the key of [`climate`]'s process-wide cache of node windows.
     pub fingerprint: u64,
@@ -242,6 +245,19 @@ fn octave(seed: u64, index: u32, wavelength_m: f64, amp: f64) -> NoiseOctave {
 }
 
 impl EarthPlan {
+    /// The network that carves tiles of `lod`: the world's network up to
+    /// [`rivers::MAX_CARVE_LOD`], the coarse one up to [`rivers::MAX_COARSE_LOD`] where the
+    /// world has it, else none (the tile keeps its uncarved heights).
+    pub fn carve_plan(&self, lod: usize) -> Option<&rivers::RiverPlan> {
+        if lod <= rivers::MAX_CARVE_LOD {
+            self.rivers.as_ref()
+        } else if lod <= rivers::MAX_COARSE_LOD {
+            self.coarse_rivers.as_ref()
+        } else {
+            None
+        }
+    }
+
     /// The plan of an `earth-1` world (`params.earth` must be set; `WorldParams::validate`
     /// checks it).
     pub fn new(seed: u64, params: &WorldParams, map: BiomeMapPlan) -> Self {
@@ -387,7 +403,7 @@ impl EarthPlan {
         // The node heights read the whole world settings (edits are not in them), so worlds and
         // versions with equal settings share cached network blocks.
         let world = serde_json::to_vec(params).unwrap_or_default();
-        let rivers = e.rivers.as_ref().filter(|r| r.enabled).map(|r| {
+        let plan = |r: &params::RiverParams, coarse: bool| {
             rivers::RiverPlan::new(
                 seed,
                 r,
@@ -395,19 +411,26 @@ impl EarthPlan {
                 params.sea_level_m,
                 mean_erosion,
                 &world,
+                coarse,
             )
-        });
+        };
+        let enabled = e.rivers.as_ref().filter(|r| r.enabled);
+        let rivers = enabled.map(|r| plan(r, false));
+        let coarse_rivers = enabled.filter(|r| r.coarse >= 1).map(|r| plan(r, true));
         let mut lods: Vec<EarthLod> = lods;
         if let Some(rp) = &rivers {
             // LODs that skip the carve (and the lake shores before it) differ from LOD 0 by at
-            // most what they change.
+            // most what they change; those the coarse network carves by twice that (its carve
+            // and the fine one's each change a height by at most as much).
             let shores = if rp.lakes >= 2 {
                 rivers::SHORE_MAX_M
             } else {
                 0.0
             };
-            for l in lods.iter_mut().skip(rivers::MAX_CARVE_LOD + 1) {
-                l.bound_m += rivers::CARVE_MAX_M + shores;
+            for (lod, l) in lods.iter_mut().enumerate().skip(rivers::MAX_CARVE_LOD + 1) {
+                let coarse = coarse_rivers.is_some() && lod <= rivers::MAX_COARSE_LOD;
+                let networks = if coarse { 2.0 } else { 1.0 };
+                l.bound_m += networks * (rivers::CARVE_MAX_M + shores);
             }
         }
         Self {
@@ -419,6 +442,7 @@ impl EarthPlan {
             inv_relief_max: (1.0 / a_max) as f32,
             snow_seed: stream(seed, purpose::EARTH, 300),
             rivers,
+            coarse_rivers,
             fingerprint: fingerprint(b"strata climate v1", seed, &world),
         }
     }
@@ -615,11 +639,7 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
             heights[start..start + m].copy_from_slice(&out[..m]);
         }
     }
-    if let Some(rp) = plan
-        .rivers
-        .as_ref()
-        .filter(|_| lod as usize <= rivers::MAX_CARVE_LOD)
-    {
+    if let Some(rp) = plan.carve_plan(lod as usize) {
         let rj = rivers::job_for(plan, rp, spacing_m, gx0, gz0, w, h);
         carve(&rj, spacing_m, job, &mut heights);
     }
@@ -663,11 +683,13 @@ pub fn tile_water(
         key.x * super::plan::TILE_QUADS,
         key.z * super::plan::TILE_QUADS,
     );
-    let carved = key.lod as usize <= rivers::MAX_CARVE_LOD;
-    let rj = if carved {
-        rivers::water_job_for(plan, rp, spacing_m, gx0, gz0, n, n)
+    let rj = if let Some(cp) = plan.carve_plan(key.lod as usize) {
+        rivers::water_job_for(plan, cp, spacing_m, gx0, gz0, n, n)
     } else if rp.lakes >= 5 {
-        rivers::lake_job_for(plan, rp, spacing_m, gx0, gz0, n, n)
+        // The coarse network's lakes where the world has it: the fine network's floods over a
+        // tile of 131 km and more cost tens of milliseconds cold.
+        let lp = plan.coarse_rivers.as_ref().unwrap_or(rp);
+        rivers::lake_job_for(plan, lp, spacing_m, gx0, gz0, n, n)
     } else {
         rivers::RiverJob::default()
     };

@@ -160,19 +160,28 @@ pub struct RiverParams {
     /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
     /// lake's level instead of ending in a basin closed by the finer relief; but the valleys of
     /// the rivers below the outlet are cut below the lake's level right beside its water. `4`
-    /// (new worlds): the lakes of `3` held by a sill, where the carve cuts no floodplain or
-    /// valley wall below the lake's level beside its water (the shores' step 5). `5` (asked for
-    /// by name; not yet the default: where a river runs up a valley the lake floods, the
-    /// viewer's ribbon and the lake's sheet leave gaps along it): the lakes of
-    /// `4` whose floods search 2048 instead of 256 nodes within 30 instead of 12 node
-    /// spacings, so the basins that a mountain belt's ridges close, tens of kilometres across,
-    /// fill to their outlets and spill, instead of holding a lake in their bottoms below a
-    /// closed dry floor hundreds of metres deep.
+    /// (new worlds until `5`): the lakes of `3` held by a sill, where the carve cuts no
+    /// floodplain or valley wall below the lake's level beside its water (the shores' step 5).
+    /// `5` (new worlds): the lakes of `4` whose floods search 2048 instead of 256 nodes within
+    /// 30 instead of 12 node spacings, so the basins that a mountain belt's ridges close, tens
+    /// of kilometres across, fill to their outlets and spill, instead of holding a lake in
+    /// their bottoms below a closed dry floor hundreds of metres deep (over 131 km of the range
+    /// east of the origin at 64 m, the land in closed depressions deeper than 2 m falls from
+    /// 12.7 % to 4.7 %); tiles too coarse to carve show the lakes over their uncarved heights.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
     )]
     pub lakes: u32,
+    /// The coarse network, 0 or 1 ([`super::rivers`], LODs). `0`: tiles coarser than
+    /// [`super::rivers::MAX_CARVE_LOD`] are not carved; worlds stored before `1` existed have
+    /// no `coarse` and keep it, and their bytes. `1` (new worlds): a second network of nodes
+    /// [`super::rivers::COARSE_FACTOR`] times as far apart carves LODs
+    /// `MAX_CARVE_LOD + 1 ..=` [`super::rivers::MAX_COARSE_LOD`], so the surface at 512 m to
+    /// 2 km spacing has drainage: valleys of its larger rivers instead of the closed basins of
+    /// the uncarved relief.
+    #[serde(default, skip_serializing_if = "RiverParams::is_no_coarse")]
+    pub coarse: u32,
 }
 
 impl Default for RiverParams {
@@ -183,7 +192,8 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 7,
-            lakes: 4,
+            lakes: 5,
+            coarse: 1,
         }
     }
 }
@@ -203,6 +213,10 @@ impl RiverParams {
 
     fn is_first_lakes(v: &u32) -> bool {
         *v == 1
+    }
+
+    fn is_no_coarse(v: &u32) -> bool {
+        *v == 0
     }
 
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
@@ -232,7 +246,8 @@ impl RiverParams {
             (1..=5).contains(&self.lakes),
             "rivers.lakes",
             "must be 1, 2, 3, 4 or 5",
-        )
+        )?;
+        check(self.coarse <= 1, "rivers.coarse", "must be 0 or 1")
     }
 }
 

@@ -376,7 +376,11 @@ impl Network<'_> {
                     continue;
                 }
                 let wet = q >= self.plan.wet_q;
-                let (hw, depth) = if wet { channel(q) } else { (0.0, 0.0) };
+                let (hw, depth) = if wet {
+                    channel(q * self.plan.q_scale)
+                } else {
+                    (0.0, 0.0)
+                };
                 // Valleys widen with the discharge, from VALLEY_MIN to the reach, and may widen
                 // further where they are deep: up to three times that in plains, more where the
                 // relief is high (at most the reach).

@@ -510,6 +510,7 @@ impl<'a> Network<'a> {
     }
 
     fn incision(&self, q: u32) -> f32 {
+        let q = (q * self.plan.q_scale).min(Q_MAX);
         self.plan.incision_m * libm::log2f(1.0 + q as f32) / libm::log2f(1.0 + Q_MAX as f32)
     }
 
