@@ -233,10 +233,9 @@ async fn a_world_stored_with_every_gully_octave_serves_the_same_tile_bytes() {
     );
 }
 
-/// A world stored with the default of new worlds before `lakes: 5` and the coarse network
-/// (`valleys: 7`, `lakes: 4`, no `coarse`; `tests/fixtures/lakes4-coarse0-world/`) keeps its
-/// bytes, at LODs 9 to 12 too, where a bare seed carves the coarse network's valleys and
-/// shows its lakes.
+/// A world stored with the default of new worlds before the coarse network (`valleys: 7`,
+/// `lakes: 4`, no `coarse`; `tests/fixtures/lakes4-coarse0-world/`) keeps its bytes, at LODs
+/// 9 to 12 too, where a bare seed carves the coarse network's valleys and shows its lakes.
 #[tokio::test]
 async fn a_world_stored_with_the_fourth_lakes_and_no_coarse_network_serves_the_same_tile_bytes() {
     const WORLD: &str = "0feba0a97a5cda0562a6d6da";
@@ -257,7 +256,7 @@ async fn a_world_stored_with_the_fourth_lakes_and_no_coarse_network_serves_the_s
 fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
     assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 7);
-    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 5);
+    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
     assert_eq!(scene["world"]["earth"]["rivers"]["coarse"], 1);
     let mut without = scene.clone();
     without["world"]["earth"]["rivers"]["coarse"] = serde_json::json!(0);
@@ -276,7 +275,7 @@ fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(8);
     let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 8 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
-    for known in [1, 2, 3, 4] {
+    for known in [1, 2, 3, 5] {
         let mut other = scene.clone();
         other["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&other).expect("other known lakes are accepted");

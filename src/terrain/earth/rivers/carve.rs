@@ -4,13 +4,14 @@
 use super::super::super::hash::{hash2, signed_unit};
 use super::super::super::noise::lattice;
 use super::super::EarthPlan;
-use super::network::{Network, Node};
+use super::network::{LongPiece, Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
     Q_MAX, REACH, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN, VALLEY_MIN,
     WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
+use rustc_hash::FxHashSet as HashSet;
 
 /// One piece of a river's centre line, with the profile of its valley: the cubic
 /// `a + t·(b − a) + t·(1 − t)·((1 − t)·sa + t·sb)`, `t ∈ [0, 1]`, whose offset from the chord
@@ -357,89 +358,129 @@ impl Network<'_> {
                 .is_some_and(|(a, b)| self.lake(a, b).is_some())
     }
 
-    /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres).
     /// The pieces of the edges out of the nodes of piece block `b` ([`PIECE_BLOCK`] nodes a
     /// side), in node order (rows, then columns) and along each edge.
     pub(super) fn block_pieces(&mut self, (bx, bz): (i64, i64)) -> Vec<Piece> {
-        let s = self.plan.spacing_m;
         let mut pieces = Vec::new();
         for k in bz * PIECE_BLOCK..(bz + 1) * PIECE_BLOCK {
             for i in bx * PIECE_BLOCK..(bx + 1) * PIECE_BLOCK {
-                let q = self.q(i, k);
-                if !self.carves(i, k, q) {
-                    continue;
-                }
-                let Some(edge) = self.edge(i, k) else {
-                    continue;
-                };
-                if edge.from.sea {
-                    continue;
-                }
-                let wet = q >= self.plan.wet_q;
-                let (hw, depth) = if wet {
-                    channel(q * self.plan.q_scale)
-                } else {
-                    (0.0, 0.0)
-                };
-                // Valleys widen with the discharge, from VALLEY_MIN to the reach, and may widen
-                // further where they are deep: up to three times that in plains, more where the
-                // relief is high (at most the reach).
-                let grow = libm::log2f(q as f32) / libm::log2f(Q_MAX as f32);
-                let max_reach = REACH * s;
-                let valley = VALLEY_MIN + (max_reach - VALLEY_MIN) * grow;
-                let relief = self.relief(i, k) * self.earth.inv_relief_max;
-                let reach = (3.0 * valley * (1.0 + 3.0 * relief)).min(max_reach);
-                // `valleys: 2`: a flat floodplain, then walls as wide as the height they climb
-                // (`profile`); the land beyond keeps its own shape.
-                let (floodplain, valley) = if self.plan.valleys >= 2 {
-                    let f = (FLOODPLAIN * hw + FLOODPLAIN_MIN_M).min(0.5 * reach);
-                    (f, 2.0 * f)
-                } else {
-                    (0.0, valley)
-                };
-                // `valleys: 4`: the floodplain's width and the walls' slope at a point of the
-                // centre line, scaled by value noise (one value at a point shared by the pieces
-                // that meet there, so they agree).
-                // `valleys: 6`: gentler walls where the relief is lower (one factor an edge).
-                let walls = self.plan.relief_walls.then(|| {
-                    (RELIEF_WALLS_MIN + (1.0 - RELIEF_WALLS_MIN) * relief.max(0.0).sqrt()).min(1.0)
-                });
-                let shape = |x: f32, z: f32| {
-                    let (f, slope) = self.plan.valley_shape(x, z, floodplain);
-                    (f, walls.map_or(slope, |w| slope * w))
-                };
-                for (p, bend) in edge.points.windows(2).zip(&edge.bends) {
-                    let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
-                    let (fa, sa) = shape(p[0][0], p[0][1]);
-                    let (fb, sb) = shape(p[1][0], p[1][1]);
-                    pieces.push(Piece {
-                        ax: p[0][0],
-                        az: p[0][1],
-                        bx: p[1][0],
-                        bz: p[1][1],
-                        wa: p[0][2],
-                        wb: p[1][2],
-                        half_width: hw,
-                        depth,
-                        valley,
-                        wet: if wet { 1.0 } else { 0.0 },
-                        reach,
-                        inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
-                        sax: bend[0],
-                        saz: bend[1],
-                        sbx: bend[2],
-                        sbz: bend[3],
-                        floodplain: fa,
-                        floodplain_b: fb,
-                        slope_a: sa,
-                        slope_b: sb,
-                        spur_a: self.plan.spur_at(p[0][0], p[0][1]),
-                        spur_b: self.plan.spur_at(p[1][0], p[1][1]),
-                    });
-                }
+                self.node_pieces(i, k, &mut pieces);
             }
         }
         pieces
+    }
+
+    /// Appends the pieces of the edge out of node `(i, k)` to `pieces`, along the edge (none
+    /// when the edge carves nothing).
+    fn node_pieces(&mut self, i: i64, k: i64, pieces: &mut Vec<Piece>) {
+        let s = self.plan.spacing_m;
+        let q = self.q(i, k);
+        if !self.carves(i, k, q) {
+            return;
+        }
+        let Some(edge) = self.edge(i, k) else {
+            return;
+        };
+        if edge.from.sea {
+            return;
+        }
+        let wet = q >= self.plan.wet_q;
+        let (hw, depth) = if wet {
+            channel(q * self.plan.q_scale)
+        } else {
+            (0.0, 0.0)
+        };
+        // Valleys widen with the discharge, from VALLEY_MIN to the reach, and may widen
+        // further where they are deep: up to three times that in plains, more where the
+        // relief is high (at most the reach).
+        let grow = libm::log2f(q as f32) / libm::log2f(Q_MAX as f32);
+        let max_reach = REACH * s;
+        let valley = VALLEY_MIN + (max_reach - VALLEY_MIN) * grow;
+        let relief = self.relief(i, k) * self.earth.inv_relief_max;
+        let reach = (3.0 * valley * (1.0 + 3.0 * relief)).min(max_reach);
+        // `valleys: 2`: a flat floodplain, then walls as wide as the height they climb
+        // (`profile`); the land beyond keeps its own shape.
+        let (floodplain, valley) = if self.plan.valleys >= 2 {
+            let f = (FLOODPLAIN * hw + FLOODPLAIN_MIN_M).min(0.5 * reach);
+            (f, 2.0 * f)
+        } else {
+            (0.0, valley)
+        };
+        // `valleys: 4`: the floodplain's width and the walls' slope at a point of the
+        // centre line, scaled by value noise (one value at a point shared by the pieces
+        // that meet there, so they agree).
+        // `valleys: 6`: gentler walls where the relief is lower (one factor an edge).
+        let walls = self.plan.relief_walls.then(|| {
+            (RELIEF_WALLS_MIN + (1.0 - RELIEF_WALLS_MIN) * relief.max(0.0).sqrt()).min(1.0)
+        });
+        let shape = |x: f32, z: f32| {
+            let (f, slope) = self.plan.valley_shape(x, z, floodplain);
+            (f, walls.map_or(slope, |w| slope * w))
+        };
+        for (p, bend) in edge.points.windows(2).zip(&edge.bends) {
+            let (abx, abz) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
+            let (fa, sa) = shape(p[0][0], p[0][1]);
+            let (fb, sb) = shape(p[1][0], p[1][1]);
+            pieces.push(Piece {
+                ax: p[0][0],
+                az: p[0][1],
+                bx: p[1][0],
+                bz: p[1][1],
+                wa: p[0][2],
+                wb: p[1][2],
+                half_width: hw,
+                depth,
+                valley,
+                wet: if wet { 1.0 } else { 0.0 },
+                reach,
+                inv_len2: 1.0 / (abx * abx + abz * abz + PIECE_LEN2_EPS),
+                sax: bend[0],
+                saz: bend[1],
+                sbx: bend[2],
+                sbz: bend[3],
+                floodplain: fa,
+                floodplain_b: fb,
+                slope_a: sa,
+                slope_b: sb,
+                spur_a: self.plan.spur_at(p[0][0], p[0][1]),
+                spur_b: self.plan.spur_at(p[1][0], p[1][1]),
+            });
+        }
+    }
+
+    /// The pieces of the long edges that can reach piece block `(bx, bz)` (the nodes' cells
+    /// `bx·PIECE_BLOCK..` × `bz·PIECE_BLOCK..`), with their pits and indices along the edge: a
+    /// breached pit or a spilling lake drains to its outlet, up to the flood's radius (plus
+    /// one) away, and its edge runs over the nodes between, farther from its pit's block than
+    /// the blocks a job reads for the edges between lattice neighbours (plans with
+    /// [`RiverPlan::long_edges`]; [`Network::long_pieces`] caches them).
+    pub(super) fn block_long_pieces(&mut self, (bx, bz): (i64, i64)) -> Vec<LongPiece> {
+        let s = self.plan.spacing_m;
+        let side = PIECE_BLOCK as f32 * s;
+        let (x0, z0) = (bx as f32 * side, bz as f32 * side);
+        let (x1, z1) = (x0 + side, z0 + side);
+        // An edge's curve stays within a spacing or two of the segment between its nodes.
+        let margin = self.plan.lake_radius + 1 + REACH.ceil() as i64 + 3;
+        let is = bx * PIECE_BLOCK - margin..(bx + 1) * PIECE_BLOCK + margin;
+        let ks = bz * PIECE_BLOCK - margin..(bz + 1) * PIECE_BLOCK + margin;
+        let mut out = Vec::new();
+        for (i, k) in self.sinks(is, ks) {
+            let Some((di, dk)) = self.down(i, k) else {
+                continue;
+            };
+            if (di - i).abs() <= 1 && (dk - k).abs() <= 1 {
+                continue;
+            }
+            let mut pieces = Vec::new();
+            self.node_pieces(i, k, &mut pieces);
+            for (j, p) in pieces.into_iter().enumerate() {
+                let reach = p.reach.max(p.half_width + 1.0);
+                if rect_distance(&p, x0, z0, x1, z1) < reach + p.bulge() {
+                    out.push(((i, k), j as u32, p));
+                }
+            }
+        }
+        out
     }
 
     /// The rivers and lakes that can touch samples in `[x0, x1] × [z0, z1]` (metres), binned on
@@ -554,6 +595,29 @@ impl Network<'_> {
                     let reach = reach_of(p);
                     reach > 0.0 && rect_distance(p, x0, z0, x1, z1) < reach + p.bulge()
                 }));
+            }
+        }
+        if self.plan.long_edges {
+            // The long edges of pits beyond the blocks read (those of pits inside them are
+            // among the blocks' pieces), each piece once.
+            let mut seen = HashSet::default();
+            for bz in bz0..=bz1 {
+                for bx in bx0..=bx1 {
+                    for (pit, j, p) in self.long_pieces((bx, bz)).iter() {
+                        let (pb, pk) =
+                            (pit.0.div_euclid(PIECE_BLOCK), pit.1.div_euclid(PIECE_BLOCK));
+                        if (bx0..=bx1).contains(&pb) && (bz0..=bz1).contains(&pk) {
+                            continue;
+                        }
+                        let reach = reach_of(p);
+                        if reach > 0.0
+                            && rect_distance(p, x0, z0, x1, z1) < reach + p.bulge()
+                            && seen.insert((*pit, *j))
+                        {
+                            pieces.push(*p);
+                        }
+                    }
+                }
             }
         }
         // A piece goes into every bin it can reach: the distance from the piece to the bin's

@@ -28,7 +28,7 @@
 //!    lake in their bottoms below a dry closed floor). Each pit's flood is computed once per
 //!    world and kept in a bounded process cache.
 //!    In worlds with `lakes` 1 and 2 rivers end in the lake and lakes do not spill. In worlds
-//!    with `lakes` 3 to 5 (5: the default of new worlds) a node below the level whose steepest
+//!    with `lakes` 3 to 5 (4: the default of new worlds) a node below the level whose steepest
 //!    descent runs back into the lake, or into a pit no lower than the lake's, is flooded too (on
 //!    flat land two neighbouring pits are each other's first node below the level), and a lake
 //!    whose flood found an outlet spills there when the flow from the outlet reaches the sea,
@@ -115,7 +115,9 @@
 //! heights come from the coarsest LOD; a node stands for `COARSE_FACTOR²` fine nodes
 //! ([`RiverPlan::q_scale`]) wherever a discharge sets a size, and its floodplains are at least
 //! [`COARSE_FLOOR_M`] wide each side, so a 512 m sample grid finds the valley floors without
-//! pits. Tiles coarser still show its lakes. Without it the 512 m surface was the uncarved
+//! pits; its floods search as far and over as much land as the fine network's (a radius and
+//! a node count scaled by the spacings), so its lakes fill the basins the fine network's fill.
+//! In `lakes: 5` worlds tiles coarser still show its lakes. Without it the 512 m surface was the uncarved
 //! relief: no valleys, and 15 to 24 % of its land in closed basins (`bench realism`). Its
 //! rivers are the larger rivers of the fine network where both networks follow the same
 //! slopes, not everywhere: a tile of LOD 9 shows the coarse network's valleys and lakes, its
@@ -391,6 +393,13 @@ pub struct RiverPlan {
     /// Narrowest half-width of a floodplain, metres: 0 (no bound beyond
     /// [`FLOOR_NARROWEST_M`]'s), or [`COARSE_FLOOR_M`] for the coarse network.
     pub floor_min_m: f32,
+    /// Whether a job also reads the long edges of pits beyond its blocks (worlds with
+    /// `coarse: 1`): a breached pit or a spilling lake drains to an outlet up to the flood's
+    /// radius away, and a job that read only the piece blocks within a few spacings of its
+    /// rectangle missed such an edge's pieces where its pit lay farther, so two jobs over the
+    /// same sample (two tiles, or a tile and the coarser edge a finer tile snaps to) could
+    /// carve it differently. Worlds stored before keep their bytes.
+    pub long_edges: bool,
 }
 
 impl RiverPlan {
@@ -426,6 +435,7 @@ impl RiverPlan {
             spacing_m,
             q_scale,
             floor_min_m: if coarse { COARSE_FLOOR_M } else { 0.0 },
+            long_edges: params.coarse >= 1,
             seed: stream(seed, purpose::EARTH, if coarse { 420 } else { 400 }),
             node_lod: lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize,
             wet_q: if coarse {
@@ -450,16 +460,20 @@ impl RiverPlan {
             spur_seed: stream(seed, purpose::EARTH, 408),
             valley_seeds: [406, 407].map(|k| stream(seed, purpose::EARTH, k)),
             lakes: params.lakes,
+            // The coarse network searches as far and over as much land as the fine one, so
+            // its lakes fill the basins the fine network's fill.
             lake_max_nodes: if params.lakes >= 5 {
                 LAKE_MAX_NODES_5
             } else {
                 LAKE_MAX_NODES
-            },
-            lake_radius: if params.lakes >= 5 {
+            } / q_scale as usize,
+            lake_radius: (if params.lakes >= 5 {
                 LAKE_RADIUS_5
             } else {
                 LAKE_RADIUS
-            },
+            } as f32
+                * (params.spacing_m / spacing_m))
+                .ceil() as i64,
             shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {

@@ -41,6 +41,10 @@ pub fn clear_caches() {
 /// A call's memo of one kind of block, by block index.
 type Memo<V> = HashMap<(i64, i64), Arc<V>>;
 
+/// A piece of a long edge (a breached pit's or a spilling lake's, to an outlet beyond its
+/// lattice neighbours): the pit, the piece's index along the edge and the piece.
+pub(super) type LongPiece = ((i64, i64), u32, Piece);
+
 /// A block of one world's network: the world's fingerprint ([`RiverPlan::fingerprint`]) and
 /// the block's index.
 type BlockKey = (u64, (i64, i64));
@@ -54,6 +58,8 @@ struct Caches {
     spills: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
     flow: moka::sync::Cache<BlockKey, Arc<FlowBlock>>,
     pieces: moka::sync::Cache<BlockKey, Arc<Vec<Piece>>>,
+    /// The long edges' pieces that can reach each piece block ([`LongPiece`]).
+    long: moka::sync::Cache<BlockKey, Arc<Vec<LongPiece>>>,
     /// The lakes of pits, by the world's fingerprint and the pit: the blocks around a pit
     /// within a flood's radius all ask for its lake.
     floods: moka::sync::Cache<BlockKey, Arc<Lake>>,
@@ -87,6 +93,9 @@ static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches 
     flow: cache(FLOW_BYTES, |b: &FlowBlock| 4 * (b.q.len() + b.w.len())),
     pieces: cache(PIECES_BYTES, |p: &Vec<Piece>| {
         std::mem::size_of::<Piece>() * p.len()
+    }),
+    long: cache(FLOODS_BYTES, |p: &Vec<LongPiece>| {
+        std::mem::size_of::<LongPiece>() * p.len()
     }),
     floods: cache(FLOODS_BYTES, |l: &Lake| 16 * l.1.len()),
     lakes: cache(ROUTES_BYTES, |b: &LakeBlock| 4 * b.lake.len()),
@@ -293,7 +302,11 @@ impl<'a> Network<'a> {
     /// The nodes in `is × ks` without a lattice neighbour below them (pits, and sea nodes
     /// with no lower neighbour), in row order (`k`, then `i`): each height block of the range
     /// is scanned for them, instead of asking every node.
-    fn sinks(&mut self, is: std::ops::Range<i64>, ks: std::ops::Range<i64>) -> Vec<(i64, i64)> {
+    pub(super) fn sinks(
+        &mut self,
+        is: std::ops::Range<i64>,
+        ks: std::ops::Range<i64>,
+    ) -> Vec<(i64, i64)> {
         let mut found = Vec::new();
         for hz in block_of(ks.start).0..=block_of(ks.end - 1).0 {
             for hx in block_of(is.start).0..=block_of(is.end - 1).0 {
@@ -460,6 +473,17 @@ impl<'a> Network<'a> {
     }
 
     /// The pieces of piece block `b` (`Network::block_pieces`), memoised.
+    /// The long edges' pieces that can reach piece block `b`, from the process cache or
+    /// computed ([`Network::block_long_pieces`]).
+    pub(super) fn long_pieces(&mut self, b: (i64, i64)) -> Arc<Vec<LongPiece>> {
+        if let Some(p) = CACHES.long.get(&(self.plan.fingerprint, b)) {
+            return p;
+        }
+        let p = Arc::new(self.block_long_pieces(b));
+        CACHES.long.insert((self.plan.fingerprint, b), p.clone());
+        p
+    }
+
     pub(super) fn pieces(&mut self, b: (i64, i64)) -> Arc<Vec<Piece>> {
         if let Some(p) = CACHES.pieces.get(&(self.plan.fingerprint, b)) {
             return p;
