@@ -179,8 +179,8 @@ pub struct RiverParams {
     /// [`super::rivers::MAX_CARVE_LOD`] are not carved; worlds stored before `1` existed have
     /// no `coarse` and keep it, and their bytes. `1` (new worlds): a second network of nodes
     /// [`super::rivers::COARSE_FACTOR`] times as far apart carves LODs
-    /// `MAX_CARVE_LOD + 1 ..=` [`super::rivers::MAX_COARSE_LOD`], so the surface at 512 m to
-    /// 2 km spacing has drainage: valleys of its larger rivers instead of the closed basins of
+    /// `MAX_CARVE_LOD + 1 ..=` [`super::rivers::MAX_COARSE_LOD`], so the surface at 512 m and
+    /// 1 km spacing has drainage: valleys of its larger rivers instead of the closed basins of
     /// the uncarved relief.
     #[serde(default, skip_serializing_if = "RiverParams::is_no_coarse")]
     pub coarse: u32,

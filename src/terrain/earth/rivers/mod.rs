@@ -117,12 +117,13 @@
 //! [`COARSE_FLOOR_M`] wide each side, so a 512 m sample grid finds the valley floors without
 //! pits; its floods search as far and over as much land as the fine network's (a radius and
 //! a node count scaled by the spacings), so its lakes fill the basins the fine network's fill.
-//! In `lakes: 5` worlds tiles coarser still show its lakes. Without it the 512 m surface was the uncarved
-//! relief: no valleys, and 15 to 24 % of its land in closed basins (`bench realism`). Its
-//! rivers are the larger rivers of the fine network where both networks follow the same
-//! slopes, not everywhere: a tile of LOD 9 shows the coarse network's valleys and lakes, its
-//! finer neighbours the fine network's, so the two differ by at most twice the carve and the
-//! shores (the LOD bound of those LODs grows by that).
+//! In `lakes: 5` worlds tiles coarser still show its lakes. Without it the 512 m surface was
+//! the uncarved relief: no valleys, and 15 to 24 % of its land in closed basins (`bench
+//! realism`). The two networks are computed apart, so their rivers and lakes agree only where
+//! both follow the same slopes (its lakes lie where the fine network's do, in other outlines):
+//! a tile of LOD 9 shows the coarse network's valleys and lakes, its finer neighbours the fine
+//! network's, and the two differ by at most twice the carve and the shores (the LOD bound of
+//! those LODs grows by that).
 
 mod carve;
 mod lanes;
@@ -386,9 +387,11 @@ pub struct RiverPlan {
     /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
     pub shore_seeds: [u32; 4],
     /// Nodes of the fine network a node of this one stands for: 1, or `COARSE_FACTOR²` for the
-    /// coarse network. Discharges are counted in this network's nodes and scaled by it wherever
-    /// they set a size (channels, incision, the water and carve thresholds), so a river of a
-    /// given basin is as wide and as deep in both networks.
+    /// coarse network. Discharges are counted in this network's nodes and scaled by it where
+    /// they set a size (channels, incision, the water threshold), so a river of a given basin
+    /// is as wide and as deep in both networks; the relief threshold of `valleys: 7`
+    /// ([`RELIEF_SOURCE_Q`]) reads the unscaled count, so in high relief only the coarse
+    /// network's larger rivers carve, as in the fine one.
     pub q_scale: u32,
     /// Narrowest half-width of a floodplain, metres: 0 (no bound beyond
     /// [`FLOOR_NARROWEST_M`]'s), or [`COARSE_FLOOR_M`] for the coarse network.

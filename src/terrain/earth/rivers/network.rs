@@ -472,7 +472,6 @@ impl<'a> Network<'a> {
         out
     }
 
-    /// The pieces of piece block `b` (`Network::block_pieces`), memoised.
     /// The long edges' pieces that can reach piece block `b`, from the process cache or
     /// computed ([`Network::block_long_pieces`]).
     pub(super) fn long_pieces(&mut self, b: (i64, i64)) -> Arc<Vec<LongPiece>> {
@@ -484,6 +483,7 @@ impl<'a> Network<'a> {
         p
     }
 
+    /// The pieces of piece block `b` (`Network::block_pieces`), memoised.
     pub(super) fn pieces(&mut self, b: (i64, i64)) -> Arc<Vec<Piece>> {
         if let Some(p) = CACHES.pieces.get(&(self.plan.fingerprint, b)) {
             return p;
