@@ -1120,3 +1120,77 @@ fn coarse_tiles_meet_their_neighbours_bit_for_bit() {
         println!("LOD {lod}: {wet} river vertices on the checked edges");
     }
 }
+
+/// River-kind vertices of the LOD-3 tiles (8 m) within `r` tiles of `centre` that lie farther
+/// than a vertex spacing beyond the channel of every river line of their tile, and all of them.
+fn water_off_the_lines(p: &WorldPlan, centre: (f32, f32), r: i64) -> (usize, usize) {
+    let (earth, _) = parts(p);
+    let (mut off, mut total) = (0, 0);
+    for key in tiles_around(p, 3, centre, r) {
+        let t = synthesize(p, key);
+        let s = t.spacing_m as f64;
+        let lines = tile_rivers(earth, key, t.spacing_m);
+        for v in (0..65 * 65).filter(|&v| t.water_kind[v] == kind::RIVER) {
+            total += 1;
+            let x = t.origin_x_m() + (v % 65) as f64 * s;
+            let z = t.origin_z_m() + (v / 65) as f64 * s;
+            let beyond = lines
+                .iter()
+                .flat_map(|l| {
+                    l.points.windows(2).zip(l.width_m.windows(2)).map(|(p, w)| {
+                        let (ax, az) = (p[0][0] as f64, p[0][1] as f64);
+                        let (dx, dz) = (p[1][0] as f64 - ax, p[1][1] as f64 - az);
+                        let t = (((x - ax) * dx + (z - az) * dz) / (dx * dx + dz * dz).max(1e-9))
+                            .clamp(0.0, 1.0);
+                        (ax + t * dx - x).hypot(az + t * dz - z) - 0.5 * w[0].max(w[1]) as f64
+                    })
+                })
+                .fold(f64::INFINITY, f64::min);
+            off += usize::from(beyond > s);
+        }
+    }
+    (off, total)
+}
+
+/// A client draws a river along its tile's river lines and leaves out the tile's river water
+/// within the channel's half-width and a vertex spacing of a line (the viewer's ribbons,
+/// `web/src/riverMask.ts`). With `lines: 2` (new worlds) the lines follow each piece's curve
+/// within `LINE_TOLERANCE_M` and include the long edges of breached pits and spilling lakes, so
+/// every river vertex of an 8 m tile lies along a line; with a bent piece's middle alone
+/// (`lines: 1`) a fifth of them lay up to 30 m beside it, drawn as dashes of water beside the
+/// ribbon. Around a river that enters a lake, near the origin, 690 km out and at negative
+/// coordinates.
+#[test]
+fn river_water_lies_along_the_tile_lines() {
+    let with_lines = |lines: u32| {
+        let mut params = WorldParams::default();
+        let rivers = params.earth.as_mut().and_then(|e| e.rivers.as_mut());
+        rivers.expect("rivers").lines = lines;
+        WorldPlan::new(42, params).expect("plan")
+    };
+    let (dense, first) = (with_lines(2), with_lines(1));
+    let (mut all, mut before) = ((0, 0), 0);
+    for centre in [
+        (16_884.0, 10_733.0),
+        (-2_528.0, 4_012.0),
+        (624_640.0, 301_056.0),
+        (-38_912.0, -14_336.0),
+    ] {
+        let (off, total) = water_off_the_lines(&dense, centre, 4);
+        let (off1, total1) = water_off_the_lines(&first, centre, 4);
+        println!("around {centre:?}: {off} of {total} river vertices off the lines ({off1} with lines 1)");
+        assert_eq!(total, total1, "the lines change no tile");
+        (all.0, all.1, before) = (all.0 + off, all.1 + total, before + off1);
+    }
+    assert!(all.1 > 500, "only {} river vertices", all.1);
+    assert_eq!(
+        all.0, 0,
+        "{} of {} river vertices off the lines",
+        all.0, all.1
+    );
+    assert!(
+        before * 10 > all.1,
+        "lines 1 left {before} of {} off",
+        all.1
+    );
+}

@@ -252,12 +252,61 @@ async fn a_world_stored_with_the_fourth_lakes_and_no_coarse_network_serves_the_s
     );
 }
 
+/// A world stored with the default of new worlds before `lakes: 5` and `lines: 2` (`valleys: 7`,
+/// `lakes: 4`, `coarse: 1`, no `lines`; `tests/fixtures/lakes4-coarse1-world/`) keeps the bytes
+/// of its tiles and of its river lines, where a bare seed fills more lakes and follows the
+/// carved curves in more points.
+#[tokio::test]
+async fn a_world_stored_with_the_fourth_lakes_and_the_first_lines_serves_the_same_bytes() {
+    const WORLD: &str = "b33d4a762ecdda94accda92c";
+    const FIXTURE: &str = "lakes4-coarse1-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 80).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
+    assert_eq!(rivers["lakes"], 4, "{rivers}");
+    assert_eq!(rivers["coarse"], 1, "{rivers}");
+    assert_eq!(rivers.get("lines"), None, "{rivers}");
+    let lines = common::fixture::check_pinned(&server, FIXTURE, "rivers.blake3", |_, key| {
+        format!("/v1/worlds/{WORLD}/rivers/{key}.json?v=1")
+    })
+    .await;
+    assert_eq!(lines, 9, "every fixture body of river lines was checked");
+    assert!(
+        bare_seed_differs(&server, FIXTURE).await > 0,
+        "a bare seed fills its lakes with lakes: 5"
+    );
+    let pinned = std::fs::read_to_string(common::fixture::path(FIXTURE, "rivers.blake3"))
+        .expect("fixture hashes");
+    let mut differ = 0;
+    for line in pinned.lines() {
+        let parts: Vec<&str> = line.split_whitespace().collect();
+        let (status, bare) = get(
+            &server.addr,
+            &format!("/v1/seeds/42/rivers/{}.json", parts[1]),
+        )
+        .await;
+        assert_eq!(status, 200, "{line}");
+        differ += usize::from(blake3::hash(&bare).to_hex().as_str() != parts[2]);
+    }
+    assert!(
+        differ >= 5,
+        "a bare seed's lines follow the curves in more points: {differ} of 9 differ"
+    );
+}
+
 #[test]
 fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
     assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 7);
-    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 4);
+    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 5);
     assert_eq!(scene["world"]["earth"]["rivers"]["coarse"], 1);
+    assert_eq!(scene["world"]["earth"]["rivers"]["lines"], 2);
+    let mut first = scene.clone();
+    first["world"]["earth"]["rivers"]["lines"] = serde_json::json!(1);
+    strata::scene::Scene::from_value(&first).expect("the first lines are accepted");
+    let mut bad = scene.clone();
+    bad["world"]["earth"]["rivers"]["lines"] = serde_json::json!(3);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("lines 3 is refused");
+    assert!(format!("{err:?}").contains("rivers/lines"), "{err:?}");
     let mut without = scene.clone();
     without["world"]["earth"]["rivers"]["coarse"] = serde_json::json!(0);
     strata::scene::Scene::from_value(&without).expect("no coarse network is accepted");
@@ -275,7 +324,7 @@ fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(8);
     let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 8 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
-    for known in [1, 2, 3, 5] {
+    for known in [1, 2, 3, 4] {
         let mut other = scene.clone();
         other["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&other).expect("other known lakes are accepted");

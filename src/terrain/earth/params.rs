@@ -151,25 +151,23 @@ pub struct RiverParams {
         skip_serializing_if = "RiverParams::is_first_valleys"
     )]
     pub valleys: u32,
-    /// The lakes, 1 to 5 ([`super::rivers`], step 5). `1`: a sample is lake water where one of
-    /// the four nodes around it holds a lake above its height, so a lake's water can end along
-    /// straight lines of the node lattice; worlds stored before `2` existed have no `lakes` and
-    /// keep it, and their bytes. `2`: the ground is shaped to meet the lake's level
-    /// along a curved shore ([`super::rivers`]' shores), where the water ends. `3` (asked for by
-    /// name): the lakes of `2`, and a lake whose flood found an outlet spills there, so its
-    /// river goes on to the sea or a lower lake through a valley cut in the rim down to the
-    /// lake's level instead of ending in a basin closed by the finer relief; but the valleys of
-    /// the rivers below the outlet are cut below the lake's level right beside its water. `4`
-    /// (new worlds): the lakes of `3` held by a sill, where the carve cuts no floodplain or
-    /// valley wall below the lake's level beside its water (the shores' step 5). `5` (asked for
-    /// by name; not yet the default: where its lakes flood a river's valley, the viewer shows
-    /// patches of lake water beside the river, `tests/viewer_water.rs`' lake-river place): the
-    /// lakes of `4` whose floods search 2048 instead of 256 nodes within 30 instead of 12 node
-    /// spacings, so the basins that a mountain belt's ridges close, tens of kilometres across,
-    /// fill to their outlets and spill, instead of holding a lake in their bottoms below a
-    /// closed dry floor hundreds of metres deep (over 131 km of the range east of the origin at
-    /// 64 m, the land in closed depressions deeper than 2 m falls from 12.7 % to 4.7 %); tiles
-    /// too coarse to carve show the lakes over their uncarved heights.
+    /// The lakes, 1 to 5 ([`super::rivers`], step 5). `1`: a sample is lake water where one of the
+    /// four nodes around it holds a lake above its height, so a lake's water can end along straight
+    /// lines of the node lattice; worlds stored before `2` existed have no `lakes` and keep it, and
+    /// their bytes. `2`: the ground is shaped to meet the lake's level along a curved shore
+    /// ([`super::rivers`]' shores), where the water ends. `3` (asked for by name): the lakes of
+    /// `2`, and a lake whose flood found an outlet spills there, so its river goes on to the sea or
+    /// a lower lake through a valley cut in the rim down to the lake's level instead of ending in a
+    /// basin closed by the finer relief; but the valleys of the rivers below the outlet are cut
+    /// below the lake's level right beside its water. `4` (new worlds until `5`): the lakes of `3`
+    /// held by a sill, where the carve cuts no floodplain or valley wall below the lake's level
+    /// beside its water (the shores' step 5). `5` (new worlds): the lakes of `4` whose floods
+    /// search 2048 instead of 256 nodes within 30 instead of 12 node spacings, so the basins that a
+    /// mountain belt's ridges close, tens of kilometres across, fill to their outlets and spill,
+    /// instead of holding a lake in their bottoms below a closed dry floor hundreds of metres deep
+    /// (over 131 km of the range east of the origin at 64 m, the land in closed depressions deeper
+    /// than 2 m falls from 12.7 % to 4.7 %); tiles too coarse to carve show the lakes over their
+    /// uncarved heights.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
@@ -184,6 +182,18 @@ pub struct RiverParams {
     /// the uncarved relief.
     #[serde(default, skip_serializing_if = "RiverParams::is_no_coarse")]
     pub coarse: u32,
+    /// The river lines' centre lines, 1 or 2 ([`super::rivers`]' lines). `1`: a bent piece's
+    /// ends and middle, a chord of which strays up to about 30 m from the curve the carve
+    /// follows, so a client that draws the river along the line leaves the carved channel's
+    /// water beside it; worlds stored before `2` existed have no `lines` and keep it, and their
+    /// bytes. `2` (new worlds): each piece's curve in as many points as keep the chords within
+    /// [`super::rivers::LINE_TOLERANCE_M`] of it, and the long edges of breached pits and
+    /// spilling lakes (worlds with `coarse: 1`, which carve them) among the lines.
+    #[serde(
+        default = "RiverParams::first_lines",
+        skip_serializing_if = "RiverParams::is_first_lines"
+    )]
+    pub lines: u32,
 }
 
 impl Default for RiverParams {
@@ -194,8 +204,9 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 7,
-            lakes: 4,
+            lakes: 5,
             coarse: 1,
+            lines: 2,
         }
     }
 }
@@ -219,6 +230,14 @@ impl RiverParams {
 
     fn is_no_coarse(v: &u32) -> bool {
         *v == 0
+    }
+
+    fn first_lines() -> u32 {
+        1
+    }
+
+    fn is_first_lines(v: &u32) -> bool {
+        *v == 1
     }
 
     /// Checks every limit; `cell_m` is the world's LOD-0 spacing.
@@ -249,7 +268,12 @@ impl RiverParams {
             "rivers.lakes",
             "must be 1, 2, 3, 4 or 5",
         )?;
-        check(self.coarse <= 1, "rivers.coarse", "must be 0 or 1")
+        check(self.coarse <= 1, "rivers.coarse", "must be 0 or 1")?;
+        check(
+            (1..=2).contains(&self.lines),
+            "rivers.lines",
+            "must be 1 or 2",
+        )
     }
 }
 

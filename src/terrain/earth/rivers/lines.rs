@@ -5,10 +5,21 @@
 //! lattice order on ties, as the carve's curves do); the other incoming chains end there, in a
 //! river at least as large. A chain also ends in the sea, in a lake, or at the edge of what the
 //! tile touches, where the neighbouring tile's product continues it from the same node.
+//!
+//! Points: each piece's ends; a bent piece (`valleys: 3` and later) adds its middle, or with
+//! `lines: 2` ([`RiverPlan::dense_lines`]) as many points of the curve the carve follows as keep
+//! the chords within [`LINE_TOLERANCE_M`] of it, so a client drawing the river along the line
+//! covers the carved channel's water (with the middle alone the chords strayed up to about
+//! 30 m from it). `lines: 2` also reads the long edges of breached pits and spilling lakes
+//! whose pits lie beyond the nodes around the rectangle, which the carve reads since
+//! `coarse: 1` ([`RiverPlan::long_edges`]).
+//!
+//! [`RiverPlan::dense_lines`]: super::RiverPlan::dense_lines
+//! [`RiverPlan::long_edges`]: super::RiverPlan::long_edges
 
 use super::carve::Edge;
 use super::network::{Network, NodeId};
-use super::{channel, discharge_m3s};
+use super::{channel, discharge_m3s, LINE_MAX_STEPS, LINE_TOLERANCE_M};
 use std::collections::{HashMap, HashSet};
 
 /// How a river line ends.
@@ -52,40 +63,60 @@ impl Network<'_> {
         let ni1 = ((x1 + margin) / s_m).floor() as i64;
         let nk0 = ((z0 - margin) / s_m).floor() as i64;
         let nk1 = ((z1 + margin) / s_m).floor() as i64;
-        // The wet edges whose curve (with its channel) touches the rectangle.
-        let mut edges: Vec<Edge> = Vec::new();
+        // The wet edges whose curve (with its channel) touches the rectangle: those of the nodes
+        // around it, and with `lines: 2` in worlds that carve them the long edges of the pits
+        // within a flood's radius (a breached pit or a spilling lake drains to an outlet up to
+        // that far away), each once.
+        let mut nodes: Vec<NodeId> = Vec::new();
         for k in nk0..=nk1 {
             for i in ni0..=ni1 {
-                let q = self.q(i, k);
-                if q < wet || !self.carves(i, k, q) {
-                    continue;
+                nodes.push((i, k));
+            }
+        }
+        if self.plan.dense_lines && self.plan.long_edges {
+            let far = self.plan.lake_radius + 1;
+            let sinks = self.sinks(ni0 - far..ni1 + far + 1, nk0 - far..nk1 + far + 1);
+            for (i, k) in sinks {
+                let near = (ni0..=ni1).contains(&i) && (nk0..=nk1).contains(&k);
+                let long = self
+                    .down(i, k)
+                    .is_some_and(|(di, dk)| (di - i).abs() > 1 || (dk - k).abs() > 1);
+                if long && !near {
+                    nodes.push((i, k));
                 }
-                let Some(e) = self.edge(i, k) else { continue };
-                if e.from.sea {
-                    continue;
-                }
-                // `valleys: 3`: a piece touches when the box around its chord, widened by the
-                // channel and the piece's bulge, meets the rectangle (a piece may cross a small
-                // tile between its points). Before, a point within the channel's half-width of
-                // it did, and stored worlds keep that test and their bytes.
-                let hw = channel(e.from.q).0;
-                let near_point = |p: &[f32; 3]| {
-                    p[0] >= x0 - hw && p[0] <= x1 + hw && p[1] >= z0 - hw && p[1] <= z1 + hw
-                };
-                let touches = if self.plan.valleys < 3 {
-                    e.points.iter().any(near_point)
-                } else {
-                    e.points.windows(2).zip(&e.bends).any(|(p, b)| {
-                        let m = hw + 0.25 * b[0].hypot(b[1]).max(b[2].hypot(b[3]));
-                        p[0][0].min(p[1][0]) - m <= x1
-                            && p[0][0].max(p[1][0]) + m >= x0
-                            && p[0][1].min(p[1][1]) - m <= z1
-                            && p[0][1].max(p[1][1]) + m >= z0
-                    })
-                };
-                if touches {
-                    edges.push(e);
-                }
+            }
+        }
+        let mut edges: Vec<Edge> = Vec::new();
+        for (i, k) in nodes {
+            let q = self.q(i, k);
+            if q < wet || !self.carves(i, k, q) {
+                continue;
+            }
+            let Some(e) = self.edge(i, k) else { continue };
+            if e.from.sea {
+                continue;
+            }
+            // `valleys: 3`: a piece touches when the box around its chord, widened by the
+            // channel and the piece's bulge, meets the rectangle (a piece may cross a small
+            // tile between its points). Before, a point within the channel's half-width of
+            // it did, and stored worlds keep that test and their bytes.
+            let hw = channel(e.from.q).0;
+            let near_point = |p: &[f32; 3]| {
+                p[0] >= x0 - hw && p[0] <= x1 + hw && p[1] >= z0 - hw && p[1] <= z1 + hw
+            };
+            let touches = if self.plan.valleys < 3 {
+                e.points.iter().any(near_point)
+            } else {
+                e.points.windows(2).zip(&e.bends).any(|(p, b)| {
+                    let m = hw + 0.25 * b[0].hypot(b[1]).max(b[2].hypot(b[3]));
+                    p[0][0].min(p[1][0]) - m <= x1
+                        && p[0][0].max(p[1][0]) + m >= x0
+                        && p[0][1].min(p[1][1]) - m <= z1
+                        && p[0][1].max(p[1][1]) + m >= z0
+                })
+            };
+            if touches {
+                edges.push(e);
             }
         }
         let by_from: HashMap<NodeId, usize> = edges
@@ -106,6 +137,7 @@ impl Network<'_> {
                 is_next.insert(m);
             }
         }
+        let dense = self.plan.dense_lines;
         let mut lines = Vec::new();
         for start in 0..edges.len() {
             if is_next.contains(&start) {
@@ -125,18 +157,26 @@ impl Network<'_> {
                 let e = &edges[n];
                 let skip = usize::from(!line.points.is_empty());
                 for (j, p) in e.points.iter().enumerate().skip(skip) {
-                    // A bent piece (`valleys: 3`) adds its middle, on the curve the carve
-                    // follows, before its downstream end.
+                    // A bent piece (`valleys: 3`) adds points on the curve the carve follows
+                    // before its downstream end: its middle, or with `lines: 2` as many as keep
+                    // the chords within `LINE_TOLERANCE_M` of the curve.
                     if j > 0 && e.bends[j - 1] != [0.0; 4] {
-                        // The piece's offset at its middle is `(sa + sb) / 8`.
                         let (a, s) = (e.points[j - 1], e.bends[j - 1]);
-                        line.points.push([
-                            0.5 * (a[0] + p[0]) + 0.125 * (s[0] + s[2]),
-                            0.5 * (a[1] + p[1]) + 0.125 * (s[1] + s[3]),
-                            0.5 * (a[2] + p[2]),
-                        ]);
-                        line.width_m.push(2.0 * channel(e.from.q).0);
-                        line.discharge_m3s.push(discharge_m3s(e.from.q, s_m));
+                        let steps = if dense { piece_steps(s) } else { 2 };
+                        for m in 1..steps {
+                            line.points.push(if dense {
+                                piece_point(a, *p, s, m as f32 / steps as f32)
+                            } else {
+                                // The piece's offset at its middle is `(sa + sb) / 8`.
+                                [
+                                    0.5 * (a[0] + p[0]) + 0.125 * (s[0] + s[2]),
+                                    0.5 * (a[1] + p[1]) + 0.125 * (s[1] + s[3]),
+                                    0.5 * (a[2] + p[2]),
+                                ]
+                            });
+                            line.width_m.push(2.0 * channel(e.from.q).0);
+                            line.discharge_m3s.push(discharge_m3s(e.from.q, s_m));
+                        }
                     }
                     // Width and discharge change at the downstream node of the edge.
                     let q = if j + 1 == e.points.len() {
@@ -166,4 +206,25 @@ impl Network<'_> {
         }
         lines
     }
+}
+
+/// Chords per piece that keep a line within [`LINE_TOLERANCE_M`] of the piece's curve: the
+/// curve's offset from its chord is `t(1 − t)²·sa + t²(1 − t)·sb`, whose second derivative is at
+/// most `4(|sa| + |sb|)`, so chords of `1/n` in `t` stray at most `(|sa| + |sb|) / (2n²)`.
+fn piece_steps(bend: [f32; 4]) -> usize {
+    let s = bend[0].hypot(bend[1]) + bend[2].hypot(bend[3]);
+    ((s / (2.0 * LINE_TOLERANCE_M)).sqrt().ceil() as usize).clamp(2, LINE_MAX_STEPS)
+}
+
+/// The point of the piece from `a` to `b` with offset slopes `bend` ([`Edge::bends`]) at `t`:
+/// the chord's point plus the carve's offset across it ([`super::carve`]'s `foot`), and the
+/// water level interpolated along the chord.
+fn piece_point(a: [f32; 3], b: [f32; 3], bend: [f32; 4], t: f32) -> [f32; 3] {
+    let k = t * (1.0 - t);
+    let (ka, kb) = (k * (1.0 - t), k * t);
+    [
+        a[0] + t * (b[0] - a[0]) + (ka * bend[0] + kb * bend[2]),
+        a[1] + t * (b[1] - a[1]) + (ka * bend[1] + kb * bend[3]),
+        a[2] + t * (b[2] - a[2]),
+    ]
 }

@@ -194,6 +194,12 @@ pub const BREACH_DEPTH_M: f32 = 20.0;
 pub const LAKE_WALK: usize = 384;
 /// Reach of a river's valley, in node spacings.
 pub const REACH: f32 = 1.5;
+/// Farthest a river line's chord strays from the curve of the piece it follows, metres
+/// (`lines: 2`): less than the finest tile's vertex spacing, so a client that draws the river
+/// along the line covers the carved channel's water.
+pub const LINE_TOLERANCE_M: f32 = 1.0;
+/// Most points a river line adds per piece (`lines: 2`).
+pub const LINE_MAX_STEPS: usize = 32;
 /// Mean slope of the valley walls the carve makes where the valley is deep (rise over run,
 /// about 25°; the smoothstep's steepest point is 1.5 times that).
 pub const WALL_SLOPE: f32 = 0.47;
@@ -403,6 +409,10 @@ pub struct RiverPlan {
     /// same sample (two tiles, or a tile and the coarser edge a finer tile snaps to) could
     /// carve it differently. Worlds stored before keep their bytes.
     pub long_edges: bool,
+    /// Whether the river lines follow each piece's curve within [`LINE_TOLERANCE_M`] and
+    /// include the long edges of pits beyond the nodes around their rectangle (`lines: 2`);
+    /// else a bent piece's ends and middle, and the edges of nodes near the rectangle only.
+    pub dense_lines: bool,
 }
 
 impl RiverPlan {
@@ -439,6 +449,7 @@ impl RiverPlan {
             q_scale,
             floor_min_m: if coarse { COARSE_FLOOR_M } else { 0.0 },
             long_edges: params.coarse >= 1,
+            dense_lines: params.lines >= 2,
             seed: stream(seed, purpose::EARTH, if coarse { 420 } else { 400 }),
             node_lod: lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize,
             wet_q: if coarse {
