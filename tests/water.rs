@@ -253,6 +253,8 @@ async fn seed_river_lines_descend_and_are_the_librarys() {
         (coarsest, 0, 0),
         (coarsest, 0, 1),
         (coarsest, 1, 0),
+        // Lines that end in a lake (with `lakes: 5` the lakes nearer the origin spill).
+        (coarsest, 1, -2),
     ];
     for (lod, x, z) in tiles {
         let key = TileKey { lod, x, z };
