@@ -179,6 +179,8 @@ static WINDOWS: std::sync::LazyLock<moka::sync::Cache<WindowKey, Window>> =
 /// Empties the cache of node windows (the results stay the same).
 pub fn clear_cache() {
     WINDOWS.invalidate_all();
+    // Removed at once, so they no longer count against the budget ([`super::clear_caches`]).
+    WINDOWS.run_pending_tasks();
 }
 
 /// The climate node of lattice index `g` of a LOD with vertex spacing `spacing_m`, as a
