@@ -4,7 +4,7 @@
 //! straight sides, which is how this test knows it can fail. Spilling lakes keep a sill where
 //! their river leaves (`lakes: 4`, the default of new worlds), which `lakes: 3` lacks.
 
-use strata::terrain::earth::rivers::kind;
+use strata::terrain::earth::rivers::{kind, LakeField};
 use strata::terrain::{synthesize, Tile, TileKey, WorldParams, WorldPlan};
 
 mod common;
@@ -181,10 +181,12 @@ fn spilling_lakes_keep_a_sill_where_their_river_leaves() {
 
 /// The carve's faster paths (pruned bins, lanes) and the water grid give the scalar carve's
 /// and water's bits on tiles with shaped shores, where the shores change heights before the
-/// carve, and with sills (`lakes: 4`), where the sills change the carve beside the lakes.
+/// carve, and with sills (`lakes: 4` and 5), where the sills change the carve beside the lakes;
+/// the lake fields of a row side by side (`RiverJob::lake_field_row`, which both faster paths
+/// read) are each sample's `RiverJob::lake_field`, bit for bit.
 #[test]
 fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
-    for lakes in [2, 4] {
+    for lakes in [2, 4, 5] {
         faster_paths_are_bit_exact(lakes);
     }
 }
@@ -199,7 +201,7 @@ fn faster_paths_are_bit_exact(lakes: u32) {
         points.push(OUTLET);
     }
     let n = 65usize;
-    let (mut shored, mut lake, mut silled) = (0usize, 0usize, 0usize);
+    let (mut shored, mut lake, mut silled, mut fields) = (0usize, 0usize, 0usize, 0usize);
     for &(x, z) in &points {
         for lod in [0u32, 3, 5] {
             let key = common::water::key_at(&p, lod, x, z);
@@ -218,6 +220,19 @@ fn faster_paths_are_bit_exact(lakes: u32) {
                     .enumerate()
                     .map(|(v, h)| (xs[v % n], zs[v / n], *h)),
             );
+            let bits = |f: Option<LakeField>| f.map(|f| [f.level, f.weight, f.e].map(f32::to_bits));
+            let mut row = vec![None; n];
+            for &z in &zs {
+                full.lake_field_row(&xs, z, &mut row);
+                for (&x, &f) in xs.iter().zip(&row) {
+                    assert_eq!(
+                        bits(f),
+                        bits(full.lake_field(x, z)),
+                        "{key:?} ({x}, {z}): the lake field of the row differs"
+                    );
+                    fields += usize::from(f.is_some());
+                }
+            }
             let mut lanes = raised.clone();
             full.carve_grid(&xs, &zs, &mut lanes);
             let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
@@ -251,8 +266,9 @@ fn faster_paths_are_bit_exact(lakes: u32) {
     }
     println!(
         "lakes {lakes}: {shored} heights moved by the shores, {silled} under a sill, {lake} lake \
-         vertices"
+         vertices, {fields} lake fields"
     );
+    assert!(fields > 1000, "only {fields} samples with a lake field");
     assert!(shored > 1000, "only {shored} heights moved by the shores");
     assert!(lake > 100, "only {lake} lake vertices");
     if lakes >= 4 {

@@ -1005,6 +1005,18 @@ pub fn lake_job_for(
 /// (the highest of the sea, a lake and a river over it; inside a shaped lake shore, the lake
 /// over a river).
 pub fn water_at(job: &RiverJob, sea_level_m: f32, x: f32, z: f32, carved: f32) -> (f32, u8) {
+    water_at_lake(job, sea_level_m, x, z, carved, job.lake_surface(x, z))
+}
+
+/// [`water_at`] of a sample whose lake level [`RiverJob::lake_surface`] is `lake`.
+pub fn water_at_lake(
+    job: &RiverJob,
+    sea_level_m: f32,
+    x: f32,
+    z: f32,
+    carved: f32,
+    lake: Option<f32>,
+) -> (f32, u8) {
     let river = job.river_level(x, z, carved);
     let mut surface = carved;
     let mut k = kind::NONE;
@@ -1018,7 +1030,7 @@ pub fn water_at(job: &RiverJob, sea_level_m: f32, x: f32, z: f32, carved: f32) -
             k = kind::RIVER;
         }
     }
-    if let Some(l) = job.lake_surface(x, z) {
+    if let Some(l) = lake {
         // Inside a shaped shore the lake holds the rivers that reach it: their water levels,
         // which fall to the lake's only at its node, do not stand above it.
         if l > carved && (l > surface || (job.shores && k == kind::RIVER)) {

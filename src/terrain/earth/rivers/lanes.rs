@@ -46,10 +46,12 @@ impl RiverJob {
                 sill_level = vec![0.0f32; heights.len()];
                 sill_s = vec![0.0f32; heights.len()];
             }
+            let mut fields = vec![None; xs.len()];
             for (j, row) in heights.chunks_mut(xs.len()).enumerate() {
+                self.lake_field_row(xs, zs[j], &mut fields);
                 for (i, h) in row.iter_mut().enumerate() {
                     let sill;
-                    (*h, sill) = self.shore_sill(xs[i], zs[j], *h);
+                    (*h, sill) = self.shore_sill_of(fields[i], *h);
                     if self.sills {
                         let v = j * xs.len() + i;
                         (sill_level[v], sill_s[v]) = (sill.level, sill.s);

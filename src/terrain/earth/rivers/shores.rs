@@ -43,6 +43,7 @@
 //! lake cut through the raised land to their water levels, which are no lower than the lake's).
 //! The WGSL twin is `shore` in `shaders/rivers.wgsl`, every operation in this order.
 
+use super::super::super::fractal::lattice_n;
 use super::super::super::noise::lattice;
 use super::carve::{smoothstep, RiverJob};
 
@@ -111,6 +112,9 @@ pub const SHORE_N1: f32 = SHORE_NOISE * SHORE_NOISE_FIRST / SHORE_NOISE_CLAMP;
 /// Scale of the second octave's clamped value.
 pub const SHORE_N2: f32 = SHORE_NOISE * (1.0 - SHORE_NOISE_FIRST) / SHORE_NOISE_CLAMP;
 
+/// Samples whose lake field [`RiverJob::lake_field_row`] computes side by side.
+pub const FIELD_LANES: usize = 16;
+
 /// The lake field at a sample (step 1 and 2 of the module docs).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LakeField {
@@ -136,20 +140,50 @@ impl RiverJob {
 
     /// The lake field at `(x, z)`, if a lake node around it has weight there.
     pub fn lake_field(&self, x: f32, z: f32) -> Option<LakeField> {
-        if self.lakes.is_empty() {
-            return None;
-        }
-        // The warp moves the point by less than half a spacing, so no lake node among the 3 × 3
-        // that the corners can reach gives no weight: skip the noise (the same answer, sooner).
-        let (u0, v0) = (x / self.spacing_m - 0.5, z / self.spacing_m - 0.5);
-        let (i0, k0) = ((u0 - 0.5).floor() as i64, (v0 - 0.5).floor() as i64);
-        let near = (k0..k0 + 3).any(|k| (i0..i0 + 3).any(|i| self.node_lake(i, k).is_some()));
-        if !near {
+        if self.lakes.is_empty() || !self.lake_near(x, z) {
             return None;
         }
         let (qx, qz) = (x * self.shore_warp_inv_m, z * self.shore_warp_inv_m);
-        let wx = lattice(qx, qz, self.shore_seeds[2]).clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
-        let wz = lattice(qx, qz, self.shore_seeds[3]).clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
+        let wx = lattice(qx, qz, self.shore_seeds[2]);
+        let wz = lattice(qx, qz, self.shore_seeds[3]);
+        let n1 = lattice(
+            x * SHORE_NOISE_INV_M,
+            z * SHORE_NOISE_INV_M,
+            self.shore_seeds[0],
+        );
+        let n2 = lattice(
+            x * SHORE_NOISE2_INV_M,
+            z * SHORE_NOISE2_INV_M,
+            self.shore_seeds[1],
+        );
+        self.lake_field_of(x, z, [wx, wz, n1, n2])
+    }
+
+    /// Whether a lake node can give weight at `(x, z)`: the warp moves the point by less than
+    /// half a spacing, so no lake node among the 3 × 3 that the corners can reach gives none
+    /// (a test that skips the noise, the same answer sooner).
+    #[inline]
+    fn lake_near(&self, x: f32, z: f32) -> bool {
+        self.lake_near_cell(self.near_index(x), self.near_index(z))
+    }
+
+    /// The first of the three node indices along an axis whose lakes can give weight at
+    /// coordinate `c` (metres).
+    #[inline]
+    fn near_index(&self, c: f32) -> i64 {
+        (c / self.spacing_m - 0.5 - 0.5).floor() as i64
+    }
+
+    /// Whether a lake lies among the 3 × 3 nodes from `(i0, k0)`.
+    fn lake_near_cell(&self, i0: i64, k0: i64) -> bool {
+        (k0..k0 + 3).any(|k| (i0..i0 + 3).any(|i| self.node_lake(i, k).is_some()))
+    }
+
+    /// The lake field at `(x, z)` from its four noise values, unclamped: the warp's x and z,
+    /// then the shoreline's two octaves.
+    #[inline(always)]
+    fn lake_field_of(&self, x: f32, z: f32, noise: [f32; 4]) -> Option<LakeField> {
+        let [wx, wz, n1, n2] = noise.map(|v| v.clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP));
         let u = (x + self.shore_warp_m * wx) / self.spacing_m - 0.5;
         let v = (z + self.shore_warp_m * wz) / self.spacing_m - 0.5;
         let (fu, fv) = (u.floor(), v.floor());
@@ -173,24 +207,72 @@ impl RiverJob {
             return None;
         }
         let level = sum / weight;
-        let n1 = lattice(
-            x * SHORE_NOISE_INV_M,
-            z * SHORE_NOISE_INV_M,
-            self.shore_seeds[0],
-        )
-        .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
-        let n2 = lattice(
-            x * SHORE_NOISE2_INV_M,
-            z * SHORE_NOISE2_INV_M,
-            self.shore_seeds[1],
-        )
-        .clamp(-SHORE_NOISE_CLAMP, SHORE_NOISE_CLAMP);
         let t = weight + (SHORE_N1 * n1 + SHORE_N2 * n2);
         Some(LakeField {
             level,
             weight,
             e: 0.5 - t,
         })
+    }
+
+    /// [`RiverJob::lake_field`] of the samples `(xs[i], z)`, into `out[i]`, bit for bit: the
+    /// noise of [`FIELD_LANES`] samples side by side where a lake is near one of them.
+    pub fn lake_field_row(&self, xs: &[f32], z: f32, out: &mut [Option<LakeField>]) {
+        assert_eq!(xs.len(), out.len(), "a field per sample");
+        if self.lakes.is_empty() {
+            out.fill(None);
+            return;
+        }
+        const N: usize = FIELD_LANES;
+        // Neighbouring samples share their 3 × 3 nodes: each node column tested once.
+        let k0 = self.near_index(z);
+        let mut last: Option<(i64, bool)> = None;
+        let mut near_at = |x: f32| {
+            let i0 = self.near_index(x);
+            match last {
+                Some((i, near)) if i == i0 => near,
+                _ => {
+                    let near = self.lake_near_cell(i0, k0);
+                    last = Some((i0, near));
+                    near
+                }
+            }
+        };
+        for (xc, oc) in xs.chunks(N).zip(out.chunks_mut(N)) {
+            let near: [bool; N] = std::array::from_fn(|l| xc.get(l).is_some_and(|&x| near_at(x)));
+            if !near.contains(&true) {
+                oc.fill(None);
+                continue;
+            }
+            // Lanes past the row's end repeat its first sample (their values are unused).
+            let x: [f32; N] = std::array::from_fn(|l| *xc.get(l).unwrap_or(&xc[0]));
+            let qx = x.map(|x| x * self.shore_warp_inv_m);
+            let qz = [z * self.shore_warp_inv_m; N];
+            let (mut wx, mut wz, mut n1, mut n2) = ([0.0; N], [0.0; N], [0.0; N], [0.0; N]);
+            lattice_n(&qx, &qz, self.shore_seeds[2], &mut wx);
+            lattice_n(&qx, &qz, self.shore_seeds[3], &mut wz);
+            let q1 = x.map(|x| x * SHORE_NOISE_INV_M);
+            lattice_n(
+                &q1,
+                &[z * SHORE_NOISE_INV_M; N],
+                self.shore_seeds[0],
+                &mut n1,
+            );
+            let q2 = x.map(|x| x * SHORE_NOISE2_INV_M);
+            lattice_n(
+                &q2,
+                &[z * SHORE_NOISE2_INV_M; N],
+                self.shore_seeds[1],
+                &mut n2,
+            );
+            for (l, o) in oc.iter_mut().enumerate() {
+                *o = if near[l] {
+                    self.lake_field_of(x[l], z, [wx[l], wz[l], n1[l], n2[l]])
+                } else {
+                    None
+                };
+            }
+        }
     }
 
     /// A height `h` at `(x, z)` shaped by the lake shores (step 3 of the module docs); `h`
@@ -207,7 +289,14 @@ impl RiverJob {
         if !self.shores {
             return (h, Sill::NONE);
         }
-        let Some(f) = self.lake_field(x, z) else {
+        self.shore_sill_of(self.lake_field(x, z), h)
+    }
+
+    /// [`RiverJob::shore_sill`] of a sample whose lake field is `field` (a world with shaped
+    /// shores).
+    #[inline]
+    pub fn shore_sill_of(&self, field: Option<LakeField>, h: f32) -> (f32, Sill) {
+        let Some(f) = field else {
             return (h, Sill::NONE);
         };
         let sill = if self.sills {

@@ -5,9 +5,12 @@
 //! around it are its column's and its row's, so both are computed per axis with the formulas
 //! of [`RiverJob::bin_index`] and [`RiverJob::lake_level`]; the river levels and the lake levels
 //! are then read in the scalar code's order, so every sample gets [`water_at`]'s bits (tested
-//! against it in `tests/rivers.rs`).
+//! against it in `tests/rivers.rs`). With shaped shores, each row's lake fields are computed side
+//! by side ([`RiverJob::lake_field_row`], the same bits as one at a time).
+//!
+//! [`water_at`]: super::carve::water_at
 
-use super::carve::{water_at, RiverJob};
+use super::carve::{water_at_lake, RiverJob};
 use super::kind;
 
 impl RiverJob {
@@ -65,7 +68,15 @@ impl RiverJob {
         let lake_top = lake_top + lake_top.abs() * 1e-5 + 1e-3;
         surface.reserve(carved.len());
         kinds.reserve(carved.len());
+        // Shaped shores: each row's lake fields, side by side ([`RiverJob::lake_field_row`]).
+        let mut fields = vec![None; xs.len()];
+        let shaped = self.shores && !self.lakes.is_empty();
         for (j, row) in carved.chunks(xs.len()).enumerate() {
+            if shaped {
+                self.lake_field_row(xs, zs[j], &mut fields);
+            }
+            // `shore_level` of sample `i`.
+            let shore_level = |i: usize| fields[i].filter(|f| f.e < 0.0).map(|f| f.level);
             for (i, &h) in row.iter().enumerate() {
                 let (x, z) = (xs[i], zs[j]);
                 let bin = rows[j].zip(cols[i]).map(|(r, c)| r * self.bins_w + c);
@@ -76,7 +87,12 @@ impl RiverJob {
                     None => &[],
                 };
                 if !pieces.is_empty() {
-                    let (s, k) = water_at(self, sea_level_m, x, z, h);
+                    let lake = if self.shores {
+                        shore_level(i)
+                    } else {
+                        self.lake_level(x, z)
+                    };
+                    let (s, k) = water_at_lake(self, sea_level_m, x, z, h, lake);
                     surface.push(s);
                     kinds.push(k);
                     continue;
@@ -87,7 +103,7 @@ impl RiverJob {
                     (s, k) = (sea_level_m, kind::SEA);
                 }
                 if self.shores {
-                    let level = (h < lake_top).then(|| self.shore_level(x, z)).flatten();
+                    let level = (h < lake_top).then(|| shore_level(i)).flatten();
                     if let Some(l) = level.filter(|&l| l > h && l > s) {
                         (s, k) = (l, kind::LAKE);
                     }
