@@ -31,7 +31,7 @@ type Frame = (NodeId, Vec<NodeId>, usize, u32);
 /// entries are removed at once (moka otherwise drops them in its housekeeping, and until then
 /// they count against the byte budget).
 pub fn clear_caches() {
-    fn clear<V: Send + Sync + 'static>(c: &moka::sync::Cache<BlockKey, Arc<V>>) {
+    fn clear<V: Send + Sync + 'static>(c: &BlockCache<V>) {
         c.invalidate_all();
         c.run_pending_tasks();
     }
@@ -45,6 +45,10 @@ pub fn clear_caches() {
     clear(&CACHES.lakes);
 }
 
+/// Floods that end within this many nodes are not kept in the process cache
+/// ([`Network::flood`]).
+const SMALL_FLOOD_NODES: usize = 16;
+
 /// A call's memo of one kind of block, by block index.
 type Memo<V> = HashMap<(i64, i64), Arc<V>>;
 
@@ -56,22 +60,27 @@ pub(super) type LongPiece = ((i64, i64), u32, Piece);
 /// the block's index.
 type BlockKey = (u64, (i64, i64));
 
+/// A process cache of one kind of block. Keys hash with foldhash (seeded per process): moka's
+/// default SipHash was a tenth of the time of cold coarse tiles, whose floods insert an entry
+/// per pit.
+type BlockCache<V> = moka::sync::Cache<BlockKey, Arc<V>, foldhash::fast::RandomState>;
+
 /// The block caches of every world's network in the process, each bounded in bytes (so many
 /// worlds and versions share one budget; versions of a world with the same settings share
 /// their blocks).
 struct Caches {
-    heights: moka::sync::Cache<BlockKey, Arc<HeightBlock>>,
-    routes: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
-    spills: moka::sync::Cache<BlockKey, Arc<RouteBlock>>,
-    flow: moka::sync::Cache<BlockKey, Arc<FlowBlock>>,
-    pieces: moka::sync::Cache<BlockKey, Arc<Vec<Piece>>>,
+    heights: BlockCache<HeightBlock>,
+    routes: BlockCache<RouteBlock>,
+    spills: BlockCache<RouteBlock>,
+    flow: BlockCache<FlowBlock>,
+    pieces: BlockCache<Vec<Piece>>,
     /// The long edges' pieces that can reach each piece block ([`LongPiece`]).
-    long: moka::sync::Cache<BlockKey, Arc<Vec<LongPiece>>>,
+    long: BlockCache<Vec<LongPiece>>,
     /// The lakes of pits, by the world's fingerprint and the pit: the blocks around a pit
     /// within a flood's radius all ask for its lake.
-    floods: moka::sync::Cache<BlockKey, Arc<Lake>>,
+    floods: BlockCache<Lake>,
     /// The lake levels of blocks, apart from their flow (coarse tiles read these alone).
-    lakes: moka::sync::Cache<BlockKey, Arc<LakeBlock>>,
+    lakes: BlockCache<LakeBlock>,
 }
 
 /// Byte budgets of the caches.
@@ -81,14 +90,11 @@ const FLOW_BYTES: u64 = 64 << 20;
 const PIECES_BYTES: u64 = 64 << 20;
 const FLOODS_BYTES: u64 = 16 << 20;
 
-fn cache<V: Send + Sync + 'static>(
-    bytes: u64,
-    weigh: fn(&V) -> usize,
-) -> moka::sync::Cache<BlockKey, Arc<V>> {
+fn cache<V: Send + Sync + 'static>(bytes: u64, weigh: fn(&V) -> usize) -> BlockCache<V> {
     moka::sync::Cache::builder()
         .max_capacity(bytes)
         .weigher(move |_, v: &Arc<V>| (64 + weigh(v)).min(u32::MAX as usize) as u32)
-        .build()
+        .build_with_hasher(foldhash::fast::RandomState::default())
 }
 
 static CACHES: std::sync::LazyLock<Caches> = std::sync::LazyLock::new(|| Caches {
@@ -181,10 +187,14 @@ pub struct Network<'a> {
     pub(super) earth: &'a EarthPlan,
     pub(super) plan: &'a RiverPlan,
     heights: Memo<HeightBlock>,
+    /// The height block read last, and its index.
+    last_heights: Option<((i64, i64), Arc<HeightBlock>)>,
     routes: Memo<RouteBlock>,
     spills: Memo<RouteBlock>,
     flows: Memo<FlowBlock>,
     lakes: Memo<LakeBlock>,
+    /// The lakes of the pits asked for, by pit (the blocks around a pit each ask for it).
+    floods: Memo<Lake>,
 }
 
 impl std::fmt::Debug for Network<'_> {
@@ -204,10 +214,12 @@ impl<'a> Network<'a> {
             earth,
             plan,
             heights: HashMap::default(),
+            last_heights: None,
             routes: HashMap::default(),
             spills: HashMap::default(),
             flows: HashMap::default(),
             lakes: HashMap::default(),
+            floods: HashMap::default(),
         }
     }
 
@@ -223,22 +235,38 @@ impl<'a> Network<'a> {
         hb
     }
 
+    /// `read` of height block `b`: the block of the last call without a lookup (walks and
+    /// floods read node after node of one block), else [`Network::height_block`]'s.
+    #[inline]
+    fn with_heights<R>(&mut self, b: (i64, i64), read: impl FnOnce(&HeightBlock) -> R) -> R {
+        match &self.last_heights {
+            Some((last, hb)) if *last == b => read(hb),
+            _ => {
+                let hb = self.height_block(b);
+                let r = read(&hb);
+                self.last_heights = Some((b, hb));
+                r
+            }
+        }
+    }
+
     /// Height of node `(i, k)`, metres.
     pub fn height(&mut self, i: i64, k: i64) -> f32 {
         let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
-        let hb = self.height_block((bx, bz));
-        hb.h[(lk + 1) * (BLOCK as usize + 2) + li + 1]
+        self.with_heights((bx, bz), |hb| {
+            hb.h[(lk + 1) * (BLOCK as usize + 2) + li + 1]
+        })
     }
 
     /// Relief amplitude of the macro fields at node `(i, k)`, metres.
     pub fn relief(&mut self, i: i64, k: i64) -> f32 {
         let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
-        self.height_block((bx, bz)).relief[lk * BLOCK as usize + li]
+        self.with_heights((bx, bz), |hb| hb.relief[lk * BLOCK as usize + li])
     }
 
     fn down_index(&mut self, i: i64, k: i64) -> u8 {
         let ((bx, li), (bz, lk)) = (block_of(i), block_of(k));
-        self.height_block((bx, bz)).down[lk * BLOCK as usize + li]
+        self.with_heights((bx, bz), |hb| hb.down[lk * BLOCK as usize + li])
     }
 
     /// The downstream neighbour of node `(i, k)` on the lattice (a pit has none).
@@ -258,7 +286,7 @@ impl<'a> Network<'a> {
         &mut self,
         b: (i64, i64),
         memo: fn(&mut Self) -> &mut Memo<V>,
-        cache: &moka::sync::Cache<BlockKey, Arc<V>>,
+        cache: &BlockCache<V>,
         compute: fn(&mut Self, (i64, i64)) -> V,
     ) -> Arc<V> {
         if let Some(v) = memo(self).get(&b) {
@@ -698,16 +726,35 @@ impl<'a> Network<'a> {
     /// below the level beyond the saddle; `None` when the search stopped first) (module docs,
     /// step 5), from the process cache or computed.
     pub fn flood(&mut self, i: i64, k: i64) -> Arc<Lake> {
-        let key = (self.plan.fingerprint, (i, k));
-        if let Some(lake) = CACHES.floods.get(&key) {
-            return lake;
+        if let Some(lake) = self.floods.get(&(i, k)) {
+            return lake.clone();
         }
-        let lake = Arc::new(self.compute_flood(i, k));
-        CACHES.floods.insert(key, lake.clone());
+        // Most pits' floods end within a few nodes, sooner than the process cache answers:
+        // those are computed again where asked, the others kept.
+        let lake = match self.compute_flood(i, k, SMALL_FLOOD_NODES) {
+            (lake, true) => Arc::new(lake),
+            (_, false) => {
+                let key = (self.plan.fingerprint, (i, k));
+                match CACHES.floods.get(&key) {
+                    Some(lake) => lake,
+                    None => {
+                        let max = self.plan.lake_max_nodes;
+                        let lake = Arc::new(self.compute_flood(i, k, max).0);
+                        CACHES.floods.insert(key, lake.clone());
+                        lake
+                    }
+                }
+            }
+        };
+        self.floods.insert((i, k), lake.clone());
         lake
     }
 
-    fn compute_flood(&mut self, i: i64, k: i64) -> Lake {
+    /// The lake of pit `(i, k)` ([`Network::flood`]) as far as a search of at most
+    /// `max_nodes` flooded nodes finds it, and whether that is the lake: true when the search
+    /// ended before it flooded `max_nodes`, or at the world's limit (`RiverPlan::lake_max_nodes`,
+    /// where the world's search stops too).
+    fn compute_flood(&mut self, i: i64, k: i64, max_nodes: usize) -> (Lake, bool) {
         #[derive(PartialEq)]
         struct Entry(f32, i64, i64);
         impl Eq for Entry {}
@@ -761,6 +808,9 @@ impl<'a> Network<'a> {
             {
                 break;
             }
+            if flooded.len() >= max_nodes {
+                return ((level, flooded, outlet), false);
+            }
             level = level.max(h);
             flooded.push((ni, nk));
             if spills {
@@ -768,7 +818,7 @@ impl<'a> Network<'a> {
             }
             push(self, &mut heap, &mut seen, ni, nk);
         }
-        (level, flooded, outlet)
+        ((level, flooded, outlet), true)
     }
 
     /// Whether a node below a lake's level belongs to its basin rather than being its outlet
