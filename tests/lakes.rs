@@ -183,7 +183,9 @@ fn spilling_lakes_keep_a_sill_where_their_river_leaves() {
 /// and water's bits on tiles with shaped shores, where the shores change heights before the
 /// carve, and with sills (`lakes: 4` and 5), where the sills change the carve beside the lakes;
 /// the lake fields of a row side by side (`RiverJob::lake_field_row`, which both faster paths
-/// read) are each sample's `RiverJob::lake_field`, bit for bit.
+/// read) are each sample's `RiverJob::lake_field`, bit for bit, and the water grid given the
+/// carve's fields (`RiverJob::water_grid_fields`, as a tile's water reads them) gives the same
+/// water as computing them.
 #[test]
 fn shores_keep_the_faster_carve_and_water_paths_bit_exact() {
     for lakes in [2, 4, 5] {
@@ -234,11 +236,28 @@ fn faster_paths_are_bit_exact(lakes: u32) {
                 }
             }
             let mut lanes = raised.clone();
-            full.carve_grid(&xs, &zs, &mut lanes);
+            let carved_fields = full.carve_grid_fields(&xs, &zs, &mut lanes);
             let water = water_job_for(earth, rp, spacing, gx0, gz0, n, n);
             let sea = p.params.sea_level_m;
             let (mut surface, mut kinds) = (Vec::new(), Vec::new());
             water.water_grid(sea, &xs, &zs, &t.heights, &mut surface, &mut kinds);
+            // The water grid given the carve's lake fields (as a tile's water reads them) gives
+            // the same water as computing them.
+            let (mut given_surface, mut given_kinds) = (Vec::new(), Vec::new());
+            water.water_grid_fields(
+                sea,
+                (&xs, &zs),
+                &t.heights,
+                &carved_fields,
+                &mut given_surface,
+                &mut given_kinds,
+            );
+            let surface_bits = |s: &[f32]| s.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+            assert_eq!(
+                (surface_bits(&given_surface), &given_kinds),
+                (surface_bits(&surface), &kinds),
+                "{key:?}: the water grid given the carve's lake fields differs"
+            );
             for (v, h) in raised.iter().enumerate() {
                 let (x, z) = (xs[v % n], zs[v / n]);
                 let one = full.carve_one(x, z, *h);

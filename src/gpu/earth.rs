@@ -567,6 +567,7 @@ impl EarthKernels {
             heights,
             weights,
             snow_line,
+            lake_fields: Vec::new(),
         })
     }
 }

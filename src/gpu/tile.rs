@@ -307,6 +307,7 @@ impl TileKernels {
             heights: float(&data[nk..nk + n]),
             weights: float(&data[..nk]),
             snow_line: Vec::new(),
+            lake_fields: Vec::new(),
         };
         let ids = want_ids.then(|| data[nk + n..].iter().map(|&b| b as u8).collect());
         Ok((field, ids))

@@ -47,6 +47,10 @@ pub struct Field {
     /// The sea-level climate's snow line at each sample, metres, row-major (`earth-1` worlds
     /// with `snow_lines: 2`, [`super::earth::climate::sea_snow_lines`]); empty otherwise.
     pub snow_line: Vec<f32>,
+    /// The lake field at each sample, row-major, where the CPU carve computed it (`earth-1`
+    /// worlds with shaped shores and a lake near, [`super::earth::rivers::LakeField`]); the
+    /// tile's water reads them instead of computing them again. Empty otherwise.
+    pub lake_fields: Vec<Option<super::earth::rivers::LakeField>>,
 }
 
 /// One field job: the lattice samples `(gx0 + i, gz0 + j)`, `i < w`, `j < h`, of LOD `lod`.
@@ -161,6 +165,7 @@ pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
             heights,
             weights,
             snow_line: Vec::new(),
+            lake_fields: Vec::new(),
         };
     }
     let mut idx = Vec::with_capacity(w * h);
@@ -190,6 +195,7 @@ pub fn field(plan: &WorldPlan, job: FieldJob) -> Field {
         heights,
         weights,
         snow_line: Vec::new(),
+        lake_fields: Vec::new(),
     }
 }
 
@@ -301,7 +307,18 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
     );
     let sea = plan.params.sea_level_m;
     let (surface, water_kind) = match &plan.earth {
-        Some(e) => super::earth::tile_water(e, key, spacing, sea, &heights),
+        Some(e) => {
+            // The carve's lake fields of the tile's vertices, cropped like the heights.
+            let mut lake_fields = Vec::new();
+            if !f.lake_fields.is_empty() {
+                lake_fields.reserve(TILE_VERTEX_COUNT);
+                for j in 0..TILE_VERTS {
+                    let row = (j + 1) * n + 1;
+                    lake_fields.extend_from_slice(&f.lake_fields[row..row + TILE_VERTS]);
+                }
+            }
+            super::earth::tile_water(e, key, spacing, sea, &heights, &lake_fields)
+        }
         None => (Vec::new(), Vec::new()),
     };
     let water_depth = if surface.is_empty() {

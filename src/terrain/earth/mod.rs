@@ -639,9 +639,10 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
             heights[start..start + m].copy_from_slice(&out[..m]);
         }
     }
+    let mut lake_fields = Vec::new();
     if let Some(rp) = plan.carve_plan(lod as usize) {
         let rj = rivers::job_for(plan, rp, spacing_m, gx0, gz0, w, h);
-        carve(&rj, spacing_m, job, &mut heights);
+        lake_fields = carve(&rj, spacing_m, job, &mut heights);
     }
     Field {
         w,
@@ -649,12 +650,19 @@ pub fn field(plan: &EarthPlan, spacing_m: f32, job: FieldJob) -> Field {
         heights,
         weights,
         snow_line,
+        lake_fields,
     }
 }
 
 /// Carves the rivers of `rj` into a job's heights: the CPU reference of the carve (the WGSL twin
-/// is `shaders/rivers.wgsl`).
-pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut [f32]) {
+/// is `shaders/rivers.wgsl`). Returns the lake field of each sample that the shores read
+/// ([`rivers::RiverJob::carve_grid_fields`]; empty where none is near).
+pub fn carve(
+    rj: &rivers::RiverJob,
+    spacing_m: f32,
+    job: FieldJob,
+    heights: &mut [f32],
+) -> Vec<Option<rivers::LakeField>> {
     let xs: Vec<f32> = (0..job.w as i64)
         .map(|i| (job.gx0 + i) as f32 * spacing_m)
         .collect();
@@ -663,17 +671,20 @@ pub fn carve(rj: &rivers::RiverJob, spacing_m: f32, job: FieldJob, heights: &mut
         .collect();
     // Only the pieces that can reach each bin at its highest sample, a bin's samples side by
     // side (the same result, faster).
-    rj.carve_grid(&xs, &zs, heights);
+    rj.carve_grid_fields(&xs, &zs, heights)
 }
 
 /// Water surface (metres) and kind ([`rivers::kind`]) of tile `key`'s vertices, from their
 /// final heights; empty when the world has no rivers (the water is the sea's, from the height).
+/// `lake_fields` are the vertices' lake fields as the carve computed them (empty: computed
+/// here).
 pub fn tile_water(
     plan: &EarthPlan,
     key: super::tile::TileKey,
     spacing_m: f32,
     sea_level_m: f32,
     heights: &[f32],
+    lake_fields: &[Option<rivers::LakeField>],
 ) -> (Vec<f32>, Vec<u8>) {
     let Some(rp) = &plan.rivers else {
         return (Vec::new(), Vec::new());
@@ -700,7 +711,14 @@ pub fn tile_water(
         .map(|j| (gz0 + j) as f32 * spacing_m)
         .collect();
     let (mut surface, mut kinds) = (Vec::new(), Vec::new());
-    rj.water_grid(sea_level_m, &xs, &zs, heights, &mut surface, &mut kinds);
+    rj.water_grid_fields(
+        sea_level_m,
+        (&xs, &zs),
+        heights,
+        lake_fields,
+        &mut surface,
+        &mut kinds,
+    );
     (surface, kinds)
 }
 

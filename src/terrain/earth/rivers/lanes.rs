@@ -11,6 +11,7 @@
 
 use super::super::super::fractal::lattice_n;
 use super::carve::{foot, smoothstep, spur_step, Piece, RiverJob, SKIP_MARGIN_M};
+use super::shores::LakeField;
 use super::{CARVE_MAX_M, WALL_NOISE_CLAMP, WALL_NOISE_INV_M};
 
 /// Samples carved side by side: a bin's 8 × 8 samples at once (LLVM vectorises a loop this long;
@@ -37,21 +38,37 @@ impl RiverJob {
     /// for these heights ([`RiverJob::pruned`]), bit for bit (the lake shores shape every height
     /// first, as `carve_pruned` does).
     pub fn carve_grid(&self, xs: &[f32], zs: &[f32], heights: &mut [f32]) {
+        self.carve_grid_fields(xs, zs, heights);
+    }
+
+    /// [`RiverJob::carve_grid`], returning the lake field of each sample that the shores read
+    /// (row-major; empty where the world has no shaped shores or no lake is near the grid).
+    pub fn carve_grid_fields(
+        &self,
+        xs: &[f32],
+        zs: &[f32],
+        heights: &mut [f32],
+    ) -> Vec<Option<LakeField>> {
         assert_eq!(heights.len(), xs.len() * zs.len(), "a grid of heights");
         // The lake shores first: the carve reads the heights they shape (`carve_pruned`), and
         // with sills the lake level and sill weight of each sample (empty: none).
         let (mut sill_level, mut sill_s) = (Vec::new(), Vec::new());
+        let mut fields = Vec::new();
         if self.shores && !self.lakes.is_empty() {
             if self.sills {
                 sill_level = vec![0.0f32; heights.len()];
                 sill_s = vec![0.0f32; heights.len()];
             }
-            let mut fields = vec![None; xs.len()];
-            for (j, row) in heights.chunks_mut(xs.len()).enumerate() {
-                self.lake_field_row(xs, zs[j], &mut fields);
+            fields = vec![None; heights.len()];
+            for (j, (row, row_fields)) in heights
+                .chunks_mut(xs.len())
+                .zip(fields.chunks_mut(xs.len()))
+                .enumerate()
+            {
+                self.lake_field_row(xs, zs[j], row_fields);
                 for (i, h) in row.iter_mut().enumerate() {
                     let sill;
-                    (*h, sill) = self.shore_sill_of(fields[i], *h);
+                    (*h, sill) = self.shore_sill_of(row_fields[i], *h);
                     if self.sills {
                         let v = j * xs.len() + i;
                         (sill_level[v], sill_s[v]) = (sill.level, sill.s);
@@ -60,7 +77,7 @@ impl RiverJob {
             }
         }
         if self.bin_start.is_empty() {
-            return;
+            return fields;
         }
         // `bin_index` one axis at a time: a sample's bin is its row's bin row and its column's
         // bin column.
@@ -122,6 +139,7 @@ impl RiverJob {
                 }
             }
         }
+        fields
     }
 
     /// Carves the samples `group` (indices into the grid of `xs` × `zs`, at most `N`) of one bin

@@ -12,6 +12,7 @@
 
 use super::carve::{water_at_lake, RiverJob};
 use super::kind;
+use super::shores::LakeField;
 
 impl RiverJob {
     /// The water surface (metres) and kind ([`kind`]) of each sample of the grid at
@@ -23,6 +24,20 @@ impl RiverJob {
         xs: &[f32],
         zs: &[f32],
         carved: &[f32],
+        surface: &mut Vec<f32>,
+        kinds: &mut Vec<u8>,
+    ) {
+        self.water_grid_fields(sea_level_m, (xs, zs), carved, &[], surface, kinds);
+    }
+
+    /// [`RiverJob::water_grid`] given the lake field of each sample, row-major, as
+    /// [`RiverJob::carve_grid_fields`] returns them (empty: computed here).
+    pub fn water_grid_fields(
+        &self,
+        sea_level_m: f32,
+        (xs, zs): (&[f32], &[f32]),
+        carved: &[f32],
+        given: &[Option<LakeField>],
         surface: &mut Vec<f32>,
         kinds: &mut Vec<u8>,
     ) {
@@ -69,12 +84,17 @@ impl RiverJob {
         surface.reserve(carved.len());
         kinds.reserve(carved.len());
         // Shaped shores: each row's lake fields, side by side ([`RiverJob::lake_field_row`]).
-        let mut fields = vec![None; xs.len()];
+        let mut computed = vec![None; xs.len()];
         let shaped = self.shores && !self.lakes.is_empty();
         for (j, row) in carved.chunks(xs.len()).enumerate() {
-            if shaped {
-                self.lake_field_row(xs, zs[j], &mut fields);
-            }
+            let fields = if !given.is_empty() {
+                &given[j * xs.len()..(j + 1) * xs.len()]
+            } else {
+                if shaped {
+                    self.lake_field_row(xs, zs[j], &mut computed);
+                }
+                &computed[..]
+            };
             // `shore_level` of sample `i`.
             let shore_level = |i: usize| fields[i].filter(|f| f.e < 0.0).map(|f| f.level);
             for (i, &h) in row.iter().enumerate() {
