@@ -246,6 +246,21 @@ pub fn synthesize(plan: &WorldPlan, key: TileKey) -> Tile {
     finish(plan, key, &f)
 }
 
+/// The tile's vertices of a per-sample field of a 67×67 job (the one-vertex margin dropped),
+/// row-major; empty when `v` is.
+fn crop<T: Clone>(v: &[T]) -> Vec<T> {
+    let n = TILE_VERTS + 2;
+    if v.is_empty() {
+        return Vec::new();
+    }
+    let mut out = Vec::with_capacity(TILE_VERTEX_COUNT);
+    for j in 0..TILE_VERTS {
+        let row = (j + 1) * n + 1;
+        out.extend_from_slice(&v[row..row + TILE_VERTS]);
+    }
+    out
+}
+
 /// Turns a 67×67 field (the tile plus a one-vertex margin) into a tile: normals, materials,
 /// water and skirts. The GPU path produces the field and calls this too.
 pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
@@ -288,14 +303,7 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
         None => Vec::new(),
     };
     // New `earth-1` worlds' sea-level snow lines, cropped to the tile like the weights.
-    let mut snow_line = Vec::new();
-    if !f.snow_line.is_empty() {
-        snow_line.reserve(TILE_VERTEX_COUNT);
-        for j in 0..TILE_VERTS {
-            let row = (j + 1) * n + 1;
-            snow_line.extend_from_slice(&f.snow_line[row..row + TILE_VERTS]);
-        }
-    }
+    let snow_line = crop(&f.snow_line);
     proto_texture_batch(
         &plan.texture,
         &heights,
@@ -307,18 +315,8 @@ pub fn finish(plan: &WorldPlan, key: TileKey, f: &Field) -> Tile {
     );
     let sea = plan.params.sea_level_m;
     let (surface, water_kind) = match &plan.earth {
-        Some(e) => {
-            // The carve's lake fields of the tile's vertices, cropped like the heights.
-            let mut lake_fields = Vec::new();
-            if !f.lake_fields.is_empty() {
-                lake_fields.reserve(TILE_VERTEX_COUNT);
-                for j in 0..TILE_VERTS {
-                    let row = (j + 1) * n + 1;
-                    lake_fields.extend_from_slice(&f.lake_fields[row..row + TILE_VERTS]);
-                }
-            }
-            super::earth::tile_water(e, key, spacing, sea, &heights, &lake_fields)
-        }
+        // The carve's lake fields of the tile's vertices, cropped like the heights.
+        Some(e) => super::earth::tile_water(e, key, spacing, sea, &heights, &crop(&f.lake_fields)),
         None => (Vec::new(), Vec::new()),
     };
     let water_depth = if surface.is_empty() {

@@ -246,25 +246,16 @@ impl RiverJob {
             }
             // Lanes past the row's end repeat its first sample (their values are unused).
             let x: [f32; N] = std::array::from_fn(|l| *xc.get(l).unwrap_or(&xc[0]));
-            let qx = x.map(|x| x * self.shore_warp_inv_m);
-            let qz = [z * self.shore_warp_inv_m; N];
-            let (mut wx, mut wz, mut n1, mut n2) = ([0.0; N], [0.0; N], [0.0; N], [0.0; N]);
-            lattice_n(&qx, &qz, self.shore_seeds[2], &mut wx);
-            lattice_n(&qx, &qz, self.shore_seeds[3], &mut wz);
-            let q1 = x.map(|x| x * SHORE_NOISE_INV_M);
-            lattice_n(
-                &q1,
-                &[z * SHORE_NOISE_INV_M; N],
-                self.shore_seeds[0],
-                &mut n1,
-            );
-            let q2 = x.map(|x| x * SHORE_NOISE2_INV_M);
-            lattice_n(
-                &q2,
-                &[z * SHORE_NOISE2_INV_M; N],
-                self.shore_seeds[1],
-                &mut n2,
-            );
+            // The lattice noise of seed `seed` at the lanes' points scaled by `scale` (1/m).
+            let noise = |scale: f32, seed: u32| {
+                let mut out = [0.0; N];
+                lattice_n(&x.map(|x| x * scale), &[z * scale; N], seed, &mut out);
+                out
+            };
+            let wx = noise(self.shore_warp_inv_m, self.shore_seeds[2]);
+            let wz = noise(self.shore_warp_inv_m, self.shore_seeds[3]);
+            let n1 = noise(SHORE_NOISE_INV_M, self.shore_seeds[0]);
+            let n2 = noise(SHORE_NOISE2_INV_M, self.shore_seeds[1]);
             for (l, o) in oc.iter_mut().enumerate() {
                 *o = if near[l] {
                     self.lake_field_of(x[l], z, [wx[l], wz[l], n1[l], n2[l]])
