@@ -83,14 +83,27 @@ impl RiverJob {
         let lake_top = lake_top + lake_top.abs() * 1e-5 + 1e-3;
         surface.reserve(carved.len());
         kinds.reserve(carved.len());
-        // Shaped shores: each row's lake fields, side by side ([`RiverJob::lake_field_row`]).
+        assert!(
+            given.is_empty() || given.len() == carved.len(),
+            "a lake field per sample, or none"
+        );
+        // Shaped shores: each row's lake fields, side by side ([`RiverJob::lake_field_row`]),
+        // for the rows where a sample reads them (one under a river piece's bin, or below the
+        // highest lake); the other rows' are never read.
         let mut computed = vec![None; xs.len()];
         let shaped = self.shores && !self.lakes.is_empty();
+        let has_pieces = |j: usize, i: usize| {
+            rows[j].zip(cols[i]).is_some_and(|(r, c)| {
+                let b = r * self.bins_w + c;
+                self.bin_start[b] < self.bin_start[b + 1]
+            })
+        };
         for (j, row) in carved.chunks(xs.len()).enumerate() {
             let fields = if !given.is_empty() {
                 &given[j * xs.len()..(j + 1) * xs.len()]
             } else {
-                if shaped {
+                let read = (0..xs.len()).any(|i| row[i] < lake_top || has_pieces(j, i));
+                if shaped && read {
                     self.lake_field_row(xs, zs[j], &mut computed);
                 }
                 &computed[..]
