@@ -238,11 +238,13 @@ fn gpu_river_carve_matches_cpu() {
     // `valleys: 4`: its pieces' floodplains and slopes vary along them (those of `valleys: 3`
     // are the same code with equal ends); `valleys: 6`: those, the walls' spurs, read at each
     // sample's foot on every piece, and slopes scaled by the relief on the host (the shader's
-    // code is that of `valleys: 5`, which stored worlds keep); `valleys: 7`, the default: the
-    // pieces of the larger rivers alone where the relief is high, chosen on the host.
+    // code is that of `valleys: 5`, which stored worlds keep); `valleys: 7`: the pieces of the
+    // larger rivers alone where the relief is high, chosen on the host; `valleys: 8`, the
+    // default: floodplains and bends sized by the discharge and floodplains widened to the
+    // tile's spacing, all on the host.
     // The carve's limit is compared where a valley is cut by the full CARVE_MAX_M: in these
     // tiles' mountains only the streams every kilometre of `valleys: 4` and `6` cut that deep.
-    for valleys in [4, 6, 7] {
+    for valleys in [4, 6, 7, 8] {
         let clamped = river_carve_matches_cpu(valleys);
         assert!(
             valleys >= 7 || clamped > 0,

@@ -1,10 +1,10 @@
 //! A world stored with the first river valleys keeps its bytes: its scene has no
 //! `world.earth.rivers.valleys` and no `world.earth.gullies`, which mean `1`, and today's server
 //! answers the tiles (formats 1 and 2) the old server answered, bit for bit
-//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 7` and `gullies: 3`,
-//! whose tiles differ; the worlds stored with `valleys: 2`, `3`, `4` and `5` keep theirs too, and
-//! so do one stored with `valleys: 6` before new worlds got the coarse lattice, one stored
-//! with `gullies: 2` and one stored with every gully octave (before `gully_first: 1`).
+//! (`tests/fixtures/rivers-world/`). New worlds and bare seeds get `valleys: 8` and `gullies: 3`,
+//! whose tiles differ; the worlds stored with `valleys: 2` to `7` keep theirs too, and so do one
+//! stored with `valleys: 6` before new worlds got the coarse lattice, one stored with
+//! `gullies: 2` and one stored with every gully octave (before `gully_first: 1`).
 
 mod common;
 
@@ -293,10 +293,35 @@ async fn a_world_stored_with_the_fourth_lakes_and_the_first_lines_serves_the_sam
     );
 }
 
+/// A world stored with the default of new worlds before `valleys: 8` (`valleys: 7`, `lakes: 5`,
+/// `coarse: 1`, `lines: 2`; `tests/fixtures/valleys7-world/`) keeps the bytes of its tiles and of
+/// its river lines, where a bare seed sizes its valleys by their rivers: narrower floodplains
+/// and less bend for the small ones, so its tiles and most of its lines differ.
+#[tokio::test]
+async fn a_world_stored_with_the_seventh_valleys_serves_the_same_bytes() {
+    const WORLD: &str = "89412016ba7f5e484bb83405";
+    const FIXTURE: &str = "valleys7-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 80).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
+    assert_eq!(rivers["valleys"], 7, "{rivers}");
+    assert_eq!(rivers["lakes"], 5, "{rivers}");
+    assert_eq!(rivers["lines"], 2, "{rivers}");
+    let lines = common::fixture::check_pinned(&server, FIXTURE, "rivers.blake3", |_, key| {
+        format!("/v1/worlds/{WORLD}/rivers/{key}.json?v=1")
+    })
+    .await;
+    assert_eq!(lines, 9, "every fixture body of river lines was checked");
+    let differ = bare_seed_differs(&server, FIXTURE).await;
+    assert!(
+        differ >= 20,
+        "a bare seed sizes its valleys, which most fixture tiles show: {differ} of 40 differ"
+    );
+}
+
 #[test]
-fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
+fn new_scenes_carve_the_eighth_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
-    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 7);
+    assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 8);
     assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 5);
     assert_eq!(scene["world"]["earth"]["rivers"]["coarse"], 1);
     assert_eq!(scene["world"]["earth"]["rivers"]["lines"], 2);
@@ -314,15 +339,15 @@ fn new_scenes_carve_the_seventh_valleys_and_accept_only_known_ones() {
     bad["world"]["earth"]["rivers"]["coarse"] = serde_json::json!(2);
     let err = strata::scene::Scene::from_value(&bad).expect_err("coarse 2 is refused");
     assert!(format!("{err:?}").contains("rivers/coarse"), "{err:?}");
-    for known in [3, 4, 5, 6] {
+    for known in [3, 4, 5, 6, 7] {
         let mut older = scene.clone();
         older["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&older).expect("older valleys are accepted");
     }
     assert_eq!(scene["world"]["earth"]["gullies"], 3);
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(8);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 8 is refused");
+    bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(9);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 9 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
     for known in [1, 2, 3, 4] {
         let mut other = scene.clone();

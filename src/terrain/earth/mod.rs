@@ -432,6 +432,14 @@ impl EarthPlan {
                 let networks = if coarse { 2.0 } else { 1.0 };
                 l.bound_m += networks * (rivers::CARVE_MAX_M + shores);
             }
+            // `valleys: 8`: LODs that carve with floodplains widened to their spacing lower a
+            // sample by at most what the walls climb over the added width.
+            if rp.sized_valleys {
+                for (lod, l) in lods.iter_mut().enumerate().take(rivers::MAX_CARVE_LOD + 1) {
+                    let spacing_m = params.cell_m * (1u32 << lod) as f32;
+                    l.bound_m += rivers::widened_floor_bound_m(spacing_m);
+                }
+            }
         }
         Self {
             macro_plan,

@@ -141,11 +141,17 @@ pub struct RiverParams {
     /// down to the river ([`super::rivers::SPUR`]), so where two valleys' walls meet the crease
     /// wanders instead of running straight. `6` (new worlds until `7`): the valleys of `5` whose
     /// walls are gentler where the relief is lower ([`super::rivers::RELIEF_WALLS_MIN`]), so the
-    /// rivers of a plain run in broad swales instead of a maze of trenches. `7` (new worlds): the
-    /// valleys of `6`, where the relief is high only for the larger rivers and the streams out
+    /// rivers of a plain run in broad swales instead of a maze of trenches. `7` (new worlds until
+    /// `8`): the valleys of `6`, where the relief is high only for the larger rivers and the streams out
     /// of and into lakes ([`super::rivers::RELIEF_SOURCE_Q`]): a mountain's small streams, one
     /// a kilometre, carved its whole surface into the bowls of their walls (a median 250 m cut
-    /// in the range), and the relief and its gullies now stand between the larger valleys.
+    /// in the range), and the relief and its gullies now stand between the larger valleys. `8`
+    /// (new worlds): the valleys of `7` sized by their river ([`super::rivers::SIZED_Q`]): a
+    /// small river's floodplain is narrower (a source's 8 m each side, where every dry valley of
+    /// `7` had a flat floor 40 to 90 m wide, so the plains' brooks ran in canals) and its edge
+    /// bends less ([`super::rivers::SMALL_BEND`]: the plains' small valleys wound as a maze of
+    /// worm-like trenches), and each tile widens the floodplains to half its vertex spacing
+    /// ([`super::rivers::LOD_FLOOR`]) so a coarse tile finds the narrow floors without pits.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"
@@ -203,7 +209,7 @@ impl Default for RiverParams {
             spacing_m: 1024.0,
             density: 1.0,
             incision_m: 60.0,
-            valleys: 7,
+            valleys: 8,
             lakes: 5,
             coarse: 1,
             lines: 2,
@@ -259,9 +265,9 @@ impl RiverParams {
             &format!("{m} [0, 300]"),
         )?;
         check(
-            (1..=7).contains(&self.valleys),
+            (1..=8).contains(&self.valleys),
             "rivers.valleys",
-            "must be 1, 2, 3, 4, 5, 6 or 7",
+            "must be 1, 2, 3, 4, 5, 6, 7 or 8",
         )?;
         check(
             (1..=5).contains(&self.lakes),

@@ -7,9 +7,9 @@ use super::super::EarthPlan;
 use super::network::{LongPiece, Network, Node};
 use super::shores::Sill;
 use super::{
-    channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, MIN_VALLEY_Q, PIECE_BLOCK,
-    Q_MAX, REACH, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN, VALLEY_MIN,
-    WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, LOD_FLOOR, MIN_VALLEY_Q,
+    PIECE_BLOCK, Q_MAX, REACH, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN, SMALL_BEND,
+    VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 use rustc_hash::FxHashSet as HashSet;
 
@@ -257,7 +257,14 @@ impl Network<'_> {
         // A hashed bend across the edge, largest at its middle and nil at the nodes, so valleys
         // wander off the lattice's directions between confluences.
         let (ex, ez) = (p2.0 - p1.0, p2.1 - p1.1);
-        let bend = self.plan.meander
+        // `valleys: 8`: a smaller river bends less (`SMALL_BEND`).
+        let share = if self.plan.sized_valleys {
+            SMALL_BEND + (1.0 - SMALL_BEND) * self.plan.size_of(self.q(i, k))
+        } else {
+            1.0
+        };
+        let bend = share
+            * self.plan.meander
             * signed_unit(hash2(i as i32, k as i32, self.plan.seed ^ 0x7c15_9e3d));
         let pieces = self.plan.pieces;
         // `valleys: 3` bends with `16·t²·(1 − t)²`, flat at the nodes, so the centre line keeps
@@ -401,7 +408,8 @@ impl Network<'_> {
         // `valleys: 2`: a flat floodplain, then walls as wide as the height they climb
         // (`profile`); the land beyond keeps its own shape.
         let (floodplain, valley) = if self.plan.valleys >= 2 {
-            let f = (FLOODPLAIN * hw + FLOODPLAIN_MIN_M).min(0.5 * reach);
+            // `valleys: 8`: the smallest floodplains are narrower (`RiverPlan::size_of`).
+            let f = (FLOODPLAIN * hw + FLOODPLAIN_MIN_M * self.plan.size_of(q)).min(0.5 * reach);
             (f, 2.0 * f)
         } else {
             (0.0, valley)
@@ -968,7 +976,25 @@ pub fn job_for(
 ) -> RiverJob {
     let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
     let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
-    Network::new(earth, plan).job(x0, z0, x1, z1, bin_m)
+    let mut job = Network::new(earth, plan).job(x0, z0, x1, z1, bin_m);
+    widen_floors(plan, spacing_m, &mut job);
+    job
+}
+
+/// In `valleys: 8` worlds, widens every floodplain of `job` to at least [`LOD_FLOOR`] vertex
+/// spacings each side, so a tile of `spacing_m` samples each valley floor on every row and
+/// column that crosses it. The floors of the finest tiles (at most twice the spacing of
+/// LOD 3 with the default cell) are wider than that already; a coarser tile's valleys are
+/// wider than LOD 0's by at most the width of a vertex spacing, within its LOD bound.
+fn widen_floors(plan: &RiverPlan, spacing_m: f32, job: &mut RiverJob) {
+    if !plan.sized_valleys {
+        return;
+    }
+    let floor = LOD_FLOOR * spacing_m;
+    for p in &mut job.pieces {
+        p.floodplain = p.floodplain.max(floor);
+        p.floodplain_b = p.floodplain_b.max(floor);
+    }
 }
 
 /// The water job ([`Network::water_job`]) of the same samples as [`job_for`]'s.
@@ -983,7 +1009,9 @@ pub fn water_job_for(
 ) -> RiverJob {
     let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
     let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
-    Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m)
+    let mut job = Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m);
+    widen_floors(plan, spacing_m, &mut job);
+    job
 }
 
 /// The lakes alone over the samples `(gx0 + i, gz0 + j)·spacing` of a field (its world

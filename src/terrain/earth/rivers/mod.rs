@@ -83,12 +83,18 @@
 //!    With `valleys: 6` (new worlds until `7`: the valleys of `5`) an edge's walls are
 //!    gentler where the relief is lower ([`RELIEF_WALLS_MIN`]): in plains a river runs in a
 //!    broad swale between low rises rather than a trench between flat banks. With `valleys: 7`
-//!    (the default of new worlds: the valleys of `6`) only the larger rivers carve where the
+//!    (new worlds until `8`: the valleys of `6`) only the larger rivers carve where the
 //!    relief is high ([`RELIEF_SOURCE_Q`]): an edge whose discharge is below
 //!    `1 + RELIEF_SOURCE_Q · a²` (`a` the relief above [`RELIEF_SOURCE_FROM`]), and neither out
 //!    of nor into a lake, carves no valley and holds no water, so a range's surface between its
 //!    larger valleys is its own relief and gullies rather than the walls of a
-//!    stream every kilometre.
+//!    stream every kilometre. With `valleys: 8` (the default of new worlds: the valleys of `7`)
+//!    a valley is sized by its river ([`RiverPlan::size_of`], full from [`SIZED_Q`]): the
+//!    floodplain beyond the channel's share and the edge's bend shrink with the discharge, to a
+//!    sixth of the floodplain and [`SMALL_BEND`] of the bend at a source, so a plain's brooks
+//!    run nearly straight in V-shaped valleys that join into trees instead of winding as
+//!    flat-floored trenches; and each tile's job widens every floodplain to [`LOD_FLOOR`] of
+//!    its vertex spacing (an 8 m floor is stepped over at 64 m spacing, a chain of pits).
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -106,7 +112,8 @@
 //! sample's carved height moves by no more than its uncarved height does — each profile's slope
 //! in `h` lies in [−¼, 1] (in (−1, 1] with the spurs of `valleys: 5`), the shores' in [0, 1],
 //! and the minimum over pieces keeps that — so
-//! their bound stands.)
+//! their bound stands; in `valleys: 8` worlds a tile widens the floodplains to its spacing,
+//! and the bound of those LODs grows by [`widened_floor_bound_m`].)
 //!
 //! The coarse network (worlds with `coarse: 1`, the default of new worlds): the tiles of LODs
 //! `MAX_CARVE_LOD + 1 ..=` [`MAX_COARSE_LOD`] (512 m and 1 km with the default 1 m cell) are
@@ -280,6 +287,35 @@ pub const RELIEF_SOURCE_Q: f32 = 32.0;
 /// The relief (over the world's largest) up to which `valleys: 7` carves every edge
 /// ([`RELIEF_SOURCE_Q`]): the plains keep the valleys that drain their hollows.
 pub const RELIEF_SOURCE_FROM: f32 = 0.3;
+/// The discharge, in nodes of the fine network, from which a `valleys: 8` valley has its full
+/// size ([`RiverPlan::size_of`]): `valleys: 7`'s floodplain and bend. A smaller river's valley
+/// grows with `log2(1 + Q)`, from a sixth of that size for a source (`Q = 1`).
+pub const SIZED_Q: f32 = 63.0;
+/// The share of [`MEANDER_2`] that the edge of a source keeps in `valleys: 8` worlds; larger
+/// rivers bend further, in full from [`SIZED_Q`]. A brook runs nearly straight between its
+/// confluences a kilometre apart, and its valley with it: the full bend on every edge drew the
+/// plains' small valleys as a maze of worm-like trenches.
+pub const SMALL_BEND: f32 = 0.3;
+/// A `valleys: 8` job widens every floodplain to at least this many vertex spacings each side
+/// ([`job_for`]): a coarse tile then samples each valley floor on every row and column that
+/// crosses it instead of stepping over a narrow floor into a chain of pits (the smallest
+/// valleys' floors are 8 m wide each side, a LOD-6 tile's vertices 64 m apart).
+pub const LOD_FLOOR: f32 = 0.5;
+/// The most a `valleys: 8` tile of vertex spacing `spacing_m` lowers a sample by widening its
+/// floodplains to [`LOD_FLOOR`] spacings (metres; 0 where no floodplain is narrower, spacings
+/// up to 16 m with the default settings): the added width, beyond the narrowest floodplain (a
+/// source's, `FLOODPLAIN_MIN_M / log2(1 + SIZED_Q)`), times the steepest a carved wall climbs.
+/// A wall's smoothstep climbs at most `1.5 · (1 + SPUR)` times its mean slope, which is at most
+/// the steepest [`WALL_SLOPE`] (times [`SLOPE_SCALE`]'s largest factor), or, where the wall is
+/// clamped to the valley's reach, [`CARVE_MAX_M`] over the half of the narrowest reach
+/// (`3 · VALLEY_MIN`) that the floodplain leaves; and never more than the carve's own limit.
+pub fn widened_floor_bound_m(spacing_m: f32) -> f32 {
+    let narrowest = FLOODPLAIN_MIN_M / libm::log2f(1.0 + SIZED_Q);
+    let added = (LOD_FLOOR * spacing_m - narrowest).max(0.0);
+    let mean = (WALL_SLOPE * SLOPE_SCALE.1).max(CARVE_MAX_M / (1.5 * VALLEY_MIN));
+    (1.5 * (1.0 + SPUR) * mean * added).min(CARVE_MAX_M)
+}
+
 /// Half-width of a `valleys: 2` floodplain in channel half-widths, plus [`FLOODPLAIN_MIN_M`].
 pub const FLOODPLAIN: f32 = 4.0;
 /// Half-width of the smallest `valleys: 2` floodplain, metres.
@@ -374,6 +410,9 @@ pub struct RiverPlan {
     /// Whether only the larger rivers carve where the relief is high (`valleys: 7`,
     /// [`RELIEF_SOURCE_Q`]).
     pub relief_sources: bool,
+    /// Whether a valley's floodplain and bend grow with its river's discharge and every
+    /// floodplain is at least [`LOD_FLOOR`] vertex spacings wide (`valleys: 8`, [`SIZED_Q`]).
+    pub sized_valleys: bool,
     /// `SPUR / WALL_NOISE_CLAMP` with `valleys: 5` and later (the spurs of the walls, [`SPUR`]),
     /// else 0 ([`RiverPlan::spur_at`]).
     pub spur_scale: f32,
@@ -466,6 +505,7 @@ impl RiverPlan {
             varied_valleys: params.valleys >= 4,
             relief_walls: params.valleys >= 6,
             relief_sources: params.valleys >= 7,
+            sized_valleys: params.valleys >= 8,
             spur_scale: if params.valleys >= 5 {
                 SPUR / WALL_NOISE_CLAMP
             } else {
@@ -526,6 +566,18 @@ impl RiverPlan {
                 .max(self.floor_min_m),
             WALL_SLOPE * s,
         )
+    }
+
+    /// The size of the valley of a river of discharge `q` (in this network's nodes), in (0, 1]:
+    /// `log2(1 + Q) / log2(1 + SIZED_Q)`, at most 1, with `Q` the discharge in nodes of the
+    /// fine network (`valleys: 8`, [`SIZED_Q`]); 1 in worlds before, whose valleys have one
+    /// size. A valley's floodplain, beyond its channel's share, and its bend scale with it.
+    pub fn size_of(&self, q: u32) -> f32 {
+        if !self.sized_valleys {
+            return 1.0;
+        }
+        let q = q as f32 * self.q_scale as f32;
+        (libm::log2f(1.0 + q) / libm::log2f(1.0 + SIZED_Q)).min(1.0)
     }
 
     /// The walls' spur value at the point `(x, z)` of a centre line ([`SPUR`]): `spur_scale ·`
