@@ -418,8 +418,10 @@ fn chunks_sharing_a_vertex_give_it_the_same_bits_near_caves_and_on_the_ground() 
         for (lod, x0, z0) in [(0, -2, -1), (1, -1, -1)] {
             let keys = seam_chunks(&mut world, &g, lod, x0, z0);
             let (shared, differ) = shared_vertices(&mut world, &keys);
+            // The seams must be exercised: hundreds of shared vertices (971 at LOD 1 in the
+            // default world since `valleys: 8`, whose ground there spans fewer chunks).
             assert!(
-                shared > 1000,
+                shared > 900,
                 "{name}, lod {lod}: {} chunks share only {shared} vertices",
                 keys.len()
             );
