@@ -24,6 +24,7 @@ const MIN_TILES = 50;
 const TILE_TIMEOUT_MS = 45_000;
 const MIN_VARIANCE = 150; // per-channel luminance variance over the image, 0…65025
 const MIN_RIVER_M = 1000; // river centre line drawn as ribbons in the first view, metres
+const MAX_RIBBON_ABOVE_GROUND_M = 8.01; // ribbon.ts' CHANNEL_DEPTH_MAX_M, and rounding
 const SKY_MAX = 0.01; // fraction of sky-coloured pixels below the horizon while flying
 const SKY = [158, 189, 219]; // the viewer's sky (sRGB 0.62, 0.74, 0.86)
 
@@ -143,6 +144,13 @@ try {
       `rivers: ${s.rivers} ribbons, ${(s.riverLength / 1000).toFixed(2)} km of centre line, ` +
         `lines for ${s.riverTiles} tiles, ${s.riverPending} requests left`,
     );
+    // Away from lakes and the sea a ribbon lies at most a channel's depth (8 m, `ribbon.ts`)
+    // above the ground: a line's level follows the network's, which can float tens of metres
+    // above a hollow its valley does not reach (82 m near this place), where the band hung in
+    // the air. Distances read the same interpolated ground, so only rounding can add to 8 m.
+    console.log(`ribbons lie at most ${s.riverAboveGround.toFixed(2)} m above the ground`);
+    if (!(s.riverAboveGround <= MAX_RIBBON_ABOVE_GROUND_M))
+      failures.push(`a river ribbon lies ${s.riverAboveGround} m above the ground, over ${MAX_RIBBON_ABOVE_GROUND_M}`);
     if (!(s.rivers > 0)) failures.push("no river ribbons drawn at a place with a river");
     else if (!(s.riverLength >= MIN_RIVER_M))
       failures.push(`river ribbons hold ${s.riverLength} m of centre line, fewer than ${MIN_RIVER_M}`);

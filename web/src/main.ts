@@ -66,6 +66,7 @@ interface StrataState {
   riverLength: number; // their centre lines' total length, metres
   riverPending: number; // river-line requests queued or open
   riverTiles: number; // held tiles whose river lines have arrived
+  riverAboveGround: number; // highest a ribbon lies above its tile's ground away from lakes and the sea, metres
   chunks: number; // chunk frames received since the page loaded
   heldChunks: number; // chunk meshes in the scene
   closed: string; // why the stream stopped for good ("" while it runs or reconnects)
@@ -126,6 +127,7 @@ const state: StrataState = {
   riverLength: 0,
   riverPending: 0,
   riverTiles: 0,
+  riverAboveGround: 0,
   chunks: 0,
   heldChunks: 0,
   closed: "",
@@ -1116,6 +1118,7 @@ function frame(now: number): void {
     state.riverLength = r.length;
     state.riverPending = r.pending;
     state.riverTiles = r.tiles;
+    state.riverAboveGround = r.aboveGround;
     const p = camera.position;
     const ground = groundAt(p.x, p.z);
     hud.textContent = [

@@ -1,6 +1,9 @@
 // River ribbons: each centre line of a tile as a band of its channel width, cut to the tile's
 // square (so the pieces of neighbouring tiles meet on their shared edge) and laid on the water
-// level, or just above the tile's ground where the ground is higher than the level. A line runs on
+// level, or just above the tile's ground where the ground is higher than the level, or at most
+// a channel's depth above the ground where the level floats higher (a line's levels follow the
+// river network's, which reads the ground smoothed over kilometres: across a hollow its valley
+// does not reach, the level stood up to 70 m above the land and the band hung in the air). A line runs on
 // through the lakes it crosses, at the lake's level, and ends a piece or two into the sea: a piece
 // whose corners all lie over lake or sea water (the tile's water kinds, `api/tile_format_v2.md`)
 // is left to that water's sheet, which would otherwise show the band as a darker line across it.
@@ -19,10 +22,18 @@ export interface Ribbons {
   count: number;
   /** Length of their centre lines inside the tile, metres. */
   length: number;
+  /** Highest a drawn corner lies above the tile's ground away from lakes and the sea, metres (0 without one). */
+  aboveGround: number;
 }
 
 /** How far above the ground a ribbon lies where the ground is above the water level, metres. */
 const LIFT_M = 0.15;
+/**
+ * Highest a ribbon lies above the tile's ground away from lakes and the sea, metres: the deepest
+ * channel the carve cuts (0.3 + 0.4 · Q^0.4 for the largest discharge, about 7.4 m), so a river
+ * in its channel keeps its level and one whose level floats above a hollow lies on the ground.
+ */
+const CHANNEL_DEPTH_MAX_M = 8;
 /** The sharpest bend's offset: a miter is at most this many half widths long. */
 const MITER_LIMIT = 2.5;
 
@@ -34,25 +45,26 @@ export function buildRibbons(tile: Tile, lines: RiverLine[]): Ribbons {
   const pos: number[] = [];
   let count = 0;
   let length = 0;
+  let aboveGround = 0;
   for (const line of lines) {
     const inside = clippedLength(line, rect);
     const before = pos.length;
     ribbon(line, rect, step, (poly) => {
-      if (!overStillWater(poly, tile)) emit(poly, tile, pos);
+      if (!overStillWater(poly, tile)) aboveGround = Math.max(aboveGround, emit(poly, tile, pos));
     });
     if (inside > 0 || pos.length > before) {
       count++;
       length += inside;
     }
   }
-  if (pos.length === 0) return { geometry: undefined, count, length };
+  if (pos.length === 0) return { geometry: undefined, count, length, aboveGround };
   const geo = new THREE.BufferGeometry();
   const normals = new Float32Array(pos.length);
   for (let v = 1; v < normals.length; v += 3) normals[v] = 1;
   geo.setAttribute("position", new THREE.BufferAttribute(new Float32Array(pos), 3));
   geo.setAttribute("normal", new THREE.BufferAttribute(normals, 3));
   geo.computeBoundingSphere();
-  return { geometry: geo, count, length };
+  return { geometry: geo, count, length, aboveGround };
 }
 
 /** Offsets of each point to the left bank: the unit normal times half the width, mitred at bends. */
@@ -158,20 +170,36 @@ function clip(poly: Corner[], rect: Rect): Corner[] {
   return cur;
 }
 
-/** Whether every corner of `poly` lies nearest a vertex of `tile` with lake or sea water (never, in a tile without kinds). */
-function overStillWater(poly: Corner[], tile: Tile): boolean {
+/** Whether the vertex of `tile` nearest `(x, z)` holds lake or sea water (never, in a tile without kinds). */
+function stillWaterAt(tile: Tile, x: number, z: number): boolean {
   if (tile.waterKind.length === 0) return false;
-  return poly.every(([x, z]) => {
-    const i = Math.min(tile.size - 1, Math.max(0, Math.round((x - tile.originX) / tile.spacing)));
-    const j = Math.min(tile.size - 1, Math.max(0, Math.round((z - tile.originZ) / tile.spacing)));
-    const kind = tile.waterKind[j * tile.size + i];
-    return kind === WATER_LAKE || kind === WATER_SEA;
-  });
+  const i = Math.min(tile.size - 1, Math.max(0, Math.round((x - tile.originX) / tile.spacing)));
+  const j = Math.min(tile.size - 1, Math.max(0, Math.round((z - tile.originZ) / tile.spacing)));
+  const kind = tile.waterKind[j * tile.size + i];
+  return kind === WATER_LAKE || kind === WATER_SEA;
 }
 
-/** Appends `poly` as a fan of upward-facing triangles, each corner draped on the tile, relative to its origin. */
-function emit(poly: Corner[], tile: Tile, pos: number[]): void {
-  const y = poly.map(([x, z, level]) => Math.max(level, groundHeight(tile, x, z) + LIFT_M));
+/** Whether every corner of `poly` lies nearest a vertex of `tile` with lake or sea water. */
+function overStillWater(poly: Corner[], tile: Tile): boolean {
+  return poly.every(([x, z]) => stillWaterAt(tile, x, z));
+}
+
+/** The height of a ribbon's corner at `(x, z)` whose water level is `level`: on the level, lifted
+ *  over ground above it and, away from lakes and the sea, at most a channel's depth above the ground. */
+function ribbonHeight(tile: Tile, x: number, z: number, level: number): number {
+  const ground = groundHeight(tile, x, z);
+  const onLevel = Math.max(level, ground + LIFT_M);
+  return stillWaterAt(tile, x, z) ? onLevel : Math.min(onLevel, ground + CHANNEL_DEPTH_MAX_M);
+}
+
+/** Appends `poly` as a fan of upward-facing triangles, each corner draped on the tile, relative to
+ *  its origin; returns the highest a corner away from lakes and the sea lies above the ground. */
+function emit(poly: Corner[], tile: Tile, pos: number[]): number {
+  const y = poly.map(([x, z, level]) => ribbonHeight(tile, x, z, level));
+  let above = 0;
+  poly.forEach(([x, z], v) => {
+    if (!stillWaterAt(tile, x, z)) above = Math.max(above, y[v] - groundHeight(tile, x, z));
+  });
   for (let i = 1; i + 1 < poly.length; i++) {
     let [b, c] = [i, i + 1];
     // Counter-clockwise seen from above: (b − a) × (c − a) points up (+y).
@@ -179,6 +207,7 @@ function emit(poly: Corner[], tile: Tile, pos: number[]): void {
     if (cross < 0) [b, c] = [c, b];
     for (const v of [0, b, c]) pos.push(poly[v][0] - tile.originX, y[v], poly[v][1] - tile.originZ);
   }
+  return above;
 }
 
 /** Length of the line's centre line inside `rect` (Liang–Barsky on each piece), metres. */

@@ -36,6 +36,7 @@ interface Entry {
   version: number;
   count: number;
   length: number;
+  aboveGround: number;
 }
 
 /** What the layer draws, for the HUD and the tests. */
@@ -44,6 +45,7 @@ export interface RiverStats {
   length: number; // their centre lines' total length inside the tiles, metres
   pending: number; // river-line requests queued or open
   tiles: number; // tiles whose lines have arrived
+  aboveGround: number; // highest a ribbon lies above its tile's ground away from lakes and the sea, metres
 }
 
 export class RiverLayer {
@@ -77,7 +79,7 @@ export class RiverLayer {
   /** The tile `key` now has `mesh` (a new frame of it at `version`). */
   put(key: string, mesh: THREE.Mesh, tile: Tile, version: number): void {
     const old = this.entries.get(key);
-    const e: Entry = { url: this.sourceUrl(tile, version), mesh, tile, version, count: 0, length: 0 };
+    const e: Entry = { url: this.sourceUrl(tile, version), mesh, tile, version, count: 0, length: 0, aboveGround: 0 };
     this.entries.set(key, e);
     if (old) this.release(key, old.url);
     this.request(key, e);
@@ -95,12 +97,14 @@ export class RiverLayer {
     let ribbons = 0;
     let length = 0;
     let tiles = 0;
+    let aboveGround = 0;
     for (const e of this.entries.values()) {
       ribbons += e.count;
       length += e.length;
+      aboveGround = Math.max(aboveGround, e.aboveGround);
       if (this.loader.get(e.url)) tiles++;
     }
-    return { ribbons, length, pending: this.loader.pending, tiles };
+    return { ribbons, length, pending: this.loader.pending, tiles, aboveGround };
   }
 
   /** The URL of the lines for `tile`: its own, or those of the SOURCE_LOD tile that holds it; "" above the carving LODs. */
@@ -150,6 +154,7 @@ export class RiverLayer {
     const r = buildRibbons(e.tile, lines);
     e.count = r.count;
     e.length = r.length;
+    e.aboveGround = r.aboveGround;
     if (!r.geometry) return;
     setWater(e.mesh, e.tile, riverVertices(e.tile, lines));
     const ribbons = new THREE.Mesh(r.geometry, ribbonMaterial);
