@@ -437,7 +437,7 @@ impl EarthPlan {
             if rp.sized_valleys {
                 for (lod, l) in lods.iter_mut().enumerate().take(rivers::MAX_CARVE_LOD + 1) {
                     let spacing_m = params.cell_m * (1u32 << lod) as f32;
-                    l.bound_m += rivers::widened_floor_bound_m(spacing_m);
+                    l.bound_m += rivers::widened_floor_bound_m(spacing_m, rp.spacing_m);
                 }
             }
         }

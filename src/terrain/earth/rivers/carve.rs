@@ -983,9 +983,9 @@ pub fn job_for(
 
 /// In `valleys: 8` worlds, widens every floodplain of `job` to at least [`LOD_FLOOR`] vertex
 /// spacings each side, so a tile of `spacing_m` samples each valley floor on every row and
-/// column that crosses it. The floors of the finest tiles (at most twice the spacing of
-/// LOD 3 with the default cell) are wider than that already; a coarser tile's valleys are
-/// wider than LOD 0's by at most the width of a vertex spacing, within its LOD bound.
+/// column that crosses it. Tiles of spacings up to 16 m keep their pieces (the narrowest
+/// floodplain, a source's, is 8.3 m each side); a coarser tile's floors are wider than LOD 0's
+/// by at most a vertex spacing, within its LOD bound ([`super::widened_floor_bound_m`]).
 fn widen_floors(plan: &RiverPlan, spacing_m: f32, job: &mut RiverJob) {
     if !plan.sized_valleys {
         return;

@@ -302,17 +302,27 @@ pub const SMALL_BEND: f32 = 0.3;
 /// valleys' floors are 8 m wide each side, a LOD-6 tile's vertices 64 m apart).
 pub const LOD_FLOOR: f32 = 0.5;
 /// The most a `valleys: 8` tile of vertex spacing `spacing_m` lowers a sample by widening its
-/// floodplains to [`LOD_FLOOR`] spacings (metres; 0 where no floodplain is narrower, spacings
-/// up to 16 m with the default settings): the added width, beyond the narrowest floodplain (a
-/// source's, `FLOODPLAIN_MIN_M / log2(1 + SIZED_Q)`), times the steepest a carved wall climbs.
-/// A wall's smoothstep climbs at most `1.5 · (1 + SPUR)` times its mean slope, which is at most
-/// the steepest [`WALL_SLOPE`] (times [`SLOPE_SCALE`]'s largest factor), or, where the wall is
-/// clamped to the valley's reach, [`CARVE_MAX_M`] over the half of the narrowest reach
-/// (`3 · VALLEY_MIN`) that the floodplain leaves; and never more than the carve's own limit.
-pub fn widened_floor_bound_m(spacing_m: f32) -> f32 {
+/// floodplains to [`LOD_FLOOR`] spacings, in a network of nodes `node_spacing_m` apart (metres;
+/// 0 where no floodplain is narrower: spacings up to 16 m): the added width, beyond the
+/// narrowest floodplain (a source's, `FLOODPLAIN_MIN_M / log2(1 + SIZED_Q)`), times the
+/// steepest a carved wall climbs. A wall's smoothstep climbs at most `1.5 · (1 + SPUR)` times
+/// its mean slope, which is at most the steepest [`WALL_SLOPE`] (times [`SLOPE_SCALE`]'s largest
+/// factor), or, where the wall is clamped to the valley's reach, [`CARVE_MAX_M`] over what the
+/// floor leaves of the narrowest reach (`3 · VALLEY_MIN`, at most `REACH` node spacings; a
+/// floodplain is at most half its reach before the widening); and never more than the carve's
+/// own limit.
+pub fn widened_floor_bound_m(spacing_m: f32, node_spacing_m: f32) -> f32 {
     let narrowest = FLOODPLAIN_MIN_M / libm::log2f(1.0 + SIZED_Q);
     let added = (LOD_FLOOR * spacing_m - narrowest).max(0.0);
-    let mean = (WALL_SLOPE * SLOPE_SCALE.1).max(CARVE_MAX_M / (1.5 * VALLEY_MIN));
+    if added == 0.0 {
+        return 0.0;
+    }
+    let reach = (3.0 * VALLEY_MIN).min(REACH * node_spacing_m);
+    let wall = reach - (0.5 * reach).max(LOD_FLOOR * spacing_m);
+    if wall <= 0.0 {
+        return CARVE_MAX_M;
+    }
+    let mean = (WALL_SLOPE * SLOPE_SCALE.1).max(CARVE_MAX_M / wall);
     (1.5 * (1.0 + SPUR) * mean * added).min(CARVE_MAX_M)
 }
 
