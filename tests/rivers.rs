@@ -1029,35 +1029,6 @@ fn valleys_are_sized_by_their_rivers() {
     assert!(d8 <= d7 + 0.0005, "{d7} -> {d8}");
 }
 
-/// `valleys: 8` reads the ground's own relief beside the belt's amplitude in `valleys: 7`'s rule
-/// (`RELIEF_SLOPE`): the plain of about 8 km between the far area's ranges around (611.7 km,
-/// 313.5 km), whose amplitude is a mountain belt's, carried no stream with `valleys: 7`, a smooth
-/// slope without a valley; now its small streams cut theirs, as in other plains.
-#[test]
-fn the_plains_inside_a_mountain_belt_drain() {
-    let (seven, eight) = (sized_plan(7), sized_plan(8));
-    let mut dry_params = WorldParams::default();
-    let rivers = dry_params.earth.as_mut().and_then(|e| e.rivers.as_mut());
-    rivers.expect("rivers").enabled = false;
-    let dry = WorldPlan::new(42, dry_params).expect("a dry world");
-    let (mut cut7, mut cut8, mut n) = (0usize, 0usize, 0usize);
-    for k in tiles_around(&dry, 4, (611_700.0, 313_500.0), 1) {
-        let (d, a, b) = (
-            synthesize(&dry, k),
-            synthesize(&seven, k),
-            synthesize(&eight, k),
-        );
-        for v in 0..d.heights.len() {
-            cut7 += usize::from(a.heights[v] < d.heights[v] - 2.0);
-            cut8 += usize::from(b.heights[v] < d.heights[v] - 2.0);
-            n += 1;
-        }
-    }
-    println!("the far area's belt plain at 16 m: {cut7} -> {cut8} of {n} heights cut by over 2 m");
-    assert!(cut7 * 100 < n, "valleys 7 cuts the plain: {cut7} of {n}");
-    assert!(cut8 * 20 > n, "valleys 8 drains the plain: {cut8} of {n}");
-}
-
 /// `valleys: 7` carves the edges out of and into a lake whatever their discharge: west of the
 /// range's lake at (112.1 km, 126.5 km), where the mountains stand 800 m above its water, the
 /// shores' change (at most `SHORE_MAX_M`, faded in over the lake weight) met uncarved slopes as

@@ -150,10 +150,8 @@ pub struct RiverParams {
     /// small river's floodplain is narrower (a source's 8 m each side, where every dry valley of
     /// `7` had a flat floor 40 to 90 m wide, so the plains' brooks ran in canals) and its edge
     /// bends less ([`super::rivers::SMALL_BEND`]: the plains' small valleys wound as a maze of
-    /// worm-like trenches), each tile widens the floodplains to half its vertex spacing
-    /// ([`super::rivers::LOD_FLOOR`]) so a coarse tile finds the narrow floors without pits, and
-    /// the relief that `7` reads is at most the ground's own around the node
-    /// ([`super::rivers::RELIEF_SLOPE`]), so a plain inside a mountain belt drains.
+    /// worm-like trenches), and each tile widens the floodplains to half its vertex spacing
+    /// ([`super::rivers::LOD_FLOOR`]) so a coarse tile finds the narrow floors without pits.
     #[serde(
         default = "RiverParams::first_valleys",
         skip_serializing_if = "RiverParams::is_first_valleys"

@@ -8,8 +8,8 @@ use super::network::{LongPiece, Network, Node};
 use super::shores::Sill;
 use super::{
     channel, kind, RiverPlan, CARVE_MAX_M, FLOODPLAIN, FLOODPLAIN_MIN_M, LOD_FLOOR, MIN_VALLEY_Q,
-    PIECE_BLOCK, Q_MAX, REACH, RELIEF_SLOPE, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN,
-    SMALL_BEND, VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
+    PIECE_BLOCK, Q_MAX, REACH, RELIEF_SOURCE_FROM, RELIEF_SOURCE_Q, RELIEF_WALLS_MIN, SMALL_BEND,
+    VALLEY_MIN, WALL_NOISE_CLAMP, WALL_NOISE_INV_M,
 };
 use rustc_hash::FxHashSet as HashSet;
 
@@ -351,12 +351,7 @@ impl Network<'_> {
         if !self.plan.relief_sources {
             return true;
         }
-        let mut r = self.relief(i, k) * self.earth.inv_relief_max;
-        // `valleys: 8`: the relief of the ground around the node too, so the plains inside a
-        // mountain belt, whose amplitude is the belt's, drain like other plains.
-        if self.plan.sized_valleys {
-            r = r.min(self.node_slope(i, k) / RELIEF_SLOPE);
-        }
+        let r = self.relief(i, k) * self.earth.inv_relief_max;
         let above = ((r - RELIEF_SOURCE_FROM) / (1.0 - RELIEF_SOURCE_FROM)).max(0.0);
         if q as f32 >= 1.0 + RELIEF_SOURCE_Q * above * above {
             return true;
@@ -368,32 +363,6 @@ impl Network<'_> {
             || self
                 .down(i, k)
                 .is_some_and(|(a, b)| self.lake(a, b).is_some())
-    }
-
-    /// The steepest slope (rise over run) from node `(i, k)` to one of its eight lattice
-    /// neighbours, in the node heights, over their lattice distance.
-    fn node_slope(&mut self, i: i64, k: i64) -> f32 {
-        let h = self.height(i, k);
-        let s = self.plan.spacing_m;
-        let mut m = 0.0f32;
-        for (di, dk) in [
-            (1, 0),
-            (-1, 0),
-            (0, 1),
-            (0, -1),
-            (1, 1),
-            (-1, -1),
-            (1, -1),
-            (-1, 1),
-        ] {
-            let d = if di != 0 && dk != 0 {
-                core::f32::consts::SQRT_2 * s
-            } else {
-                s
-            };
-            m = m.max((self.height(i + di, k + dk) - h).abs() / d);
-        }
-        m
     }
 
     /// The pieces of the edges out of the nodes of piece block `b` ([`PIECE_BLOCK`] nodes a

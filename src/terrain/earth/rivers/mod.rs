@@ -93,10 +93,8 @@
 //!    floodplain beyond the channel's share and the edge's bend shrink with the discharge, to a
 //!    sixth of the floodplain and [`SMALL_BEND`] of the bend at a source, so a plain's brooks
 //!    run nearly straight in V-shaped valleys that join into trees instead of winding as
-//!    flat-floored trenches; each tile's job widens every floodplain to [`LOD_FLOOR`] of
-//!    its vertex spacing (an 8 m floor is stepped over at 64 m spacing, a chain of pits); and
-//!    the relief of `valleys: 7`'s rule is the lower of the amplitude's and the node's slope
-//!    to its steepest neighbour over [`RELIEF_SLOPE`], so a plain inside a belt drains.
+//!    flat-floored trenches; and each tile's job widens every floodplain to [`LOD_FLOOR`] of
+//!    its vertex spacing (an 8 m floor is stepped over at 64 m spacing, a chain of pits).
 //!
 //! Seams: pieces and lakes are functions of nodes only, and a piece farther than its reach from
 //! a sample returns its height unchanged, bit for bit ([`profile`]), so every tile
@@ -289,13 +287,6 @@ pub const RELIEF_SOURCE_Q: f32 = 32.0;
 /// The relief (over the world's largest) up to which `valleys: 7` carves every edge
 /// ([`RELIEF_SOURCE_Q`]): the plains keep the valleys that drain their hollows.
 pub const RELIEF_SOURCE_FROM: f32 = 0.3;
-/// The slope (rise over run, in node heights, from a node to its steepest neighbour) that
-/// counts as the largest relief in `valleys: 8`'s rule of [`RELIEF_SOURCE_Q`]: a node's relief
-/// is the lower of the macro amplitude's and its slope over this. Inside a mountain belt the
-/// amplitude is the belt's even where the ground is a plain (the far area's plains between its
-/// ranges read a median slope of 0.03, against 0.07 to 0.37 in ranges and 0.003 in the origin's
-/// plain), and with `valleys: 7` such a plain, 8 km across, carried no stream.
-pub const RELIEF_SLOPE: f32 = 0.25;
 /// The discharge, in nodes of the fine network, from which a `valleys: 8` valley has its full
 /// size ([`RiverPlan::size_of`]): `valleys: 7`'s floodplain and bend. A smaller river's valley
 /// grows with `log2(1 + Q)`, from a sixth of that size for a source (`Q = 1`).
