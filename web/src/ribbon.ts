@@ -185,21 +185,22 @@ function overStillWater(poly: Corner[], tile: Tile): boolean {
 }
 
 /** The height of a ribbon's corner at `(x, z)` whose water level is `level`: on the level, lifted
- *  over ground above it and, away from lakes and the sea, at most a channel's depth above the ground. */
-function ribbonHeight(tile: Tile, x: number, z: number, level: number): number {
+ *  over ground above it and, away from lakes and the sea, at most a channel's depth above the
+ *  ground; and how far that lies above the ground there (0 over lakes and the sea). */
+function ribbonHeight(tile: Tile, x: number, z: number, level: number): [number, number] {
   const ground = groundHeight(tile, x, z);
   const onLevel = Math.max(level, ground + LIFT_M);
-  return stillWaterAt(tile, x, z) ? onLevel : Math.min(onLevel, ground + CHANNEL_DEPTH_MAX_M);
+  if (stillWaterAt(tile, x, z)) return [onLevel, 0];
+  const y = Math.min(onLevel, ground + CHANNEL_DEPTH_MAX_M);
+  return [y, y - ground];
 }
 
 /** Appends `poly` as a fan of upward-facing triangles, each corner draped on the tile, relative to
  *  its origin; returns the highest a corner away from lakes and the sea lies above the ground. */
 function emit(poly: Corner[], tile: Tile, pos: number[]): number {
-  const y = poly.map(([x, z, level]) => ribbonHeight(tile, x, z, level));
-  let above = 0;
-  poly.forEach(([x, z], v) => {
-    if (!stillWaterAt(tile, x, z)) above = Math.max(above, y[v] - groundHeight(tile, x, z));
-  });
+  const corners = poly.map(([x, z, level]) => ribbonHeight(tile, x, z, level));
+  const y = corners.map(([h]) => h);
+  const above = Math.max(0, ...corners.map(([, a]) => a));
   for (let i = 1; i + 1 < poly.length; i++) {
     let [b, c] = [i, i + 1];
     // Counter-clockwise seen from above: (b − a) × (c − a) points up (+y).

@@ -259,7 +259,7 @@ impl Network<'_> {
         let (ex, ez) = (p2.0 - p1.0, p2.1 - p1.1);
         // `valleys: 8`: a smaller river bends less (`SMALL_BEND`).
         let share = if self.plan.sized_valleys {
-            SMALL_BEND + (1.0 - SMALL_BEND) * self.plan.size_of(self.q(i, k))
+            SMALL_BEND + (1.0 - SMALL_BEND) * self.plan.size_of(from.q)
         } else {
             1.0
         };

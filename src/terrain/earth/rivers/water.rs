@@ -102,8 +102,8 @@ impl RiverJob {
             let fields = if !given.is_empty() {
                 &given[j * xs.len()..(j + 1) * xs.len()]
             } else {
-                let read = (0..xs.len()).any(|i| row[i] < lake_top || has_pieces(j, i));
-                if shaped && read {
+                let read = || (0..xs.len()).any(|i| row[i] < lake_top || has_pieces(j, i));
+                if shaped && read() {
                     self.lake_field_row(xs, zs[j], &mut computed);
                 }
                 &computed[..]
