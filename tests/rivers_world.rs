@@ -318,11 +318,36 @@ async fn a_world_stored_with_the_seventh_valleys_serves_the_same_bytes() {
     );
 }
 
+/// A world stored with the default of new worlds before `lakes: 6` (`valleys: 8`, `lakes: 5`,
+/// `coarse: 1`, `lines: 2`; `tests/fixtures/lakes5-world/`) keeps the bytes of its tiles and of
+/// its river lines, where a bare seed's network sees the hollows (its node heights at most the
+/// LOD of one node spacing's), so its rivers and lakes move and most fixture tiles differ.
+#[tokio::test]
+async fn a_world_stored_with_the_fifth_lakes_serves_the_same_bytes() {
+    const WORLD: &str = "f059eb7d1298d0313139ab23";
+    const FIXTURE: &str = "lakes5-world";
+    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 80).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
+    assert_eq!(rivers["valleys"], 8, "{rivers}");
+    assert_eq!(rivers["lakes"], 5, "{rivers}");
+    assert_eq!(rivers["lines"], 2, "{rivers}");
+    let lines = common::fixture::check_pinned(&server, FIXTURE, "rivers.blake3", |_, key| {
+        format!("/v1/worlds/{WORLD}/rivers/{key}.json?v=1")
+    })
+    .await;
+    assert_eq!(lines, 9, "every fixture body of river lines was checked");
+    let differ = bare_seed_differs(&server, FIXTURE).await;
+    assert!(
+        differ >= 20,
+        "a bare seed's network sees the hollows, which most fixture tiles show: {differ} of 40 differ"
+    );
+}
+
 #[test]
 fn new_scenes_carve_the_eighth_valleys_and_accept_only_known_ones() {
     let scene = strata::scene::Scene::default().to_value();
     assert_eq!(scene["world"]["earth"]["rivers"]["valleys"], 8);
-    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 5);
+    assert_eq!(scene["world"]["earth"]["rivers"]["lakes"], 6);
     assert_eq!(scene["world"]["earth"]["rivers"]["coarse"], 1);
     assert_eq!(scene["world"]["earth"]["rivers"]["lines"], 2);
     let mut first = scene.clone();
@@ -349,13 +374,13 @@ fn new_scenes_carve_the_eighth_valleys_and_accept_only_known_ones() {
     bad["world"]["earth"]["rivers"]["valleys"] = serde_json::json!(9);
     let err = strata::scene::Scene::from_value(&bad).expect_err("valleys 9 is refused");
     assert!(format!("{err:?}").contains("rivers/valleys"), "{err:?}");
-    for known in [1, 2, 3, 4] {
+    for known in [1, 2, 3, 4, 5] {
         let mut other = scene.clone();
         other["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(known);
         strata::scene::Scene::from_value(&other).expect("other known lakes are accepted");
     }
     let mut bad = scene.clone();
-    bad["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(6);
-    let err = strata::scene::Scene::from_value(&bad).expect_err("lakes 6 is refused");
+    bad["world"]["earth"]["rivers"]["lakes"] = serde_json::json!(7);
+    let err = strata::scene::Scene::from_value(&bad).expect_err("lakes 7 is refused");
     assert!(format!("{err:?}").contains("rivers/lakes"), "{err:?}");
 }

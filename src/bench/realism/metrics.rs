@@ -33,7 +33,9 @@
 //!   5-point Laplacian `(h[i+1] + h[i−1] + h[j+1] + h[j−1] − 4h) / s²`, over interior cells marked
 //!   as border (by the caller: a vertex whose largest biome weight is below 0.99), divided by the
 //!   same mean over the other interior cells; `None` when either set is empty. Values near 1 mean
-//!   the blend leaves no seam of extra curvature.
+//!   the blend leaves no seam of extra curvature. [`land_border_curvature`] leaves out the cells
+//!   whose stencil touches lake or river water: a shore's curvature is the water's, wherever a
+//!   lake happens to lie, not the blend's.
 
 use rustfft::{num_complex::Complex, FftPlanner};
 use std::cmp::Reverse;
@@ -602,11 +604,33 @@ impl BorderCurvature {
 /// `|∇²h|` sums on and off the cells marked in `border` (same layout as the grid), interior
 /// cells only.
 pub fn border_curvature(g: &Grid, border: &[bool]) -> BorderCurvature {
+    curvature_where(g, border, |_, _| true)
+}
+
+/// [`border_curvature`] over the interior cells whose five-point stencil holds no lake or river
+/// water (`water`: the water surface over each cell, NaN where there is none; same layout).
+pub fn land_border_curvature(g: &Grid, border: &[bool], water: &[f32]) -> BorderCurvature {
+    assert_eq!(water.len(), g.heights.len());
+    let dry = |i: usize, j: usize| water[j * g.w + i].is_nan();
+    curvature_where(g, border, |i, j| {
+        dry(i, j) && dry(i + 1, j) && dry(i - 1, j) && dry(i, j + 1) && dry(i, j - 1)
+    })
+}
+
+/// [`border_curvature`] over the interior cells `(i, j)` where `keep(i, j)`.
+fn curvature_where(
+    g: &Grid,
+    border: &[bool],
+    keep: impl Fn(usize, usize) -> bool,
+) -> BorderCurvature {
     assert_eq!(border.len(), g.heights.len());
     let s2 = g.spacing_m * g.spacing_m;
     let mut out = BorderCurvature::default();
     for j in 1..g.h.saturating_sub(1) {
         for i in 1..g.w.saturating_sub(1) {
+            if !keep(i, j) {
+                continue;
+            }
             let lap = (g.at(i + 1, j) + g.at(i - 1, j) + g.at(i, j + 1) + g.at(i, j - 1)
                 - 4.0 * g.at(i, j))
                 / s2;

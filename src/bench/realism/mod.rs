@@ -61,7 +61,7 @@ use figures::{
     check, figures, figures_json, in_range, json_line, lod_json, lod_text, mark, method_name, num,
     rows, spacing_text, table_line, Figures, COL, LABEL,
 };
-use metrics::{border_curvature, percentile, Grid};
+use metrics::{land_border_curvature, percentile, Grid};
 use sample::{first_tile, lod_consistency, sample, LodCheck};
 use serde_json::json;
 use std::path::PathBuf;
@@ -374,7 +374,7 @@ fn run_world(
             let g = &surface;
             let spacing = g.spacing_m;
             let f = figures(g, sea);
-            let border = border_curvature(g, &s.border);
+            let border = land_border_curvature(g, &s.border, &s.water);
             let lodc = lod_consistency(&plan, &s, AREA_LOD_VERTICES);
             if which == "default" {
                 write_png(

@@ -14,8 +14,16 @@
 //! whose pits lie beyond the nodes around the rectangle, which the carve reads since
 //! `coarse: 1` ([`RiverPlan::long_edges`]).
 //!
+//! An edge reaches into the rectangle when the box around one of its pieces' chords, widened by
+//! the channel and a quarter of the piece's largest bend (a bound on the curve's offset), meets
+//! it; in `lakes: 6` worlds a bent piece must also have one of the chords within
+//! [`LINE_TOLERANCE_M`] of its curve there ([`RiverPlan::exact_lines`]): the long edge of a
+//! spilling lake bends kilometres from its chord, and its box took in tiles its curve never
+//! reaches.
+//!
 //! [`RiverPlan::dense_lines`]: super::RiverPlan::dense_lines
 //! [`RiverPlan::long_edges`]: super::RiverPlan::long_edges
+//! [`RiverPlan::exact_lines`]: super::RiverPlan::exact_lines
 
 use super::carve::Edge;
 use super::network::{Network, NodeId};
@@ -104,15 +112,30 @@ impl Network<'_> {
             let near_point = |p: &[f32; 3]| {
                 p[0] >= x0 - hw && p[0] <= x1 + hw && p[1] >= z0 - hw && p[1] <= z1 + hw
             };
+            // The box around the segment from `a` to `b`, widened by `m`, meets the rectangle.
+            let boxed = |a: [f32; 3], b: [f32; 3], m: f32| {
+                a[0].min(b[0]) - m <= x1
+                    && a[0].max(b[0]) + m >= x0
+                    && a[1].min(b[1]) - m <= z1
+                    && a[1].max(b[1]) + m >= z0
+            };
+            // `lakes: 6`: a bent piece whose box meets the rectangle touches it only if one of
+            // the chords within `LINE_TOLERANCE_M` of its curve does, widened by the channel
+            // and that tolerance (the long edge of a spilling lake, tens of kilometres, bends
+            // kilometres from its chord, and its box took in tiles its curve never reaches).
+            let exact = self.plan.exact_lines;
             let touches = if self.plan.valleys < 3 {
                 e.points.iter().any(near_point)
             } else {
                 e.points.windows(2).zip(&e.bends).any(|(p, b)| {
                     let m = hw + 0.25 * b[0].hypot(b[1]).max(b[2].hypot(b[3]));
-                    p[0][0].min(p[1][0]) - m <= x1
-                        && p[0][0].max(p[1][0]) + m >= x0
-                        && p[0][1].min(p[1][1]) - m <= z1
-                        && p[0][1].max(p[1][1]) + m >= z0
+                    boxed(p[0], p[1], m)
+                        && (!exact || *b == [0.0; 4] || {
+                            let steps = piece_steps(*b);
+                            let at =
+                                |c: usize| piece_point(p[0], p[1], *b, c as f32 / steps as f32);
+                            (0..steps).any(|c| boxed(at(c), at(c + 1), hw + LINE_TOLERANCE_M))
+                        })
                 })
             };
             if touches {

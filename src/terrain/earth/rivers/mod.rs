@@ -7,8 +7,12 @@
 //!
 //! 1. **Nodes.** Node `(i, k)` sits at `((i + ½ + j_x)·s, (k + ½ + j_z)·s)` with a hashed jitter
 //!    `|j| ≤` [`JITTER`] (no lattice alignment), `s` = `spacing_m`. Its height `H` is the world's
-//!    height function at the LOD whose spacing is `s / 2` (relief finer than that is left to the
-//!    carve), with the world's mean erosion.
+//!    height function at the LOD whose spacing is [`NODE_LOD_FACTOR`] `· s` (relief finer than
+//!    that is left to the carve), with the world's mean erosion; with `lakes: 6` (the default
+//!    of new worlds) at most the height function at the LOD [`HOLLOW_LODS`] finer (spacing `s`),
+//!    so the network sees the hollows of a plain that the coarser LOD smooths over (there its
+//!    heights stood up to 90 m above the ground, and a bowl kilometres wide held neither river
+//!    nor lake) while the coarser LOD's valleys keep their depth.
 //! 2. **Flow.** Neighbours are the four axis nodes and, per lattice cell, one hashed diagonal, so
 //!    the graph is planar and no two rivers cross. A land node drains to the neighbour of steepest
 //!    descent; a node below sea level is the sea; a land node with no lower neighbour is a pit,
@@ -17,7 +21,10 @@
 //!    count that stops once `Q_MAX` is reached, so it reads at most `Q_MAX` nodes upstream and is
 //!    exact below the cap. It never falls downstream (`Q(down(n)) ≥ Q(n)`, also at the cap).
 //! 4. **Water level.** `W(n) = max(H(n) − incision(Q(n)), B)`, `B` the level of the lake the
-//!    flow reaches first, or sea level: `H` falls strictly along the flow (out of a lake that
+//!    flow reaches first (its pit's level; with `lakes: 6` the flow ends at the first node a
+//!    lake covers, pit or not, and `B` is the highest level of the lakes covering it: a flow
+//!    may cross a lake's water without meeting its pit, and a pit's lake may lie submerged in a
+//!    higher lake whose flood took in its basin, step 5), or sea level: `H` falls strictly along the flow (out of a lake that
 //!    spills, step 5, it climbs to the outlet, below the lake's level, which is the pit's `W`),
 //!    the incision grows with `Q` and `B` never rises, so `W` never rises downstream.
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
@@ -159,6 +166,9 @@ use super::params::RiverParams;
 /// than a few node spacings is left out, so the drainage follows the larger slopes and cuts
 /// through smaller hills rather than ending in a pit behind each.
 pub const NODE_LOD_FACTOR: f32 = 4.0;
+/// With `lakes: 6` the node heights are at most the heights of the LOD this many finer than
+/// the node LOD ([`RiverPlan::hollow_lod`]).
+pub const HOLLOW_LODS: usize = 2;
 /// Nodes per side of a block of the piece cache.
 pub const PIECE_BLOCK: i64 = 8;
 /// Nodes per block side of the caches.
@@ -390,6 +400,21 @@ pub struct RiverPlan {
     pub seed: u32,
     /// LOD whose height function gives the node heights.
     pub node_lod: usize,
+    /// With `lakes: 6`, the finer LOD (two LODs finer than `node_lod`: one node spacing in the
+    /// fine network) whose heights bound the node heights from above, so the network sees the
+    /// hollows that the coarser LOD smooths over; `None` before.
+    pub hollow_lod: Option<usize>,
+    /// Whether a flow ends where it first reaches a lake's water (a node a lake covers), its
+    /// water levels resting on the highest level of the lakes covering that node (`lakes: 6`);
+    /// before, a flow ended at a lake's pit only and rested on that pit's own level, so a river
+    /// that crossed a lake's water without meeting its pit, or ended in a lake submerged by a
+    /// higher one, was cut below the water the tiles show.
+    pub lake_ends: bool,
+    /// Whether a bent piece's line touches a rectangle only where one of the chords within
+    /// [`LINE_TOLERANCE_M`] of its curve does (`lakes: 6`, whose lakes spill over more long
+    /// edges); before, where the box around its chord widened by the largest bend did, so a
+    /// long edge's line was listed for tiles kilometres from its curve.
+    pub exact_lines: bool,
     /// Discharge (nodes) from which a channel holds water.
     pub wet_q: u32,
     /// Incision of the largest rivers below the node heights, metres.
@@ -493,6 +518,7 @@ impl RiverPlan {
         };
         let fingerprint = super::fingerprint(domain, seed, world);
         let lod = libm::log2((spacing_m * NODE_LOD_FACTOR / cell_m) as f64).floor();
+        let node_lod = lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize;
         Self {
             spacing_m,
             q_scale,
@@ -500,7 +526,10 @@ impl RiverPlan {
             long_edges: params.coarse >= 1,
             dense_lines: params.lines >= 2,
             seed: stream(seed, purpose::EARTH, if coarse { 420 } else { 400 }),
-            node_lod: lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize,
+            node_lod,
+            hollow_lod: (params.lakes >= 6).then(|| node_lod.saturating_sub(HOLLOW_LODS)),
+            lake_ends: params.lakes >= 6,
+            exact_lines: params.lakes >= 6,
             wet_q: if coarse {
                 ((8.0 / params.density) / q_scale as f32).ceil().max(1.0) as u32
             } else {

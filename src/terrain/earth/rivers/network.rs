@@ -646,7 +646,15 @@ impl<'a> Network<'a> {
                     w[lk * n + li] = h;
                     continue;
                 };
-                let base = if self.is_pit(end.0, end.1) {
+                // `lakes: 6`: the flow ends at lake water, whose level is the highest of the
+                // lakes covering the node (a pit's own lake may lie submerged in a higher one).
+                let lake = match self.plan.lake_ends {
+                    true => self.lake(end.0, end.1),
+                    false => None,
+                };
+                let base = if let Some(level) = lake {
+                    level
+                } else if self.is_pit(end.0, end.1) {
                     self.flood(end.0, end.1).0
                 } else {
                     self.plan.sea_level_m
@@ -696,8 +704,14 @@ impl<'a> Network<'a> {
                 break known;
             }
             // A lake ends the flow, also one that spills (`lakes: 3`): the water levels rest
-            // on its level.
-            if self.plan.lakes >= 3 && self.is_lake_pit(at.0, at.1) {
+            // on its level. With `lakes: 6` the flow ends where it first reaches a lake's
+            // water, also one it passes through without meeting the pit.
+            let reached = if self.plan.lake_ends {
+                self.lake(at.0, at.1).is_some()
+            } else {
+                self.plan.lakes >= 3 && self.is_lake_pit(at.0, at.1)
+            };
+            if reached {
                 memo.insert(at, (at, 0));
                 break (at, 0);
             }
@@ -867,9 +881,23 @@ fn compute_heights(earth: &EarthPlan, plan: &RiverPlan, (bx, bz): (i64, i64)) ->
         // `kernel::heights`, keeping the relief amplitude its macro fields computed.
         let mut p = kernel::Partial::start(earth, &x, &z);
         amp[start..start + c].copy_from_slice(&p.amp[..c]);
+        // `lakes: 6`: the lower of two LODs' heights, so the network sees the hollows the
+        // finer one holds (module docs, step 1); the macro fields are shared.
+        let hollow = plan.hollow_lod.map(|lod| {
+            let mut q = p.clone();
+            let mut below = [0.0f32; LANES];
+            q.add_layers(earth, &earth.lods[lod].layers, &x, &z, &ero, &rough);
+            q.finish(&mut below);
+            below
+        });
         let layers = &earth.lods[plan.node_lod].layers;
         p.add_layers(earth, layers, &x, &z, &ero, &rough);
         p.finish(&mut out);
+        if let Some(below) = hollow {
+            for (o, b) in out.iter_mut().zip(below) {
+                *o = o.min(b);
+            }
+        }
         h[start..start + c].copy_from_slice(&out[..c]);
     }
     let n = BLOCK as usize;
