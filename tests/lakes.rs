@@ -443,3 +443,63 @@ fn the_network_sees_the_plains_hollows_and_rivers_rest_on_the_lakes_they_reach()
         "ending at pits cuts below the lakes: {under_pits}"
     );
 }
+
+/// `lakes: 6`: the water of a lake that spills over an outlet beyond its pit's neighbours leaves
+/// it at the saddle the outlet was found beyond, and the pit's edge is drawn and carved from
+/// there. From the pit, the edge (tens of kilometres at the origin, where a lake's flood took
+/// in the long lake beside it) cut a trench across the hills beside the water, its floor falling
+/// from the lake's level to the outlet's, and its river line floated up to 72 m above the
+/// ground beyond the trench.
+#[test]
+fn a_spilling_lake_leaves_over_its_saddle() {
+    use strata::terrain::earth::rivers::Network;
+    let six = plan(6);
+    let earth = six.earth.as_ref().expect("earth-1");
+    let rp = earth.rivers.as_ref().expect("rivers");
+    // The spilling lakes' edges within 40 nodes of the origin: the distance from the edge's
+    // first point to the outlet, in node spacings.
+    let starts = |plan: &strata::terrain::earth::rivers::RiverPlan| {
+        let mut net = Network::new(earth, plan);
+        let mut out = Vec::new();
+        for k in -40..40 {
+            for i in -40..40 {
+                let n = net.node(i, k);
+                let Some(o) = n.down else { continue };
+                let long = (o.0 - i).abs() > 1 || (o.1 - k).abs() > 1;
+                if !long || n.lake.is_none() || n.q < plan.wet_q {
+                    continue;
+                }
+                // A lake's pit spills to its flood's outlet; a shallow pit (under 20 m,
+                // `BREACH_DEPTH_M`) drains to it as a river, its breach carved from the pit.
+                let lake = net.flood(i, k);
+                let breached = lake.0 - n.h < 20.0 && net.height(o.0, o.1) < n.h;
+                if lake.2 != Some(o) || breached {
+                    continue;
+                }
+                let e = net.edge(i, k).expect("an edge");
+                let to = net.node(o.0, o.1);
+                let d = (e.points[0][0] - to.x).hypot(e.points[0][1] - to.z) / plan.spacing_m;
+                out.push(((i, k), d));
+            }
+        }
+        out
+    };
+    let mut from_pits = rp.clone();
+    from_pits.saddles = false;
+    from_pits.fingerprint ^= 0x85eb_ca6b;
+    let (saddles, pits) = (starts(rp), starts(&from_pits));
+    println!("spilling lakes' edges, first point to outlet in spacings: {saddles:?}; from the pits: {pits:?}");
+    assert!(!saddles.is_empty(), "spilling lakes near the origin");
+    // A saddle is linked to its outlet: at most a diagonal apart, jitter included.
+    let most = std::f32::consts::SQRT_2 * (1.0 + 2.0 * 0.3);
+    for &(pit, d) in &saddles {
+        assert!(
+            d <= most,
+            "the edge of {pit:?} starts {d} spacings from its outlet"
+        );
+    }
+    assert!(
+        pits.iter().any(|&(_, d)| d > 10.0),
+        "from the pits some edge crosses kilometres: {pits:?}"
+    );
+}

@@ -178,8 +178,11 @@ pub struct RiverParams {
     /// [`super::rivers::HOLLOW_LODS`], where it stood up to 90 m above the bowls of a plain,
     /// which held neither river nor lake), and a river that ends in a lake submerged by a higher
     /// one rests on the higher level (its valley was cut below the water the tiles show, a
-    /// closed dry trench beside the lake): over 33 km of the origin at 64 m the land in closed
-    /// depressions deeper than 2 m falls from 5.3 % to 1.7 %.
+    /// closed dry trench beside the lake); a spilling lake's river leaves from the saddle its
+    /// outlet lies beyond, where the edge from its pit cut a trench kilometres long across the
+    /// land beside the lake; and a river line is listed for a tile only where its curve
+    /// reaches it. Over 33 km of the origin at 64 m the land in closed depressions deeper than
+    /// 2 m falls from 5.3 % to 1.3 %.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"

@@ -240,15 +240,18 @@ impl Network<'_> {
         let (pi, pk) = from.down?;
         let to = self.node(pi, pk);
         let main = self.main_upstream(i, k).map(|u| (self.q(u.0, u.1), u));
-        let p1 = (from.x, from.z);
+        // `lakes: 6` (the fine network): a spilling lake's edge starts at its saddle
+        // (`Network::saddle`), and the curves before and after it read that point instead of
+        // the pit.
+        let p1 = self.edge_start(i, k);
         let p2 = (to.x, to.z);
         let p0 = match main {
-            Some((_, (a, b))) => self.plan.position(a, b),
-            None => (2.0 * p1.0 - p2.0, 2.0 * p1.1 - p2.1),
+            Some((_, (a, b))) if self.saddle(i, k).is_none() => self.edge_start(a, b),
+            _ => (2.0 * p1.0 - p2.0, 2.0 * p1.1 - p2.1),
         };
         let p3 = match to.down {
-            Some((a, b)) => self.plan.position(a, b),
-            None => (2.0 * p2.0 - p1.0, 2.0 * p2.1 - p1.1),
+            Some((a, b)) if self.saddle(pi, pk).is_none() => self.plan.position(a, b),
+            _ => (2.0 * p2.0 - p1.0, 2.0 * p2.1 - p1.1),
         };
         // A valley begins at a node no carved edge enters: its water starts at the node's
         // height, so the valley fades in instead of starting as a step.

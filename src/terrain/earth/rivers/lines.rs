@@ -152,7 +152,11 @@ impl Network<'_> {
         let mut is_next = HashSet::new();
         for (n, e) in edges.iter().enumerate() {
             let to = (e.to.i, e.to.k);
-            if self.main_upstream(to.0, to.1) != Some((e.from.i, e.from.k)) {
+            // A spilling lake's edge starts at its saddle, across the lake from its pit
+            // (`lakes: 6`): the lines into the pit end there, in the lake.
+            if self.main_upstream(to.0, to.1) != Some((e.from.i, e.from.k))
+                || self.saddle(to.0, to.1).is_some()
+            {
                 continue;
             }
             if let Some(&m) = by_from.get(&to) {
@@ -218,7 +222,7 @@ impl Network<'_> {
             line.to = [e.to.i, e.to.k];
             line.ends = if e.to.sea {
                 LineEnd::Sea
-            } else if e.to.down.is_none() {
+            } else if e.to.down.is_none() || self.saddle(e.to.i, e.to.k).is_some() {
                 LineEnd::Lake
             } else if self.main_upstream(e.to.i, e.to.k) != Some((e.from.i, e.from.k)) {
                 LineEnd::River

@@ -452,6 +452,43 @@ impl<'a> Network<'a> {
         })
     }
 
+    /// In the fine network of worlds whose flows end at lake water (`lakes: 6`,
+    /// [`RiverPlan::saddles`]), where the water of a lake that spills over an outlet beyond its
+    /// pit's neighbours leaves it: the lowest node of pit
+    /// `(i, k)`'s flood linked to the outlet (the first by index on ties), the saddle the outlet
+    /// was found beyond. The pit's edge is drawn and carved from there ([`super::carve`]'s
+    /// `edge`): from the pit, kilometres across the lake and the land its curve crossed beside
+    /// it, the spill edge cut a trench down to a level falling from the lake's to the outlet's.
+    /// `None` for every other node.
+    pub(super) fn saddle(&mut self, i: i64, k: i64) -> Option<NodeId> {
+        if !self.plan.saddles {
+            return None;
+        }
+        let o = self.down(i, k)?;
+        if (o.0 - i).abs() <= 1 && (o.1 - k).abs() <= 1 || !self.is_lake_pit(i, k) {
+            return None;
+        }
+        let lake = self.flood(i, k);
+        let mut best: Option<(f32, NodeId)> = None;
+        for (d, (di, dk)) in OFFSETS.iter().enumerate() {
+            let n = (o.0 - di, o.1 - dk);
+            if !self.plan.linked(n.0, n.1, d) || !lake.1.contains(&n) {
+                continue;
+            }
+            let h = self.height(n.0, n.1);
+            if best.is_none_or(|(bh, bn)| h.total_cmp(&bh).then(n.cmp(&bn)).is_lt()) {
+                best = Some((h, n));
+            }
+        }
+        best.map(|(_, n)| n)
+    }
+
+    /// Where node `(i, k)`'s edge starts, metres: its position, or its [`Network::saddle`]'s.
+    pub(super) fn edge_start(&mut self, i: i64, k: i64) -> (f32, f32) {
+        let (a, b) = self.saddle(i, k).unwrap_or((i, k));
+        self.plan.position(a, b)
+    }
+
     /// The downstream neighbour of node `(i, k)`: its lattice neighbour of steepest descent, for
     /// a breached pit its outlet, and in `lakes: 3` worlds for a spilling lake its outlet.
     pub fn down(&mut self, i: i64, k: i64) -> Option<(i64, i64)> {
