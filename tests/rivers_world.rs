@@ -293,29 +293,45 @@ async fn a_world_stored_with_the_fourth_lakes_and_the_first_lines_serves_the_sam
     );
 }
 
+/// Serves fixture `fixture` (world `world`, stored with the default of new worlds of then:
+/// `valleys`, `lakes`, `lines: 2`), checks every pinned tile and river-line body, and that a bare
+/// seed differs in most fixture tiles (`why` says what changed since).
+async fn a_stored_default_keeps_its_bytes(
+    fixture: &str,
+    world: &str,
+    (valleys, lakes): (u32, u32),
+    why: &str,
+) {
+    let (_data, server, scene) = stored_world(fixture, world, 1, 80).await;
+    let rivers = &scene["world"]["earth"]["rivers"];
+    assert_eq!(rivers["valleys"], valleys, "{rivers}");
+    assert_eq!(rivers["lakes"], lakes, "{rivers}");
+    assert_eq!(rivers["lines"], 2, "{rivers}");
+    let lines = common::fixture::check_pinned(&server, fixture, "rivers.blake3", |_, key| {
+        format!("/v1/worlds/{world}/rivers/{key}.json?v=1")
+    })
+    .await;
+    assert_eq!(lines, 9, "every fixture body of river lines was checked");
+    let differ = bare_seed_differs(&server, fixture).await;
+    assert!(
+        differ >= 20,
+        "{why}, which most fixture tiles show: {differ} of 40 differ"
+    );
+}
+
 /// A world stored with the default of new worlds before `valleys: 8` (`valleys: 7`, `lakes: 5`,
 /// `coarse: 1`, `lines: 2`; `tests/fixtures/valleys7-world/`) keeps the bytes of its tiles and of
 /// its river lines, where a bare seed sizes its valleys by their rivers: narrower floodplains
 /// and less bend for the small ones, so its tiles and most of its lines differ.
 #[tokio::test]
 async fn a_world_stored_with_the_seventh_valleys_serves_the_same_bytes() {
-    const WORLD: &str = "89412016ba7f5e484bb83405";
-    const FIXTURE: &str = "valleys7-world";
-    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 80).await;
-    let rivers = &scene["world"]["earth"]["rivers"];
-    assert_eq!(rivers["valleys"], 7, "{rivers}");
-    assert_eq!(rivers["lakes"], 5, "{rivers}");
-    assert_eq!(rivers["lines"], 2, "{rivers}");
-    let lines = common::fixture::check_pinned(&server, FIXTURE, "rivers.blake3", |_, key| {
-        format!("/v1/worlds/{WORLD}/rivers/{key}.json?v=1")
-    })
+    a_stored_default_keeps_its_bytes(
+        "valleys7-world",
+        "89412016ba7f5e484bb83405",
+        (7, 5),
+        "a bare seed sizes its valleys",
+    )
     .await;
-    assert_eq!(lines, 9, "every fixture body of river lines was checked");
-    let differ = bare_seed_differs(&server, FIXTURE).await;
-    assert!(
-        differ >= 20,
-        "a bare seed sizes its valleys, which most fixture tiles show: {differ} of 40 differ"
-    );
 }
 
 /// A world stored with the default of new worlds before `lakes: 6` (`valleys: 8`, `lakes: 5`,
@@ -324,23 +340,13 @@ async fn a_world_stored_with_the_seventh_valleys_serves_the_same_bytes() {
 /// LOD of one node spacing's), so its rivers and lakes move and most fixture tiles differ.
 #[tokio::test]
 async fn a_world_stored_with_the_fifth_lakes_serves_the_same_bytes() {
-    const WORLD: &str = "f059eb7d1298d0313139ab23";
-    const FIXTURE: &str = "lakes5-world";
-    let (_data, server, scene) = stored_world(FIXTURE, WORLD, 1, 80).await;
-    let rivers = &scene["world"]["earth"]["rivers"];
-    assert_eq!(rivers["valleys"], 8, "{rivers}");
-    assert_eq!(rivers["lakes"], 5, "{rivers}");
-    assert_eq!(rivers["lines"], 2, "{rivers}");
-    let lines = common::fixture::check_pinned(&server, FIXTURE, "rivers.blake3", |_, key| {
-        format!("/v1/worlds/{WORLD}/rivers/{key}.json?v=1")
-    })
+    a_stored_default_keeps_its_bytes(
+        "lakes5-world",
+        "f059eb7d1298d0313139ab23",
+        (8, 5),
+        "a bare seed's network sees the hollows",
+    )
     .await;
-    assert_eq!(lines, 9, "every fixture body of river lines was checked");
-    let differ = bare_seed_differs(&server, FIXTURE).await;
-    assert!(
-        differ >= 20,
-        "a bare seed's network sees the hollows, which most fixture tiles show: {differ} of 40 differ"
-    );
 }
 
 #[test]

@@ -452,14 +452,13 @@ impl<'a> Network<'a> {
         })
     }
 
-    /// In the fine network of worlds whose flows end at lake water (`lakes: 6`,
-    /// [`RiverPlan::saddles`]), where the water of a lake that spills over an outlet beyond its
-    /// pit's neighbours leaves it: the lowest node of pit
-    /// `(i, k)`'s flood linked to the outlet (the first by index on ties), the saddle the outlet
-    /// was found beyond. The pit's edge is drawn and carved from there ([`super::carve`]'s
-    /// `edge`): from the pit, kilometres across the lake and the land its curve crossed beside
-    /// it, the spill edge cut a trench down to a level falling from the lake's to the outlet's.
-    /// `None` for every other node.
+    /// In the fine network of `lakes: 6` worlds ([`RiverPlan::saddles`]), where the water of a
+    /// lake that spills over an outlet beyond its pit's neighbours leaves it: the lowest node of
+    /// pit `(i, k)`'s flood linked to the outlet (the first by index on ties), the saddle the
+    /// outlet was found beyond. The pit's edge is drawn and carved from there (`Network::edge`):
+    /// from the pit, kilometres across the lake and the land its curve crossed beside it, the
+    /// spill edge cut a trench down to a level falling from the lake's to the outlet's. `None`
+    /// for every other node.
     pub(super) fn saddle(&mut self, i: i64, k: i64) -> Option<NodeId> {
         if !self.plan.saddles {
             return None;
