@@ -176,8 +176,9 @@ pub struct RiverParams {
     /// uncarved heights. `6` (new worlds): the lakes of `5` in the hollows the network now sees
     /// (a node's height is at most the height of the LOD of one node spacing,
     /// [`super::rivers::HOLLOW_LODS`], where it stood up to 90 m above the bowls of a plain,
-    /// which held neither river nor lake), and a river that ends in a lake submerged by a higher
-    /// one rests on the higher level (its valley was cut below the water the tiles show, a
+    /// which held neither river nor lake), and a flow ends at the first lake water it reaches
+    /// and rests on that lake's level (a river that crossed a lake without meeting its pit, or
+    /// ended in a pit submerged by a higher lake, was cut below the water the tiles show, a
     /// closed dry trench beside the lake); a spilling lake's river leaves from the saddle its
     /// outlet lies beyond, where the edge from its pit cut a trench kilometres long across the
     /// land beside the lake; and a river line is listed for a tile only where its curve

@@ -9,10 +9,11 @@
 //!    `|j| ≤` [`JITTER`] (no lattice alignment), `s` = `spacing_m`. Its height `H` is the world's
 //!    height function at the LOD whose spacing is [`NODE_LOD_FACTOR`] `· s` (relief finer than
 //!    that is left to the carve), with the world's mean erosion; with `lakes: 6` (the default
-//!    of new worlds) at most the height function at the LOD [`HOLLOW_LODS`] finer (spacing `s`),
-//!    so the network sees the hollows of a plain that the coarser LOD smooths over (there its
-//!    heights stood up to 90 m above the ground, and a bowl kilometres wide held neither river
-//!    nor lake) while the coarser LOD's valleys keep their depth.
+//!    of new worlds) at most the height function at the LOD [`HOLLOW_LODS`] finer (spacing `s`;
+//!    the coarse network's node LOD is clamped to the coarsest, so its finer one has a quarter
+//!    of its spacing), so the network sees the hollows of a plain that the coarser LOD smooths
+//!    over (there its heights stood up to 90 m above the ground, and a bowl kilometres wide held
+//!    neither river nor lake) while the coarser LOD's valleys keep their depth.
 //! 2. **Flow.** Neighbours are the four axis nodes and, per lattice cell, one hashed diagonal, so
 //!    the graph is planar and no two rivers cross. A land node drains to the neighbour of steepest
 //!    descent; a node below sea level is the sea; a land node with no lower neighbour is a pit,
@@ -24,7 +25,8 @@
 //!    flow reaches first (its pit's level; with `lakes: 6` the flow ends at the first node a
 //!    lake covers, pit or not, and `B` is the highest level of the lakes covering it: a flow
 //!    may cross a lake's water without meeting its pit, and a pit's lake may lie submerged in a
-//!    higher lake whose flood took in its basin, step 5), or sea level: `H` falls strictly along the flow (out of a lake that
+//!    higher lake whose flood took in its basin, step 5), or sea level: `H` falls strictly
+//!    along the flow (out of a lake that
 //!    spills, step 5, it climbs to the outlet, below the lake's level, which is the pit's `W`),
 //!    the incision grows with `Q` and `B` never rises, so `W` never rises downstream.
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
