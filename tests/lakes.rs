@@ -452,7 +452,7 @@ fn the_network_sees_the_plains_hollows_and_rivers_rest_on_the_lakes_they_reach()
 /// ground beyond the trench.
 #[test]
 fn a_spilling_lake_leaves_over_its_saddle() {
-    use strata::terrain::earth::rivers::Network;
+    use strata::terrain::earth::rivers::{Network, BREACH_DEPTH_M, JITTER};
     let six = plan(6);
     let earth = six.earth.as_ref().expect("earth-1");
     let rp = earth.rivers.as_ref().expect("rivers");
@@ -472,7 +472,7 @@ fn a_spilling_lake_leaves_over_its_saddle() {
                 // A lake's pit spills to its flood's outlet; a shallow pit (under 20 m,
                 // `BREACH_DEPTH_M`) drains to it as a river, its breach carved from the pit.
                 let lake = net.flood(i, k);
-                let breached = lake.0 - n.h < 20.0 && net.height(o.0, o.1) < n.h;
+                let breached = lake.0 - n.h < BREACH_DEPTH_M && net.height(o.0, o.1) < n.h;
                 if lake.2 != Some(o) || breached {
                     continue;
                 }
@@ -491,7 +491,7 @@ fn a_spilling_lake_leaves_over_its_saddle() {
     println!("spilling lakes' edges, first point to outlet in spacings: {saddles:?}; from the pits: {pits:?}");
     assert!(!saddles.is_empty(), "spilling lakes near the origin");
     // A saddle is linked to its outlet: at most a diagonal apart, jitter included.
-    let most = std::f32::consts::SQRT_2 * (1.0 + 2.0 * 0.3);
+    let most = std::f32::consts::SQRT_2 * (1.0 + 2.0 * JITTER);
     for &(pit, d) in &saddles {
         assert!(
             d <= most,

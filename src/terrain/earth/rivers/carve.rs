@@ -243,10 +243,11 @@ impl Network<'_> {
         // `lakes: 6` (the fine network): a spilling lake's edge starts at its saddle
         // (`Network::saddle`), and the curves before and after it read that point instead of
         // the pit.
-        let p1 = self.edge_start(i, k);
+        let saddle = self.saddle(i, k);
+        let p1 = saddle.map_or((from.x, from.z), |(a, b)| self.plan.position(a, b));
         let p2 = (to.x, to.z);
         let p0 = match main {
-            Some((_, (a, b))) if self.saddle(i, k).is_none() => self.edge_start(a, b),
+            Some((_, (a, b))) if saddle.is_none() => self.edge_start(a, b),
             _ => (2.0 * p1.0 - p2.0, 2.0 * p1.1 - p2.1),
         };
         let p3 = match to.down {
