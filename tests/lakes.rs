@@ -364,7 +364,7 @@ fn basins_closed_by_a_ranges_ridges_fill_to_their_outlets() {
     );
 }
 
-/// `lakes: 6` (the default of new worlds): the network sees the hollows of a plain, and a flow
+/// `lakes: 6` (new worlds until `7`): the network sees the hollows of a plain, and a flow
 /// ends where it first reaches a lake's water. With `lakes: 5` the node heights were the LOD
 /// of four node spacings', which stood up to 90 m above the bowls of the origin's plain (node
 /// `(−11, 8)`: 177 m over ground at 94 m), so a bowl kilometres wide held neither river nor
@@ -502,4 +502,96 @@ fn a_spilling_lake_leaves_over_its_saddle() {
         pits.iter().any(|&(_, d)| d > 10.0),
         "from the pits some edge crosses kilometres: {pits:?}"
     );
+}
+
+/// `lakes: 7` (the default of new worlds): the coarse network's floods search 30 of its own
+/// spacings, so the basins of the far area (around (620 km, 310 km)), a hundred kilometres
+/// across, fill to their outlets in its 512 m square, where with `lakes: 6` the floods stopped
+/// at 8 spacings, 20 to 40 km short of the outlets, and left over 10 % of the land closed; and
+/// a flood its limits stop keeps only the lake it had filled before its level last rose, so
+/// no node beside such a lake lies below its level. With `lakes: 6` the flood kept the nodes it
+/// had reached beyond the rim that raised its level, beside unvisited neighbours as low: their
+/// ground was flattened to a closed dry floor below the level, 30 km wide at 512 m with the
+/// wider coarse floods (84 such neighbours beside the west basin's fine lakes).
+#[test]
+fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
+    use strata::bench::realism::{metrics, sample};
+    let closed = |p: &WorldPlan| {
+        let (x0, z0) = (
+            sample::first_tile(p, 9, 620e3, 8),
+            sample::first_tile(p, 9, 310e3, 8),
+        );
+        let s = sample::sample(p, 9, x0, z0, 8, 8);
+        metrics::depressions(&s.surface(), 0.0, 2.0).fraction
+    };
+    let (six, seven) = (plan(6), plan(7));
+    let (c6, c7) = (closed(&six), closed(&seven));
+    println!(
+        "far at 512 m, closed depressions > 2 m: lakes 6 {:.2} %, lakes 7 {:.2} %",
+        100.0 * c6,
+        100.0 * c7
+    );
+    assert!(c6 > 0.08, "lakes 6: {c6}");
+    assert!(c7 < 0.05, "lakes 7: {c7}");
+
+    // The coarse nodes of that square, and the fine nodes within 40 km of the west basin at
+    // (−40 km, 0), whose flood stops 30 spacings from its pit.
+    for (what, coarse, centre, r) in [
+        ("coarse, far", true, (151, 75), 32),
+        ("fine, west basin", false, (-40, 0), 40),
+    ] {
+        let (s6, b6) = beside_below(&six, coarse, centre, r);
+        let (s7, b7) = beside_below(&seven, coarse, centre, r);
+        println!(
+            "{what}: floods without outlet (nodes beside them below their level): \
+             lakes 6 {s6} ({b6}), lakes 7 {s7} ({b7})"
+        );
+        assert!(s7 > 0, "{what}: some floods stop by their limits");
+        assert_eq!(b7, 0, "{what}: a stopped flood keeps a full lake");
+        if !coarse {
+            assert!(
+                b6 > 0,
+                "{what}: lakes 6 keeps what its stopped floods reached"
+            );
+        }
+    }
+}
+
+/// The lakes of `plan`'s fine or coarse network whose floods found no outlet, among the pits
+/// within `r` nodes of node `c`, and the nodes beside them (the four axis neighbours, always
+/// linked) lower than their level.
+fn beside_below(plan: &WorldPlan, coarse: bool, c: (i64, i64), r: i64) -> (usize, usize) {
+    use strata::terrain::earth::rivers::Network;
+    let earth = plan.earth.as_ref().expect("earth-1");
+    let rp = if coarse {
+        earth.coarse_rivers.as_ref()
+    } else {
+        earth.rivers.as_ref()
+    };
+    let rp = rp.expect("the network");
+    let mut net = Network::new(earth, rp);
+    let (mut stopped, mut below) = (0, 0);
+    for k in c.1 - r..c.1 + r {
+        for i in c.0 - r..c.0 + r {
+            let n = net.node(i, k);
+            if n.down.is_some() || n.h < rp.sea_level_m {
+                continue;
+            }
+            let lake = net.flood(i, k);
+            if lake.2.is_some() {
+                continue;
+            }
+            stopped += 1;
+            let inside: std::collections::HashSet<_> = lake.1.iter().copied().collect();
+            for &(a, b) in &lake.1 {
+                for (da, db) in [(1, 0), (0, 1), (-1, 0), (0, -1)] {
+                    let m = (a + da, b + db);
+                    if !inside.contains(&m) && net.height(m.0, m.1) < lake.0 {
+                        below += 1;
+                    }
+                }
+            }
+        }
+    }
+    (stopped, below)
 }

@@ -157,7 +157,7 @@ pub struct RiverParams {
         skip_serializing_if = "RiverParams::is_first_valleys"
     )]
     pub valleys: u32,
-    /// The lakes, 1 to 6 ([`super::rivers`], step 5). `1`: a sample is lake water where one of the
+    /// The lakes, 1 to 7 ([`super::rivers`], step 5). `1`: a sample is lake water where one of the
     /// four nodes around it holds a lake above its height, so a lake's water can end along straight
     /// lines of the node lattice; worlds stored before `2` existed have no `lakes` and keep it, and
     /// their bytes. `2`: the ground is shaped to meet the lake's level along a curved shore
@@ -173,7 +173,7 @@ pub struct RiverParams {
     /// instead of holding a lake in their bottoms below a closed dry floor hundreds of metres deep
     /// (over 131 km of the range east of the origin at 64 m, the land in closed depressions deeper
     /// than 2 m falls from 12.7 % to 4.7 %); tiles too coarse to carve show the lakes over their
-    /// uncarved heights. `6` (new worlds): the lakes of `5` in the hollows the network now sees
+    /// uncarved heights. `6` (new worlds until `7`): the lakes of `5` in the hollows the network now sees
     /// (a node's height is at most the height of the LOD of one node spacing,
     /// [`super::rivers::HOLLOW_LODS`], where it stood up to 90 m above the bowls of a plain,
     /// which held neither river nor lake), and a flow ends at the first lake water it reaches
@@ -183,7 +183,14 @@ pub struct RiverParams {
     /// outlet lies beyond, where the edge from its pit cut a trench kilometres long across the
     /// land beside the lake; and a river line is listed for a tile only where its curve
     /// reaches it. Over 33 km of the origin at 64 m the land in closed depressions deeper than
-    /// 2 m falls from 5.3 % to 1.3 %.
+    /// 2 m falls from 5.3 % to 1.3 %. `7` (new worlds): the lakes of `6`, and a flood stopped by
+    /// its limits keeps the lake it had filled before its level last rose, full to the rim that
+    /// raised it (it kept the nodes it had reached beyond that rim, below the level beside dry
+    /// neighbours as low: a flat closed floor tens of kilometres wide at 512 m); the coarse network's floods search 30 of its own spacings
+    /// over at most [`super::rivers::COARSE_LAKE_MAX_NODES_7`] nodes, and its spilling lakes
+    /// leave from their saddles (its pits' edges, as long as the wider floods, cut arcs of
+    /// trench 40 km and more across the land). At 512 m the land in closed depressions deeper
+    /// than 2 m falls from 10.7 to 3.3 % in the far area, 6.2 to 4.2 % in the range's.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"
@@ -220,7 +227,7 @@ impl Default for RiverParams {
             density: 1.0,
             incision_m: 60.0,
             valleys: 8,
-            lakes: 6,
+            lakes: 7,
             coarse: 1,
             lines: 2,
         }
@@ -280,7 +287,7 @@ impl RiverParams {
             "must be 1, 2, 3, 4, 5, 6, 7 or 8",
         )?;
         check(
-            (1..=6).contains(&self.lakes),
+            (1..=7).contains(&self.lakes),
             "rivers.lakes",
             "must be 1, 2, 3, 4, 5 or 6",
         )?;

@@ -32,7 +32,12 @@
 //! 5. **Lakes.** From each pit a priority flood raises the level node by node until it reaches a
 //!    node lower than the level (the outlet: the lake is full) or [`LAKE_MAX_NODES`] nodes /
 //!    [`LAKE_RADIUS`] spacings (a lake in a basin too large to search is filled to that level;
-//!    [`LAKE_MAX_NODES_5`] and [`LAKE_RADIUS_5`] in worlds with `lakes: 5`, where the basins
+//!    with `lakes: 7` it keeps the nodes it flooded before its level last rose, full to the
+//!    height of the rim node that raised it, and drops those it reached beyond that rim, which
+//!    lie below the level beside unvisited neighbours as low;
+//!    in the coarse network of `lakes: 7` a flood that found its outlet goes on over the nodes
+//!    below its level that drain into the lake, so none lies beside it below its level;
+//!    [`LAKE_MAX_NODES_5`] and [`LAKE_RADIUS_5`] from `lakes: 5`, where the basins
 //!    that a mountain belt's ridges close fill to their outlets and spill instead of holding a
 //!    lake in their bottoms below a dry closed floor). Each pit's flood is computed once per
 //!    world and kept in a bounded process cache.
@@ -135,7 +140,12 @@
 //! ([`RiverPlan::q_scale`]) wherever a discharge sets a size, and its floodplains are at least
 //! [`COARSE_FLOOR_M`] wide each side, so a 512 m sample grid finds the valley floors without
 //! pits; its floods search as far and over as much land as the fine network's (a radius and
-//! a node count scaled by the spacings), so its lakes fill the basins the fine network's fill.
+//! a node count scaled by the spacings), so its lakes fill the basins the fine network's fill;
+//! with `lakes: 7` they search 30 of its own spacings (123 km) over at most
+//! [`COARSE_LAKE_MAX_NODES_7`] nodes, so the basins a hundred kilometres across that stopped
+//! both networks' floods fill to their outlets in the tiles seen from afar (the fine network's
+//! lakes there stay as they were: a tile of LOD 8 can show such a basin's lake lower than
+//! LOD 9 does), and its spilling lakes leave from their saddles too.
 //! In `lakes: 5` worlds tiles coarser still show its lakes. Without it the 512 m surface was
 //! the uncarved relief: no valleys, and 15 to 24 % of its land in closed basins (`bench
 //! realism`). The two networks are computed apart, so their rivers and lakes agree only where
@@ -209,6 +219,12 @@ pub const LAKE_MAX_NODES_5: usize = 2048;
 /// can reach a block lie in the eight blocks around it (a larger radius reads a ring of blocks
 /// more for every block: a quarter more time for cold coarse tiles).
 pub const LAKE_RADIUS_5: i64 = 30;
+/// Most nodes a flood of the coarse network visits in worlds with `lakes: 7`, whose coarse
+/// floods search [`LAKE_RADIUS_5`] of its own spacings (123 km at the default 4 km): a
+/// basin of a hundred kilometres fills to its outlet, where the fine network's radius in
+/// coarse spacings (8) stopped the floods of the far area's largest basins 20 to 40 km short of
+/// it (512 nodes of 16.8 km²; 2 048 closed 0.05 % of that area's land more).
+pub const COARSE_LAKE_MAX_NODES_7: usize = 512;
 /// A pit whose lake would be shallower than this, metres, drains over its saddle instead.
 pub const BREACH_DEPTH_M: f32 = 20.0;
 /// Rivers are incised in full within half this many steps of where their flow ends (the sea or
@@ -421,11 +437,14 @@ pub struct RiverPlan {
     /// long edge's line was listed for tiles kilometres from its curve.
     pub exact_lines: bool,
     /// Whether a spilling lake's edge starts at its saddle instead of its pit
-    /// (`Network::saddle`): the fine network of `lakes: 6` worlds. The coarse network keeps
-    /// the edge from the pit: its node heights are 4 km apart, its lakes' levels often lie below
-    /// the ground between its nodes, and the edge from the pit is the valley that opens such a
-    /// basin (with saddles the origin's 512 m square read 5.1 % of its land in closed
-    /// depressions, against 4.5 %).
+    /// (`Network::saddle`): the fine network of `lakes: 6` worlds, both networks of `lakes: 7`.
+    /// The coarse network of `lakes: 6` keeps the edge from the pit: its floods stop within 8
+    /// of its spacings, its lakes' levels often lie below the ground between its nodes, and the
+    /// edge from the pit is the valley that opens such a basin (with saddles the origin's 512 m
+    /// square read 5.1 % of its land in closed depressions, against 4.5 %). With the wider
+    /// floods of `lakes: 7` those basins fill to their outlets, and the edges from their pits,
+    /// as long as the floods, cut arcs of trench 40 km and more across the land (origin 2.9 %
+    /// with saddles).
     pub saddles: bool,
     /// Discharge (nodes) from which a channel holds water.
     pub wet_q: u32,
@@ -470,12 +489,30 @@ pub struct RiverPlan {
     /// `RiverParams::lakes`: 1 for the first lakes, 2 for lakes with shaped shores
     /// ([`shores`]).
     pub lakes: u32,
-    /// Most nodes a lake's flood visits: [`LAKE_MAX_NODES`], or [`LAKE_MAX_NODES_5`] with
-    /// `lakes: 5`.
+    /// Most nodes a lake's flood visits: [`LAKE_MAX_NODES`], or [`LAKE_MAX_NODES_5`] from
+    /// `lakes: 5` (divided by [`RiverPlan::q_scale`] in the coarse network, whose floods cover
+    /// the fine network's land; [`COARSE_LAKE_MAX_NODES_7`] there with `lakes: 7`).
     pub lake_max_nodes: usize,
     /// Chebyshev radius of a lake's flood, node spacings: [`LAKE_RADIUS`], or
-    /// [`LAKE_RADIUS_5`] with `lakes: 5`.
+    /// [`LAKE_RADIUS_5`] from `lakes: 5` (in the coarse network scaled to the same metres,
+    /// rounded up, but [`LAKE_RADIUS_5`] of its own spacings with `lakes: 7`).
     pub lake_radius: i64,
+    /// Whether a flood stopped by its limits keeps only the nodes it flooded before its level
+    /// last rose, full to the height of the rim node that raised it (`lakes: 7`; module docs,
+    /// step 5): before, it kept every node
+    /// it had flooded, also those it had reached beyond the rim that set the level, lower than
+    /// the level and dry beside their unvisited neighbours as low, so the shores flattened a
+    /// closed dry floor below the level there.
+    pub full_floods: bool,
+    /// Whether a flood that found its outlet goes on over the nodes below its level that drain
+    /// into the lake, popped after the outlet (module docs, step 5): the coarse network of
+    /// `lakes: 7`. Its wider floods took in, by the rule for flat pits, a node of a lower lake's
+    /// basin beside the outlet and stopped at the outlet before its neighbour, lower than their
+    /// level and draining into the lake through it: the lower lake covered that neighbour, and
+    /// the water level rose 3.3 m along the flow from it (`tests/rivers.rs`). In the fine
+    /// network the same rule grew the origin's long lake over its 8 m square and the
+    /// temperate–taiga border that `bench realism` measures, and is left for a later version.
+    pub whole_lakes: bool,
     /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
     pub shore_seeds: [u32; 4],
     /// Nodes of the fine network a node of this one stands for: 1, or `COARSE_FACTOR²` for the
@@ -531,6 +568,8 @@ impl RiverPlan {
         let fingerprint = super::fingerprint(domain, seed, world);
         let lod = libm::log2((spacing_m * NODE_LOD_FACTOR / cell_m) as f64).floor();
         let node_lod = lod.clamp(0.0, super::super::plan::MAX_LOD as f64) as usize;
+        // A radius of the fine network's, in this network's spacings.
+        let scaled = |r: i64| (r as f32 * (params.spacing_m / spacing_m)).ceil() as i64;
         Self {
             spacing_m,
             q_scale,
@@ -542,7 +581,9 @@ impl RiverPlan {
             hollow_lod: (params.lakes >= 6).then(|| node_lod.saturating_sub(HOLLOW_LODS)),
             lake_ends: params.lakes >= 6,
             exact_lines: params.lakes >= 6,
-            saddles: params.lakes >= 6 && !coarse,
+            saddles: params.lakes >= 7 || (params.lakes == 6 && !coarse),
+            full_floods: params.lakes >= 7,
+            whole_lakes: params.lakes >= 7 && coarse,
             wet_q: if coarse {
                 ((8.0 / params.density) / q_scale as f32).ceil().max(1.0) as u32
             } else {
@@ -567,19 +608,18 @@ impl RiverPlan {
             valley_seeds: [406, 407].map(|k| stream(seed, purpose::EARTH, k)),
             lakes: params.lakes,
             // The coarse network searches as far and over as much land as the fine one, so
-            // its lakes fill the basins the fine network's fill.
-            lake_max_nodes: if params.lakes >= 5 {
-                LAKE_MAX_NODES_5
-            } else {
-                LAKE_MAX_NODES
-            } / q_scale as usize,
-            lake_radius: (if params.lakes >= 5 {
-                LAKE_RADIUS_5
-            } else {
-                LAKE_RADIUS
-            } as f32
-                * (params.spacing_m / spacing_m))
-                .ceil() as i64,
+            // its lakes fill the basins the fine network's fill; with `lakes: 7` as far in its
+            // own spacings, over a quarter of the fine network's nodes.
+            lake_max_nodes: match (params.lakes, coarse) {
+                (1..=4, _) => LAKE_MAX_NODES / q_scale as usize,
+                (5 | 6, _) | (_, false) => LAKE_MAX_NODES_5 / q_scale as usize,
+                (_, true) => COARSE_LAKE_MAX_NODES_7,
+            },
+            lake_radius: match (params.lakes, coarse) {
+                (1..=4, _) => scaled(LAKE_RADIUS),
+                (5 | 6, _) | (_, false) => scaled(LAKE_RADIUS_5),
+                (_, true) => LAKE_RADIUS_5,
+            },
             shore_seeds: [402, 403, 404, 405].map(|k| stream(seed, purpose::EARTH, k)),
             valleys: params.valleys,
             meander: if params.valleys >= 2 {

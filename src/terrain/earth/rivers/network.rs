@@ -841,6 +841,8 @@ impl<'a> Network<'a> {
         };
         push(self, &mut heap, &mut seen, i, k);
         let mut outlet = None;
+        // `lakes: 7`: the flooded nodes before the level last rose, and that level.
+        let mut rise = (1, level);
         // `lakes: 3`: the nodes flooded so far, to tell an outlet from a node below the level
         // whose flow runs back into the lake.
         let spills = self.plan.lakes >= 3;
@@ -850,16 +852,31 @@ impl<'a> Network<'a> {
         }
         while let Some(Entry(h, ni, nk)) = heap.pop() {
             if h < level && !(spills && self.drains_into(ni, nk, &lake, floor)) {
-                outlet = Some((ni, nk));
+                // The coarse network of `lakes: 7`: the nodes below the level that drain into
+                // the lake are flooded too, also those popped after the outlet.
+                outlet = outlet.or(Some((ni, nk)));
+                if self.plan.whole_lakes {
+                    continue;
+                }
+                break;
+            }
+            if outlet.is_some() && h >= level {
                 break;
             }
             if flooded.len() >= self.plan.lake_max_nodes
                 || (ni - i).abs().max((nk - k).abs()) > self.plan.lake_radius
             {
+                if self.plan.full_floods && outlet.is_none() {
+                    level = rise.1;
+                    flooded.truncate(rise.0);
+                }
                 break;
             }
             if flooded.len() >= max_nodes {
                 return ((level, flooded, outlet), false);
+            }
+            if h > level {
+                rise = (flooded.len(), h);
             }
             level = level.max(h);
             flooded.push((ni, nk));
