@@ -54,10 +54,11 @@ struct CarveParams {
     shore_seed3: u32,
     shore_warp_m: f32,
     shore_warp_inv_m: f32,
-    // Whether the carve keeps sills beside the lakes (`RiverJob::sills`, 0 or 1).
+    // Whether the carve keeps sills beside the lakes (`RiverJob::sills`, 0 or 1), and the
+    // scales of the shoreline's two noise octaves (`RiverJob::shore_n`).
     sills: u32,
-    _pad1: u32,
-    _pad2: u32,
+    shore_n1: f32,
+    shore_n2: f32,
 }
 
 // `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
@@ -278,7 +279,7 @@ fn shore(x: f32, z: f32, h: f32) -> vec3<f32> {
         -SHORE_NOISE_CLAMP,
         SHORE_NOISE_CLAMP,
     );
-    let t = weight + (rn(SHORE_N1 * n1) + rn(SHORE_N2 * n2));
+    let t = weight + (rn(params.shore_n1 * n1) + rn(params.shore_n2 * n2));
     let e = 0.5 - t;
     var sill_s = 0.0;
     if (params.sills != 0u) {

@@ -595,3 +595,49 @@ fn beside_below(plan: &WorldPlan, coarse: bool, c: (i64, i64), r: i64) -> (usize
     }
     (stopped, below)
 }
+
+/// `lakes: 7`: the shoreline's noise fades with the vertex spacing (`RiverPlan::shore_noise`),
+/// as the relief layers do, so no octave shorter than two spacings moves the shore. With
+/// `lakes: 6` the 384 m octave, read at 512 m spacing, is a random value per vertex, and the band
+/// of lake weight it moves across the shore (a third of a 4 km node spacing each side) held
+/// isolated lake vertices on the land around the coarse network's lakes (96 in the range's 4 × 4
+/// LOD-9 tiles, 3 with the fade); tiles up to 32 m keep the noise in full, bit for bit.
+#[test]
+fn coarse_tiles_have_no_isolated_lake_vertices() {
+    // Lake vertices whose four neighbours in their tile are all dry, over 4 × 4 LOD-9 tiles of
+    // the range east of the origin, and how many lake vertices there are.
+    let isolated = |p: &WorldPlan| {
+        let (mut alone, mut lake) = (0, 0);
+        for z in 2..6 {
+            for x in 2..6 {
+                let t = synthesize(p, TileKey { lod: 9, x, z });
+                let wet = |i: usize, j: usize| t.water_kind[j * 65 + i] == kind::LAKE;
+                for j in 1..64 {
+                    for i in 1..64 {
+                        if !wet(i, j) {
+                            continue;
+                        }
+                        lake += 1;
+                        if !(wet(i - 1, j) || wet(i + 1, j) || wet(i, j - 1) || wet(i, j + 1)) {
+                            alone += 1;
+                        }
+                    }
+                }
+            }
+        }
+        (alone, lake)
+    };
+    let (a6, l6) = isolated(&plan(6));
+    let (a7, l7) = isolated(&plan(7));
+    println!("LOD 9, range: isolated lake vertices lakes 6 {a6} of {l6}, lakes 7 {a7} of {l7}");
+    assert!(a6 > 20, "lakes 6: {a6}");
+    assert!(l7 > 5_000, "the range's tiles hold lakes: {l7}");
+    assert!(a7 * 20 < a6, "lakes 7: {a7} isolated against {a6}");
+    // Tiles up to 32 m keep both octaves' constants (so their bits), 512 m tiles neither.
+    let seven = plan(7);
+    let earth = seven.earth.as_ref().expect("earth-1");
+    let rp = earth.rivers.as_ref().expect("rivers");
+    use strata::terrain::earth::rivers::{SHORE_N1, SHORE_N2};
+    assert_eq!(rp.shore_noise(32.0), [SHORE_N1, SHORE_N2]);
+    assert_eq!(rp.shore_noise(512.0), [0.0, 0.0]);
+}

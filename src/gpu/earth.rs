@@ -103,8 +103,6 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("SHORE_NOISE_INV_M", rivers::SHORE_NOISE_INV_M),
         ("SHORE_NOISE2_INV_M", rivers::SHORE_NOISE2_INV_M),
         ("SHORE_NOISE_CLAMP", rivers::SHORE_NOISE_CLAMP),
-        ("SHORE_N1", rivers::SHORE_N1),
-        ("SHORE_N2", rivers::SHORE_N2),
         ("SHORE_GENTLE_M", rivers::SHORE_GENTLE_M),
         ("SHORE_STEEP_M", rivers::SHORE_STEEP_M),
         ("SHORE_FULL", rivers::SHORE_FULL),
@@ -324,8 +322,8 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         shore_warp_m: rj.shore_warp_m,
         shore_warp_inv_m: rj.shore_warp_inv_m,
         sills: u32::from(rj.sills),
-        _pad1: 0,
-        _pad2: 0,
+        shore_n1: rj.shore_n[0],
+        shore_n2: rj.shore_n[1],
     })
 }
 

@@ -379,8 +379,8 @@ pub struct GpuCarveParams {
     pub shore_warp_inv_m: f32,
     /// `RiverJob::sills` (0 or 1).
     pub sills: u32,
-    /// Padding to a multiple of 16 bytes.
-    pub _pad1: u32,
-    /// Padding.
-    pub _pad2: u32,
+    /// `RiverJob::shore_n[0]`: scale of the shoreline's first noise octave.
+    pub shore_n1: f32,
+    /// `RiverJob::shore_n[1]`: scale of its second octave.
+    pub shore_n2: f32,
 }

@@ -137,6 +137,10 @@ pub struct RiverJob {
     pub shore_warp_m: f32,
     /// `1 / (SHORE_WARP_WAVE` node spacings`)`, 1/m: the warp's noise is read at `(x, z)·this`.
     pub shore_warp_inv_m: f32,
+    /// Scales of the shoreline's two noise octaves' clamped values: [`super::SHORE_N1`] and
+    /// [`super::SHORE_N2`], faded by the tile's vertex spacing in `lakes: 7` worlds
+    /// ([`RiverPlan::shore_noise`]).
+    pub shore_n: [f32; 2],
 }
 
 /// The projection of `(x, z)` on piece `p`'s chord, clamped to `[0, 1]`, and the chord `b − a`.
@@ -540,6 +544,7 @@ impl Network<'_> {
             shore_seeds: self.plan.shore_seeds,
             shore_warp_m: super::SHORE_WARP * s,
             shore_warp_inv_m: 1.0 / (super::SHORE_WARP_WAVE * s),
+            shore_n: [super::SHORE_N1, super::SHORE_N2],
             ..RiverJob::default()
         }
     }
@@ -982,6 +987,7 @@ pub fn job_for(
     let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
     let mut job = Network::new(earth, plan).job(x0, z0, x1, z1, bin_m);
     widen_floors(plan, spacing_m, &mut job);
+    job.shore_n = plan.shore_noise(spacing_m);
     job
 }
 
@@ -1015,6 +1021,7 @@ pub fn water_job_for(
     let bin_m = field_bin_m(plan, (x0, z0, x1, z1));
     let mut job = Network::new(earth, plan).water_job(x0, z0, x1, z1, bin_m);
     widen_floors(plan, spacing_m, &mut job);
+    job.shore_n = plan.shore_noise(spacing_m);
     job
 }
 
@@ -1030,7 +1037,9 @@ pub fn lake_job_for(
     h: usize,
 ) -> RiverJob {
     let (x0, z0, x1, z1) = field_rect(spacing_m, gx0, gz0, w, h);
-    Network::new(earth, plan).lake_job(x0, z0, x1, z1)
+    let mut job = Network::new(earth, plan).lake_job(x0, z0, x1, z1);
+    job.shore_n = plan.shore_noise(spacing_m);
+    job
 }
 
 /// Water of one sample: its surface (metres) and kind (`kind::*`), given its carved height

@@ -169,8 +169,8 @@ pub use lines::{LineEnd, RiverLine};
 pub use network::{clear_caches, Lake, Network, Node, NodeId};
 pub use shores::{
     LakeField, Sill, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
-    SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_STEEP_M, SHORE_WARP,
-    SHORE_WARP_WAVE, SILL_E, SILL_FULL,
+    SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_NOISE_M, SHORE_STEEP_M,
+    SHORE_WARP, SHORE_WARP_WAVE, SILL_E, SILL_FULL,
 };
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
@@ -513,6 +513,9 @@ pub struct RiverPlan {
     /// network the same rule grew the origin's long lake over its 8 m square and the
     /// temperate–taiga border that `bench realism` measures, and is left for a later version.
     pub whole_lakes: bool,
+    /// Whether the shoreline's noise octaves fade with the tile's vertex spacing
+    /// ([`RiverPlan::shore_noise`], `lakes: 7`).
+    pub lod_shores: bool,
     /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
     pub shore_seeds: [u32; 4],
     /// Nodes of the fine network a node of this one stands for: 1, or `COARSE_FACTOR²` for the
@@ -584,6 +587,7 @@ impl RiverPlan {
             saddles: params.lakes >= 7 || (params.lakes == 6 && !coarse),
             full_floods: params.lakes >= 7,
             whole_lakes: params.lakes >= 7 && coarse,
+            lod_shores: params.lakes >= 7,
             wet_q: if coarse {
                 ((8.0 / params.density) / q_scale as f32).ceil().max(1.0) as u32
             } else {
@@ -633,6 +637,26 @@ impl RiverPlan {
                 _ => PIECES_3,
             },
         }
+    }
+
+    /// The scales of the shoreline's two noise octaves in a tile of vertex spacing `spacing_m`
+    /// (shores' step 2): [`SHORE_N1`] and [`SHORE_N2`], and with `lakes: 7` each times
+    /// `clamp(log₂(λ / 2·spacing), 0, 1)` for its wavelength `λ` ([`SHORE_NOISE_M`] and a third
+    /// of it), the rule of the relief layers (`earth` module docs, LOD rule): no wave shorter
+    /// than two spacings. Unfaded, the 384 m octave read at 512 m spacing is a random value per
+    /// vertex, and the band of the lake weight it moves across the shore (about a third of a
+    /// node spacing each side) held isolated lake vertices on the land around the coarse
+    /// network's lakes. Full up to 64 m (the second octave's 128 m: up to 32 m); exactly the
+    /// constants there, so those tiles keep their bits.
+    pub fn shore_noise(&self, spacing_m: f32) -> [f32; 2] {
+        if !self.lod_shores {
+            return [SHORE_N1, SHORE_N2];
+        }
+        let w = |len: f32| libm::log2f(len / (2.0 * spacing_m)).clamp(0.0, 1.0);
+        [
+            SHORE_N1 * w(SHORE_NOISE_M),
+            SHORE_N2 * w(SHORE_NOISE_M / 3.0),
+        ]
     }
 
     /// The floodplain's half-width (metres) and the walls' mean slope at the point `(x, z)` of

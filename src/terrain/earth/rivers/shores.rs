@@ -207,7 +207,7 @@ impl RiverJob {
             return None;
         }
         let level = sum / weight;
-        let t = weight + (SHORE_N1 * n1 + SHORE_N2 * n2);
+        let t = weight + (self.shore_n[0] * n1 + self.shore_n[1] * n2);
         Some(LakeField {
             level,
             weight,
