@@ -186,11 +186,15 @@ pub struct RiverParams {
     /// 2 m falls from 5.3 % to 1.3 %. `7` (new worlds): the lakes of `6`, and a flood stopped by
     /// its limits keeps the lake it had filled before its level last rose, full to the rim that
     /// raised it (it kept the nodes it had reached beyond that rim, below the level beside dry
-    /// neighbours as low: a flat closed floor tens of kilometres wide at 512 m); the coarse network's floods search 30 of its own spacings
-    /// over at most [`super::rivers::COARSE_LAKE_MAX_NODES_7`] nodes, and its spilling lakes
-    /// leave from their saddles (its pits' edges, as long as the wider floods, cut arcs of
-    /// trench 40 km and more across the land). At 512 m the land in closed depressions deeper
-    /// than 2 m falls from 10.7 to 3.3 % in the far area, 6.2 to 4.2 % in the range's.
+    /// neighbours as low: a flat closed floor tens of kilometres wide at 512 m); the coarse
+    /// network's floods search 30 of its own spacings over at most
+    /// [`super::rivers::COARSE_LAKE_MAX_NODES_7`] nodes and go on past their outlet over the
+    /// nodes below their level that drain into the lake, and its spilling lakes leave from
+    /// their saddles (its pits' edges, as long as the wider floods, cut arcs of trench 40 km and
+    /// more across the land); and the shoreline's noise fades with the tile's vertex spacing,
+    /// so no octave shorter than two spacings scatters lake vertices on the land beside a coarse
+    /// tile's lakes. At 512 m the land in closed depressions deeper than 2 m falls from 10.7 to
+    /// 3.3 % in the far area, 6.2 to 3.9 % in the range's.
     #[serde(
         default = "RiverParams::first_lakes",
         skip_serializing_if = "RiverParams::is_first_lakes"

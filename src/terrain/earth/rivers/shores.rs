@@ -15,7 +15,8 @@
 //!    edge depend on its two nodes only, so `I` and `L` are continuous across cells and every
 //!    tile computes them alike.
 //! 2. **Shoreline.** `t = I + n`, with `n` two octaves of value noise (wavelengths
-//!    [`SHORE_NOISE_M`] and a third of it, at most [`SHORE_NOISE`] together); the shore is
+//!    [`SHORE_NOISE_M`] and a third of it, at most [`SHORE_NOISE`] together; with `lakes: 7`
+//!    each faded by the tile's vertex spacing, [`super::RiverPlan::shore_noise`]); the shore is
 //!    `t = ½`, and `e = ½ − t` is negative in the lake and positive on land.
 //! 3. **Ground.** The height is clamped between a floor and a ceiling that both pass through
 //!    `L` at the shore: on land the floor rises gently (`L + SHORE_GENTLE_M·e`) and the ceiling
