@@ -360,7 +360,9 @@ fn river_carve_structs_match_the_wgsl_layout() {
             shore_seed3,
             shore_warp_m,
             shore_warp_inv_m,
-            sills
+            sills,
+            shore_n1,
+            shore_n2
         ]
     );
     check_layout!(

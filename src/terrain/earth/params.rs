@@ -293,7 +293,7 @@ impl RiverParams {
         check(
             (1..=7).contains(&self.lakes),
             "rivers.lakes",
-            "must be 1, 2, 3, 4, 5 or 6",
+            "must be 1, 2, 3, 4, 5, 6 or 7",
         )?;
         check(self.coarse <= 1, "rivers.coarse", "must be 0 or 1")?;
         check(

@@ -499,10 +499,9 @@ pub struct RiverPlan {
     pub lake_radius: i64,
     /// Whether a flood stopped by its limits keeps only the nodes it flooded before its level
     /// last rose, full to the height of the rim node that raised it (`lakes: 7`; module docs,
-    /// step 5): before, it kept every node
-    /// it had flooded, also those it had reached beyond the rim that set the level, lower than
-    /// the level and dry beside their unvisited neighbours as low, so the shores flattened a
-    /// closed dry floor below the level there.
+    /// step 5): before, it kept every node it had flooded, also those it had reached beyond the
+    /// rim that set the level, lower than the level and dry beside their unvisited neighbours
+    /// as low, so the shores flattened a closed dry floor below the level there.
     pub full_floods: bool,
     /// Whether a flood that found its outlet goes on over the nodes below its level that drain
     /// into the lake, popped after the outlet (module docs, step 5): the coarse network of
