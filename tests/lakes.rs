@@ -375,14 +375,9 @@ fn basins_closed_by_a_ranges_ridges_fill_to_their_outlets() {
 /// reaches, where with the hollows alone (the flow still ending at a pit) hundreds do.
 #[test]
 fn the_network_sees_the_plains_hollows_and_rivers_rest_on_the_lakes_they_reach() {
-    use strata::bench::realism::{metrics, sample};
     use strata::terrain::earth::rivers::Network;
-    let closed = |p: &WorldPlan| {
-        let s = sample::sample(p, 6, -4, -4, 8, 8);
-        metrics::depressions(&s.surface(), 0.0, 2.0).fraction
-    };
     let (five, six) = (plan(5), plan(6));
-    let (c5, c6) = (closed(&five), closed(&six));
+    let (c5, c6) = (closed(&five, 6, (-4, -4)), closed(&six, 6, (-4, -4)));
     println!(
         "origin at 64 m, closed depressions > 2 m: lakes 5 {:.2} %, lakes 6 {:.2} %",
         100.0 * c5,
@@ -515,17 +510,18 @@ fn a_spilling_lake_leaves_over_its_saddle() {
 /// wider coarse floods (84 such neighbours beside the west basin's fine lakes).
 #[test]
 fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
-    use strata::bench::realism::{metrics, sample};
-    let closed = |p: &WorldPlan| {
-        let (x0, z0) = (
+    use strata::bench::realism::sample;
+    let (six, seven) = (plan(6), plan(7));
+    let first = |p: &WorldPlan| {
+        (
             sample::first_tile(p, 9, 620e3, 8),
             sample::first_tile(p, 9, 310e3, 8),
-        );
-        let s = sample::sample(p, 9, x0, z0, 8, 8);
-        metrics::depressions(&s.surface(), 0.0, 2.0).fraction
+        )
     };
-    let (six, seven) = (plan(6), plan(7));
-    let (c6, c7) = (closed(&six), closed(&seven));
+    let (c6, c7) = (
+        closed(&six, 9, first(&six)),
+        closed(&seven, 9, first(&seven)),
+    );
     println!(
         "far at 512 m, closed depressions > 2 m: lakes 6 {:.2} %, lakes 7 {:.2} %",
         100.0 * c6,
@@ -555,6 +551,14 @@ fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
             );
         }
     }
+}
+
+/// The fraction of the land closed by depressions deeper than 2 m (the surface a DEM records,
+/// as `bench realism` measures it) over the 8 × 8 tiles of LOD `lod` from tile `first`.
+fn closed(plan: &WorldPlan, lod: u32, first: (i64, i64)) -> f64 {
+    use strata::bench::realism::{metrics, sample};
+    let s = sample::sample(plan, lod, first.0, first.1, 8, 8);
+    metrics::depressions(&s.surface(), 0.0, 2.0).fraction
 }
 
 /// The lakes of `plan`'s fine or coarse network whose floods found no outlet, among the pits

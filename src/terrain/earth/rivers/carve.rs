@@ -244,7 +244,8 @@ impl Network<'_> {
         let (pi, pk) = from.down?;
         let to = self.node(pi, pk);
         let main = self.main_upstream(i, k).map(|u| (self.q(u.0, u.1), u));
-        // `lakes: 6` (the fine network): a spilling lake's edge starts at its saddle
+        // The fine network of `lakes: 6`, both of `lakes: 7`: a spilling lake's edge starts at
+        // its saddle
         // (`Network::saddle`), and the curves before and after it read that point instead of
         // the pit.
         let saddle = self.saddle(i, k);

@@ -153,7 +153,7 @@ impl Network<'_> {
         for (n, e) in edges.iter().enumerate() {
             let to = (e.to.i, e.to.k);
             // A spilling lake's edge starts at its saddle, across the lake from its pit
-            // (`lakes: 6`): the lines into the pit end there, in the lake.
+            // (`RiverPlan::saddles`): the lines into the pit end there, in the lake.
             if self.main_upstream(to.0, to.1) != Some((e.from.i, e.from.k))
                 || self.saddle(to.0, to.1).is_some()
             {

@@ -452,7 +452,8 @@ impl<'a> Network<'a> {
         })
     }
 
-    /// In the fine network of `lakes: 6` worlds ([`RiverPlan::saddles`]), where the water of a
+    /// In the fine network of `lakes: 6` worlds and both networks of `lakes: 7` worlds
+    /// ([`RiverPlan::saddles`]), where the water of a
     /// lake that spills over an outlet beyond its pit's neighbours leaves it: the lowest node of
     /// pit `(i, k)`'s flood linked to the outlet (the first by index on ties), the saddle the
     /// outlet was found beyond. The pit's edge is drawn and carved from there (`Network::edge`):
