@@ -68,6 +68,8 @@ fn hillshade_writes_the_square_asked_for_and_its_figures() {
     );
     let median = v["slope_median_deg"].as_f64().expect("a slope median");
     assert!(median > 0.0 && median < 90.0, "median slope {median}");
+    let water = v["water_fraction_of_land"].as_f64().expect("a water share");
+    assert!((0.0..=1.0).contains(&water), "water {water}");
     let (w, h, pixels) = decode(&a);
     assert_eq!((w, h), (128, 128));
     // Shaded relief, not one flat colour.

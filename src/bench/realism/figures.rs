@@ -4,8 +4,8 @@
 //! lines.
 
 use super::metrics::{
-    anisotropy, depressions, extrema, hypsometry, percentile, slopes, spectrum, Anisotropy,
-    Depressions, Extrema, Grid, Hypsometry, Slopes, Spectrum, HYPSOMETRY_FRACTIONS,
+    anisotropy, depressions, extrema, hypsometry, percentile, slopes, spectrum, water_fraction,
+    Anisotropy, Depressions, Extrema, Grid, Hypsometry, Slopes, Spectrum, HYPSOMETRY_FRACTIONS,
 };
 use super::sample::LodCheck;
 use super::{border, DEPRESSION_DEPTH_M, TARGET_LOD_RATIO};
@@ -22,10 +22,14 @@ pub(super) struct Figures {
     pub(super) hypsometry: Hypsometry,
     pub(super) anisotropy: Anisotropy,
     pub(super) land_fraction: f64,
+    /// Share of the land under lake or river water (NaN for a real DEM, which records no water).
+    pub(super) water_fraction: f64,
     pub(super) relief_m: f64,
 }
 
-pub(super) fn figures(g: &Grid, sea: f64) -> Figures {
+/// The figures of `g` (heights of the surface, lakes and rivers at their level); `water`, one
+/// water surface per cell (NaN where none), for a world's grid.
+pub(super) fn figures(g: &Grid, sea: f64, water: Option<&[f32]>) -> Figures {
     let mut land: Vec<f64> = g
         .heights
         .iter()
@@ -42,6 +46,7 @@ pub(super) fn figures(g: &Grid, sea: f64) -> Figures {
         hypsometry: hypsometry(g, sea),
         anisotropy: anisotropy(g, sea),
         land_fraction,
+        water_fraction: water.map_or(f64::NAN, |w| water_fraction(g, sea, w)),
         relief_m,
     }
 }
@@ -68,6 +73,7 @@ pub(super) fn figures_json(f: &Figures, v: &mut Value) {
         "anisotropy_ratio": f.anisotropy.ratio,
         "aspect_counts_e_se_s_sw_w_nw_n_ne": f.anisotropy.counts,
         "land_fraction": f.land_fraction,
+        "water_fraction_of_land": (!f.water_fraction.is_nan()).then_some(f.water_fraction),
         "relief_p5_p95_m": f.relief_m,
     });
     if let (Some(v), Value::Object(add)) = (v.as_object_mut(), add) {
@@ -132,6 +138,10 @@ pub(super) fn rows(f: &Figures) -> Vec<(&'static str, String)> {
         ("hypsometric curve (10/25/50/75/90 %)", curve(&f.hypsometry)),
         ("gradient-direction anisotropy", num(f.anisotropy.ratio, 2)),
         ("land, %", num(100.0 * f.land_fraction, 1)),
+        (
+            "lakes and rivers, % of land",
+            num(100.0 * f.water_fraction, 1),
+        ),
         ("relief p5–p95, m", num(f.relief_m, 0)),
         (
             "steepest step between neighbours, °",

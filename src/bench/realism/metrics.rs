@@ -284,6 +284,22 @@ const NEIGHBOURS: [(i64, i64); 8] = [
     (1, 1),
 ];
 
+/// Share of the land cells of `g` (above `sea_level_m`) that hold lake or river water, 0–1:
+/// `water` has one water surface per cell, NaN where there is none (same layout as `g`). NaN
+/// when no cell is land.
+pub fn water_fraction(g: &Grid, sea_level_m: f64, water: &[f32]) -> f64 {
+    assert_eq!(water.len(), g.heights.len());
+    let (land, wet) = g
+        .heights
+        .iter()
+        .zip(water)
+        .filter(|(z, _)| **z as f64 > sea_level_m)
+        .fold((0usize, 0usize), |(l, n), (_, w)| {
+            (l + 1, n + usize::from(!w.is_nan()))
+        });
+    wet as f64 / land as f64
+}
+
 /// Closed depressions after a priority-flood fill.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Depressions {

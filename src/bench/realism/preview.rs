@@ -97,7 +97,7 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
     }
     hillshade::write_rgb(&args.out, g.w, g.h, &pixels)
         .with_context(|| format!("writing {}", args.out.display()))?;
-    let f = figures(&g, sea);
+    let f = figures(&g, sea, Some(&s.water));
     let side_km = g.w as f64 * g.spacing_m / 1e3;
     if args.json {
         let mut v = json!({"png":args.out.display().to_string(),"seed":args.seed,"lod":args.lod,
@@ -118,7 +118,7 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
             start.elapsed().as_secs_f64()
         );
         println!(
-            "  land {:.0} %, relief p5–p95 {} m; slope median {}°, p95 {}°; steepest step {}°, steps steeper than 63° {} %; closed depressions deeper than 2 m {} % of the land",
+            "  land {:.0} %, relief p5–p95 {} m; slope median {}°, p95 {}°; steepest step {}°, steps steeper than 63° {} %; closed depressions deeper than 2 m {} % of the land; lakes and rivers {} % of the land",
             100.0 * f.land_fraction,
             num(f.relief_m, 0),
             num(f.slopes.median_deg, 1),
@@ -126,6 +126,7 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
             num(f.slopes.steepest_step_deg, 1),
             num(100.0 * f.slopes.cliff_fraction, 3),
             num(100.0 * f.depressions.fraction, 2),
+            num(100.0 * f.water_fraction, 1),
         );
     }
     Ok(())

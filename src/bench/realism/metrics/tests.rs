@@ -175,3 +175,20 @@ fn a_border_ratio_needs_cells_on_both_sides() {
     assert!(!none.one_side_only(0.01));
     assert_eq!(none.two_sided_ratio(0.01), None);
 }
+
+#[test]
+fn water_fraction_counts_wet_land_only() {
+    // A plane rising east from 10.5 m below the sea to 20.5 m above it: the first 11 columns
+    // are sea, and of the 21 columns of land the first 10 hold water (as do the sea's, which
+    // count for nothing).
+    let g = Grid::from_fn(32, 8, 1.0, |x, _| x - 10.5);
+    let water: Vec<f32> = (0..g.heights.len())
+        .map(|n| if n % 32 < 21 { 0.5 } else { f32::NAN })
+        .collect();
+    assert_eq!(water_fraction(&g, 0.0, &water), 10.0 / 21.0);
+    assert_eq!(
+        water_fraction(&g, 0.0, &vec![f32::NAN; g.heights.len()]),
+        0.0
+    );
+    assert!(water_fraction(&g, 100.0, &water).is_nan(), "no land");
+}
