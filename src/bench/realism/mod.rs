@@ -28,12 +28,15 @@
 //! reader's call, helped by its relief); closed depressions deeper than 2 m ≤ 5 % of the land;
 //! anisotropy ≤ 1.25; biome-border ratio ≤ 1.5 at every LOD 0–8; LOD-consistency ratio ≤ 1.
 //!
-//! Anisotropy is printed per area and **world-wide** ([`pooled_anisotropy`]): the issue asks
+//! Anisotropy, closed depressions and the land under water are printed per area and
+//! **world-wide** ([`pooled_figures`]); for anisotropy the issue asks
 //! that "the gradient directions of a large area are isotropic" (no lattice alignment). One
 //! area's directions carry its regional tilt, as real ones do (the Jacksboro DEM reads 1.26 at
 //! 92.5 m and 1.65 at 512 m), so the target is judged on the counts pooled over 64 areas spread
 //! over 1,050 km, where only a direction the generator prefers everywhere survives (the
 //! `classic` world's lattice shows there: its axes outnumber its diagonals about 2 : 1 at 512 m).
+//! The closed depressions are judged world-wide too: the five areas are 33–131 km squares, and
+//! a basin wider than them shows only in the areas it covers.
 //!
 //! Worlds: `WorldParams::default()` (the world of bare seeds) first, then
 //! `WorldParams::classic()` as its peer; `STRATA_BENCH_REALISM_WORLD=default|classic|both`
@@ -497,7 +500,7 @@ fn run_world(
         }
     }
 
-    pooled_anisotropy(args, which, &plan, seed, sea);
+    pooled_figures(args, which, &plan, seed, sea);
 
     // Every LOD 0–8: the biome-border transect (border.rs), the worst LOD-consistency ratio.
     let transect = border::find_transect(&plan);
@@ -597,15 +600,23 @@ fn pooled_centres() -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// The world-wide gradient-direction anisotropy at 64 and 512 m: the direction counts of the
-/// 64 areas of [`pooled_centres`] (8 × 8 tiles each) summed, then max ÷ min. One area's
-/// directions carry its regional tilt (a range's flank, a plain falling to the coast: the real
-/// DEMs' areas read 1.26 at 92.5 m and 1.65 at 512 m); pooled over areas whose tilts point every
-/// way, what is left is a direction the generator itself prefers, such as a lattice's axes.
-fn pooled_anisotropy(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, sea: f64) {
+/// The world-wide figures at 64 and 512 m over the 64 areas of [`pooled_centres`] (8 × 8
+/// tiles each):
+/// - the gradient-direction anisotropy: the areas' direction counts summed, then max ÷ min.
+///   One area's directions carry its regional tilt (a range's flank, a plain falling to the
+///   coast: the real DEMs' areas read 1.26 at 92.5 m and 1.65 at 512 m); pooled over areas
+///   whose tilts point every way, what is left is a direction the generator itself prefers,
+///   such as a lattice's axes;
+/// - the closed depressions deeper than [`DEPRESSION_DEPTH_M`] and the land under lakes and
+///   rivers, as shares of the land of all the areas together (each area filled on its own, as
+///   the named areas are), so the depression target is judged over 1,050 km as well as in the
+///   five named areas: a basin wider than an area's square shows in the areas it covers.
+fn pooled_figures(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, sea: f64) {
     for lod in [6u32, 9] {
         let n = AREA_TILES;
         let mut counts = [0u64; 8];
+        let (mut land, mut closed, mut wet, mut worst) =
+            (0.0f64, 0.0f64, 0.0f64, (0.0f64, (0.0, 0.0)));
         let centres = pooled_centres();
         for &(x, z) in &centres {
             let s = sample(
@@ -616,9 +627,22 @@ fn pooled_anisotropy(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64,
                 n,
                 n,
             );
-            let a = metrics::anisotropy(&s.surface(), sea);
+            let surface = s.surface();
+            let a = metrics::anisotropy(&surface, sea);
             for (c, k) in counts.iter_mut().zip(a.counts) {
                 *c += k;
+            }
+            let d = metrics::depressions(&surface, sea, DEPRESSION_DEPTH_M);
+            // An area of sea alone has no land (its fractions are NaN).
+            let cells = d.land_cells as f64;
+            if cells == 0.0 {
+                continue;
+            }
+            land += cells;
+            closed += d.fraction * cells;
+            wet += metrics::water_fraction(&surface, sea, &s.water) * cells;
+            if d.fraction > worst.0 {
+                worst = (d.fraction, (x, z));
             }
         }
         let (max, min) = (
@@ -627,6 +651,8 @@ fn pooled_anisotropy(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64,
         );
         let ratio = if max == 0.0 { f64::NAN } else { max / min };
         let ok = ratio <= TARGET_ANISOTROPY;
+        let (closed, wet) = (closed / land, wet / land);
+        let dep_ok = closed <= TARGET_DEPRESSION_FRACTION;
         let spacing = plan.lods[lod as usize].spacing_m as f64;
         emit(
             args,
@@ -646,6 +672,25 @@ fn pooled_anisotropy(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64,
                     .map(|&c| format!("{:.2}", c as f64 * 8.0 / counts.iter().sum::<u64>().max(1) as f64))
                     .collect::<Vec<_>>()
                     .join(" ")
+            ),
+        );
+        emit(
+            args,
+            json!({"bench":"realism","world":which,"seed":seed,"figure":"pooled_land","lod":lod,
+                   "spacing_m":spacing,"areas":centres.len(),"area_tiles":n,
+                   "depression_fraction_deeper_than_2m":closed,"water_fraction_of_land":wet,
+                   "worst_area_depression_fraction":worst.0,
+                   "worst_area_center_m":[worst.1.0, worst.1.1],
+                   "meets_depression_target":dep_ok}),
+            format!(
+                "  world-wide land at {} (LOD {lod}), the same areas: closed depressions deeper than 2 m {} % (≤ 5 {}; the worst area {} % at ({:.0} km, {:.0} km)); lakes and rivers {} % {WATER_REFERENCE}",
+                spacing_text(spacing),
+                num(100.0 * closed, 2),
+                mark(dep_ok),
+                num(100.0 * worst.0, 1),
+                worst.1.0 / 1e3,
+                worst.1.1 / 1e3,
+                num(100.0 * wet, 1),
             ),
         );
     }
