@@ -7,7 +7,8 @@
 //! times (0.35, 0.55, 0.9) plus a constant (10, 30, 70)). Written as an 8-bit RGB PNG with the
 //! `png` crate, one pixel per sample, row 0 north.
 
-use super::metrics::Grid;
+use super::metrics::{priority_flood, Grid};
+use super::DEPRESSION_DEPTH_M;
 use anyhow::Context;
 use std::path::Path;
 
@@ -106,6 +107,21 @@ pub fn write_rgb(path: &Path, w: usize, h: usize, pixels: &[u8]) -> anyhow::Resu
     std::fs::write(path, bytes).with_context(|| format!("writing {}", path.display()))
 }
 
+/// Tints red the land pixels of `g` that the priority-flood fill raises by more than
+/// [`DEPRESSION_DEPTH_M`] (the cells the closed-depression figure counts): each channel
+/// halved, red then raised by 128.
+pub fn tint_depressions(g: &Grid, sea_level_m: f64, pixels: &mut [u8]) {
+    let filled = priority_flood(g, sea_level_m);
+    for (n, (z, f)) in g.heights.iter().zip(&filled).enumerate() {
+        if (*z as f64) > sea_level_m && (*f as f64 - *z as f64) > DEPRESSION_DEPTH_M {
+            let p = &mut pixels[3 * n..3 * n + 3];
+            p[0] = p[0] / 2 + 128;
+            p[1] /= 2;
+            p[2] /= 2;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -122,5 +138,28 @@ mod tests {
         assert!(shade(&toward)[27] > 220, "{}", shade(&toward)[27]);
         let sea = rgb(&flat, 10.0, None);
         assert!(sea[2] > sea[0]);
+    }
+
+    #[test]
+    fn only_the_closed_bowl_is_tinted() {
+        // A bowl 10 m deep in a plane 100 m above the sea, beside a cone: the fill raises the
+        // bowl's floor, not the cone's flanks nor the plane.
+        let g = Grid::from_fn(32, 16, 10.0, |x, z| {
+            let bowl = (x - 80.0).hypot(z - 80.0);
+            let cone = (x - 240.0).hypot(z - 80.0);
+            100.0 - 10.0 * (1.0 - bowl / 50.0).max(0.0) + 10.0 * (1.0 - cone / 50.0).max(0.0)
+        });
+        let plain = rgb(&g, 0.0, None);
+        let mut tinted = plain.clone();
+        tint_depressions(&g, 0.0, &mut tinted);
+        let px = |p: &[u8], i: usize, j: usize| p[3 * (j * 32 + i)..3 * (j * 32 + i) + 3].to_vec();
+        let floor = px(&tinted, 8, 8);
+        assert!(
+            floor[0] > floor[1] && floor[0] >= 128,
+            "the bowl's floor is red: {floor:?}"
+        );
+        for (i, j) in [(24, 8), (0, 0), (31, 15)] {
+            assert_eq!(px(&tinted, i, j), px(&plain, i, j), "({i}, {j}) untouched");
+        }
     }
 }

@@ -500,7 +500,14 @@ fn run_world(
         }
     }
 
-    pooled_figures(args, which, &plan, seed, sea);
+    pooled_figures(
+        args,
+        which,
+        &plan,
+        seed,
+        sea,
+        if which == "default" { pngs } else { &None },
+    );
 
     // Every LOD 0–8: the biome-border transect (border.rs), the worst LOD-consistency ratio.
     let transect = border::find_transect(&plan);
@@ -610,11 +617,21 @@ fn pooled_centres() -> Vec<(f64, f64)> {
 /// - the closed depressions deeper than [`DEPRESSION_DEPTH_M`] and the land under lakes and
 ///   rivers, as shares of the land of all the areas together (each area filled on its own, as
 ///   the named areas are), so the depression target is judged over 1,050 km as well as in the
-///   five named areas: a basin wider than an area's square shows in the areas it covers.
-fn pooled_figures(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, sea: f64) {
+///   five named areas: a basin wider than an area's square shows in the areas it covers. The
+///   area with the most goes to `worst-<spacing>.png` in `pngs`, its closed depressions
+///   tinted red as `strata hillshade --depressions` tints them.
+fn pooled_figures(
+    args: &BenchArgs,
+    which: &str,
+    plan: &WorldPlan,
+    seed: u64,
+    sea: f64,
+    pngs: &Option<PathBuf>,
+) {
     for lod in [6u32, 9] {
         let n = AREA_TILES;
         let mut counts = [0u64; 8];
+        let mut worst_png: Option<(Grid, Vec<bool>)> = None;
         let (mut land, mut closed, mut wet, mut worst) =
             (0.0f64, 0.0f64, 0.0f64, (0.0f64, (0.0, 0.0)));
         let centres = pooled_centres();
@@ -643,6 +660,10 @@ fn pooled_figures(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, se
             wet += metrics::water_fraction(&surface, sea, &s.water) * cells;
             if d.fraction > worst.0 {
                 worst = (d.fraction, (x, z));
+                worst_png = Some((
+                    surface,
+                    s.water.iter().map(|w| !w.is_nan()).collect::<Vec<_>>(),
+                ));
             }
         }
         let (max, min) = (
@@ -654,6 +675,18 @@ fn pooled_figures(args: &BenchArgs, which: &str, plan: &WorldPlan, seed: u64, se
         let (closed, wet) = (closed / land, wet / land);
         let dep_ok = closed <= TARGET_DEPRESSION_FRACTION;
         let spacing = plan.lods[lod as usize].spacing_m as f64;
+        if let (Some(dir), Some((g, water))) = (pngs, &worst_png) {
+            let path = dir.join(format!("worst-{}.png", spacing_tag(spacing)));
+            let mut pixels = hillshade::rgb(g, sea, Some(water));
+            hillshade::tint_depressions(g, sea, &mut pixels);
+            if let Err(e) = hillshade::write_rgb(&path, g.w, g.h, &pixels) {
+                emit(
+                    args,
+                    json!({"bench":"realism","png":path.display().to_string(),"error":format!("{e:#}")}),
+                    format!("  hillshade {} failed: {e:#}", path.display()),
+                );
+            }
+        }
         emit(
             args,
             json!({"bench":"realism","world":which,"seed":seed,"figure":"pooled_anisotropy","lod":lod,

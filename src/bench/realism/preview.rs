@@ -12,9 +12,7 @@
 
 use super::figures::{figures, figures_json, num};
 use super::hillshade;
-use super::metrics::{priority_flood, Grid};
 use super::sample::{first_tile, sample};
-use super::DEPRESSION_DEPTH_M;
 use crate::terrain::plan::MAX_LOD;
 use crate::terrain::WorldPlan;
 use anyhow::Context;
@@ -93,7 +91,7 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
     let water: Vec<bool> = s.water.iter().map(|w| !w.is_nan()).collect();
     let mut pixels = hillshade::rgb(&g, sea, Some(&water));
     if args.depressions {
-        tint_depressions(&g, sea, &mut pixels);
+        hillshade::tint_depressions(&g, sea, &mut pixels);
     }
     hillshade::write_rgb(&args.out, g.w, g.h, &pixels)
         .with_context(|| format!("writing {}", args.out.display()))?;
@@ -130,18 +128,4 @@ pub fn run(args: &HillshadeArgs) -> anyhow::Result<()> {
         );
     }
     Ok(())
-}
-
-/// Tints red the land pixels of `g` that the priority-flood fill raises by more than
-/// [`DEPRESSION_DEPTH_M`] (the cells the closed-depression figure counts).
-fn tint_depressions(g: &Grid, sea_level_m: f64, pixels: &mut [u8]) {
-    let filled = priority_flood(g, sea_level_m);
-    for (n, (z, f)) in g.heights.iter().zip(&filled).enumerate() {
-        if (*z as f64) > sea_level_m && (*f as f64 - *z as f64) > DEPRESSION_DEPTH_M {
-            let p = &mut pixels[3 * n..3 * n + 3];
-            p[0] = p[0] / 2 + 128;
-            p[1] /= 2;
-            p[2] /= 2;
-        }
-    }
 }
