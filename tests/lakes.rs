@@ -304,21 +304,17 @@ fn faster_paths_are_bit_exact(lakes: u32) {
 /// floor hundreds of metres deep, to a few percent; and fewer of the range's flows end inland.
 #[test]
 fn basins_closed_by_a_ranges_ridges_fill_to_their_outlets() {
-    use strata::bench::realism::{metrics, sample};
-    let closed = |lakes: u32| {
+    use strata::bench::realism::sample;
+    let square = |lakes: u32| {
         let p = plan_of_the_basins(lakes);
         let n = 16;
-        let s = sample::sample(
-            &p,
-            6,
+        let first = (
             sample::first_tile(&p, 6, 112_000.0, n),
             sample::first_tile(&p, 6, -100_000.0, n),
-            n,
-            n,
         );
-        metrics::depressions(&s.surface(), 0.0, 2.0).fraction
+        closed_n(&p, 6, first, n)
     };
-    let (four, five) = (closed(4), closed(5));
+    let (four, five) = (square(4), square(5));
     println!(
         "closed depressions > 2 m: lakes 4 {:.2} % of the land, lakes 5 {:.2} %",
         100.0 * four,
@@ -556,8 +552,13 @@ fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
 /// The fraction of the land closed by depressions deeper than 2 m (the surface a DEM records,
 /// as `bench realism` measures it) over the 8 × 8 tiles of LOD `lod` from tile `first`.
 fn closed(plan: &WorldPlan, lod: u32, first: (i64, i64)) -> f64 {
+    closed_n(plan, lod, first, 8)
+}
+
+/// [`closed`] over `n` × `n` tiles.
+fn closed_n(plan: &WorldPlan, lod: u32, first: (i64, i64), n: usize) -> f64 {
     use strata::bench::realism::{metrics, sample};
-    let s = sample::sample(plan, lod, first.0, first.1, 8, 8);
+    let s = sample::sample(plan, lod, first.0, first.1, n, n);
     metrics::depressions(&s.surface(), 0.0, 2.0).fraction
 }
 
