@@ -59,6 +59,9 @@ struct CarveParams {
     sills: u32,
     shore_n1: f32,
     shore_n2: f32,
+    // Whether the shores sink the ground inside a lake towards its nodes' heights
+    // (`RiverJob::sink`, 0 or 1): the heights follow the levels in `lakes`.
+    sink: u32,
 }
 
 // `rivers::Piece`: one piece of a river's centre line (a cubic offset from its chord with end
@@ -229,6 +232,14 @@ fn node_lake(i: i32, k: i32) -> f32 {
     return lakes[u32(b) * params.lakes_w + u32(a)];
 }
 
+// `RiverJob::node_floor`: the height of lake node `(i, k)` of the window (a node `node_lake`
+// found a lake at), stored after the window's levels.
+fn node_floor(i: i32, k: i32) -> f32 {
+    let a = u32(i - params.li0);
+    let b = u32(k - params.lk0);
+    return lakes[params.lakes_w * params.lakes_h + b * params.lakes_w + a];
+}
+
 // `RiverJob::shore_sill` (`rivers::shores`, with `RiverJob::lake_field`): the height `h` at
 // `(x, z)` clamped into the shore's wedge around the lake level, faded in with the lake weight
 // (`h` itself where no lake node around has weight or the world has the first lakes), then the
@@ -255,14 +266,20 @@ fn shore(x: f32, z: f32, h: f32) -> vec3<f32> {
         rn((1.0 - a) * b),
         rn(a * b),
     );
-    let ls = array<f32, 4>(node_lake(i, k), node_lake(i + 1, k), node_lake(i, k + 1), node_lake(i + 1, k + 1));
+    let ci = array<i32, 4>(i, i + 1, i, i + 1);
+    let ck = array<i32, 4>(k, k, k + 1, k + 1);
     // The weights are at least 0, so no lake corner (or none with weight) leaves 0.
     var weight = 0.0;
     var sum = 0.0;
+    var floor_sum = 0.0;
     for (var c = 0u; c < 4u; c++) {
-        if (ls[c] > LAKE_NONE) {
+        let l = node_lake(ci[c], ck[c]);
+        if (l > LAKE_NONE) {
             weight = weight + ws[c];
-            sum = sum + rn(ws[c] * ls[c]);
+            sum = sum + rn(ws[c] * l);
+            if (params.sink != 0u) {
+                floor_sum = floor_sum + rn(ws[c] * node_floor(ci[c], ck[c]));
+            }
         }
     }
     if (weight <= 0.0) {
@@ -285,6 +302,15 @@ fn shore(x: f32, z: f32, h: f32) -> vec3<f32> {
     if (params.sills != 0u) {
         sill_s = rn(smoothstep_rn(0.0, SILL_FULL, weight) * smoothstep_rn(-SILL_E, 0.0, e));
     }
+    // The sink (`lakes: 8`, the shores' step 3): towards the lake nodes' height, with the ramp
+    // of the lake weight.
+    var hs = h;
+    if (params.sink != 0u) {
+        let lake_floor = div_rn(floor_sum, weight);
+        let st = clamp01(rn(rn(weight - SINK_FROM) * SINK_SCALE));
+        let s = rn(rn(st * st) * (3.0 - rn(2.0 * st)));
+        hs = rn(h - min(rn(s * max(rn(h - lake_floor), 0.0)), SINK_MAX_M));
+    }
     let gentle = rn(SHORE_GENTLE_M * e);
     let steep = rn(SHORE_STEEP_M * e);
     var lo = level + steep;
@@ -293,17 +319,17 @@ fn shore(x: f32, z: f32, h: f32) -> vec3<f32> {
         lo = level + gentle;
         hi = level + steep;
     }
-    var target_h = h;
-    if (h < lo) {
+    var target_h = hs;
+    if (hs < lo) {
         target_h = lo;
-    } else if (h > hi) {
+    } else if (hs > hi) {
         target_h = hi;
     } else {
-        return vec3<f32>(h, level, sill_s);
+        return vec3<f32>(hs, level, sill_s);
     }
     let g = smoothstep_rn(0.0, SHORE_FULL, weight);
-    let change = clamp_to(rn((target_h - h) * g), -SHORE_MAX_M, SHORE_MAX_M);
-    return vec3<f32>(h + change, level, sill_s);
+    let change = clamp_to(rn((target_h - hs) * g), -SHORE_MAX_M, SHORE_MAX_M);
+    return vec3<f32>(hs + change, level, sill_s);
 }
 
 // Linear invocation index of a 2D dispatch of 1D workgroups (the x count is capped at 65535).

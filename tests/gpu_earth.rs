@@ -410,6 +410,56 @@ fn gpu_river_carve_keeps_the_lake_sills_bit_for_bit() {
     assert!(raised >= 1000, "only {raised} heights under a sill");
 }
 
+/// `lakes: 8` (the default): the shores sink the ground inside a lake towards its nodes' heights
+/// before their wedge, and the device reads those heights after the lake window's levels. On a
+/// tile of the crater lake near (−367 km, −534 km), whose ridges between the nodes stood above
+/// its level with `lakes: 7`, the device carves a field as the CPU does, bit for bit, and the
+/// sink lowers thousands of its heights below those of `lakes: 7`.
+#[test]
+fn gpu_river_carve_sinks_the_ground_inside_lakes_bit_for_bit() {
+    let world = |lakes: u32| {
+        let mut params = WorldParams::default();
+        let earth = params.earth.as_mut().expect("earth-1");
+        earth.rivers.as_mut().expect("rivers").lakes = lakes;
+        WorldPlan::new(SEED, params).expect("a world with lakes")
+    };
+    let (plan, before) = (world(8), world(7));
+    let dry = dry_plan();
+    let (_adapter, device, queue) = software_device();
+    let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+    let k = TileKey {
+        lod: 6,
+        x: -90,
+        z: -131,
+    };
+    let job = FieldJob::with_margin(k);
+    let spacing = plan.lods[k.lod as usize].spacing_m;
+    let carve = |plan: &WorldPlan, uncarved: &[f32]| {
+        let earth = plan.earth.as_ref().expect("earth-1");
+        let rp = earth.rivers.as_ref().expect("rivers");
+        let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+        let mut h = uncarved.to_vec();
+        strata::terrain::earth::carve(&rj, spacing, job, &mut h);
+        h
+    };
+    let gpu_bare = kernels
+        .field(&device, &queue, &dry, job, None)
+        .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
+    let expected = carve(&plan, &gpu_bare.heights);
+    let rep = compare(&device, &queue, &kernels, &plan, k);
+    assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
+    let sunk = expected
+        .iter()
+        .zip(carve(&before, &gpu_bare.heights))
+        .filter(|(a, b)| **a < *b)
+        .count();
+    println!(
+        "sunk lake floors: {sunk} of {} heights lower than with lakes 7",
+        expected.len()
+    );
+    assert!(sunk >= 1000, "only {sunk} heights sunk");
+}
+
 /// For scale: how far the CPU's own heights move when x moves by one ULP, on the mountain tile.
 #[test]
 fn one_ulp_sensitivity() {

@@ -362,7 +362,8 @@ fn river_carve_structs_match_the_wgsl_layout() {
             shore_warp_inv_m,
             sills,
             shore_n1,
-            shore_n2
+            shore_n2,
+            sink
         ]
     );
     check_layout!(

@@ -109,6 +109,9 @@ pub fn constants() -> Vec<(&'static str, f32)> {
         ("SHORE_MAX_M", rivers::SHORE_MAX_M),
         ("SILL_FULL", rivers::SILL_FULL),
         ("SILL_E", rivers::SILL_E),
+        ("SINK_FROM", rivers::SINK_FROM),
+        ("SINK_SCALE", rivers::SINK_SCALE),
+        ("SINK_MAX_M", rivers::SINK_MAX_M),
         ("LAKE_NONE", LAKE_NONE),
     ]
 }
@@ -324,6 +327,7 @@ pub fn carve_params(params: &GpuEarthParams, rj: &RiverJob) -> anyhow::Result<Gp
         sills: u32::from(rj.sills),
         shore_n1: rj.shore_n[0],
         shore_n2: rj.shore_n[1],
+        sink: u32::from(rj.sink && lakes_w > 0),
     })
 }
 
@@ -494,9 +498,12 @@ impl EarthKernels {
                 "river bin entries",
                 bytemuck::cast_slice(or_pad(&rj.bin_pieces, &no_index)),
             );
+            // The levels, then the lake nodes' heights where the shores sink the ground
+            // (`lakes: 8`), in the same layout.
             let levels: Vec<f32> = rj
                 .lakes
                 .iter()
+                .chain(if cp.sink != 0 { &rj.floors[..] } else { &[] })
                 .map(|&l| if l.is_nan() { LAKE_NONE } else { l })
                 .collect();
             let lake_buf = array(

@@ -322,7 +322,8 @@ pub const LAKE_NONE: f32 = -3.0e38;
 
 /// WGSL `CarveParams` of `rivers.wgsl` (a uniform buffer, 112 bytes): the rectangle of the
 /// heights, the bin grid of `terrain::earth::rivers::RiverJob`, its walls' width noise and its
-/// lake window (the levels are uploaded beside it, [`LAKE_NONE`] for a node without a lake). The pieces are uploaded as
+/// lake window (the levels are uploaded beside it, [`LAKE_NONE`] for a node without a lake, and after
+/// them the lake nodes' heights where `sink` is 1). The pieces are uploaded as
 /// `rivers::Piece` itself, whose `#[repr(C)]` layout is the WGSL `Piece`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -383,4 +384,7 @@ pub struct GpuCarveParams {
     pub shore_n1: f32,
     /// `RiverJob::shore_n[1]`: scale of its second octave.
     pub shore_n2: f32,
+    /// 1 where the shores sink the ground inside a lake towards its nodes' heights
+    /// (`RiverJob::sink`, `lakes: 8`; the heights follow the levels in the lake buffer), else 0.
+    pub sink: u32,
 }

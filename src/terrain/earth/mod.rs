@@ -422,10 +422,12 @@ impl EarthPlan {
             // LODs that skip the carve (and the lake shores before it) differ from LOD 0 by at
             // most what they change; those the coarse network carves by twice that (its carve
             // and the fine one's each change a height by at most as much).
-            let shores = if rp.lakes >= 2 {
-                rivers::SHORE_MAX_M
-            } else {
-                0.0
+            // With `lakes: 8` the shores' sink lowers a height by up to `SINK_MAX_M` before
+            // their wedge changes it.
+            let shores = match rp.lakes {
+                0 | 1 => 0.0,
+                2..=7 => rivers::SHORE_MAX_M,
+                _ => rivers::SHORE_MAX_M + rivers::SINK_MAX_M,
             };
             for (lod, l) in lods.iter_mut().enumerate().skip(rivers::MAX_CARVE_LOD + 1) {
                 let coarse = coarse_rivers.is_some() && lod <= rivers::MAX_COARSE_LOD;

@@ -122,6 +122,12 @@ pub struct RiverJob {
     pub lakes_w: usize,
     /// Lake level of each node of the window (NaN: none), row-major.
     pub lakes: Vec<f32>,
+    /// Node height of each lake node of the window (NaN where no lake), as `lakes`: empty
+    /// unless [`RiverJob::sink`].
+    pub floors: Vec<f32>,
+    /// Whether the shores sink the ground inside a lake towards its nodes' heights
+    /// (`RiverPlan::sink`, `lakes: 8`).
+    pub sink: bool,
     /// `RiverPlan::wall_noise`: amplitude of the walls' width noise, metres (0: none).
     pub wall_noise: f32,
     /// `RiverPlan::wall_seed`.
@@ -525,7 +531,7 @@ impl Network<'_> {
     /// carve read to show the lakes over their uncarved heights (`lakes: 5`), and the lake
     /// window and settings every job starts from.
     pub fn lake_job(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> RiverJob {
-        let (li0, lk0, lakes_w, lakes) = self.lake_window(x0, z0, x1, z1);
+        let (li0, lk0, lakes_w, lakes, floors) = self.lake_window(x0, z0, x1, z1);
         let s = self.plan.spacing_m;
         RiverJob {
             x0,
@@ -538,6 +544,8 @@ impl Network<'_> {
             lk0,
             lakes_w,
             lakes,
+            floors,
+            sink: self.plan.sink,
             wall_noise: self.plan.wall_noise,
             wall_seed: self.plan.wall_seed,
             shores: self.plan.lakes >= 2,
@@ -552,8 +560,9 @@ impl Network<'_> {
 
     /// The lake levels of the nodes a sample of the rectangle can read (the four around it,
     /// after the shores' warp): the window's first node column and row, its width and the
-    /// levels (NaN where no lake), empty when no lake is readable.
-    fn lake_window(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> (i64, i64, usize, Vec<f32>) {
+    /// levels (NaN where no lake), empty when no lake is readable; then the lake nodes' heights
+    /// in the same layout where the plan sinks the ground inside lakes, else empty.
+    fn lake_window(&mut self, x0: f32, z0: f32, x1: f32, z1: f32) -> LakeWindow {
         let s = self.plan.spacing_m;
         // Lake levels of the nodes around the rectangle (a vertex reads the four around it).
         let li0 = ((x0 / s) - 0.5).floor() as i64 - 1;
@@ -562,9 +571,14 @@ impl Network<'_> {
         let lk1 = ((z1 / s) - 0.5).floor() as i64 + 2;
         let lakes_w = (li1 - li0 + 1) as usize;
         let mut lakes = Vec::with_capacity(lakes_w * (lk1 - lk0 + 1) as usize);
+        let mut floors = Vec::new();
         for k in lk0..=lk1 {
             for i in li0..=li1 {
-                lakes.push(self.lake(i, k).unwrap_or(f32::NAN));
+                let lake = self.lake(i, k);
+                lakes.push(lake.unwrap_or(f32::NAN));
+                if self.plan.sink {
+                    floors.push(lake.map_or(f32::NAN, |_| self.height(i, k)));
+                }
             }
         }
         // No lake that a sample of the rectangle can read (the four nodes around it, after the
@@ -581,8 +595,9 @@ impl Network<'_> {
             .any(|((i, k), l)| !l.is_nan() && reach(i, k));
         if !readable {
             lakes.clear();
+            floors.clear();
         }
-        (li0, lk0, lakes_w, lakes)
+        (li0, lk0, lakes_w, lakes, floors)
     }
 
     /// The job of the pieces that come within `reach_of(piece)` metres of the rectangle, each in
@@ -689,6 +704,10 @@ impl Network<'_> {
         }
     }
 }
+
+/// A lake window ([`Network::lake_window`]): first node column and row, node columns, the
+/// levels and the lake nodes' heights.
+type LakeWindow = (i64, i64, usize, Vec<f32>, Vec<f32>);
 
 /// Margin of [`RiverJob::carve_pruned`]'s test that a piece cannot lower a sample further, metres:
 /// far above the rounding of a water level interpolated between a piece's ends (below a

@@ -142,7 +142,8 @@
 //! pits; its floods search as far and over as much land as the fine network's (a radius and
 //! a node count scaled by the spacings), so its lakes fill the basins the fine network's fill;
 //! with `lakes: 7` they search 30 of its own spacings (123 km) over at most
-//! [`COARSE_LAKE_MAX_NODES_7`] nodes, so the basins a hundred kilometres across that stopped
+//! [`COARSE_LAKE_MAX_NODES_7`] nodes ([`COARSE_LAKE_MAX_NODES_8`] with `lakes: 8`), so the
+//! basins a hundred kilometres across that stopped
 //! both networks' floods fill to their outlets in the tiles seen from afar (the fine network's
 //! lakes there stay as they were: a tile of LOD 8 can show such a basin's lake lower than
 //! LOD 9 does), and its spilling lakes leave from their saddles too.
@@ -170,7 +171,7 @@ pub use network::{clear_caches, Lake, Network, Node, NodeId};
 pub use shores::{
     LakeField, Sill, SHORE_FULL, SHORE_GENTLE_M, SHORE_MAX_M, SHORE_N1, SHORE_N2, SHORE_NOISE,
     SHORE_NOISE2_INV_M, SHORE_NOISE_CLAMP, SHORE_NOISE_INV_M, SHORE_NOISE_M, SHORE_STEEP_M,
-    SHORE_WARP, SHORE_WARP_WAVE, SILL_E, SILL_FULL,
+    SHORE_WARP, SHORE_WARP_WAVE, SILL_E, SILL_FULL, SINK_FROM, SINK_MAX_M, SINK_SCALE,
 };
 
 use super::super::hash::{hash2, mix32, purpose, stream, unit};
@@ -225,6 +226,11 @@ pub const LAKE_RADIUS_5: i64 = 30;
 /// coarse spacings (8) stopped the floods of the far area's largest basins 20 to 40 km short of
 /// it (512 nodes of 16.8 km²; 2 048 closed 0.05 % of that area's land more).
 pub const COARSE_LAKE_MAX_NODES_7: usize = 512;
+/// Most nodes a flood of the coarse network visits in worlds with `lakes: 8`: the largest
+/// basins of the default world, about 150 km across, held a lake in the bottom of a dry closed
+/// bowl after 512 nodes (8,600 km²; `bench realism`'s worst 512 m area, 24.8 % of its land in
+/// closed depressions) and fill to their outlets with 2,048.
+pub const COARSE_LAKE_MAX_NODES_8: usize = 2048;
 /// A pit whose lake would be shallower than this, metres, drains over its saddle instead.
 pub const BREACH_DEPTH_M: f32 = 20.0;
 /// Rivers are incised in full within half this many steps of where their flow ends (the sea or
@@ -491,7 +497,8 @@ pub struct RiverPlan {
     pub lakes: u32,
     /// Most nodes a lake's flood visits: [`LAKE_MAX_NODES`], or [`LAKE_MAX_NODES_5`] from
     /// `lakes: 5` (divided by [`RiverPlan::q_scale`] in the coarse network, whose floods cover
-    /// the fine network's land; [`COARSE_LAKE_MAX_NODES_7`] there with `lakes: 7`).
+    /// the fine network's land; [`COARSE_LAKE_MAX_NODES_7`] there with `lakes: 7`,
+    /// [`COARSE_LAKE_MAX_NODES_8`] from `lakes: 8`).
     pub lake_max_nodes: usize,
     /// Chebyshev radius of a lake's flood, node spacings: [`LAKE_RADIUS`], or
     /// [`LAKE_RADIUS_5`] from `lakes: 5` (in the coarse network scaled to the same metres,
@@ -515,6 +522,11 @@ pub struct RiverPlan {
     /// Whether the shoreline's noise octaves fade with the tile's vertex spacing
     /// ([`RiverPlan::shore_noise`], `lakes: 7`).
     pub lod_shores: bool,
+    /// Whether the shores sink the ground inside a lake towards its nodes' heights
+    /// ([`shores`]' step 3, `lakes: 8`): the relief between the nodes, which they do not see,
+    /// raised ridges hundreds of metres above the level inside a lake, and every pool they cut
+    /// off from the outlet was a closed depression.
+    pub sink: bool,
     /// Stream seeds of the shores' two noise octaves and of their warp's x and z.
     pub shore_seeds: [u32; 4],
     /// Nodes of the fine network a node of this one stands for: 1, or `COARSE_FACTOR²` for the
@@ -587,6 +599,7 @@ impl RiverPlan {
             full_floods: params.lakes >= 7,
             whole_lakes: params.lakes >= 7 && coarse,
             lod_shores: params.lakes >= 7,
+            sink: params.lakes >= 8,
             wet_q: if coarse {
                 ((8.0 / params.density) / q_scale as f32).ceil().max(1.0) as u32
             } else {
@@ -616,7 +629,8 @@ impl RiverPlan {
             lake_max_nodes: match (params.lakes, coarse) {
                 (1..=4, _) => LAKE_MAX_NODES / q_scale as usize,
                 (5 | 6, _) | (_, false) => LAKE_MAX_NODES_5 / q_scale as usize,
-                (_, true) => COARSE_LAKE_MAX_NODES_7,
+                (7, true) => COARSE_LAKE_MAX_NODES_7,
+                (_, true) => COARSE_LAKE_MAX_NODES_8,
             },
             lake_radius: match (params.lakes, coarse) {
                 (1..=4, _) => scaled(LAKE_RADIUS),

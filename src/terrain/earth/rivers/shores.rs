@@ -26,6 +26,17 @@
 //!    its own shape. The change fades in with `I` from 0 to [`SHORE_FULL`] (below any shore,
 //!    as `|n| ≤` [`SHORE_NOISE`] `< ½ − SHORE_FULL`), so it vanishes on edges between dry nodes;
 //!    it is at most [`SHORE_MAX_M`] either way, the LOD bound of the LODs that skip it.
+//!    **Sink** (`lakes: 8`, [`super::RiverPlan::sink`]): first, the height sinks towards `F`,
+//!    the weighted height of the lake nodes around (the network's node heights, as `L` is
+//!    their weighted level): `h − s·max(h − F, 0)` with `s` the smoothstep of
+//!    `(I − `[`SINK_FROM`]`)·`[`SINK_SCALE`] (0 up to `I = SINK_FROM`, below any shore; 1 where
+//!    every node around holds the lake), the change at most [`SINK_MAX_M`]. The nodes see the
+//!    relief no finer than their spacing; the ground between them keeps its finer octaves,
+//!    ridges up to hundreds of metres above both nodes of an edge (p90 about 450 m over the
+//!    edges of either network in the default world), so inside a lake such a ridge stood above
+//!    the level even after the wedge's 200 m, and cut pools off from the lake's outlet: closed
+//!    depressions as deep as the ridge. Sunk, the ground between lake nodes follows their
+//!    heights, which lie below the level; the ridges run down into the lake as spurs.
 //! 4. **Water.** A sample is lake water where `e < 0` and its carved height is below `L`
 //!    ([`RiverJob::shore_level`]).
 //! 5. **Sill** (`lakes: 4`). The shores raise the land beside a lake above `L`, but the carve
@@ -70,6 +81,15 @@ pub const SHORE_STEEP_M: f32 = 240.0;
 pub const SHORE_FULL: f32 = 0.25;
 /// Largest change of a height by the shores, metres.
 pub const SHORE_MAX_M: f32 = 200.0;
+/// Lake weight from which the sink applies (`lakes: 8`, step 3): below the shore, where
+/// `I ≥ ½ − SHORE_NOISE`, so the shoreline keeps the ground's own shape where the lake ends.
+pub const SINK_FROM: f32 = 0.25;
+/// `1 / (1 − SINK_FROM)`: the sink's ramp reaches 1 where the lake weight does. A product,
+/// not a quotient, so the WGSL twin rounds it as the CPU does.
+pub const SINK_SCALE: f32 = 1.0 / (1.0 - SINK_FROM);
+/// Largest lowering of a height by the sink, metres: with [`SHORE_MAX_M`] the LOD bound of the
+/// LODs that skip the shores in `lakes: 8` worlds.
+pub const SINK_MAX_M: f32 = 1000.0;
 
 /// Lake weight from which the sill under the land beside a lake applies in full (step 5):
 /// about 130 m from the edge where the weight vanishes at the default 1 km node spacing, wider
@@ -125,6 +145,9 @@ pub struct LakeField {
     pub weight: f32,
     /// Signed distance from the shore in lake-weight units, `e`: negative in the lake.
     pub e: f32,
+    /// Weighted node height of the lake nodes around, `F`, metres (`lakes: 8`; else the
+    /// level).
+    pub floor: f32,
 }
 
 impl RiverJob {
@@ -137,6 +160,12 @@ impl RiverJob {
         // Within a row, the index is past the end exactly when the row is below the window.
         let l = *self.lakes.get(b as usize * self.lakes_w + a as usize)?;
         (!l.is_nan()).then_some(l)
+    }
+
+    /// The height of lake node `(i, k)` of the window ([`RiverJob::floors`]; `lakes: 8`).
+    fn node_floor(&self, i: i64, k: i64) -> f32 {
+        let (a, b) = ((i - self.li0) as usize, (k - self.lk0) as usize);
+        self.floors[b * self.lakes_w + a]
     }
 
     /// The lake field at `(x, z)`, if a lake node around it has weight there.
@@ -197,22 +226,27 @@ impl RiverJob {
             (i + 1, k + 1, a * b),
         ];
         // The weights are at least 0, so no lake corner (or none with weight) leaves 0.
-        let (mut weight, mut sum) = (0.0f32, 0.0f32);
+        let (mut weight, mut sum, mut floor) = (0.0f32, 0.0f32, 0.0f32);
         for (ci, ck, w) in corners {
             if let Some(l) = self.node_lake(ci, ck) {
                 weight += w;
                 sum += w * l;
+                if self.sink {
+                    floor += w * self.node_floor(ci, ck);
+                }
             }
         }
         if weight <= 0.0 {
             return None;
         }
         let level = sum / weight;
+        let floor = if self.sink { floor / weight } else { level };
         let t = weight + (self.shore_n[0] * n1 + self.shore_n[1] * n2);
         Some(LakeField {
             level,
             weight,
             e: 0.5 - t,
+            floor,
         })
     }
 
@@ -299,6 +333,7 @@ impl RiverJob {
         } else {
             Sill::NONE
         };
+        let h = if self.sink { sink(h, f) } else { h };
         let (gentle, steep) = (SHORE_GENTLE_M * f.e, SHORE_STEEP_M * f.e);
         let (lo, hi) = if f.e > 0.0 {
             (f.level + gentle, f.level + steep)
@@ -332,4 +367,13 @@ impl RiverJob {
             self.lake_level(x, z)
         }
     }
+}
+
+/// The sink of step 3 (`lakes: 8`): `h` lowered towards the lake nodes' height `F` with the
+/// ramp of the lake weight, by at most [`SINK_MAX_M`].
+#[inline(always)]
+fn sink(h: f32, f: LakeField) -> f32 {
+    let t = ((f.weight - SINK_FROM) * SINK_SCALE).clamp(0.0, 1.0);
+    let s = t * t * (3.0 - 2.0 * t);
+    h - (s * (h - f.floor).max(0.0)).min(SINK_MAX_M)
 }
