@@ -371,37 +371,14 @@ fn river_carve_matches_cpu(valleys: u32) -> usize {
 /// heights that the same carve without sills (`lakes: 3`) cuts lower, none of them lowered.
 #[test]
 fn gpu_river_carve_keeps_the_lake_sills_bit_for_bit() {
-    let world = |lakes: u32| {
-        let mut params = WorldParams::default();
-        let earth = params.earth.as_mut().expect("earth-1");
-        earth.rivers.as_mut().expect("rivers").lakes = lakes;
-        WorldPlan::new(SEED, params).expect("a world with spilling lakes")
-    };
-    let (plan, without) = (world(4), world(3));
-    let dry = dry_plan();
-    let (_adapter, device, queue) = software_device();
-    let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+    let (plan, without) = (lakes_world(4), lakes_world(3));
+    let gpu = Gpu::new();
     let key = |lod, x, z| TileKey { lod, x, z };
     let mut raised = 0;
     // LOD 3: the outlet's valleys; LOD 0: a sill's edge, where it fades in.
     for k in [key(3, -1, 0), key(3, -1, 1), key(0, -7, 8)] {
-        let job = FieldJob::with_margin(k);
-        let spacing = plan.lods[k.lod as usize].spacing_m;
-        let carve = |plan: &WorldPlan, uncarved: &[f32]| {
-            let earth = plan.earth.as_ref().expect("earth-1");
-            let rp = earth.rivers.as_ref().expect("rivers");
-            let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
-            let mut h = uncarved.to_vec();
-            strata::terrain::earth::carve(&rj, spacing, job, &mut h);
-            h
-        };
-        let gpu_bare = kernels
-            .field(&device, &queue, &dry, job, None)
-            .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
-        let expected = carve(&plan, &gpu_bare.heights);
-        let rep = compare(&device, &queue, &kernels, &plan, k);
-        assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
-        for (a, b) in expected.iter().zip(carve(&without, &gpu_bare.heights)) {
+        let (expected, before) = gpu.carve_against(&plan, &without, k);
+        for (a, b) in expected.iter().zip(before) {
             assert!(*a >= b, "{k:?}: a sill lowered a height from {b} to {a}");
             raised += usize::from(a.to_bits() != b.to_bits());
         }
@@ -417,47 +394,78 @@ fn gpu_river_carve_keeps_the_lake_sills_bit_for_bit() {
 /// sink lowers thousands of its heights below those of `lakes: 7`.
 #[test]
 fn gpu_river_carve_sinks_the_ground_inside_lakes_bit_for_bit() {
-    let world = |lakes: u32| {
-        let mut params = WorldParams::default();
-        let earth = params.earth.as_mut().expect("earth-1");
-        earth.rivers.as_mut().expect("rivers").lakes = lakes;
-        WorldPlan::new(SEED, params).expect("a world with lakes")
-    };
-    let (plan, before) = (world(8), world(7));
-    let dry = dry_plan();
-    let (_adapter, device, queue) = software_device();
-    let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+    let (plan, before) = (lakes_world(8), lakes_world(7));
     let k = TileKey {
         lod: 6,
         x: -90,
         z: -131,
     };
-    let job = FieldJob::with_margin(k);
-    let spacing = plan.lods[k.lod as usize].spacing_m;
-    let carve = |plan: &WorldPlan, uncarved: &[f32]| {
-        let earth = plan.earth.as_ref().expect("earth-1");
-        let rp = earth.rivers.as_ref().expect("rivers");
-        let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
-        let mut h = uncarved.to_vec();
-        strata::terrain::earth::carve(&rj, spacing, job, &mut h);
-        h
-    };
-    let gpu_bare = kernels
-        .field(&device, &queue, &dry, job, None)
-        .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
-    let expected = carve(&plan, &gpu_bare.heights);
-    let rep = compare(&device, &queue, &kernels, &plan, k);
-    assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
-    let sunk = expected
-        .iter()
-        .zip(carve(&before, &gpu_bare.heights))
-        .filter(|(a, b)| **a < *b)
-        .count();
+    let (expected, seven) = Gpu::new().carve_against(&plan, &before, k);
+    let sunk = expected.iter().zip(seven).filter(|(a, b)| **a < *b).count();
     println!(
         "sunk lake floors: {sunk} of {} heights lower than with lakes 7",
         expected.len()
     );
     assert!(sunk >= 1000, "only {sunk} heights sunk");
+}
+
+/// The default world of seed [`SEED`] with `rivers.lakes` set to `lakes`.
+fn lakes_world(lakes: u32) -> WorldPlan {
+    let mut params = WorldParams::default();
+    let earth = params.earth.as_mut().expect("earth-1");
+    earth.rivers.as_mut().expect("rivers").lakes = lakes;
+    WorldPlan::new(SEED, params).expect("a world with lakes")
+}
+
+/// The software device, its earth kernels and the river-free world they carve.
+struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    kernels: EarthKernels,
+    dry: WorldPlan,
+}
+
+impl Gpu {
+    fn new() -> Self {
+        let (_adapter, device, queue) = software_device();
+        let kernels = EarthKernels::new(&device).expect("earth kernels compile");
+        Self {
+            device,
+            queue,
+            kernels,
+            dry: dry_plan(),
+        }
+    }
+
+    /// The device's field of tile `k` of `plan`, checked bit for bit against the CPU carve of
+    /// its river-free heights; returns that carve and the CPU carve of the same heights with
+    /// `other`'s rivers and lakes.
+    fn carve_against(
+        &self,
+        plan: &WorldPlan,
+        other: &WorldPlan,
+        k: TileKey,
+    ) -> (Vec<f32>, Vec<f32>) {
+        let job = FieldJob::with_margin(k);
+        let spacing = plan.lods[k.lod as usize].spacing_m;
+        let carve = |plan: &WorldPlan, uncarved: &[f32]| {
+            let earth = plan.earth.as_ref().expect("earth-1");
+            let rp = earth.rivers.as_ref().expect("rivers");
+            let rj = rivers::job_for(earth, rp, spacing, job.gx0, job.gz0, job.w, job.h);
+            let mut h = uncarved.to_vec();
+            strata::terrain::earth::carve(&rj, spacing, job, &mut h);
+            h
+        };
+        let gpu_bare = self
+            .kernels
+            .field(&self.device, &self.queue, &self.dry, job, None)
+            .unwrap_or_else(|e| panic!("GPU earth field of {k:?} without rivers: {e:#}"));
+        let expected = carve(plan, &gpu_bare.heights);
+        let rep = compare(&self.device, &self.queue, &self.kernels, plan, k);
+        assert_same_carve(k, job.w, &gpu_bare.heights, &expected, &rep.gpu_heights);
+        let before = carve(other, &gpu_bare.heights);
+        (expected, before)
+    }
 }
 
 /// For scale: how far the CPU's own heights move when x moves by one ULP, on the mountain tile.
