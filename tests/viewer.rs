@@ -38,8 +38,11 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// Runs a viewer script with a limit that only stops a hung browser: the streaming script took
+/// over 480 s beside the other viewer test on a day the shared 2-core machine ran its compute
+/// benches 1.5 times slower.
 fn run_node(script: &str, args: &[&str]) -> (bool, String) {
-    common::js::run_node(script, args, Duration::from_secs(480))
+    common::js::run_node(script, args, Duration::from_secs(900))
 }
 
 /// The arch volume element standing on the ground of seed 7 at (32, 24), as `volume.mjs` places

@@ -108,9 +108,10 @@ fn water_follows_the_shoreline_at_a_coast_a_lake_and_a_river() {
             &places.to_string(),
             common::js::arg(&docs),
         ],
-        // Four places at 1–4 fps took 430–540 s here (the lake-river place alone 125–160 s);
+        // Four places at 1–4 fps took 430–540 s here (the lake-river place alone 125–160 s),
+        // and over 720 s on a day the shared machine ran its compute benches 1.5 times slower;
         // the limit only stops a hung browser.
-        Duration::from_secs(720),
+        Duration::from_secs(1200),
     );
     drop(server);
     let _ = std::fs::remove_dir_all(&data);
