@@ -506,14 +506,8 @@ fn a_spilling_lake_leaves_over_its_saddle() {
 /// wider coarse floods (84 such neighbours beside the west basin's fine lakes).
 #[test]
 fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
-    use strata::bench::realism::sample;
     let (six, seven) = (plan(6), plan(7));
-    let first = |p: &WorldPlan| {
-        (
-            sample::first_tile(p, 9, 620e3, 8),
-            sample::first_tile(p, 9, 310e3, 8),
-        )
-    };
+    let first = |p: &WorldPlan| centred(p, 9, (620e3, 310e3));
     let (c6, c7) = (
         closed(&six, 9, first(&six)),
         closed(&seven, 9, first(&seven)),
@@ -558,7 +552,6 @@ fn coarse_floods_fill_the_far_basins_and_a_stopped_flood_keeps_a_full_lake() {
 /// 150 km across holding a lake in the bottom of a dry closed bowl (25 %).
 #[test]
 fn sunk_lake_floors_and_wider_coarse_floods_drain_the_worst_areas() {
-    use strata::bench::realism::sample;
     let (seven, eight) = (plan(7), plan(8));
     for (what, lod, (x, z), before, after) in [
         (
@@ -570,12 +563,7 @@ fn sunk_lake_floors_and_wider_coarse_floods_drain_the_worst_areas() {
         ),
         ("the largest basin at 512 m", 9, (375e3, 375e3), 0.2, 0.1),
     ] {
-        let first = |p: &WorldPlan| {
-            (
-                sample::first_tile(p, lod, x, 8),
-                sample::first_tile(p, lod, z, 8),
-            )
-        };
+        let first = |p: &WorldPlan| centred(p, lod, (x, z));
         let (c7, c8) = (
             closed(&seven, lod, first(&seven)),
             closed(&eight, lod, first(&eight)),
@@ -594,6 +582,15 @@ fn sunk_lake_floors_and_wider_coarse_floods_drain_the_worst_areas() {
 /// as `bench realism` measures it) over the 8 × 8 tiles of LOD `lod` from tile `first`.
 fn closed(plan: &WorldPlan, lod: u32, first: (i64, i64)) -> f64 {
     closed_n(plan, lod, first, 8)
+}
+
+/// The first tile of the 8 × 8 tiles of LOD `lod` centred on world `(x, z)`, metres.
+fn centred(plan: &WorldPlan, lod: u32, (x, z): (f64, f64)) -> (i64, i64) {
+    use strata::bench::realism::sample;
+    (
+        sample::first_tile(plan, lod, x, 8),
+        sample::first_tile(plan, lod, z, 8),
+    )
 }
 
 /// [`closed`] over `n` × `n` tiles.
