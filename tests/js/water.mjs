@@ -182,11 +182,14 @@ try {
       .then(() => true)
       .catch(() => false);
     if (!idle) failures.push(`${place.name}: the view did not finish streaming`);
-    // Two at a time after their tiles; on a loaded machine, with the server baking the view's Ptex
-    // pages, the coast's lines have taken over a minute.
+    const tIdle = (Date.now() - t0) / 1000;
+    // Six at a time after their tiles, each waiting for a gap between frames of seconds: the
+    // lake-river place's 38 source tiles took 40 s here (150 s with two at a time, which timed out
+    // in CI); the limit only stops a viewer that never finishes.
     await page
-      .waitForFunction(() => window.__strata.riverPending === 0, null, { timeout: 150_000, polling: 500 })
+      .waitForFunction(() => window.__strata.riverPending === 0, null, { timeout: 300_000, polling: 500 })
       .catch(() => failures.push(`${place.name}: river lines still loading`));
+    const tLines = (Date.now() - t0) / 1000;
     await page.waitForTimeout(1500);
     const shotPath = join(dir, `water-${place.name}.png`);
     writeFileSync(shotPath, await page.screenshot());
@@ -241,7 +244,8 @@ try {
     const borderShare = dists.length ? alongBorder / dists.length : 0;
     const s = await page.evaluate(() => window.__strata);
     console.log(
-      `${place.name} (${place.x}, ${place.z}), dist ${place.dist} m, ${((Date.now() - t0) / 1000).toFixed(1)} s: ` +
+      `${place.name} (${place.x}, ${place.z}), dist ${place.dist} m, ${((Date.now() - t0) / 1000).toFixed(1)} s ` +
+        `(streamed at ${tIdle.toFixed(1)} s, river lines at ${tLines.toFixed(1)} s): ` +
         `${s.held} tiles, ${s.rivers} river ribbons; water ${(100 * share).toFixed(1)} % of ${known} points, ` +
         `masks agree on ${(100 * agreement).toFixed(2)} %, water edge to shoreline p95 ${p95.toFixed(1)} px ` +
         `over ${dists.length} edge points, ${alongBorder} along tile borders away from the shoreline ` +
