@@ -167,13 +167,20 @@ pub(super) fn chord_t(p: &Piece, x: f32, z: f32) -> (f32, f32, f32) {
 #[inline(always)]
 pub(super) fn foot(p: &Piece, x: f32, z: f32) -> (f32, f32) {
     let (t, abx, abz) = chord_t(p, x, z);
-    let k = t * (1.0 - t);
-    let (ka, kb) = (k * (1.0 - t), k * t);
     let (dx, dz) = (
-        x - (p.ax + t * abx + (ka * p.sax + kb * p.sbx)),
-        z - (p.az + t * abz + (ka * p.saz + kb * p.sbz)),
+        x - curve_at(p.ax, abx, p.sax, p.sbx, t),
+        z - curve_at(p.az, abz, p.saz, p.sbz, t),
     );
     (t, dx * dx + dz * dz)
+}
+
+/// One coordinate of a piece's curve at `t`: the chord's `a + t·ab` plus the offset
+/// `t(1 − t)²·sa + t²(1 − t)·sb` across it, in this order of operations (the carve's feet and
+/// the river lines' points, [`super::lines`], give the same bits).
+#[inline(always)]
+pub(super) fn curve_at(a: f32, ab: f32, sa: f32, sb: f32, t: f32) -> f32 {
+    let k = t * (1.0 - t);
+    a + t * ab + (k * (1.0 - t) * sa + k * t * sb)
 }
 
 /// The smoothstep from `e0` to `e1` at `x` with its place bent by the spur value `s`

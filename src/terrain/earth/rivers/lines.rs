@@ -25,7 +25,7 @@
 //! [`RiverPlan::long_edges`]: super::RiverPlan::long_edges
 //! [`RiverPlan::exact_lines`]: super::RiverPlan::exact_lines
 
-use super::carve::Edge;
+use super::carve::{curve_at, Edge};
 use super::network::{Network, NodeId};
 use super::{channel, discharge_m3s, LINE_MAX_STEPS, LINE_TOLERANCE_M};
 use std::collections::{HashMap, HashSet};
@@ -247,11 +247,9 @@ fn piece_steps(bend: [f32; 4]) -> usize {
 /// the chord's point plus the carve's offset across it ([`super::carve`]'s `foot`), and the
 /// water level interpolated along the chord.
 fn piece_point(a: [f32; 3], b: [f32; 3], bend: [f32; 4], t: f32) -> [f32; 3] {
-    let k = t * (1.0 - t);
-    let (ka, kb) = (k * (1.0 - t), k * t);
     [
-        a[0] + t * (b[0] - a[0]) + (ka * bend[0] + kb * bend[2]),
-        a[1] + t * (b[1] - a[1]) + (ka * bend[1] + kb * bend[3]),
+        curve_at(a[0], b[0] - a[0], bend[0], bend[2], t),
+        curve_at(a[1], b[1] - a[1], bend[1], bend[3], t),
         a[2] + t * (b[2] - a[2]),
     ]
 }
