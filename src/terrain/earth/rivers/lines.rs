@@ -244,8 +244,8 @@ fn piece_steps(bend: [f32; 4]) -> usize {
 }
 
 /// The point of the piece from `a` to `b` with offset slopes `bend` ([`Edge::bends`]) at `t`:
-/// the chord's point plus the carve's offset across it ([`super::carve`]'s `foot`), and the
-/// water level interpolated along the chord.
+/// the chord's point plus the carve's offset across it ([`curve_at`], as the carve's feet), and
+/// the water level interpolated along the chord.
 fn piece_point(a: [f32; 3], b: [f32; 3], bend: [f32; 4], t: f32) -> [f32; 3] {
     [
         curve_at(a[0], b[0] - a[0], bend[0], bend[2], t),
